@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Shared by ./play and ./test: install missing Debian packages, configure, build (Release, -j2).
+# Idempotent: a second run installs nothing, configures nothing and builds only what changed.
+# Usage: scripts/setup.sh [BUILD_DIR [extra cmake args...]]
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${1:-$root/build}
+shift || true
+
+mapfile -t wanted < <(grep -v '^#' "$root/scripts/packages.txt" | sed '/^$/d')
+missing=()
+for p in "${wanted[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  line="apt-get install -y --no-install-recommends ${missing[*]}"
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "onelight: missing packages; as root run: apt-get update && $line" >&2
+    exit 1
+  fi
+  echo "onelight: installing ${#missing[@]} missing packages: ${missing[*]}" >&2
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $line >/dev/null
+fi
+
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+fi
+cmake --build "$build" -j2
