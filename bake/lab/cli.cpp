@@ -1,0 +1,39 @@
+#include "cli.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace onelight::lab {
+
+std::vector<std::string> parseWordList(std::string_view text) {
+    std::vector<std::string> words;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t end = text.find(',', start);
+        if (end == std::string_view::npos) end = text.size();
+        words.emplace_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    return words;
+}
+
+std::vector<double> parseNumberList(std::string_view option, std::string_view text, double lo,
+                                    double hi, bool loOpen) {
+    std::vector<double> values;
+    for (const std::string& word : parseWordList(text)) {
+        double x = 0.0;
+        auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), x);
+        bool inRange = std::isfinite(x) && (loOpen ? x > lo : x >= lo) && x <= hi;
+        if (word.empty() || ec != std::errc() || end != word.data() + word.size() || !inRange) {
+            throw std::invalid_argument(std::string(option) + ": '" + word +
+                                        "' is not a number in " + (loOpen ? "(" : "[") +
+                                        std::to_string(lo).substr(0, 3) + ", " +
+                                        std::to_string(hi).substr(0, 3) + "]");
+        }
+        values.push_back(x);
+    }
+    return values;
+}
+
+}  // namespace onelight::lab

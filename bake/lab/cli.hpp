@@ -1,0 +1,18 @@
+// Command-line parsing helpers of onelight-lab: every error names the option and what was
+// expected, and surfaces as std::invalid_argument (main prints it and exits 1).
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace onelight::lab {
+
+// Comma-separated numbers, each within [lo, hi] (lo excluded when loOpen).
+std::vector<double> parseNumberList(std::string_view option, std::string_view text, double lo,
+                                    double hi, bool loOpen);
+
+// Comma-separated words.
+std::vector<std::string> parseWordList(std::string_view text);
+
+}  // namespace onelight::lab

@@ -1,0 +1,15 @@
+// The larger onelight-lab commands, one file each.
+#pragma once
+
+#include <string>
+
+namespace onelight::lab {
+
+// brdf-report: writes DIR/README.md, CSVs and PNG plots (report.cpp). `quick` uses coarse grids.
+int brdfReport(const std::string& dir, bool quick);
+
+// env-fit: fits the environment "Fresnel" (env_brdf.hpp) and writes it as GLSL to `path`
+// (default: stdout) (env_fit_command.cpp).
+int envFit(const std::string& path);
+
+}  // namespace onelight::lab

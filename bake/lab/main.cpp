@@ -1,0 +1,116 @@
+// onelight-lab: speed against error for every approximation the engine makes.
+//   onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST   CSV of albedo scale and bias
+//   onelight-lab brdf-report -o DIR                                 tables, CSVs and plots
+//   onelight-lab env-fit [-o FILE]                                  fits shaders/env_brdf_fit.glsl
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "albedo.hpp"
+#include "cli.hpp"
+#include "commands.hpp"
+
+namespace onelight::lab {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST\n"
+    "       onelight-lab brdf-report -o DIR [--quick]\n"
+    "       onelight-lab env-fit [-o FILE]\n"
+    "models: bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith; mu in (0,1]; gloss in "
+    "[0,1]\n";
+
+// --name VALUE pairs after the subcommand; flags listed in `flags` take no value.
+struct Options {
+    std::vector<std::pair<std::string, std::string>> values;
+    std::string get(std::string_view name, std::string fallback = {}) const {
+        for (auto& [k, v] : values)
+            if (k == name) return v;
+        return fallback;
+    }
+    bool has(std::string_view name) const {
+        for (auto& [k, v] : values)
+            if (k == name) return true;
+        return false;
+    }
+};
+
+Options parseOptions(int argc, char** argv, std::vector<std::string_view> known,
+                     std::vector<std::string_view> flags) {
+    Options o;
+    for (int i = 2; i < argc; ++i) {
+        std::string_view a = argv[i];
+        bool isFlag = std::find(flags.begin(), flags.end(), a) != flags.end();
+        if (!isFlag && std::find(known.begin(), known.end(), a) == known.end())
+            throw std::invalid_argument(std::string(argv[1]) + ": unknown option '" +
+                                        std::string(a) + "'");
+        if (isFlag) {
+            o.values.emplace_back(a, "");
+        } else {
+            if (i + 1 >= argc)
+                throw std::invalid_argument(std::string(a) + ": expected a value after it");
+            o.values.emplace_back(a, argv[++i]);
+        }
+    }
+    return o;
+}
+
+std::string required(const Options& o, std::string_view name) {
+    if (!o.has(name)) throw std::invalid_argument("missing option " + std::string(name));
+    return o.get(name);
+}
+
+int brdfAlbedo(int argc, char** argv) {
+    Options o = parseOptions(argc, argv, {"--models", "--mu", "--gloss"}, {});
+    std::vector<const SpecularModel*> models;
+    for (const std::string& name : parseWordList(required(o, "--models")))
+        models.push_back(&findModel(name));
+    std::vector<double> mus = parseNumberList("--mu", required(o, "--mu"), 0.0, 1.0, true);
+    std::vector<double> glosses =
+        parseNumberList("--gloss", required(o, "--gloss"), 0.0, 1.0, false);
+    std::printf("model,mu,gloss,scale,bias\n");
+    for (const SpecularModel* m : models)
+        for (double mu : mus)
+            for (double g : glosses) {
+                ScaleBias sb = specularAlbedo(*m, mu, g);
+                std::printf("%s,%.9g,%.9g,%.9f,%.9f\n", std::string(m->name).c_str(), mu, g,
+                            sb.scale, sb.bias);
+            }
+    return 0;
+}
+
+int brdfReportCommand(int argc, char** argv) {
+    Options o = parseOptions(argc, argv, {"-o"}, {"--quick"});
+    return brdfReport(required(o, "-o"), o.has("--quick"));
+}
+
+int envFitCommand(int argc, char** argv) {
+    Options o = parseOptions(argc, argv, {"-o"}, {});
+    return envFit(o.get("-o"));
+}
+
+}  // namespace
+}  // namespace onelight::lab
+
+int main(int argc, char** argv) {
+    using namespace onelight::lab;
+    if (argc < 2) {
+        std::fputs(kUsage, stderr);
+        return 1;
+    }
+    std::string_view command = argv[1];
+    try {
+        if (command == "brdf-albedo") return brdfAlbedo(argc, argv);
+        if (command == "brdf-report") return brdfReportCommand(argc, argv);
+        if (command == "env-fit") return envFitCommand(argc, argv);
+        std::fprintf(stderr, "onelight-lab: unknown command '%s'\n%s", argv[1], kUsage);
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "onelight-lab %s: %s\n", argv[1], e.what());
+        return 1;
+    }
+}
