@@ -1,6 +1,8 @@
 #include "least_squares.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <stdexcept>
 
 namespace onelight::lab {
@@ -8,12 +10,18 @@ namespace onelight::lab {
 std::vector<double> solveLeastSquares(std::vector<double> A, std::vector<double> b, int rows,
                                       int cols) {
     auto at = [&](int r, int c) -> double& { return A[size_t(r) * cols + c]; };
+    // Columns whose remaining norm falls below this, relative to the largest, are dependent.
+    double largest = 0.0;
+    for (double x : A) largest = std::max(largest, std::abs(x));
+    const double negligible = 1e-12 * largest * std::sqrt(double(rows));
     for (int k = 0; k < cols; ++k) {
         // Householder vector zeroing column k below the diagonal.
         double norm = 0.0;
         for (int r = k; r < rows; ++r) norm += at(r, k) * at(r, k);
         norm = std::sqrt(norm);
-        if (norm == 0.0) throw std::runtime_error("least squares: rank-deficient matrix");
+        if (norm <= negligible)
+            throw std::runtime_error("least squares: rank-deficient matrix (column " +
+                                     std::to_string(k) + ")");
         double alpha = at(k, k) > 0.0 ? -norm : norm;
         std::vector<double> v(rows - k);
         for (int r = k; r < rows; ++r) v[r - k] = at(r, k);
@@ -37,8 +45,6 @@ std::vector<double> solveLeastSquares(std::vector<double> A, std::vector<double>
     for (int k = cols - 1; k >= 0; --k) {
         double sum = b[k];
         for (int c = k + 1; c < cols; ++c) sum -= at(k, c) * x[c];
-        if (std::abs(at(k, k)) < 1e-300)
-            throw std::runtime_error("least squares: rank-deficient matrix");
         x[k] = sum / at(k, k);
     }
     return x;

@@ -1,0 +1,107 @@
+// onelight-lab as a user runs it: output format, agreement with the library, bad input.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "albedo.hpp"
+
+#define STB_IMAGE_IMPLEMENTATION
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wdouble-promotion"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#include <stb_image.h>
+#pragma GCC diagnostic pop
+
+namespace {
+
+struct Result {
+    int exitCode;
+    std::string output;  // stdout and stderr
+};
+
+Result run(const std::string& args) {
+    std::string command = std::string(ONELIGHT_LAB_EXE) + " " + args + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
+    int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+}  // namespace
+
+TEST(LabCli, BrdfAlbedoPrintsCsvThatMatchesTheLibrary) {
+    Result r = run("brdf-albedo --models ggx_smith,bp_schlick --mu 0.25,1 --gloss 0.5");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::istringstream lines(r.output);
+    std::string line;
+    std::getline(lines, line);
+    EXPECT_EQ(line, "model,mu,gloss,scale,bias");
+    int rows = 0;
+    while (std::getline(lines, line)) {
+        char model[32];
+        double mu, g, scale, bias;
+        ASSERT_EQ(std::sscanf(line.c_str(), "%31[^,],%lf,%lf,%lf,%lf", model, &mu, &g, &scale, &bias), 5)
+            << line;
+        auto expected = onelight::lab::specularAlbedo(onelight::lab::findModel(model), mu, g);
+        EXPECT_NEAR(scale, expected.scale, 1e-8) << line;
+        EXPECT_NEAR(bias, expected.bias, 1e-8) << line;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 4);
+}
+
+TEST(LabCli, BadInputGivesOneClearLineAndExitOne) {
+    struct {
+        const char* args;
+        const char* mustSay;
+    } cases[] = {
+        {"brdf-albedo --models ggx_smith --mu 0 --gloss 0.5", "--mu: '0' is not a number in (0"},
+        {"brdf-albedo --models ggx_smith --mu abc --gloss 0.5", "--mu: 'abc'"},
+        {"brdf-albedo --models ggx_smith --mu 0.5 --gloss 1.5", "--gloss: '1.5'"},
+        {"brdf-albedo --models ggx_smith --mu 0.5,,1 --gloss 0.5", "--mu: ''"},
+        {"brdf-albedo --models nope --mu 0.5 --gloss 0.5", "unknown model 'nope'"},
+        {"brdf-albedo --models ggx_smith --mu 0.5", "missing option --gloss"},
+        {"brdf-albedo --models ggx_smith --mu", "--mu: expected a value"},
+        {"brdf-albedo --bogus 1", "unknown option '--bogus'"},
+        {"frobnicate", "unknown command 'frobnicate'"},
+    };
+    for (auto& c : cases) {
+        Result r = run(c.args);
+        EXPECT_EQ(r.exitCode, 1) << c.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.mustSay), std::string::npos) << c.args << "\n" << r.output;
+    }
+}
+
+TEST(LabCli, QuickReportWritesTablesCsvsAndPlots) {
+    std::filesystem::path dir = std::filesystem::temp_directory_path() / "onelight_lab_report_test";
+    std::filesystem::remove_all(dir);
+    Result r = run("brdf-report --quick -o " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream readme(dir / "README.md");
+    std::stringstream text;
+    text << readme.rdbuf();
+    for (const char* model : {"bp_none", "bp_kelemen", "bp_schlick", "beck_smith", "ggx_smith",
+                              "env_blackops", "env_table8", "env_fit"})
+        EXPECT_NE(text.str().find(std::string("| ") + model + " |"), std::string::npos) << model;
+    for (const char* png : {"models_cost_vs_error.png", "models_cost_vs_albedo_error.png",
+                            "env_cost_vs_error.png", "albedo_gloss05.png"}) {
+        int w = 0, h = 0, c = 0;
+        unsigned char* pixels = stbi_load((dir / png).c_str(), &w, &h, &c, 3);
+        ASSERT_NE(pixels, nullptr) << png;
+        EXPECT_EQ(w, 960);
+        EXPECT_EQ(h, 600);
+        stbi_image_free(pixels);
+    }
+    for (const char* csv : {"models.csv", "models_grid.csv", "env_fresnel.csv"})
+        EXPECT_TRUE(std::filesystem::file_size(dir / csv) > 40) << csv;
+    std::filesystem::remove_all(dir);
+}
