@@ -1,0 +1,36 @@
+// Buffers and their memory. For now only host-visible buffers: the CPU writes and reads them
+// directly through a persistent mapping.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include "vk/context.hpp"
+
+namespace onelight::vk {
+
+// A buffer with its own memory allocation. Destroy with destroyBuffer() before the context.
+struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;        // owned
+    VkDeviceMemory memory = VK_NULL_HANDLE;  // owned
+    VkDeviceSize size = 0;                   // bytes, as requested
+    void* mapped = nullptr;                  // host pointer to the whole buffer while it lives
+
+    Buffer() = default;
+    Buffer(const Buffer&) = delete;
+    Buffer& operator=(const Buffer&) = delete;
+};
+
+// The index of a memory type allowed by typeBits that has all of `flags`, or -1.
+int findMemoryType(const Context& ctx, uint32_t typeBits, VkMemoryPropertyFlags flags);
+
+// A host-visible, host-coherent buffer of `size` bytes, mapped for its whole life (host-cached
+// memory is preferred, for fast readback). Host writes before a submit need no flush; host reads
+// after a fence wait need a barrier from the writing stage to VK_ACCESS_HOST_READ_BIT recorded
+// after the writes (bufferBarrier in commands.hpp).
+void createHostBuffer(const Context& ctx, Buffer& buffer, VkDeviceSize size,
+                      VkBufferUsageFlags usage);
+
+// Unmaps, destroys and frees. Safe on an empty Buffer.
+void destroyBuffer(const Context& ctx, Buffer& buffer);
+
+}  // namespace onelight::vk
