@@ -1,0 +1,139 @@
+// onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [--texels-per-metre N] [--atlas-size N]
+// Imports, compiles without lighting, writes the package atomically and prints a summary.
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+#include "bake/cli/subcommands.hpp"
+#include "world/compile/compile_level.hpp"
+#include "world/error.hpp"
+#include "world/import/gltf_import.hpp"
+#include "world/package/package_writer.hpp"
+
+namespace onelight::bake {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [--texels-per-metre N] "
+    "[--atlas-size N]";
+
+bool parse_number(const std::string& text, double low, double high, double& out) {
+    try {
+        size_t used = 0;
+        out = std::stod(text, &used);
+        return used == text.size() && out >= low && out <= high;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+/// Image file references become relative to the package's folder.
+void rebase_image_paths(world::CompiledLevel& level, const std::filesystem::path& package) {
+    const std::filesystem::path folder = std::filesystem::absolute(package).parent_path();
+    for (world::Image& image : level.images) {
+        if (image.uri.empty()) continue;
+        std::error_code ec;
+        const std::filesystem::path relative =
+            std::filesystem::relative(std::filesystem::absolute(image.uri), folder, ec);
+        if (!ec && !relative.empty()) image.uri = relative.generic_string();
+    }
+}
+
+void print_summary(const std::string& output, const world::CompileStats& s, size_t bytes) {
+    std::printf("compiled %s (%zu bytes)\n", output.c_str(), bytes);
+    std::printf(
+        "  triangles  %llu static (%llu imported, %llu degenerate and %llu duplicate removed), "
+        "%llu dynamic\n",
+        static_cast<unsigned long long>(s.triangles),
+        static_cast<unsigned long long>(s.source_triangles),
+        static_cast<unsigned long long>(s.degenerate_removed),
+        static_cast<unsigned long long>(s.duplicates_removed),
+        static_cast<unsigned long long>(s.dynamic_triangles));
+    std::printf("  surfaces   %llu\n", static_cast<unsigned long long>(s.surfaces));
+    std::printf("  bsp        depth %u, %llu leaves, %llu nodes, %llu triangles cut\n", s.bsp_depth,
+                static_cast<unsigned long long>(s.bsp_leaves),
+                static_cast<unsigned long long>(s.bsp_nodes),
+                static_cast<unsigned long long>(s.bsp_splits));
+    std::printf("  primaries  %u candidates, %u owning surfaces\n", s.primary_candidates,
+                s.primaries_used);
+    std::printf(
+        "  splits     %u edges cut, %u triangles split at their centre, %u fragments merged, "
+        "+%u triangles\n",
+        s.regions.edges_cut, s.regions.faces_centre_split, s.regions.fragments_merged,
+        s.regions.triangles_added);
+    std::printf("  charts     %llu (%llu from TEXCOORD_1), %llu atlases, %llu texels, fill %.3f\n",
+                static_cast<unsigned long long>(s.charts),
+                static_cast<unsigned long long>(s.authored_charts),
+                static_cast<unsigned long long>(s.atlases),
+                static_cast<unsigned long long>(s.texels), s.fill_ratio);
+    std::printf(
+        "  time       split %.3f s, regions %.3f s, charts %.3f s, bsp %.3f s, surfaces %.3f s\n",
+        s.seconds_split, s.seconds_regions, s.seconds_charts, s.seconds_bsp, s.seconds_surfaces);
+}
+
+}  // namespace
+
+int run_compile_command(const std::vector<std::string>& arguments) {
+    std::string input, output;
+    world::CompileOptions options;
+    for (size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& a = arguments[i];
+        const bool has_value = i + 1 < arguments.size();
+        double value = 0.0;
+        if (a == "-o" && has_value) {
+            output = arguments[++i];
+        } else if (a == "--texels-per-metre" && has_value) {
+            if (!parse_number(arguments[++i], 0.01, 1024.0, value)) {
+                std::fprintf(stderr,
+                             "onelight-bake compile: --texels-per-metre '%s'; expected a number in "
+                             "[0.01, 1024]\n",
+                             arguments[i].c_str());
+                return 2;
+            }
+            options.charts.texels_per_metre = value;
+        } else if (a == "--atlas-size" && has_value) {
+            if (!parse_number(arguments[++i], 64.0, 16384.0, value)) {
+                std::fprintf(stderr,
+                             "onelight-bake compile: --atlas-size '%s'; expected an integer in "
+                             "[64, 16384]\n",
+                             arguments[i].c_str());
+                return 2;
+            }
+            options.charts.atlas_size = static_cast<uint32_t>(value);
+        } else if (!a.empty() && a[0] != '-' && input.empty()) {
+            input = a;
+        } else {
+            std::fprintf(stderr, "onelight-bake compile: unexpected argument '%s'\n%s\n", a.c_str(),
+                         kUsage);
+            return 2;
+        }
+    }
+    if (input.empty()) {
+        std::fprintf(stderr, "%s\n", kUsage);
+        return 2;
+    }
+    if (output.empty()) output = std::filesystem::path(input).replace_extension(".olpak").string();
+    try {
+        const world::SourceLevel source = world::import_gltf(input);
+        world::CompileResult result = world::compile_level(source, options);
+        rebase_image_paths(result.level, output);
+        const std::vector<uint8_t> bytes = package::serialize_package(result.level);
+        const std::string error = package::write_file_atomically(output, bytes);
+        if (!error.empty()) {
+            std::fprintf(stderr, "onelight-bake: error: %s\n", error.c_str());
+            return 1;
+        }
+        print_summary(output, result.stats, bytes.size());
+        return 0;
+    } catch (const world::CompileError& e) {
+        std::fprintf(stderr, "onelight-bake: error: %s\n", e.what());
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "onelight-bake: error: %s: out of memory\n", input.c_str());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "onelight-bake: error: %s: %s\n", input.c_str(), e.what());
+    }
+    return 1;
+}
+
+}  // namespace onelight::bake

@@ -1,0 +1,12 @@
+// The subcommands of onelight-bake; each takes its arguments (after the subcommand name) and
+// returns the process exit code: 0 success, 1 bad input or failure, 2 bad command line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace onelight::bake {
+
+int run_compile_command(const std::vector<std::string>& arguments);
+
+}  // namespace onelight::bake

@@ -1,0 +1,34 @@
+// Lightmap charts. Meshes with TEXCOORD_1 keep it (one authored chart, one atlas page each);
+// the others are cut into charts: connected triangles of one primary whose normals stay within
+// a cone of the first triangle's, projected onto that triangle's plane.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "world/static_geometry.hpp"
+
+namespace onelight::world {
+
+struct ChartOptions {
+    double texels_per_metre = 16.0;  // requested density; a chart too big for an atlas gets less
+    uint32_t atlas_size = 1024;      // texels per side of a generated atlas
+    uint32_t padding = 2;            // texels kept free on each side of a chart, >= 2
+    double max_normal_angle_degrees = 40.0;  // between a triangle and its chart's normal
+};
+
+/// A generated chart before packing: its triangles and its planar projection.
+struct ChartShape {
+    std::vector<uint32_t> triangles;  // into StaticGeometry::triangles
+    uint32_t instance = kNone;
+    bool authored = false;
+    glm::dvec3 normal{0.0}, axis_u{0.0}, axis_v{0.0};
+    glm::dvec2 min_uv{0.0}, max_uv{0.0};  // metres along axis_u / axis_v
+    double texels_per_metre = 0.0;
+    uint32_t width = 0, height = 0;  // texels, padding included
+};
+
+/// Groups the triangles into chart shapes and sets StaticTriangle::chart to the shape index.
+std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const ChartOptions& options);
+
+}  // namespace onelight::world

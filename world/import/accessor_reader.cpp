@@ -1,0 +1,204 @@
+#include "world/import/accessor_reader.hpp"
+
+#include <cstring>
+
+#include <tiny_gltf.h>
+
+#include "world/error.hpp"
+
+namespace onelight::world {
+namespace {
+
+size_t component_size(int component_type) {
+    switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_BYTE:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return 1;
+        case TINYGLTF_COMPONENT_TYPE_SHORT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return 2;
+        case TINYGLTF_COMPONENT_TYPE_INT:
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return 4;
+        default:
+            return 0;
+    }
+}
+
+int component_count(int type) {
+    switch (type) {
+        case TINYGLTF_TYPE_SCALAR:
+            return 1;
+        case TINYGLTF_TYPE_VEC2:
+            return 2;
+        case TINYGLTF_TYPE_VEC3:
+            return 3;
+        case TINYGLTF_TYPE_VEC4:
+            return 4;
+        default:
+            return 0;
+    }
+}
+
+/// A checked view of an accessor's bytes: element i starts at data + i * stride.
+struct AccessorBytes {
+    const unsigned char* data = nullptr;
+    size_t count = 0;
+    size_t stride = 0;
+    int component_type = 0;
+    int components = 0;
+    bool normalized = false;
+};
+
+const tinygltf::Accessor& checked_accessor(const tinygltf::Model& model, int accessor_index,
+                                           const std::string& where) {
+    if (accessor_index < 0 || static_cast<size_t>(accessor_index) >= model.accessors.size()) {
+        throw CompileError(where + ": accessor index " + std::to_string(accessor_index) +
+                           " is out of range (the file has " +
+                           std::to_string(model.accessors.size()) + " accessors)");
+    }
+    return model.accessors[static_cast<size_t>(accessor_index)];
+}
+
+AccessorBytes checked_bytes(const tinygltf::Model& model, int accessor_index,
+                            const std::string& where) {
+    const tinygltf::Accessor& accessor = checked_accessor(model, accessor_index, where);
+    const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
+    if (accessor.sparse.isSparse)
+        throw CompileError(place + ": sparse accessors are not supported");
+    AccessorBytes bytes;
+    bytes.count = accessor.count;
+    bytes.component_type = accessor.componentType;
+    bytes.components = component_count(accessor.type);
+    bytes.normalized = accessor.normalized;
+    const size_t size = component_size(accessor.componentType);
+    if (size == 0 || bytes.components == 0) {
+        throw CompileError(place + ": unsupported component type " +
+                           std::to_string(accessor.componentType) + " or type " +
+                           std::to_string(accessor.type));
+    }
+    if (accessor.count == 0) return bytes;
+    if (accessor.bufferView < 0 ||
+        static_cast<size_t>(accessor.bufferView) >= model.bufferViews.size()) {
+        throw CompileError(place + ": bufferView " + std::to_string(accessor.bufferView) +
+                           " is out of range");
+    }
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(accessor.bufferView)];
+    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size()) {
+        throw CompileError(place + ": buffer " + std::to_string(view.buffer) + " is out of range");
+    }
+    const tinygltf::Buffer& buffer = model.buffers[static_cast<size_t>(view.buffer)];
+    const uint64_t element_size = size * static_cast<uint64_t>(bytes.components);
+    const uint64_t stride = view.byteStride != 0 ? view.byteStride : element_size;
+    if (stride < element_size) {
+        throw CompileError(place + ": byteStride " + std::to_string(stride) +
+                           " is smaller than the element size " + std::to_string(element_size));
+    }
+    const uint64_t view_end = static_cast<uint64_t>(view.byteOffset) + view.byteLength;
+    if (view_end > buffer.data.size()) {
+        throw CompileError(place + ": bufferView ends at byte " + std::to_string(view_end) +
+                           " but the buffer has " + std::to_string(buffer.data.size()) + " bytes");
+    }
+    if (accessor.count > view.byteLength) {
+        throw CompileError(place + ": count " + std::to_string(accessor.count) +
+                           " does not fit in the bufferView");
+    }
+    const uint64_t needed =
+        static_cast<uint64_t>(accessor.byteOffset) + stride * (accessor.count - 1) + element_size;
+    if (needed > view.byteLength) {
+        throw CompileError(place + ": needs " + std::to_string(needed) +
+                           " bytes but the bufferView has " + std::to_string(view.byteLength));
+    }
+    bytes.data = buffer.data.data() + view.byteOffset + accessor.byteOffset;
+    bytes.stride = static_cast<size_t>(stride);
+    return bytes;
+}
+
+template <typename T>
+T load(const unsigned char* p) {
+    T value;
+    std::memcpy(&value, p, sizeof(T));
+    return value;
+}
+
+float component_as_float(const unsigned char* p, int component_type) {
+    switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT:
+            return load<float>(p);
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+            return static_cast<float>(p[0]) / 255.0f;
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            const float v = static_cast<float>(static_cast<int8_t>(p[0])) / 127.0f;
+            return v < -1.0f ? -1.0f : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+            return static_cast<float>(load<uint16_t>(p)) / 65535.0f;
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            const float v = static_cast<float>(load<int16_t>(p)) / 32767.0f;
+            return v < -1.0f ? -1.0f : v;
+        }
+        default:
+            return 0.0f;
+    }
+}
+
+}  // namespace
+
+size_t accessor_count(const tinygltf::Model& model, int accessor_index, const std::string& where) {
+    return checked_accessor(model, accessor_index, where).count;
+}
+
+std::vector<float> read_float_accessor(const tinygltf::Model& model, int accessor_index,
+                                       int components, const std::string& where) {
+    const AccessorBytes bytes = checked_bytes(model, accessor_index, where);
+    const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
+    if (bytes.components != components) {
+        throw CompileError(place + ": expected " + std::to_string(components) +
+                           " components per element, found " + std::to_string(bytes.components));
+    }
+    if (bytes.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !bytes.normalized) {
+        throw CompileError(place + ": expected FLOAT or a normalized integer type, found type " +
+                           std::to_string(bytes.component_type));
+    }
+    const size_t size = component_size(bytes.component_type);
+    std::vector<float> values(bytes.count * static_cast<size_t>(components));
+    for (size_t i = 0; i < bytes.count; ++i) {
+        const unsigned char* element = bytes.data + i * bytes.stride;
+        for (int c = 0; c < components; ++c) {
+            values[i * static_cast<size_t>(components) + static_cast<size_t>(c)] =
+                component_as_float(element + static_cast<size_t>(c) * size, bytes.component_type);
+        }
+    }
+    return values;
+}
+
+std::vector<uint32_t> read_index_accessor(const tinygltf::Model& model, int accessor_index,
+                                          const std::string& where) {
+    const AccessorBytes bytes = checked_bytes(model, accessor_index, where);
+    const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
+    if (bytes.components != 1) throw CompileError(place + ": indices must be SCALAR");
+    std::vector<uint32_t> values(bytes.count);
+    for (size_t i = 0; i < bytes.count; ++i) {
+        const unsigned char* element = bytes.data + i * bytes.stride;
+        switch (bytes.component_type) {
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                values[i] = element[0];
+                break;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+                values[i] = load<uint16_t>(element);
+                break;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+                values[i] = load<uint32_t>(element);
+                break;
+            default:
+                throw CompileError(place +
+                                   ": indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or "
+                                   "UNSIGNED_INT, found type " +
+                                   std::to_string(bytes.component_type));
+        }
+    }
+    return values;
+}
+
+}  // namespace onelight::world

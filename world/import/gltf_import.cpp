@@ -1,0 +1,295 @@
+#include "world/import/gltf_import.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include <tiny_gltf.h>
+#include <glm/gtc/quaternion.hpp>
+
+#include "world/error.hpp"
+#include "world/import/camera_import.hpp"
+#include "world/import/extras_import.hpp"
+#include "world/import/light_import.hpp"
+#include "world/import/material_import.hpp"
+#include "world/import/mesh_import.hpp"
+
+namespace onelight::world {
+namespace {
+
+/// Image loader for tinygltf: pixels are not decoded at compile; embedded images keep their
+/// encoded bytes, file references keep only their uri.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+    if (image->uri.empty() && bytes != nullptr && size > 0)
+        image->image.assign(bytes, bytes + size);
+    return true;
+}
+
+std::string first_line(const std::string& text) {
+    const size_t end = text.find('\n');
+    return end == std::string::npos ? text : text.substr(0, end);
+}
+
+/// Maps the indices of one glTF array to the level's array, in order of first use.
+struct UseOrder {
+    std::map<int, uint32_t> level_index;
+    std::vector<int> used;  // glTF index of each level entry
+    uint32_t use(int gltf_index) {
+        const auto [it, inserted] =
+            level_index.emplace(gltf_index, static_cast<uint32_t>(used.size()));
+        if (inserted) used.push_back(gltf_index);
+        return it->second;
+    }
+};
+
+glm::dmat4 local_transform(const tinygltf::Node& node, const std::string& where) {
+    glm::dmat4 m(1.0);
+    if (node.matrix.size() == 16) {
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) m[c][r] = node.matrix[static_cast<size_t>(c * 4 + r)];
+    } else {
+        glm::dvec3 t(0.0), s(1.0);
+        glm::dquat q(1.0, 0.0, 0.0, 0.0);
+        if (node.translation.size() == 3)
+            t = {node.translation[0], node.translation[1], node.translation[2]};
+        if (node.scale.size() == 3) s = {node.scale[0], node.scale[1], node.scale[2]};
+        if (node.rotation.size() == 4)
+            q = glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        const double length = glm::length(q);
+        q = length > 0.0 ? q / length : glm::dquat(1.0, 0.0, 0.0, 0.0);
+        m = glm::dmat4(glm::mat3_cast(q));
+        m[0] *= s.x;
+        m[1] *= s.y;
+        m[2] *= s.z;
+        m[3] = glm::dvec4(t, 1.0);
+    }
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r]))
+                throw CompileError(where + ": transform is NaN or Inf; expected finite numbers");
+    return m;
+}
+
+struct Importer {
+    const tinygltf::Model& model;
+    const std::string& file;
+    std::string folder;
+    SourceLevel level;
+    UseOrder materials, textures, images;
+    uint32_t default_material = kNone;
+
+    uint32_t use_texture(int gltf_texture) {
+        if (gltf_texture < 0) return kNone;
+        if (static_cast<size_t>(gltf_texture) >= model.textures.size())
+            throw CompileError(file + ": texture index " + std::to_string(gltf_texture) +
+                               " is out of range");
+        return textures.use(gltf_texture);
+    }
+
+    uint32_t use_material(int gltf_material) {
+        if (gltf_material < 0) {
+            if (default_material == kNone) default_material = materials.use(-1);
+            return default_material;
+        }
+        if (static_cast<size_t>(gltf_material) >= model.materials.size())
+            throw CompileError(file + ": material index " + std::to_string(gltf_material) +
+                               " is out of range");
+        return materials.use(gltf_material);
+    }
+
+    void visit(int node_index, const glm::dmat4& parent, uint32_t entity, std::vector<bool>& seen,
+               int depth) {
+        if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size())
+            throw CompileError(file + ": node index " + std::to_string(node_index) +
+                               " is out of range");
+        if (seen[static_cast<size_t>(node_index)])
+            throw CompileError(file + ": node " + std::to_string(node_index) +
+                               " appears twice in the hierarchy; expected a tree");
+        if (depth > 1024) throw CompileError(file + ": node hierarchy deeper than 1024");
+        seen[static_cast<size_t>(node_index)] = true;
+        const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
+        const std::string name =
+            node.name.empty() ? "node_" + std::to_string(node_index) : node.name;
+        const std::string where = file + ": node '" + name + "'";
+        const glm::dmat4 world = parent * local_transform(node, where);
+        const NodeExtras extras = parse_node_extras(node.extras, where);
+
+        if (extras.has_grid && !level.has_grid_bounds) {
+            level.has_grid_bounds = true;
+            level.grid_min = extras.grid_min;
+            level.grid_max = extras.grid_max;
+        }
+        if (extras.has_exposure && node.camera < 0 && !level.has_exposure) {
+            level.has_exposure = true;
+            level.exposure_ev100 = extras.exposure_ev100;
+        }
+        if (extras.dynamic || extras.spawn || extras.probe) {
+            Entity e;
+            e.name = name;
+            e.flags = (extras.dynamic ? entity_dynamic : 0u) | (extras.mover ? entity_mover : 0u) |
+                      (extras.spawn ? entity_spawn : 0u) | (extras.probe ? entity_probe : 0u);
+            e.position = glm::vec3(glm::dvec3(world[3]));
+            e.rotation = rotation_of(world);
+            e.scale =
+                glm::vec3(glm::length(glm::dvec3(world[0])), glm::length(glm::dvec3(world[1])),
+                          glm::length(glm::dvec3(world[2])));
+            e.mover_offset = extras.mover_offset;
+            e.mover_period = extras.mover_period;
+            if (extras.has_probe_box) {
+                e.probe_box_min = extras.probe_box_min;
+                e.probe_box_max = extras.probe_box_max;
+            }
+            level.entities.push_back(e);
+            if (extras.dynamic) entity = static_cast<uint32_t>(level.entities.size() - 1);
+        }
+
+        const auto light_extension = node.extensions.find("KHR_lights_punctual");
+        if (light_extension != node.extensions.end() && light_extension->second.Has("light")) {
+            const tinygltf::Value& index_value = light_extension->second.Get("light");
+            const int light_index = index_value.IsInt() ? index_value.Get<int>() : -1;
+            if (light_index < 0 || static_cast<size_t>(light_index) >= model.lights.size())
+                throw CompileError(where + ": KHR_lights_punctual light index " +
+                                   std::to_string(light_index) + " is out of range");
+            level.lights.push_back(import_light(model.lights[static_cast<size_t>(light_index)],
+                                                world, name, extras.role, where));
+        } else if (extras.has_role) {
+            throw CompileError(where + ": extras.onelight.role is set but the node has no light");
+        }
+
+        if (node.camera >= 0) {
+            if (static_cast<size_t>(node.camera) >= model.cameras.size())
+                throw CompileError(where + ": camera index " + std::to_string(node.camera) +
+                                   " is out of range");
+            Camera camera =
+                import_camera(model.cameras[static_cast<size_t>(node.camera)], world, name, where);
+            camera.has_exposure = extras.has_exposure;
+            camera.exposure_ev100 = extras.exposure_ev100;
+            level.cameras.push_back(camera);
+        }
+
+        if (node.mesh >= 0) {
+            if (static_cast<size_t>(node.mesh) >= model.meshes.size())
+                throw CompileError(where + ": mesh index " + std::to_string(node.mesh) +
+                                   " is out of range");
+            const tinygltf::Mesh& mesh = model.meshes[static_cast<size_t>(node.mesh)];
+            for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+                ImportedPrimitive imported =
+                    import_primitive(model, node.mesh, static_cast<int>(p), file);
+                if (!imported.is_triangles || imported.indices.empty()) continue;
+                MeshInstance instance;
+                instance.node_name = name;
+                instance.mesh_name =
+                    mesh.name.empty() ? "mesh_" + std::to_string(node.mesh) : mesh.name;
+                instance.primitive = static_cast<uint32_t>(p);
+                instance.material = use_material(mesh.primitives[p].material);
+                instance.world_from_local = world;
+                instance.vertices = std::move(imported.vertices);
+                instance.indices = std::move(imported.indices);
+                instance.has_uv1 = imported.has_uv1;
+                instance.dynamic = entity != kNone;
+                instance.entity = entity;
+                level.instances.push_back(std::move(instance));
+            }
+        }
+        for (int child : node.children) visit(child, world, entity, seen, depth + 1);
+    }
+
+    void resolve_materials_and_textures() {
+        std::vector<Material> converted;
+        for (size_t i = 0; i < materials.used.size(); ++i) {
+            const int source = materials.used[i];
+            if (source < 0) {
+                converted.push_back(world::default_material());
+                continue;
+            }
+            Material m = convert_material(model.materials[static_cast<size_t>(source)],
+                                          [this](int t) { return use_texture(t); });
+            if (m.name.empty()) m.name = "material_" + std::to_string(source);
+            converted.push_back(m);
+        }
+        level.materials = std::move(converted);
+        for (int source_index : textures.used) {
+            const tinygltf::Texture& source = model.textures[static_cast<size_t>(source_index)];
+            Texture texture;
+            if (source.source >= 0) {
+                if (static_cast<size_t>(source.source) >= model.images.size())
+                    throw CompileError(file + ": texture " + std::to_string(source_index) +
+                                       " image " + std::to_string(source.source) +
+                                       " is out of range");
+                texture.image = images.use(source.source);
+            }
+            if (source.sampler >= 0) {
+                if (static_cast<size_t>(source.sampler) >= model.samplers.size())
+                    throw CompileError(file + ": texture " + std::to_string(source_index) +
+                                       " sampler " + std::to_string(source.sampler) +
+                                       " is out of range");
+                const tinygltf::Sampler& s = model.samplers[static_cast<size_t>(source.sampler)];
+                texture.sampler.mag_filter =
+                    static_cast<uint16_t>(s.magFilter < 0 ? 0 : s.magFilter);
+                texture.sampler.min_filter =
+                    static_cast<uint16_t>(s.minFilter < 0 ? 0 : s.minFilter);
+                texture.sampler.wrap_s = static_cast<uint16_t>(s.wrapS);
+                texture.sampler.wrap_t = static_cast<uint16_t>(s.wrapT);
+            }
+            level.textures.push_back(texture);
+        }
+        for (int source_index : images.used) {
+            const tinygltf::Image& source = model.images[static_cast<size_t>(source_index)];
+            Image image;
+            image.name = source.name;
+            image.mime_type = source.mimeType;
+            if (!source.uri.empty()) {
+                image.uri =
+                    (std::filesystem::path(folder) / source.uri).lexically_normal().string();
+            } else {
+                image.encoded_bytes = source.image;
+            }
+            level.images.push_back(std::move(image));
+        }
+    }
+};
+
+}  // namespace
+
+SourceLevel import_gltf(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw CompileError(path + ": cannot open; expected a readable .gltf or .glb file");
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&keep_encoded_image, nullptr);
+    std::string error, warning;
+    const bool binary = std::filesystem::path(path).extension() == ".glb";
+    const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
+                               : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+    if (!loaded)
+        throw CompileError(path + ": not a valid glTF 2.0 file: " +
+                           (error.empty() ? std::string("unknown error") : first_line(error)));
+
+    Importer importer{model, path, std::filesystem::path(path).parent_path().string(), {}, {}, {},
+                      {},    kNone};
+    importer.level.source_path = path;
+    std::vector<int> roots;
+    if (!model.scenes.empty()) {
+        const int scene_index =
+            model.defaultScene >= 0 && static_cast<size_t>(model.defaultScene) < model.scenes.size()
+                ? model.defaultScene
+                : 0;
+        roots = model.scenes[static_cast<size_t>(scene_index)].nodes;
+    } else {
+        std::vector<bool> is_child(model.nodes.size(), false);
+        for (const tinygltf::Node& node : model.nodes)
+            for (int child : node.children)
+                if (child >= 0 && static_cast<size_t>(child) < model.nodes.size())
+                    is_child[static_cast<size_t>(child)] = true;
+        for (size_t i = 0; i < model.nodes.size(); ++i)
+            if (!is_child[i]) roots.push_back(static_cast<int>(i));
+    }
+    std::vector<bool> seen(model.nodes.size(), false);
+    for (int root : roots) importer.visit(root, glm::dmat4(1.0), kNone, seen, 0);
+    importer.resolve_materials_and_textures();
+    return std::move(importer.level);
+}
+
+}  // namespace onelight::world

@@ -1,0 +1,28 @@
+// One glTF mesh primitive into engine vertices and triangle indices: POSITION, NORMAL (flat
+// normals when missing, as glTF requires), TANGENT (generated when missing), TEXCOORD_0 and
+// TEXCOORD_1. Strips and fans become lists; points and lines are not surfaces.
+#pragma once
+
+#include <string>
+
+#include "world/source_level.hpp"
+
+namespace tinygltf {
+class Model;
+}
+
+namespace onelight::world {
+
+struct ImportedPrimitive {
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices;  // triangle list
+    bool has_uv1 = false;
+    bool is_triangles = true;  // false for points and lines: the caller skips them
+};
+
+/// Reads primitive `primitive_index` of mesh `mesh_index`. Throws CompileError naming the mesh
+/// on malformed data, NaN or Inf.
+ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
+                                   int primitive_index, const std::string& file);
+
+}  // namespace onelight::world

@@ -1,0 +1,286 @@
+// The .olpak level package: the whole on-disk format in one header.
+//
+// Layout, little-endian throughout:
+//   FileHeader                        at offset 0
+//   SectionEntry[section_count]       right after the header
+//   section payloads                  each at an offset that is a multiple of 8, zero-padded
+//
+// A section is an array of one record type (or bytes). Records refer to each other by index
+// and by first/count ranges, never by pointer or offset; kNoIndex marks "none". Strings live
+// in the strings section and are referred to by StringRef. Every section carries a CRC32
+// (IEEE 802.3, as zlib) of its bytes; the header carries one over itself and the table.
+//
+// `onelight-bake compile` writes every core section (possibly empty). The baker adds the
+// baked-lighting sections (ids 32 and up) later; a reader keeps those it does not parse as
+// raw bytes. Any other change of layout bumps kVersion.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+
+namespace onelight::package {
+
+static_assert(std::endian::native == std::endian::little,
+              "the .olpak reader/writer copy records "
+              "as they are; add byte swaps to port");
+
+inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
+inline constexpr uint32_t kVersion = 1;
+inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+inline constexpr uint32_t kMaxSections = 64;
+inline constexpr uint32_t kSectionAlignment = 8;
+
+enum SectionId : uint32_t {
+    section_strings = 0,            // char[]: UTF-8 bytes of every string, no terminators
+    section_level = 1,              // DiskLevel[1]
+    section_materials = 2,          // DiskMaterial[]
+    section_textures = 3,           // DiskTexture[]
+    section_images = 4,             // DiskImage[]
+    section_image_bytes = 5,        // uint8_t[]: encoded (PNG/JPEG) bytes of embedded images
+    section_lights = 6,             // DiskLight[]
+    section_cameras = 7,            // DiskCamera[]
+    section_vertices = 8,           // DiskVertex[]: static, world space
+    section_indices = 9,            // uint32_t[]: static triangles, grouped by leaf then surface
+    section_surfaces = 10,          // DiskSurface[]
+    section_given_up_lights = 11,   // uint32_t[]: light indices, ranges owned by surfaces
+    section_charts = 12,            // DiskChart[]
+    section_atlases = 13,           // DiskAtlas[]
+    section_bsp_planes = 14,        // DiskBspPlane[]
+    section_bsp_nodes = 15,         // DiskBspNode[]: node 0 is the root when any exists
+    section_bsp_leaves = 16,        // DiskBspLeaf[]: >= 1
+    section_dynamic_vertices = 17,  // DiskVertex[]: in their mesh's space
+    section_dynamic_indices = 18,   // uint32_t[]: relative to the mesh's first_vertex
+    section_dynamic_meshes = 19,    // DiskDynamicMesh[]
+    section_entities = 20,          // DiskEntity[]
+    section_features = 21,          // DiskFeatures[1]
+    core_section_count = 22,        // ids below this are required, exactly once each
+    // Baked lighting, added by the baker; unknown to `compile`, kept raw by the reader.
+    section_lightmap_texels = 32,  // directional secondary irradiance per atlas
+    section_shadow_masks = 33,     // baked primary shadow masks per atlas
+    section_light_grid = 34,       // dynamic objects' secondary lighting and dominant primary
+    section_probes = 35,           // prefiltered, normalised environment probes
+    section_id_limit = 48,         // ids at or above this are invalid
+};
+
+struct FileHeader {
+    uint32_t magic;          // kMagic
+    uint32_t version;        // kVersion
+    uint32_t header_size;    // sizeof(FileHeader)
+    uint32_t section_count;  // entries in the section table, core_section_count..kMaxSections
+    uint64_t file_size;      // bytes, the whole file
+    uint32_t table_crc32;    // CRC32 of this header (with this field 0) and the section table
+    uint32_t reserved;       // 0
+};
+static_assert(sizeof(FileHeader) == 32);
+
+struct SectionEntry {
+    uint32_t id;            // SectionId, each at most once
+    uint32_t element_size;  // bytes per record; the record's sizeof for core sections
+    uint64_t offset;        // bytes from the start of the file, multiple of 8, after the table
+    uint64_t size;          // bytes, == count * element_size, offset + size <= file_size
+    uint32_t count;         // records
+    uint32_t crc32;         // CRC32 of the section's size bytes
+};
+static_assert(sizeof(SectionEntry) == 32);
+
+struct StringRef {
+    uint32_t offset;  // bytes into the strings section
+    uint32_t length;  // bytes; offset + length <= strings size
+};
+static_assert(sizeof(StringRef) == 8);
+
+struct DiskLevel {
+    float exposure_ev100;    // default exposure, EV100; valid when has_exposure
+    uint32_t has_exposure;   // 0 or 1
+    float texels_per_metre;  // requested lightmap density, > 0
+    float bounds_min[3];     // metres, static geometry (0 when there is none)
+    float bounds_max[3];     // metres, >= bounds_min
+    uint32_t reserved;       // 0
+};
+static_assert(sizeof(DiskLevel) == 40);
+
+struct DiskMaterial {
+    StringRef name;
+    float base_color[4];                  // linear RGBA factor, [0,1]
+    float metallic;                       // [0,1]
+    float roughness;                      // perceptual, [0,1]
+    float albedo[3];                      // base_color * (1 - metallic)
+    float specular_color[3];              // mix(0.04, base_color, metallic)
+    float gloss;                          // [0,1], log2(2 / roughness^4 - 1) / 18
+    float emissive[3];                    // linear, >= 0
+    float alpha_cutoff;                   // [0,1]
+    float normal_scale;                   // glTF normalTexture.scale
+    float occlusion_strength;             // [0,1]
+    uint32_t base_color_texture;          // into textures or kNoIndex
+    uint32_t metallic_roughness_texture;  // into textures or kNoIndex
+    uint32_t normal_texture;              // into textures or kNoIndex
+    uint32_t occlusion_texture;           // into textures or kNoIndex
+    uint32_t emissive_texture;            // into textures or kNoIndex
+    uint8_t alpha_mode;                   // 0 opaque, 1 mask, 2 blend
+    uint8_t double_sided;                 // 0 or 1
+    uint8_t material_class;               // 0 metal, 1 dielectric, 2 full, 3 lambert
+    uint8_t reserved;                     // 0
+};
+static_assert(sizeof(DiskMaterial) == 108);
+
+struct DiskTexture {
+    uint32_t image;       // into images or kNoIndex
+    uint16_t mag_filter;  // glTF/GL enum, 0 = unspecified
+    uint16_t min_filter;  // glTF/GL enum, 0 = unspecified
+    uint16_t wrap_s;      // 33071 clamp, 33648 mirrored, 10497 repeat
+    uint16_t wrap_t;      // as wrap_s
+};
+static_assert(sizeof(DiskTexture) == 12);
+
+struct DiskImage {
+    StringRef name;
+    StringRef uri;        // file reference relative to the package's folder; empty if embedded
+    StringRef mime_type;  // may be empty for file references
+    uint32_t first_byte;  // into image_bytes
+    uint32_t byte_count;  // 0 for file references
+};
+static_assert(sizeof(DiskImage) == 32);
+
+struct DiskLight {
+    StringRef name;
+    uint8_t type;         // 0 directional, 1 point, 2 spot
+    uint8_t role;         // 0 primary, 1 baked (secondary only), 2 effect (runtime only)
+    uint8_t reserved[2];  // 0
+    float color[3];       // linear RGB, >= 0
+    float intensity;      // lux (directional) or candela (point, spot), >= 0
+    float range;          // metres, 0 = unlimited
+    float inner_cone;     // radians, spot: 0 <= inner < outer
+    float outer_cone;     // radians, spot: <= pi/2
+    float position[3];    // metres, world
+    float direction[3];   // unit, world, the way light travels
+};
+static_assert(sizeof(DiskLight) == 64);
+
+struct DiskCamera {
+    StringRef name;         // node name, what --camera NAME matches
+    uint32_t orthographic;  // 0 or 1
+    float yfov;             // radians (perspective)
+    float aspect_ratio;     // 0 = the window's
+    float znear;            // metres, > 0 for perspective
+    float zfar;             // metres, 0 = infinite
+    float xmag, ymag;       // metres (orthographic)
+    float position[3];      // metres, world
+    float rotation[4];      // unit quaternion x, y, z, w: world from camera (looks down -Z)
+    float exposure_ev100;   // valid when has_exposure
+    uint32_t has_exposure;  // 0 or 1
+};
+static_assert(sizeof(DiskCamera) == 72);
+
+struct DiskVertex {
+    float position[3];  // metres
+    float normal[3];    // unit
+    float tangent[4];   // xyz unit, w = +-1 bitangent sign
+    float uv0[2];       // material coordinates
+    float uv1[2];       // lightmap coordinates over the surface's atlas, [0,1]
+};
+static_assert(sizeof(DiskVertex) == 56);
+
+struct DiskSurface {
+    uint32_t first_index;      // into indices, multiple of 3
+    uint32_t index_count;      // > 0, multiple of 3
+    uint32_t material;         // into materials
+    uint32_t primary_light;    // into lights (role primary) or kNoIndex when the level has none
+    uint32_t chart;            // into charts
+    uint32_t atlas;            // into atlases, == charts[chart].atlas
+    uint32_t lightmap_x;       // texels, == charts[chart].x
+    uint32_t lightmap_y;       // texels
+    uint32_t lightmap_width;   // texels, padding included
+    uint32_t lightmap_height;  // texels
+    uint32_t first_given_up;   // into given_up_lights
+    uint32_t given_up_count;   // primaries reaching the surface it bakes as secondary
+    uint32_t leaf;             // into bsp_leaves; the leaf's surface range holds this surface
+    float bounds_min[3];       // metres, world
+    float bounds_max[3];       // metres, world
+};
+static_assert(sizeof(DiskSurface) == 76);
+
+struct DiskChart {
+    uint32_t atlas;          // into atlases
+    uint32_t x, y;           // texels, top-left of the rectangle
+    uint32_t width, height;  // texels, padding included; x + width <= atlas width
+    uint32_t padding;        // texels kept free inside the rectangle on each side
+    float texels_per_metre;  // density used, > 0 for generated charts
+    uint32_t authored;       // 1 when coordinates came from TEXCOORD_1
+    float origin[3];         // world point of texel (x + padding, y + padding)
+    float axis_u[3];         // unit, world direction of +x texels
+    float axis_v[3];         // unit, world direction of +y texels
+};
+static_assert(sizeof(DiskChart) == 68);
+
+struct DiskAtlas {
+    uint32_t width;   // texels, > 0
+    uint32_t height;  // texels, > 0
+};
+static_assert(sizeof(DiskAtlas) == 8);
+
+struct DiskBspPlane {
+    double normal[3];  // unit
+    double distance;   // metres: dot(normal, p) == distance on the plane
+};
+static_assert(sizeof(DiskBspPlane) == 32);
+
+struct DiskBspNode {
+    uint32_t plane;       // into bsp_planes
+    int32_t front;        // >= 0: node index greater than this node's; < 0: leaf -(front + 1)
+    int32_t back;         // as front
+    float bounds_min[3];  // metres, of every triangle below
+    float bounds_max[3];
+};
+static_assert(sizeof(DiskBspNode) == 36);
+
+struct DiskBspLeaf {
+    uint32_t first_triangle;  // index triples: indices[3 * first_triangle ...]
+    uint32_t triangle_count;
+    uint32_t first_surface;  // into surfaces
+    uint32_t surface_count;
+    float bounds_min[3];  // metres
+    float bounds_max[3];
+};
+static_assert(sizeof(DiskBspLeaf) == 40);
+
+struct DiskDynamicMesh {
+    StringRef name;         // "node/mesh"
+    uint32_t material;      // into materials
+    uint32_t first_vertex;  // into dynamic_vertices
+    uint32_t vertex_count;
+    uint32_t first_index;  // into dynamic_indices, multiple of 3
+    uint32_t index_count;  // multiple of 3; each index < vertex_count
+};
+static_assert(sizeof(DiskDynamicMesh) == 28);
+
+struct DiskEntity {
+    StringRef name;               // node name
+    uint32_t flags;               // bit 0 dynamic, 1 mover, 2 spawn, 3 probe; no other bit
+    uint32_t first_dynamic_mesh;  // into dynamic_meshes
+    uint32_t dynamic_mesh_count;
+    float mover_period;  // seconds, > 0 for movers
+    float position[3];   // metres, world
+    float rotation[4];   // unit quaternion x, y, z, w
+    float scale[3];
+    float mover_offset[3];   // metres, world
+    float probe_box_min[3];  // metres, world; empty box = no box projection
+    float probe_box_max[3];
+};
+static_assert(sizeof(DiskEntity) == 100);
+
+struct DiskFeatures {
+    uint32_t flags;                // world::FeatureFlags
+    uint32_t material_classes;     // bit (1 << class)
+    uint32_t primary_light_types;  // bit (1 << type)
+    uint32_t baked_light_types;    // bit (1 << type)
+    uint32_t primary_count;
+    uint32_t baked_light_count;
+    uint32_t effect_omni_count;
+    uint32_t effect_spot_count;
+    uint32_t probe_count;  // authored probes
+    float grid_min[3];     // metres, light grid extent
+    float grid_max[3];
+};
+static_assert(sizeof(DiskFeatures) == 60);
+
+}  // namespace onelight::package

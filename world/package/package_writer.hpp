@@ -1,0 +1,30 @@
+// Writes a compiled level as an .olpak package (format.hpp): deterministic bytes (no time
+// stamps, zeroed padding), written to a temporary file and renamed when complete.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "world/compiled_level.hpp"
+
+namespace onelight::package {
+
+/// A section the package library does not interpret (the baker's lighting sections).
+struct RawSection {
+    uint32_t id = 0;             // SectionId >= 32
+    uint32_t element_size = 1;   // bytes per record
+    uint32_t count = 0;          // records
+    std::vector<uint8_t> bytes;  // count * element_size
+};
+
+/// The package's bytes: every core section, then `baked_sections` in the order given.
+std::vector<uint8_t> serialize_package(const world::CompiledLevel& level,
+                                       std::span<const RawSection> baked_sections = {});
+
+/// Writes `bytes` to `path` through `path.tmp` and a rename. Returns "" on success, else a
+/// one-line error naming the file.
+std::string write_file_atomically(const std::string& path, std::span<const uint8_t> bytes);
+
+}  // namespace onelight::package

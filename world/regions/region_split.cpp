@@ -1,0 +1,358 @@
+#include "world/regions/region_split.hpp"
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+namespace onelight::world {
+namespace {
+
+struct RegionTraits : OpenMesh::DefaultTraits {
+    using Point = OpenMesh::Vec3d;
+    using Normal = OpenMesh::Vec3d;
+};
+using RegionMesh = OpenMesh::TriMesh_ArrayKernelT<RegionTraits>;
+
+constexpr uint32_t kBoundary = 0xFFFFFFFEu;  // vertex label: on a cut, belongs to both sides
+constexpr uint32_t kUnlit = kNone;           // no primary reaches the point
+
+/// Evaluates the dominant primary, reusing one scratch buffer.
+struct Dominance {
+    const PrimaryIlluminanceFn& illuminance;
+    std::vector<double> scratch;
+    uint32_t at(const glm::dvec3& p, const glm::vec3& n) {
+        std::fill(scratch.begin(), scratch.end(), 0.0);
+        illuminance(p, n, scratch);
+        return dominant_primary(scratch);
+    }
+    uint32_t at(const CompileVertex& v) { return at(v.position, v.normal); }
+};
+
+CompileVertex centroid_of(const CompileVertex& a, const CompileVertex& b, const CompileVertex& c) {
+    return interpolate(interpolate(a, b, 0.5), c, 1.0 / 3.0);
+}
+
+bool position_less(const glm::dvec3& x, const glm::dvec3& y) {
+    return std::tie(x.x, x.y, x.z) < std::tie(y.x, y.y, y.z);
+}
+
+/// Splits the triangles of one mesh instance (indices into geometry.triangles).
+class InstanceSplitter {
+public:
+    InstanceSplitter(StaticGeometry& geometry, Dominance& dominance, const RegionOptions& options,
+                     RegionStats& stats)
+        : geometry_(geometry), dominance_(dominance), options_(options), stats_(stats) {
+        mesh_.add_property(vertex_id_);
+        mesh_.add_property(vertex_label_);
+        mesh_.add_property(face_label_);
+    }
+
+    std::vector<StaticTriangle> run(const std::vector<StaticTriangle>& triangles) {
+        template_ = triangles.front();
+        build(triangles);
+        split_faces_around_inner_regions();
+        cut_edges();
+        label_faces();
+        merge_small_fragments();
+        std::vector<StaticTriangle> out;
+        for (RegionMesh::FaceHandle f : mesh_.faces()) {
+            StaticTriangle t = template_;
+            int k = 0;
+            for (RegionMesh::VertexHandle v : mesh_.fv_range(f))
+                t.v[static_cast<size_t>(k++)] = mesh_.property(vertex_id_, v);
+            t.primary = mesh_.property(face_label_, f);
+            out.push_back(t);
+        }
+        for (StaticTriangle t : unmeshed_) {
+            t.primary = fallback_label(centroid_label(t.v));
+            out.push_back(t);
+        }
+        return out;
+    }
+
+private:
+    RegionMesh::VertexHandle add_vertex(uint32_t id, uint32_t label) {
+        const glm::dvec3& p = geometry_.vertices[id].position;
+        const RegionMesh::VertexHandle v = mesh_.add_vertex(RegionMesh::Point(p.x, p.y, p.z));
+        mesh_.property(vertex_id_, v) = id;
+        mesh_.property(vertex_label_, v) = label;
+        return v;
+    }
+
+    uint32_t label_of_vertex(uint32_t id) {
+        const auto found = labels_.find(id);
+        if (found != labels_.end()) return found->second;
+        const uint32_t label = dominance_.at(geometry_.vertices[id]);
+        labels_.emplace(id, label);
+        return label;
+    }
+
+    void build(const std::vector<StaticTriangle>& triangles) {
+        std::map<uint32_t, RegionMesh::VertexHandle> handle_of;
+        for (const StaticTriangle& t : triangles) {
+            std::array<RegionMesh::VertexHandle, 3> corners;
+            for (size_t k = 0; k < 3; ++k) {
+                auto it = handle_of.find(t.v[k]);
+                if (it == handle_of.end())
+                    it = handle_of.emplace(t.v[k], add_vertex(t.v[k], label_of_vertex(t.v[k])))
+                             .first;
+                corners[k] = it->second;
+            }
+            if (mesh_.add_face(corners[0], corners[1], corners[2]).is_valid()) continue;
+            // Non-manifold here: give the triangle its own corners.
+            for (size_t k = 0; k < 3; ++k) corners[k] = add_vertex(t.v[k], label_of_vertex(t.v[k]));
+            if (!mesh_.add_face(corners[0], corners[1], corners[2]).is_valid())
+                unmeshed_.push_back(t);
+        }
+    }
+
+    std::array<RegionMesh::VertexHandle, 3> corners_of(RegionMesh::FaceHandle f) const {
+        std::array<RegionMesh::VertexHandle, 3> c;
+        int k = 0;
+        for (RegionMesh::VertexHandle v : mesh_.fv_range(f)) c[static_cast<size_t>(k++)] = v;
+        return c;
+    }
+
+    uint32_t centroid_label(const std::array<uint32_t, 3>& ids) {
+        return dominance_.at(centroid_of(geometry_.vertices[ids[0]], geometry_.vertices[ids[1]],
+                                         geometry_.vertices[ids[2]]));
+    }
+
+    uint32_t fallback_label(uint32_t label) { return label == kUnlit ? 0u : label; }
+
+    /// A region that lies inside one triangle (a spot pool on a big floor) leaves all three
+    /// corners agreeing; the centre disagrees. Split such triangles at the centre first.
+    void split_faces_around_inner_regions() {
+        std::vector<RegionMesh::FaceHandle> faces(mesh_.faces_begin(), mesh_.faces_end());
+        for (RegionMesh::FaceHandle f : faces) {
+            const auto c = corners_of(f);
+            const uint32_t l0 = mesh_.property(vertex_label_, c[0]);
+            if (l0 != mesh_.property(vertex_label_, c[1]) ||
+                l0 != mesh_.property(vertex_label_, c[2]))
+                continue;
+            const std::array<uint32_t, 3> ids{mesh_.property(vertex_id_, c[0]),
+                                              mesh_.property(vertex_id_, c[1]),
+                                              mesh_.property(vertex_id_, c[2])};
+            const CompileVertex centre = centroid_of(
+                geometry_.vertices[ids[0]], geometry_.vertices[ids[1]], geometry_.vertices[ids[2]]);
+            const uint32_t label = dominance_.at(centre);
+            if (label == l0 || label == kUnlit) continue;
+            geometry_.vertices.push_back(centre);
+            const uint32_t id = static_cast<uint32_t>(geometry_.vertices.size() - 1);
+            labels_.emplace(id, label);
+            mesh_.split(f, add_vertex(id, label));
+            ++stats_.faces_centre_split;
+        }
+    }
+
+    /// Cuts every edge whose ends have different (lit) primaries at the switch point.
+    void cut_edges() {
+        std::vector<RegionMesh::EdgeHandle> edges(mesh_.edges_begin(), mesh_.edges_end());
+        for (RegionMesh::EdgeHandle e : edges) {
+            const RegionMesh::HalfedgeHandle h = mesh_.halfedge_handle(e, 0);
+            RegionMesh::VertexHandle va = mesh_.from_vertex_handle(h),
+                                     vb = mesh_.to_vertex_handle(h);
+            uint32_t la = mesh_.property(vertex_label_, va), lb = mesh_.property(vertex_label_, vb);
+            if (la == lb || la == kBoundary || lb == kBoundary || la == kUnlit || lb == kUnlit)
+                continue;
+            uint32_t ia = mesh_.property(vertex_id_, va), ib = mesh_.property(vertex_id_, vb);
+            // Bisect in a canonical direction so coincident seam edges are cut at one point.
+            if (position_less(geometry_.vertices[ib].position, geometry_.vertices[ia].position)) {
+                std::swap(ia, ib);
+                std::swap(la, lb);
+            }
+            const CompileVertex a = geometry_.vertices[ia], b = geometry_.vertices[ib];
+            const double length = glm::length(b.position - a.position);
+            if (!(length > 2.0 * options_.boundary_tolerance)) continue;
+            double lo = 0.0, hi = 1.0;
+            for (int i = 0; i < 60 && (hi - lo) * length > options_.boundary_tolerance; ++i) {
+                const double mid = 0.5 * (lo + hi);
+                if (dominance_.at(interpolate(a, b, mid)) == la)
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+            const double t = 0.5 * (lo + hi);
+            if (t * length < options_.boundary_tolerance ||
+                (1.0 - t) * length < options_.boundary_tolerance)
+                continue;
+            geometry_.vertices.push_back(interpolate(a, b, t));
+            const uint32_t id = static_cast<uint32_t>(geometry_.vertices.size() - 1);
+            mesh_.split(e, add_vertex(id, kBoundary));
+            ++stats_.edges_cut;
+        }
+    }
+
+    void label_faces() {
+        for (RegionMesh::FaceHandle f : mesh_.faces()) {
+            uint32_t label = kUnlit;
+            bool conflict = false;
+            std::array<uint32_t, 3> ids{};
+            int k = 0;
+            for (RegionMesh::VertexHandle v : mesh_.fv_range(f)) {
+                ids[static_cast<size_t>(k++)] = mesh_.property(vertex_id_, v);
+                const uint32_t l = mesh_.property(vertex_label_, v);
+                if (l == kBoundary || l == kUnlit) continue;
+                if (label != kUnlit && l != label) conflict = true;
+                label = l;
+            }
+            if (conflict || label == kUnlit) label = centroid_label(ids);
+            mesh_.property(face_label_, f) = label;
+        }
+    }
+
+    double edge_length(RegionMesh::HalfedgeHandle h) const {
+        const glm::dvec3& a =
+            geometry_.vertices[mesh_.property(vertex_id_, mesh_.from_vertex_handle(h))].position;
+        const glm::dvec3& b =
+            geometry_.vertices[mesh_.property(vertex_id_, mesh_.to_vertex_handle(h))].position;
+        return glm::length(b - a);
+    }
+
+    double face_area(RegionMesh::FaceHandle f) const {
+        const auto c = corners_of(f);
+        const glm::dvec3& a = geometry_.vertices[mesh_.property(vertex_id_, c[0])].position;
+        const glm::dvec3& b = geometry_.vertices[mesh_.property(vertex_id_, c[1])].position;
+        const glm::dvec3& d = geometry_.vertices[mesh_.property(vertex_id_, c[2])].position;
+        return 0.5 * glm::length(glm::cross(b - a, d - a));
+    }
+
+    /// Same-label connected components; relabels small or unlit ones into the neighbour with
+    /// the longest shared border, smallest first, until nothing changes.
+    void merge_small_fragments() {
+        for (int pass = 0; pass < 8; ++pass) {
+            std::vector<int> component(mesh_.n_faces(), -1);
+            std::vector<std::vector<RegionMesh::FaceHandle>> members;
+            std::vector<double> area;
+            for (RegionMesh::FaceHandle seed : mesh_.faces()) {
+                if (component[static_cast<size_t>(seed.idx())] >= 0) continue;
+                const int id = static_cast<int>(members.size());
+                members.emplace_back();
+                area.push_back(0.0);
+                std::vector<RegionMesh::FaceHandle> stack{seed};
+                component[static_cast<size_t>(seed.idx())] = id;
+                const uint32_t label = mesh_.property(face_label_, seed);
+                while (!stack.empty()) {
+                    const RegionMesh::FaceHandle f = stack.back();
+                    stack.pop_back();
+                    members.back().push_back(f);
+                    area.back() += face_area(f);
+                    for (RegionMesh::FaceHandle g : mesh_.ff_range(f)) {
+                        if (component[static_cast<size_t>(g.idx())] >= 0 ||
+                            mesh_.property(face_label_, g) != label)
+                            continue;
+                        component[static_cast<size_t>(g.idx())] = id;
+                        stack.push_back(g);
+                    }
+                }
+            }
+            std::vector<size_t> order(members.size());
+            for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+            std::stable_sort(order.begin(), order.end(),
+                             [&](size_t a, size_t b) { return area[a] < area[b]; });
+            bool changed = false;
+            std::vector<uint8_t> touched(members.size(), 0);
+            for (size_t c : order) {
+                if (touched[c]) continue;
+                const uint32_t label = mesh_.property(face_label_, members[c].front());
+                if (!(area[c] < options_.min_fragment_area) && label != kUnlit) continue;
+                std::map<uint32_t, double> border;
+                for (RegionMesh::FaceHandle f : members[c]) {
+                    for (RegionMesh::HalfedgeHandle h : mesh_.fh_range(f)) {
+                        const RegionMesh::FaceHandle g = mesh_.opposite_face_handle(h);
+                        if (!g.is_valid()) continue;
+                        const uint32_t other = mesh_.property(face_label_, g);
+                        if (other == label || other == kUnlit) continue;
+                        border[other] += edge_length(h);
+                    }
+                }
+                if (border.empty()) continue;
+                uint32_t best = border.begin()->first;
+                for (const auto& [other, length] : border)
+                    if (length > border[best]) best = other;
+                for (RegionMesh::FaceHandle f : members[c]) mesh_.property(face_label_, f) = best;
+                for (RegionMesh::FaceHandle f : members[c])
+                    for (RegionMesh::FaceHandle g : mesh_.ff_range(f))
+                        touched[static_cast<size_t>(component[static_cast<size_t>(g.idx())])] = 1;
+                ++stats_.fragments_merged;
+                changed = true;
+            }
+            if (!changed) break;
+        }
+        for (RegionMesh::FaceHandle f : mesh_.faces())
+            mesh_.property(face_label_, f) = fallback_label(mesh_.property(face_label_, f));
+    }
+
+    StaticGeometry& geometry_;
+    Dominance& dominance_;
+    const RegionOptions& options_;
+    RegionStats& stats_;
+    RegionMesh mesh_;
+    OpenMesh::VPropHandleT<uint32_t> vertex_id_;
+    OpenMesh::VPropHandleT<uint32_t> vertex_label_;
+    OpenMesh::FPropHandleT<uint32_t> face_label_;
+    std::map<uint32_t, uint32_t> labels_;
+    std::vector<StaticTriangle> unmeshed_;
+    StaticTriangle template_;
+};
+
+}  // namespace
+
+RegionStats assign_primary_regions(StaticGeometry& geometry, uint32_t primary_count,
+                                   const PrimaryIlluminanceFn& illuminance,
+                                   const RegionOptions& options) {
+    RegionStats stats;
+    const size_t before = geometry.triangles.size();
+    if (primary_count == 0) {
+        for (StaticTriangle& t : geometry.triangles) t.primary = kNone;
+        return stats;
+    }
+    Dominance dominance{illuminance, std::vector<double>(primary_count, 0.0)};
+    std::vector<StaticTriangle> out;
+    out.reserve(geometry.triangles.size());
+    size_t begin = 0;
+    const std::vector<StaticTriangle> triangles = std::move(geometry.triangles);
+    while (begin < triangles.size()) {
+        // Triangles of one instance (and material) are contiguous after the split stage.
+        size_t end = begin + 1;
+        while (end < triangles.size() && triangles[end].instance == triangles[begin].instance &&
+               triangles[end].material == triangles[begin].material)
+            ++end;
+        InstanceSplitter splitter(geometry, dominance, options, stats);
+        const std::vector<StaticTriangle> group(
+            triangles.begin() + static_cast<std::ptrdiff_t>(begin),
+            triangles.begin() + static_cast<std::ptrdiff_t>(end));
+        const std::vector<StaticTriangle> split = splitter.run(group);
+        out.insert(out.end(), split.begin(), split.end());
+        begin = end;
+    }
+    geometry.triangles = std::move(out);
+    stats.triangles_added = static_cast<uint32_t>(geometry.triangles.size() - before);
+    return stats;
+}
+
+std::vector<uint32_t> given_up_primaries(const StaticGeometry& geometry,
+                                         std::span<const StaticTriangle> triangles, uint32_t own,
+                                         uint32_t primary_count,
+                                         const PrimaryIlluminanceFn& illuminance) {
+    std::vector<uint8_t> reaches(primary_count, 0);
+    std::vector<double> scratch(primary_count, 0.0);
+    std::vector<uint32_t> done;
+    for (const StaticTriangle& t : triangles) {
+        for (uint32_t id : t.v) {
+            const CompileVertex& v = geometry.vertices[id];
+            std::fill(scratch.begin(), scratch.end(), 0.0);
+            illuminance(v.position, v.normal, scratch);
+            for (uint32_t i = 0; i < primary_count; ++i)
+                if (scratch[i] > 0.0) reaches[i] = 1;
+        }
+    }
+    std::vector<uint32_t> out;
+    for (uint32_t i = 0; i < primary_count; ++i)
+        if (reaches[i] && i != own) out.push_back(i);
+    return out;
+}
+
+}  // namespace onelight::world

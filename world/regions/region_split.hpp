@@ -1,0 +1,41 @@
+// Primary-light regions: every static triangle gets exactly one primary. Where the dominant
+// primary changes inside a mesh, the mesh is split along the change with OpenMesh (edges are
+// cut where a bisection finds the switch), so no triangle straddles two primaries; fragments
+// smaller than a threshold are merged into the neighbour they share the longest border with.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "world/regions/primary_illuminance.hpp"
+#include "world/static_geometry.hpp"
+
+namespace onelight::world {
+
+struct RegionOptions {
+    double min_fragment_area = 0.05;   // m^2: smaller same-primary fragments are merged
+    double boundary_tolerance = 1e-3;  // metres: bisection stops below this; edges shorter
+                                       // than twice this are not cut
+};
+
+struct RegionStats {
+    uint32_t edges_cut = 0;           // edges split where the primary changes
+    uint32_t faces_centre_split = 0;  // triangles split at their centre (a region inside one)
+    uint32_t fragments_merged = 0;    // fragments relabelled into a neighbour
+    uint32_t triangles_added = 0;     // triangles after minus triangles before
+};
+
+/// Sets StaticTriangle::primary on every triangle (kNone only when primary_count == 0),
+/// splitting triangles as needed. Total area is preserved.
+RegionStats assign_primary_regions(StaticGeometry& geometry, uint32_t primary_count,
+                                   const PrimaryIlluminanceFn& illuminance,
+                                   const RegionOptions& options);
+
+/// Primaries other than `own` with non-zero illuminance at any corner of the given triangles:
+/// the lights this surface gives up, baked as secondary. Sorted ascending.
+std::vector<uint32_t> given_up_primaries(const StaticGeometry& geometry,
+                                         std::span<const StaticTriangle> triangles, uint32_t own,
+                                         uint32_t primary_count,
+                                         const PrimaryIlluminanceFn& illuminance);
+
+}  // namespace onelight::world

@@ -1,0 +1,44 @@
+// The level as imported from glTF, before compile: world-placed mesh instances plus the
+// materials, lights, cameras and entities they use. Only what the active scene uses is kept.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "world/compiled_level.hpp"
+
+namespace onelight::world {
+
+/// One glTF mesh primitive placed by one node. Vertices stay in the node's space.
+struct MeshInstance {
+    std::string node_name;
+    std::string mesh_name;
+    uint32_t primitive = 0;     // index within the glTF mesh
+    uint32_t material = kNone;  // into SourceLevel::materials (a default is added if needed)
+    glm::dmat4 world_from_local{1.0};
+    std::vector<Vertex> vertices;   // local space
+    std::vector<uint32_t> indices;  // triangles
+    bool has_uv1 = false;           // TEXCOORD_1 was present
+    bool dynamic = false;           // not part of the BSP, lit by the grid
+    uint32_t entity = kNone;        // into SourceLevel::entities when dynamic
+};
+
+struct SourceLevel {
+    std::string source_path;  // the .gltf, for messages
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<Image> images;  // uri relative to the glTF's folder
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;
+    std::vector<MeshInstance> instances;
+    std::vector<Entity> entities;  // dynamic-mesh ranges are filled at compile
+    float exposure_ev100 = 0.0f;
+    bool has_exposure = false;
+    bool has_grid_bounds = false;
+    glm::vec3 grid_min{0.0f}, grid_max{0.0f};
+};
+
+}  // namespace onelight::world
