@@ -12,8 +12,10 @@ function(onelight_add_test name)
   target_link_libraries(${name} PRIVATE GTest::gtest GTest::gtest_main ${T_LIBS})
   set(env "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}/xdg")
   if("gpu" IN_LIST T_LABELS)
-    list(APPEND env "VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation" "ONELIGHT_VALIDATION=1")
+    list(APPEND env "ONELIGHT_VALIDATION=1")  # runtime/vk enables VK_LAYER_KHRONOS_validation
   endif()
+  # ENVIRONMENT is a list: repeat the property name so that each entry survives discovery.
+  string(REPLACE ";" ";ENVIRONMENT;" env "${env}")
   gtest_discover_tests(${name} DISCOVERY_MODE PRE_TEST
                        PROPERTIES LABELS "${T_LABELS}" ENVIRONMENT "${env}")
   if("unit" IN_LIST T_LABELS)

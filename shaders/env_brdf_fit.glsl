@@ -7,48 +7,51 @@
 #include "brdf.glsl"
 
 // The environment "Fresnel" of the runtime BRDF as vec2(scale, bias): the specular
-// albedo is f0 * scale + bias. Basis: x^i y^j {1, w, k}, x = sqrt(NoV),
-// y = sqrt(alpha), w = mirror-limit Smith G2, k = (1 - NoV)^5 (bake/lab/env_brdf.hpp).
+// albedo is f0 * scale + bias. Basis: P_i(2x - 1) P_j(2y - 1) {1, 1 - w, k}, P_i
+// Legendre, x = sqrt(NoV), y = sqrt(alpha), w = mirror-limit Smith G2,
+// k = (1 - NoV)^5 (bake/lab/env_brdf.hpp).
 vec2 EnvBRDF_Fit(float NoV, float gloss) {
     float a = ggxAlpha_fromGloss(gloss);
-    float w = NoV * inversesqrt(NoV * NoV + a * a * oneMinusSq(NoV));
+    float v = 1.0f - NoV * inversesqrt(NoV * NoV + a * a * oneMinusSq(NoV));
     float k = pow5(1.0f - NoV);
-    float x0 = 1.0f;
-    float x1 = sqrt(NoV);
-    float x2 = NoV;
-    float y0 = 1.0f;
-    float y1 = sqrt(a);
-    float y2 = a;
+    float ux = 2.0f * sqrt(NoV) - 1.0f;
+    float uy = 2.0f * sqrt(a) - 1.0f;
+    float px0 = 1.0f;
+    float px1 = ux;
+    float px2 = 1.5f * ux * ux - 0.5f;
+    float py0 = 1.0f;
+    float py1 = uy;
+    float py2 = 1.5f * uy * uy - 0.5f;
     float scale = 0.0f;
     float bias = 0.0f;
     float m;
-    m = x0 * y0;
-    scale += m * (1.372280716e+00f + w * 1.811267819e-01f + k * -1.531789949e+00f);
-    bias += m * (2.270078131e-01f + w * -2.645193875e-01f + k * 8.908543627e-01f);
-    m = x0 * y1;
-    scale += m * (-1.278219042e+00f + w * -3.128040456e+00f + k * 3.962544044e+00f);
-    bias += m * (1.752428904e-01f + w * 2.248690186e+00f + k * -2.750166029e+00f);
-    m = x0 * y2;
-    scale += m * (2.199980783e-01f + w * 3.294676428e+00f + k * -1.822756620e+00f);
-    bias += m * (2.929974846e+00f + w * -7.449993666e+00f + k * -1.322221125e+00f);
-    m = x1 * y0;
-    scale += m * (1.508527273e+00f + w * -2.774584095e+00f + k * 8.679741609e-01f);
-    bias += m * (-3.552968863e+00f + w * 3.664545551e+00f + k * 1.391044347e+00f);
-    m = x1 * y1;
-    scale += m * (-9.294736443e-01f + w * 1.151703854e+01f + k * -5.030480432e+00f);
-    bias += m * (6.638237019e+00f + w * -1.201581420e+01f + k * -6.667962108e-01f);
-    m = x1 * y2;
-    scale += m * (-3.435465649e-01f + w * -1.088442952e+01f + k * 3.667728653e+00f);
-    bias += m * (-9.232960244e+00f + w * 1.871345292e+01f + k * 4.023171360e+00f);
-    m = x2 * y0;
-    scale += m * (-1.364223138e+00f + w * 2.050002418e+00f + k * -1.180928414e+00f);
-    bias += m * (6.427922510e+00f + w * -6.502201560e+00f + k * -2.640979369e+00f);
-    m = x2 * y1;
-    scale += m * (1.311638772e+00f + w * -7.098656281e+00f + k * 4.879490212e+00f);
-    bias += m * (-1.241779612e+01f + w * 1.537293948e+01f + k * 1.000201183e+01f);
-    m = x2 * y2;
-    scale += m * (6.859423678e-01f + w * 5.928500821e+00f + k * -3.052428782e+00f);
-    bias += m * (8.829669611e+00f + w * -1.379299417e+01f + k * -1.393449187e+01f);
+    m = px0 * py0;
+    scale += m * (6.633976899e-01f + v * 4.478248976e-01f + k * -2.900015756e-01f);
+    bias += m * (-1.244581101e-01f + v * 8.140763173e-01f + k * -4.872187056e-01f);
+    m = px0 * py1;
+    scale += m * (-4.679910140e-01f + v * -4.644433016e-02f + k * 1.033716006e+00f);
+    bias += m * (-3.570108636e-01f + v * 6.629178404e-01f + k * -1.852513130e+00f);
+    m = px0 * py2;
+    scale += m * (1.758347665e-02f + v * 2.856189865e-02f + k * -1.677280923e-01f);
+    bias += m * (-2.390356671e-01f + v * 4.484886550e-01f + k * -6.592443445e-01f);
+    m = px1 * py0;
+    scale += m * (1.410759256e-01f + v * 8.368339100e-02f + k * -9.167470307e-02f);
+    bias += m * (1.659017180e-01f + v * -2.405297756e-01f + k * 5.694964161e-02f);
+    m = px1 * py1;
+    scale += m * (4.675362209e-02f + v * 1.343866107e-01f + k * 1.160774128e-01f);
+    bias += m * (5.236835755e-01f + v * -2.069396009e+00f + k * -1.440262227e-01f);
+    m = px1 * py2;
+    scale += m * (-3.844610747e-01f + v * 4.129940583e-01f + k * 5.127498929e-02f);
+    bias += m * (3.764306764e-01f + v * -4.100382292e-01f + k * -8.259433756e-01f);
+    m = px2 * py0;
+    scale += m * (-4.858463722e-04f + v * -7.947353631e-02f + k * 4.022340520e-02f);
+    bias += m * (-4.185814806e-02f + v * 5.688994235e-01f + k * -3.808006797e-01f);
+    m = px2 * py1;
+    scale += m * (6.895213996e-02f + v * 9.751295505e-02f + k * 1.522551192e-01f);
+    bias += m * (-1.673484329e-01f + v * -1.316621097e-01f + k * -3.277066700e-01f);
+    m = px2 * py2;
+    scale += m * (1.837345330e-01f + v * -1.646805784e-01f + k * -8.478968838e-02f);
+    bias += m * (-1.378701265e-01f + v * 3.831387268e-01f + k * -3.870692185e-01f);
     return vec2(saturate(scale), saturate(bias));
 }
 

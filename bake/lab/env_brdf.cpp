@@ -60,10 +60,14 @@ std::vector<double> envFitBasis(double mu, double gloss) {
     double x = std::sqrt(mu), y = std::sqrt(alpha);
     double w = mu / std::sqrt(mu * mu + alpha * alpha * (1.0 - mu * mu));
     double k = std::pow(1.0 - mu, 5.0);
+    auto legendre = [](int i, double t) {
+        double u = 2.0 * t - 1.0;
+        return i == 0 ? 1.0 : i == 1 ? u : 1.5 * u * u - 0.5;
+    };
     std::vector<double> b;
-    for (double factor : {1.0, w, k})
+    for (double factor : {1.0, 1.0 - w, k})
         for (int i = 0; i <= 2; ++i)
-            for (int j = 0; j <= 2; ++j) b.push_back(factor * std::pow(x, i) * std::pow(y, j));
+            for (int j = 0; j <= 2; ++j) b.push_back(factor * legendre(i, x) * legendre(j, y));
     return b;
 }
 
@@ -92,12 +96,12 @@ std::string envFitGlsl(const EnvFit& fit, const std::string& provenance) {
     for (int i = 0; i <= 2; ++i)
         for (int j = 0; j <= 2; ++j) {
             int t = i * 3 + j;
-            std::snprintf(buf, sizeof buf, "    m = x%d * y%d;\n", i, j);
+            std::snprintf(buf, sizeof buf, "    m = px%d * py%d;\n", i, j);
             body += buf;
             for (const char* which : {"scale", "bias"}) {
                 const std::vector<double>& c = std::string(which) == "scale" ? fit.scale : fit.bias;
                 std::snprintf(buf, sizeof buf,
-                              "    %s += m * (%.9ef + w * %.9ef + k * %.9ef);\n", which,
+                              "    %s += m * (%.9ef + v * %.9ef + k * %.9ef);\n", which,
                               c[t], c[9 + t], c[18 + t]);
                 body += buf;
             }
@@ -107,14 +111,16 @@ std::string envFitGlsl(const EnvFit& fit, const std::string& provenance) {
            "#ifndef ONELIGHT_ENV_BRDF_FIT_GLSL\n#define ONELIGHT_ENV_BRDF_FIT_GLSL\n\n"
            "#include \"brdf.glsl\"\n\n"
            "// The environment \"Fresnel\" of the runtime BRDF as vec2(scale, bias): the specular\n"
-           "// albedo is f0 * scale + bias. Basis: x^i y^j {1, w, k}, x = sqrt(NoV),\n"
-           "// y = sqrt(alpha), w = mirror-limit Smith G2, k = (1 - NoV)^5 (bake/lab/env_brdf.hpp).\n"
+           "// albedo is f0 * scale + bias. Basis: P_i(2x - 1) P_j(2y - 1) {1, 1 - w, k}, P_i\n"
+           "// Legendre, x = sqrt(NoV), y = sqrt(alpha), w = mirror-limit Smith G2,\n"
+           "// k = (1 - NoV)^5 (bake/lab/env_brdf.hpp).\n"
            "vec2 EnvBRDF_Fit(float NoV, float gloss) {\n"
            "    float a = ggxAlpha_fromGloss(gloss);\n"
-           "    float w = NoV * inversesqrt(NoV * NoV + a * a * oneMinusSq(NoV));\n"
+           "    float v = 1.0f - NoV * inversesqrt(NoV * NoV + a * a * oneMinusSq(NoV));\n"
            "    float k = pow5(1.0f - NoV);\n"
-           "    float x0 = 1.0f;\n    float x1 = sqrt(NoV);\n    float x2 = NoV;\n"
-           "    float y0 = 1.0f;\n    float y1 = sqrt(a);\n    float y2 = a;\n"
+           "    float ux = 2.0f * sqrt(NoV) - 1.0f;\n    float uy = 2.0f * sqrt(a) - 1.0f;\n"
+           "    float px0 = 1.0f;\n    float px1 = ux;\n    float px2 = 1.5f * ux * ux - 0.5f;\n"
+           "    float py0 = 1.0f;\n    float py1 = uy;\n    float py2 = 1.5f * uy * uy - 0.5f;\n"
            "    float scale = 0.0f;\n    float bias = 0.0f;\n    float m;\n" +
            body + "    return vec2(saturate(scale), saturate(bias));\n}\n\n#endif\n";
 }

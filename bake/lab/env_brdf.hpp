@@ -29,11 +29,13 @@ struct SplitSumTable {
 SplitSumTable buildSplitSumTable(const SpecularModel& model, int resolution);
 
 // The lab's own fit: scale and bias each a linear combination of 27 basis functions
-//   x^i y^j * {1, w, k},  i, j <= 2,  x = sqrt(NoV), y = sqrt(alpha),
-//   w = NoV / sqrt(NoV^2 + alpha^2 (1 - NoV^2))   (mirror-limit height-correlated Smith G2)
-//   k = (1 - NoV)^5                                 (Schlick's weight at the mirror direction)
+//   P_i(2x - 1) P_j(2y - 1) * {1, 1 - w, k},  i, j <= 2,  x = sqrt(NoV), y = sqrt(alpha),
+//   P_i the Legendre polynomials, w = NoV / sqrt(NoV^2 + alpha^2 (1 - NoV^2)) (the mirror-limit
+//   height-correlated Smith G2), k = (1 - NoV)^5 (Schlick's weight at the mirror direction),
 // fitted by linear least squares. w carries the grazing feature of width ~alpha that no low
 // polynomial in (NoV, gloss) can follow at high gloss; rational fits in (NoV, gloss) grew poles.
+// Legendre polynomials and 1 - w (rather than monomials and w, which is ~1 almost everywhere)
+// keep the terms from cancelling, so float evaluation stays within ~1e-6 of exact.
 struct EnvFit {
     static constexpr int kTerms = 27;
     std::vector<double> scale, bias;  // kTerms coefficients each, in envFitBasis order

@@ -3,8 +3,14 @@
 // the shared float code against.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
+#include <vector>
+
+#include "quadrature.hpp"
 
 namespace onelight::lab::reference {
 
@@ -40,11 +46,66 @@ inline double lambdaGGX(double mu, double alpha) {
     return 0.5 * (std::sqrt(1.0 + alpha * alpha * tan2) - 1.0);
 }
 
+// Exact Smith Lambda of the Blinn-Phong NDF, which has no closed form, from the projected-area
+// identity (Heitz 2014, eq. 12): mu (1 + Lambda(mu)) = int D(m) <o.m>+ dm. The azimuthal
+// integral is analytic: for a = sin(theta_o) sin(theta), b = mu cos(theta),
+//   int_0^2pi max(0, a cos phi + b) dphi = 2 pi b               (b >= a)
+//                                        = 2 (a sin phi0 + b phi0), cos phi0 = -b / a  (b < a).
+// P(mu) = mu (1 + Lambda) is smooth and finite down to mu = 0, so it is tabulated once per
+// exponent at 2049 values of mu and interpolated linearly (error < 1e-8).
+// ndf(sin2, cos) of any isotropic NDF; w its lobe width (for the theta mapping).
+template <class Ndf>
+double projectedArea(double mu, double w, const Ndf& ndf) {
+    double sinO = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+    auto f = [&](double u) {
+        double t = std::tan(0.5 * kPi * u), theta = std::atan(w * t);
+        double dTheta = 0.5 * kPi * w * (1.0 + t * t) / (1.0 + w * w * t * t);
+        double s = std::sin(theta), c = std::cos(theta);
+        double a = sinO * s, b = mu * c, azimuthal;
+        if (b >= a) {
+            azimuthal = 2.0 * kPi * b;
+        } else {
+            double phi0 = std::acos(-b / a);
+            azimuthal = 2.0 * (a * std::sin(phi0) + b * phi0);
+        }
+        return Vec<1>{ndf(s * s, c) * s * azimuthal * dTheta};
+    };
+    // The integrand has a kink where facets start to face away (b = a: theta = pi/2 - theta_o);
+    // split there so that the adaptive rule sees two smooth pieces.
+    double thetaKink = 0.5 * kPi - std::acos(std::clamp(mu, 0.0, 1.0));
+    double uKink = std::atan(std::tan(thetaKink) / w) * 2.0 / kPi;
+    QuadratureTolerance tol{1e-14, 1e-11, 2000};
+    return integrate<1>(f, 0.0, uKink, tol)[0] + integrate<1>(f, uKink, 1.0, tol)[0];
+}
+
+inline double projectedAreaBlinnPhong(double mu, double n) {
+    return projectedArea(mu, std::sqrt(2.0 / (n + 2.0)),
+                         [n](double s2, double c) { return ndfBlinnPhong(s2, c, n); });
+}
+
+inline double lambdaBlinnPhong(double mu, double n) {
+    constexpr int kSamples = 2049;
+    static std::mutex mutex;
+    static std::map<double, std::vector<double>> tables;  // exponent -> P at mu = i / 2048
+    const std::vector<double>* table;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        std::vector<double>& t = tables[n];
+        if (t.empty())
+            for (int i = 0; i < kSamples; ++i)
+                t.push_back(projectedAreaBlinnPhong(double(i) / (kSamples - 1), n));
+        table = &t;
+    }
+    double x = std::clamp(mu, 0.0, 1.0) * (kSamples - 1);
+    int i = std::min(int(x), kSamples - 2);
+    double P = (*table)[i] + ((*table)[i + 1] - (*table)[i]) * (x - i);
+    return std::max(0.0, P / mu - 1.0);
+}
+
 enum class Ndf { BlinnPhong, Beckmann, GGX };
 
 // The exact height-correlated Smith BRDF times the cosine, F = 1:
-// f NoL = D G2 / (4 NoV), G2 = 1 / (1 + Lambda(v) + Lambda(l)). Blinn-Phong uses Beckmann's
-// Lambda at m = sqrt(2 / (n + 2)) (Walter et al. 2007, sec. 5.2).
+// f NoL = D G2 / (4 NoV), G2 = 1 / (1 + Lambda(v) + Lambda(l)), each NDF with its own Lambda.
 inline double smithLobe(Ndf ndf, double gloss, double NoV, double NoL, double sin2H, double cosH) {
     if (NoL <= 0.0 || NoV <= 0.0) return 0.0;
     double D, lv, ll;
@@ -53,12 +114,16 @@ inline double smithLobe(Ndf ndf, double gloss, double NoV, double NoL, double si
         D = ndfGGX(sin2H, cosH, a);
         lv = lambdaGGX(NoV, a);
         ll = lambdaGGX(NoL, a);
-    } else {
+    } else if (ndf == Ndf::Beckmann) {
         double m = beckmannM(gloss);
-        D = ndf == Ndf::Beckmann ? ndfBeckmann(sin2H, cosH, m)
-                                 : ndfBlinnPhong(sin2H, cosH, specPower(gloss));
+        D = ndfBeckmann(sin2H, cosH, m);
         lv = lambdaBeckmann(NoV, m);
         ll = lambdaBeckmann(NoL, m);
+    } else {
+        double n = specPower(gloss);
+        D = ndfBlinnPhong(sin2H, cosH, n);
+        lv = lambdaBlinnPhong(NoV, n);
+        ll = lambdaBlinnPhong(NoL, n);
     }
     return D / (4.0 * NoV * (1.0 + lv + ll));
 }

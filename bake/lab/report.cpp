@@ -293,7 +293,7 @@ int brdfReport(const std::string& dir, bool quick) {
        << mus.size() << " NoV x " << glosses.size() << " gloss values.\n\n"
        << "## Specular models\n\n"
        << "Reference: the exact height-correlated Smith BRDF of the same NDF in double precision "
-          "(`bake/lab/reference_brdf.hpp`; Blinn-Phong uses Beckmann's Lambda at m = sqrt(2/(n+2))). "
+          "(`bake/lab/reference_brdf.hpp`; Blinn-Phong's Lambda, which has no closed form, is integrated from the projected-area identity). "
           "For `beck_smith` and `ggx_smith` the error is therefore that of the float "
           "implementation alone. Albedo error is |A - A_ref| with F = 1; lobe error is "
           "int |f - f_ref| NoL dl / int f_ref NoL dl. Max albedo is the white-furnace maximum "

@@ -184,3 +184,30 @@ TEST(LabAlbedo, LobeErrorSeparatesModels) {
     EXPECT_LT(lobeError(findModel("ggx_smith"), 0.5, 0.5), 1e-6);
     EXPECT_GT(lobeError(findModel("bp_none"), 0.2, 0.5), 0.3);
 }
+
+// The numerical Lambda (projected-area identity) that the Blinn-Phong reference relies on
+// reproduces the closed-form Lambdas of Beckmann and GGX.
+TEST(LabReference, ProjectedAreaLambdaMatchesClosedForms) {
+    for (double g : {0.0, 0.3, 0.6, 0.9})
+        for (double mu : {0.01, 0.1, 0.3, 0.6, 0.9, 0.999}) {
+            double m = ref::beckmannM(g), a = ref::ggxAlpha(g);
+            double beck = ref::projectedArea(
+                mu, m, [m](double s2, double c) { return ref::ndfBeckmann(s2, c, m); });
+            double ggx = ref::projectedArea(
+                mu, a, [a](double s2, double c) { return ref::ndfGGX(s2, c, a); });
+            EXPECT_NEAR(beck / mu - 1, ref::lambdaBeckmann(mu, m), 1e-7 / mu) << g << ' ' << mu;
+            EXPECT_NEAR(ggx / mu - 1, ref::lambdaGGX(mu, a), 1e-7 / mu) << g << ' ' << mu;
+        }
+}
+
+// Walter et al. 2007 (sec. 5.2): for high exponents Blinn-Phong's Lambda approaches Beckmann's
+// at m = sqrt(2 / (n + 2)); at n = 1 they differ, which is why the reference integrates it.
+TEST(LabReference, BlinnPhongLambdaApproachesBeckmannAtHighExponents) {
+    double n = ref::specPower(0.8), m = ref::beckmannM(0.8);
+    for (double mu : {0.05, 0.2, 0.5})
+        EXPECT_NEAR(ref::lambdaBlinnPhong(mu, n), ref::lambdaBeckmann(mu, m),
+                    0.02 * ref::lambdaBeckmann(mu, m) + 1e-6)
+            << mu;
+    EXPECT_GT(std::abs(ref::lambdaBlinnPhong(0.2, 1.0) - ref::lambdaBeckmann(0.2, ref::beckmannM(0.0))),
+              1e-2);
+}
