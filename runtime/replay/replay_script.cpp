@@ -1,0 +1,204 @@
+#include "replay_script.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace onelight::replay {
+
+namespace {
+
+std::vector<std::string_view> splitWords(std::string_view line) {
+    std::vector<std::string_view> words;
+    size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+        size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+        if (i > start) words.push_back(line.substr(start, i - start));
+    }
+    return words;
+}
+
+class LineParser {
+public:
+    LineParser(const std::string& path, int line, std::vector<std::string_view> words)
+        : path_(path), line_(line), words_(std::move(words)) {}
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw ScriptError(path_ + ":" + std::to_string(line_) + ": " + what);
+    }
+    bool done() const { return next_ >= words_.size(); }
+    std::string_view word(const char* expected) {
+        if (done()) fail(std::string("expected ") + expected + " at the end of the line");
+        return words_[next_++];
+    }
+    void keyword(std::string_view k) {
+        std::string_view w = word(std::string(k).c_str());
+        if (w != k) fail("expected '" + std::string(k) + "', found '" + std::string(w) + "'");
+    }
+    double number(const char* expected) {
+        std::string_view w = word(expected);
+        std::string_view digits = w.size() > 1 && w[0] == '+' ? w.substr(1) : w;
+        double x = 0.0;
+        auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), x);
+        if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(x))
+            fail(std::string("expected ") + expected + " (a number), found '" + std::string(w) +
+                 "'");
+        return x;
+    }
+    bool choice(std::string_view yes, std::string_view no) {
+        std::string_view w = word((std::string(yes) + " or " + std::string(no)).c_str());
+        if (w == yes) return true;
+        if (w == no) return false;
+        fail("expected '" + std::string(yes) + "' or '" + std::string(no) + "', found '" +
+             std::string(w) + "'");
+    }
+    void end() {
+        if (!done()) fail("unexpected '" + std::string(words_[next_]) + "' after the command");
+    }
+
+private:
+    const std::string& path_;
+    int line_;
+    std::vector<std::string_view> words_;
+    size_t next_ = 0;
+};
+
+const std::set<std::string_view>& knownKeys() {
+    static const std::set<std::string_view> keys = {"W", "A", "S", "D", "SPACE", "SHIFT", "CTRL",
+                                                    "F", "E", "Q", "R", "0",     "1",     "2",
+                                                    "3", "4", "5", "6", "7",     "8",     "9"};
+    return keys;
+}
+
+}  // namespace
+
+Script parseScript(std::string_view text, const std::string& path) {
+    Script script;
+    script.path = path;
+    double cursor = 0.0;     // seconds
+    bool timedSeen = false;  // header commands must precede timed ones
+    int lineNumber = 0;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view raw = text.substr(start, end - start);
+        start = end + 1;
+        ++lineNumber;
+        if (size_t hash = raw.find('#'); hash != std::string_view::npos) raw = raw.substr(0, hash);
+        std::vector<std::string_view> words = splitWords(raw);
+        if (words.empty()) continue;
+        LineParser p(path, lineNumber, words);
+        std::string_view head = p.word("a command");
+
+        if (head == "level" || head == "tick") {
+            if (timedSeen) p.fail("'" + std::string(head) + "' must come before any timed command");
+            if (head == "level") {
+                if (!script.level.empty()) p.fail("the level is already named");
+                script.level = std::string(p.word("a level name"));
+            } else {
+                script.tickRate = p.number("a tick rate in Hz");
+                if (script.tickRate < 1.0 || script.tickRate > 1000.0)
+                    p.fail("expected a tick rate between 1 and 1000 Hz");
+            }
+            p.end();
+            continue;
+        }
+        if (head == "wait") {
+            double s = p.number("seconds");
+            if (s < 0.0) p.fail("expected a wait of zero or more seconds");
+            cursor += s;
+            p.end();
+            continue;
+        }
+        if (head == "at") {
+            double t = p.number("a time in seconds");
+            if (t < 0.0) p.fail("expected a time of zero or more seconds");
+            if (t < cursor) {
+                char buf[96];
+                std::snprintf(buf, sizeof buf,
+                              "time %g goes backwards (the previous command is at %g)", t, cursor);
+                p.fail(buf);
+            }
+            cursor = t;
+            head = p.word("a command after the time");
+        }
+
+        Command c;
+        c.line = lineNumber;
+        c.time = cursor;
+        c.tick = uint64_t(std::llround(cursor * script.tickRate));
+        if (head == "spawn") {
+            c.kind = CommandKind::Spawn;
+            c.name = std::string(p.word("'player'"));
+            if (c.name != "player") p.fail("expected 'player', found '" + c.name + "'");
+            for (int i = 0; i < 3; ++i) c.values[i] = float(p.number("a coordinate in metres"));
+            p.keyword("yaw");
+            c.values[3] = float(p.number("a yaw in degrees"));
+            p.keyword("pitch");
+            c.values[4] = float(p.number("a pitch in degrees"));
+        } else if (head == "key") {
+            c.kind = CommandKind::Key;
+            c.name = std::string(p.word("a key name"));
+            if (!knownKeys().count(c.name))
+                p.fail("expected a key (W A S D SPACE SHIFT CTRL F E Q R 0-9), found '" + c.name +
+                       "'");
+            c.on = p.choice("down", "up");
+        } else if (head == "look") {
+            c.kind = CommandKind::Look;
+            c.values[0] = float(p.number("a yaw change in degrees"));
+            c.values[1] = float(p.number("a pitch change in degrees"));
+        } else if (head == "flashlight") {
+            c.kind = CommandKind::Flashlight;
+            c.on = p.choice("on", "off");
+        } else if (head == "fire") {
+            c.kind = CommandKind::Fire;
+        } else if (head == "capture") {
+            c.kind = CommandKind::Capture;
+            c.name = std::string(p.word("a capture name"));
+            if (c.name.find('/') != std::string::npos || c.name.find("..") != std::string::npos)
+                p.fail("expected a capture name without '/' or '..', found '" + c.name + "'");
+        } else if (head == "expect") {
+            std::string_view what = p.word("'primary' or 'effect-lights'");
+            if (what == "primary") {
+                c.kind = CommandKind::ExpectPrimary;
+                c.name = std::string(p.word("an entity name"));
+                p.keyword("==");
+                c.light = std::string(p.word("a light name"));
+            } else if (what == "effect-lights") {
+                c.kind = CommandKind::ExpectEffectLights;
+                double n = p.number("a count of effect lights");
+                if (n < 0 || n > 5 || n != std::floor(n))
+                    p.fail("expected a whole count from 0 to 5");
+                c.count = int(n);
+            } else {
+                p.fail("expected 'primary' or 'effect-lights' after 'expect', found '" +
+                       std::string(what) + "'");
+            }
+        } else if (head == "quit") {
+            c.kind = CommandKind::Quit;
+        } else {
+            p.fail("unknown command '" + std::string(head) +
+                   "' (expected level, tick, spawn, at, wait, key, look, flashlight, fire, "
+                   "capture, expect or quit)");
+        }
+        p.end();
+        timedSeen = true;
+        script.commands.push_back(std::move(c));
+    }
+    return script;
+}
+
+Script loadScript(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ScriptError(path + ":0: cannot open the replay script");
+    std::stringstream text;
+    text << in.rdbuf();
+    return parseScript(text.str(), path);
+}
+
+}  // namespace onelight::replay

@@ -1,0 +1,73 @@
+// Replay scripts: plain text, one command a line, run on a fixed tick so that the same script
+// gives the same frames (../shared/DESIGN.md, "Replay scripts").
+//
+//   # comment                      blank lines and comments are ignored
+//   level demo                     the level to play (once, before any timed command)
+//   tick 60                        tick rate in Hz (optional, default 60; before timed commands)
+//   spawn player X Y Z yaw DEG pitch DEG
+//   at T <command>                 T seconds from the start; times never go backwards
+//   wait S                         moves the time cursor S seconds on (for commands without `at`)
+//   key NAME down|up               W, A, S, D, SPACE, SHIFT, CTRL, F, E, Q, R, 0-9
+//   look DYAW DPITCH               degrees, signed
+//   flashlight on|off
+//   fire
+//   capture NAME                   writes NAME.png, NAME.exr and NAME.json
+//   expect primary ENTITY == LIGHT
+//   expect effect-lights N
+//   quit
+//
+// Parsing checks the syntax, numbers and times; entity and light names are resolved (and
+// reported with their line) by whoever runs the script.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace onelight::replay {
+
+enum class CommandKind {
+    Spawn,
+    Key,
+    Look,
+    Flashlight,
+    Fire,
+    Capture,
+    ExpectPrimary,
+    ExpectEffectLights,
+    Quit
+};
+
+struct Command {
+    CommandKind kind;
+    int line;              // 1-based line in the script, for error messages
+    uint64_t tick;         // when it runs: round(time * tick rate)
+    double time;           // seconds, as written
+    std::string name;      // Spawn: "player"; Key: key; Capture: file stem; ExpectPrimary: entity
+    std::string light;     // ExpectPrimary: the light's name
+    bool on = false;       // Key: down; Flashlight: on
+    float values[5] = {};  // Spawn: x y z yaw pitch; Look: dyaw dpitch
+    int count = 0;         // ExpectEffectLights
+};
+
+struct Script {
+    std::string path;
+    std::string level;              // empty when the script names none
+    double tickRate = 60.0;         // Hz
+    std::vector<Command> commands;  // in time order (stable for equal times)
+};
+
+// A script error; what() is "PATH:LINE: what was expected".
+struct ScriptError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Parses a script; throws ScriptError at the first problem.
+Script parseScript(std::string_view text, const std::string& path);
+
+// Reads and parses the file at path; a missing file is a ScriptError too.
+Script loadScript(const std::string& path);
+
+}  // namespace onelight::replay

@@ -1,0 +1,101 @@
+#include <gtest/gtest.h>
+
+#include "replay/replay_script.hpp"
+
+using namespace onelight::replay;
+
+namespace {
+
+// The message of the ScriptError that parsing `text` throws ("" when it parses).
+std::string errorOf(const std::string& text) {
+    try {
+        parseScript(text, "s.replay");
+    } catch (const ScriptError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(ReplayScript, ParsesTheDesignExample) {
+    Script s = parseScript(R"(level demo
+spawn player 0 1.7 0 yaw 90 pitch 0
+at 0.0  key W down
+at 1.5  key W up
+at 1.5  look +30 -5
+at 2.0  flashlight on
+at 2.5  fire
+at 3.0  capture courtyard
+at 3.0  expect primary crate_1 == sun
+at 4.0  quit
+)",
+                           "demo.replay");
+    EXPECT_EQ(s.level, "demo");
+    ASSERT_EQ(s.commands.size(), 9u);
+    const Command& spawn = s.commands[0];
+    EXPECT_EQ(spawn.kind, CommandKind::Spawn);
+    EXPECT_EQ(spawn.tick, 0u);
+    EXPECT_FLOAT_EQ(spawn.values[1], 1.7f);
+    EXPECT_FLOAT_EQ(spawn.values[3], 90.0f);
+    EXPECT_EQ(s.commands[2].tick, 90u);  // 1.5 s at 60 Hz
+    EXPECT_FALSE(s.commands[2].on);
+    EXPECT_FLOAT_EQ(s.commands[3].values[0], 30.0f);
+    EXPECT_FLOAT_EQ(s.commands[3].values[1], -5.0f);
+    EXPECT_EQ(s.commands[6].kind, CommandKind::Capture);
+    EXPECT_EQ(s.commands[6].name, "courtyard");
+    EXPECT_EQ(s.commands[7].name, "crate_1");
+    EXPECT_EQ(s.commands[7].light, "sun");
+    EXPECT_EQ(s.commands[7].line, 9);
+    EXPECT_EQ(s.commands[8].kind, CommandKind::Quit);
+    EXPECT_EQ(s.commands[8].tick, 240u);
+}
+
+TEST(ReplayScript, WaitMovesTheCursorAndTickRateScalesTicks) {
+    Script s = parseScript(
+        "tick 30\n# comment\n\nfire\nwait 0.5\nfire   # trailing comment\n"
+        "expect effect-lights 2\nat 2 quit\n",
+        "s.replay");
+    ASSERT_EQ(s.commands.size(), 4u);
+    EXPECT_EQ(s.commands[0].tick, 0u);
+    EXPECT_EQ(s.commands[1].tick, 15u);
+    EXPECT_EQ(s.commands[2].count, 2);
+    EXPECT_EQ(s.commands[3].tick, 60u);
+}
+
+TEST(ReplayScript, BadInputNamesFileLineAndExpectation) {
+    struct {
+        const char* text;
+        const char* error;
+    } cases[] = {
+        {"level demo\nat 1 dance\n", "s.replay:2: unknown command 'dance'"},
+        {"at 1.x fire\n", "s.replay:1: expected a time in seconds (a number), found '1.x'"},
+        {"at 2 fire\nat 1 fire\n",
+         "s.replay:2: time 1 goes backwards (the previous command is at 2)"},
+        {"look 30\n", "s.replay:1: expected a pitch change in degrees at the end of the line"},
+        {"key W sideways\n", "s.replay:1: expected 'down' or 'up', found 'sideways'"},
+        {"key Z down\n", "s.replay:1: expected a key"},
+        {"fire now\n", "s.replay:1: unexpected 'now' after the command"},
+        {"fire\nlevel demo\n", "s.replay:2: 'level' must come before any timed command"},
+        {"expect primary crate sun\n", "s.replay:1: expected '==', found 'sun'"},
+        {"expect effect-lights 7\n", "s.replay:1: expected a whole count from 0 to 5"},
+        {"spawn monster 0 0 0 yaw 0 pitch 0\n", "s.replay:1: expected 'player', found 'monster'"},
+        {"at -1 fire\n", "s.replay:1: expected a time of zero or more seconds"},
+        {"at inf fire\n", "s.replay:1: expected a time in seconds (a number), found 'inf'"},
+        {"capture ../etc/x\n", "s.replay:1: expected a capture name without '/' or '..'"},
+        {"tick 0\n", "s.replay:1: expected a tick rate between 1 and 1000 Hz"},
+    };
+    for (auto& c : cases) {
+        std::string e = errorOf(c.text);
+        EXPECT_EQ(e.rfind(c.error, 0), 0u) << "script: " << c.text << "\nerror: " << e;
+    }
+}
+
+TEST(ReplayScript, MissingFileIsAClearError) {
+    try {
+        loadScript("/nonexistent/x.replay");
+        FAIL() << "no error";
+    } catch (const ScriptError& e) {
+        EXPECT_STREQ(e.what(), "/nonexistent/x.replay:0: cannot open the replay script");
+    }
+}
