@@ -24,7 +24,9 @@ double referenceLobe(const SpecularModel& model, double gloss, const Reflection&
     return reference::smithLobe(model.referenceNdf, gloss, r.NoV, r.NoL, r.sin2H, r.cosH);
 }
 
-double schlickWeight(double VoH) { return std::pow(1.0 - VoH, 5.0); }
+double schlickWeight(double VoH) {
+    return std::pow(1.0 - VoH, 5.0);
+}
 
 template <class Lobe>
 ScaleBias albedoOf(const Lobe& lobe, double mu, double width) {

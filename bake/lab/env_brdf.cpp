@@ -100,9 +100,8 @@ std::string envFitGlsl(const EnvFit& fit, const std::string& provenance) {
             body += buf;
             for (const char* which : {"scale", "bias"}) {
                 const std::vector<double>& c = std::string(which) == "scale" ? fit.scale : fit.bias;
-                std::snprintf(buf, sizeof buf,
-                              "    %s += m * (%.9ef + v * %.9ef + k * %.9ef);\n", which,
-                              c[t], c[9 + t], c[18 + t]);
+                std::snprintf(buf, sizeof buf, "    %s += m * (%.9ef + v * %.9ef + k * %.9ef);\n",
+                              which, c[t], c[9 + t], c[18 + t]);
                 body += buf;
             }
         }

@@ -23,8 +23,8 @@ int envFit(const std::string& path) {
     std::snprintf(provenance, sizeof provenance,
                   "// Fit of the %s albedo (f0 * scale + bias) on %zu points; on a %zu-point\n"
                   "// check grid the albedo error for f0 in {0.04, 1} is max %.2e, RMS %.2e.\n",
-                  std::string(model.name).c_str(),
-                  fitSamples.size(), checkSamples.size(), err.max, err.rms);
+                  std::string(model.name).c_str(), fitSamples.size(), checkSamples.size(), err.max,
+                  err.rms);
     std::string glsl = envFitGlsl(fit, provenance);
     std::fprintf(stderr, "env-fit: max error %.3e, RMS %.3e\n", err.max, err.rms);
     if (path.empty()) {

@@ -28,8 +28,12 @@ inline std::vector<double> glossGrid(int n) {
     for (int i = 0; i <= n; ++i) v.push_back(double(i) / n);
     return v;
 }
-inline std::vector<double> fitGridMu() { return muGrid(32); }
-inline std::vector<double> fitGridGloss() { return glossGrid(32); }
+inline std::vector<double> fitGridMu() {
+    return muGrid(32);
+}
+inline std::vector<double> fitGridGloss() {
+    return glossGrid(32);
+}
 // Off the fit grid and off table texel centres: the check is not fooled by interpolation.
 inline std::vector<double> checkGridMu() {
     std::vector<double> v;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 #include <stdexcept>
+#include <string>
 
 namespace onelight::lab {
 

@@ -11,7 +11,7 @@
 namespace onelight::lab {
 
 struct SpecularModel {
-    std::string_view name;  // as on the command line, e.g. "ggx_smith"
+    std::string_view name;        // as on the command line, e.g. "ggx_smith"
     int ndf;                      // NDF_* of shaders/brdf.glsl
     int vis;                      // VIS_*
     reference::Ndf referenceNdf;  // the NDF of its exact-Smith reference

@@ -52,7 +52,8 @@ struct Canvas {
     int text(double x, double y, const std::string& s, Rgb c, int scale = 2) {
         std::vector<char> buffer(s.size() * 1024 + 64);  // up to 16 quads of 64 bytes a glyph
         std::string copy = s;
-        int quads = stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size()));
+        int quads =
+            stb_easy_font_print(0, 0, copy.data(), nullptr, buffer.data(), int(buffer.size()));
         const float* v = reinterpret_cast<const float*>(buffer.data());
         for (int q = 0; q < quads; ++q) {
             const float* a = v + q * 16;  // 4 vertices of (x, y, z, rgba)
@@ -70,7 +71,9 @@ struct Axis {
     double map(double v) const { return ((log ? std::log10(v) : v) - lo) / (hi - lo); }
 };
 
-bool usable(double v, bool log) { return std::isfinite(v) && (!log || v > 0.0); }
+bool usable(double v, bool log) {
+    return std::isfinite(v) && (!log || v > 0.0);
+}
 
 Axis makeAxis(const std::vector<double>& values, bool log) {
     double lo = 1e300, hi = -1e300;
@@ -114,8 +117,8 @@ std::string tickLabel(double v, bool log) {
 }  // namespace
 
 std::array<uint8_t, 3> seriesColor(int i) {
-    static const Rgb palette[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44},  {214, 39, 40},
-                                  {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {127, 127, 127},
+    static const Rgb palette[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
+                                  {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127},
                                   {188, 189, 34},  {23, 190, 207}};
     return palette[i % 10];
 }

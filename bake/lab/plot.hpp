@@ -14,8 +14,8 @@ struct PlotSeries {
     std::string label;
     std::array<uint8_t, 3> color;
     std::vector<std::pair<double, double>> points;  // (x, y)
-    bool line = false;          // joined by a line; otherwise dots
-    bool labelPoints = false;   // write the series label beside each dot
+    bool line = false;                              // joined by a line; otherwise dots
+    bool labelPoints = false;                       // write the series label beside each dot
 };
 
 struct Plot {

@@ -16,9 +16,15 @@ namespace onelight::lab::reference {
 
 constexpr double kPi = std::numbers::pi;
 
-inline double specPower(double gloss) { return std::pow(8192.0, gloss); }
-inline double beckmannM(double gloss) { return std::sqrt(2.0 / (specPower(gloss) + 2.0)); }
-inline double ggxAlpha(double gloss) { return std::sqrt(2.0 / (1.0 + std::pow(2.0, 18.0 * gloss))); }
+inline double specPower(double gloss) {
+    return std::pow(8192.0, gloss);
+}
+inline double beckmannM(double gloss) {
+    return std::sqrt(2.0 / (specPower(gloss) + 2.0));
+}
+inline double ggxAlpha(double gloss) {
+    return std::sqrt(2.0 / (1.0 + std::pow(2.0, 18.0 * gloss)));
+}
 
 // NDFs of the half-vector angle, given sin^2 and cos of theta_h.
 inline double ndfBlinnPhong(double sin2, double cosH, double n) {

@@ -169,7 +169,11 @@ std::string machineDescription() {
             model = line.substr(line.find(':') + 2);
             break;
         }
-    return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads";
+    std::ifstream loadFile("/proc/loadavg");
+    std::string load = "unknown";
+    loadFile >> load;
+    return model + ", " + std::to_string(std::thread::hardware_concurrency()) +
+           " threads, load average " + load + " at the start";
 }
 
 std::string fmt(const char* f, double v) {
@@ -251,10 +255,17 @@ int brdfReport(const std::string& dir, bool quick) {
 
     // Plots: cost on x, error on y, so the Pareto front shows.
     Plot pm{"Specular models: cost against error (vs exact Smith of the same NDF)",
-            "ns per evaluation (CPU)", "mean lobe error (relative L1)", false, true, {}};
+            "ns per evaluation (CPU)",
+            "mean lobe error (relative L1)",
+            false,
+            true,
+            {}};
     for (size_t i = 0; i < models.size(); ++i)
-        pm.series.push_back({models[i].name, seriesColor(int(i)),
-                             {{models[i].ns, models[i].lobeMeanError}}, false, true});
+        pm.series.push_back({models[i].name,
+                             seriesColor(int(i)),
+                             {{models[i].ns, models[i].lobeMeanError}},
+                             false,
+                             true});
     writePlotPng(dir + "/models_cost_vs_error.png", pm);
     Plot pa = pm;
     pa.title = "Specular models: cost against albedo error (F = 1)";
@@ -262,12 +273,16 @@ int brdfReport(const std::string& dir, bool quick) {
     for (size_t i = 0; i < models.size(); ++i)
         pa.series[i].points = {{models[i].ns, models[i].albedoMaxError}};
     writePlotPng(dir + "/models_cost_vs_albedo_error.png", pa);
-    Plot pe{"Environment Fresnel: cost against error (vs integrated " + std::string(runtime.name) +
-                ")",
-            "ns per evaluation (CPU)", "max albedo error, f0 in {0.04, 1}", false, true, {}};
+    Plot pe{
+        "Environment Fresnel: cost against error (vs integrated " + std::string(runtime.name) + ")",
+        "ns per evaluation (CPU)",
+        "max albedo error, f0 in {0.04, 1}",
+        false,
+        true,
+        {}};
     for (size_t i = 0; i < env.size(); ++i)
-        pe.series.push_back({env[i].name, seriesColor(int(i)), {{env[i].ns, env[i].error.max}},
-                             false, true});
+        pe.series.push_back(
+            {env[i].name, seriesColor(int(i)), {{env[i].ns, env[i].error.max}}, false, true});
     writePlotPng(dir + "/env_cost_vs_error.png", pe);
     Plot pc{"Specular albedo at gloss 0.5 (F = 1)", "NoV", "albedo", false, false, {}};
     for (size_t i = 0; i < specularModels().size(); ++i) {
@@ -289,11 +304,12 @@ int brdfReport(const std::string& dir, bool quick) {
        << "evaluation of the shared `shaders/brdf.glsl` code compiled as C++ (float, the model "
        << "fixed at compile time as a specialization constant fixes it), measured with Google "
        << "Benchmark in one run; compare them as ratios. Errors are computed by adaptive "
-       << "Gauss-Kronrod integration over half vectors (`bake/lab/albedo.hpp`) on "
-       << mus.size() << " NoV x " << glosses.size() << " gloss values.\n\n"
+       << "Gauss-Kronrod integration over half vectors (`bake/lab/albedo.hpp`) on " << mus.size()
+       << " NoV x " << glosses.size() << " gloss values.\n\n"
        << "## Specular models\n\n"
        << "Reference: the exact height-correlated Smith BRDF of the same NDF in double precision "
-          "(`bake/lab/reference_brdf.hpp`; Blinn-Phong's Lambda, which has no closed form, is integrated from the projected-area identity). "
+          "(`bake/lab/reference_brdf.hpp`; Blinn-Phong's Lambda, which has no closed form, is "
+          "integrated from the projected-area identity). "
           "For `beck_smith` and `ggx_smith` the error is therefore that of the float "
           "implementation alone. Albedo error is |A - A_ref| with F = 1; lobe error is "
           "int |f - f_ref| NoL dl / int f_ref NoL dl. Max albedo is the white-furnace maximum "
@@ -301,11 +317,11 @@ int brdfReport(const std::string& dir, bool quick) {
        << "| model | ns/eval | x Lambert | albedo max err | albedo RMS err | lobe mean err | lobe "
           "max err | max albedo (NoV, gloss) |\n|---|---|---|---|---|---|---|---|\n";
     for (const ModelSummary& m : models)
-        md << "| " << m.name << " | " << fmt("%.2f", m.ns) << " | " << fmt("%.1f", m.ns / ns["lambert"])
-           << " | " << fmt("%.2e", m.albedoMaxError) << " | " << fmt("%.2e", m.albedoRmsError)
-           << " | " << fmt("%.2e", m.lobeMeanError) << " | " << fmt("%.2e", m.lobeMaxError)
-           << " | " << fmt("%.4f", m.maxAlbedo) << " (" << fmt("%.3g", m.maxAlbedoMu) << ", "
-           << fmt("%.2g", m.maxAlbedoGloss) << ") |\n";
+        md << "| " << m.name << " | " << fmt("%.2f", m.ns) << " | "
+           << fmt("%.1f", m.ns / ns["lambert"]) << " | " << fmt("%.2e", m.albedoMaxError) << " | "
+           << fmt("%.2e", m.albedoRmsError) << " | " << fmt("%.2e", m.lobeMeanError) << " | "
+           << fmt("%.2e", m.lobeMaxError) << " | " << fmt("%.4f", m.maxAlbedo) << " ("
+           << fmt("%.3g", m.maxAlbedoMu) << ", " << fmt("%.2g", m.maxAlbedoGloss) << ") |\n";
     md << "\nLambert (`Fd_Lambert() * NoL`): " << fmt("%.2f", ns["lambert"]) << " ns/eval.\n\n"
        << "![models](models_cost_vs_error.png)\n\n![albedo](models_cost_vs_albedo_error.png)\n\n"
        << "![albedo at gloss 0.5](albedo_gloss05.png)\n\n"
@@ -319,7 +335,36 @@ int brdfReport(const std::string& dir, bool quick) {
     for (const EnvSummary& e : env)
         md << "| " << e.name << " | " << e.description << " | " << fmt("%.2f", e.ns) << " | "
            << fmt("%.2e", e.error.max) << " | " << fmt("%.2e", e.error.rms) << " |\n";
-    md << "\n![env](env_cost_vs_error.png)\n\n"
+    md << "\n![env](env_cost_vs_error.png)\n\n";
+
+    // The choice the tables justify: the cheapest model whose error is float rounding.
+    const ModelSummary* exact = nullptr;
+    const ModelSummary* cheapest = &models.front();
+    for (const ModelSummary& m : models) {
+        if (m.ns < cheapest->ns) cheapest = &m;
+        if (m.lobeMaxError < 1e-5 && (!exact || m.ns < exact->ns)) exact = &m;
+    }
+    const EnvSummary* bestTable = nullptr;
+    for (const EnvSummary& e : env)
+        if (e.name.rfind("env_table", 0) == 0 && (!bestTable || e.error.rms < bestTable->error.rms))
+            bestTable = &e;
+    md << "## What the tables justify\n\n";
+    if (exact)
+        md << "- Runtime specular: `" << exact->name << "`, the cheapest model whose lobe error is "
+           << "float rounding (" << fmt("%.1e", exact->lobeMaxError) << "). It costs "
+           << fmt("%.2f", exact->ns / cheapest->ns) << "x the cheapest model (`" << cheapest->name
+           << "`, lobe error " << fmt("%.2f", cheapest->lobeMeanError) << " on average).\n";
+    if (bestTable)
+        md << "- Environment \"Fresnel\": a split-sum table (`" << bestTable->name << "`: RMS "
+           << fmt("%.1e", bestTable->error.rms) << ", max " << fmt("%.1e", bestTable->error.max)
+           << ") where a texture fetch is affordable; `env_fit` (RMS "
+           << fmt("%.1e", env.back().error.rms)
+           << ", no texture) otherwise. The Black Ops curve is "
+           << fmt("%.0f", env.front().error.rms / env.back().error.rms) << "x worse in RMS than "
+           << "the fit: it was made for Blinn-Phong with Schlick-Smith, not GGX.\n"
+           << "- The max errors of every candidate sit at grazing angles on glossy surfaces, "
+           << "where the albedo drops over a NoV range of about alpha (0.003 at gloss 1).\n\n";
+    md << "Cost and error are measured; the Pareto front is the lower left of each plot.\n\n"
        << "CSV: `models.csv` (summary), `models_grid.csv` (every grid point), "
           "`env_fresnel.csv`.\n";
     writeFileAtomically(dir + "/README.md", md.str());

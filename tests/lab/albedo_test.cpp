@@ -25,8 +25,10 @@ double visibility(const SpecularModel& m, double gloss, double NoV, double NoL, 
     using namespace onelight::glsl;
     double n = ref::specPower(gloss);
     switch (m.vis) {
-        case VIS_NONE: return 1.0;
-        case VIS_KELEMEN: return 1.0 / (LoH * LoH);
+        case VIS_NONE:
+            return 1.0;
+        case VIS_KELEMEN:
+            return 1.0 / (LoH * LoH);
         case VIS_SCHLICK_SMITH: {
             double a = 1.0 / std::sqrt(kPi / 4 * n + kPi / 2);
             return 1.0 / ((NoL * (1 - a) + a) * (NoV * (1 - a) + a));
@@ -130,7 +132,8 @@ TEST(LabAlbedo, AgreesWithIndependentSampledEstimate) {
                     double variance = std::max(0.0, sumSq[c] / kReplicas - mean * mean);
                     double sigma = std::sqrt(variance / (kReplicas - 1));
                     const char* what = c == 0 ? "scale" : "bias";
-                    EXPECT_LT(sigma, 5e-5) << m.name << ' ' << what << " mu " << mu << " gloss " << g;
+                    EXPECT_LT(sigma, 5e-5)
+                        << m.name << ' ' << what << " mu " << mu << " gloss " << g;
                     EXPECT_NEAR(labValue[c], mean, 1e-4 + 4 * sigma)
                         << m.name << ' ' << what << " mu " << mu << " gloss " << g;
                 }
@@ -208,6 +211,7 @@ TEST(LabReference, BlinnPhongLambdaApproachesBeckmannAtHighExponents) {
         EXPECT_NEAR(ref::lambdaBlinnPhong(mu, n), ref::lambdaBeckmann(mu, m),
                     0.02 * ref::lambdaBeckmann(mu, m) + 1e-6)
             << mu;
-    EXPECT_GT(std::abs(ref::lambdaBlinnPhong(0.2, 1.0) - ref::lambdaBeckmann(0.2, ref::beckmannM(0.0))),
-              1e-2);
+    EXPECT_GT(
+        std::abs(ref::lambdaBlinnPhong(0.2, 1.0) - ref::lambdaBeckmann(0.2, ref::beckmannM(0.0))),
+        1e-2);
 }

@@ -49,7 +49,8 @@ TEST(LabCli, BrdfAlbedoPrintsCsvThatMatchesTheLibrary) {
     while (std::getline(lines, line)) {
         char model[32];
         double mu, g, scale, bias;
-        ASSERT_EQ(std::sscanf(line.c_str(), "%31[^,],%lf,%lf,%lf,%lf", model, &mu, &g, &scale, &bias), 5)
+        ASSERT_EQ(
+            std::sscanf(line.c_str(), "%31[^,],%lf,%lf,%lf,%lf", model, &mu, &g, &scale, &bias), 5)
             << line;
         auto expected = onelight::lab::specularAlbedo(onelight::lab::findModel(model), mu, g);
         EXPECT_NEAR(scale, expected.scale, 1e-8) << line;

@@ -89,11 +89,14 @@ TEST(BrdfReference, SmithVisibilityMatchesDoubleReference) {
         for (double NoV : mus)
             for (double NoL : mus) {
                 double a = ref::ggxAlpha(g), m = ref::beckmannM(g);
-                double ggx = 1.0 / ((1 + ref::lambdaGGX(NoV, a) + ref::lambdaGGX(NoL, a)) * NoL * NoV);
-                double beck = 1.0 / ((1 + ref::lambdaBeckmann(NoV, m) + ref::lambdaBeckmann(NoL, m)) *
-                                     NoL * NoV);
-                EXPECT_LT(relativeError(V_SmithGGXCorrelated(float(NoV), float(NoL), float(a)), ggx),
-                          1e-5)
+                double ggx =
+                    1.0 / ((1 + ref::lambdaGGX(NoV, a) + ref::lambdaGGX(NoL, a)) * NoL * NoV);
+                double beck =
+                    1.0 /
+                    ((1 + ref::lambdaBeckmann(NoV, m) + ref::lambdaBeckmann(NoL, m)) * NoL * NoV);
+                EXPECT_LT(
+                    relativeError(V_SmithGGXCorrelated(float(NoV), float(NoL), float(a)), ggx),
+                    1e-5)
                     << "GGX gloss " << g << " NoV " << NoV << " NoL " << NoL;
                 EXPECT_LT(relativeError(V_SmithBeckmannCorrelated(float(NoV), float(NoL), float(m)),
                                         beck),
@@ -127,22 +130,25 @@ TEST(BrdfReference, GlossOneHighlightIsResolved) {
     const double a = ref::ggxAlpha(1.0), beta = 0.5;
     double worstNaive = 0.0;
     for (double theta = 1e-5; theta < 0.01; theta *= 1.1) {
-        auto dir = [](double angle) { return vec3(float(std::sin(angle)), 0.0f, float(std::cos(angle))); };
+        auto dir = [](double angle) {
+            return vec3(float(std::sin(angle)), 0.0f, float(std::cos(angle)));
+        };
         vec3 n(0, 0, 1), v = dir(theta + beta), l = dir(theta - beta);
         BrdfDots d = brdfDots(n, v, l);
         double s2 = std::sin(theta) * std::sin(theta);
         double reference = ref::ndfGGX(s2, std::cos(theta), a);
         EXPECT_LT(relativeError(D_GGX(d.NxH2, float(a)), reference), 1e-3) << "theta " << theta;
         float NoH = dot(n, normalize(v + l));
-        worstNaive = std::max(worstNaive,
-                              relativeError(D_GGX(1.0f - NoH * NoH, float(a)), reference));
+        worstNaive =
+            std::max(worstNaive, relativeError(D_GGX(1.0f - NoH * NoH, float(a)), reference));
     }
     EXPECT_GT(worstNaive, 1e-2);
 }
 
 TEST(BrdfReference, LambertAlbedoIsOne) {
     auto integrand = [](double theta) {
-        return onelight::lab::Vec<1>{2 * kPi * double(Fd_Lambert()) * std::cos(theta) * std::sin(theta)};
+        return onelight::lab::Vec<1>{2 * kPi * double(Fd_Lambert()) * std::cos(theta) *
+                                     std::sin(theta)};
     };
     EXPECT_NEAR(onelight::lab::integrate<1>(integrand, 0.0, kPi / 2)[0], 1.0, 1e-6);
 }

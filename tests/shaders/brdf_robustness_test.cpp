@@ -28,7 +28,9 @@ const float kDenormal = 1e-40f;
 const std::vector<float> kSpecialDots = {0.0f, kDenormal, 1e-7f, 1e-4f, 0.5f, 1.0f - 1e-7f, 1.0f};
 const std::vector<float> kSpecialGloss = {0.0f, kDenormal, 1e-4f, 0.5f, 0.9999f, 1.0f};
 
-bool finiteNonNegative(float x) { return std::isfinite(x) && x >= 0.0f; }
+bool finiteNonNegative(float x) {
+    return std::isfinite(x) && x >= 0.0f;
+}
 
 // Evaluates every piece at (dots, params); reports the first bad one.
 void expectAllPiecesFinite(vec4 dots, vec4 params) {
@@ -59,14 +61,17 @@ TEST(BrdfRobustness, MillionAdversarialInputsGiveFiniteNonNegativePieces) {
     // Each coordinate is either special, uniform, or log-uniform down to denormals.
     auto draw = [&]() {
         switch (rng() % 3) {
-            case 0: return kSpecialDots[pick(rng)];
-            case 1: return unit(rng);
-            default: return std::min(1.0f, std::exp2(-140.0f * unit(rng)));
+            case 0:
+                return kSpecialDots[pick(rng)];
+            case 1:
+                return unit(rng);
+            default:
+                return std::min(1.0f, std::exp2(-140.0f * unit(rng)));
         }
     };
     const int kInputs = 1000000 / BRDF_PIECE_COUNT + 1;  // >= 10^6 piece evaluations
-    for (int i = 0; i < kInputs; ++i) expectAllPiecesFinite(vec4(draw(), draw(), draw(), draw()),
-                                                           vec4(draw(), draw(), 0, 0));
+    for (int i = 0; i < kInputs; ++i)
+        expectAllPiecesFinite(vec4(draw(), draw(), draw(), draw()), vec4(draw(), draw(), 0, 0));
 }
 
 TEST(BrdfRobustness, DotsAreRobustToDegenerateGeometry) {
