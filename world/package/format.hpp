@@ -283,4 +283,58 @@ struct DiskFeatures {
 };
 static_assert(sizeof(DiskFeatures) == 60);
 
+// ---------------------------------------------------------------------------------------------
+// Baked lighting (ids 32..34), written by `onelight-bake`.
+//
+// section_lightmap_texels: DiskLightmapTexel[], every atlas in order, each row-major
+//   (texel (x, y) of atlas a at sum_{b<a} width_b height_b + y width_a + x); count == the sum
+//   of the atlases' areas. Secondary diffuse irradiance (DESIGN.md "lighting model"): direct
+//   light of every light but the surface's own primary, plus every bounce of every light. A
+//   per-pixel normal n' reconstructs it as
+//       E(n') = irradiance * max(0, 0.5 + dot(n', direction)) / normal_weight
+//   which returns `irradiance` exactly at the surface normal (a rebalanced half-Lambert
+//   directional lightmap).
+// section_shadow_masks: uint8_t[], same texel order and count: the baked visibility of the
+//   surface's own primary, 0 (umbra) .. 255 (fully lit), softened by the light's size.
+// section_light_grid: uint8_t[]: one DiskLightGridHeader, then DiskLightGridCell[cell_count]
+//   in x-fastest order (cell (i, j, k) at i + dims[0] (j + dims[1] k)).
+
+enum LightmapTexelFlags : uint32_t {
+    lightmap_texel_sampled = 1u << 0,  // baked at a point of its own surface
+    lightmap_texel_dilated = 1u << 1,  // padding, copied from sampled neighbours
+};
+
+struct DiskLightmapTexel {
+    float irradiance[3];  // lux, RGB, at the surface normal; finite, >= 0
+    float direction[3];   // world; half the irradiance-weighted mean incident direction, |d| <= 0.5
+    float normal_weight;  // 0.5 + dot(surface normal, direction), in [0.5, 1]; 1 for empty texels
+    uint32_t flags;       // LightmapTexelFlags; 0 = outside every chart (all zero)
+};
+static_assert(sizeof(DiskLightmapTexel) == 32);
+
+enum LightGridCellFlags : uint32_t {
+    light_grid_cell_inside_solid = 1u << 0,  // centre inside geometry: skip when interpolating
+};
+
+struct DiskLightGridHeader {
+    float origin[3];         // metres, world: the grid's minimum corner
+    float cell_size[3];      // metres, > 0; cell (i, j, k) is centred at origin + (i + 0.5) size
+    uint32_t dims[3];        // cells per axis, >= 1 each
+    uint32_t cell_count;     // dims[0] dims[1] dims[2]
+    uint32_t shard_index;    // < shard_count: which part of a sharded bake this package holds
+    uint32_t shard_count;    // 1 for a complete bake; > 1: an unmerged part (see `merge`)
+    uint32_t samples;        // sample directions per cell
+    uint32_t reserved;       // 0
+};
+static_assert(sizeof(DiskLightGridHeader) == 56);
+
+struct DiskLightGridCell {
+    float ambient_cube[6][3];    // lux, RGB irradiance on surfaces facing +x -x +y -y +z -z; >= 0
+                                 // (secondary: everything but dominant_primary's direct light)
+    uint32_t dominant_primary;   // into lights (role primary) or kNoIndex when none reaches
+    float primary_visibility;    // [0, 1]: fraction of dominant_primary seen from the centre
+    uint32_t flags;              // LightGridCellFlags
+};
+static_assert(sizeof(DiskLightGridCell) == 84);
+
 }  // namespace onelight::package
