@@ -317,23 +317,23 @@ enum LightGridCellFlags : uint32_t {
 };
 
 struct DiskLightGridHeader {
-    float origin[3];         // metres, world: the grid's minimum corner
-    float cell_size[3];      // metres, > 0; cell (i, j, k) is centred at origin + (i + 0.5) size
-    uint32_t dims[3];        // cells per axis, >= 1 each
-    uint32_t cell_count;     // dims[0] dims[1] dims[2]
-    uint32_t shard_index;    // < shard_count: which part of a sharded bake this package holds
-    uint32_t shard_count;    // 1 for a complete bake; > 1: an unmerged part (see `merge`)
-    uint32_t samples;        // sample directions per cell
-    uint32_t reserved;       // 0
+    float origin[3];       // metres, world: the grid's minimum corner
+    float cell_size[3];    // metres, > 0; cell (i, j, k) is centred at origin + (i + 0.5) size
+    uint32_t dims[3];      // cells per axis, >= 1 each
+    uint32_t cell_count;   // dims[0] dims[1] dims[2]
+    uint32_t shard_index;  // < shard_count: which part of a sharded bake this package holds
+    uint32_t shard_count;  // 1 for a complete bake; > 1: an unmerged part (see `merge`)
+    uint32_t samples;      // sample directions per cell
+    uint32_t reserved;     // 0
 };
 static_assert(sizeof(DiskLightGridHeader) == 56);
 
 struct DiskLightGridCell {
-    float ambient_cube[6][3];    // lux, RGB irradiance on surfaces facing +x -x +y -y +z -z; >= 0
-                                 // (secondary: everything but dominant_primary's direct light)
-    uint32_t dominant_primary;   // into lights (role primary) or kNoIndex when none reaches
-    float primary_visibility;    // [0, 1]: fraction of dominant_primary seen from the centre
-    uint32_t flags;              // LightGridCellFlags
+    float ambient_cube[6][3];   // lux, RGB irradiance on surfaces facing +x -x +y -y +z -z; >= 0
+                                // (secondary: everything but dominant_primary's direct light)
+    uint32_t dominant_primary;  // into lights (role primary) or kNoIndex when none reaches
+    float primary_visibility;   // [0, 1]: fraction of dominant_primary seen from the centre
+    uint32_t flags;             // LightGridCellFlags
 };
 static_assert(sizeof(DiskLightGridCell) == 84);
 

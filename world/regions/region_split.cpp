@@ -123,7 +123,8 @@ private:
     uint32_t fallback_label(uint32_t label) { return label == kUnlit ? 0u : label; }
 
     /// A region that lies inside one triangle (a spot pool on a big floor) leaves all three
-    /// corners agreeing; the centre disagrees. Split such triangles at the centre first.
+    /// corners agreeing. Samples the centres of a regular subdivision of the triangle (spacing
+    /// about options.sample_spacing) and splits the triangle at the first that disagrees.
     void split_faces_around_inner_regions() {
         std::vector<RegionMesh::FaceHandle> faces(mesh_.faces_begin(), mesh_.faces_end());
         for (RegionMesh::FaceHandle f : faces) {
@@ -132,18 +133,34 @@ private:
             if (l0 != mesh_.property(vertex_label_, c[1]) ||
                 l0 != mesh_.property(vertex_label_, c[2]))
                 continue;
-            const std::array<uint32_t, 3> ids{mesh_.property(vertex_id_, c[0]),
-                                              mesh_.property(vertex_id_, c[1]),
-                                              mesh_.property(vertex_id_, c[2])};
-            const CompileVertex centre = centroid_of(
-                geometry_.vertices[ids[0]], geometry_.vertices[ids[1]], geometry_.vertices[ids[2]]);
-            const uint32_t label = dominance_.at(centre);
-            if (label == l0 || label == kUnlit) continue;
-            geometry_.vertices.push_back(centre);
-            const uint32_t id = static_cast<uint32_t>(geometry_.vertices.size() - 1);
-            labels_.emplace(id, label);
-            mesh_.split(f, add_vertex(id, label));
-            ++stats_.faces_centre_split;
+            const CompileVertex& a = geometry_.vertices[mesh_.property(vertex_id_, c[0])];
+            const CompileVertex& b = geometry_.vertices[mesh_.property(vertex_id_, c[1])];
+            const CompileVertex& d = geometry_.vertices[mesh_.property(vertex_id_, c[2])];
+            const double longest = std::max({glm::length(b.position - a.position),
+                                             glm::length(d.position - b.position),
+                                             glm::length(a.position - d.position)});
+            const uint32_t n =
+                static_cast<uint32_t>(std::clamp(std::ceil(longest / options_.sample_spacing), 1.0,
+                                                 double(options_.max_samples_per_edge)));
+            bool split = false;
+            for (uint32_t i = 0; i < n && !split; ++i) {
+                for (uint32_t j = 0; i + j < n && !split; ++j) {
+                    // Centre of the upward sub-triangle (i, j): barycentric ((i + 1/3) / n, (j +
+                    // 1/3) / n).
+                    const double u = (i + 1.0 / 3.0) / n, v = (j + 1.0 / 3.0) / n;
+                    const CompileVertex along_ab =
+                        interpolate(a, b, u + v > 0.0 ? v / (u + v) : 0.0);
+                    const CompileVertex sample = interpolate(d, along_ab, u + v);
+                    const uint32_t label = dominance_.at(sample);
+                    if (label == l0 || label == kUnlit) continue;
+                    geometry_.vertices.push_back(sample);
+                    const uint32_t id = static_cast<uint32_t>(geometry_.vertices.size() - 1);
+                    labels_.emplace(id, label);
+                    mesh_.split(f, add_vertex(id, label));
+                    ++stats_.faces_centre_split;
+                    split = true;
+                }
+            }
         }
     }
 

@@ -16,6 +16,9 @@ struct RegionOptions {
     double min_fragment_area = 0.05;   // m^2: smaller same-primary fragments are merged
     double boundary_tolerance = 1e-3;  // metres: bisection stops below this; edges shorter
                                        // than twice this are not cut
+    double sample_spacing = 1.0;       // metres between interior samples of a big triangle whose
+                                       // corners agree (finds a region inside it)
+    uint32_t max_samples_per_edge = 16;
 };
 
 struct RegionStats {

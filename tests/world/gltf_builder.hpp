@@ -1,0 +1,62 @@
+// Writes small glTF 2.0 files (.gltf + .bin) for tests and the benchmark level, so fixtures
+// are generated where they are used instead of committed.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+namespace onelight::test {
+
+struct MeshData {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> indices;
+    std::vector<glm::vec3> normals;  // optional
+    std::vector<glm::vec2> uv0;      // optional
+    std::vector<glm::vec2> uv1;      // optional
+    int material = -1;
+};
+
+class GltfBuilder {
+public:
+    GltfBuilder();
+
+    int add_mesh(const MeshData& mesh);            // returns the glTF mesh index
+    int add_material(const nlohmann::json& material);
+    int add_light(const nlohmann::json& light);    // KHR_lights_punctual entry
+    int add_camera(const nlohmann::json& camera);
+    /// Adds a node; when `root`, it is listed in the scene.
+    int add_node(const nlohmann::json& node, bool root = true);
+
+    nlohmann::json& document() { return document_; }
+
+    /// Writes NAME.gltf and NAME.bin into `folder`; returns the .gltf path.
+    std::string write(const std::filesystem::path& folder, const std::string& name) const;
+
+private:
+    int add_accessor(const void* data, size_t bytes, size_t count, int component_type,
+                     const char* type, bool with_bounds, const std::vector<glm::vec3>* bounds_of);
+
+    nlohmann::json document_;
+    std::vector<uint8_t> buffer_;
+};
+
+/// A fresh empty folder under the system temp folder, named after `label`.
+std::filesystem::path fresh_folder(const std::string& label);
+
+/// A flat square grid in the plane y = height: cells x cells quads, `size` metres wide,
+/// centred on (centre_x, centre_z), facing +y.
+MeshData grid_mesh(const std::string& name, int cells, double size, double height,
+                   double centre_x = 0.0, double centre_z = 0.0);
+
+/// An axis-aligned box with `cells` x `cells` quads per face, outward normals, no bottom face
+/// when `open_bottom`.
+MeshData box_mesh(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int cells,
+                  bool open_bottom);
+
+}  // namespace onelight::test

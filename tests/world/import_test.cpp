@@ -1,0 +1,249 @@
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "shading.hpp"
+#include "tests/world/gltf_builder.hpp"
+#include "tests/world/world_test_support.hpp"
+#include "world/error.hpp"
+#include "world/import/gltf_import.hpp"
+#include "world/import/material_import.hpp"
+
+namespace onelight::test {
+namespace {
+
+using world::CompileError;
+using world::import_gltf;
+
+MeshData one_triangle(const std::string& name) {
+    MeshData mesh;
+    mesh.name = name;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh.uv0 = {{0, 0}, {1, 0}, {0, 1}};
+    mesh.indices = {0, 1, 2};
+    return mesh;
+}
+
+TEST(Import, HierarchyComposesTransforms) {
+    GltfBuilder gltf;
+    const int mesh = gltf.add_mesh(one_triangle("tri"));
+    const int child = gltf.add_node({{"name", "child"}, {"mesh", mesh}, {"translation", {0.0, 0.0, 5.0}}}, false);
+    gltf.add_node({{"name", "parent"}, {"translation", {10.0, 0.0, 0.0}}, {"scale", {2.0, 2.0, 2.0}},
+                   {"children", {child}}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("hierarchy"), "hierarchy"));
+    ASSERT_EQ(level.instances.size(), 1u);
+    const glm::dvec4 p = level.instances[0].world_from_local * glm::dvec4(1.0, 0.0, 0.0, 1.0);
+    EXPECT_NEAR(p.x, 10.0 + 2.0, 1e-12);
+    EXPECT_NEAR(p.z, 10.0, 1e-12);
+}
+
+TEST(Import, GeneratesUnitTangentsOrthogonalToNormals) {
+    GltfBuilder gltf;
+    gltf.add_node({{"name", "floor"}, {"mesh", gltf.add_mesh(grid_mesh("floor", 2, 2.0, 0.0))}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("tangents"), "tangents"));
+    ASSERT_EQ(level.instances.size(), 1u);
+    for (const world::Vertex& v : level.instances[0].vertices) {
+        EXPECT_NEAR(glm::length(glm::vec3(v.tangent)), 1.0f, 1e-5f);
+        EXPECT_NEAR(glm::dot(glm::vec3(v.tangent), v.normal), 0.0f, 1e-5f);
+        EXPECT_EQ(std::abs(v.tangent.w), 1.0f);
+        EXPECT_NEAR(v.tangent.x, 1.0f, 1e-5f);  // u grows along +x on the grid
+    }
+}
+
+TEST(Import, FlatNormalsWhenMissingAndTexcoord1Kept) {
+    GltfBuilder gltf;
+    MeshData mesh = one_triangle("tri");
+    mesh.uv1 = {{0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f}};
+    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("flat"), "flat"));
+    ASSERT_EQ(level.instances.size(), 1u);
+    EXPECT_TRUE(level.instances[0].has_uv1);
+    for (const world::Vertex& v : level.instances[0].vertices) EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
+    EXPECT_FLOAT_EQ(level.instances[0].vertices[1].uv1.x, 0.9f);
+}
+
+TEST(Import, GlossFormulaInvertsTheEngineGgxAlpha) {
+    for (float r = 0.1f; r <= 1.0f; r += 0.01f) {
+        const float gloss = world::gloss_from_roughness(r);
+        ASSERT_GE(gloss, 0.0f);
+        ASSERT_LE(gloss, 1.0f);
+        EXPECT_NEAR(glsl::ggxAlpha_fromGloss(gloss), r * r, 2e-4f * std::max(1.0f, 1.0f / (r * r))) << r;
+    }
+    EXPECT_EQ(world::gloss_from_roughness(1.0f), 0.0f);
+    EXPECT_EQ(world::gloss_from_roughness(0.0f), 1.0f);
+}
+
+TEST(Import, MetallicRoughnessBecomesAlbedoSpecularGloss) {
+    GltfBuilder gltf;
+    MeshData mesh = one_triangle("tri");
+    mesh.material = gltf.add_material({{"name", "gold"},
+                                       {"pbrMetallicRoughness",
+                                        {{"baseColorFactor", {1.0, 0.8, 0.4, 1.0}},
+                                         {"metallicFactor", 0.25},
+                                         {"roughnessFactor", 0.5}}}});
+    gltf.add_material({{"name", "unused"}});
+    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("material"), "material"));
+    ASSERT_EQ(level.materials.size(), 1u) << "unused materials are dropped";
+    const world::Material& m = level.materials[0];
+    EXPECT_EQ(m.name, "gold");
+    EXPECT_NEAR(m.albedo.g, 0.8f * 0.75f, 1e-6f);
+    EXPECT_NEAR(m.specular_color.r, 0.04f * 0.75f + 1.0f * 0.25f, 1e-6f);
+    EXPECT_NEAR(m.gloss, std::log2(2.0 / std::pow(0.5, 4.0) - 1.0) / 18.0, 1e-6);
+    EXPECT_EQ(m.material_class, world::MaterialClass::full);
+}
+
+TEST(Import, LightsKeepUnitsRolesAndDirections) {
+    GltfBuilder gltf;
+    const int sun = gltf.add_light({{"type", "directional"}, {"intensity", 100000.0}});
+    const int spot = gltf.add_light({{"type", "spot"}, {"intensity", 400.0},
+                                     {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}});
+    const int lamp = gltf.add_light({{"type", "point"}, {"intensity", 50.0}, {"range", 9.0}});
+    gltf.add_node({{"name", "sun"}, {"rotation", {-0.7071068, 0.0, 0.0, 0.7071068}},
+                   {"extensions", {{"KHR_lights_punctual", {{"light", sun}}}}}});
+    gltf.add_node({{"name", "torch"}, {"translation", {1.0, 2.0, 3.0}},
+                   {"extensions", {{"KHR_lights_punctual", {{"light", spot}}}}},
+                   {"extras", {{"onelight", {{"role", "effect"}}}}}});
+    gltf.add_node({{"name", "lamp"}, {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
+                   {"extras", {{"onelight", {{"role", "baked"}}}}}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("lights"), "lights"));
+    ASSERT_EQ(level.lights.size(), 3u);
+    EXPECT_EQ(level.lights[0].type, world::LightType::directional);
+    EXPECT_EQ(level.lights[0].role, world::LightRole::primary);
+    EXPECT_FLOAT_EQ(level.lights[0].intensity, 100000.0f);  // lux
+    EXPECT_NEAR(level.lights[0].direction.y, -1.0f, 1e-6f);
+    EXPECT_EQ(level.lights[1].role, world::LightRole::effect);
+    EXPECT_EQ(level.lights[1].name, "torch");
+    EXPECT_FLOAT_EQ(level.lights[1].outer_cone, 0.5f);
+    EXPECT_EQ(level.lights[1].position, glm::vec3(1, 2, 3));
+    EXPECT_EQ(level.lights[2].role, world::LightRole::baked);
+    EXPECT_FLOAT_EQ(level.lights[2].range, 9.0f);
+}
+
+TEST(Import, CamerasAreNamedByTheirNode) {
+    GltfBuilder gltf;
+    const int camera = gltf.add_camera({{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}}}});
+    gltf.add_node({{"name", "courtyard"}, {"camera", camera}, {"translation", {0.0, 2.0, 0.0}},
+                   {"extras", {{"onelight", {{"exposure", 9.5}}}}}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("camera"), "camera"));
+    ASSERT_EQ(level.cameras.size(), 1u);
+    EXPECT_EQ(level.cameras[0].name, "courtyard");
+    EXPECT_FLOAT_EQ(level.cameras[0].yfov, 0.9f);
+    EXPECT_TRUE(level.cameras[0].has_exposure);
+    EXPECT_FLOAT_EQ(level.cameras[0].exposure_ev100, 9.5f);
+    EXPECT_FALSE(level.has_exposure) << "a camera's exposure is its own";
+}
+
+TEST(Import, ExtrasMarkDynamicMoversSpawnsProbesGrid) {
+    GltfBuilder gltf;
+    const int mesh = gltf.add_mesh(one_triangle("tri"));
+    gltf.add_node({{"name", "door"}, {"mesh", mesh},
+                   {"extras", {{"onelight", {{"mover", {{"offset", {0.0, 3.0, 0.0}}, {"period", 4.0}}}}}}}});
+    gltf.add_node({{"name", "start"}, {"extras", {{"onelight", {{"spawn", true}}}}}});
+    gltf.add_node({{"name", "probe"}, {"extras", {{"onelight", {{"probe", true}}}}}});
+    gltf.add_node({{"name", "settings"},
+                   {"extras", {{"onelight", {{"grid", {{"min", {-1, -1, -1}}, {"max", {1, 1, 1}}}}, {"exposure", 10.0}}}}}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("extras"), "extras"));
+    ASSERT_EQ(level.entities.size(), 3u);
+    EXPECT_EQ(level.entities[0].flags, world::entity_dynamic | world::entity_mover);
+    EXPECT_FLOAT_EQ(level.entities[0].mover_period, 4.0f);
+    EXPECT_TRUE(level.instances[0].dynamic);
+    EXPECT_EQ(level.entities[1].flags, world::entity_spawn);
+    EXPECT_EQ(level.entities[2].flags, world::entity_probe);
+    EXPECT_TRUE(level.has_grid_bounds);
+    EXPECT_EQ(level.grid_max, glm::vec3(1.0f));
+    EXPECT_TRUE(level.has_exposure);
+}
+
+/// Expects import to throw a CompileError whose message contains every fragment.
+void expect_error(const std::string& path, std::initializer_list<const char*> fragments) {
+    try {
+        import_gltf(path);
+        FAIL() << "expected a CompileError for " << path;
+    } catch (const CompileError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+        for (const char* f : fragments) EXPECT_NE(message.find(f), std::string::npos) << message;
+    }
+}
+
+TEST(ImportErrors, NanPositionNamesTheMesh) {
+    GltfBuilder gltf;
+    MeshData mesh = one_triangle("broken_wall");
+    mesh.positions[1].y = std::nanf("");
+    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
+    expect_error(gltf.write(fresh_folder("nan"), "nan"), {"nan.gltf", "broken_wall", "POSITION", "NaN or Inf"});
+}
+
+TEST(ImportErrors, InfPositionNamesTheMesh) {
+    GltfBuilder gltf;
+    MeshData mesh = one_triangle("sky");
+    mesh.positions[2].x = INFINITY;
+    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
+    expect_error(gltf.write(fresh_folder("inf"), "inf"), {"sky", "NaN or Inf"});
+}
+
+TEST(ImportErrors, IndexOutOfRange) {
+    GltfBuilder gltf;
+    MeshData mesh = one_triangle("tri");
+    mesh.indices = {0, 1, 7};
+    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
+    expect_error(gltf.write(fresh_folder("index"), "index"), {"tri", "index 2 is 7"});
+}
+
+TEST(ImportErrors, AccessorPastItsBuffer) {
+    GltfBuilder gltf;
+    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(one_triangle("tri"))}});
+    gltf.document()["accessors"][0]["count"] = 1000;
+    expect_error(gltf.write(fresh_folder("accessor"), "accessor"), {"tri", "POSITION"});
+}
+
+TEST(ImportErrors, UnknownRole) {
+    GltfBuilder gltf;
+    const int lamp = gltf.add_light({{"type", "point"}});
+    gltf.add_node({{"name", "lamp"}, {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
+                   {"extras", {{"onelight", {{"role", "sometimes"}}}}}});
+    expect_error(gltf.write(fresh_folder("role"), "role"), {"lamp", "role", "\"baked\""});
+}
+
+TEST(ImportErrors, MissingFileAndNotJson) {
+    expect_error("/nonexistent/level.gltf", {"/nonexistent/level.gltf", "cannot open"});
+    const auto folder = fresh_folder("garbage");
+    std::ofstream(folder / "garbage.gltf") << "{ this is not json";
+    expect_error((folder / "garbage.gltf").string(), {"garbage.gltf", "not a valid glTF"});
+}
+
+TEST(ImportAssets, NormalTangentTest) {
+    const std::string path = shared_asset("NormalTangentTest/glTF/NormalTangentTest.gltf");
+    if (path.empty()) GTEST_SKIP() << "shared assets absent";
+    const world::SourceLevel level = import_gltf(path);
+    size_t triangles = 0;
+    for (const world::MeshInstance& i : level.instances) triangles += i.indices.size() / 3;
+    EXPECT_EQ(triangles, 7774u);
+    ASSERT_EQ(level.materials.size(), 1u);
+    EXPECT_NE(level.materials[0].normal_texture, world::kNone);
+    EXPECT_NE(level.materials[0].base_color_texture, world::kNone);
+    ASSERT_EQ(level.images.size(), 3u);
+    for (const world::Image& image : level.images) EXPECT_TRUE(std::filesystem::exists(image.uri)) << image.uri;
+    for (const world::Vertex& v : level.instances[0].vertices)
+        ASSERT_NEAR(glm::dot(glm::vec3(v.tangent), v.normal), 0.0f, 1e-4f);
+}
+
+TEST(ImportAssets, TextureSettingsTestSamplers) {
+    const std::string path = shared_asset("TextureSettingsTest/glTF/TextureSettingsTest.gltf");
+    if (path.empty()) GTEST_SKIP() << "shared assets absent";
+    const world::SourceLevel level = import_gltf(path);
+    EXPECT_EQ(level.materials.size(), 10u);
+    bool clamp = false, mirror = false;
+    for (const world::Texture& t : level.textures) {
+        clamp |= t.sampler.wrap_t == 33071 || t.sampler.wrap_s == 33071;
+        mirror |= t.sampler.wrap_t == 33648 || t.sampler.wrap_s == 33648;
+    }
+    EXPECT_TRUE(clamp);
+    EXPECT_TRUE(mirror);
+}
+
+}  // namespace
+}  // namespace onelight::test

@@ -1,0 +1,199 @@
+#include <cstring>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "tests/world/gltf_builder.hpp"
+#include "tests/world/level_generator.hpp"
+#include "tests/world/world_test_support.hpp"
+#include "world/package/crc32.hpp"
+#include "world/package/format.hpp"
+#include "world/package/package_reader.hpp"
+#include "world/package/package_writer.hpp"
+
+namespace onelight::test {
+namespace {
+
+using namespace onelight::package;
+
+/// One compiled generated level shared by the package tests.
+const world::CompiledLevel& sample_level() {
+    static const world::CompiledLevel level = [] {
+        GeneratedLevelOptions options = options_for_triangles(600);
+        options.buildings = 4;
+        return compile_file(write_generated_level(fresh_folder("package"), "package", options)).level;
+    }();
+    return level;
+}
+
+SectionEntry entry(const std::vector<uint8_t>& bytes, uint32_t id) {
+    FileHeader header;
+    std::memcpy(&header, bytes.data(), sizeof header);
+    for (uint32_t i = 0; i < header.section_count; ++i) {
+        SectionEntry e;
+        std::memcpy(&e, bytes.data() + sizeof(FileHeader) + i * sizeof(SectionEntry), sizeof e);
+        if (e.id == id) return e;
+    }
+    ADD_FAILURE() << "no section " << id;
+    return {};
+}
+
+/// Recomputes every section CRC and the table CRC, so only the semantic checks can object.
+void fix_crcs(std::vector<uint8_t>& bytes) {
+    FileHeader header;
+    std::memcpy(&header, bytes.data(), sizeof header);
+    for (uint32_t i = 0; i < header.section_count; ++i) {
+        uint8_t* at = bytes.data() + sizeof(FileHeader) + i * sizeof(SectionEntry);
+        SectionEntry e;
+        std::memcpy(&e, at, sizeof e);
+        e.crc32 = crc32(bytes.data() + e.offset, e.size);
+        std::memcpy(at, &e, sizeof e);
+    }
+    header.table_crc32 = 0;
+    std::memcpy(bytes.data(), &header, sizeof header);
+    header.table_crc32 = crc32(bytes.data(), sizeof(FileHeader) + header.section_count * sizeof(SectionEntry));
+    std::memcpy(bytes.data(), &header, sizeof header);
+}
+
+/// Overwrites a uint32 field of record `record` in section `id`, then fixes the CRCs.
+std::vector<uint8_t> patched(std::vector<uint8_t> bytes, uint32_t id, uint32_t record, size_t field_offset,
+                             uint32_t value) {
+    const SectionEntry e = entry(bytes, id);
+    EXPECT_LT(record, e.count);
+    std::memcpy(bytes.data() + e.offset + uint64_t(record) * e.element_size + field_offset, &value, 4);
+    fix_crcs(bytes);
+    return bytes;
+}
+
+void expect_rejected(const std::vector<uint8_t>& bytes, const std::string& fragment) {
+    const PackageReadResult result = parse_package(bytes, "test.olpak");
+    ASSERT_FALSE(result.ok()) << "expected an error mentioning " << fragment;
+    EXPECT_NE(result.error.find(fragment), std::string::npos) << result.error;
+    EXPECT_EQ(result.error.find('\n'), std::string::npos) << result.error;
+}
+
+TEST(Package, RoundTripIsByteIdentical) {
+    const std::vector<uint8_t> bytes = serialize_package(sample_level());
+    const PackageReadResult read = parse_package(bytes, "test.olpak");
+    ASSERT_TRUE(read.ok()) << read.error;
+    EXPECT_EQ(read.level.surfaces.size(), sample_level().surfaces.size());
+    EXPECT_EQ(read.level.lights[0].name, sample_level().lights[0].name);
+    EXPECT_EQ(serialize_package(read.level), bytes);
+}
+
+TEST(Package, BakedSectionsSurviveARoundTrip) {
+    RawSection grid;
+    grid.id = section_light_grid;
+    grid.element_size = 4;
+    grid.count = 3;
+    grid.bytes = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
+    const std::vector<uint8_t> bytes = serialize_package(sample_level(), {&grid, 1});
+    const PackageReadResult read = parse_package(bytes, "test.olpak");
+    ASSERT_TRUE(read.ok()) << read.error;
+    ASSERT_EQ(read.baked_sections.size(), 1u);
+    EXPECT_EQ(read.baked_sections[0].bytes, grid.bytes);
+    EXPECT_EQ(serialize_package(read.level, read.baked_sections), bytes);
+}
+
+TEST(Package, CompileIsDeterministic) {
+    GeneratedLevelOptions options = options_for_triangles(2000);
+    options.buildings = 6;
+    const std::string path = write_generated_level(fresh_folder("determinism"), "determinism", options);
+    EXPECT_EQ(serialize_package(compile_file(path).level), serialize_package(compile_file(path).level));
+}
+
+TEST(Package, EveryTruncationIsRejected) {
+    const std::vector<uint8_t> bytes = serialize_package(sample_level());
+    for (size_t size = 0; size < bytes.size(); ++size) {
+        const PackageReadResult result = parse_package(std::span(bytes.data(), size), "test.olpak");
+        ASSERT_FALSE(result.ok()) << "truncated to " << size;
+    }
+}
+
+TEST(Package, EveryBitFlipInTheHeaderAndTableIsRejected) {
+    std::vector<uint8_t> bytes = serialize_package(sample_level());
+    const size_t header_bytes = sizeof(FileHeader) + core_section_count * sizeof(SectionEntry);
+    for (size_t bit = 0; bit < header_bytes * 8; ++bit) {
+        bytes[bit / 8] ^= static_cast<uint8_t>(1u << (bit % 8));
+        ASSERT_FALSE(parse_package(bytes, "test.olpak").ok()) << "bit " << bit;
+        bytes[bit / 8] ^= static_cast<uint8_t>(1u << (bit % 8));
+    }
+    ASSERT_TRUE(parse_package(bytes, "test.olpak").ok());
+}
+
+TEST(Package, PayloadCorruptionIsCaughtByTheSectionCrc) {
+    std::vector<uint8_t> bytes = serialize_package(sample_level());
+    const SectionEntry vertices = entry(bytes, section_vertices);
+    bytes[vertices.offset + 5] ^= 0x10;
+    expect_rejected(bytes, "section vertices: CRC32 mismatch");
+}
+
+TEST(Package, WrongMagicAndVersionAreNamed) {
+    std::vector<uint8_t> bytes = serialize_package(sample_level());
+    std::vector<uint8_t> magic = bytes;
+    magic[0] = 'X';
+    expect_rejected(magic, "bad magic");
+    std::vector<uint8_t> version = bytes;
+    const uint32_t v = kVersion + 1;
+    std::memcpy(version.data() + 4, &v, 4);
+    expect_rejected(version, "version 2");
+}
+
+TEST(Package, OutOfRangeIndicesAreRejected) {
+    const std::vector<uint8_t> bytes = serialize_package(sample_level());
+    const uint32_t huge = 0x7FFFFFF0u;
+    expect_rejected(patched(bytes, section_indices, 5, 0, huge), "section indices record 5: index");
+    expect_rejected(patched(bytes, section_surfaces, 0, offsetof(DiskSurface, material), huge),
+                    "section surfaces record 0: material");
+    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, chart), huge), "chart");
+    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, primary_light), huge), "primary_light");
+    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, index_count), 3u * 0x20000000u), "indices [");
+    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, first_given_up), huge),
+                    "given-up lights");
+    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, leaf), huge), "leaf");
+    expect_rejected(patched(bytes, section_bsp_nodes, 0, offsetof(DiskBspNode, plane), huge), "section bsp_nodes");
+    expect_rejected(patched(bytes, section_bsp_nodes, 1, offsetof(DiskBspNode, front), 0), "child node 0");
+    expect_rejected(patched(bytes, section_bsp_leaves, 0, offsetof(DiskBspLeaf, triangle_count), huge), "triangles");
+    expect_rejected(patched(bytes, section_bsp_leaves, 0, offsetof(DiskBspLeaf, first_surface), huge), "surfaces");
+    expect_rejected(patched(bytes, section_charts, 0, offsetof(DiskChart, atlas), huge), "section charts");
+    expect_rejected(patched(bytes, section_charts, 0, offsetof(DiskChart, x), huge), "section charts");
+    expect_rejected(patched(bytes, section_materials, 0, offsetof(DiskMaterial, normal_texture), 99), "normal_texture");
+    expect_rejected(patched(bytes, section_materials, 0, offsetof(DiskMaterial, name) + 4, huge), "name string");
+    expect_rejected(patched(bytes, section_lights, 0, offsetof(DiskLight, name), huge), "section lights");
+    expect_rejected(patched(bytes, section_dynamic_meshes, 0, offsetof(DiskDynamicMesh, vertex_count), huge),
+                    "section dynamic_meshes");
+    expect_rejected(patched(bytes, section_dynamic_indices, 0, 0, huge), "section dynamic_meshes");
+    expect_rejected(patched(bytes, section_entities, 0, offsetof(DiskEntity, dynamic_mesh_count), huge),
+                    "section entities");
+    expect_rejected(patched(bytes, section_given_up_lights, 0, 0, huge), "section given_up_lights");
+    expect_rejected(patched(bytes, section_atlases, 0, 0, 0), "section atlases");
+}
+
+TEST(Package, TableEntriesAreValidated) {
+    const std::vector<uint8_t> bytes = serialize_package(sample_level());
+    const auto table_patch = [&](uint32_t index, size_t field, uint64_t value, size_t width) {
+        std::vector<uint8_t> b = bytes;
+        std::memcpy(b.data() + sizeof(FileHeader) + index * sizeof(SectionEntry) + field, &value, width);
+        fix_crcs(b);
+        return b;
+    };
+    expect_rejected(table_patch(3, offsetof(SectionEntry, offset), 1ull << 40, 8), "outside");
+    expect_rejected(table_patch(3, offsetof(SectionEntry, count), 1000000, 4), "count");
+    expect_rejected(table_patch(3, offsetof(SectionEntry, id), 2, 4), "twice");
+    expect_rejected(table_patch(3, offsetof(SectionEntry, id), 25, 4), "unknown section id");
+}
+
+TEST(Package, WritesAtomically) {
+    const auto folder = fresh_folder("atomic");
+    const std::string path = (folder / "level.olpak").string();
+    const std::vector<uint8_t> bytes = serialize_package(sample_level());
+    ASSERT_EQ(write_file_atomically(path, bytes), "");
+    EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
+    const PackageReadResult read = read_package_file(path);
+    ASSERT_TRUE(read.ok()) << read.error;
+    EXPECT_NE(write_file_atomically((folder / "missing" / "level.olpak").string(), bytes), "");
+    EXPECT_FALSE(read_package_file((folder / "absent.olpak").string()).ok());
+}
+
+}  // namespace
+}  // namespace onelight::test

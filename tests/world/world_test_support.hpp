@@ -1,0 +1,21 @@
+// Shared helpers of the world tests.
+#pragma once
+
+#include <string>
+
+#include "world/compile/compile_level.hpp"
+
+namespace onelight::test {
+
+/// Imports and compiles a glTF file.
+world::CompileResult compile_file(const std::string& path,
+                                  const world::CompileOptions& options = {});
+
+/// Path of a file under ../shared/assets; empty when it is absent.
+std::string shared_asset(const std::string& relative);
+
+/// A simple scene: a ground grid `size` metres wide with `cells`^2 quads and, when `lights`,
+/// two point lights of equal intensity above x = -size/4 and x = +size/4.
+std::string write_two_lamp_floor(const std::string& label, int cells, double size, bool lights);
+
+}  // namespace onelight::test

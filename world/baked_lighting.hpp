@@ -1,0 +1,54 @@
+// Baked lighting in memory: what the baker produces and what the runtime reads back from the
+// package's sections 32..34 (their on-disk twins are in package/format.hpp). Plain data.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "world/compiled_level.hpp"
+
+namespace onelight::world {
+
+/// One lightmap texel: directional secondary irradiance (see DiskLightmapTexel for the
+/// reconstruction E(n') = irradiance * max(0, 0.5 + n'.direction) / normal_weight).
+struct LightmapTexel {
+    glm::vec3 irradiance{0.0f};  // lux at the surface normal, >= 0
+    glm::vec3 direction{0.0f};   // |direction| <= 0.5
+    float normal_weight = 1.0f;  // 0.5 + dot(normal, direction)
+    uint32_t flags = 0;          // bit 0 sampled, bit 1 dilated
+};
+
+struct LightGridCell {
+    std::array<glm::vec3, 6> ambient_cube{};  // lux facing +x -x +y -y +z -z
+    uint32_t dominant_primary = kNone;        // into lights
+    float primary_visibility = 0.0f;          // [0, 1]
+    uint32_t flags = 0;                       // bit 0 inside solid
+};
+
+struct LightGrid {
+    glm::vec3 origin{0.0f};     // metres, minimum corner
+    glm::vec3 cell_size{1.0f};  // metres
+    glm::uvec3 dims{0u};
+    uint32_t samples = 0;
+    std::vector<LightGridCell> cells;  // x fastest
+};
+
+struct BakedLighting {
+    std::vector<LightmapTexel> texels;  // every atlas in order, row-major
+    std::vector<uint8_t> shadow_mask;   // same order: own primary's visibility 0..255
+    LightGrid grid;
+    uint32_t shard_index = 0, shard_count = 1;  // shard_count > 1: an unmerged part
+};
+
+/// Offset of atlas `atlas`'s first texel in BakedLighting::texels.
+inline uint64_t atlas_texel_offset(const CompiledLevel& level, uint32_t atlas) {
+    uint64_t offset = 0;
+    for (uint32_t a = 0; a < atlas; ++a)
+        offset += uint64_t(level.atlases[a].width) * level.atlases[a].height;
+    return offset;
+}
+
+}  // namespace onelight::world

@@ -1,0 +1,237 @@
+#include "world/package/baked_sections.hpp"
+
+#include <cmath>
+#include <cstring>
+
+#include "world/package/format.hpp"
+
+namespace onelight::package {
+namespace {
+
+template <class T>
+void append_bytes(std::vector<uint8_t>& out, const T& value) {
+    const auto* p = reinterpret_cast<const uint8_t*>(&value);
+    out.insert(out.end(), p, p + sizeof(T));
+}
+
+template <class T>
+T read_record(const std::vector<uint8_t>& bytes, size_t offset) {
+    T value;
+    std::memcpy(&value, bytes.data() + offset, sizeof(T));
+    return value;
+}
+
+bool finite_non_negative(const float* v, size_t n) {
+    for (size_t i = 0; i < n; ++i)
+        if (!std::isfinite(v[i]) || v[i] < 0.0f) return false;
+    return true;
+}
+
+std::string where(const std::string& name, const char* section, uint64_t record) {
+    return name + ": section " + section + ", record " + std::to_string(record) + ": ";
+}
+
+}  // namespace
+
+std::vector<RawSection> encode_baked_sections(const world::BakedLighting& baked) {
+    std::vector<RawSection> out(3);
+    RawSection& texels = out[0];
+    texels.id = section_lightmap_texels;
+    texels.element_size = sizeof(DiskLightmapTexel);
+    texels.count = static_cast<uint32_t>(baked.texels.size());
+    texels.bytes.reserve(baked.texels.size() * sizeof(DiskLightmapTexel));
+    for (const world::LightmapTexel& t : baked.texels) {
+        DiskLightmapTexel d{};
+        for (int c = 0; c < 3; ++c) {
+            d.irradiance[c] = t.irradiance[c];
+            d.direction[c] = t.direction[c];
+        }
+        d.normal_weight = t.normal_weight;
+        d.flags = t.flags;
+        append_bytes(texels.bytes, d);
+    }
+    RawSection& masks = out[1];
+    masks.id = section_shadow_masks;
+    masks.element_size = 1;
+    masks.count = static_cast<uint32_t>(baked.shadow_mask.size());
+    masks.bytes = baked.shadow_mask;
+
+    RawSection& grid = out[2];
+    grid.id = section_light_grid;
+    grid.element_size = 1;
+    DiskLightGridHeader h{};
+    for (int c = 0; c < 3; ++c) {
+        h.origin[c] = baked.grid.origin[c];
+        h.cell_size[c] = baked.grid.cell_size[c];
+        h.dims[c] = baked.grid.dims[c];
+    }
+    h.cell_count = static_cast<uint32_t>(baked.grid.cells.size());
+    h.shard_index = baked.shard_index;
+    h.shard_count = baked.shard_count;
+    h.samples = baked.grid.samples;
+    append_bytes(grid.bytes, h);
+    for (const world::LightGridCell& cell : baked.grid.cells) {
+        DiskLightGridCell d{};
+        for (int f = 0; f < 6; ++f)
+            for (int c = 0; c < 3; ++c) d.ambient_cube[f][c] = cell.ambient_cube[f][c];
+        d.dominant_primary =
+            cell.dominant_primary == world::kNone ? kNoIndex : cell.dominant_primary;
+        d.primary_visibility = cell.primary_visibility;
+        d.flags = cell.flags;
+        append_bytes(grid.bytes, d);
+    }
+    grid.count = static_cast<uint32_t>(grid.bytes.size());
+    return out;
+}
+
+BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
+                                      const world::CompiledLevel& level, const std::string& name) {
+    BakedReadResult result;
+    const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr;
+    for (const RawSection& s : sections) {
+        const RawSection** slot = s.id == section_lightmap_texels ? &texels
+                                  : s.id == section_shadow_masks  ? &masks
+                                  : s.id == section_light_grid    ? &grid
+                                                                  : nullptr;
+        if (!slot) continue;
+        if (*slot) {
+            result.error = name + ": section " + std::to_string(s.id) + " appears twice";
+            return result;
+        }
+        *slot = &s;
+    }
+    if (!texels && !masks && !grid) return result;
+    if (!texels || !masks || !grid) {
+        result.error = name + ": baked lighting incomplete: sections lightmap_texels " +
+                       (texels ? "present" : "missing") + ", shadow_masks " +
+                       (masks ? "present" : "missing") + ", light_grid " +
+                       (grid ? "present" : "missing") + "; expected all three or none";
+        return result;
+    }
+    result.present = true;
+    uint64_t expected_texels = 0;
+    for (const world::Atlas& a : level.atlases) expected_texels += uint64_t(a.width) * a.height;
+
+    // Lightmap texels.
+    if (texels->element_size != sizeof(DiskLightmapTexel) ||
+        texels->bytes.size() != uint64_t(texels->count) * sizeof(DiskLightmapTexel) ||
+        texels->count != expected_texels) {
+        result.error = name + ": section lightmap_texels: element size " +
+                       std::to_string(texels->element_size) + ", count " +
+                       std::to_string(texels->count) + ", " + std::to_string(texels->bytes.size()) +
+                       " bytes; expected element size " +
+                       std::to_string(sizeof(DiskLightmapTexel)) + " and count " +
+                       std::to_string(expected_texels) + " (the atlases' texels)";
+        return result;
+    }
+    world::BakedLighting& baked = result.baked;
+    baked.texels.resize(texels->count);
+    for (uint32_t i = 0; i < texels->count; ++i) {
+        const auto d = read_record<DiskLightmapTexel>(texels->bytes, size_t(i) * sizeof(d));
+        const float length =
+            std::sqrt(d.direction[0] * d.direction[0] + d.direction[1] * d.direction[1] +
+                      d.direction[2] * d.direction[2]);
+        std::string bad;
+        if (!finite_non_negative(d.irradiance, 3))
+            bad = "irradiance not finite or negative";
+        else if (!(length <= 0.5f + 1e-4f))
+            bad = "direction length " + std::to_string(length) + " > 0.5";
+        else if (!(d.normal_weight >= 0.5f - 1e-4f && d.normal_weight <= 1.0f + 1e-4f))
+            bad = "normal_weight " + std::to_string(d.normal_weight) + " outside [0.5, 1]";
+        else if (d.flags > 3u)
+            bad = "flags " + std::to_string(d.flags) + " has unknown bits";
+        if (!bad.empty()) {
+            result.error = where(name, "lightmap_texels", i) + bad;
+            return result;
+        }
+        world::LightmapTexel& t = baked.texels[i];
+        t.irradiance = {d.irradiance[0], d.irradiance[1], d.irradiance[2]};
+        t.direction = {d.direction[0], d.direction[1], d.direction[2]};
+        t.normal_weight = d.normal_weight;
+        t.flags = d.flags;
+    }
+
+    // Shadow masks.
+    if (masks->element_size != 1 || masks->bytes.size() != masks->count ||
+        masks->count != expected_texels) {
+        result.error = name + ": section shadow_masks: element size " +
+                       std::to_string(masks->element_size) + ", count " +
+                       std::to_string(masks->count) + "; expected element size 1 and count " +
+                       std::to_string(expected_texels);
+        return result;
+    }
+    baked.shadow_mask = masks->bytes;
+
+    // Light grid.
+    if (grid->element_size != 1 || grid->bytes.size() != grid->count ||
+        grid->bytes.size() < sizeof(DiskLightGridHeader)) {
+        result.error = name + ": section light_grid: " + std::to_string(grid->bytes.size()) +
+                       " bytes; expected a header of " +
+                       std::to_string(sizeof(DiskLightGridHeader)) + " bytes and cells";
+        return result;
+    }
+    const auto h = read_record<DiskLightGridHeader>(grid->bytes, 0);
+    const uint64_t cells = uint64_t(h.dims[0]) * h.dims[1] * h.dims[2];
+    const uint64_t expected_bytes =
+        sizeof(DiskLightGridHeader) + uint64_t(h.cell_count) * sizeof(DiskLightGridCell);
+    if (cells != h.cell_count || grid->bytes.size() != expected_bytes) {
+        result.error = name + ": section light_grid: dims " + std::to_string(h.dims[0]) + "x" +
+                       std::to_string(h.dims[1]) + "x" + std::to_string(h.dims[2]) +
+                       ", cell_count " + std::to_string(h.cell_count) + ", " +
+                       std::to_string(grid->bytes.size()) +
+                       " bytes; expected cell_count == " + std::to_string(cells) + " and " +
+                       std::to_string(expected_bytes) + " bytes";
+        return result;
+    }
+    for (int c = 0; c < 3; ++c) {
+        if (!std::isfinite(h.origin[c]) || !std::isfinite(h.cell_size[c]) ||
+            !(h.cell_size[c] > 0.0f)) {
+            result.error = name + ": section light_grid: header origin/cell_size[" +
+                           std::to_string(c) + "] = " + std::to_string(h.origin[c]) + "/" +
+                           std::to_string(h.cell_size[c]) + "; expected finite, size > 0";
+            return result;
+        }
+    }
+    if (h.shard_count == 0 || h.shard_index >= h.shard_count) {
+        result.error = name + ": section light_grid: shard " + std::to_string(h.shard_index) + "/" +
+                       std::to_string(h.shard_count) + "; expected index < count";
+        return result;
+    }
+    baked.shard_index = h.shard_index;
+    baked.shard_count = h.shard_count;
+    baked.grid.origin = {h.origin[0], h.origin[1], h.origin[2]};
+    baked.grid.cell_size = {h.cell_size[0], h.cell_size[1], h.cell_size[2]};
+    baked.grid.dims = {h.dims[0], h.dims[1], h.dims[2]};
+    baked.grid.samples = h.samples;
+    baked.grid.cells.resize(h.cell_count);
+    for (uint32_t i = 0; i < h.cell_count; ++i) {
+        const auto d = read_record<DiskLightGridCell>(
+            grid->bytes, sizeof(DiskLightGridHeader) + size_t(i) * sizeof(DiskLightGridCell));
+        std::string bad;
+        if (!finite_non_negative(&d.ambient_cube[0][0], 18))
+            bad = "ambient cube not finite or negative";
+        else if (d.dominant_primary != kNoIndex &&
+                 (d.dominant_primary >= level.lights.size() ||
+                  level.lights[d.dominant_primary].role != world::LightRole::primary))
+            bad = "dominant_primary " + std::to_string(d.dominant_primary) +
+                  " is not a primary light of " + std::to_string(level.lights.size());
+        else if (!(d.primary_visibility >= 0.0f && d.primary_visibility <= 1.0f))
+            bad = "primary_visibility " + std::to_string(d.primary_visibility) + " outside [0, 1]";
+        else if (d.flags > 1u)
+            bad = "flags " + std::to_string(d.flags) + " has unknown bits";
+        if (!bad.empty()) {
+            result.error = where(name, "light_grid cells", i) + bad;
+            return result;
+        }
+        world::LightGridCell& cell = baked.grid.cells[i];
+        for (int f = 0; f < 6; ++f)
+            cell.ambient_cube[static_cast<size_t>(f)] = {d.ambient_cube[f][0], d.ambient_cube[f][1],
+                                                         d.ambient_cube[f][2]};
+        cell.dominant_primary = d.dominant_primary == kNoIndex ? world::kNone : d.dominant_primary;
+        cell.primary_visibility = d.primary_visibility;
+        cell.flags = d.flags;
+    }
+    return result;
+}
+
+}  // namespace onelight::package

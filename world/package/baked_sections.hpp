@@ -1,0 +1,31 @@
+// Writer and reader of the baked-lighting sections (32 lightmap texels, 33 shadow masks,
+// 34 light grid; layouts in format.hpp). The reader checks every size, count, index and
+// value range against the compiled level and names the section and the bad value.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "world/baked_lighting.hpp"
+#include "world/compiled_level.hpp"
+#include "world/package/package_writer.hpp"
+
+namespace onelight::package {
+
+/// Sections 32, 33 and 34, in that order, for serialize_package.
+std::vector<RawSection> encode_baked_sections(const world::BakedLighting& baked);
+
+struct BakedReadResult {
+    world::BakedLighting baked;
+    bool present = false;  // the package holds baked lighting
+    std::string error;     // empty on success
+    bool ok() const { return error.empty(); }
+};
+
+/// Decodes sections 32..34 from the raw sections a package reader kept. All three or none
+/// must be present. `name` prefixes error messages (usually the file path).
+BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
+                                      const world::CompiledLevel& level, const std::string& name);
+
+}  // namespace onelight::package
