@@ -1,0 +1,58 @@
+// The demo game's components: plain structs, one concern each.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace onelight::game {
+
+inline constexpr uint32_t kNoLight = 0xFFFFFFFFu;
+
+struct Name {
+    std::string value;  // as in the level (node name), for replays and captures
+};
+
+struct Transform {
+    glm::vec3 position{0.0f};  // metres, world
+    glm::vec3 scale{1.0f};
+    float yaw = 0.0f;  // radians about +y, 0 looks down -z
+};
+
+// The player: feet position in Transform, view angles here.
+struct Player {
+    float yaw = 0.0f;          // radians about +y; 0 looks down -z, positive turns left
+    float pitch = 0.0f;        // radians, positive looks up, clamped to +-89 degrees
+    glm::vec3 velocity{0.0f};  // metres per second
+    bool onGround = false;
+};
+
+// Moves back and forth between `start` and `start + offset`, one round trip per `period`.
+struct Mover {
+    glm::vec3 start{0.0f};
+    glm::vec3 offset{0.0f};
+    float period = 1.0f;  // seconds, > 0
+};
+
+// The one spot effect light, carried by the player (the flashlight).
+struct Flashlight {
+    bool on = false;
+};
+
+// A diffuse-only omni effect light that lives for a few ticks (a gun flash).
+struct GunFlash {
+    uint64_t bornTick = 0;
+    uint64_t serial = 0;  // order of firing; the oldest gives way first
+};
+
+// A dynamic object lit by one primary light, picked whenever it moves.
+struct DynamicLighting {
+    glm::vec3 originOffset{0.0f};    // lighting origin relative to Transform.position
+    uint32_t primary = kNoLight;     // index of the level's light
+    uint32_t challenger = kNoLight;  // a light that currently beats the primary
+    int challengerTicks = 0;         // consecutive evaluations the challenger has led
+    glm::vec3 lastOrigin{1e30f};     // where it was last evaluated
+};
+
+}  // namespace onelight::game

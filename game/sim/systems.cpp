@@ -1,0 +1,147 @@
+#include "systems.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace onelight::game {
+
+glm::vec3 viewDirection(float yaw, float pitch) {
+    float c = std::cos(pitch);
+    return {-std::sin(yaw) * c, std::sin(pitch), -std::cos(yaw) * c};
+}
+
+glm::vec3 moveAndSlide(const world::BspView* bsp, glm::vec3 center, glm::vec3 delta, float radius,
+                       float skin, float floorCos, bool& floor) {
+    floor = false;
+    if (!bsp) return center + delta;
+    for (int contact = 0; contact < 4; ++contact) {
+        float length = glm::length(delta);
+        if (length < 1e-6f) break;
+        world::SweepHit hit =
+            world::sweep_sphere(*bsp, glm::dvec3(center), glm::dvec3(center + delta), radius);
+        if (!hit.hit) return center + delta;
+        glm::vec3 n = glm::vec3(hit.normal);
+        if (n.y > floorCos) floor = true;
+        if (glm::dot(delta, n) >= 0.0f) {
+            // Touching a surface it moves along or away from: step off by the skin and retry.
+            center += n * skin;
+            continue;
+        }
+        // Stop `skin` short of the contact, then keep only the motion along the surface.
+        float travel = std::max(0.0f, float(hit.fraction) * length - skin);
+        center += delta * (travel / length);
+        glm::vec3 rest = delta * (1.0f - travel / length);
+        delta = rest - n * glm::dot(rest, n);
+    }
+    return center;
+}
+
+void playerSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputState& input,
+                  const Tuning& tuning, const world::BspView* bsp) {
+    float dt = float(tick.seconds);
+    for (auto [e, transform, player] : registry.view<Transform, Player>().each()) {
+        player.yaw += glm::radians(input.lookYawDegrees);
+        player.pitch = std::clamp(player.pitch + glm::radians(input.lookPitchDegrees),
+                                  glm::radians(-89.0f), glm::radians(89.0f));
+        glm::vec3 forward(-std::sin(player.yaw), 0.0f, -std::cos(player.yaw));
+        glm::vec3 right(std::cos(player.yaw), 0.0f, -std::sin(player.yaw));
+        glm::vec3 wish(0.0f);
+        if (input.down("W")) wish += forward;
+        if (input.down("S")) wish -= forward;
+        if (input.down("D")) wish += right;
+        if (input.down("A")) wish -= right;
+        if (glm::length(wish) > 0.0f) wish = glm::normalize(wish) * tuning.walkSpeed;
+        player.velocity.x = wish.x;
+        player.velocity.z = wish.z;
+        if (player.onGround && input.down("SPACE")) player.velocity.y = tuning.jumpSpeed;
+        player.velocity.y -= tuning.gravity * dt;
+
+        // The body is a sphere resting on the feet.
+        glm::vec3 center = transform.position + glm::vec3(0.0f, tuning.bodyRadius, 0.0f);
+        bool floor = false;
+        center = moveAndSlide(bsp, center, player.velocity * dt, tuning.bodyRadius, tuning.skin,
+                              tuning.maxSlopeCos, floor);
+        player.onGround = floor;
+        if (floor && player.velocity.y < 0.0f) player.velocity.y = 0.0f;
+        transform.position = center - glm::vec3(0.0f, tuning.bodyRadius, 0.0f);
+        transform.yaw = player.yaw;
+    }
+}
+
+void moverSystem(ecs::Registry& registry, const ecs::Tick& tick) {
+    double t = tick.time();
+    for (auto [e, transform, mover] : registry.view<Transform, Mover>().each()) {
+        // A triangle wave from 0 to 1 and back over one period.
+        double phase = std::fmod(t / double(mover.period), 1.0);
+        float s = float(phase < 0.5 ? 2.0 * phase : 2.0 - 2.0 * phase);
+        transform.position = mover.start + mover.offset * s;
+    }
+}
+
+void effectLightSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputState& input,
+                       const Tuning& tuning, uint64_t& shotSerial) {
+    // Expire old flashes (collect first: no structural change while iterating).
+    std::vector<ecs::Entity> expired;
+    for (auto [e, flash] : registry.view<GunFlash>().each())
+        if (double(tick.index - flash.bornTick) * tick.seconds >= double(tuning.gunFlashSeconds))
+            expired.push_back(e);
+    for (ecs::Entity e : expired) registry.destroy(e);
+
+    std::vector<glm::vec3> muzzles;  // flashes are created after the view is done
+    for (auto [e, transform, player, flashlight] :
+         registry.view<Transform, Player, Flashlight>().each()) {
+        if (input.toggleFlashlight) flashlight.on = !flashlight.on;
+        if (input.setFlashlight) flashlight.on = input.flashlightValue;
+        if (!input.fire) continue;
+        glm::vec3 eye = transform.position + glm::vec3(0.0f, tuning.eyeHeight, 0.0f);
+        muzzles.push_back(eye + viewDirection(player.yaw, player.pitch) * tuning.gunFlashRange);
+    }
+    for (const glm::vec3& muzzle : muzzles) {
+        ecs::Entity flash = registry.create();
+        registry.emplace<Transform>(flash, Transform{muzzle});
+        registry.emplace<GunFlash>(flash, GunFlash{tick.index, shotSerial++});
+    }
+
+    // The budget: the oldest flashes give way.
+    while (registry.pool<GunFlash>().size() > size_t(tuning.maxGunFlashes)) {
+        ecs::Entity oldest = ecs::kNullEntity;
+        uint64_t oldestSerial = UINT64_MAX;
+        for (auto [e, flash] : registry.view<GunFlash>().each())
+            if (flash.serial < oldestSerial) oldest = e, oldestSerial = flash.serial;
+        registry.destroy(oldest);
+    }
+}
+
+void primarySelectionSystem(ecs::Registry& registry, std::span<const uint32_t> candidates,
+                            const LightScore& score, const Tuning& tuning) {
+    if (candidates.empty()) return;
+    for (auto [e, transform, lit] : registry.view<Transform, DynamicLighting>().each()) {
+        glm::vec3 origin = transform.position + lit.originOffset;
+        if (glm::length(origin - lit.lastOrigin) < 0.01f) continue;
+        lit.lastOrigin = origin;
+        uint32_t best = kNoLight;
+        float bestScore = -1.0f, currentScore = 0.0f;
+        for (uint32_t light : candidates) {
+            float s = score(light, origin);
+            if (s > bestScore) best = light, bestScore = s;  // ties: the earlier light
+            if (light == lit.primary) currentScore = s;
+        }
+        if (lit.primary == kNoLight || best == lit.primary) {
+            lit.primary = best;
+            lit.challenger = kNoLight;
+            lit.challengerTicks = 0;
+            continue;
+        }
+        lit.challengerTicks = (best == lit.challenger) ? lit.challengerTicks + 1 : 1;
+        lit.challenger = best;
+        if (bestScore > currentScore * tuning.primarySwitchRatio ||
+            lit.challengerTicks >= tuning.primarySwitchTicks) {
+            lit.primary = best;
+            lit.challenger = kNoLight;
+            lit.challengerTicks = 0;
+        }
+    }
+}
+
+}  // namespace onelight::game
