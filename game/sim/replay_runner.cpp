@@ -1,0 +1,133 @@
+#include "replay_runner.hpp"
+
+#include <algorithm>
+
+namespace onelight::game {
+
+namespace {
+
+using replay::Command;
+using replay::CommandKind;
+
+std::string place(const ReplayRunner& r, const Command& c) {
+    return r.script.path + ":" + std::to_string(c.line) + ": ";
+}
+
+ecs::Entity findNamed(ecs::Registry& registry, const std::string& name) {
+    for (auto [e, n] : registry.view<Name>().each())
+        if (n.value == name) return e;
+    return ecs::kNullEntity;
+}
+
+bool actsBeforeSystems(CommandKind k) {
+    return k == CommandKind::Spawn || k == CommandKind::Key || k == CommandKind::Look ||
+           k == CommandKind::Fire || k == CommandKind::Flashlight;
+}
+
+}  // namespace
+
+ReplayRunner makeReplayRunner(replay::Script script, std::vector<std::string> lightNames,
+                              ecs::Registry& registry) {
+    ReplayRunner r{std::move(script), std::move(lightNames)};
+    for (const Command& c : r.script.commands) {
+        if (c.kind != CommandKind::ExpectPrimary) continue;
+        ecs::Entity e = findNamed(registry, c.name);
+        if (e == ecs::kNullEntity)
+            throw ReplayFailure(place(r, c) + "unknown entity '" + c.name + "'");
+        if (!registry.allOf<DynamicLighting>(e))
+            throw ReplayFailure(place(r, c) + "entity '" + c.name +
+                                "' is not a dynamic object (it has no primary to pick)");
+        if (std::find(r.lightNames.begin(), r.lightNames.end(), c.light) == r.lightNames.end())
+            throw ReplayFailure(place(r, c) + "unknown light '" + c.light + "'");
+    }
+    return r;
+}
+
+void applyReplayInput(ReplayRunner& r, uint64_t tick, InputState& input, ecs::Registry& registry,
+                      ecs::Entity player, const Tuning& tuning) {
+    const auto& commands = r.script.commands;
+    for (; r.next < commands.size() && commands[r.next].tick <= tick; ++r.next) {
+        const Command& c = commands[r.next];
+        switch (c.kind) {
+            case CommandKind::Key:
+                if (c.on) {
+                    input.keysDown.insert(c.name);
+                } else {
+                    input.keysDown.erase(c.name);
+                }
+                if (c.name == "F" && c.on) input.toggleFlashlight = true;
+                break;
+            case CommandKind::Look:
+                input.lookYawDegrees += c.values[0];
+                input.lookPitchDegrees += c.values[1];
+                break;
+            case CommandKind::Fire:
+                input.fire = true;
+                break;
+            case CommandKind::Flashlight:
+                input.setFlashlight = true;
+                input.flashlightValue = c.on;
+                break;
+            case CommandKind::Spawn: {
+                // The script gives the eye; the player's Transform is at the feet.
+                registry.get<Transform>(player).position =
+                    glm::vec3(c.values[0], c.values[1] - tuning.eyeHeight, c.values[2]);
+                Player& p = registry.get<Player>(player);
+                p.yaw = glm::radians(c.values[3]);
+                p.pitch = glm::radians(c.values[4]);
+                p.velocity = glm::vec3(0.0f);
+                break;
+            }
+            default:
+                break;  // handled after the systems
+        }
+    }
+}
+
+ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, ecs::Registry& registry) {
+    ReplayAfterTick after;
+    const auto& commands = r.script.commands;
+    for (; r.nextCheck < commands.size() && commands[r.nextCheck].tick <= tick; ++r.nextCheck) {
+        const Command& c = commands[r.nextCheck];
+        if (actsBeforeSystems(c.kind)) continue;
+        switch (c.kind) {
+            case CommandKind::Capture:
+                after.captures.push_back(c.name);
+                break;
+            case CommandKind::Quit:
+                after.quit = true;
+                break;
+            case CommandKind::ExpectEffectLights: {
+                size_t flashes = registry.pool<GunFlash>().size();
+                size_t spots = 0;
+                for (auto [e, f] : registry.view<Flashlight>().each()) spots += f.on;
+                size_t live = flashes + spots;
+                if (live != size_t(c.count))
+                    throw ReplayFailure(place(r, c) + "expected " + std::to_string(c.count) +
+                                        " effect lights, found " + std::to_string(live) + " (" +
+                                        std::to_string(flashes) + " gun flashes, " +
+                                        std::to_string(spots) + " flashlight)");
+                break;
+            }
+            case CommandKind::ExpectPrimary: {
+                const DynamicLighting& lit =
+                    registry.get<DynamicLighting>(findNamed(registry, c.name));
+                std::string actual = lit.primary < r.lightNames.size() ? r.lightNames[lit.primary]
+                                                                       : std::string("none");
+                if (actual != c.light)
+                    throw ReplayFailure(place(r, c) + "expected primary " + c.name +
+                                        " == " + c.light + ", found " + actual);
+                break;
+            }
+            default:
+                break;
+        }
+    }
+    return after;
+}
+
+bool replayFinished(const ReplayRunner& r) {
+    return r.next >= r.script.commands.size() && r.nextCheck >= r.script.commands.size();
+}
+
+}  // namespace onelight::game
