@@ -79,29 +79,62 @@ private:
                    : kBack;
     }
 
+    /// The plane through edge k of triangle t that contains the triangle's normal: separates
+    /// coplanar neighbours (a subdivided floor) that the triangle's own plane cannot.
+    bool edge_plane_of(uint32_t t, size_t k, BspPlane& plane) const {
+        const StaticTriangle& tri = geometry_.triangles[t];
+        const glm::dvec3& a = geometry_.vertices[tri.v[k]].position;
+        const glm::dvec3& b = geometry_.vertices[tri.v[(k + 1) % 3]].position;
+        const glm::dvec3 n = glm::cross(b - a, area_vector(geometry_, tri));
+        const double length = glm::length(n);
+        if (!(length > 0.0) || !std::isfinite(length)) return false;
+        plane.normal = n / length;
+        plane.distance = glm::dot(plane.normal, a);
+        return true;
+    }
+
+    void score_plane(const std::vector<uint32_t>& triangles, const BspPlane& plane,
+                     double& best_score, BspPlane& best) const {
+        size_t front = 0, back = 0, splits = 0;
+        for (uint32_t t : triangles) {
+            const int s = classify(plane, t);
+            if (s == kFront)
+                ++front;
+            else if (s == kBack)
+                ++back;
+            else
+                ++splits;
+        }
+        if (front + splits == 0 || back + splits == 0) return;  // no progress
+        const double score = options_.split_weight * static_cast<double>(splits) +
+                             std::abs(static_cast<double>(front) - static_cast<double>(back));
+        if (score < best_score) {
+            best_score = score;
+            best = plane;
+        }
+    }
+
+    /// Candidates: the planes of a spread of the node's triangles, then planes through their
+    /// edges; the lowest split_weight * splits + |front - back| wins.
     bool choose_plane(const std::vector<uint32_t>& triangles, BspPlane& best) const {
         const size_t count = std::min<size_t>(options_.candidate_planes, triangles.size());
         const size_t stride = triangles.size() / count;
         double best_score = std::numeric_limits<double>::infinity();
         for (size_t c = 0; c < count; ++c) {
             BspPlane plane;
-            if (!plane_of(triangles[c * stride + stride / 2], plane)) continue;
-            size_t front = 0, back = 0, splits = 0;
-            for (uint32_t t : triangles) {
-                const int s = classify(plane, t);
-                if (s == kFront)
-                    ++front;
-                else if (s == kBack)
-                    ++back;
-                else
-                    ++splits;
-            }
-            if (front + splits == 0 || back + splits == 0) continue;  // no progress
-            const double score = options_.split_weight * static_cast<double>(splits) +
-                                 std::abs(static_cast<double>(front) - static_cast<double>(back));
-            if (score < best_score) {
-                best_score = score;
-                best = plane;
+            if (plane_of(triangles[c * stride + stride / 2], plane))
+                score_plane(triangles, plane, best_score, best);
+        }
+        // Edge planes when the face planes leave the node badly unbalanced (coplanar sets).
+        if (best_score > 0.25 * static_cast<double>(triangles.size())) {
+            const size_t edge_count = std::max<size_t>(1, count / 3);
+            const size_t edge_stride = triangles.size() / edge_count;
+            for (size_t c = 0; c < edge_count; ++c) {
+                for (size_t k = 0; k < 3; ++k) {
+                    BspPlane plane;
+                    if (edge_plane_of(triangles[c * edge_stride + edge_stride / 2], k, plane))
+                        score_plane(triangles, plane, best_score, best);
+                }
             }
         }
         return std::isfinite(best_score);

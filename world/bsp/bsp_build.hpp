@@ -1,9 +1,10 @@
-// Builds the BSP over the static triangles. Splitting planes are the triangles' own planes;
-// each node tries a spread of candidates and keeps the one with the lowest
-// split_weight * splits + |front - back|, which trades splits against depth. Triangles that
-// straddle the plane are cut (attributes interpolated, cut points shared along an edge so no
-// crack opens); a triangle in the plane goes to the side its normal faces. Leaves hold the
-// triangles, so every triangle lies in exactly one leaf.
+// Builds the BSP over the static triangles. Splitting planes come from the polygons: each node
+// tries the planes of a spread of its triangles (and, when those leave it unbalanced, as with a
+// subdivided flat floor, the planes through their edges along their normals) and keeps the one
+// with the lowest split_weight * splits + |front - back|, which trades splits against depth.
+// Triangles that straddle the plane are cut (attributes interpolated, cut points shared along an
+// edge so no crack opens); a triangle in the plane goes to the side its normal faces. Leaves hold
+// the triangles, so every triangle lies in exactly one leaf.
 #pragma once
 
 #include <cstdint>
