@@ -29,10 +29,14 @@ MeshData one_triangle(const std::string& name) {
 TEST(Import, HierarchyComposesTransforms) {
     GltfBuilder gltf;
     const int mesh = gltf.add_mesh(one_triangle("tri"));
-    const int child = gltf.add_node({{"name", "child"}, {"mesh", mesh}, {"translation", {0.0, 0.0, 5.0}}}, false);
-    gltf.add_node({{"name", "parent"}, {"translation", {10.0, 0.0, 0.0}}, {"scale", {2.0, 2.0, 2.0}},
+    const int child =
+        gltf.add_node({{"name", "child"}, {"mesh", mesh}, {"translation", {0.0, 0.0, 5.0}}}, false);
+    gltf.add_node({{"name", "parent"},
+                   {"translation", {10.0, 0.0, 0.0}},
+                   {"scale", {2.0, 2.0, 2.0}},
                    {"children", {child}}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("hierarchy"), "hierarchy"));
+    const world::SourceLevel level =
+        import_gltf(gltf.write(fresh_folder("hierarchy"), "hierarchy"));
     ASSERT_EQ(level.instances.size(), 1u);
     const glm::dvec4 p = level.instances[0].world_from_local * glm::dvec4(1.0, 0.0, 0.0, 1.0);
     EXPECT_NEAR(p.x, 10.0 + 2.0, 1e-12);
@@ -60,7 +64,8 @@ TEST(Import, FlatNormalsWhenMissingAndTexcoord1Kept) {
     const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("flat"), "flat"));
     ASSERT_EQ(level.instances.size(), 1u);
     EXPECT_TRUE(level.instances[0].has_uv1);
-    for (const world::Vertex& v : level.instances[0].vertices) EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
+    for (const world::Vertex& v : level.instances[0].vertices)
+        EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
     EXPECT_FLOAT_EQ(level.instances[0].vertices[1].uv1.x, 0.9f);
 }
 
@@ -69,7 +74,8 @@ TEST(Import, GlossFormulaInvertsTheEngineGgxAlpha) {
         const float gloss = world::gloss_from_roughness(r);
         ASSERT_GE(gloss, 0.0f);
         ASSERT_LE(gloss, 1.0f);
-        EXPECT_NEAR(glsl::ggxAlpha_fromGloss(gloss), r * r, 2e-4f * std::max(1.0f, 1.0f / (r * r))) << r;
+        EXPECT_NEAR(glsl::ggxAlpha_fromGloss(gloss), r * r, 2e-4f * std::max(1.0f, 1.0f / (r * r)))
+            << r;
     }
     EXPECT_EQ(world::gloss_from_roughness(1.0f), 0.0f);
     EXPECT_EQ(world::gloss_from_roughness(0.0f), 1.0f);
@@ -98,15 +104,19 @@ TEST(Import, MetallicRoughnessBecomesAlbedoSpecularGloss) {
 TEST(Import, LightsKeepUnitsRolesAndDirections) {
     GltfBuilder gltf;
     const int sun = gltf.add_light({{"type", "directional"}, {"intensity", 100000.0}});
-    const int spot = gltf.add_light({{"type", "spot"}, {"intensity", 400.0},
+    const int spot = gltf.add_light({{"type", "spot"},
+                                     {"intensity", 400.0},
                                      {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}});
     const int lamp = gltf.add_light({{"type", "point"}, {"intensity", 50.0}, {"range", 9.0}});
-    gltf.add_node({{"name", "sun"}, {"rotation", {-0.7071068, 0.0, 0.0, 0.7071068}},
+    gltf.add_node({{"name", "sun"},
+                   {"rotation", {-0.7071068, 0.0, 0.0, 0.7071068}},
                    {"extensions", {{"KHR_lights_punctual", {{"light", sun}}}}}});
-    gltf.add_node({{"name", "torch"}, {"translation", {1.0, 2.0, 3.0}},
+    gltf.add_node({{"name", "torch"},
+                   {"translation", {1.0, 2.0, 3.0}},
                    {"extensions", {{"KHR_lights_punctual", {{"light", spot}}}}},
                    {"extras", {{"onelight", {{"role", "effect"}}}}}});
-    gltf.add_node({{"name", "lamp"}, {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
+    gltf.add_node({{"name", "lamp"},
+                   {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
                    {"extras", {{"onelight", {{"role", "baked"}}}}}});
     const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("lights"), "lights"));
     ASSERT_EQ(level.lights.size(), 3u);
@@ -124,8 +134,11 @@ TEST(Import, LightsKeepUnitsRolesAndDirections) {
 
 TEST(Import, CamerasAreNamedByTheirNode) {
     GltfBuilder gltf;
-    const int camera = gltf.add_camera({{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}}}});
-    gltf.add_node({{"name", "courtyard"}, {"camera", camera}, {"translation", {0.0, 2.0, 0.0}},
+    const int camera = gltf.add_camera(
+        {{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}}}});
+    gltf.add_node({{"name", "courtyard"},
+                   {"camera", camera},
+                   {"translation", {0.0, 2.0, 0.0}},
                    {"extras", {{"onelight", {{"exposure", 9.5}}}}}});
     const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("camera"), "camera"));
     ASSERT_EQ(level.cameras.size(), 1u);
@@ -139,12 +152,17 @@ TEST(Import, CamerasAreNamedByTheirNode) {
 TEST(Import, ExtrasMarkDynamicMoversSpawnsProbesGrid) {
     GltfBuilder gltf;
     const int mesh = gltf.add_mesh(one_triangle("tri"));
-    gltf.add_node({{"name", "door"}, {"mesh", mesh},
-                   {"extras", {{"onelight", {{"mover", {{"offset", {0.0, 3.0, 0.0}}, {"period", 4.0}}}}}}}});
+    gltf.add_node(
+        {{"name", "door"},
+         {"mesh", mesh},
+         {"extras", {{"onelight", {{"mover", {{"offset", {0.0, 3.0, 0.0}}, {"period", 4.0}}}}}}}});
     gltf.add_node({{"name", "start"}, {"extras", {{"onelight", {{"spawn", true}}}}}});
     gltf.add_node({{"name", "probe"}, {"extras", {{"onelight", {{"probe", true}}}}}});
-    gltf.add_node({{"name", "settings"},
-                   {"extras", {{"onelight", {{"grid", {{"min", {-1, -1, -1}}, {"max", {1, 1, 1}}}}, {"exposure", 10.0}}}}}});
+    gltf.add_node(
+        {{"name", "settings"},
+         {"extras",
+          {{"onelight",
+            {{"grid", {{"min", {-1, -1, -1}}, {"max", {1, 1, 1}}}}, {"exposure", 10.0}}}}}});
     const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("extras"), "extras"));
     ASSERT_EQ(level.entities.size(), 3u);
     EXPECT_EQ(level.entities[0].flags, world::entity_dynamic | world::entity_mover);
@@ -155,6 +173,30 @@ TEST(Import, ExtrasMarkDynamicMoversSpawnsProbesGrid) {
     EXPECT_TRUE(level.has_grid_bounds);
     EXPECT_EQ(level.grid_max, glm::vec3(1.0f));
     EXPECT_TRUE(level.has_exposure);
+}
+
+TEST(Import, ImagesAreFileReferencesOrEncodedBytes) {
+    GltfBuilder gltf;
+    MeshData mesh = one_triangle("tri");
+    mesh.material =
+        gltf.add_material({{"name", "painted"},
+                           {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+                           {"normalTexture", {{"index", 1}}}});
+    gltf.document()["textures"] = {{{"source", 0}, {"sampler", 0}}, {{"source", 1}}};
+    gltf.document()["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}}};
+    // "AQID" is base64 for bytes 1 2 3: never decoded as pixels, kept as they are.
+    gltf.document()["images"] = {{{"uri", "data:image/png;base64,AQID"}}, {{"uri", "normal.png"}}};
+    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("images"), "images"));
+    ASSERT_EQ(level.textures.size(), 2u);
+    EXPECT_EQ(level.textures[0].sampler.wrap_s, 33071);
+    EXPECT_EQ(level.textures[0].sampler.wrap_t, 33648);
+    EXPECT_EQ(level.textures[0].sampler.mag_filter, 9728);
+    ASSERT_EQ(level.images.size(), 2u);
+    EXPECT_EQ(level.images[0].encoded_bytes, (std::vector<uint8_t>{1, 2, 3}));
+    EXPECT_TRUE(level.images[0].uri.empty());
+    EXPECT_NE(level.images[1].uri.find("normal.png"), std::string::npos);
+    EXPECT_TRUE(level.images[1].encoded_bytes.empty());
 }
 
 /// Expects import to throw a CompileError whose message contains every fragment.
@@ -174,7 +216,8 @@ TEST(ImportErrors, NanPositionNamesTheMesh) {
     MeshData mesh = one_triangle("broken_wall");
     mesh.positions[1].y = std::nanf("");
     gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
-    expect_error(gltf.write(fresh_folder("nan"), "nan"), {"nan.gltf", "broken_wall", "POSITION", "NaN or Inf"});
+    expect_error(gltf.write(fresh_folder("nan"), "nan"),
+                 {"nan.gltf", "broken_wall", "POSITION", "NaN or Inf"});
 }
 
 TEST(ImportErrors, InfPositionNamesTheMesh) {
@@ -203,7 +246,8 @@ TEST(ImportErrors, AccessorPastItsBuffer) {
 TEST(ImportErrors, UnknownRole) {
     GltfBuilder gltf;
     const int lamp = gltf.add_light({{"type", "point"}});
-    gltf.add_node({{"name", "lamp"}, {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
+    gltf.add_node({{"name", "lamp"},
+                   {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
                    {"extras", {{"onelight", {{"role", "sometimes"}}}}}});
     expect_error(gltf.write(fresh_folder("role"), "role"), {"lamp", "role", "\"baked\""});
 }
@@ -226,7 +270,8 @@ TEST(ImportAssets, NormalTangentTest) {
     EXPECT_NE(level.materials[0].normal_texture, world::kNone);
     EXPECT_NE(level.materials[0].base_color_texture, world::kNone);
     ASSERT_EQ(level.images.size(), 3u);
-    for (const world::Image& image : level.images) EXPECT_TRUE(std::filesystem::exists(image.uri)) << image.uri;
+    for (const world::Image& image : level.images)
+        EXPECT_TRUE(std::filesystem::exists(image.uri)) << image.uri;
     for (const world::Vertex& v : level.instances[0].vertices)
         ASSERT_NEAR(glm::dot(glm::vec3(v.tangent), v.normal), 0.0f, 1e-4f);
 }

@@ -21,7 +21,8 @@ namespace {
 /// encoded bytes, file references keep only their uri.
 bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
                         const unsigned char* bytes, int size, void*) {
-    if (image->uri.empty() && bytes != nullptr && size > 0)
+    // Images in a bufferView are copied later, after their range is checked (tinygltf does not).
+    if (image->uri.empty() && image->bufferView < 0 && bytes != nullptr && size > 0)
         image->image.assign(bytes, bytes + size);
     return true;
 }
@@ -195,6 +196,25 @@ struct Importer {
         for (int child : node.children) visit(child, world, entity, seen, depth + 1);
     }
 
+    std::vector<unsigned char> buffer_view_bytes(int view_index, int image_index) const {
+        const std::string where = file + ": image " + std::to_string(image_index);
+        if (static_cast<size_t>(view_index) >= model.bufferViews.size())
+            throw CompileError(where + ": bufferView " + std::to_string(view_index) +
+                               " is out of range");
+        const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(view_index)];
+        if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
+            throw CompileError(where + ": buffer " + std::to_string(view.buffer) +
+                               " is out of range");
+        const std::vector<unsigned char>& data =
+            model.buffers[static_cast<size_t>(view.buffer)].data;
+        if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
+            throw CompileError(where + ": bufferView bytes lie outside buffer " +
+                               std::to_string(view.buffer));
+        return std::vector<unsigned char>(
+            data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
+            data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
+    }
+
     void resolve_materials_and_textures() {
         std::vector<Material> converted;
         for (size_t i = 0; i < materials.used.size(); ++i) {
@@ -242,6 +262,8 @@ struct Importer {
             if (!source.uri.empty()) {
                 image.uri =
                     (std::filesystem::path(folder) / source.uri).lexically_normal().string();
+            } else if (source.bufferView >= 0) {
+                image.encoded_bytes = buffer_view_bytes(source.bufferView, source_index);
             } else {
                 image.encoded_bytes = source.image;
             }
