@@ -127,7 +127,8 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
     world::BakedLighting& baked = result.baked;
     baked.texels.resize(texels->count);
     for (uint32_t i = 0; i < texels->count; ++i) {
-        const auto d = read_record<DiskLightmapTexel>(texels->bytes, size_t(i) * sizeof(d));
+        const auto d =
+            read_record<DiskLightmapTexel>(texels->bytes, size_t(i) * sizeof(DiskLightmapTexel));
         const float length =
             std::sqrt(d.direction[0] * d.direction[0] + d.direction[1] * d.direction[1] +
                       d.direction[2] * d.direction[2]);
@@ -145,8 +146,8 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
             return result;
         }
         world::LightmapTexel& t = baked.texels[i];
-        t.irradiance = {d.irradiance[0], d.irradiance[1], d.irradiance[2]};
-        t.direction = {d.direction[0], d.direction[1], d.direction[2]};
+        t.irradiance = glm::vec3(d.irradiance[0], d.irradiance[1], d.irradiance[2]);
+        t.direction = glm::vec3(d.direction[0], d.direction[1], d.direction[2]);
         t.normal_weight = d.normal_weight;
         t.flags = d.flags;
     }
@@ -199,9 +200,9 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
     }
     baked.shard_index = h.shard_index;
     baked.shard_count = h.shard_count;
-    baked.grid.origin = {h.origin[0], h.origin[1], h.origin[2]};
-    baked.grid.cell_size = {h.cell_size[0], h.cell_size[1], h.cell_size[2]};
-    baked.grid.dims = {h.dims[0], h.dims[1], h.dims[2]};
+    baked.grid.origin = glm::vec3(h.origin[0], h.origin[1], h.origin[2]);
+    baked.grid.cell_size = glm::vec3(h.cell_size[0], h.cell_size[1], h.cell_size[2]);
+    baked.grid.dims = glm::uvec3(h.dims[0], h.dims[1], h.dims[2]);
     baked.grid.samples = h.samples;
     baked.grid.cells.resize(h.cell_count);
     for (uint32_t i = 0; i < h.cell_count; ++i) {
@@ -225,8 +226,8 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
         }
         world::LightGridCell& cell = baked.grid.cells[i];
         for (int f = 0; f < 6; ++f)
-            cell.ambient_cube[static_cast<size_t>(f)] = {d.ambient_cube[f][0], d.ambient_cube[f][1],
-                                                         d.ambient_cube[f][2]};
+            cell.ambient_cube[static_cast<size_t>(f)] =
+                glm::vec3(d.ambient_cube[f][0], d.ambient_cube[f][1], d.ambient_cube[f][2]);
         cell.dominant_primary = d.dominant_primary == kNoIndex ? world::kNone : d.dominant_primary;
         cell.primary_visibility = d.primary_visibility;
         cell.flags = d.flags;

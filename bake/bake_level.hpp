@@ -1,0 +1,77 @@
+// The bake pipeline: import -> Embree scene of the static world -> world compile with the
+// shadowed dominant-primary function -> lightmap texels (shadow masks + directional secondary
+// irradiance) -> light grid -> dilation -> package. Sharding bakes a contiguous part of the
+// texels and of the grid cells; merge joins the parts and finishes them exactly as a whole
+// bake does, so the package is byte-identical.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bake/grid/light_grid.hpp"
+#include "bake/lighting/lights.hpp"
+#include "bake/lightmap/lightmap_bake.hpp"
+#include "bake/report/report.hpp"
+#include "world/baked_lighting.hpp"
+#include "world/compile/compile_level.hpp"
+#include "world/source_level.hpp"
+
+namespace onelight::bake {
+
+enum class BakeQuality { draft, normal, high };
+
+/// "draft", "default", "high".
+const char* quality_name(BakeQuality quality);
+bool parse_quality(const std::string& text, BakeQuality& quality);
+
+struct BakeOptions {
+    BakeQuality quality = BakeQuality::normal;
+    world::CompileOptions compile;
+    LightSizes light_sizes;
+    glm::vec3 sky_radiance{0.0f};  // cd/m^2, uniform sky (0: none)
+    float grid_cell_size = 1.0f;   // metres
+    uint32_t shard_index = 0, shard_count = 1;
+    bool show_progress = true;
+    // Overrides of the quality preset; 0 keeps the preset.
+    uint32_t shadow_samples = 0, indirect_samples = 0, grid_samples = 0;
+};
+
+/// Sample counts of a quality preset, overrides applied.
+LightmapSettings lightmap_settings(const BakeOptions& options);
+GridSettings grid_settings(const BakeOptions& options);
+
+struct BakeResult {
+    world::CompiledLevel level;
+    world::CompileStats compile_stats;
+    world::BakedLighting baked;  // finished (dilated) when shard_count == 1
+    BakeReport report;
+};
+
+/// Compiles and bakes `source` (or its shard). Throws world::CompileError on bad input and
+/// std::runtime_error on Embree failures.
+BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& options);
+
+/// Texels [begin, end) and cells [begin, end) that shard i of n owns: contiguous ranges.
+struct ShardRange {
+    uint64_t texel_begin = 0, texel_end = 0;
+    uint64_t cell_begin = 0, cell_end = 0;
+};
+ShardRange shard_range(uint64_t texels, uint64_t cells, uint32_t index, uint32_t count);
+
+/// The steps after every texel is baked: dilation. Makes a part complete (shard 0 of 1).
+void finish_baked_lighting(const world::CompiledLevel& level, world::BakedLighting& baked);
+
+/// Joins the parts of a sharded bake (any order) into the unfinished whole, then finishes it.
+/// Returns "" on success, else a one-line error (missing or repeated shard, mismatched sizes).
+std::string merge_baked_lighting(const world::CompiledLevel& level,
+                                 std::vector<world::BakedLighting> parts,
+                                 world::BakedLighting& merged);
+
+/// The package bytes of a bake result.
+std::vector<uint8_t> package_bytes(const world::CompiledLevel& level,
+                                   const world::BakedLighting& baked);
+
+}  // namespace onelight::bake

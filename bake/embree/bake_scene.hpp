@@ -1,0 +1,109 @@
+// The Embree 3 scene of a level's static world, built once and shared by every bake stage
+// (dominant primaries, lightmaps, the light grid, the reference path tracer). Dynamic objects
+// are not in it. Follows Embree's tutorials/minimal: one device with one error callback;
+// geometry new -> fill buffers -> commit -> attach -> release; the scene committed before use.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <embree3/rtcore.h>
+#include <glm/glm.hpp>
+
+#include "world/compiled_level.hpp"
+#include "world/static_geometry.hpp"
+
+namespace onelight::bake {
+
+/// Owns an RTCDevice whose error callback records the last error (no global state).
+class EmbreeDevice {
+public:
+    EmbreeDevice();
+    ~EmbreeDevice();
+    EmbreeDevice(const EmbreeDevice&) = delete;
+    EmbreeDevice& operator=(const EmbreeDevice&) = delete;
+
+    RTCDevice handle() const { return device_; }  // owned
+    /// The message of the last error Embree reported, "" when none.
+    std::string last_error() const;
+
+private:
+    static void on_error(void* user, RTCError code, const char* message);
+    RTCDevice device_ = nullptr;
+    std::string last_error_;
+};
+
+/// Ray counts by kind, per thread, summed when a stage ends (integer sums: order-free).
+struct RayCounts {
+    uint64_t shadow = 0;    // rtcOccluded1 towards lights
+    uint64_t bounce = 0;    // rtcIntersect1 of indirect paths (and camera rays)
+    uint64_t probe = 0;     // rtcIntersect1 that look for geometry around a sample point
+    RayCounts& operator+=(const RayCounts& o) {
+        shadow += o.shadow;
+        bounce += o.bounce;
+        probe += o.probe;
+        return *this;
+    }
+    uint64_t total() const { return shadow + bounce + probe; }
+};
+
+/// What a ray found.
+struct SurfaceHit {
+    bool found = false;
+    float distance = 0.0f;        // metres along the unit ray direction
+    uint32_t triangle = 0;        // into BakeScene triangles
+    glm::vec3 position{0.0f};     // metres, world
+    glm::vec3 normal{0.0f};       // unit geometric normal of the front face (winding order)
+    bool back_face = false;       // the ray arrived on the side opposite `normal`
+};
+
+/// The static world in Embree, plus the per-triangle data hits are shaded with.
+class BakeScene {
+public:
+    /// Builds from the static triangles of a level (world space). `materials` are the level's.
+    BakeScene(const EmbreeDevice& device, const world::StaticGeometry& geometry,
+              std::vector<world::Material> materials);
+    /// Builds from a compiled level's static vertices and indices.
+    BakeScene(const EmbreeDevice& device, const world::CompiledLevel& level);
+    ~BakeScene();
+    BakeScene(const BakeScene&) = delete;
+    BakeScene& operator=(const BakeScene&) = delete;
+
+    /// Closest hit along origin + t dir, t in (0, max_distance]. `dir` is unit.
+    SurfaceHit intersect(const glm::vec3& origin, const glm::vec3& dir, float max_distance,
+                         uint64_t& counter) const;
+    /// True when anything lies along origin + t dir, t in (0, max_distance].
+    bool occluded(const glm::vec3& origin, const glm::vec3& dir, float max_distance,
+                  uint64_t& counter) const;
+
+    /// Self-intersection offset (metres): a ray leaving a surface starts this far along the
+    /// surface normal. kSelfIntersectionScale times the scene's coordinate magnitude, i.e. a
+    /// few hundred float ulps of the largest coordinate (see the .cpp for the derivation).
+    float ray_offset() const { return ray_offset_; }
+    /// Largest distance any ray needs to travel (the bounding box diagonal plus margin).
+    float scene_diameter() const { return diameter_; }
+    glm::vec3 bounds_min() const { return bounds_min_; }
+    glm::vec3 bounds_max() const { return bounds_max_; }
+
+    const world::Material& material_of(uint32_t triangle) const;
+    uint32_t triangle_count() const { return static_cast<uint32_t>(triangle_material_.size()); }
+    size_t memory_bytes() const;
+
+private:
+    void build(const EmbreeDevice& device);
+
+    RTCScene scene_ = nullptr;  // owned
+    std::vector<glm::vec3> positions_;
+    std::vector<uint32_t> indices_;             // 3 per triangle
+    std::vector<glm::vec3> triangle_normal_;    // unit, from the winding
+    std::vector<uint32_t> triangle_material_;   // into materials_
+    std::vector<world::Material> materials_;
+    world::Material default_material_;
+    glm::vec3 bounds_min_{0.0f}, bounds_max_{0.0f};
+    float ray_offset_ = 1e-4f;
+    float diameter_ = 1.0f;
+};
+
+}  // namespace onelight::bake

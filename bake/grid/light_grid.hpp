@@ -1,0 +1,56 @@
+// The light grid: a 3D grid over the level (or its authored bounds) for dynamic objects. Each
+// cell holds the secondary irradiance as an ambient cube, the dominant primary at its centre
+// and that primary's visibility; cells whose centre is inside solid geometry are flagged.
+#pragma once
+
+#include <cstdint>
+
+#include "bake/embree/bake_scene.hpp"
+#include "bake/lighting/lights.hpp"
+#include "bake/lighting/radiance.hpp"
+#include "bake/report/progress.hpp"
+#include "world/baked_lighting.hpp"
+
+namespace onelight::bake {
+
+struct GridSettings {
+    float cell_size = 1.0f;               // metres, requested
+    uint32_t max_cells_per_axis = 64;     // cells grow past cell_size to stay under this
+    uint32_t samples = 256;               // sphere directions per cell
+    uint32_t shadow_samples = 16;         // per light per cell
+    float inside_fraction = 0.5f;         // back-face hits above this fraction: inside solid
+    TransportSettings transport;
+};
+
+/// Origin, cell size and dimensions (cells empty) over the authored grid bounds when the
+/// level has them, else over the static geometry's bounds.
+world::LightGrid layout_light_grid(const world::CompiledLevel& level, const GridSettings& settings);
+
+struct GridStats {
+    RayCounts rays;
+    uint64_t cells_baked = 0;
+    uint64_t cells_inside = 0;
+};
+
+/// Bakes cells [cell_begin, cell_end) of `grid` (cells already sized). Each cell's random
+/// sequence is seeded from its index.
+/*
+   Ambient cube face a (unit axis):  E_a = int_{S^2} L(w) max(0, a . w) dw
+   with w uniform on the sphere (pdf 1 / (4 pi)) on a rotated Hammersley set:
+     E_a ~ (4 pi / N) sum_i L(w_i) max(0, a . w_i)
+   plus the non-dominant lights' direct part, analytic with stratified visibility:
+     E_a += sum_{l != dominant} E_l V_l max(0, a . w_l)
+                 +----------------------------------------------------------------+
+                 | E_a ~ (4 pi / N) sum_i L(w_i) (a.w_i)+ + sum_l E_l V_l (a.w_l)+ |
+                 +----------------------------------------------------------------+
+   Dominant primary: argmax over primaries of Y(E_l) V_l (no cosine: an object's orientation
+   is unknown), lowest index on ties.
+*/
+GridStats bake_light_grid(const BakeScene& scene, const BakeLights& lights,
+                          const GridSettings& settings, uint64_t cell_begin, uint64_t cell_end,
+                          world::LightGrid& grid, Progress* progress);
+
+/// Irradiance (lux) on a surface of normal n from an ambient cube: n.x^2 C[+-x] + ...
+glm::vec3 ambient_cube_irradiance(const world::LightGridCell& cell, const glm::vec3& n);
+
+}  // namespace onelight::bake

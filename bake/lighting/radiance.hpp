@@ -1,0 +1,68 @@
+// Radiance along a ray through the static world: the one light-transport routine shared by
+// the lightmap baker, the light grid and the reference path tracer. Surfaces shade through the
+// shared BRDF of shaders/brdf.glsl (brdfDots, specularLobe, Fd_Lambert), with the runtime's
+// default model choice (kShadingNdf, kShadingVis, kShadingFresnel below).
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "bake/embree/bake_scene.hpp"
+#include "bake/lighting/lights.hpp"
+#include "bake/lighting/sampling.hpp"
+
+namespace onelight::bake {
+
+/// The one place the bake picks its BRDF pieces (brdf.glsl NDF_*, VIS_*, FRESNEL_*): GGX,
+/// height-correlated Smith, Schlick (WWII's model, DESIGN.md "BRDF lego pieces").
+inline constexpr int kShadingNdf = 2;      // NDF_GGX
+inline constexpr int kShadingVis = 3;      // VIS_SMITH_CORRELATED
+inline constexpr int kShadingFresnel = 1;  // FRESNEL_SCHLICK
+
+struct TransportSettings {
+    uint32_t max_depth = 64;  // surface hits per path; Russian roulette ends most far earlier
+    uint32_t roulette_depth = 2;  // hits after which Russian roulette starts
+};
+
+/// Radiance (cd/m^2, RGB) a surface point sends towards `to_viewer` by direct light: every
+/// light with one shadow ray towards a random point of it. `normal` faces the viewer side.
+/*
+   Lo_direct(v) = sum_l int_{light l} f(v, w) L_l cos dw
+               ~ sum_l f(v, w_l) E_l NoL_l vis(w_l),  w_l uniform on l's apparent disc
+   with f NoL = albedo Fd_Lambert NoL + specularLobe  (brdf.glsl) and E_l the irradiance at
+   normal incidence (lights.hpp): exact for a small light, unbiased in the visibility.
+                 +----------------------------------------------------------------+
+                 | Lo_direct ~ sum_l (albedo NoL / pi + specularLobe) E_l vis(w_l) |
+                 +----------------------------------------------------------------+
+*/
+glm::vec3 direct_radiance(const BakeScene& scene, const BakeLights& lights,
+                          const world::Material& material, const glm::vec3& position,
+                          const glm::vec3& normal, const glm::vec3& to_viewer, Rng& rng,
+                          RayCounts& rays);
+
+/// What trace_radiance saw first (for inside-geometry tests).
+struct FirstHit {
+    bool found = false;
+    bool back_face = false;
+    float distance = 0.0f;
+};
+
+/// Radiance arriving at `origin` from direction `-dir` (i.e. found by looking along `dir`):
+/// a path traced with next-event estimation at every hit and cosine-sampled continuation.
+/*
+   L(x, -w) = Lo(y, -w),  y the first hit along w, or the sky radiance when there is none.
+   Lo(y, v) = Lo_direct(y, v) + int f(v, w') L(y, -w') cos' dw'
+   Continuation: w' cosine-distributed (pdf cos' / pi), so the path throughput multiplies by
+     f cos' / pdf = pi f = albedo + pi specularLobe / NoL
+   and by 1 / q when Russian roulette survives with probability q (unbiased).
+     +------------------------------------------------------------------------------+
+     | L ~ sum_k T_k Lo_direct(y_k),  T_{k+1} = T_k (albedo + pi specularLobe / NoL) / q |
+     +------------------------------------------------------------------------------+
+   Back faces of single-sided materials absorb (they are only seen from inside solids).
+*/
+glm::vec3 trace_radiance(const BakeScene& scene, const BakeLights& lights,
+                         const TransportSettings& settings, glm::vec3 origin, glm::vec3 dir,
+                         Rng& rng, RayCounts& rays, FirstHit* first_hit = nullptr);
+
+}  // namespace onelight::bake

@@ -1,0 +1,249 @@
+#include "bake/lightmap/lightmap_bake.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "bake/lighting/sampling.hpp"
+
+namespace onelight::bake {
+namespace {
+
+/// The random stream of texel (atlas, x, y): `pass` separates streams of later passes.
+constexpr uint32_t kLightmapPass = 1;
+
+const BakeLight* own_primary(const BakeLights& lights, uint32_t level_index) {
+    for (const BakeLight& l : lights.lights)
+        if (l.level_index == level_index) return &l;
+    return nullptr;
+}
+
+/// Moves a sample point out of geometry it lies in: short rays along the surface over the
+/// texel's footprint; a back face among them means the point is inside a solid (e.g. a floor
+/// texel under a wall standing on it), so the point moves just past that back face.
+glm::vec3 move_out_of_geometry(const BakeScene& scene, const glm::vec3& origin,
+                               const glm::vec3& normal, float texel_size, RayCounts& rays,
+                               bool& moved) {
+    const Frame frame = frame_around(normal);
+    const float reach = 0.7072f * texel_size + 2.0f * scene.ray_offset();
+    const glm::vec3 directions[4] = {frame.t, -frame.t, frame.b, -frame.b};
+    float nearest = reach;
+    glm::vec3 result = origin;
+    moved = false;
+    for (const glm::vec3& d : directions) {
+        const SurfaceHit hit = scene.intersect(origin, d, reach, rays.probe);
+        if (hit.found && hit.back_face && hit.distance < nearest) {
+            nearest = hit.distance;
+            result = origin + d * (hit.distance + 2.0f * scene.ray_offset());
+            moved = true;
+        }
+    }
+    return result;
+}
+
+/*
+   Secondary irradiance at a texel (point x, normal n), own primary P:
+     E_sec = sum_{l != P} E_l (n . w_l) V_l  +  int_{H(n)} L_ind(x, w) (n . w) dw
+   Direct part: E_l and w_l analytic (lights.hpp), V_l by stratified shadow rays.
+   Indirect part: w_i cosine-distributed on a rotated Hammersley set (pdf (n . w) / pi), so
+     int L (n . w) dw ~ (1/N) sum_i L(w_i) (n . w_i) / pdf(w_i) = (pi / N) sum_i L(w_i)
+   where L(w_i) = trace_radiance (every bounce of every light, and the sky on escape).
+   Direction: d = 1/2 sum (Y(E_k) w_k) / sum Y(E_k) over the same terms (luminance-weighted).
+                  +--------------------------------------------------------------------+
+                  | E_sec ~ sum_{l != P} E_l (n.w_l) V_l + (pi / N) sum_i L(w_i)        |
+                  +--------------------------------------------------------------------+
+   Its estimated noise: the sample standard deviation of pi Y(L(w_i)) over sqrt(N).
+*/
+struct TexelResult {
+    world::LightmapTexel texel;
+    uint8_t mask = 0;
+    double noise = 0.0, value = 0.0;  // luminance standard error and luminance
+    bool moved = false;
+};
+
+TexelResult bake_texel(const BakeScene& scene, const BakeLights& lights,
+                       const world::CompiledLevel& level, const TexelSample& sample,
+                       const LightmapSettings& settings, RayCounts& rays) {
+    TexelResult out;
+    Rng rng{seed_from(sample.atlas, sample.x, sample.y, kLightmapPass)};
+    const glm::vec3 n = sample.normal;
+    glm::vec3 origin = sample.position + n * scene.ray_offset();
+    origin = move_out_of_geometry(scene, origin, n, sample.texel_size, rays, out.moved);
+
+    const world::Surface& surface = level.surfaces[sample.surface];
+    const BakeLight* own = own_primary(lights, surface.primary_light);
+    if (own) {
+        const LightIncidence incidence = light_incidence(*own, origin);
+        const float v =
+            light_visibility(scene, *own, incidence, origin, settings.shadow_samples, rng, rays);
+        out.mask = static_cast<uint8_t>(std::lround(v * 255.0f));
+    }
+
+    glm::dvec3 irradiance(0.0), direction_sum(0.0);
+    double luminance_sum = 0.0;
+    for (const BakeLight& light : lights.lights) {
+        if (&light == own) continue;
+        const LightIncidence incidence = light_incidence(light, origin);
+        const float cosine = glm::dot(n, incidence.direction);
+        if (cosine <= 0.0f || incidence.irradiance == glm::vec3(0.0f)) continue;
+        const float v =
+            light_visibility(scene, light, incidence, origin, settings.shadow_samples, rng, rays);
+        const glm::vec3 e = incidence.irradiance * (cosine * v);
+        irradiance += glm::dvec3(e);
+        direction_sum += double(luminance(e)) * glm::dvec3(incidence.direction);
+        luminance_sum += double(luminance(e));
+    }
+
+    const uint32_t count = settings.indirect_samples;
+    if (count > 0) {
+        const Frame frame = frame_around(n);
+        const float s0 = rng.next(), s1 = rng.next();
+        glm::dvec3 indirect(0.0), indirect_direction(0.0);
+        double sum_y = 0.0, sum_y2 = 0.0;
+        for (uint32_t i = 0; i < count; ++i) {
+            const glm::vec3 w = glm::normalize(frame.to_world(
+                sample_cosine_hemisphere(rotated_hammersley(i, count, s0, s1))));
+            const glm::vec3 e = kPi * trace_radiance(scene, lights, settings.transport, origin,
+                                                     w, rng, rays);
+            const double y = luminance(e);
+            indirect += glm::dvec3(e);
+            indirect_direction += y * glm::dvec3(w);
+            sum_y += y;
+            sum_y2 += y * y;
+        }
+        const double inv = 1.0 / count;
+        irradiance += indirect * inv;
+        direction_sum += indirect_direction * inv;
+        luminance_sum += sum_y * inv;
+        const double mean = sum_y * inv;
+        const double variance = std::max(0.0, sum_y2 * inv - mean * mean);
+        out.noise = std::sqrt(variance * inv);
+    }
+    out.value = luminance_sum;
+    world::LightmapTexel& t = out.texel;
+    t.irradiance = glm::max(glm::vec3(irradiance), glm::vec3(0.0f));
+    t.direction = luminance_sum > 0.0 ? glm::vec3(0.5 * direction_sum / luminance_sum)
+                                      : glm::vec3(0.0f);
+    if (glm::length(t.direction) > 0.5f) t.direction *= 0.5f / glm::length(t.direction);
+    t.normal_weight = std::clamp(0.5f + glm::dot(n, t.direction), 0.5f, 1.0f);
+    t.flags = 1u;  // sampled
+    if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z)) t = {};
+    return out;
+}
+
+}  // namespace
+
+LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lights,
+                                   const world::CompiledLevel& level,
+                                   const std::vector<TexelSample>& samples,
+                                   const LightmapSettings& settings, uint64_t texel_begin,
+                                   uint64_t texel_end, world::BakedLighting& baked,
+                                   Progress* progress) {
+    const auto first = std::lower_bound(
+        samples.begin(), samples.end(), texel_begin,
+        [](const TexelSample& s, uint64_t texel) { return s.texel < texel; });
+    const auto last = std::lower_bound(
+        samples.begin(), samples.end(), texel_end,
+        [](const TexelSample& s, uint64_t texel) { return s.texel < texel; });
+    const size_t begin = static_cast<size_t>(first - samples.begin());
+    const size_t end = static_cast<size_t>(last - samples.begin());
+    std::vector<double> noise(end - begin), value(end - begin);
+    std::vector<uint8_t> moved(end - begin);
+    tbb::enumerable_thread_specific<RayCounts> rays;
+    tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 16), [&](const auto& range) {
+        RayCounts& local = rays.local();
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+            const TexelSample& s = samples[i];
+            const TexelResult r = bake_texel(scene, lights, level, s, settings, local);
+            baked.texels[s.texel] = r.texel;
+            baked.shadow_mask[s.texel] = r.mask;
+            noise[i - begin] = r.noise;
+            value[i - begin] = r.value;
+            moved[i - begin] = r.moved ? 1 : 0;
+        }
+        if (progress) progress->advance(range.size());
+    });
+    LightmapStats stats;
+    for (const RayCounts& r : rays) stats.rays += r;
+    stats.texels_baked = end - begin;
+    double noise_sum = 0.0, value_sum = 0.0;
+    for (size_t i = 0; i < noise.size(); ++i) {
+        noise_sum += noise[i];
+        value_sum += value[i];
+        stats.texels_moved += moved[i];
+    }
+    stats.mean_relative_noise = value_sum > 0.0 ? noise_sum / value_sum : 0.0;
+    return stats;
+}
+
+void dilate_lightmaps(const world::CompiledLevel& level, world::BakedLighting& baked) {
+    for (const world::Chart& chart : level.charts) {
+        const world::Atlas& atlas = level.atlases[chart.atlas];
+        const uint64_t base = world::atlas_texel_offset(level, chart.atlas);
+        const auto index = [&](uint32_t x, uint32_t y) {
+            return base + uint64_t(y) * atlas.width + x;
+        };
+        const uint32_t rings = chart.padding + 2;
+        for (uint32_t ring = 0; ring < rings; ++ring) {
+            std::vector<std::pair<uint64_t, world::LightmapTexel>> fills;
+            std::vector<uint8_t> fill_masks;
+            for (uint32_t y = chart.y; y < chart.y + chart.height; ++y) {
+                for (uint32_t x = chart.x; x < chart.x + chart.width; ++x) {
+                    if (baked.texels[index(x, y)].flags != 0) continue;
+                    glm::vec3 irradiance(0.0f), direction(0.0f);
+                    float weight = 0.0f;
+                    uint32_t mask = 0, count = 0;
+                    for (int dy = -1; dy <= 1; ++dy) {
+                        for (int dx = -1; dx <= 1; ++dx) {
+                            const int nx = int(x) + dx, ny = int(y) + dy;
+                            if ((dx == 0 && dy == 0) || nx < int(chart.x) || ny < int(chart.y) ||
+                                nx >= int(chart.x + chart.width) ||
+                                ny >= int(chart.y + chart.height))
+                                continue;
+                            const uint64_t k = index(uint32_t(nx), uint32_t(ny));
+                            const world::LightmapTexel& t = baked.texels[k];
+                            if (t.flags == 0) continue;
+                            irradiance += t.irradiance;
+                            direction += t.direction;
+                            weight += t.normal_weight;
+                            mask += baked.shadow_mask[k];
+                            ++count;
+                        }
+                    }
+                    if (count == 0) continue;
+                    world::LightmapTexel t;
+                    const float inv = 1.0f / static_cast<float>(count);
+                    t.irradiance = irradiance * inv;
+                    t.direction = direction * inv;
+                    t.normal_weight = std::clamp(weight * inv, 0.5f, 1.0f);
+                    t.flags = 2u;  // dilated
+                    fills.emplace_back(index(x, y), t);
+                    fill_masks.push_back(static_cast<uint8_t>((mask + count / 2) / count));
+                }
+            }
+            if (fills.empty()) break;
+            for (size_t i = 0; i < fills.size(); ++i) {
+                baked.texels[fills[i].first] = fills[i].second;
+                baked.shadow_mask[fills[i].first] = fill_masks[i];
+            }
+        }
+    }
+}
+
+glm::vec3 lightmap_total_irradiance(const BakeLights& lights, const world::CompiledLevel& level,
+                                    const world::BakedLighting& baked, const TexelSample& sample) {
+    const world::LightmapTexel& t = baked.texels[sample.texel];
+    glm::vec3 e = t.irradiance;
+    const world::Surface& surface = level.surfaces[sample.surface];
+    if (const BakeLight* own = own_primary(lights, surface.primary_light)) {
+        const LightIncidence incidence = light_incidence(*own, sample.position);
+        const float cosine = std::max(0.0f, glm::dot(sample.normal, incidence.direction));
+        e += incidence.irradiance * cosine *
+             (static_cast<float>(baked.shadow_mask[sample.texel]) / 255.0f);
+    }
+    return e;
+}
+
+}  // namespace onelight::bake

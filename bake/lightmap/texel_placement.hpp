@@ -1,0 +1,34 @@
+// Where each lightmap texel is sampled. Every surface's triangles are rasterised into its
+// atlas in lightmap-texel space (uv1 times the atlas size): a texel whose centre lies in a
+// triangle samples that point; a texel the triangle only touches (its centre within half a
+// texel diagonal) samples the triangle's closest point, nudged inside, so bilinear filtering
+// reads correct values up to every chart edge and seams show no step. Texels no triangle
+// touches are left for dilation. Sample points always lie on their own surface.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "world/compiled_level.hpp"
+
+namespace onelight::bake {
+
+struct TexelSample {
+    uint64_t texel = 0;        // global index (atlases in order, row-major)
+    uint32_t atlas = 0, x = 0, y = 0;
+    uint32_t surface = 0;      // into CompiledLevel::surfaces
+    glm::vec3 position{0.0f};  // metres, world, on the surface
+    glm::vec3 normal{0.0f};    // unit geometric normal of the triangle (winding)
+    float texel_size = 0.0f;   // metres: edge of the texel's footprint on the surface
+    bool centre_inside = false;  // the texel centre lies inside the triangle
+};
+
+/// Samples in increasing texel order, one per touched texel.
+std::vector<TexelSample> place_texels(const world::CompiledLevel& level);
+
+/// Total texel count over every atlas.
+uint64_t total_texels(const world::CompiledLevel& level);
+
+}  // namespace onelight::bake

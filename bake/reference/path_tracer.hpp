@@ -1,0 +1,55 @@
+// The reference path tracer: ground truth for the lab and the tests. Every light at full
+// strength (no primary/secondary split, no shadow masks), shading through the shared BRDF
+// (bake/lighting/radiance.hpp), radiance in cd/m^2 with no exposure and no tonemap.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bake/embree/bake_scene.hpp"
+#include "bake/lighting/lights.hpp"
+#include "bake/lighting/radiance.hpp"
+#include "bake/report/progress.hpp"
+#include "world/compiled_level.hpp"
+
+namespace onelight::bake {
+
+struct ReferenceImage {
+    uint32_t width = 0, height = 0;
+    std::vector<float> rgb;  // cd/m^2, row-major from the top, 3 floats per pixel
+};
+
+/// Renders `camera`'s view with `spp` jittered paths per pixel; pixel (x, y) seeds its own
+/// stream, so the image does not depend on threads.
+/*
+   L(pixel) = (1 / A) int_pixel L(camera, w(s)) ds,  s uniform in the pixel (pdf 1 / A):
+                      +---------------------------------------------+
+                      | L(pixel) ~ (1 / N) sum_i trace_radiance(w_i) |
+                      +---------------------------------------------+
+*/
+ReferenceImage render_reference(const BakeScene& scene, const BakeLights& lights,
+                                const world::Camera& camera, uint32_t width, uint32_t height,
+                                uint32_t spp, const TransportSettings& transport,
+                                Progress* progress, RayCounts& rays);
+
+/// Irradiance (lux, RGB) at a surface point with every light at full strength: the reference
+/// the lightmaps are checked against. An estimator independent of the lightmap's: uniform
+/// hemisphere directions (not cosine-distributed), each light's visibility by its own rays.
+/*
+   E = sum_l E_l (n.w_l)+ V_l + int_H L(w) (n.w) dw,   w uniform on H (pdf 1 / (2 pi)):
+              +------------------------------------------------------------------+
+              | E ~ sum_l E_l (n.w_l)+ V_l + (2 pi / N) sum_i L(w_i) (n.w_i)       |
+              +------------------------------------------------------------------+
+*/
+glm::vec3 reference_irradiance(const BakeScene& scene, const BakeLights& lights,
+                               const glm::vec3& position, const glm::vec3& normal,
+                               uint32_t samples, uint32_t seed,
+                               const TransportSettings& transport, RayCounts& rays);
+
+/// Writes linear RGB float32 EXR through `path.tmp` and a rename; "" on success.
+std::string write_exr(const std::string& path, const ReferenceImage& image);
+
+}  // namespace onelight::bake
