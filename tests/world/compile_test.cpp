@@ -6,6 +6,7 @@
 #include "tests/world/level_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/bsp/bsp_query.hpp"
+#include "world/error.hpp"
 #include "world/package/package_reader.hpp"
 #include "world/package/package_writer.hpp"
 
@@ -71,26 +72,68 @@ TEST(Compile, DegenerateZeroAreaAndDuplicateTrianglesAreDropped) {
 
 TEST(Compile, CoordinatesOfOneHundredKilometres) {
     GltfBuilder gltf;
-    gltf.add_node({{"name", "far"}, {"mesh", gltf.add_mesh(grid_mesh("far", 12, 50.0, 1e5, 1e5, -1e5))}});
+    gltf.add_node(
+        {{"name", "far"}, {"mesh", gltf.add_mesh(grid_mesh("far", 12, 50.0, 1e5, 1e5, -1e5))}});
     const int light = gltf.add_light({{"type", "point"}, {"intensity", 1e6}});
-    gltf.add_node({{"name", "lamp"}, {"translation", {1e5, 1e5 + 10.0, -1e5}},
+    gltf.add_node({{"name", "lamp"},
+                   {"translation", {1e5, 1e5 + 10.0, -1e5}},
                    {"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
     const CompileResult result = compile_file(gltf.write(fresh_folder("far"), "far"));
     EXPECT_EQ(result.stats.triangles, 288u);
     const BspView view = bsp_view(result.level);
-    const RayHit hit = raycast(view, glm::dvec3(1e5 + 0.3, 1e5 + 5.0, -1e5 + 0.7), glm::dvec3(0, -1, 0), 100.0);
+    const RayHit hit =
+        raycast(view, glm::dvec3(1e5 + 0.3, 1e5 + 5.0, -1e5 + 0.7), glm::dvec3(0, -1, 0), 100.0);
     ASSERT_TRUE(hit.hit);
     EXPECT_NEAR(hit.t, 5.0, 1e-2);
     expect_round_trip(result.level);
 }
 
+TEST(Compile, FlatteningAndMirroringTransformsGiveFiniteNormals) {
+    GltfBuilder gltf;
+    const int box = gltf.add_mesh(box_mesh("box", glm::vec3(0.0f), glm::vec3(1.0f), 1, false));
+    gltf.add_node({{"name", "flat"}, {"mesh", box}, {"scale", {1.0, 1.0, 0.0}}});
+    gltf.add_node({{"name", "mirror"},
+                   {"mesh", box},
+                   {"scale", {-1.0, 1.0, 1.0}},
+                   {"translation", {5.0, 0.0, 0.0}}});
+    const CompileResult result = compile_file(gltf.write(fresh_folder("flatten"), "flatten"));
+    for (const Vertex& v : result.level.vertices) ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-4f);
+    // The mirrored box (x in [4, 5]) keeps its normals pointing outwards.
+    for (const Surface& s : result.level.surfaces) {
+        for (uint32_t i = s.first_index; i < s.first_index + s.index_count; ++i) {
+            const Vertex& v = result.level.vertices[result.level.indices[i]];
+            if (v.position.x < 3.0f) continue;  // only the mirrored box
+            const glm::vec3 centre(4.5f, 0.5f, 0.5f);
+            ASSERT_GE(glm::dot(v.normal, v.position - centre), 0.0f);
+        }
+    }
+    expect_round_trip(result.level);
+}
+
+TEST(Compile, DynamicNodeWithZeroScaleIsAnError) {
+    GltfBuilder gltf;
+    const int box = gltf.add_mesh(box_mesh("box", glm::vec3(0.0f), glm::vec3(1.0f), 1, false));
+    gltf.add_node({{"name", "ghost"},
+                   {"mesh", box},
+                   {"scale", {0.0, 0.0, 0.0}},
+                   {"extras", {{"onelight", {{"dynamic", true}}}}}});
+    try {
+        compile_file(gltf.write(fresh_folder("ghost"), "ghost"));
+        FAIL() << "expected a CompileError";
+    } catch (const CompileError& e) {
+        EXPECT_NE(std::string(e.what()).find("ghost"), std::string::npos) << e.what();
+    }
+}
+
 TEST(Compile, GeneratedLevelFeatures) {
     GeneratedLevelOptions options = options_for_triangles(3000);
     options.buildings = 10;
-    const CompileResult result = compile_file(write_generated_level(fresh_folder("features"), "features", options));
+    const CompileResult result =
+        compile_file(write_generated_level(fresh_folder("features"), "features", options));
     const CompiledLevel& level = result.level;
     const Features& f = level.features;
-    EXPECT_EQ(f.material_classes, (1u << uint32_t(MaterialClass::metal)) | (1u << uint32_t(MaterialClass::dielectric)));
+    EXPECT_EQ(f.material_classes,
+              (1u << uint32_t(MaterialClass::metal)) | (1u << uint32_t(MaterialClass::dielectric)));
     EXPECT_EQ(f.effect_omni_count, 1u);
     EXPECT_EQ(f.effect_spot_count, 1u);
     EXPECT_EQ(f.baked_light_count, 1u);

@@ -50,17 +50,27 @@ glm::dmat4 entity_world(const Entity& e) {
     return m;
 }
 
+/// The matrix that carries normals: the cofactor matrix of the linear part (det * inverse
+/// transpose), signed so a mirror keeps the side; defined even when the transform is singular.
+glm::dmat3 normal_matrix_of(const glm::dmat4& m) {
+    const glm::dmat3 a(m);
+    glm::dmat3 cofactor(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]), glm::cross(a[0], a[1]));
+    return glm::determinant(a) < 0.0 ? -cofactor : cofactor;
+}
+
 Vertex transform_vertex(const Vertex& v, const glm::dmat4& m, const glm::dmat3& normal_matrix,
                         float mirror) {
     Vertex out = v;
     out.position = glm::vec3(glm::dvec3(m * glm::dvec4(glm::dvec3(v.position), 1.0)));
     const glm::dvec3 n = normal_matrix * glm::dvec3(v.normal);
     const double n_length = glm::length(n);
-    out.normal = n_length > 0.0 ? glm::vec3(n / n_length) : v.normal;
+    out.normal =
+        n_length > 0.0 && std::isfinite(n_length) ? glm::vec3(n / n_length) : glm::vec3(0, 0, 1);
     const glm::dvec3 t = glm::dmat3(m) * glm::dvec3(v.tangent);
     const double t_length = glm::length(t);
-    out.tangent = glm::vec4(t_length > 0.0 ? glm::vec3(t / t_length) : glm::vec3(v.tangent),
-                            v.tangent.w * mirror);
+    out.tangent = glm::vec4(
+        t_length > 0.0 && std::isfinite(t_length) ? glm::vec3(t / t_length) : glm::vec3(1, 0, 0),
+        v.tangent.w * mirror);
     return out;
 }
 
@@ -79,7 +89,7 @@ SplitLevel split_static_dynamic(const SourceLevel& level) {
         geometry.instance_names.push_back(name);
         if (instance.dynamic) continue;
         const glm::dmat4& m = instance.world_from_local;
-        const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(m)));
+        const glm::dmat3 normal_matrix = normal_matrix_of(m);
         const bool mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
         const uint32_t base = static_cast<uint32_t>(geometry.vertices.size());
         for (const Vertex& v : instance.vertices) {
@@ -133,8 +143,13 @@ SplitLevel split_static_dynamic(const SourceLevel& level) {
         if (entity.dynamic_mesh_count == 0)
             entity.first_dynamic_mesh = static_cast<uint32_t>(out.dynamic_meshes.size());
         ++entity.dynamic_mesh_count;
-        const glm::dmat4 m = glm::inverse(entity_world(entity)) * instance.world_from_local;
-        const glm::dmat3 normal_matrix = glm::transpose(glm::inverse(glm::dmat3(m)));
+        const glm::dmat4 world = entity_world(entity);
+        const double det = glm::determinant(glm::dmat3(world));
+        if (!(std::abs(det) > 1e-30) || !std::isfinite(det))
+            throw CompileError(level.source_path + ": node '" + entity.name +
+                               "': a dynamic node needs an invertible transform (no zero scale)");
+        const glm::dmat4 m = glm::inverse(world) * instance.world_from_local;
+        const glm::dmat3 normal_matrix = normal_matrix_of(m);
         const bool mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
         DynamicMesh mesh;
         mesh.name = instance.node_name + "/" + instance.mesh_name;
@@ -143,9 +158,15 @@ SplitLevel split_static_dynamic(const SourceLevel& level) {
         mesh.vertex_count = static_cast<uint32_t>(instance.vertices.size());
         mesh.first_index = static_cast<uint32_t>(out.dynamic_indices.size());
         mesh.index_count = static_cast<uint32_t>(instance.indices.size());
-        for (const Vertex& v : instance.vertices)
-            out.dynamic_vertices.push_back(
-                transform_vertex(v, m, normal_matrix, mirrored ? -1.0f : 1.0f));
+        for (const Vertex& v : instance.vertices) {
+            const Vertex w = transform_vertex(v, m, normal_matrix, mirrored ? -1.0f : 1.0f);
+            if (!std::isfinite(w.position.x) || !std::isfinite(w.position.y) ||
+                !std::isfinite(w.position.z))
+                throw CompileError(level.source_path + ": mesh '" + instance.mesh_name +
+                                   "' of node '" + instance.node_name +
+                                   "': position is NaN or Inf in its entity's space");
+            out.dynamic_vertices.push_back(w);
+        }
         for (size_t t = 0; t + 2 < instance.indices.size(); t += 3) {
             out.dynamic_indices.push_back(instance.indices[t]);
             out.dynamic_indices.push_back(instance.indices[t + (mirrored ? 2 : 1)]);
