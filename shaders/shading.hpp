@@ -12,6 +12,10 @@ namespace {
 #include "brdf.glsl"
 #include "env_brdf_fit.glsl"
 #include "brdf_pieces.glsl"
+#include "probe.glsl"
+#include "lighting.glsl"
+#include "material.glsl"
+#include "tonemap.glsl"
 #pragma GCC diagnostic pop
 }  // namespace
 }  // namespace onelight::glsl

@@ -188,6 +188,8 @@ void createDevice(Context& ctx, const ContextOptions& options) {
     VkDeviceCreateInfo info{};
 
     info.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+    info.pNext = options.featureChain;
+    info.pEnabledFeatures = &options.features;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
     info.enabledExtensionCount = uint32_t(options.deviceExtensions.size());

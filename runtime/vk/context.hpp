@@ -28,6 +28,9 @@ struct ContextOptions {
     bool validation = validationRequested();      // ONELIGHT_VALIDATION=1
     std::vector<const char*> instanceExtensions;  // in addition to debug utils
     std::vector<const char*> deviceExtensions;
+    VkPhysicalDeviceFeatures features{};  // core features to enable (the device must have them)
+    const void* featureChain = nullptr;   // borrowed: VkPhysicalDevice*Features structs, chained
+                                          // into VkDeviceCreateInfo::pNext (e.g. Vulkan 1.3's)
 };
 
 // One device and one queue. Create with createContext(), destroy with destroyContext() after

@@ -48,4 +48,61 @@ void destroyDescriptorSet(const Context& ctx, DescriptorSet& set) {
     set.set = VK_NULL_HANDLE;
 }
 
+VkDescriptorPool createDescriptorPool(const Context& ctx, uint32_t maxSets,
+                                      std::span<const VkDescriptorPoolSize> sizes) {
+    VkDescriptorPoolCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    info.maxSets = maxSets;
+    info.poolSizeCount = uint32_t(sizes.size());
+    info.pPoolSizes = sizes.data();
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateDescriptorPool(ctx.device, &info, nullptr, &pool));
+    return pool;
+}
+
+VkDescriptorSet allocateDescriptorSet(const Context& ctx, VkDescriptorPool pool,
+                                      VkDescriptorSetLayout layout) {
+    VkDescriptorSetAllocateInfo alloc{};
+    alloc.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+    alloc.descriptorPool = pool;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &layout;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    VK_CHECK(vkAllocateDescriptorSets(ctx.device, &alloc, &set));
+    return set;
+}
+
+void DescriptorWriter::buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer) {
+    pending_.push_back({binding, 0, type, {buffer, 0, VK_WHOLE_SIZE}, {}});
+}
+
+void DescriptorWriter::image(uint32_t binding, VkImageView view, VkSampler sampler,
+                             VkImageLayout layout, uint32_t arrayElement) {
+    pending_.push_back({binding,
+                        arrayElement,
+                        VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                        {},
+                        {sampler, view, layout}});
+}
+
+void DescriptorWriter::update(const Context& ctx) {
+    std::vector<VkWriteDescriptorSet> writes(pending_.size());
+    for (size_t i = 0; i < pending_.size(); ++i) {
+        const Pending& p = pending_[i];
+        VkWriteDescriptorSet& w = writes[i];
+        w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        w.dstSet = set;
+        w.dstBinding = p.binding;
+        w.dstArrayElement = p.arrayElement;
+        w.descriptorCount = 1;
+        w.descriptorType = p.type;
+        if (p.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER)
+            w.pImageInfo = &p.imageInfo;
+        else
+            w.pBufferInfo = &p.bufferInfo;
+    }
+    vkUpdateDescriptorSets(ctx.device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+    pending_.clear();
+}
+
 }  // namespace onelight::vk

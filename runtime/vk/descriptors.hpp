@@ -4,6 +4,7 @@
 #include <vulkan/vulkan.h>
 
 #include <span>
+#include <vector>
 
 #include "vk/buffer.hpp"
 #include "vk/context.hpp"
@@ -27,5 +28,36 @@ void createStorageBufferSet(const Context& ctx, DescriptorSet& set, VkDescriptor
 
 // Destroys the pool and with it the set. Safe on an empty DescriptorSet.
 void destroyDescriptorSet(const Context& ctx, DescriptorSet& set);
+
+// A descriptor pool for `maxSets` sets holding at most `sizes` descriptors. The caller destroys
+// it with vkDestroyDescriptorPool, which frees its sets.
+VkDescriptorPool createDescriptorPool(const Context& ctx, uint32_t maxSets,
+                                      std::span<const VkDescriptorPoolSize> sizes);
+
+// One set of `layout` from `pool` (borrowed by the caller from the pool).
+VkDescriptorSet allocateDescriptorSet(const Context& ctx, VkDescriptorPool pool,
+                                      VkDescriptorSetLayout layout);
+
+// Collects descriptor writes to one set and applies them with update(). Buffer and image infos
+// are stored inside, so the writer must live until update().
+struct DescriptorWriter {
+    VkDescriptorSet set = VK_NULL_HANDLE;  // borrowed
+
+    void buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer);
+    void image(uint32_t binding, VkImageView view, VkSampler sampler,
+               VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+               uint32_t arrayElement = 0);
+    void update(const Context& ctx);
+
+private:
+    struct Pending {
+        uint32_t binding;
+        uint32_t arrayElement;
+        VkDescriptorType type;
+        VkDescriptorBufferInfo bufferInfo;
+        VkDescriptorImageInfo imageInfo;
+    };
+    std::vector<Pending> pending_;
+};
 
 }  // namespace onelight::vk

@@ -1,0 +1,25 @@
+// The command line of `onelight`.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace onelight::game {
+
+struct CommandLine {
+    std::string level;  // .gltf, .glb or .olpak
+    bool headless = false;
+    uint32_t width = 1280, height = 720;
+    std::string camera;   // NAME or x,y,z,yaw,pitch; empty = the level's first or automatic
+    std::string capture;  // out/NAME: writes NAME.png, NAME.exr, NAME.json
+    uint32_t msaa = 2;
+    uint32_t frames = 0;      // window: quit after this many frames (0 = until Esc)
+    bool flashlight = false;  // the spot effect light at the camera
+};
+
+/// Parses argv. On failure returns false with a one-line `error` ("onelight: ..." not included).
+bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& error);
+
+extern const char* const kUsage;
+
+}  // namespace onelight::game

@@ -1,0 +1,115 @@
+#include "level_source.hpp"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace onelight::game {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowerExtension(const fs::path& path) {
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+fs::path bakeExecutable() {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    return ec ? fs::path("onelight-bake") : self.parent_path() / "onelight-bake";
+}
+
+// Runs argv with stdout and stderr captured; returns the exit code (-1 when it did not run).
+int runCaptured(const std::vector<std::string>& argv, std::string& output) {
+    int fds[2];
+    if (pipe(fds) != 0) return -1;
+    const pid_t pid = fork();
+    if (pid < 0) return -1;
+    if (pid == 0) {
+        dup2(fds[1], STDOUT_FILENO);
+        dup2(fds[1], STDERR_FILENO);
+        close(fds[0]);
+        close(fds[1]);
+        std::vector<char*> args;
+        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+        args.push_back(nullptr);
+        execv(args[0], args.data());
+        _exit(127);
+    }
+    close(fds[1]);
+    char buffer[4096];
+    ssize_t n = 0;
+    while ((n = read(fds[0], buffer, sizeof(buffer))) > 0) output.append(buffer, size_t(n));
+    close(fds[0]);
+    int status = 0;
+    if (waitpid(pid, &status, 0) < 0) return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The compiler's error line without its own prefix, or the first line of its output.
+std::string compilerError(const std::string& output) {
+    const std::string prefix = "onelight-bake: error: ";
+    size_t start = 0;
+    std::string first;
+    while (start < output.size()) {
+        size_t end = output.find('\n', start);
+        if (end == std::string::npos) end = output.size();
+        const std::string line = output.substr(start, end - start);
+        if (line.rfind(prefix, 0) == 0) return line.substr(prefix.size());
+        if (first.empty() && !line.empty()) first = line;
+        start = end + 1;
+    }
+    return first;
+}
+
+}  // namespace
+
+bool resolveLevelPackage(const std::string& level, std::string& package, std::string& error) {
+    std::error_code ec;
+    if (!fs::is_regular_file(level, ec)) {
+        error = level + ": no such file; expected a glTF level (.gltf, .glb) or a .olpak package";
+        return false;
+    }
+    const std::string ext = lowerExtension(level);
+    if (ext == ".olpak") {
+        package = level;
+        return true;
+    }
+    if (ext != ".gltf" && ext != ".glb") {
+        error = level + ": unknown kind of file; expected .gltf, .glb or .olpak";
+        return false;
+    }
+    const fs::path compiled = fs::path(level).replace_extension(".olpak");
+    package = compiled.string();
+    const bool fresh = fs::exists(compiled, ec) &&
+                       fs::last_write_time(compiled, ec) >= fs::last_write_time(level, ec);
+    if (fresh && !ec) return true;
+
+    const fs::path bake = bakeExecutable();
+    if (!fs::exists(bake, ec)) {
+        error = level + ": needs compiling, but " + bake.string() +
+                " is missing; expected "
+                "onelight-bake beside onelight";
+        return false;
+    }
+    std::string output;
+    const int code = runCaptured({bake.string(), "compile", level, "-o", package}, output);
+    if (code != 0) {
+        const std::string why = compilerError(output);
+        error = why.empty()
+                    ? level + ": onelight-bake compile failed (exit " + std::to_string(code) + ")"
+                    : why;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace onelight::game

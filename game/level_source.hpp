@@ -1,0 +1,14 @@
+// From what the user named to a package the runtime can load: a .olpak as it is, or a glTF level
+// compiled by `onelight-bake compile` (a child process, found beside this executable) when the
+// package beside it is missing or older than the glTF.
+#pragma once
+
+#include <string>
+
+namespace onelight::game {
+
+/// The package to load for `level`, compiling it first when needed. On failure returns false
+/// and sets `error` to one line "FILE: what was expected".
+bool resolveLevelPackage(const std::string& level, std::string& package, std::string& error);
+
+}  // namespace onelight::game

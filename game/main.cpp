@@ -1,0 +1,287 @@
+// onelight LEVEL [--headless] [--size WxH] [--camera NAME|x,y,z,yaw,pitch] [--capture out/NAME]
+// Renders a level package (compiling a glTF level first when needed) in a window with a
+// free-fly camera, or one frame headless with its capture files.
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "capture/capture.hpp"
+#include "command_line.hpp"
+#include "free_fly.hpp"
+#include "level_source.hpp"
+#include "platform/window.hpp"
+#include "render/renderer.hpp"
+#include "vk/context.hpp"
+
+namespace {
+
+using namespace onelight;
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "onelight: %s\n", message.c_str());
+    return 1;
+}
+
+// --camera NAME | x,y,z,yaw,pitch; empty: the level's first camera, else a view of the bounds.
+bool resolveCamera(const game::CommandLine& cl, const assets::LoadedLevel& level,
+                   render::Camera& camera, std::string& error) {
+    const world::CompiledLevel& l = level.level;
+    if (cl.camera.empty()) {
+        if (!l.cameras.empty()) {
+            camera = render::cameraFromLevel(l.cameras.front());
+            return true;
+        }
+        const glm::vec3 centre = 0.5f * (l.settings.bounds_min + l.settings.bounds_max);
+        const float radius =
+            std::max(0.5f * glm::length(l.settings.bounds_max - l.settings.bounds_min), 0.5f);
+        camera = render::cameraFromYawPitch(centre + glm::vec3(0.0f, 0.35f, 1.2f) * radius, 0.0f,
+                                            -16.26f);
+        return true;
+    }
+    std::vector<float> numbers;
+    std::stringstream in(cl.camera);
+    std::string part;
+    bool numeric = true;
+    while (std::getline(in, part, ',')) {
+        try {
+            size_t used = 0;
+            numbers.push_back(std::stof(part, &used));
+            numeric = numeric && used == part.size() && std::isfinite(numbers.back());
+        } catch (const std::exception&) {
+            numeric = false;
+        }
+    }
+    if (numeric && numbers.size() == 5) {
+        camera = render::cameraFromYawPitch({numbers[0], numbers[1], numbers[2]}, numbers[3],
+                                            numbers[4]);
+        return true;
+    }
+    std::string names;
+    for (const world::Camera& c : l.cameras) {
+        if (c.name == cl.camera) {
+            camera = render::cameraFromLevel(c);
+            return true;
+        }
+        names += (names.empty() ? "" : ", ") + c.name;
+    }
+    error = level.path + ": no camera '" + cl.camera + "'; expected x,y,z,yaw,pitch or one of: " +
+            (names.empty() ? std::string("(the level has no cameras)") : names);
+    return false;
+}
+
+render::EffectLights effectsFor(const game::CommandLine& cl, const render::Camera& camera) {
+    render::EffectLights fx;
+    if (cl.flashlight) {
+        fx.spotOn = true;
+        fx.spot.position = camera.position;
+        fx.spot.direction = render::forwardOf(camera);
+        fx.spot.intensity = 300.0f;
+        fx.spot.range = 30.0f;
+        fx.spot.innerCone = glm::radians(15.0f);
+        fx.spot.outerCone = glm::radians(25.0f);
+    }
+    return fx;
+}
+
+nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& level,
+                       const render::Renderer& renderer, const render::Camera& camera,
+                       const render::FrameStats& stats, const char* backend) {
+    const render::RendererInfo& info = render::rendererInfo(renderer);
+    const glm::vec3 f = render::forwardOf(camera);
+    nlohmann::json j;
+    j["level"] = level.path;
+    j["backend"] = backend;
+    j["device"] = info.deviceName;
+    j["size"] = {render::capturedFrame(renderer).width, render::capturedFrame(renderer).height};
+    j["camera"] = {{"argument", cl.camera},
+                   {"position", {camera.position.x, camera.position.y, camera.position.z}},
+                   {"rotation_xyzw",
+                    {camera.rotation.x, camera.rotation.y, camera.rotation.z, camera.rotation.w}},
+                   {"forward", {f.x, f.y, f.z}},
+                   {"yfov", camera.yfov},
+                   {"ev100", stats.ev100},
+                   {"exposure", stats.exposure}};
+    j["msaa"] = {{"requested", info.msaaRequested}, {"in_use", info.msaaInUse}};
+    j["timings_ms"] = {{"cpu", stats.cpuMs},
+                       {"gpu", stats.gpuMs},
+                       {"gpu_shadows", stats.gpuShadowMs},
+                       {"gpu_forward", stats.gpuForwardMs},
+                       {"gpu_tonemap", stats.gpuTonemapMs},
+                       {"gpu_timestamps", stats.gpuTimestamps}};
+    j["frame"] = {{"surfaces_drawn", stats.surfacesDrawn},
+                  {"surfaces_culled", stats.surfacesCulled},
+                  {"dynamic_meshes_drawn", stats.dynamicMeshesDrawn},
+                  {"shadow_views_rendered", stats.shadowViewsRendered},
+                  {"triangles", stats.trianglesDrawn}};
+    j["permutations"] = info.permutations;
+    j["placeholder_ambient_lux"] = info.ambientLux;
+    return j;
+}
+
+bool writeCapture(const std::string& base, const render::CapturedFrame& frame,
+                  const nlohmann::json& json, std::string& error) {
+    std::error_code ec;
+    const std::filesystem::path parent = std::filesystem::path(base).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+    return capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8, error) &&
+           capture::writeExr(base + ".exr", frame.width, frame.height, frame.linearRgba, error) &&
+           capture::writeJson(base + ".json", json, error);
+}
+
+int runHeadless(const game::CommandLine& cl, const assets::LoadedLevel& level,
+                render::Camera camera) {
+    render::RenderDeviceFeatures features;
+    vk::Context ctx;
+    vk::createContext(ctx, render::renderContextOptions(features, {}));
+    render::Renderer renderer;
+    int code = 0;
+    try {
+        render::RendererOptions options;
+        options.width = cl.width;
+        options.height = cl.height;
+        options.requestedMsaa = cl.msaa;
+        render::createRenderer(renderer, ctx, level, options);
+        render::FrameInputs inputs;
+        inputs.camera = camera;
+        inputs.effects = effectsFor(cl, camera);
+        render::FrameOutput output;
+        output.readback = true;
+        const render::FrameStats stats = render::drawFrame(renderer, inputs, output);
+        const render::RendererInfo& info = render::rendererInfo(renderer);
+        std::printf(
+            "onelight: %ux%u, MSAA %ux (requested %ux), %.2f ms CPU, %.2f ms GPU, %u surfaces\n",
+            cl.width, cl.height, info.msaaInUse, info.msaaRequested, stats.cpuMs, stats.gpuMs,
+            stats.surfacesDrawn);
+        if (!cl.capture.empty()) {
+            std::string error;
+            if (!writeCapture(cl.capture, render::capturedFrame(renderer),
+                              sidecar(cl, level, renderer, camera, stats, "headless"), error))
+                code = fail(error);
+        }
+    } catch (...) {
+        render::destroyRenderer(renderer);
+        vk::destroyContext(ctx);
+        throw;
+    }
+    render::destroyRenderer(renderer);
+    vk::destroyContext(ctx);
+    if (ctx.validationCounts.errors.load() > 0)
+        code =
+            fail(std::to_string(ctx.validationCounts.errors.load()) + " Vulkan validation errors");
+    return code;
+}
+
+int runWindow(const game::CommandLine& cl, const assets::LoadedLevel& level,
+              render::Camera camera) {
+    platform::Window window;
+    std::string error;
+    if (!platform::openWindow(window, "onelight", cl.width, cl.height, error)) return fail(error);
+    render::RenderDeviceFeatures features;
+    vk::Context ctx;
+    render::Renderer renderer;
+    int code = 0;
+    try {
+        vk::createContext(
+            ctx, render::renderContextOptions(features, platform::windowInstanceExtensions()));
+        platform::createWindowSwapchain(window, ctx);
+        render::RendererOptions options;
+        options.width = window.swapchain.extent.width;
+        options.height = window.swapchain.extent.height;
+        options.requestedMsaa = cl.msaa;
+        render::createRenderer(renderer, ctx, level, options);
+        std::printf("onelight: window %ux%u, MSAA %ux (requested %ux); WASD + mouse, Esc quits\n",
+                    options.width, options.height, render::rendererInfo(renderer).msaaInUse,
+                    cl.msaa);
+        if (cl.frames == 0) glfwSetInputMode(window.window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
+
+        game::FreeFly fly = game::freeFlyFrom(camera);
+        auto last = std::chrono::steady_clock::now();
+        for (uint32_t frame = 0; !glfwWindowShouldClose(window.window); ++frame) {
+            glfwPollEvents();
+            if (glfwGetKey(window.window, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
+            const auto now = std::chrono::steady_clock::now();
+            const float dt = std::chrono::duration<float>(now - last).count();
+            last = now;
+            if (cl.frames == 0) {
+                game::updateFreeFly(fly, window.window, dt);
+                camera = game::cameraOf(fly, camera);
+            }
+            const int image = vk::acquireNextImage(ctx, window.swapchain);
+            if (image < 0) {
+                platform::recreateWindowSwapchain(window, ctx);
+                render::resizeRenderer(renderer, window.swapchain.extent.width,
+                                       window.swapchain.extent.height);
+                continue;
+            }
+            const bool last_frame = cl.frames > 0 && frame + 1 >= cl.frames;
+            render::FrameInputs inputs;
+            inputs.camera = camera;
+            inputs.effects = effectsFor(cl, camera);
+            render::FrameOutput output;
+            output.swapchain = &window.swapchain;
+            output.swapchainImage = uint32_t(image);
+            output.readback = last_frame && !cl.capture.empty();
+            output.readbackSwapchain = output.readback;
+            const render::FrameStats stats = render::drawFrame(renderer, inputs, output);
+            if (!vk::presentImage(ctx, window.swapchain, uint32_t(image))) {
+                platform::recreateWindowSwapchain(window, ctx);
+                render::resizeRenderer(renderer, window.swapchain.extent.width,
+                                       window.swapchain.extent.height);
+            }
+            if (output.readback) {
+                const render::CapturedFrame& captured = render::capturedFrame(renderer);
+                if (!writeCapture(cl.capture, captured,
+                                  sidecar(cl, level, renderer, camera, stats, "window"), error) ||
+                    !capture::writePng(cl.capture + "_window.png", window.swapchain.extent.width,
+                                       window.swapchain.extent.height, captured.swapchainRgba8,
+                                       error))
+                    code = fail(error);
+            }
+            if (last_frame) break;
+        }
+    } catch (...) {
+        render::destroyRenderer(renderer);
+        platform::closeWindow(window, ctx);
+        vk::destroyContext(ctx);
+        throw;
+    }
+    render::destroyRenderer(renderer);
+    platform::closeWindow(window, ctx);
+    vk::destroyContext(ctx);
+    if (ctx.validationCounts.errors.load() > 0)
+        code =
+            fail(std::to_string(ctx.validationCounts.errors.load()) + " Vulkan validation errors");
+    return code;
+}
+
+int run(int argc, char** argv) {
+    game::CommandLine cl;
+    std::string error, package;
+    if (!game::parseCommandLine(argc, argv, cl, error)) return fail(error);
+    if (!game::resolveLevelPackage(cl.level, package, error)) return fail(error);
+    assets::LoadedLevel level;
+    if (!assets::loadLevel(package, level, error)) return fail(error);
+    render::Camera camera;
+    if (!resolveCamera(cl, level, camera, error)) return fail(error);
+    return cl.headless ? runHeadless(cl, level, camera) : runWindow(cl, level, camera);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        return fail("out of memory");
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+}

@@ -1,0 +1,32 @@
+// A level package loaded for the runtime: the compiled level (world/package reader) and its
+// images decoded to RGBA8 (stb_image), from the package's embedded bytes or from files beside it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "world/compiled_level.hpp"
+
+namespace onelight::assets {
+
+/// An image decoded to 8-bit RGBA, rows top to bottom.
+struct DecodedImage {
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba;  // width * height * 4 bytes
+};
+
+struct LoadedLevel {
+    std::string path;                  // the .olpak file
+    world::CompiledLevel level;        // as the package holds it
+    std::vector<DecodedImage> images;  // one per level.images, decoded
+};
+
+/// Reads the package at `path` and decodes every image it refers to. On failure returns false
+/// and sets `error` to one line naming the file and what was expected.
+bool loadLevel(const std::string& path, LoadedLevel& out, std::string& error);
+
+/// Decodes PNG/JPEG bytes. On failure returns false and sets `error` (without a file name).
+bool decodeImage(const uint8_t* bytes, size_t size, DecodedImage& out, std::string& error);
+
+}  // namespace onelight::assets

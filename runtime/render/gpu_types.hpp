@@ -1,0 +1,63 @@
+// The records the renderer shares with its shaders (shaders/frame_interface.glsl), laid out
+// byte for byte: std140 for the uniform block, std430 for the storage buffers.
+#pragma once
+
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace onelight::render {
+
+inline constexpr uint32_t kMaxEffectOmnis = 4;  // MAX_EFFECT_OMNIS
+inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+
+struct FrameUniforms {
+    glm::mat4 viewProj;
+    glm::vec4 cameraPosition;  // xyz metres, w exposure
+    glm::vec4 shadowParams;    // x radius, y band, z 1 / shadow map size, w max probe lod
+    glm::vec4 gridMin;
+    glm::vec4 gridInvExtent;
+    glm::uvec4 counts;  // x effect omnis, y effect spot on
+    glm::vec4 omniPositionRange[kMaxEffectOmnis];
+    glm::vec4 omniColor[kMaxEffectOmnis];
+    glm::vec4 spotPositionRange;
+    glm::vec4 spotDirection;
+    glm::vec4 spotColor;
+    glm::vec4 spotCones;
+};
+static_assert(sizeof(FrameUniforms) == 336);
+
+struct GpuLight {
+    glm::vec4 positionRange;
+    glm::vec4 direction;
+    glm::vec4 color;  // rgb colour * intensity
+    glm::vec4 cones;  // x cos inner, y cos outer
+    glm::uvec4 info;  // x type, y first shadow view or kNoIndex
+};
+static_assert(sizeof(GpuLight) == 80);
+
+struct GpuShadowView {
+    glm::mat4 viewProj;
+    glm::vec4 params;  // x world texel size (per metre when perspective), y 1 = perspective
+};
+static_assert(sizeof(GpuShadowView) == 80);
+
+struct GpuMaterial {
+    glm::vec4 baseColor;
+    glm::vec4 f0Gloss;
+    glm::vec4 emissive;  // a = alpha cutoff
+    glm::vec4 params;    // metallic, roughness, normal scale, occlusion strength
+    glm::uvec4 textures;
+};
+static_assert(sizeof(GpuMaterial) == 80);
+
+struct DrawPush {
+    glm::mat4 model;
+    uint32_t material;
+    uint32_t primaryLight;
+    uint32_t lightmapAtlas;
+    uint32_t pad;
+};
+static_assert(sizeof(DrawPush) == 80);
+
+}  // namespace onelight::render

@@ -1,0 +1,158 @@
+// The forward renderer: one primary light per surface with its runtime shadow, up to four
+// diffuse omni effect lights and one spot effect light, baked secondary lighting, HDR with
+// exposure, a filmic colour LUT and sRGB output. One renderer for both backends: headless
+// (readback of the frame) and a window (the frame is copied into a swapchain image).
+//
+// Use: loadLevel (runtime/assets) -> createContext with renderContextOptions -> createRenderer ->
+// drawFrame per frame -> destroyRenderer -> destroyContext.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "assets/level_assets.hpp"
+#include "render/camera.hpp"
+#include "render/gpu_types.hpp"
+#include "vk/context.hpp"
+#include "vk/swapchain.hpp"
+
+namespace onelight::render {
+
+/// A diffuse-only omni effect light (a gun flash), glTF units.
+struct EffectOmni {
+    glm::vec3 position{0.0f};  // metres
+    glm::vec3 color{1.0f};     // linear
+    float intensity = 0.0f;    // candela
+    float range = 0.0f;        // metres, 0 = unlimited
+};
+
+/// The spot effect light (the flashlight): diffuse and specular, glTF units.
+struct EffectSpot {
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the way light travels
+    glm::vec3 color{1.0f};
+    float intensity = 0.0f;  // candela
+    float range = 0.0f;      // metres, 0 = unlimited
+    float innerCone = 0.2f;  // radians
+    float outerCone = 0.4f;  // radians
+};
+
+struct EffectLights {
+    std::array<EffectOmni, kMaxEffectOmnis> omni{};
+    uint32_t omniCount = 0;  // <= kMaxEffectOmnis
+    bool spotOn = false;
+    EffectSpot spot;
+};
+
+/// Where a dynamic entity is this frame (overrides the entity's placement in the package).
+struct DynamicTransform {
+    uint32_t entity = 0;  // into level.entities
+    glm::mat4 worldFromObject{1.0f};
+};
+
+/// Everything a frame depends on besides the level: the same inputs give the same pixels.
+struct FrameInputs {
+    Camera camera;
+    EffectLights effects;
+    std::span<const DynamicTransform> dynamicTransforms;
+};
+
+/// Where the frame goes besides the renderer's own targets.
+struct FrameOutput {
+    bool readback = false;               // copy the frame to the CPU (capturedFrame)
+    vk::Swapchain* swapchain = nullptr;  // borrowed: copy the frame into this swapchain...
+    uint32_t swapchainImage = 0;         // ...image (acquired), ready to present after
+    bool readbackSwapchain = false;      // copy the swapchain image back too (screenshot)
+};
+
+/// What a frame cost and did.
+struct FrameStats {
+    double cpuMs = 0.0;  // drawFrame on the CPU: culling, recording, submit and wait
+    double gpuMs = 0.0;  // first to last timestamp (0 without timestamps)
+    double gpuShadowMs = 0.0;
+    double gpuForwardMs = 0.0;
+    double gpuTonemapMs = 0.0;
+    bool gpuTimestamps = false;  // the device gave timestamps
+    uint32_t surfacesDrawn = 0, surfacesCulled = 0, dynamicMeshesDrawn = 0;
+    uint32_t shadowViewsRendered = 0;  // static views redrawn this frame
+    uint64_t trianglesDrawn = 0;       // forward pass
+    float ev100 = 0.0f, exposure = 1.0f;
+};
+
+/// The last frame read back.
+struct CapturedFrame {
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba8;           // tonemapped, sRGB, top row first
+    std::vector<float> linearRgba;        // cd/m^2 before exposure, top row first
+    std::vector<uint8_t> swapchainRgba8;  // the swapchain image, when asked
+};
+
+struct RendererOptions {
+    uint32_t width = 1280, height = 720;
+    uint32_t requestedMsaa = 2;           // Black Ops' choice; the nearest supported is used
+    uint32_t shadowMapSize = 1024;        // texels, every shadow layer
+    uint32_t maxShadowLayers = 48;        // sun 1, spot 1, omni 6 layers
+    float shadowRadius = 40.0f;           // metres from the camera with runtime shadows
+    float shadowBand = 8.0f;              // metres over which they blend into the baked ones
+    float placeholderAmbientLux = -1.0f;  // constant ambient until the baker; < 0 = automatic
+    int forceMaterialClass = -1;          // >= 0: every material in this class (benchmarks)
+    bool flatShading = false;             // constant colour, no shadows (benchmark floor)
+};
+
+/// What the renderer settled on.
+struct RendererInfo {
+    std::string deviceName;
+    uint32_t msaaRequested = 0, msaaInUse = 0;
+    std::vector<std::string> permutations;  // the forward pipelines built
+    float autoEv100 = 0.0f;                 // exposure when neither camera nor level gives one
+    float ambientLux = 0.0f;                // the placeholder ambient in use
+    uint32_t shadowLayers = 0;
+};
+
+struct RendererState;  // render/renderer_state.hpp
+
+/// The renderer of one level on one context. Not copyable; destroy with destroyRenderer.
+struct Renderer {
+    std::unique_ptr<RendererState> state;  // owned
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+};
+
+/// Device features the renderer needs (Vulkan 1.3 dynamic rendering), kept alive for
+/// createContext.
+struct RenderDeviceFeatures {
+    VkPhysicalDeviceVulkan13Features vulkan13{};
+};
+
+/// Context options for the renderer: Vulkan 1.3 with dynamic rendering, plus the instance
+/// extensions a window needs (pass glfwGetRequiredInstanceExtensions) and the swapchain.
+vk::ContextOptions renderContextOptions(RenderDeviceFeatures& features,
+                                        const std::vector<const char*>& windowExtensions);
+
+/// Uploads the level and builds the pipelines it needs. Throws std::runtime_error.
+void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLevel& level,
+                    const RendererOptions& options);
+
+/// Waits for the device and destroys everything, in reverse order. Safe on an empty Renderer.
+void destroyRenderer(Renderer& renderer);
+
+const RendererInfo& rendererInfo(const Renderer& renderer);
+
+/// Renders one frame (shadow passes, forward pass, tonemap) and waits for it.
+FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameOutput& output = {});
+
+/// The frame of the last drawFrame with output.readback.
+const CapturedFrame& capturedFrame(const Renderer& renderer);
+
+/// Changes the size of the offscreen targets (a resized window).
+void resizeRenderer(Renderer& renderer, uint32_t width, uint32_t height);
+
+}  // namespace onelight::render

@@ -1,0 +1,367 @@
+// The GPU scene: the level's geometry, materials, textures and lights, the baked-lighting
+// placeholders and the colour LUT, uploaded once.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include <glm/gtc/packing.hpp>
+
+#include "render/renderer_state.hpp"
+#include "shading.hpp"
+
+namespace onelight::render {
+
+namespace {
+
+namespace glsl = onelight::glsl;
+
+void createFilledBuffer(const vk::Context& ctx, vk::Buffer& buffer, const void* data, size_t bytes,
+                        VkBufferUsageFlags usage) {
+    vk::createHostBuffer(ctx, buffer, std::max<size_t>(bytes, 16), usage);
+    if (bytes > 0) std::memcpy(buffer.mapped, data, bytes);
+}
+
+// A 2D (array) or 3D image of RGBA16F texels given as floats.
+void createHalfImage(const vk::Context& ctx, vk::Image& image, vk::ImageDesc desc,
+                     const std::vector<float>& rgba) {
+    desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    std::vector<uint16_t> halves(rgba.size());
+    for (size_t i = 0; i < rgba.size(); ++i) halves[i] = glm::packHalf1x16(rgba[i]);
+    vk::createImage(ctx, image, desc);
+    vk::uploadImage(ctx, image,
+                    {reinterpret_cast<const uint8_t*>(halves.data()), halves.size() * 2});
+}
+
+uint32_t mipCount(uint32_t width, uint32_t height) {
+    uint32_t levels = 1;
+    while ((width | height) >> levels) ++levels;
+    return levels;
+}
+
+VkSamplerAddressMode addressMode(uint16_t wrap) {
+    if (wrap == 33071) return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    if (wrap == 33648) return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
+    return VK_SAMPLER_ADDRESS_MODE_REPEAT;
+}
+
+// glTF/GL filter enums: 9728 NEAREST, 9729 LINEAR, 9984..9987 the mipmap variants.
+vk::SamplerDesc samplerDesc(const world::Sampler& sampler) {
+    vk::SamplerDesc d;
+    d.magFilter = sampler.mag_filter == 9728 ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+    switch (sampler.min_filter) {
+        case 9728:  // NEAREST: no mips
+            d.minFilter = VK_FILTER_NEAREST;
+            d.maxLod = 0.0f;
+            break;
+        case 9729:  // LINEAR: no mips
+            d.maxLod = 0.0f;
+            break;
+        case 9984:  // NEAREST_MIPMAP_NEAREST
+            d.minFilter = VK_FILTER_NEAREST;
+            d.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+            break;
+        case 9985:  // LINEAR_MIPMAP_NEAREST
+            d.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+            break;
+        case 9986:  // NEAREST_MIPMAP_LINEAR
+            d.minFilter = VK_FILTER_NEAREST;
+            break;
+        default:  // 9987 LINEAR_MIPMAP_LINEAR, or unspecified
+            break;
+    }
+    d.addressU = addressMode(sampler.wrap_s);
+    d.addressV = addressMode(sampler.wrap_t);
+    return d;
+}
+
+float luminance(glm::vec3 c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+// The brightest primary's illuminance at the level centre (lux): what automatic exposure and
+// the automatic placeholder ambient are based on.
+float referenceIlluminance(const RendererState& s) {
+    const glm::vec3 centre = 0.5f * (s.boundsMin + s.boundsMax);
+    float best = 0.0f;
+    for (const world::Light& light : s.lights) {
+        if (light.role != world::LightRole::primary) continue;
+        float e = light.intensity * luminance(light.color);
+        if (light.type != world::LightType::directional) {
+            const glm::vec3 d = centre - light.position;
+            e /= std::max(glm::dot(d, d), 1.0f);
+        }
+        best = std::max(best, e);
+    }
+    return best;
+}
+
+uint32_t textureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_t textureIndex,
+                    bool srgb) {
+    const world::Texture& texture = loaded.level.textures.at(textureIndex);
+    if (texture.image >= loaded.images.size()) return kNoIndex;
+    const uint64_t key = (uint64_t(texture.image) << 1) | (srgb ? 1u : 0u);
+    auto found = s.textureIndex.find(key);
+    if (found != s.textureIndex.end()) return found->second;
+    const assets::DecodedImage& decoded = loaded.images[texture.image];
+    vk::ImageDesc desc;
+    desc.format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
+    desc.width = decoded.width;
+    desc.height = decoded.height;
+    desc.mipLevels = mipCount(decoded.width, decoded.height);
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    s.textures.emplace_back();
+    vk::createImage(*s.ctx, s.textures.back(), desc);
+    vk::uploadImage(*s.ctx, s.textures.back(), decoded.rgba);
+    const uint32_t index = uint32_t(s.textures.size() - 1);
+    s.textureIndex[key] = index;
+    return index;
+}
+
+VkSampler samplerFor(RendererState& s, const world::Sampler& sampler) {
+    const uint64_t key = uint64_t(sampler.mag_filter) | uint64_t(sampler.min_filter) << 16 |
+                         uint64_t(sampler.wrap_s) << 32 | uint64_t(sampler.wrap_t) << 48;
+    auto found = s.samplers.find(key);
+    if (found != s.samplers.end()) return found->second;
+    VkSampler created = vk::createSampler(*s.ctx, samplerDesc(sampler));
+    s.samplers[key] = created;
+    return created;
+}
+
+void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
+    // Static vertices, then dynamic ones; static indices, then dynamic ones.
+    std::vector<world::Vertex> vertices = level.vertices;
+    vertices.insert(vertices.end(), level.dynamic_vertices.begin(), level.dynamic_vertices.end());
+    std::vector<uint32_t> indices = level.indices;
+    indices.insert(indices.end(), level.dynamic_indices.begin(), level.dynamic_indices.end());
+    static_assert(sizeof(world::Vertex) == 56, "vertex layout of forward.vert");
+    createFilledBuffer(*s.ctx, s.vertices, vertices.data(), vertices.size() * sizeof(world::Vertex),
+                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    createFilledBuffer(*s.ctx, s.indices, indices.data(), indices.size() * sizeof(uint32_t),
+                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+
+    for (const world::Surface& surface : level.surfaces) {
+        DrawSurface d;
+        d.firstIndex = surface.first_index;
+        d.indexCount = surface.index_count;
+        d.material = surface.material;
+        d.primaryLight = surface.primary_light;
+        d.atlas = surface.atlas;
+        d.boundsMin = surface.bounds_min;
+        d.boundsMax = surface.bounds_max;
+        s.surfaces.push_back(d);
+    }
+    const uint32_t staticVertices = uint32_t(level.vertices.size());
+    const uint32_t staticIndices = uint32_t(level.indices.size());
+    for (uint32_t e = 0; e < level.entities.size(); ++e) {
+        const world::Entity& entity = level.entities[e];
+        if (!(entity.flags & world::entity_dynamic)) continue;
+        for (uint32_t k = 0; k < entity.dynamic_mesh_count; ++k) {
+            const world::DynamicMesh& mesh = level.dynamic_meshes.at(entity.first_dynamic_mesh + k);
+            if (mesh.index_count == 0) continue;
+            DrawDynamicMesh d;
+            d.entity = e;
+            d.firstIndex = staticIndices + mesh.first_index;
+            d.indexCount = mesh.index_count;
+            d.vertexOffset = int32_t(staticVertices + mesh.first_vertex);
+            d.material = mesh.material;
+            d.boundsMin = glm::vec3(1e30f);
+            d.boundsMax = glm::vec3(-1e30f);
+            for (uint32_t v = 0; v < mesh.vertex_count; ++v) {
+                const glm::vec3 p = level.dynamic_vertices[mesh.first_vertex + v].position;
+                d.boundsMin = glm::min(d.boundsMin, p);
+                d.boundsMax = glm::max(d.boundsMax, p);
+            }
+            s.dynamicMeshes.push_back(d);
+        }
+    }
+}
+
+void uploadLights(RendererState& s) {
+    std::vector<GpuLight> gpu(std::max<size_t>(s.lights.size(), 1));
+    for (size_t i = 0; i < s.lights.size(); ++i) {
+        const world::Light& l = s.lights[i];
+        GpuLight& g = gpu[i];
+        g.positionRange = glm::vec4(l.position, l.range);
+        g.direction = glm::vec4(glm::normalize(l.direction), 0.0f);
+        g.color = glm::vec4(l.color * l.intensity, 0.0f);
+        g.cones = glm::vec4(std::cos(l.inner_cone), std::cos(l.outer_cone), 0.0f, 0.0f);
+        g.info = glm::uvec4(uint32_t(l.type), kNoIndex, 0u, 0u);
+    }
+    createFilledBuffer(*s.ctx, s.lightBuffer, gpu.data(), gpu.size() * sizeof(GpuLight),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
+void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
+    const world::CompiledLevel& level = loaded.level;
+    std::vector<GpuMaterial> gpu(std::max<size_t>(level.materials.size(), 1));
+    for (size_t i = 0; i < level.materials.size(); ++i) {
+        const world::Material& m = level.materials[i];
+        GpuMaterial& g = gpu[i];
+        g.baseColor = m.base_color;
+        g.f0Gloss = glm::vec4(m.specular_color, m.gloss);
+        g.emissive = glm::vec4(m.emissive, m.alpha_cutoff);
+        g.params = glm::vec4(m.metallic, m.roughness, m.normal_scale, m.occlusion_strength);
+        uint32_t bits = 0;
+        const uint32_t slots[5] = {m.base_color_texture, m.metallic_roughness_texture,
+                                   m.normal_texture, m.occlusion_texture, m.emissive_texture};
+        for (uint32_t t = 0; t < 5; ++t)
+            if (slots[t] != world::kNone) bits |= 1u << t;
+        g.textures = glm::uvec4(bits, 0u, 0u, 0u);
+        uint8_t cls = uint8_t(m.material_class);
+        if (s.options.forceMaterialClass >= 0) cls = uint8_t(s.options.forceMaterialClass);
+        s.materialClasses.push_back(cls);
+        s.materialDoubleSided.push_back(m.double_sided ? 1 : 0);
+        s.materialAlphaMask.push_back(m.alpha_mode == world::AlphaMode::mask ? 1 : 0);
+    }
+    if (level.materials.empty()) {
+        gpu[0].baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+        gpu[0].params = glm::vec4(0.0f, 1.0f, 1.0f, 1.0f);
+    }
+    createFilledBuffer(*s.ctx, s.materialBuffer, gpu.data(), gpu.size() * sizeof(GpuMaterial),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
+void createPlaceholders(RendererState& s) {
+    vk::ImageDesc desc;
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    const uint8_t white[4] = {255, 255, 255, 255};
+    const uint8_t flat[4] = {128, 128, 255, 255};
+    vk::createImage(*s.ctx, s.white, desc);
+    vk::uploadImage(*s.ctx, s.white, white);
+    vk::createImage(*s.ctx, s.flatNormal, desc);
+    vk::uploadImage(*s.ctx, s.flatNormal, flat);
+
+    // The baked-lighting interface with neutral content: a constant ambient of ambientLux in
+    // every channel, no baked shadow, a uniform environment (normalised radiance 1 / pi).
+    const float a = s.ambientLux;
+    vk::ImageDesc lm;
+    lm.layers = 3;
+    lm.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    createHalfImage(*s.ctx, s.lightmap, lm,
+                    {a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f});
+    vk::ImageDesc mask;
+    mask.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    createHalfImage(*s.ctx, s.shadowMask, mask, {1.0f, 1.0f, 1.0f, 1.0f});
+    vk::ImageDesc grid;
+    grid.viewType = VK_IMAGE_VIEW_TYPE_3D;
+    for (vk::Image& g : s.grid) createHalfImage(*s.ctx, g, grid, {a, 0.0f, 0.0f, 0.0f});
+    vk::ImageDesc cube;
+    cube.cube = true;
+    cube.layers = 6;
+    std::vector<float> faces;
+    for (int f = 0; f < 6; ++f)
+        for (int c = 0; c < 4; ++c) faces.push_back(c < 3 ? float(glsl::INV_PI) : 1.0f);
+    createHalfImage(*s.ctx, s.probe, cube, faces);
+    s.probeMaxLod = 0.0f;
+}
+
+// The colour LUT: filmic curve and sRGB encoding at the shaper's texel centres.
+void createLut(RendererState& s) {
+    std::vector<float> texels;
+    texels.reserve(size_t(kLutSize) * kLutSize * kLutSize * 4);
+    float curve[kLutSize];
+    for (uint32_t i = 0; i < kLutSize; ++i)
+        curve[i] =
+            glsl::displayValue(glsl::linear_fromLutCoordinate(float(i) / float(kLutSize - 1)));
+    for (uint32_t b = 0; b < kLutSize; ++b)
+        for (uint32_t g = 0; g < kLutSize; ++g)
+            for (uint32_t r = 0; r < kLutSize; ++r) {
+                texels.push_back(curve[r]);
+                texels.push_back(curve[g]);
+                texels.push_back(curve[b]);
+                texels.push_back(1.0f);
+            }
+    vk::ImageDesc desc;
+    desc.width = desc.height = desc.depth = kLutSize;
+    createHalfImage(*s.ctx, s.lut, desc, texels);
+}
+
+}  // namespace
+
+void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
+    const world::CompiledLevel& level = loaded.level;
+    s.settings = level.settings;
+    s.lights = level.lights;
+    s.entities = level.entities;
+    s.boundsMin = level.settings.bounds_min;
+    s.boundsMax = level.settings.bounds_max;
+    for (const world::Entity& e : level.entities) {  // dynamic objects widen the bounds
+        s.boundsMin = glm::min(s.boundsMin, e.position);
+        s.boundsMax = glm::max(s.boundsMax, e.position);
+    }
+    s.dynamicPrimary.assign(level.entities.size(), kNoIndex);
+
+    const float reference = referenceIlluminance(s);
+    s.ambientLux = s.options.placeholderAmbientLux >= 0.0f
+                       ? s.options.placeholderAmbientLux
+                       : (reference > 0.0f ? 0.1f * reference : 1.0f);
+    s.info.ambientLux = s.ambientLux;
+    s.info.autoEv100 = glsl::ev100_fromIlluminance(reference > 0.0f ? reference : s.ambientLux);
+
+    vk::SamplerDesc clamp;
+    clamp.addressU = clamp.addressV = clamp.addressW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    s.linearClamp = vk::createSampler(*s.ctx, clamp);
+    clamp.magFilter = clamp.minFilter = VK_FILTER_NEAREST;
+    clamp.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    s.nearestClamp = vk::createSampler(*s.ctx, clamp);
+
+    uploadGeometry(s, level);
+    uploadLights(s);
+    uploadMaterials(s, loaded);
+    createPlaceholders(s);
+    createLut(s);
+
+    // Material textures: (image, sampler) per slot, placeholders where absent.
+    s.materialTextures.clear();
+    for (const world::Material& m : level.materials) {
+        const uint32_t slots[5] = {m.base_color_texture, m.metallic_roughness_texture,
+                                   m.normal_texture, m.occlusion_texture, m.emissive_texture};
+        MaterialTextures bound;
+        for (uint32_t t = 0; t < 5; ++t) {
+            bound[t] = {t == 2 ? s.flatNormal.view : s.white.view, s.linearClamp};
+            if (slots[t] == world::kNone) continue;
+            const uint32_t image = textureFor(s, loaded, slots[t], t == 0 || t == 4);
+            if (image == kNoIndex) continue;
+            bound[t] = {s.textures[image].view, samplerFor(s, level.textures.at(slots[t]).sampler)};
+        }
+        s.materialTextures.push_back(bound);
+    }
+    if (s.materialTextures.empty()) {
+        MaterialTextures bound;
+        for (uint32_t t = 0; t < 5; ++t)
+            bound[t] = {t == 2 ? s.flatNormal.view : s.white.view, s.linearClamp};
+        s.materialTextures.push_back(bound);
+        s.materialClasses.push_back(
+            uint8_t(s.options.forceMaterialClass >= 0 ? s.options.forceMaterialClass : 3));
+        s.materialDoubleSided.push_back(0);
+        s.materialAlphaMask.push_back(0);
+    }
+}
+
+void destroyScene(RendererState& s) {
+    const vk::Context& ctx = *s.ctx;
+    if (s.nearestClamp) vkDestroySampler(ctx.device, s.nearestClamp, nullptr);
+    if (s.linearClamp) vkDestroySampler(ctx.device, s.linearClamp, nullptr);
+    s.nearestClamp = s.linearClamp = VK_NULL_HANDLE;
+    vk::destroyImage(ctx, s.lut);
+    vk::destroyImage(ctx, s.probe);
+    for (int i = 2; i >= 0; --i) vk::destroyImage(ctx, s.grid[i]);
+    vk::destroyImage(ctx, s.shadowMask);
+    vk::destroyImage(ctx, s.lightmap);
+    vk::destroyImage(ctx, s.flatNormal);
+    vk::destroyImage(ctx, s.white);
+    for (auto& [key, sampler] : s.samplers) vkDestroySampler(ctx.device, sampler, nullptr);
+    s.samplers.clear();
+    for (auto it = s.textures.rbegin(); it != s.textures.rend(); ++it) vk::destroyImage(ctx, *it);
+    s.textures.clear();
+    s.textureIndex.clear();
+    vk::destroyBuffer(ctx, s.materialBuffer);
+    vk::destroyBuffer(ctx, s.lightBuffer);
+    vk::destroyBuffer(ctx, s.indices);
+    vk::destroyBuffer(ctx, s.vertices);
+}
+
+}  // namespace onelight::render

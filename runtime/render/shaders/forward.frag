@@ -1,0 +1,162 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Forward pass: one primary light with its shadow, the effect lights, baked secondary lighting,
+// per pixel, for one material class (specialization constant). All lighting math is shared with
+// C++ (shaders/lighting.glsl, material.glsl, brdf.glsl); this file only fetches and sums.
+#include "frame_interface.glsl"
+#include "lighting.glsl"
+#include "material.glsl"
+
+layout(constant_id = 0) const int MATERIAL_CLASS = MATERIAL_FULL;
+layout(constant_id = 1) const int ALPHA_MASK = 0;    // 1: discard below the cutoff
+layout(constant_id = 2) const int FLAT_SHADING = 0;  // 1: constant colour (benchmark floor)
+
+layout(location = 0) in vec3 inWorldPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inTangent;
+layout(location = 3) in vec2 inUv0;
+layout(location = 4) in vec2 inUv1;
+
+layout(location = 0) out vec4 outColor;
+
+const float HALF_MAX = 65000.0;  // the HDR target is RGBA16F
+
+// Percentage-closer filtering: 3x3 taps of the hardware 2x2 comparison.
+float runtimeShadow(GpuLight light, vec3 p, vec3 n) {
+    uint view = light.info.y;
+    if (view == NO_INDEX) return 1.0;
+    if (light.info.x == LIGHT_POINT) {
+        vec3 d = p - light.positionRange.xyz;
+        vec3 a = abs(d);
+        uint face = a.x >= a.y && a.x >= a.z ? (d.x > 0.0 ? 0u : 1u)
+                  : a.y >= a.z               ? (d.y > 0.0 ? 2u : 3u)
+                                             : (d.z > 0.0 ? 4u : 5u);
+        view += face;
+    }
+    GpuShadowView sv = shadowViews[view];
+    float texelWorld = sv.params.x;
+    if (sv.params.y > 0.5) texelWorld *= length(p - light.positionRange.xyz);
+    vec4 clip = sv.viewProj * vec4(p + n * (1.5 * texelWorld), 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    vec3 ndc = clip.xyz / clip.w;
+    vec2 uv = ndc.xy * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
+    float texel = frame.shadowParams.z;
+    float sum = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x)
+            sum += texture(shadowMaps, vec4(uv + vec2(x, y) * texel, float(view), ndc.z));
+    return sum * (1.0 / 9.0);
+}
+
+vec3 secondaryIrradiance(vec3 p, vec3 n) {
+    vec4 c[3];
+    if (draw.lightmapAtlas != NO_INDEX) {
+        float base = float(draw.lightmapAtlas * 3u);
+        for (int i = 0; i < 3; ++i) c[i] = texture(lightmap, vec3(inUv1, base + float(i)));
+    } else {
+        vec3 g = (p - frame.gridMin.xyz) * frame.gridInvExtent.xyz;
+        for (int i = 0; i < 3; ++i) c[i] = texture(lightGrid[i], g);
+    }
+    return vec3(irradianceLinear(c[0], n), irradianceLinear(c[1], n), irradianceLinear(c[2], n));
+}
+
+void main() {
+    if (FLAT_SHADING == 1) {
+        outColor = vec4(0.18, 0.18, 0.18, 1.0);
+        return;
+    }
+    GpuMaterial m = materials[draw.material];
+    uint textures = m.textures.x;
+
+    vec4 base = m.baseColor;
+    if ((textures & 1u) != 0u) base *= texture(baseColorTexture, inUv0);
+    if (ALPHA_MASK == 1 && base.a < m.emissive.a) discard;
+
+    // Material parameters per texel (shaders/material.glsl), by class.
+    float metallic = m.params.x;
+    float roughness = m.params.y;
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT && (textures & 2u) != 0u) {
+        vec4 mr = texture(metallicRoughnessTexture, inUv0);
+        roughness *= mr.g;
+        metallic *= mr.b;
+    }
+    vec3 albedo = albedo_fromMetallic(base.rgb, metallic);
+    vec3 f0 = MATERIAL_CLASS == MATERIAL_DIELECTRIC ? vec3(m.f0Gloss.x)
+                                                    : specularColor_fromMetallic(base.rgb, metallic);
+    float gloss = gloss_fromRoughness(roughness);
+
+    vec3 p = inWorldPosition;
+    vec3 geometricNormal = normalize(inNormal);
+    if (!gl_FrontFacing) geometricNormal = -geometricNormal;
+    vec3 n = geometricNormal;
+    if ((textures & 4u) != 0u) {
+        vec3 t = inTangent.xyz - geometricNormal * dot(geometricNormal, inTangent.xyz);
+        float tl = length(t);
+        if (tl > 1e-6)
+            n = normal_fromTangentSpace(texture(normalTexture, inUv0).rgb, m.params.z, geometricNormal,
+                                        t / tl, inTangent.w);
+    }
+    vec3 toCamera = frame.cameraPosition.xyz - p;
+    float viewDistance = length(toCamera);
+    vec3 v = toCamera / max(viewDistance, 1e-6);
+
+    vec3 radiance = vec3(0.0);
+
+    // The one primary light, times its shadow.
+    if (draw.primaryLight != NO_INDEX) {
+        GpuLight light = lights[draw.primaryLight];
+        LightSample s = evaluatePunctualLight(int(light.info.x), light.color.rgb, 1.0,
+                                              light.positionRange.w, light.positionRange.xyz,
+                                              light.direction.xyz, light.cones.x, light.cones.y, p);
+        BrdfDots d = brdfDots(n, v, s.l);
+        if (dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0) {
+            float baked = draw.lightmapAtlas != NO_INDEX
+                              ? texture(shadowMask, vec3(inUv1, float(draw.lightmapAtlas))).r
+                              : 1.0;
+            float runtime = viewDistance < frame.shadowParams.x
+                                ? runtimeShadow(light, p, geometricNormal)
+                                : 1.0;
+            float shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
+                                       frame.shadowParams.y);
+            radiance += surfaceReflectance(MATERIAL_CLASS, albedo, f0, gloss, d) * s.illuminance * shadow;
+        }
+    }
+
+    // Effect lights: up to 4 diffuse-only omnis (gun flashes) and the flashlight spot.
+    if (MATERIAL_CLASS != MATERIAL_METAL) {
+        for (uint i = 0u; i < frame.counts.x; ++i) {
+            LightSample s = evaluatePunctualLight(LIGHT_POINT, frame.omniColor[i].rgb, 1.0,
+                                                  frame.omniPositionRange[i].w,
+                                                  frame.omniPositionRange[i].xyz, vec3(0.0, 0.0, -1.0),
+                                                  1.0, 0.0, p);
+            radiance += diffuseReflectance(albedo, brdfDots(n, v, s.l)) * s.illuminance;
+        }
+    }
+    if (frame.counts.y != 0u) {
+        LightSample s = evaluatePunctualLight(LIGHT_SPOT, frame.spotColor.rgb, 1.0, frame.spotPositionRange.w,
+                                              frame.spotPositionRange.xyz, frame.spotDirection.xyz,
+                                              frame.spotCones.x, frame.spotCones.y, p);
+        radiance += surfaceReflectance(MATERIAL_CLASS, albedo, f0, gloss, brdfDots(n, v, s.l)) * s.illuminance;
+    }
+
+    // Baked secondary lighting.
+    vec3 irradiance = secondaryIrradiance(p, n);
+    if ((textures & 8u) != 0u)
+        irradiance *= 1.0 + m.params.w * (texture(occlusionTexture, inUv0).r - 1.0);
+    vec3 probeSample = vec3(0.0);
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT) {
+        vec3 r = reflect(-v, n);
+        probeSample = textureLod(probe, r, (1.0 - gloss) * frame.shadowParams.w).rgb;
+    }
+    float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
+    radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, gloss, NoV, irradiance, probeSample);
+
+    // Pre-exposed output; emissive is exposure-relative (1 = display white before the curve).
+    float exposure = frame.cameraPosition.w;
+    vec3 emissive = m.emissive.rgb;
+    if ((textures & 16u) != 0u) emissive *= texture(emissiveTexture, inUv0).rgb;
+    vec3 color = radiance * exposure + emissive;
+    if (any(isnan(color)) || any(isinf(color))) color = vec3(0.0);
+    outColor = vec4(min(color, vec3(HALF_MAX)), 1.0);
+}

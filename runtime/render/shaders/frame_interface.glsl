@@ -1,0 +1,76 @@
+// The renderer's GPU interface: descriptor sets, push constants and records, as the C++ side
+// (runtime/render/gpu_types.hpp) lays them out. Included by the entry points only.
+#ifndef ONELIGHT_FRAME_INTERFACE_GLSL
+#define ONELIGHT_FRAME_INTERFACE_GLSL
+
+#define NO_INDEX 0xFFFFFFFFu
+#define MAX_EFFECT_OMNIS 4
+
+// Set 0, binding 0: per-frame values (FrameUniforms, std140).
+layout(set = 0, binding = 0, std140) uniform FrameUniforms {
+    mat4 viewProj;
+    vec4 cameraPosition;  // xyz metres, w = exposure (pre-exposure of the HDR target)
+    vec4 shadowParams;    // x runtime-shadow radius, y blend band (metres), z 1 / map size, w max probe lod
+    vec4 gridMin;         // light grid: xyz world min
+    vec4 gridInvExtent;   // xyz 1 / (max - min)
+    uvec4 counts;         // x effect omnis in use, y effect spot on (0/1)
+    vec4 omniPositionRange[MAX_EFFECT_OMNIS];  // xyz metres, w range (0 unlimited)
+    vec4 omniColor[MAX_EFFECT_OMNIS];          // rgb colour * intensity (candela)
+    vec4 spotPositionRange;
+    vec4 spotDirection;  // xyz unit, the way light travels
+    vec4 spotColor;      // rgb colour * intensity (candela)
+    vec4 spotCones;      // x cos inner, y cos outer
+} frame;
+
+// A level light (GpuLight, std430).
+struct GpuLight {
+    vec4 positionRange;   // xyz metres, w range
+    vec4 direction;       // xyz unit, the way light travels
+    vec4 color;           // rgb colour * intensity (lux or candela)
+    vec4 cones;           // x cos inner, y cos outer
+    uvec4 info;           // x type, y first shadow view or NO_INDEX
+};
+layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
+
+// One shadow-map view (GpuShadowView, std430): layer i of the shadow array.
+struct GpuShadowView {
+    mat4 viewProj;
+    vec4 params;  // x world texel size (ortho) or per metre of distance (perspective), y 1 = perspective
+};
+layout(set = 0, binding = 2, std430) readonly buffer ShadowViews { GpuShadowView shadowViews[]; };
+
+layout(set = 0, binding = 3) uniform sampler2DArrayShadow shadowMaps;
+
+// Baked lighting (the baker fills these; neutral placeholders until then).
+layout(set = 0, binding = 4) uniform sampler2DArray lightmap;    // layer 3 * atlas + channel: (c0, cx, cy, cz)
+layout(set = 0, binding = 5) uniform sampler2DArray shadowMask;  // layer atlas: r = primary visibility
+layout(set = 0, binding = 6) uniform sampler3D lightGrid[3];     // per channel: (c0, cx, cy, cz)
+layout(set = 0, binding = 7) uniform samplerCube probe;          // normalised radiance
+
+// A material (GpuMaterial, std430).
+struct GpuMaterial {
+    vec4 baseColor;  // linear RGBA factor
+    vec4 f0Gloss;    // rgb specular colour factor, a gloss factor
+    vec4 emissive;   // rgb emissive factor (exposure-relative), a alpha cutoff
+    vec4 params;     // x metallic, y roughness, z normal scale, w occlusion strength
+    uvec4 textures;  // x bit mask: 1 base, 2 metallic-roughness, 4 normal, 8 occlusion, 16 emissive
+};
+layout(set = 0, binding = 8, std430) readonly buffer Materials { GpuMaterial materials[]; };
+
+// Set 1: the material's textures (placeholders where it has none).
+layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;
+layout(set = 1, binding = 1) uniform sampler2D metallicRoughnessTexture;
+layout(set = 1, binding = 2) uniform sampler2D normalTexture;
+layout(set = 1, binding = 3) uniform sampler2D occlusionTexture;
+layout(set = 1, binding = 4) uniform sampler2D emissiveTexture;
+
+// Per draw (DrawPush).
+layout(push_constant) uniform DrawPush {
+    mat4 model;            // world from object (identity for static surfaces)
+    uint material;         // into materials
+    uint primaryLight;     // into lights or NO_INDEX
+    uint lightmapAtlas;    // atlas of a static surface, NO_INDEX for a dynamic object (grid)
+    uint pad;
+} draw;
+
+#endif

@@ -1,0 +1,342 @@
+// Runtime shadow maps of the primary lights: the sun's orthographic map fitted around the camera,
+// a spot's perspective map, an omni's six faces. Static casters are rendered once into
+// staticShadows and cached (the sun's again when the camera leaves its cell); with dynamic
+// objects in the level, each frame copies the static layers and draws only the dynamic casters.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/renderer_state.hpp"
+#include "vk/commands.hpp"
+#include "vk/vk_check.hpp"
+
+namespace onelight::render {
+
+namespace {
+
+constexpr float kSunExtentScale = 1.25f;    // the sun map's half size over the shadow radius
+constexpr float kSunCellsPerExtent = 4.0f;  // the camera may move extent / 4 before a refit
+
+uint32_t layersFor(world::LightType type) {
+    return type == world::LightType::point ? 6u : 1u;
+}
+
+float levelDiagonal(const RendererState& s) {
+    return std::max(glm::length(s.boundsMax - s.boundsMin), 1.0f);
+}
+
+glm::vec3 anyPerpendicular(glm::vec3 d) {
+    return std::fabs(d.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
+}
+
+void fitSun(RendererState& s, ShadowSlot& slot, const Camera& camera) {
+    const world::Light& light = s.lights[slot.light];
+    const glm::vec3 dir = glm::normalize(light.direction);
+    const glm::vec3 right = glm::normalize(glm::cross(dir, anyPerpendicular(dir)));
+    const glm::vec3 up = glm::cross(right, dir);
+    const float extent = s.options.shadowRadius * kSunExtentScale;
+    const float step = extent / kSunCellsPerExtent;  // a whole number of texels
+    const glm::vec2 cell(std::floor(glm::dot(camera.position, right) / step + 0.5f),
+                         std::floor(glm::dot(camera.position, up) / step + 0.5f));
+    if (slot.staticValid && cell == slot.sunCell) return;
+    slot.sunCell = cell;
+    slot.staticValid = false;
+
+    const glm::vec3 boundsCentre = 0.5f * (s.boundsMin + s.boundsMax);
+    const float depth = 0.5f * levelDiagonal(s) + 1.0f;
+    const glm::vec3 centre =
+        right * (cell.x * step) + up * (cell.y * step) + dir * glm::dot(boundsCentre, dir);
+    const glm::mat4 view = glm::lookAtRH(centre - dir * depth, centre, up);
+    const glm::mat4 proj = glm::orthoRH_ZO(-extent, extent, -extent, extent, 0.0f, 2.0f * depth);
+    ShadowView& v = s.views[slot.firstView];
+    v.viewProj = proj * view;
+    v.params = glm::vec4(2.0f * extent / float(s.options.shadowMapSize), 0.0f, 0.0f, 0.0f);
+}
+
+void fitSpotOrOmni(RendererState& s, ShadowSlot& slot) {
+    const world::Light& light = s.lights[slot.light];
+    const float zfar = light.range > 0.0f ? light.range : levelDiagonal(s) * 2.0f;
+    const float znear = std::clamp(zfar * 1e-4f, 0.01f, 0.1f);
+    const float size = float(s.options.shadowMapSize);
+    if (light.type == world::LightType::spot) {
+        const glm::vec3 dir = glm::normalize(light.direction);
+        const float fov = std::min(2.0f * light.outer_cone + 0.1f, glm::radians(170.0f));
+        const glm::mat4 view =
+            glm::lookAtRH(light.position, light.position + dir, anyPerpendicular(dir));
+        ShadowView& v = s.views[slot.firstView];
+        v.viewProj = glm::perspectiveRH_ZO(fov, 1.0f, znear, zfar) * view;
+        v.params = glm::vec4(2.0f * std::tan(0.5f * fov) / size, 1.0f, 0.0f, 0.0f);
+        return;
+    }
+    // Omni: faces +X, -X, +Y, -Y, +Z, -Z (forward.frag picks them by the major axis), each a
+    // little wider than 90 degrees so that the filter taps at a face's border stay inside it.
+    const float tanHalf = 1.0f + 3.0f / size;
+    const float fov = 2.0f * std::atan(tanHalf);
+    const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (uint32_t f = 0; f < 6; ++f) {
+        const glm::vec3 up = std::fabs(dirs[f].y) > 0.5f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+        const glm::mat4 view = glm::lookAtRH(light.position, light.position + dirs[f], up);
+        ShadowView& v = s.views[slot.firstView + f];
+        v.viewProj = glm::perspectiveRH_ZO(fov, 1.0f, znear, zfar) * view;
+        v.params = glm::vec4(2.0f * tanHalf / size, 1.0f, 0.0f, 0.0f);
+    }
+}
+
+void beginDepthRendering(VkCommandBuffer cmd, VkImageView view, uint32_t size, bool clear) {
+    VkRenderingAttachmentInfo depth{};
+    depth.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+    depth.imageView = view;
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    depth.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
+    info.renderArea = {{0, 0}, {size, size}};
+    info.layerCount = 1;
+    info.pDepthAttachment = &depth;
+    vkCmdBeginRendering(cmd, &info);
+    const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {size, size}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdSetDepthBias(cmd, 1.25f, 0.0f, 2.0f);
+}
+
+void drawStaticCasters(RendererState& s, VkCommandBuffer cmd, const ShadowView& view) {
+    const Frustum frustum = frustumOf(view.viewProj);
+    vkCmdPushConstants(cmd, s.shadowLayout.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
+                       &view.viewProj);
+    for (const DrawSurface& surface : s.surfaces)
+        if (intersects(frustum, surface.boundsMin, surface.boundsMax))
+            vkCmdDrawIndexed(cmd, surface.indexCount, 1, surface.firstIndex, 0, 0);
+}
+
+void drawDynamicCasters(RendererState& s, VkCommandBuffer cmd, const ShadowView& view,
+                        const std::vector<glm::mat4>& entityTransforms) {
+    for (const DrawDynamicMesh& mesh : s.dynamicMeshes) {
+        const glm::mat4 clip = view.viewProj * entityTransforms[mesh.entity];
+        vkCmdPushConstants(cmd, s.shadowLayout.layout, VK_SHADER_STAGE_VERTEX_BIT, 0,
+                           sizeof(glm::mat4), &clip);
+        vkCmdDrawIndexed(cmd, mesh.indexCount, 1, mesh.firstIndex, mesh.vertexOffset, 0);
+    }
+}
+
+vk::ImageBarrier layersBarrier(uint32_t first, uint32_t count, VkImageLayout from, VkImageLayout to,
+                               VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                               VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+    vk::ImageBarrier b;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcStage = srcStage;
+    b.srcAccess = srcAccess;
+    b.dstStage = dstStage;
+    b.dstAccess = dstAccess;
+    b.baseLayer = first;
+    b.layerCount = count;
+    return b;
+}
+
+constexpr VkPipelineStageFlags kDepthStages =
+    VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+
+}  // namespace
+
+void createShadows(RendererState& s) {
+    const vk::Context& ctx = *s.ctx;
+    // Slots for every primary light a surface uses (and every primary, for dynamic objects),
+    // while layers last.
+    s.lightSlot.assign(s.lights.size(), kNoIndex);
+    uint32_t layers = 0;
+    for (uint32_t i = 0; i < s.lights.size(); ++i) {
+        if (s.lights[i].role != world::LightRole::primary || s.options.flatShading) continue;
+        const uint32_t need = layersFor(s.lights[i].type);
+        if (layers + need > s.options.maxShadowLayers) continue;
+        ShadowSlot slot;
+        slot.light = i;
+        slot.firstView = layers;
+        slot.viewCount = need;
+        s.lightSlot[i] = uint32_t(s.slots.size());
+        s.slots.push_back(slot);
+        layers += need;
+    }
+    s.views.resize(std::max(layers, 1u));
+    s.info.shadowLayers = layers;
+
+    // Shadow-view indices into the light records.
+    auto* gpuLights = static_cast<GpuLight*>(s.lightBuffer.mapped);
+    for (const ShadowSlot& slot : s.slots) gpuLights[slot.light].info.y = slot.firstView;
+    vk::createHostBuffer(ctx, s.shadowViewBuffer, s.views.size() * sizeof(GpuShadowView),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    std::memset(s.shadowViewBuffer.mapped, 0, s.views.size() * sizeof(GpuShadowView));
+
+    vk::ImageDesc desc;
+    desc.format = kDepthFormat;
+    desc.width = desc.height = s.options.shadowMapSize;
+    desc.layers = uint32_t(s.views.size());
+    desc.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    vk::createImage(ctx, s.staticShadows, desc);
+    const bool dynamic = !s.dynamicMeshes.empty();
+    if (dynamic) vk::createImage(ctx, s.frameShadows, desc);
+    for (uint32_t i = 0; i < s.views.size(); ++i) {
+        s.views[i].staticLayer = vk::createLayerView(ctx, s.staticShadows, i, 1);
+        if (dynamic) s.views[i].frameLayer = vk::createLayerView(ctx, s.frameShadows, i, 1);
+    }
+
+    // Every layer starts cleared to "unoccluded" and shader-readable.
+    vk::submitOnce(ctx, [&](VkCommandBuffer cmd) {
+        for (vk::Image* image : {&s.staticShadows, &s.frameShadows}) {
+            if (!image->image) continue;
+            vk::imageBarrier(
+                cmd, *image,
+                layersBarrier(0, VK_REMAINING_ARRAY_LAYERS, VK_IMAGE_LAYOUT_UNDEFINED,
+                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                              VK_ACCESS_TRANSFER_WRITE_BIT));
+            const VkClearDepthStencilValue one{1.0f, 0};
+            const VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0,
+                                                VK_REMAINING_ARRAY_LAYERS};
+            vkCmdClearDepthStencilImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                        &one, 1, &range);
+            vk::imageBarrier(
+                cmd, *image,
+                layersBarrier(0, VK_REMAINING_ARRAY_LAYERS, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+        }
+    });
+
+    vk::SamplerDesc compare;
+    compare.compare = true;
+    compare.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    compare.addressU = compare.addressV = compare.addressW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    compare.maxLod = 0.0f;
+    s.shadowSampler = vk::createSampler(ctx, compare);
+}
+
+void destroyShadows(RendererState& s) {
+    const vk::Context& ctx = *s.ctx;
+    if (s.shadowSampler) vkDestroySampler(ctx.device, s.shadowSampler, nullptr);
+    s.shadowSampler = VK_NULL_HANDLE;
+    for (auto it = s.views.rbegin(); it != s.views.rend(); ++it) {
+        if (it->frameLayer) vkDestroyImageView(ctx.device, it->frameLayer, nullptr);
+        if (it->staticLayer) vkDestroyImageView(ctx.device, it->staticLayer, nullptr);
+        it->frameLayer = it->staticLayer = VK_NULL_HANDLE;
+    }
+    vk::destroyImage(ctx, s.frameShadows);
+    vk::destroyImage(ctx, s.staticShadows);
+    vk::destroyBuffer(ctx, s.shadowViewBuffer);
+}
+
+void updateShadowViews(RendererState& s, const Camera& camera,
+                       const std::vector<uint32_t>& visibleLights) {
+    for (uint32_t light : visibleLights) {
+        if (s.lightSlot[light] == kNoIndex) continue;
+        ShadowSlot& slot = s.slots[s.lightSlot[light]];
+        if (s.lights[light].type == world::LightType::directional)
+            fitSun(s, slot, camera);
+        else if (!slot.staticValid)
+            fitSpotOrOmni(s, slot);
+    }
+    auto* gpu = static_cast<GpuShadowView*>(s.shadowViewBuffer.mapped);
+    for (size_t i = 0; i < s.views.size(); ++i) {
+        gpu[i].viewProj = s.views[i].viewProj;
+        gpu[i].params = s.views[i].params;
+    }
+}
+
+uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
+                            const std::vector<uint32_t>& visibleLights,
+                            const std::vector<glm::mat4>& entityTransforms) {
+    const uint32_t size = s.options.shadowMapSize;
+    const VkDeviceSize offset = 0;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.shadowPipeline);
+    vkCmdBindVertexBuffers(cmd, 0, 1, &s.vertices.buffer, &offset);
+    vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+
+    // Static casters of the slots that need them, once.
+    uint32_t rendered = 0;
+    for (uint32_t light : visibleLights) {
+        if (s.lightSlot[light] == kNoIndex) continue;
+        ShadowSlot& slot = s.slots[s.lightSlot[light]];
+        if (slot.staticValid) continue;
+        vk::imageBarrier(
+            cmd, s.staticShadows,
+            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                          VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
+                          kDepthStages,
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
+        for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
+            beginDepthRendering(cmd, s.views[v].staticLayer, size, true);
+            drawStaticCasters(s, cmd, s.views[v]);
+            vkCmdEndRendering(cmd);
+            ++rendered;
+        }
+        vk::imageBarrier(
+            cmd, s.staticShadows,
+            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT));
+        slot.staticValid = true;
+    }
+    if (s.dynamicMeshes.empty()) return rendered;
+
+    // Dynamic casters: the cached static layers, copied, plus the moving objects.
+    for (uint32_t light : visibleLights) {
+        if (s.lightSlot[light] == kNoIndex) continue;
+        const ShadowSlot& slot = s.slots[s.lightSlot[light]];
+        vk::imageBarrier(
+            cmd, s.staticShadows,
+            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_TRANSFER_READ_BIT));
+        vk::imageBarrier(
+            cmd, s.frameShadows,
+            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_TRANSFER_WRITE_BIT));
+        VkImageCopy copy{};
+        copy.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, slot.firstView, slot.viewCount};
+        copy.dstSubresource = copy.srcSubresource;
+        copy.extent = {size, size, 1};
+        vkCmdCopyImage(cmd, s.staticShadows.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       s.frameShadows.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        vk::imageBarrier(
+            cmd, s.staticShadows,
+            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+        vk::imageBarrier(
+            cmd, s.frameShadows,
+            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_TRANSFER_WRITE_BIT, kDepthStages,
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
+        for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
+            beginDepthRendering(cmd, s.views[v].frameLayer, size, false);
+            drawDynamicCasters(s, cmd, s.views[v], entityTransforms);
+            vkCmdEndRendering(cmd);
+        }
+        vk::imageBarrier(
+            cmd, s.frameShadows,
+            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+    }
+    return rendered;
+}
+
+}  // namespace onelight::render

@@ -1,0 +1,44 @@
+// A swapchain on a surface: B8G8R8A8_UNORM images usable as copy destinations and sources (the
+// frame is copied in; a screenshot can be copied out), FIFO presentation.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "vk/context.hpp"
+
+namespace onelight::vk {
+
+struct Swapchain {
+    VkSurfaceKHR surface = VK_NULL_HANDLE;      // borrowed from the window
+    VkSwapchainKHR swapchain = VK_NULL_HANDLE;  // owned
+    std::vector<VkImage> images;                // borrowed from swapchain
+    VkFormat format = VK_FORMAT_B8G8R8A8_UNORM;
+    VkExtent2D extent{};
+    VkSemaphore imageAcquired = VK_NULL_HANDLE;  // owned, signalled by acquire
+    VkSemaphore frameCopied = VK_NULL_HANDLE;    // owned, waited by present
+
+    Swapchain() = default;
+    Swapchain(const Swapchain&) = delete;
+    Swapchain& operator=(const Swapchain&) = delete;
+};
+
+// Creates (or, when swapchain.swapchain exists, recreates) the swapchain of `surface` at the
+// surface's current extent, or width x height when the surface leaves it to the application.
+// Throws when the queue cannot present to the surface or B8G8R8A8_UNORM is not offered.
+void createSwapchain(const Context& ctx, Swapchain& swapchain, VkSurfaceKHR surface, uint32_t width,
+                     uint32_t height);
+
+// Destroys semaphores and swapchain (not the surface).
+void destroySwapchain(const Context& ctx, Swapchain& swapchain);
+
+// The index of the next image, signalling swapchain.imageAcquired; -1 when the swapchain is out
+// of date and must be recreated.
+int acquireNextImage(const Context& ctx, Swapchain& swapchain);
+
+// Presents image `index` after swapchain.frameCopied. False when out of date or suboptimal.
+bool presentImage(const Context& ctx, Swapchain& swapchain, uint32_t index);
+
+}  // namespace onelight::vk

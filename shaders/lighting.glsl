@@ -1,0 +1,135 @@
+// Light evaluation of onelight, written once for GLSL and C++ (see common.glsl for the dialect):
+// the runtime specular model, material classes, punctual lights in glTF units, the baked
+// secondary terms and the runtime/baked shadow blend. The BRDF itself comes from brdf.glsl.
+//
+// Units (DESIGN.md "The lighting model"): metres; directional lights in lux, point and spot
+// lights in candela (KHR_lights_punctual). A light's "illuminance" below is what it delivers at
+// normal incidence, in lux; reflected radiance = reflectance * illuminance, in cd/m^2.
+#ifndef ONELIGHT_LIGHTING_GLSL
+#define ONELIGHT_LIGHTING_GLSL
+
+#include "brdf.glsl"
+#include "env_brdf_fit.glsl"
+
+// ---------------------------------------------------------------------------------------------
+// The runtime specular model: ggx_smith, chosen by docs/brdf-report (cheapest exact model).
+
+const int RUNTIME_NDF = NDF_GGX;
+const int RUNTIME_VIS = VIS_SMITH_CORRELATED;
+const int RUNTIME_FRESNEL = FRESNEL_SCHLICK;
+
+// Material classes (world::MaterialClass): one shader permutation each.
+#define MATERIAL_METAL 0       // specular only, coloured f0
+#define MATERIAL_DIELECTRIC 1  // Lambert + specular with a grey (scalar) f0
+#define MATERIAL_FULL 2        // Lambert + specular with a coloured f0
+#define MATERIAL_LAMBERT 3     // Lambert only
+
+// Light types (world::LightType).
+#define LIGHT_DIRECTIONAL 0
+#define LIGHT_POINT 1
+#define LIGHT_SPOT 2
+
+const float MIN_LIGHT_DISTANCE2 = 1e-4f;  // (1 cm)^2: a light inside geometry stays finite
+
+// ---------------------------------------------------------------------------------------------
+// Punctual lights
+
+// KHR_lights_punctual, "Range Property" (recommended window): saturate(1 - (d / range)^4)^2,
+// which reaches 0 at the range with zero slope. range <= 0 means unlimited.
+float rangeWindow(float distance2, float range) {
+    if (range <= 0.0f) return 1.0f;
+    float r2 = distance2 / (range * range);
+    return sq(saturate(1.0f - r2 * r2));
+}
+
+// Inverse-square law for a light of intensity in candela: E = I / d^2 lux, with d floored at
+// 1 cm (Lagarde and de Rousiers 2014, "Moving Frostbite to PBR", sec. 4.2.2).
+float inverseSquare(float distance2) { return 1.0f / max(distance2, MIN_LIGHT_DISTANCE2); }
+
+// KHR_lights_punctual, "Spot": linear in cos(angle) from the outer to the inner cone, squared.
+// cosAngle = dot(spot direction, light-to-point direction).
+float spotCone(float cosAngle, float cosInner, float cosOuter) {
+    float scale = 1.0f / max(0.001f, cosInner - cosOuter);
+    return sq(saturate((cosAngle - cosOuter) * scale));
+}
+
+// A punctual light seen from a surface point.
+struct LightSample {
+    vec3 l;            // unit vector from the point to the light
+    vec3 illuminance;  // lux at normal incidence, coloured
+    float distance;    // metres to the light (0 for directional)
+};
+
+// Evaluates light `type` at world point p. For a directional light only color, intensity (lux)
+// and direction (the way light travels) matter; point and spot lights use position and range,
+// and spots their cone cosines.
+LightSample evaluatePunctualLight(int type, vec3 color, float intensity, float range, vec3 position,
+                                  vec3 direction, float cosInner, float cosOuter, vec3 p) {
+    LightSample s;
+    if (type == LIGHT_DIRECTIONAL) {
+        s.l = -direction;
+        s.illuminance = color * intensity;
+        s.distance = 0.0f;
+        return s;
+    }
+    vec3 toLight = position - p;
+    float d2 = dot(toLight, toLight);
+    s.distance = sqrt(d2);
+    s.l = toLight * (1.0f / max(s.distance, 1e-6f));
+    float attenuation = intensity * inverseSquare(d2) * rangeWindow(d2, range);
+    if (type == LIGHT_SPOT) attenuation = attenuation * spotCone(-dot(s.l, direction), cosInner, cosOuter);
+    s.illuminance = color * attenuation;
+    return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Surface response: the one place a material class picks its terms.
+
+// f(v, l) NoL of a surface of class `materialClass` for one light: Lambert diffuse with
+// `albedo` plus the runtime specular lobe with `f0` and `gloss` (brdf.glsl). A dielectric's f0
+// is grey: the caller passes vec3(scalar).
+vec3 surfaceReflectance(int materialClass, vec3 albedo, vec3 f0, float gloss, BrdfDots d) {
+    vec3 diffuse = albedo * (Fd_Lambert() * d.NoL);
+    if (materialClass == MATERIAL_LAMBERT) return diffuse;
+    vec3 specular = specularLobe(RUNTIME_NDF, RUNTIME_VIS, RUNTIME_FRESNEL, f0, gloss, d);
+    if (materialClass == MATERIAL_METAL) return specular;
+    return diffuse + specular;
+}
+
+// Diffuse only, for the omni effect lights (DESIGN.md: gun flashes light diffusely).
+vec3 diffuseReflectance(vec3 albedo, BrdfDots d) { return albedo * (Fd_Lambert() * d.NoL); }
+
+// ---------------------------------------------------------------------------------------------
+// Baked secondary lighting (the contract with the baker)
+
+// Directional irradiance stored per colour channel as four coefficients (c0, cx, cy, cz):
+// E(n) = max(0, c0 + cx n.x + cy n.y + cz n.z) lux. A constant ambient of E lux is (E, 0, 0, 0).
+float irradianceLinear(vec4 c, vec3 n) {
+    return max(0.0f, c.x + c.y * n.x + c.z * n.y + c.w * n.z);
+}
+
+// Secondary light reflected towards v: diffuse from irradiance E (lux, per channel) and specular
+// from a normalised probe sample (radiance / average irradiance at its capture point) scaled back
+// by E, times the environment "Fresnel" of the runtime model. Lambert-only surfaces take no
+// probe; metals no diffuse.
+vec3 secondaryRadiance(int materialClass, vec3 albedo, vec3 f0, float gloss, float NoV, vec3 irradiance,
+                       vec3 normalisedProbe) {
+    vec3 diffuse = albedo * (Fd_Lambert()) * irradiance;
+    if (materialClass == MATERIAL_LAMBERT) return diffuse;
+    vec2 env = EnvBRDF_Fit(NoV, gloss);
+    vec3 specular = (f0 * env.x + vec3(env.y)) * normalisedProbe * irradiance;
+    if (materialClass == MATERIAL_METAL) return specular;
+    return diffuse + specular;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Shadows
+
+// Near the camera the runtime shadow map, beyond `radius` the baked shadow mask; the two blend
+// linearly over the last `band` metres inside the radius.
+float blendShadow(float runtimeShadow, float bakedShadow, float viewDistance, float radius, float band) {
+    float t = saturate((viewDistance - (radius - band)) / max(band, 1e-3f));
+    return mix(runtimeShadow, bakedShadow, t);
+}
+
+#endif
