@@ -49,15 +49,15 @@ LightmapSettings lightmap_settings(const BakeOptions& options) {
     switch (options.quality) {
         case BakeQuality::draft:
             s.shadow_samples = 8;
-            s.indirect_samples = 64;
+            s.indirect_samples = 128;
             break;
         case BakeQuality::normal:
             s.shadow_samples = 16;
-            s.indirect_samples = 256;
+            s.indirect_samples = 512;
             break;
         case BakeQuality::high:
             s.shadow_samples = 32;
-            s.indirect_samples = 1024;
+            s.indirect_samples = 2048;
             break;
     }
     if (options.shadow_samples) s.shadow_samples = options.shadow_samples;

@@ -50,27 +50,32 @@ glm::vec3 move_out_of_geometry(const BakeScene& scene, const glm::vec3& origin,
    Indirect part: w_i cosine-distributed on a rotated Hammersley set (pdf (n . w) / pi), so
      int L (n . w) dw ~ (1/N) sum_i L(w_i) (n . w_i) / pdf(w_i) = (pi / N) sum_i L(w_i)
    where L(w_i) = trace_radiance (every bounce of every light, and the sky on escape).
+   The indirect part is then averaged with the texel's neighbours (see filter_indirect).
    Direction: d = 1/2 sum (Y(E_k) w_k) / sum Y(E_k) over the same terms (luminance-weighted).
                   +--------------------------------------------------------------------+
                   | E_sec ~ sum_{l != P} E_l (n.w_l) V_l + (pi / N) sum_i L(w_i)        |
                   +--------------------------------------------------------------------+
    Its estimated noise: the sample standard deviation of pi Y(L(w_i)) over sqrt(N).
 */
-struct TexelResult {
-    world::LightmapTexel texel;
+struct TexelEstimate {
+    glm::vec3 origin{0.0f};  // where the rays started (moved out of geometry if needed)
+    glm::dvec3 direct{0.0}, indirect{0.0};                  // lux
+    glm::dvec3 direct_direction{0.0}, indirect_direction{0.0};  // sum Y(E) w
+    double direct_luminance = 0.0, indirect_luminance = 0.0;
+    double noise = 0.0;  // luminance standard error of the indirect part
     uint8_t mask = 0;
-    double noise = 0.0, value = 0.0;  // luminance standard error and luminance
     bool moved = false;
 };
 
-TexelResult bake_texel(const BakeScene& scene, const BakeLights& lights,
-                       const world::CompiledLevel& level, const TexelSample& sample,
-                       const LightmapSettings& settings, RayCounts& rays) {
-    TexelResult out;
+TexelEstimate estimate_texel(const BakeScene& scene, const BakeLights& lights,
+                             const world::CompiledLevel& level, const TexelSample& sample,
+                             const LightmapSettings& settings, RayCounts& rays) {
+    TexelEstimate out;
     Rng rng{seed_from(sample.atlas, sample.x, sample.y, kLightmapPass)};
     const glm::vec3 n = sample.normal;
     glm::vec3 origin = sample.position + n * scene.ray_offset();
     origin = move_out_of_geometry(scene, origin, n, sample.texel_size, rays, out.moved);
+    out.origin = origin;
 
     const world::Surface& surface = level.surfaces[sample.surface];
     const BakeLight* own = own_primary(lights, surface.primary_light);
@@ -80,9 +85,6 @@ TexelResult bake_texel(const BakeScene& scene, const BakeLights& lights,
             light_visibility(scene, *own, incidence, origin, settings.shadow_samples, rng, rays);
         out.mask = static_cast<uint8_t>(std::lround(v * 255.0f));
     }
-
-    glm::dvec3 irradiance(0.0), direction_sum(0.0);
-    double luminance_sum = 0.0;
     for (const BakeLight& light : lights.lights) {
         if (&light == own) continue;
         const LightIncidence incidence = light_incidence(light, origin);
@@ -91,46 +93,38 @@ TexelResult bake_texel(const BakeScene& scene, const BakeLights& lights,
         const float v =
             light_visibility(scene, light, incidence, origin, settings.shadow_samples, rng, rays);
         const glm::vec3 e = incidence.irradiance * (cosine * v);
-        irradiance += glm::dvec3(e);
-        direction_sum += double(luminance(e)) * glm::dvec3(incidence.direction);
-        luminance_sum += double(luminance(e));
+        out.direct += glm::dvec3(e);
+        out.direct_direction += double(luminance(e)) * glm::dvec3(incidence.direction);
+        out.direct_luminance += double(luminance(e));
     }
-
     const uint32_t count = settings.indirect_samples;
     if (count > 0) {
         const Frame frame = frame_around(n);
         const float s0 = rng.next(), s1 = rng.next();
-        glm::dvec3 indirect(0.0), indirect_direction(0.0);
-        double sum_y = 0.0, sum_y2 = 0.0;
+        double sum_y2 = 0.0;
         for (uint32_t i = 0; i < count; ++i) {
             const glm::vec3 w = glm::normalize(frame.to_world(
                 sample_cosine_hemisphere(rotated_hammersley(i, count, s0, s1))));
             const glm::vec3 e = kPi * trace_radiance(scene, lights, settings.transport, origin,
                                                      w, rng, rays);
             const double y = luminance(e);
-            indirect += glm::dvec3(e);
-            indirect_direction += y * glm::dvec3(w);
-            sum_y += y;
+            out.indirect += glm::dvec3(e);
+            out.indirect_direction += y * glm::dvec3(w);
+            out.indirect_luminance += y;
             sum_y2 += y * y;
         }
         const double inv = 1.0 / count;
-        irradiance += indirect * inv;
-        direction_sum += indirect_direction * inv;
-        luminance_sum += sum_y * inv;
-        const double mean = sum_y * inv;
-        const double variance = std::max(0.0, sum_y2 * inv - mean * mean);
-        out.noise = std::sqrt(variance * inv);
+        out.indirect *= inv;
+        out.indirect_direction *= inv;
+        out.indirect_luminance *= inv;
+        const double mean = out.indirect_luminance;
+        out.noise = std::sqrt(std::max(0.0, sum_y2 * inv - mean * mean) * inv);
     }
-    out.value = luminance_sum;
-    world::LightmapTexel& t = out.texel;
-    t.irradiance = glm::max(glm::vec3(irradiance), glm::vec3(0.0f));
-    t.direction = luminance_sum > 0.0 ? glm::vec3(0.5 * direction_sum / luminance_sum)
-                                      : glm::vec3(0.0f);
-    if (glm::length(t.direction) > 0.5f) t.direction *= 0.5f / glm::length(t.direction);
-    t.normal_weight = std::clamp(0.5f + glm::dot(n, t.direction), 0.5f, 1.0f);
-    t.flags = 1u;  // sampled
-    if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z)) t = {};
     return out;
+}
+
+uint32_t chart_of(const world::CompiledLevel& level, const TexelSample& s) {
+    return level.surfaces[s.surface].chart;
 }
 
 }  // namespace
@@ -141,39 +135,101 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
                                    const LightmapSettings& settings, uint64_t texel_begin,
                                    uint64_t texel_end, world::BakedLighting& baked,
                                    Progress* progress) {
-    const auto first = std::lower_bound(
-        samples.begin(), samples.end(), texel_begin,
-        [](const TexelSample& s, uint64_t texel) { return s.texel < texel; });
-    const auto last = std::lower_bound(
-        samples.begin(), samples.end(), texel_end,
-        [](const TexelSample& s, uint64_t texel) { return s.texel < texel; });
-    const size_t begin = static_cast<size_t>(first - samples.begin());
-    const size_t end = static_cast<size_t>(last - samples.begin());
-    std::vector<double> noise(end - begin), value(end - begin);
-    std::vector<uint8_t> moved(end - begin);
+    const auto lower = [&](uint64_t texel) {
+        return static_cast<size_t>(
+            std::lower_bound(samples.begin(), samples.end(), texel,
+                             [](const TexelSample& s, uint64_t t) { return s.texel < t; }) -
+            samples.begin());
+    };
+    // The filter reads each texel's 8 neighbours: estimate a halo of one atlas row and one
+    // texel around the owned range too (every texel's estimate depends only on its identity,
+    // so a halo texel gets the same value in whichever shard computes it).
+    uint64_t halo = 1;
+    for (const world::Atlas& a : level.atlases) halo = std::max<uint64_t>(halo, a.width + 1ull);
+    const size_t owned_begin = lower(texel_begin), owned_end = lower(texel_end);
+    const size_t begin = lower(texel_begin > halo ? texel_begin - halo : 0);
+    const size_t end = lower(texel_end + halo);
+    std::vector<TexelEstimate> estimates(end - begin);
     tbb::enumerable_thread_specific<RayCounts> rays;
     tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 16), [&](const auto& range) {
         RayCounts& local = rays.local();
-        for (size_t i = range.begin(); i != range.end(); ++i) {
-            const TexelSample& s = samples[i];
-            const TexelResult r = bake_texel(scene, lights, level, s, settings, local);
-            baked.texels[s.texel] = r.texel;
-            baked.shadow_mask[s.texel] = r.mask;
-            noise[i - begin] = r.noise;
-            value[i - begin] = r.value;
-            moved[i - begin] = r.moved ? 1 : 0;
-        }
+        for (size_t i = range.begin(); i != range.end(); ++i)
+            estimates[i - begin] = estimate_texel(scene, lights, level, samples[i], settings, local);
         if (progress) progress->advance(range.size());
+    });
+
+    // Find a texel's estimate by its global index.
+    const auto find = [&](uint64_t texel) -> long {
+        const size_t i = lower(texel);
+        if (i < begin || i >= end || samples[i].texel != texel) return -1;
+        return static_cast<long>(i - begin);
+    };
+    tbb::parallel_for(tbb::blocked_range<size_t>(owned_begin, owned_end, 64), [&](const auto& r) {
+        RayCounts& local = rays.local();
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            const TexelSample& s = samples[i];
+            const TexelEstimate& e = estimates[i - begin];
+            // filter_indirect: 3x3 tent ([1 2 1] x [1 2 1]) over neighbours of the same chart
+            // that were not moved out of geometry and that see this texel's origin (a short
+            // shadow ray), so no light crosses a wall. For a full window the noise drops to
+            // sqrt(sum w^2) / sum w = 0.375; a field linear across the window is unchanged.
+            glm::dvec3 indirect = 4.0 * e.indirect, indirect_direction = 4.0 * e.indirect_direction;
+            double indirect_luminance = 4.0 * e.indirect_luminance, weight = 4.0;
+            const world::Atlas& atlas = level.atlases[s.atlas];
+            for (int dy = -1; dy <= 1 && !e.moved; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = int(s.x) + dx, ny = int(s.y) + dy;
+                    if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= int(atlas.width) ||
+                        ny >= int(atlas.height))
+                        continue;
+                    const long j = find(s.texel - s.x - uint64_t(s.y) * atlas.width +
+                                        uint64_t(ny) * atlas.width + uint64_t(nx));
+                    if (j < 0) continue;
+                    const TexelSample& ns = samples[size_t(j) + begin];
+                    const TexelEstimate& ne = estimates[size_t(j)];
+                    if (ne.moved || chart_of(level, ns) != chart_of(level, s)) continue;
+                    const glm::vec3 to = ne.origin - e.origin;
+                    const float distance = glm::length(to);
+                    if (distance > 0.0f &&
+                        scene.occluded(e.origin, to / distance, distance, local.probe))
+                        continue;
+                    const double w = (dx == 0 ? 2.0 : 1.0) * (dy == 0 ? 2.0 : 1.0);
+                    indirect += w * ne.indirect;
+                    indirect_direction += w * ne.indirect_direction;
+                    indirect_luminance += w * ne.indirect_luminance;
+                    weight += w;
+                }
+            }
+            indirect /= weight;
+            indirect_direction /= weight;
+            indirect_luminance /= weight;
+
+            world::LightmapTexel t;
+            const double luminance_sum = e.direct_luminance + indirect_luminance;
+            t.irradiance = glm::max(glm::vec3(e.direct + indirect), glm::vec3(0.0f));
+            t.direction = luminance_sum > 0.0
+                              ? glm::vec3(0.5 * (e.direct_direction + indirect_direction) /
+                                          luminance_sum)
+                              : glm::vec3(0.0f);
+            if (glm::length(t.direction) > 0.5f) t.direction *= 0.5f / glm::length(t.direction);
+            t.normal_weight = std::clamp(0.5f + glm::dot(s.normal, t.direction), 0.5f, 1.0f);
+            t.flags = 1u;  // sampled
+            if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z)) t = {};
+            baked.texels[s.texel] = t;
+            baked.shadow_mask[s.texel] = e.mask;
+        }
     });
     LightmapStats stats;
     for (const RayCounts& r : rays) stats.rays += r;
-    stats.texels_baked = end - begin;
+    stats.texels_baked = owned_end - owned_begin;
     double noise_sum = 0.0, value_sum = 0.0;
-    for (size_t i = 0; i < noise.size(); ++i) {
-        noise_sum += noise[i];
-        value_sum += value[i];
-        stats.texels_moved += moved[i];
+    for (size_t i = owned_begin; i < owned_end; ++i) {
+        const TexelEstimate& e = estimates[i - begin];
+        noise_sum += e.noise;
+        value_sum += e.direct_luminance + e.indirect_luminance;
+        stats.texels_moved += e.moved ? 1 : 0;
     }
+    // Before the filter; a full 3x3 tent window scales it by 0.375.
     stats.mean_relative_noise = value_sum > 0.0 ? noise_sum / value_sum : 0.0;
     return stats;
 }

@@ -65,7 +65,10 @@ Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options) {
                     // pdf(l) = D(h) NoH / (4 VoH) = D(h) / 4 with n = v = r.
                     float D = glsl::D_GGX(sinH * sinH, alpha);
                     float sampleSolidAngle = 4.0f / (float(n) * D);
-                    float lod = 0.5f * std::log2(sampleSolidAngle / baseTexelSolidAngle) + 1.0f;
+                    float lod = options.filtered ? 0.5f * std::log2(sampleSolidAngle /
+                                                                     baseTexelSolidAngle) +
+                                                       options.lodBias
+                                                 : 0.0f;
                     sum += sampleTrilinear(radiance, l, lod) * NoL;
                     weight += NoL;
                 }

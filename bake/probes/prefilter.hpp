@@ -10,6 +10,8 @@ namespace onelight::bake {
 
 struct PrefilterOptions {
     int samplesPerTexel = 512;  // GGX importance samples per output texel (Hammersley)
+    float lodBias = 1.0f;       // added to the filtered-importance-sampling mip
+    bool filtered = true;       // filtered importance sampling (false: always read mip 0)
 };
 
 // Karis 2013 ("Real Shading in Unreal Engine 4", split-sum prefilter) with the n = v = r

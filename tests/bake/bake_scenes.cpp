@@ -1,0 +1,153 @@
+#include "bake_scenes.hpp"
+
+#include <cmath>
+
+namespace onelight::bake::test {
+
+uint32_t add_lambert_material(world::SourceLevel& level, float albedo) {
+    world::Material m;
+    m.name = "lambert" + std::to_string(level.materials.size());
+    m.base_color = glm::vec4(albedo, albedo, albedo, 1.0f);
+    m.metallic = 0.0f;
+    m.roughness = 1.0f;
+    m.albedo = glm::vec3(albedo);
+    m.specular_color = glm::vec3(0.0f);
+    m.gloss = 0.0f;
+    m.material_class = world::MaterialClass::lambert;
+    level.materials.push_back(m);
+    return static_cast<uint32_t>(level.materials.size() - 1);
+}
+
+namespace {
+
+void add_triangles(world::SourceLevel& level, std::vector<glm::vec3> positions,
+                   std::vector<uint32_t> indices, uint32_t material, const std::string& name) {
+    world::MeshInstance instance;
+    instance.node_name = name;
+    instance.mesh_name = name;
+    instance.material = material;
+    for (const glm::vec3& p : positions) {
+        world::Vertex v;
+        v.position = p;
+        instance.vertices.push_back(v);
+    }
+    // Vertex normals from the faces (flat per vertex: each shape gives its vertices one face).
+    for (size_t i = 0; i + 2 < indices.size(); i += 3) {
+        const glm::vec3 n = glm::normalize(glm::cross(positions[indices[i + 1]] - positions[indices[i]],
+                                                      positions[indices[i + 2]] - positions[indices[i]]));
+        for (int k = 0; k < 3; ++k) instance.vertices[indices[i + k]].normal = n;
+    }
+    instance.indices = std::move(indices);
+    level.instances.push_back(std::move(instance));
+}
+
+}  // namespace
+
+void add_quad(world::SourceLevel& level, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3,
+              uint32_t material, const std::string& name) {
+    add_triangles(level, {p0, p1, p2, p3}, {0, 1, 2, 0, 2, 3}, material, name);
+}
+
+void add_box(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t material,
+             bool inward, const std::string& name) {
+    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
+                            {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
+                            {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    // Outward-facing quads (counter-clockwise from outside).
+    const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                             {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+    for (int f = 0; f < 6; ++f) {
+        const int* q = faces[f];
+        if (inward)
+            add_quad(level, c[q[3]], c[q[2]], c[q[1]], c[q[0]], material,
+                     name + "_" + std::to_string(f));
+        else
+            add_quad(level, c[q[0]], c[q[1]], c[q[2]], c[q[3]], material,
+                     name + "_" + std::to_string(f));
+    }
+}
+
+void add_inward_sphere(world::SourceLevel& level, glm::vec3 centre, float radius,
+                       uint32_t rings, uint32_t segments, uint32_t material) {
+    std::vector<glm::vec3> positions;
+    std::vector<uint32_t> indices;
+    const float pi = 3.14159265358979f;
+    for (uint32_t r = 0; r <= rings; ++r) {
+        const float theta = pi * float(r) / float(rings);
+        for (uint32_t s = 0; s <= segments; ++s) {
+            const float phi = 2.0f * pi * float(s) / float(segments);
+            positions.push_back(centre + radius * glm::vec3(std::sin(theta) * std::cos(phi),
+                                                            std::sin(theta) * std::sin(phi),
+                                                            std::cos(theta)));
+        }
+    }
+    const uint32_t row = segments + 1;
+    for (uint32_t r = 0; r < rings; ++r) {
+        for (uint32_t s = 0; s < segments; ++s) {
+            const uint32_t a = r * row + s, b = a + 1, c = a + row, d = c + 1;
+            // inward: clockwise seen from outside
+            if (r != 0) indices.insert(indices.end(), {a, b, d});
+            if (r + 1 != rings) indices.insert(indices.end(), {a, d, c});
+        }
+    }
+    world::MeshInstance instance;
+    instance.node_name = "sphere";
+    instance.mesh_name = "sphere";
+    instance.material = material;
+    for (const glm::vec3& p : positions) {
+        world::Vertex v;
+        v.position = p;
+        v.normal = glm::normalize(centre - p);
+        instance.vertices.push_back(v);
+    }
+    instance.indices = std::move(indices);
+    level.instances.push_back(std::move(instance));
+}
+
+world::Light point_light(glm::vec3 position, float candela, world::LightRole role) {
+    world::Light l;
+    l.name = "point";
+    l.type = world::LightType::point;
+    l.role = role;
+    l.intensity = candela;
+    l.position = position;
+    return l;
+}
+
+world::Light spot_light(glm::vec3 position, glm::vec3 direction, float candela, float inner,
+                        float outer, world::LightRole role) {
+    world::Light l = point_light(position, candela, role);
+    l.name = "spot";
+    l.type = world::LightType::spot;
+    l.direction = glm::normalize(direction);
+    l.inner_cone = inner;
+    l.outer_cone = outer;
+    return l;
+}
+
+BakeOptions test_options(float texels_per_metre, BakeQuality quality) {
+    BakeOptions o;
+    o.quality = quality;
+    o.show_progress = false;
+    o.compile.charts.texels_per_metre = texels_per_metre;
+    o.compile.charts.atlas_size = 512;
+    o.grid_cell_size = 1.0f;
+    return o;
+}
+
+bool all_finite_non_negative(const world::BakedLighting& baked) {
+    const auto good = [](const glm::vec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && v.x >= 0.0f &&
+               v.y >= 0.0f && v.z >= 0.0f;
+    };
+    for (const world::LightmapTexel& t : baked.texels)
+        if (!good(t.irradiance) || !std::isfinite(t.normal_weight) ||
+            !std::isfinite(glm::length(t.direction)))
+            return false;
+    for (const world::LightGridCell& c : baked.grid.cells)
+        for (const glm::vec3& f : c.ambient_cube)
+            if (!good(f) || !std::isfinite(c.primary_visibility)) return false;
+    return true;
+}
+
+}  // namespace onelight::bake::test

@@ -1,0 +1,239 @@
+// Lightmap accuracy against closed forms and against the reference path tracer (issue 5,
+// "Accuracy tests"). Small scenes, draft or default quality.
+#include <cmath>
+#include <cstdlib>
+
+#include <gtest/gtest.h>
+
+#include "bake/lightmap/lightmap_bake.hpp"
+#include "bake/lightmap/texel_placement.hpp"
+#include "bake/reference/path_tracer.hpp"
+#include "bake_scenes.hpp"
+
+namespace onelight::bake {
+namespace {
+
+using world::LightRole;
+
+struct Baked {
+    BakeResult result;
+    BakeLights lights;
+    std::vector<TexelSample> samples;
+};
+
+Baked bake(const world::SourceLevel& source, const BakeOptions& options) {
+    Baked b{bake_level(source, options),
+            make_bake_lights(source.lights, options.light_sizes, options.sky_radiance),
+            {}};
+    b.samples = place_texels(b.result.level);
+    return b;
+}
+
+world::SourceLevel plane_level(float half_size) {
+    world::SourceLevel level;
+    const uint32_t m = test::add_lambert_material(level, 0.5f);
+    test::add_quad(level, {-half_size, -half_size, 0}, {half_size, -half_size, 0},
+                   {half_size, half_size, 0}, {-half_size, half_size, 0}, m, "floor");
+    return level;
+}
+
+// A point light of I cd at height d over an open plane: E = I cos(theta) / d^2 exactly (no
+// bounce can return: nothing else is in the scene). The light is a secondary ("baked") light,
+// so its direct light lands in the lightmap through its shadow rays, all unoccluded: the only
+// error left is float rounding and the light's finite radius (0.05 m at d = 2 m changes the
+// irradiance of a sphere light by 0 for points that see all of it). Tolerance 1% as issued.
+TEST(LightmapAccuracy, PointLightOverPlaneFollowsInverseSquareCosine) {
+    world::SourceLevel level = plane_level(3.0f);
+    const float intensity = 100.0f, height = 2.0f;
+    level.lights.push_back(test::point_light({0, 0, height}, intensity, LightRole::baked));
+    const Baked b = bake(level, test::test_options(4.0f));
+    size_t checked = 0;
+    for (const TexelSample& s : b.samples) {
+        if (!s.centre_inside) continue;
+        const glm::vec3 to_light = glm::vec3(0, 0, height) - s.position;
+        const float d2 = glm::dot(to_light, to_light);
+        const float expected = intensity * (to_light.z / std::sqrt(d2)) / d2;
+        const float got = b.result.baked.texels[s.texel].irradiance.x;
+        ASSERT_NEAR(got, expected, 0.01f * expected) << "at " << s.position.x << ", " << s.position.y;
+        ++checked;
+    }
+    EXPECT_GT(checked, 300u);
+    EXPECT_TRUE(test::all_finite_non_negative(b.result.baked));
+}
+
+// A spot pointing straight down from height h with outer cone angle a: its light ends at the
+// circle of radius h tan(a) on the floor. Texels (one texel = 1/16 m) more than 1.5 texels
+// inside the edge are lit, those more than 1.5 texels outside are dark.
+TEST(LightmapAccuracy, SpotConeEdgeFallsWhereTheGltfAnglesPutIt) {
+    world::SourceLevel level = plane_level(3.0f);
+    const float height = 2.0f, inner = 0.3f, outer = 0.5f;
+    level.lights.push_back(
+        test::spot_light({0, 0, height}, {0, 0, -1}, 500.0f, inner, outer, LightRole::baked));
+    const Baked b = bake(level, test::test_options(16.0f));
+    const float edge = height * std::tan(outer);
+    const float margin = 1.5f / 16.0f;
+    size_t lit = 0, dark = 0;
+    for (const TexelSample& s : b.samples) {
+        if (!s.centre_inside) continue;
+        const float r = glm::length(glm::vec2(s.position));
+        const float e = b.result.baked.texels[s.texel].irradiance.x;
+        if (r < edge - margin) {
+            ASSERT_GT(e, 0.0f) << "r = " << r;
+            ++lit;
+        } else if (r > edge + margin) {
+            ASSERT_EQ(e, 0.0f) << "r = " << r;
+            ++dark;
+        }
+    }
+    EXPECT_GT(lit, 100u);
+    EXPECT_GT(dark, 100u);
+}
+
+// An open plane under a uniform sky of radiance L: E = pi L. Every cosine-distributed ray
+// escapes, so the estimate has zero variance: only float rounding remains (1e-4).
+TEST(LightmapAccuracy, OpenPlaneUnderUniformSkyGetsPiL) {
+    world::SourceLevel level = plane_level(2.0f);
+    BakeOptions options = test::test_options(4.0f);
+    options.sky_radiance = glm::vec3(1000.0f);
+    const Baked b = bake(level, options);
+    for (const TexelSample& s : b.samples) {
+        const float e = b.result.baked.texels[s.texel].irradiance.y;
+        ASSERT_NEAR(e, 3.14159265f * 1000.0f, 3.14159265f * 1000.0f * 1e-4f);
+    }
+    EXPECT_FALSE(b.samples.empty());
+}
+
+// The integrating sphere: a point light of I cd at the centre of a closed sphere of radius R
+// and albedo rho. Every bounce spreads uniformly, so the wall irradiance is
+// E = E_direct / (1 - rho), E_direct = I / R^2. The light is the walls' primary: total =
+// mask * E_direct + secondary. Tessellation 48 x 96 keeps the mesh area within 0.3% of the
+// sphere's; 256 paths per texel at rho = 0.5 give ~3% noise per texel on the indirect half,
+// the mean over ~1500 texels well under 0.5%. Tolerance 2% as issued.
+TEST(LightmapAccuracy, IntegratingSphereReachesDirectOverOneMinusAlbedo) {
+    world::SourceLevel level;
+    const float rho = 0.5f, radius = 1.0f, intensity = 10.0f;
+    const uint32_t m = test::add_lambert_material(level, rho);
+    test::add_inward_sphere(level, {0, 0, 0}, radius, 48, 96, m);
+    level.lights.push_back(test::point_light({0, 0, 0}, intensity, LightRole::primary));
+    const Baked b = bake(level, test::test_options(8.0f, BakeQuality::normal));
+    const float expected = intensity / (radius * radius) / (1.0f - rho);
+    double sum = 0.0;
+    size_t count = 0;
+    for (const TexelSample& s : b.samples) {
+        if (!s.centre_inside) continue;
+        sum += double(lightmap_total_irradiance(b.lights, b.result.level, b.result.baked, s).x);
+        ++count;
+    }
+    ASSERT_GT(count, 500u);
+    const double mean = sum / double(count);
+    EXPECT_NEAR(mean, double(expected), 0.02 * double(expected));
+    EXPECT_TRUE(test::all_finite_non_negative(b.result.baked));
+}
+
+// A square plate between a primary point light and the floor: under the plate's centre the
+// floor sees none of the light (umbra: mask exactly 0); far outside every shadow ray reaches
+// it (mask exactly 255). Deterministic: no tolerance.
+TEST(LightmapAccuracy, ShadowMasksAreZeroInUmbraAndOneInFullLight) {
+    world::SourceLevel level = plane_level(4.0f);
+    const uint32_t m = test::add_lambert_material(level, 0.5f);
+    test::add_quad(level, {-0.5f, -0.5f, 1.0f}, {-0.5f, 0.5f, 1.0f}, {0.5f, 0.5f, 1.0f},
+                   {0.5f, -0.5f, 1.0f}, m, "plate_bottom");  // faces down
+    test::add_quad(level, {-0.5f, -0.5f, 1.0f}, {0.5f, -0.5f, 1.0f}, {0.5f, 0.5f, 1.0f},
+                   {-0.5f, 0.5f, 1.0f}, m, "plate_top");  // faces up
+    level.lights.push_back(test::point_light({0, 0, 2}, 100.0f, LightRole::primary));
+    const Baked b = bake(level, test::test_options(8.0f));
+    size_t umbra = 0, lit = 0;
+    for (const TexelSample& s : b.samples) {
+        if (!s.centre_inside || std::abs(s.position.z) > 1e-3f) continue;  // floor only
+        const float r = std::max(std::abs(s.position.x), std::abs(s.position.y));
+        const uint8_t mask = b.result.baked.shadow_mask[s.texel];
+        if (r < 0.6f) {  // the umbra reaches |x| < 0.95 on the floor
+            ASSERT_EQ(mask, 0) << s.position.x << ", " << s.position.y;
+            ++umbra;
+        } else if (r > 1.3f) {  // the penumbra ends at |x| ~ 1.05
+            ASSERT_EQ(mask, 255) << s.position.x << ", " << s.position.y;
+            ++lit;
+        }
+    }
+    EXPECT_GT(umbra, 20u);
+    EXPECT_GT(lit, 200u);
+}
+
+// Two closed rooms side by side, separated by a wall 1 cm thick that stands on the floor and
+// crosses it; only the left room has a light. Floor texels under the wall are moved out of
+// it; the right room's mean irradiance must stay below 0.1% of the left room's.
+TEST(LightmapAccuracy, OneCentimetreWallLeaksLessThanATenthOfAPercent) {
+    world::SourceLevel level;
+    const uint32_t m = test::add_lambert_material(level, 0.7f);
+    test::add_box(level, {-2.0f, -1.0f, 0.0f}, {2.01f, 1.0f, 2.0f}, m, true, "shell");
+    test::add_box(level, {0.0f, -1.05f, -0.05f}, {0.01f, 1.05f, 2.05f}, m, false, "wall");
+    level.lights.push_back(test::point_light({-1.0f, 0.0f, 1.5f}, 100.0f, LightRole::primary));
+    const Baked b = bake(level, test::test_options(8.0f));
+    double lit = 0.0, dark = 0.0;
+    size_t lit_count = 0, dark_count = 0;
+    for (const TexelSample& s : b.samples) {
+        const float e = lightmap_total_irradiance(b.lights, b.result.level, b.result.baked, s).x;
+        if (s.position.x < 0.0f) {
+            lit += double(e);
+            ++lit_count;
+        } else if (s.position.x > 0.01f) {
+            dark += double(e);
+            ++dark_count;
+        }
+    }
+    ASSERT_GT(lit_count, 100u);
+    ASSERT_GT(dark_count, 100u);
+    const double ratio = (dark / double(dark_count)) / (lit / double(lit_count));
+    EXPECT_LT(ratio, 1e-3) << "dark " << dark / double(dark_count) << " lit "
+                           << lit / double(lit_count);
+    EXPECT_TRUE(test::all_finite_non_negative(b.result.baked));
+}
+
+// Lightmap irradiance at texel centres against the reference path tracer's irradiance at the
+// same points: a closed room with an occluding block, a primary point light and a secondary
+// spot, default quality. Reference: 8192 independent samples per point (its own noise ~0.3%).
+// Issue tolerance: 2% RMS.
+TEST(LightmapAccuracy, LightmapAgreesWithReferencePathTracer) {
+    world::SourceLevel level;
+    const uint32_t walls = test::add_lambert_material(level, 0.6f);
+    const uint32_t block = test::add_lambert_material(level, 0.3f);
+    test::add_box(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
+    test::add_box(level, {-0.4f, -0.4f, 0.0f}, {0.4f, 0.4f, 0.8f}, block, false, "block");
+    level.lights.push_back(test::point_light({-1.0f, 0.5f, 2.0f}, 60.0f, LightRole::primary));
+    level.lights.push_back(test::spot_light({1.5f, -1.0f, 2.2f}, {-0.5f, 0.4f, -1.0f}, 150.0f,
+                                            0.4f, 0.7f, LightRole::baked));
+    BakeOptions options = test::test_options(6.0f, BakeQuality::normal);
+    if (const char* n = std::getenv("ONELIGHT_PATHS")) options.indirect_samples = uint32_t(std::atoi(n));
+    const Baked b = bake(level, options);
+    std::printf("estimated noise %.4f\n", b.result.report.lightmap_mean_relative_noise);
+    const EmbreeDevice device;
+    const BakeScene scene(device, b.result.level);
+    double sum_sq = 0.0;
+    size_t count = 0;
+    RayCounts rays;
+    for (size_t i = 0; i < b.samples.size(); i += 23) {
+        const TexelSample& s = b.samples[i];
+        if (!s.centre_inside) continue;
+        const float got =
+            luminance(lightmap_total_irradiance(b.lights, b.result.level, b.result.baked, s));
+        const float want = luminance(reference_irradiance(scene, b.lights, s.position, s.normal,
+                                                          8192, static_cast<uint32_t>(i), {},
+                                                          rays));
+        if (want < 1.0f) continue;  // relative error of near-black points is noise
+        const double rel = (double(got) - double(want)) / double(want);
+        if (std::getenv("ONELIGHT_VERBOSE"))
+            std::printf("%6.2f %6.2f %6.2f  n %4.1f %4.1f %4.1f  got %8.3f want %8.3f rel %+.3f\n",
+                        double(s.position.x), double(s.position.y), double(s.position.z),
+                        double(s.normal.x), double(s.normal.y), double(s.normal.z), double(got),
+                        double(want), rel);
+        sum_sq += rel * rel;
+        ++count;
+    }
+    ASSERT_GT(count, 30u);
+    const double rms = std::sqrt(sum_sq / double(count));
+    std::printf("lightmap vs reference: %zu points, RMS relative error %.4f\n", count, rms);
+    EXPECT_LT(rms, 0.02);
+}
+
+}  // namespace
+}  // namespace onelight::bake
