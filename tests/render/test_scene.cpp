@@ -1,0 +1,266 @@
+#include "test_scene.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include "vk/context.hpp"
+
+namespace onelight::test {
+
+namespace {
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+    static const char* const table =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const uint32_t v = uint32_t(bytes[i]) << 16 | uint32_t(bytes[i + 1]) << 8 | bytes[i + 2];
+        out += table[v >> 18];
+        out += table[(v >> 12) & 63];
+        out += table[(v >> 6) & 63];
+        out += table[v & 63];
+    }
+    if (i < bytes.size()) {
+        uint32_t v = uint32_t(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) v |= uint32_t(bytes[i + 1]) << 8;
+        out += table[v >> 18];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+template <typename T>
+size_t append(std::vector<uint8_t>& buffer, const std::vector<T>& values) {
+    while (buffer.size() % 4) buffer.push_back(0);
+    const size_t offset = buffer.size();
+    const auto* bytes = reinterpret_cast<const uint8_t*>(values.data());
+    buffer.insert(buffer.end(), bytes, bytes + values.size() * sizeof(T));
+    return offset;
+}
+
+void addQuadFace(SceneMesh& m, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, glm::vec3 n) {
+    const uint32_t base = uint32_t(m.positions.size());
+    for (glm::vec3 p : {a, b, c, d}) {
+        m.positions.push_back(p);
+        m.normals.push_back(n);
+    }
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) m.indices.push_back(base + i);
+}
+
+// The rotation taking the node's -Z to `direction`.
+glm::quat lightRotation(glm::vec3 direction) {
+    const glm::vec3 from(0.0f, 0.0f, -1.0f);
+    const glm::vec3 to = glm::normalize(direction);
+    const float c = glm::dot(from, to);
+    if (c < -0.9999f) return glm::angleAxis(glm::pi<float>(), glm::vec3(0.0f, 1.0f, 0.0f));
+    const glm::vec3 axis = glm::cross(from, to);
+    const float s = std::sqrt((1.0f + c) * 2.0f);
+    return glm::normalize(glm::quat(0.5f * s, axis.x / s, axis.y / s, axis.z / s));
+}
+
+}  // namespace
+
+void addFloor(Scene& scene, float cx, float cz, float half, float height, uint32_t material) {
+    SceneMesh m;
+    m.material = material;
+    // Counter-clockwise seen from +Y.
+    addQuadFace(m, {cx - half, height, cz + half}, {cx + half, height, cz + half},
+                {cx + half, height, cz - half}, {cx - half, height, cz - half}, {0, 1, 0});
+    scene.meshes.push_back(m);
+}
+
+void addBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material, bool dynamic) {
+    SceneMesh m;
+    m.material = material;
+    m.dynamic = dynamic;
+    const glm::vec3 p[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
+                            {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
+                            {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    addQuadFace(m, p[4], p[5], p[6], p[7], {0, 0, 1});   // +Z
+    addQuadFace(m, p[1], p[0], p[3], p[2], {0, 0, -1});  // -Z
+    addQuadFace(m, p[5], p[1], p[2], p[6], {1, 0, 0});   // +X
+    addQuadFace(m, p[0], p[4], p[7], p[3], {-1, 0, 0});  // -X
+    addQuadFace(m, p[7], p[6], p[2], p[3], {0, 1, 0});   // +Y
+    addQuadFace(m, p[0], p[1], p[5], p[4], {0, -1, 0});  // -Y
+    scene.meshes.push_back(m);
+}
+
+void addSphere(Scene& scene, glm::vec3 centre, float radius, uint32_t rings, uint32_t segments,
+               uint32_t material) {
+    SceneMesh m;
+    m.material = material;
+    for (uint32_t r = 0; r <= rings; ++r)
+        for (uint32_t s = 0; s <= segments; ++s) {
+            const float theta = glm::pi<float>() * float(r) / float(rings);
+            const float phi = 2.0f * glm::pi<float>() * float(s) / float(segments);
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                              -std::sin(theta) * std::sin(phi));
+            m.positions.push_back(centre + radius * n);
+            m.normals.push_back(n);
+        }
+    for (uint32_t r = 0; r < rings; ++r)
+        for (uint32_t s = 0; s < segments; ++s) {
+            const uint32_t a = r * (segments + 1) + s, b = a + segments + 1;
+            if (r > 0) {
+                m.indices.push_back(a);
+                m.indices.push_back(b);
+                m.indices.push_back(a + 1);
+            }
+            if (r + 1 < rings) {
+                m.indices.push_back(a + 1);
+                m.indices.push_back(b);
+                m.indices.push_back(b + 1);
+            }
+        }
+    scene.meshes.push_back(m);
+}
+
+void writeGltf(const Scene& scene, const std::string& path) {
+    using nlohmann::json;
+    std::vector<uint8_t> buffer;
+    json accessors = json::array(), views = json::array(), meshes = json::array(),
+         nodes = json::array(), materials = json::array(), lights = json::array();
+    auto addView = [&](size_t offset, size_t bytes, int target) {
+        views.push_back(
+            {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}});
+        return views.size() - 1;
+    };
+    for (const SceneMesh& m : scene.meshes) {
+        glm::vec3 lo(1e30f), hi(-1e30f);
+        for (glm::vec3 p : m.positions) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        const size_t pos = addView(append(buffer, m.positions), m.positions.size() * 12, 34962);
+        const size_t nor = addView(append(buffer, m.normals), m.normals.size() * 12, 34962);
+        const size_t idx = addView(append(buffer, m.indices), m.indices.size() * 4, 34963);
+        accessors.push_back({{"bufferView", pos},
+                             {"componentType", 5126},
+                             {"count", m.positions.size()},
+                             {"type", "VEC3"},
+                             {"min", {lo.x, lo.y, lo.z}},
+                             {"max", {hi.x, hi.y, hi.z}}});
+        accessors.push_back({{"bufferView", nor},
+                             {"componentType", 5126},
+                             {"count", m.normals.size()},
+                             {"type", "VEC3"}});
+        accessors.push_back({{"bufferView", idx},
+                             {"componentType", 5125},
+                             {"count", m.indices.size()},
+                             {"type", "SCALAR"}});
+        const size_t a = accessors.size() - 3;
+        meshes.push_back({{"primitives",
+                           {{{"attributes", {{"POSITION", a}, {"NORMAL", a + 1}}},
+                             {"indices", a + 2},
+                             {"material", m.material}}}}});
+        json node = {{"mesh", meshes.size() - 1},
+                     {"name", "mesh" + std::to_string(meshes.size() - 1)}};
+        if (m.dynamic) node["extras"] = {{"onelight", {{"dynamic", true}}}};
+        nodes.push_back(node);
+    }
+    for (const SceneMaterial& m : scene.materials)
+        materials.push_back(
+            {{"pbrMetallicRoughness",
+              {{"baseColorFactor", {m.baseColor.x, m.baseColor.y, m.baseColor.z, m.baseColor.w}},
+               {"metallicFactor", m.metallic},
+               {"roughnessFactor", m.roughness}}}});
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const SceneLight& l = scene.lights[i];
+        static const char* const types[3] = {"directional", "point", "spot"};
+        json light = {{"type", types[l.type]},
+                      {"color", {l.color.x, l.color.y, l.color.z}},
+                      {"intensity", l.intensity}};
+        if (l.range > 0.0f) light["range"] = l.range;
+        if (l.type == 2)
+            light["spot"] = {{"innerConeAngle", l.innerCone}, {"outerConeAngle", l.outerCone}};
+        lights.push_back(light);
+        const glm::quat q = lightRotation(l.direction);
+        nodes.push_back({{"name", "light" + std::to_string(i)},
+                         {"translation", {l.position.x, l.position.y, l.position.z}},
+                         {"rotation", {q.x, q.y, q.z, q.w}},
+                         {"extensions", {{"KHR_lights_punctual", {{"light", i}}}}}});
+    }
+    json sceneNodes = json::array();
+    for (size_t i = 0; i < nodes.size(); ++i) sceneNodes.push_back(i);
+    json gltf = {{"asset", {{"version", "2.0"}}},
+                 {"scene", 0},
+                 {"scenes", {{{"nodes", sceneNodes}}}},
+                 {"nodes", nodes},
+                 {"meshes", meshes},
+                 {"materials", materials},
+                 {"accessors", accessors},
+                 {"bufferViews", views},
+                 {"buffers",
+                  {{{"byteLength", buffer.size()},
+                    {"uri", "data:application/octet-stream;base64," + base64(buffer)}}}}};
+    if (!scene.lights.empty()) {
+        gltf["extensionsUsed"] = {"KHR_lights_punctual"};
+        gltf["extensions"] = {{"KHR_lights_punctual", {{"lights", lights}}}};
+    }
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << gltf.dump();
+    if (!out) throw std::runtime_error(path + ": cannot write");
+}
+
+int compileLevel(const std::string& gltf, const std::string& package) {
+    const std::string command = std::string("'") + ONELIGHT_BAKE_PATH + "' compile '" + gltf +
+                                "' -o '" + package + "' > /dev/null";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+assets::LoadedLevel compileAndLoad(const std::string& gltf, const std::string& package) {
+    if (compileLevel(gltf, package) != 0)
+        throw std::runtime_error(gltf + ": onelight-bake compile failed");
+    assets::LoadedLevel level;
+    std::string error;
+    if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);
+    return level;
+}
+
+std::string outputDir() {
+    const std::string dir = ONELIGHT_TEST_OUTPUT_DIR;
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+RenderedFrame renderOnce(const assets::LoadedLevel& level, const render::RendererOptions& options,
+                         const render::FrameInputs& inputs, int frames) {
+    render::RenderDeviceFeatures features;
+    vk::Context ctx;
+    vk::createContext(ctx, render::renderContextOptions(features, {}));
+    RenderedFrame result;
+    {
+        render::Renderer renderer;
+        try {
+            render::createRenderer(renderer, ctx, level, options);
+            render::FrameOutput output;
+            output.readback = true;
+            for (int i = 0; i < frames; ++i)
+                result.stats = render::drawFrame(renderer, inputs, output);
+            result.frame = render::capturedFrame(renderer);
+            result.msaaInUse = render::rendererInfo(renderer).msaaInUse;
+        } catch (...) {
+            render::destroyRenderer(renderer);
+            vk::destroyContext(ctx);
+            throw;
+        }
+        render::destroyRenderer(renderer);
+    }
+    vk::destroyContext(ctx);
+    result.validationErrors = ctx.validationCounts.errors.load();
+    return result;
+}
+
+}  // namespace onelight::test

@@ -1,0 +1,77 @@
+// Small glTF levels written by tests and the benchmark (embedded buffers, KHR_lights_punctual),
+// compiled with onelight-bake and loaded as packages; plus helpers to render them in-process.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "assets/level_assets.hpp"
+#include "render/renderer.hpp"
+
+namespace onelight::test {
+
+struct SceneMaterial {
+    glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};
+    float metallic = 0.0f;
+    float roughness = 0.5f;
+};
+
+struct SceneMesh {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<uint32_t> indices;
+    uint32_t material = 0;
+    bool dynamic = false;  // extras.onelight.dynamic
+};
+
+struct SceneLight {
+    int type = 0;  // 0 directional (lux), 1 point (cd), 2 spot (cd)
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float range = 0.0f;  // 0 = unlimited (omitted)
+    float innerCone = 0.3f, outerCone = 0.6f;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way light travels
+};
+
+struct Scene {
+    std::vector<SceneMaterial> materials;
+    std::vector<SceneMesh> meshes;
+    std::vector<SceneLight> lights;
+};
+
+/// A quad in the plane y = height, facing +Y, of half size `half` around (cx, cz).
+void addFloor(Scene& scene, float cx, float cz, float half, float height, uint32_t material);
+
+/// An axis-aligned box (outward normals, 12 triangles).
+void addBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material, bool dynamic = false);
+
+/// A UV sphere of `rings` x `segments` quads.
+void addSphere(Scene& scene, glm::vec3 centre, float radius, uint32_t rings, uint32_t segments,
+               uint32_t material);
+
+/// Writes the scene as a .gltf with an embedded buffer. Throws on I/O failure.
+void writeGltf(const Scene& scene, const std::string& path);
+
+/// Runs `onelight-bake compile GLTF -o PACKAGE`; returns its exit code.
+int compileLevel(const std::string& gltf, const std::string& package);
+
+/// Compiles (when needed) and loads; throws std::runtime_error with the error line.
+assets::LoadedLevel compileAndLoad(const std::string& gltf, const std::string& package);
+
+/// A folder for a test's outputs under the build tree (created).
+std::string outputDir();
+
+/// One headless frame of `level`, read back.
+struct RenderedFrame {
+    render::CapturedFrame frame;
+    render::FrameStats stats;
+    uint32_t msaaInUse = 0;
+    uint32_t validationErrors = 0;
+};
+RenderedFrame renderOnce(const assets::LoadedLevel& level, const render::RendererOptions& options,
+                         const render::FrameInputs& inputs, int frames = 1);
+
+}  // namespace onelight::test
