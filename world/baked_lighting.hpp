@@ -52,3 +52,15 @@ inline uint64_t atlas_texel_offset(const CompiledLevel& level, uint32_t atlas) {
 }
 
 }  // namespace onelight::world
+
+namespace onelight::world {
+
+/// A texel as the four linear coefficients per channel of shaders/lighting.glsl's
+/// irradianceLinear (E(n) = max(0, c0 + c.n)): (E / w) (0.5, d). Exact, not a fit: the texel's
+/// reconstruction E (0.5 + n.d) / w is linear in n.
+inline glm::vec4 linear_irradiance_coefficients(const LightmapTexel& t, int channel) {
+    const float scale = t.irradiance[channel] / t.normal_weight;
+    return glm::vec4(0.5f * scale, scale * t.direction);
+}
+
+}  // namespace onelight::world

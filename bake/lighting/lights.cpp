@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "bake/lighting/light_math.hpp"
+#include "shading.hpp"
 
 namespace onelight::bake {
 
@@ -27,24 +27,19 @@ BakeLights make_bake_lights(const std::vector<world::Light>& level_lights, const
 }
 
 LightIncidence light_incidence(const BakeLight& light, const glm::vec3& position) {
+    // The runtime's own evaluation (shaders/lighting.glsl), so bake and runtime agree exactly.
     const world::Light& l = light.light;
+    const glsl::LightSample sample = glsl::evaluatePunctualLight(
+        static_cast<int>(l.type), l.color, l.intensity, l.range, l.position, l.direction,
+        light.cos_inner, light.cos_outer, position);
     LightIncidence out;
-    if (l.type == world::LightType::directional) {
-        out.direction = -l.direction;
-        out.distance = std::numeric_limits<float>::infinity();
-        out.irradiance = l.color * l.intensity;
-        return out;
-    }
-    const glm::vec3 offset = l.position - position;
-    const float distance = glm::length(offset);
-    out.distance = distance;
-    out.direction = distance > 0.0f ? offset / distance : glm::vec3(0.0f, 0.0f, 1.0f);
-    float e = glsl::pointIrradiance_InverseSquare(l.intensity, distance, l.range,
-                                                  std::max(light.radius, 1e-4f));
-    if (l.type == world::LightType::spot)
-        e *= glsl::spotCone_KHR(glm::dot(l.direction, -out.direction), light.cos_outer,
-                                light.cos_inner);
-    out.irradiance = l.color * (std::isfinite(e) ? e : 0.0f);
+    out.direction = sample.l;
+    out.distance = l.type == world::LightType::directional
+                       ? std::numeric_limits<float>::infinity()
+                       : sample.distance;
+    const glm::vec3 e = sample.illuminance;
+    const bool finite = std::isfinite(e.x) && std::isfinite(e.y) && std::isfinite(e.z);
+    out.irradiance = finite ? glm::max(e, glm::vec3(0.0f)) : glm::vec3(0.0f);
     return out;
 }
 

@@ -1,6 +1,7 @@
 // Light evaluation in physical units for the baker and the reference path tracer: glTF
 // directional lights in lux, point and spot lights in candela with inverse-square falloff and
-// the KHR_lights_punctual cone (bake/lighting/punctual.glsl), a uniform sky in cd/m^2, and the
+// the KHR_lights_punctual cone (evaluatePunctualLight of shaders/lighting.glsl, shared with the
+// runtime), a uniform sky in cd/m^2, and the
 // visibility of a light of finite size (a sphere for point/spot, a cone of directions for the
 // sun) by shadow rays.
 #pragma once

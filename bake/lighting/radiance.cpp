@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bake/lighting/light_math.hpp"
+#include "shading.hpp"
 
 namespace onelight::bake {
 namespace {

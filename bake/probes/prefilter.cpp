@@ -33,17 +33,28 @@ void frame(glm::vec3 n, glm::vec3& t, glm::vec3& b) {
 
 }  // namespace
 
+int prefilterSampleCount(float alpha, int sourceSize, const PrefilterOptions& options) {
+    // GGX: P(tan^2 theta_h <= x) = x / (alpha^2 + x), so 90% of the half vectors lie within
+    // tan^2 = 9 alpha^2; the reflected directions spread over twice that angle.
+    float thetaH = std::atan(3.0f * alpha);
+    float lobeSolidAngle = 2.0f * glsl::PI * (1.0f - std::cos(std::min(2.0f * thetaH, glsl::PI / 2)));
+    float texel = 4.0f * glsl::PI / (6.0f * float(sourceSize) * float(sourceSize));
+    float wanted = std::ceil(4.0f * lobeSolidAngle / texel);
+    return int(std::clamp(wanted, float(options.samplesPerTexel), float(options.maxSamplesPerTexel)));
+}
+
 Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options) {
     downsampleMips(radiance);
     Cubemap out = makeCubemap(radiance.mips[0].size);
     out.mips[0] = radiance.mips[0];
-    const int n = options.samplesPerTexel, mipCount = out.mipCount();
+    const int mipCount = out.mipCount();
     const float baseTexelSolidAngle = 4.0f * glsl::PI / (6.0f * float(radiance.mips[0].size) *
                                                          float(radiance.mips[0].size));
     for (int m = 1; m < mipCount; ++m) {
         CubeMip& dst = out.mips[m];
         float alpha = glsl::ggxAlpha_fromGloss(glsl::probeGlossOfMip(m, mipCount));
         float a2 = alpha * alpha;
+        const int n = prefilterSampleCount(alpha, radiance.mips[0].size, options);
         tbb::parallel_for(0, 6 * dst.size, [&](int row) {
             int face = row / dst.size, y = row % dst.size;
             for (int x = 0; x < dst.size; ++x) {
@@ -65,10 +76,7 @@ Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options) {
                     // pdf(l) = D(h) NoH / (4 VoH) = D(h) / 4 with n = v = r.
                     float D = glsl::D_GGX(sinH * sinH, alpha);
                     float sampleSolidAngle = 4.0f / (float(n) * D);
-                    float lod = options.filtered ? 0.5f * std::log2(sampleSolidAngle /
-                                                                     baseTexelSolidAngle) +
-                                                       options.lodBias
-                                                 : 0.0f;
+                    float lod = 0.5f * std::log2(sampleSolidAngle / baseTexelSolidAngle);
                     sum += sampleTrilinear(radiance, l, lod) * NoL;
                     weight += NoL;
                 }
@@ -93,7 +101,7 @@ glm::vec3 prefilteredReference(const Cubemap& radiance, glm::vec3 r, float alpha
                 glm::vec3 c = glm::cross(r, h);
                 double w = double(glsl::D_GGX(glm::dot(c, c), alpha)) * NoL *
                            double(texelSolidAngle(x, y, fine));
-                const glm::vec3& L = src.at(face, x / subdivisions, y / subdivisions);
+                glm::vec3 L = sampleBilinear(src, l);
                 for (int i = 0; i < 3; ++i) sum[i] += w * double(L[i]);
                 weight += w;
             }

@@ -9,10 +9,16 @@
 namespace onelight::bake {
 
 struct PrefilterOptions {
-    int samplesPerTexel = 512;  // GGX importance samples per output texel (Hammersley)
-    float lodBias = 1.0f;       // added to the filtered-importance-sampling mip
-    bool filtered = true;       // filtered importance sampling (false: always read mip 0)
+    // GGX importance samples per output texel (Hammersley): at least this many, and at least
+    // 4 per source texel under the lobe (4 * solid angle holding 90% of the lobe / solid angle
+    // of a source texel), so that a source smaller than the lobe is never missed.
+    int samplesPerTexel = 256;
+    int maxSamplesPerTexel = 65536;
 };
+
+// The samples per texel that prefilterGGX uses for a lobe of `alpha` over a source of face
+// size `sourceSize`.
+int prefilterSampleCount(float alpha, int sourceSize, const PrefilterOptions& options);
 
 // Karis 2013 ("Real Shading in Unreal Engine 4", split-sum prefilter) with the n = v = r
 // assumption: for a texel of direction r and lobe alpha,
@@ -20,15 +26,15 @@ struct PrefilterOptions {
 // estimated with l drawn by sampling h ~ D(h) NoH (pdf(l) = D / 4 since NoH = VoH):
 //   L(r) ~= sum L(l_k) NoL_k / sum NoL_k.
 // Each sample reads the source at the mip whose texel solid angle matches the sample's
-// (Krivanek and Colbert 2008, filtered importance sampling), which removes the noise of
-// undersampling small bright sources without blurring more than the lobe does.
+// (Krivanek and Colbert 2008, filtered importance sampling, no bias), which removes the noise
+// of undersampling small bright sources without blurring more than the lobe does.
 // `radiance` needs mip 0 filled; its mips are rebuilt. The result has the same mip count;
 // mip 0 (gloss 1, alpha 0.0028) is a copy, its lobe being narrower than a texel.
 Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options = {});
 
-// The reference for tests: the same integral summed over every texel of `radiance`'s mip 0
-// (each split into `subdivisions`^2 parts), for direction r and GGX alpha. Exact up to the
-// texel quadrature; slow.
+// The reference for tests: the same integral by brute-force quadrature over the whole sphere,
+// of `radiance`'s mip 0 read bilinearly as the prefilter reads it, at `subdivisions`^2 points
+// per source texel (choose them finer than alpha). Slow.
 glm::vec3 prefilteredReference(const Cubemap& radiance, glm::vec3 r, float alpha,
                                int subdivisions);
 
