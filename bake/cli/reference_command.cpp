@@ -1,0 +1,116 @@
+// onelight-bake reference LEVEL.gltf --camera NAME [--size WxH] --spp N -o out.exr
+//     [--sky CD_PER_M2] [--threads N]
+// The path-traced ground truth of a camera's view: linear radiance in cd/m^2, every light at
+// full strength, no exposure, no tonemap.
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <string>
+
+#include <tbb/global_control.h>
+
+#include "bake/cli/subcommands.hpp"
+#include "bake/reference/path_tracer.hpp"
+#include "world/compile/static_split.hpp"
+#include "world/error.hpp"
+#include "world/import/gltf_import.hpp"
+
+namespace onelight::bake {
+namespace {
+constexpr const char* kUsage =
+    "usage: onelight-bake reference LEVEL.gltf --camera NAME [--size WxH] --spp N -o OUT.exr "
+    "[--sky CD_PER_M2] [--threads N]";
+}  // namespace
+
+int run_reference_command(const std::vector<std::string>& arguments) {
+    std::string input, output, camera_name;
+    uint32_t width = 0, height = 0, spp = 0;
+    int threads = 0;
+    float sky = 0.0f;
+    try {
+        for (size_t i = 0; i < arguments.size(); ++i) {
+            const std::string& a = arguments[i];
+            const bool has_value = i + 1 < arguments.size();
+            if (a == "-o" && has_value) {
+                output = arguments[++i];
+            } else if (a == "--camera" && has_value) {
+                camera_name = arguments[++i];
+            } else if (a == "--size" && has_value) {
+                const std::string s = arguments[++i];
+                const size_t x = s.find('x');
+                if (x == std::string::npos) throw std::invalid_argument("--size " + s);
+                width = static_cast<uint32_t>(std::stoul(s.substr(0, x)));
+                height = static_cast<uint32_t>(std::stoul(s.substr(x + 1)));
+                if (width == 0 || height == 0 || width > 16384 || height > 16384)
+                    throw std::invalid_argument("--size " + s);
+            } else if (a == "--spp" && has_value) {
+                spp = static_cast<uint32_t>(std::stoul(arguments[++i]));
+            } else if (a == "--threads" && has_value) {
+                threads = std::stoi(arguments[++i]);
+            } else if (a == "--sky" && has_value) {
+                sky = std::stof(arguments[++i]);
+                if (!(sky >= 0.0f) || !std::isfinite(sky)) throw std::invalid_argument("--sky");
+            } else if (!a.empty() && a[0] != '-' && input.empty()) {
+                input = a;
+            } else {
+                throw std::invalid_argument("unexpected argument '" + a + "'");
+            }
+        }
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "onelight-bake reference: bad argument (%s)\n%s\n", e.what(), kUsage);
+        return 2;
+    }
+    if (input.empty() || output.empty() || camera_name.empty() || spp == 0) {
+        std::fprintf(stderr, "%s\n", kUsage);
+        return 2;
+    }
+    std::unique_ptr<tbb::global_control> limit;
+    if (threads > 0)
+        limit = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
+    try {
+        const world::SourceLevel source = world::import_gltf(input);
+        const world::Camera* camera = nullptr;
+        for (const world::Camera& c : source.cameras)
+            if (c.name == camera_name) camera = &c;
+        if (!camera) {
+            std::string names;
+            for (const world::Camera& c : source.cameras) names += " " + c.name;
+            std::fprintf(stderr, "onelight-bake: error: %s: no camera named '%s' (cameras:%s)\n",
+                         input.c_str(), camera_name.c_str(), names.empty() ? " none" : names.c_str());
+            return 1;
+        }
+        if (width == 0) {
+            height = 720;
+            width = camera->aspect_ratio > 0.0f
+                        ? static_cast<uint32_t>(std::lround(720.0f * camera->aspect_ratio))
+                        : 1280;
+        }
+        const EmbreeDevice device;
+        const world::SplitLevel split = world::split_static_dynamic(source);
+        const BakeScene scene(device, split.static_geometry, source.materials);
+        const BakeLights lights = make_bake_lights(source.lights, LightSizes{}, glm::vec3(sky));
+        RayCounts rays;
+        Progress progress("reference", height, true);
+        const ReferenceImage image =
+            render_reference(scene, lights, *camera, width, height, spp, {}, &progress, rays);
+        progress.finish();
+        const std::string error = write_exr(output, image);
+        if (!error.empty()) {
+            std::fprintf(stderr, "onelight-bake: error: %s\n", error.c_str());
+            return 1;
+        }
+        std::printf("reference %s: %ux%u, %u spp, %llu rays, %.2f Mrays/s\n", output.c_str(),
+                    width, height, spp, static_cast<unsigned long long>(rays.total()),
+                    double(rays.total()) / progress.seconds() * 1e-6);
+        return 0;
+    } catch (const world::CompileError& e) {
+        std::fprintf(stderr, "onelight-bake: error: %s\n", e.what());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "onelight-bake: error: %s: %s\n", input.c_str(), e.what());
+    }
+    return 1;
+}
+
+}  // namespace onelight::bake
