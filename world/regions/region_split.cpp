@@ -4,14 +4,18 @@
 #include <map>
 #include <tuple>
 
+// OpenMesh default-constructs vector properties uninitialised by design; GCC's
+// -Wmaybe-uninitialized flags that inside its headers under the sanitizers.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#pragma GCC diagnostic pop
 
 namespace onelight::world {
 namespace {
 
 struct RegionTraits : OpenMesh::DefaultTraits {
     using Point = OpenMesh::Vec3d;
-    using Normal = OpenMesh::Vec3d;
 };
 using RegionMesh = OpenMesh::TriMesh_ArrayKernelT<RegionTraits>;
 
