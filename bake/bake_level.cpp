@@ -37,10 +37,14 @@ const char* quality_name(BakeQuality quality) {
 }
 
 bool parse_quality(const std::string& text, BakeQuality& quality) {
-    if (text == "draft") quality = BakeQuality::draft;
-    else if (text == "default") quality = BakeQuality::normal;
-    else if (text == "high") quality = BakeQuality::high;
-    else return false;
+    if (text == "draft")
+        quality = BakeQuality::draft;
+    else if (text == "default")
+        quality = BakeQuality::normal;
+    else if (text == "high")
+        quality = BakeQuality::high;
+    else
+        return false;
     return true;
 }
 
@@ -86,8 +90,7 @@ ShardRange shard_range(uint64_t texels, uint64_t cells, uint32_t index, uint32_t
 BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& options) {
     if (options.shard_count == 0 || options.shard_index >= options.shard_count)
         throw std::runtime_error("shard " + std::to_string(options.shard_index) + "/" +
-                                 std::to_string(options.shard_count) +
-                                 "; expected index < count");
+                                 std::to_string(options.shard_count) + "; expected index < count");
     BakeResult result;
     BakeReport& report = result.report;
     report.level = source.source_path;
@@ -129,8 +132,8 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
     const std::vector<TexelSample> samples = place_texels(level);
     const uint64_t texel_count = total_texels(level);
     world::LightGrid grid = layout_light_grid(level, grid_settings(options));
-    const ShardRange range = shard_range(texel_count, grid.cells.size(), options.shard_index,
-                                         options.shard_count);
+    const ShardRange range =
+        shard_range(texel_count, grid.cells.size(), options.shard_index, options.shard_count);
     world::BakedLighting& baked = result.baked;
     baked.texels.assign(texel_count, world::LightmapTexel{});
     baked.shadow_mask.assign(texel_count, 0);
@@ -146,8 +149,8 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
             bake_lightmap_texels(scene, lights, level, samples, lm, range.texel_begin,
                                  range.texel_end, baked, &progress);
         progress.finish();
-        report.stages.push_back({"lightmaps", seconds_since(start), stats.rays,
-                                 stats.texels_baked});
+        report.stages.push_back(
+            {"lightmaps", seconds_since(start), stats.rays, stats.texels_baked});
         report.texels_sampled = stats.texels_baked;
         report.texels_moved = stats.texels_moved;
         report.lightmap_mean_relative_noise = stats.mean_relative_noise;
@@ -161,8 +164,8 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
     {
         const GridSettings gs = grid_settings(options);
         Progress progress("grid", range.cell_end - range.cell_begin, options.show_progress);
-        const GridStats stats = bake_light_grid(scene, lights, gs, range.cell_begin,
-                                                range.cell_end, grid, &progress);
+        const GridStats stats =
+            bake_light_grid(scene, lights, gs, range.cell_begin, range.cell_end, grid, &progress);
         progress.finish();
         report.stages.push_back({"grid", seconds_since(start), stats.rays, stats.cells_baked});
         report.grid_cells = grid.cells.size();
@@ -198,8 +201,7 @@ std::string merge_baked_lighting(const world::CompiledLevel& level,
     for (const world::BakedLighting& p : parts) {
         if (p.shard_count != count || p.shard_index >= count)
             return "merge: a part is shard " + std::to_string(p.shard_index) + "/" +
-                   std::to_string(p.shard_count) + "; expected a part of " +
-                   std::to_string(count);
+                   std::to_string(p.shard_count) + "; expected a part of " + std::to_string(count);
         if (by_index[p.shard_index])
             return "merge: shard " + std::to_string(p.shard_index) + " given twice";
         if (p.texels.size() != texels || p.shadow_mask.size() != texels ||

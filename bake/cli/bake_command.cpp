@@ -95,8 +95,8 @@ int run_bake_command(const std::vector<std::string>& arguments) {
     if (output.empty()) output = std::filesystem::path(input).replace_extension(".olpak").string();
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0)
-        limit = std::make_unique<tbb::global_control>(
-            tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      static_cast<size_t>(threads));
     try {
         const world::SourceLevel source = world::import_gltf(input);
         BakeResult result = bake_level(source, options);

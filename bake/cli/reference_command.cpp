@@ -67,8 +67,8 @@ int run_reference_command(const std::vector<std::string>& arguments) {
     }
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0)
-        limit = std::make_unique<tbb::global_control>(
-            tbb::global_control::max_allowed_parallelism, static_cast<size_t>(threads));
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      static_cast<size_t>(threads));
     try {
         const world::SourceLevel source = world::import_gltf(input);
         const world::Camera* camera = nullptr;
@@ -78,7 +78,8 @@ int run_reference_command(const std::vector<std::string>& arguments) {
             std::string names;
             for (const world::Camera& c : source.cameras) names += " " + c.name;
             std::fprintf(stderr, "onelight-bake: error: %s: no camera named '%s' (cameras:%s)\n",
-                         input.c_str(), camera_name.c_str(), names.empty() ? " none" : names.c_str());
+                         input.c_str(), camera_name.c_str(),
+                         names.empty() ? " none" : names.c_str());
             return 1;
         }
         if (width == 0) {
@@ -101,8 +102,8 @@ int run_reference_command(const std::vector<std::string>& arguments) {
             std::fprintf(stderr, "onelight-bake: error: %s\n", error.c_str());
             return 1;
         }
-        std::printf("reference %s: %ux%u, %u spp, %llu rays, %.2f Mrays/s\n", output.c_str(),
-                    width, height, spp, static_cast<unsigned long long>(rays.total()),
+        std::printf("reference %s: %ux%u, %u spp, %llu rays, %.2f Mrays/s\n", output.c_str(), width,
+                    height, spp, static_cast<unsigned long long>(rays.total()),
                     double(rays.total()) / progress.seconds() * 1e-6);
         return 0;
     } catch (const world::CompileError& e) {

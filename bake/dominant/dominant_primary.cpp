@@ -16,9 +16,8 @@ world::PrimaryIlluminanceFn make_shadowed_primary_illuminance(const BakeScene& s
     std::vector<const BakeLight*> primaries;
     for (const BakeLight& l : lights.lights)
         if (l.light.role == world::LightRole::primary) primaries.push_back(&l);
-    return [&scene, primaries, shadow_samples, rays](const glm::dvec3& position,
-                                                      const glm::vec3& normal,
-                                                      std::span<double> illuminance) {
+    return [&scene, primaries, shadow_samples, rays](
+               const glm::dvec3& position, const glm::vec3& normal, std::span<double> illuminance) {
         const glm::vec3 p(position);
         Rng rng{seed_from(std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y),
                           std::bit_cast<uint32_t>(p.z), kDominantPass)};

@@ -28,9 +28,13 @@ EmbreeDevice::EmbreeDevice() {
     rtcSetDeviceErrorFunction(device_, &EmbreeDevice::on_error, this);
 }
 
-EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
+EmbreeDevice::~EmbreeDevice() {
+    rtcReleaseDevice(device_);
+}
 
-std::string EmbreeDevice::last_error() const { return last_error_; }
+std::string EmbreeDevice::last_error() const {
+    return last_error_;
+}
 
 void EmbreeDevice::on_error(void* user, RTCError code, const char* message) {
     auto* self = static_cast<EmbreeDevice*>(user);
@@ -81,9 +85,9 @@ void BakeScene::build(const EmbreeDevice& device) {
         }
     }
     if (triangle_count == 0) bounds_min_ = bounds_max_ = glm::vec3(0.0f);
-    const float magnitude = std::max(glm::length(glm::max(glm::abs(bounds_min_),
-                                                          glm::abs(bounds_max_))),
-                                     glm::length(bounds_max_ - bounds_min_));
+    const float magnitude =
+        std::max(glm::length(glm::max(glm::abs(bounds_min_), glm::abs(bounds_max_))),
+                 glm::length(bounds_max_ - bounds_min_));
     ray_offset_ = std::max(kMinimumRayOffset, kSelfIntersectionScale * magnitude);
     diameter_ = std::max(1.0f, 2.0f * glm::length(bounds_max_ - bounds_min_));
 
@@ -92,17 +96,17 @@ void BakeScene::build(const EmbreeDevice& device) {
     if (triangle_count > 0) {
         RTCGeometry mesh = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
         // Embree reads 16 bytes at the last vertex: the shared buffer gets one float of slack.
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-            mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-            positions_.size()));
+        auto* vertices = static_cast<float*>(
+            rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                    3 * sizeof(float), positions_.size()));
         for (size_t i = 0; i < positions_.size(); ++i) {
             vertices[3 * i] = positions_[i].x;
             vertices[3 * i + 1] = positions_[i].y;
             vertices[3 * i + 2] = positions_[i].z;
         }
-        auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
-            triangle_count));
+        auto* triangles = static_cast<uint32_t*>(
+            rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(uint32_t), triangle_count));
         std::copy(indices_.begin(), indices_.end(), triangles);
         rtcCommitGeometry(mesh);
         rtcAttachGeometry(scene_, mesh);
@@ -112,7 +116,9 @@ void BakeScene::build(const EmbreeDevice& device) {
     if (!device.last_error().empty()) throw std::runtime_error(device.last_error());
 }
 
-BakeScene::~BakeScene() { rtcReleaseScene(scene_); }
+BakeScene::~BakeScene() {
+    rtcReleaseScene(scene_);
+}
 
 const world::Material& BakeScene::material_of(uint32_t triangle) const {
     const uint32_t m = triangle_material_[triangle];
@@ -124,8 +130,8 @@ size_t BakeScene::memory_bytes() const {
            triangle_normal_.size() * sizeof(glm::vec3) + triangle_material_.size() * 4;
 }
 
-SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir,
-                                float max_distance, uint64_t& counter) const {
+SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, float max_distance,
+                                uint64_t& counter) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit query;

@@ -37,9 +37,9 @@ private:
 
 /// Ray counts by kind, per thread, summed when a stage ends (integer sums: order-free).
 struct RayCounts {
-    uint64_t shadow = 0;    // rtcOccluded1 towards lights
-    uint64_t bounce = 0;    // rtcIntersect1 of indirect paths (and camera rays)
-    uint64_t probe = 0;     // rtcIntersect1 that look for geometry around a sample point
+    uint64_t shadow = 0;  // rtcOccluded1 towards lights
+    uint64_t bounce = 0;  // rtcIntersect1 of indirect paths (and camera rays)
+    uint64_t probe = 0;   // rtcIntersect1 that look for geometry around a sample point
     RayCounts& operator+=(const RayCounts& o) {
         shadow += o.shadow;
         bounce += o.bounce;
@@ -52,11 +52,11 @@ struct RayCounts {
 /// What a ray found.
 struct SurfaceHit {
     bool found = false;
-    float distance = 0.0f;        // metres along the unit ray direction
-    uint32_t triangle = 0;        // into BakeScene triangles
-    glm::vec3 position{0.0f};     // metres, world
-    glm::vec3 normal{0.0f};       // unit geometric normal of the front face (winding order)
-    bool back_face = false;       // the ray arrived on the side opposite `normal`
+    float distance = 0.0f;     // metres along the unit ray direction
+    uint32_t triangle = 0;     // into BakeScene triangles
+    glm::vec3 position{0.0f};  // metres, world
+    glm::vec3 normal{0.0f};    // unit geometric normal of the front face (winding order)
+    bool back_face = false;    // the ray arrived on the side opposite `normal`
 };
 
 /// The static world in Embree, plus the per-triangle data hits are shaded with.
@@ -96,9 +96,9 @@ private:
 
     RTCScene scene_ = nullptr;  // owned
     std::vector<glm::vec3> positions_;
-    std::vector<uint32_t> indices_;             // 3 per triangle
-    std::vector<glm::vec3> triangle_normal_;    // unit, from the winding
-    std::vector<uint32_t> triangle_material_;   // into materials_
+    std::vector<uint32_t> indices_;            // 3 per triangle
+    std::vector<glm::vec3> triangle_normal_;   // unit, from the winding
+    std::vector<uint32_t> triangle_material_;  // into materials_
     std::vector<world::Material> materials_;
     world::Material default_material_;
     glm::vec3 bounds_min_{0.0f}, bounds_max_{0.0f};

@@ -100,8 +100,7 @@ GridStats bake_light_grid(const BakeScene& scene, const BakeLights& lights,
             const uint32_t x = static_cast<uint32_t>(i % grid.dims.x);
             const uint32_t y = static_cast<uint32_t>((i / grid.dims.x) % grid.dims.y);
             const uint32_t z = static_cast<uint32_t>(i / (uint64_t(grid.dims.x) * grid.dims.y));
-            const glm::vec3 centre =
-                grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cell_size;
+            const glm::vec3 centre = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cell_size;
             grid.cells[i] =
                 bake_cell(scene, lights, settings, centre, static_cast<uint32_t>(i), local);
         }

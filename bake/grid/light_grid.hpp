@@ -14,11 +14,11 @@
 namespace onelight::bake {
 
 struct GridSettings {
-    float cell_size = 1.0f;               // metres, requested
-    uint32_t max_cells_per_axis = 64;     // cells grow past cell_size to stay under this
-    uint32_t samples = 256;               // sphere directions per cell
-    uint32_t shadow_samples = 16;         // per light per cell
-    float inside_fraction = 0.5f;         // back-face hits above this fraction: inside solid
+    float cell_size = 1.0f;            // metres, requested
+    uint32_t max_cells_per_axis = 64;  // cells grow past cell_size to stay under this
+    uint32_t samples = 256;            // sphere directions per cell
+    uint32_t shadow_samples = 16;      // per light per cell
+    float inside_fraction = 0.5f;      // back-face hits above this fraction: inside solid
     TransportSettings transport;
 };
 

@@ -17,8 +17,8 @@ BakeLights make_bake_lights(const std::vector<world::Light>& level_lights, const
         BakeLight b;
         b.light = l;
         b.level_index = static_cast<uint32_t>(i);
-        b.radius = l.type == world::LightType::directional ? sizes.sun_angular_radius
-                                                            : sizes.point_radius;
+        b.radius =
+            l.type == world::LightType::directional ? sizes.sun_angular_radius : sizes.point_radius;
         b.cos_outer = std::cos(l.outer_cone);
         b.cos_inner = std::cos(l.inner_cone);
         out.lights.push_back(b);
@@ -34,9 +34,8 @@ LightIncidence light_incidence(const BakeLight& light, const glm::vec3& position
         light.cos_inner, light.cos_outer, position);
     LightIncidence out;
     out.direction = sample.l;
-    out.distance = l.type == world::LightType::directional
-                       ? std::numeric_limits<float>::infinity()
-                       : sample.distance;
+    out.distance = l.type == world::LightType::directional ? std::numeric_limits<float>::infinity()
+                                                           : sample.distance;
     const glm::vec3 e = sample.illuminance;
     const bool finite = std::isfinite(e.x) && std::isfinite(e.y) && std::isfinite(e.z);
     out.irradiance = finite ? glm::max(e, glm::vec3(0.0f)) : glm::vec3(0.0f);

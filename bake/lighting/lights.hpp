@@ -20,7 +20,7 @@ namespace onelight::bake {
 /// Light sizes: glTF lights are punctual, shadows need a size. Until the level format carries
 /// one per light, these apply to every light.
 struct LightSizes {
-    float point_radius = 0.05f;          // metres: sphere radius of point and spot lights
+    float point_radius = 0.05f;           // metres: sphere radius of point and spot lights
     float sun_angular_radius = 0.00465f;  // radians: the sun's (0.27 degrees)
 };
 

@@ -68,9 +68,10 @@ glm::vec3 trace_radiance(const BakeScene& scene, const BakeLights& lights,
         const glm::vec3 next = glm::normalize(frame_around(n).to_world(local));
         glm::vec3 weight = material.albedo;
         if (local.z > 1e-6f)
-            weight += kPi / local.z * glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
-                                                         material.specular_color, material.gloss,
-                                                         glsl::brdfDots(n, v, next));
+            weight += kPi / local.z *
+                      glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
+                                         material.specular_color, material.gloss,
+                                         glsl::brdfDots(n, v, next));
         throughput *= weight;
         if (depth + 1 >= settings.roulette_depth) {
             const float q = std::min(0.95f, std::max({throughput.x, throughput.y, throughput.z}));

@@ -21,7 +21,7 @@ inline constexpr int kShadingVis = 3;      // VIS_SMITH_CORRELATED
 inline constexpr int kShadingFresnel = 1;  // FRESNEL_SCHLICK
 
 struct TransportSettings {
-    uint32_t max_depth = 64;  // surface hits per path; Russian roulette ends most far earlier
+    uint32_t max_depth = 64;      // surface hits per path; Russian roulette ends most far earlier
     uint32_t roulette_depth = 2;  // hits after which Russian roulette starts
 };
 

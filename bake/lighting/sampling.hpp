@@ -103,6 +103,8 @@ inline glm::vec3 sample_uniform_cone(glm::vec2 u, float one_minus_cos_max) {
 }
 
 /// Rec. 709 luminance of linear RGB.
-inline float luminance(const glm::vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+inline float luminance(const glm::vec3& c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
 }  // namespace onelight::bake

@@ -59,7 +59,7 @@ glm::vec3 move_out_of_geometry(const BakeScene& scene, const glm::vec3& origin,
 */
 struct TexelEstimate {
     glm::vec3 origin{0.0f};  // where the rays started (moved out of geometry if needed)
-    glm::dvec3 direct{0.0}, indirect{0.0};                  // lux
+    glm::dvec3 direct{0.0}, indirect{0.0};                      // lux
     glm::dvec3 direct_direction{0.0}, indirect_direction{0.0};  // sum Y(E) w
     double direct_luminance = 0.0, indirect_luminance = 0.0;
     double noise = 0.0;  // luminance standard error of the indirect part
@@ -103,10 +103,10 @@ TexelEstimate estimate_texel(const BakeScene& scene, const BakeLights& lights,
         const float s0 = rng.next(), s1 = rng.next();
         double sum_y2 = 0.0;
         for (uint32_t i = 0; i < count; ++i) {
-            const glm::vec3 w = glm::normalize(frame.to_world(
-                sample_cosine_hemisphere(rotated_hammersley(i, count, s0, s1))));
-            const glm::vec3 e = kPi * trace_radiance(scene, lights, settings.transport, origin,
-                                                     w, rng, rays);
+            const glm::vec3 w = glm::normalize(
+                frame.to_world(sample_cosine_hemisphere(rotated_hammersley(i, count, s0, s1))));
+            const glm::vec3 e =
+                kPi * trace_radiance(scene, lights, settings.transport, origin, w, rng, rays);
             const double y = luminance(e);
             out.indirect += glm::dvec3(e);
             out.indirect_direction += y * glm::dvec3(w);
@@ -154,7 +154,8 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
     tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 16), [&](const auto& range) {
         RayCounts& local = rays.local();
         for (size_t i = range.begin(); i != range.end(); ++i)
-            estimates[i - begin] = estimate_texel(scene, lights, level, samples[i], settings, local);
+            estimates[i - begin] =
+                estimate_texel(scene, lights, level, samples[i], settings, local);
         if (progress) progress->advance(range.size());
     });
 
@@ -207,10 +208,10 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
             world::LightmapTexel t;
             const double luminance_sum = e.direct_luminance + indirect_luminance;
             t.irradiance = glm::max(glm::vec3(e.direct + indirect), glm::vec3(0.0f));
-            t.direction = luminance_sum > 0.0
-                              ? glm::vec3(0.5 * (e.direct_direction + indirect_direction) /
-                                          luminance_sum)
-                              : glm::vec3(0.0f);
+            t.direction =
+                luminance_sum > 0.0
+                    ? glm::vec3(0.5 * (e.direct_direction + indirect_direction) / luminance_sum)
+                    : glm::vec3(0.0f);
             if (glm::length(t.direction) > 0.5f) t.direction *= 0.5f / glm::length(t.direction);
             t.normal_weight = std::clamp(0.5f + glm::dot(s.normal, t.direction), 0.5f, 1.0f);
             t.flags = 1u;  // sampled

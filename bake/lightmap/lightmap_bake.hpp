@@ -23,8 +23,8 @@ struct LightmapSettings {
 struct LightmapStats {
     RayCounts rays;
     uint64_t texels_baked = 0;
-    uint64_t texels_moved = 0;          // sample points moved out of geometry
-    double mean_relative_noise = 0.0;   // estimated standard error / value, luminance-weighted
+    uint64_t texels_moved = 0;         // sample points moved out of geometry
+    double mean_relative_noise = 0.0;  // estimated standard error / value, luminance-weighted
 };
 
 /// Bakes the texels of `samples` whose global index is in [texel_begin, texel_end) into

@@ -78,12 +78,12 @@ std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
                                          static_cast<int>(std::floor(lo.x)));
             const int y0 = std::max<int>(static_cast<int>(surface.lightmap_y),
                                          static_cast<int>(std::floor(lo.y)));
-            const int x1 = std::min<int>(
-                static_cast<int>(surface.lightmap_x + surface.lightmap_width) - 1,
-                static_cast<int>(std::floor(hi.x)));
-            const int y1 = std::min<int>(
-                static_cast<int>(surface.lightmap_y + surface.lightmap_height) - 1,
-                static_cast<int>(std::floor(hi.y)));
+            const int x1 =
+                std::min<int>(static_cast<int>(surface.lightmap_x + surface.lightmap_width) - 1,
+                              static_cast<int>(std::floor(hi.x)));
+            const int y1 =
+                std::min<int>(static_cast<int>(surface.lightmap_y + surface.lightmap_height) - 1,
+                              static_cast<int>(std::floor(hi.y)));
             for (int y = y0; y <= y1; ++y) {
                 for (int x = x0; x <= x1; ++x) {
                     const glm::dvec2 centre(x + 0.5, y + 0.5);
@@ -129,9 +129,9 @@ std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
                 sample.position = glm::vec3(b.x * p0 + b.y * p1 + b.z * p2);
                 const double length = glm::length(cross);
                 sample.normal = length > 0.0 ? glm::vec3(cross / length) : v[0]->normal;
-                sample.texel_size =
-                    texel_area > 0.0 ? static_cast<float>(std::sqrt(world_area / texel_area))
-                                     : 0.0f;
+                sample.texel_size = texel_area > 0.0
+                                        ? static_cast<float>(std::sqrt(world_area / texel_area))
+                                        : 0.0f;
                 sample.centre_inside = inside;
                 samples.push_back(sample);
             }

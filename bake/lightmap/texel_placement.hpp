@@ -16,12 +16,12 @@
 namespace onelight::bake {
 
 struct TexelSample {
-    uint64_t texel = 0;        // global index (atlases in order, row-major)
+    uint64_t texel = 0;  // global index (atlases in order, row-major)
     uint32_t atlas = 0, x = 0, y = 0;
-    uint32_t surface = 0;      // into CompiledLevel::surfaces
-    glm::vec3 position{0.0f};  // metres, world, on the surface
-    glm::vec3 normal{0.0f};    // unit geometric normal of the triangle (winding)
-    float texel_size = 0.0f;   // metres: edge of the texel's footprint on the surface
+    uint32_t surface = 0;        // into CompiledLevel::surfaces
+    glm::vec3 position{0.0f};    // metres, world, on the surface
+    glm::vec3 normal{0.0f};      // unit geometric normal of the triangle (winding)
+    float texel_size = 0.0f;     // metres: edge of the texel's footprint on the surface
     bool centre_inside = false;  // the texel centre lies inside the triangle
 };
 

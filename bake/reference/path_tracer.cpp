@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include <glm/gtc/quaternion.hpp>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <glm/gtc/quaternion.hpp>
 
 #include "bake/lighting/sampling.hpp"
 
@@ -60,9 +60,8 @@ ReferenceImage render_reference(const BakeScene& scene, const BakeLights& lights
 }
 
 glm::vec3 reference_irradiance(const BakeScene& scene, const BakeLights& lights,
-                               const glm::vec3& position, const glm::vec3& normal,
-                               uint32_t samples, uint32_t seed,
-                               const TransportSettings& transport, RayCounts& rays) {
+                               const glm::vec3& position, const glm::vec3& normal, uint32_t samples,
+                               uint32_t seed, const TransportSettings& transport, RayCounts& rays) {
     Rng rng{seed_from(seed, 0, 0, kReferenceIrradiancePass)};
     const glm::vec3 origin = position + normal * scene.ray_offset();
     glm::dvec3 e(0.0);

@@ -28,15 +28,16 @@ std::string report_json(const BakeReport& r) {
     for (const StageReport& s : r.stages) {
         seconds += s.seconds;
         all += s.rays;
-        stages.push_back({{"name", s.name},
-                          {"seconds", s.seconds},
-                          {"items", s.items},
-                          {"rays", {{"shadow", s.rays.shadow},
-                                    {"bounce", s.rays.bounce},
-                                    {"probe", s.rays.probe},
-                                    {"total", s.rays.total()}}},
-                          {"rays_per_second",
-                           s.seconds > 0.0 ? double(s.rays.total()) / s.seconds : 0.0}});
+        stages.push_back(
+            {{"name", s.name},
+             {"seconds", s.seconds},
+             {"items", s.items},
+             {"rays",
+              {{"shadow", s.rays.shadow},
+               {"bounce", s.rays.bounce},
+               {"probe", s.rays.probe},
+               {"total", s.rays.total()}}},
+             {"rays_per_second", s.seconds > 0.0 ? double(s.rays.total()) / s.seconds : 0.0}});
     }
     j["stages"] = stages;
     j["seconds_total"] = seconds;
@@ -79,8 +80,7 @@ std::string report_summary(const BakeReport& r) {
     RayCounts all;
     for (const StageReport& st : r.stages) {
         std::snprintf(line, sizeof line, "  %-10s %8.2f s  %12llu rays  %7.2f Mrays/s\n",
-                      st.name.c_str(), st.seconds,
-                      static_cast<unsigned long long>(st.rays.total()),
+                      st.name.c_str(), st.seconds, static_cast<unsigned long long>(st.rays.total()),
                       st.seconds > 0.0 ? double(st.rays.total()) / st.seconds * 1e-6 : 0.0);
         s += line;
         seconds += st.seconds;

@@ -33,8 +33,9 @@ void add_triangles(world::SourceLevel& level, std::vector<glm::vec3> positions,
     }
     // Vertex normals from the faces (flat per vertex: each shape gives its vertices one face).
     for (size_t i = 0; i + 2 < indices.size(); i += 3) {
-        const glm::vec3 n = glm::normalize(glm::cross(positions[indices[i + 1]] - positions[indices[i]],
-                                                      positions[indices[i + 2]] - positions[indices[i]]));
+        const glm::vec3 n =
+            glm::normalize(glm::cross(positions[indices[i + 1]] - positions[indices[i]],
+                                      positions[indices[i + 2]] - positions[indices[i]]));
         for (int k = 0; k < 3; ++k) instance.vertices[indices[i + k]].normal = n;
     }
     instance.indices = std::move(indices);
@@ -48,8 +49,8 @@ void add_quad(world::SourceLevel& level, glm::vec3 p0, glm::vec3 p1, glm::vec3 p
     add_triangles(level, {p0, p1, p2, p3}, {0, 1, 2, 0, 2, 3}, material, name);
 }
 
-void add_box(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t material,
-             bool inward, const std::string& name) {
+void add_box(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t material, bool inward,
+             const std::string& name) {
     const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
                             {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
                             {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
@@ -67,8 +68,8 @@ void add_box(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t mat
     }
 }
 
-void add_inward_sphere(world::SourceLevel& level, glm::vec3 centre, float radius,
-                       uint32_t rings, uint32_t segments, uint32_t material) {
+void add_inward_sphere(world::SourceLevel& level, glm::vec3 centre, float radius, uint32_t rings,
+                       uint32_t segments, uint32_t material) {
     std::vector<glm::vec3> positions;
     std::vector<uint32_t> indices;
     const float pi = 3.14159265358979f;

@@ -18,12 +18,12 @@ void add_quad(world::SourceLevel& level, glm::vec3 p0, glm::vec3 p1, glm::vec3 p
               uint32_t material, const std::string& name);
 
 /// Axis-aligned box; `inward` makes its faces look inside (a room), else outside (a solid).
-void add_box(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t material,
-             bool inward, const std::string& name);
+void add_box(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t material, bool inward,
+             const std::string& name);
 
 /// UV sphere with faces looking inward.
-void add_inward_sphere(world::SourceLevel& level, glm::vec3 centre, float radius,
-                       uint32_t rings, uint32_t segments, uint32_t material);
+void add_inward_sphere(world::SourceLevel& level, glm::vec3 centre, float radius, uint32_t rings,
+                       uint32_t segments, uint32_t material);
 
 world::Light point_light(glm::vec3 position, float candela, world::LightRole role);
 world::Light spot_light(glm::vec3 position, glm::vec3 direction, float candela, float inner,

@@ -54,7 +54,8 @@ TEST(LightmapAccuracy, PointLightOverPlaneFollowsInverseSquareCosine) {
         const float d2 = glm::dot(to_light, to_light);
         const float expected = intensity * (to_light.z / std::sqrt(d2)) / d2;
         const float got = b.result.baked.texels[s.texel].irradiance.x;
-        ASSERT_NEAR(got, expected, 0.01f * expected) << "at " << s.position.x << ", " << s.position.y;
+        ASSERT_NEAR(got, expected, 0.01f * expected)
+            << "at " << s.position.x << ", " << s.position.y;
         ++checked;
     }
     EXPECT_GT(checked, 300u);
@@ -200,10 +201,11 @@ TEST(LightmapAccuracy, LightmapAgreesWithReferencePathTracer) {
     test::add_box(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
     test::add_box(level, {-0.4f, -0.4f, 0.0f}, {0.4f, 0.4f, 0.8f}, block, false, "block");
     level.lights.push_back(test::point_light({-1.0f, 0.5f, 2.0f}, 60.0f, LightRole::primary));
-    level.lights.push_back(test::spot_light({1.5f, -1.0f, 2.2f}, {-0.5f, 0.4f, -1.0f}, 150.0f,
-                                            0.4f, 0.7f, LightRole::baked));
+    level.lights.push_back(test::spot_light({1.5f, -1.0f, 2.2f}, {-0.5f, 0.4f, -1.0f}, 150.0f, 0.4f,
+                                            0.7f, LightRole::baked));
     BakeOptions options = test::test_options(6.0f, BakeQuality::normal);
-    if (const char* n = std::getenv("ONELIGHT_PATHS")) options.indirect_samples = uint32_t(std::atoi(n));
+    if (const char* n = std::getenv("ONELIGHT_PATHS"))
+        options.indirect_samples = uint32_t(std::atoi(n));
     const Baked b = bake(level, options);
     std::printf("estimated noise %.4f\n", b.result.report.lightmap_mean_relative_noise);
     const EmbreeDevice device;
@@ -216,9 +218,8 @@ TEST(LightmapAccuracy, LightmapAgreesWithReferencePathTracer) {
         if (!s.centre_inside) continue;
         const float got =
             luminance(lightmap_total_irradiance(b.lights, b.result.level, b.result.baked, s));
-        const float want = luminance(reference_irradiance(scene, b.lights, s.position, s.normal,
-                                                          8192, static_cast<uint32_t>(i), {},
-                                                          rays));
+        const float want = luminance(reference_irradiance(
+            scene, b.lights, s.position, s.normal, 8192, static_cast<uint32_t>(i), {}, rays));
         if (want < 1.0f) continue;  // relative error of near-black points is noise
         const double rel = (double(got) - double(want)) / double(want);
         if (std::getenv("ONELIGHT_VERBOSE"))
