@@ -1,0 +1,234 @@
+// Golden frames: small scenes rendered headless at 320x180 and compared, tonemapped and 8-bit,
+// with tests/render/golden/NAME.png. On failure NAME.png and NAME_diff.png (|difference| x 8) are
+// written to the test output folder. ONELIGHT_UPDATE_GOLDENS=1 rewrites the goldens instead.
+//
+// Tolerance, per 8-bit channel: a pixel "differs" when some channel is off by more than 8/255;
+// at most 0.5% of pixels may differ, and the mean absolute difference over all channels must
+// stay within 0.5/255. Why: a new LLVM (llvmpipe compiles the shaders) or another conformant GPU
+// changes float rounding (FMA contraction, transcendental approximations), which moves smooth
+// regions by 1-2 codes: far inside 8/255 and far inside the mean bound. Rasterisation and
+// filtering rules may flip the coverage of edge pixels and texels: those can differ by much more
+// than 8 codes but are few (0.5% of 57600 pixels is 288, about the length of the longest
+// silhouettes here). A real regression (a wrong term, a lost shadow, exposure off by a tenth of
+// a stop) moves most pixels by more than a code, which the mean bound catches.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "capture/capture.hpp"
+#include "test_scene.hpp"
+
+namespace {
+
+using namespace onelight;
+
+constexpr uint32_t kWidth = 320, kHeight = 180;
+constexpr int kPixelTolerance = 8;  // codes of 255
+constexpr double kMaxDifferingFraction = 0.005;
+constexpr double kMaxMeanDifference = 0.5;  // codes of 255
+
+bool updateGoldens() {
+    const char* v = std::getenv("ONELIGHT_UPDATE_GOLDENS");
+    return v && std::strcmp(v, "1") == 0;
+}
+
+void compareWithGolden(const std::string& name, const render::CapturedFrame& frame) {
+    const std::string out = test::outputDir() + "/" + name;
+    const std::string golden = std::string(ONELIGHT_GOLDEN_DIR) + "/" + name + ".png";
+    std::string error;
+    ASSERT_TRUE(capture::writePng(out + ".png", frame.width, frame.height, frame.rgba8, error))
+        << error;
+    if (updateGoldens()) {
+        ASSERT_TRUE(capture::writePng(golden, frame.width, frame.height, frame.rgba8, error))
+            << error;
+        std::printf("[ golden ] updated %s\n", golden.c_str());
+        return;
+    }
+    uint32_t w = 0, h = 0;
+    std::vector<uint8_t> expected;
+    ASSERT_TRUE(capture::readPng(golden, w, h, expected, error))
+        << error << " (run with ONELIGHT_UPDATE_GOLDENS=1 to create it)";
+    ASSERT_EQ(w, frame.width);
+    ASSERT_EQ(h, frame.height);
+
+    std::vector<uint8_t> diff(expected.size(), 255);
+    uint64_t differing = 0;
+    double sum = 0.0;
+    int worst = 0;
+    for (size_t p = 0; p < size_t(w) * h; ++p) {
+        int pixelWorst = 0;
+        for (int c = 0; c < 3; ++c) {
+            const int d = std::abs(int(frame.rgba8[4 * p + c]) - int(expected[4 * p + c]));
+            sum += d;
+            pixelWorst = std::max(pixelWorst, d);
+            diff[4 * p + c] = uint8_t(std::min(d * 8, 255));
+        }
+        worst = std::max(worst, pixelWorst);
+        if (pixelWorst > kPixelTolerance) ++differing;
+    }
+    const double fraction = double(differing) / double(size_t(w) * h);
+    const double mean = sum / double(size_t(w) * h * 3);
+    std::printf("[ golden ] %s: %.3f%% pixels over %d/255, mean |diff| %.3f/255, worst %d\n",
+                name.c_str(), 100.0 * fraction, kPixelTolerance, mean, worst);
+    const bool ok = fraction <= kMaxDifferingFraction && mean <= kMaxMeanDifference;
+    if (!ok) {
+        capture::writePng(out + "_diff.png", w, h, diff, error);
+        ADD_FAILURE() << name << " differs from " << golden << ": " << 100.0 * fraction
+                      << "% pixels over " << kPixelTolerance << "/255 (max "
+                      << 100.0 * kMaxDifferingFraction << "%), mean " << mean << "/255 (max "
+                      << kMaxMeanDifference << "); see " << out << "_diff.png";
+    }
+}
+
+render::RendererOptions smallFrame() {
+    render::RendererOptions options;
+    options.width = kWidth;
+    options.height = kHeight;
+    return options;
+}
+
+render::EffectSpot flashlightAt(const render::Camera& camera, float intensity) {
+    render::EffectSpot spot;
+    spot.position = camera.position;
+    spot.direction = render::forwardOf(camera);
+    spot.intensity = intensity;
+    spot.innerCone = 0.2f;
+    spot.outerCone = 0.45f;
+    return spot;
+}
+
+// A sunlit yard: floor, boxes of the four material classes, a sphere and a moved dynamic box.
+test::Scene sunScene() {
+    test::Scene s;
+    s.materials = {{{0.7f, 0.7f, 0.68f, 1.0f}, 0.0f, 1.0f},  // lambert floor
+                   {{0.8f, 0.3f, 0.2f, 1.0f}, 0.0f, 0.4f},   // dielectric
+                   {{0.95f, 0.8f, 0.5f, 1.0f}, 1.0f, 0.3f},  // metal
+                   {{0.3f, 0.6f, 0.9f, 1.0f}, 0.5f, 0.5f}};  // full
+    test::addFloor(s, 0.0f, 0.0f, 12.0f, 0.0f, 0);
+    test::addBox(s, {-3.0f, 0.0f, -2.0f}, {-1.5f, 2.0f, -0.5f}, 1);
+    test::addBox(s, {1.0f, 0.0f, -3.0f}, {2.5f, 1.0f, -1.5f}, 2);
+    test::addSphere(s, {0.0f, 0.8f, 1.0f}, 0.8f, 12, 24, 3);
+    test::addBox(s, {-0.4f, 0.0f, -0.4f}, {0.4f, 0.8f, 0.4f}, 1, true);
+    test::SceneLight sun;
+    sun.type = 0;
+    sun.intensity = 20000.0f;
+    sun.color = {1.0f, 0.95f, 0.85f};
+    sun.direction = glm::normalize(glm::vec3(0.7f, -0.8f, 0.45f));
+    s.lights.push_back(sun);
+    return s;
+}
+
+// A room-less night: a spot and an omni primary with shadows, four gun-flash omnis.
+test::Scene spotOmniScene() {
+    test::Scene s;
+    s.materials = {{{0.6f, 0.6f, 0.6f, 1.0f}, 0.0f, 0.8f}, {{0.2f, 0.7f, 0.3f, 1.0f}, 0.0f, 0.35f}};
+    test::addFloor(s, 0.0f, 0.0f, 10.0f, 0.0f, 0);
+    test::addBox(s, {-2.5f, 0.0f, -1.0f}, {-1.5f, 1.5f, 0.0f}, 1);
+    test::addBox(s, {1.5f, 0.0f, -2.0f}, {2.5f, 1.0f, -1.0f}, 1);
+    test::SceneLight spot;
+    spot.type = 2;
+    spot.intensity = 400.0f;
+    spot.position = {-4.0f, 4.0f, 2.0f};
+    spot.direction = glm::normalize(glm::vec3(0.8f, -1.0f, -0.6f));
+    spot.innerCone = 0.35f;
+    spot.outerCone = 0.6f;
+    s.lights.push_back(spot);
+    test::SceneLight omni;
+    omni.type = 1;
+    omni.intensity = 60.0f;
+    omni.range = 15.0f;
+    omni.color = {1.0f, 0.7f, 0.4f};
+    omni.position = {2.0f, 2.2f, 0.5f};
+    s.lights.push_back(omni);
+    return s;
+}
+
+assets::LoadedLevel generated(const std::string& name, const test::Scene& scene) {
+    const std::string gltf = test::outputDir() + "/" + name + ".gltf";
+    test::writeGltf(scene, gltf);
+    return test::compileAndLoad(gltf, test::outputDir() + "/" + name + ".olpak");
+}
+
+assets::LoadedLevel shared(const std::string& name) {
+    const std::string gltf =
+        std::string(ONELIGHT_SHARED_ASSETS) + "/" + name + "/glTF/" + name + ".gltf";
+    return test::compileAndLoad(gltf, test::outputDir() + "/" + name + ".olpak");
+}
+
+TEST(RenderGolden, NormalTangentTestWithFlashlight) {
+    const assets::LoadedLevel level = shared("NormalTangentTest");
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({0.2f, 0.1f, 2.4f}, 4.0f, -2.0f);
+    inputs.effects.spotOn = true;
+    inputs.effects.spot = flashlightAt(inputs.camera, 3.0f);
+    const test::RenderedFrame r = test::renderOnce(level, smallFrame(), inputs);
+    EXPECT_EQ(r.validationErrors, 0u);
+    compareWithGolden("normal_tangent_test", r.frame);
+}
+
+TEST(RenderGolden, TextureSettingsTest) {
+    const assets::LoadedLevel level = shared("TextureSettingsTest");
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({0.0f, 0.0f, 11.0f}, 0.0f, 0.0f);
+    const test::RenderedFrame r = test::renderOnce(level, smallFrame(), inputs);
+    EXPECT_EQ(r.validationErrors, 0u);
+    compareWithGolden("texture_settings_test", r.frame);
+}
+
+TEST(RenderGolden, SunShadowsMaterialClassesAndDynamicObject) {
+    const assets::LoadedLevel level = generated("sun_yard", sunScene());
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({1.5f, 3.5f, 7.0f}, 10.0f, -25.0f);
+    render::DynamicTransform moved;
+    uint32_t dynamicEntities = 0;
+    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
+        if (level.level.entities[e].flags & world::entity_dynamic) {
+            moved.entity = e;
+            ++dynamicEntities;
+        }
+    ASSERT_EQ(dynamicEntities, 1u);
+    moved.worldFromObject = glm::translate(glm::mat4(1.0f), glm::vec3(2.5f, 0.0f, 1.5f));
+    inputs.dynamicTransforms = {&moved, 1};
+    const test::RenderedFrame r = test::renderOnce(level, smallFrame(), inputs);
+    EXPECT_EQ(r.validationErrors, 0u);
+    EXPECT_GT(r.stats.shadowViewsRendered, 0u);
+    compareWithGolden("sun_yard", r.frame);
+}
+
+TEST(RenderGolden, SpotAndOmniShadowsWithEffectLights) {
+    const assets::LoadedLevel level = generated("spot_omni", spotOmniScene());
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({0.0f, 4.0f, 7.5f}, 0.0f, -30.0f);
+    const glm::vec3 flashes[4] = {
+        {-3.0f, 0.5f, 2.0f}, {0.0f, 0.3f, 3.0f}, {3.5f, 0.5f, 2.5f}, {0.0f, 1.0f, -3.0f}};
+    const glm::vec3 colours[4] = {
+        {1.0f, 0.5f, 0.2f}, {0.3f, 0.5f, 1.0f}, {1.0f, 1.0f, 0.3f}, {1.0f, 0.2f, 0.8f}};
+    inputs.effects.omniCount = 4;
+    for (int i = 0; i < 4; ++i) inputs.effects.omni[i] = {flashes[i], colours[i], 6.0f, 5.0f};
+    const test::RenderedFrame r = test::renderOnce(level, smallFrame(), inputs);
+    EXPECT_EQ(r.validationErrors, 0u);
+    EXPECT_EQ(r.stats.shadowViewsRendered, 7u);  // the spot's one view and the omni's six
+    compareWithGolden("spot_omni", r.frame);
+}
+
+// The same frame twice, from two renderers, is bit-identical (PNG and linear HDR).
+TEST(RenderDeterminism, SameFrameTwiceIsBitIdentical) {
+    const assets::LoadedLevel level = generated("sun_yard_twice", sunScene());
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({1.5f, 3.5f, 7.0f}, 10.0f, -25.0f);
+    const test::RenderedFrame a = test::renderOnce(level, smallFrame(), inputs);
+    const test::RenderedFrame b = test::renderOnce(level, smallFrame(), inputs, 2);
+    EXPECT_EQ(a.validationErrors + b.validationErrors, 0u);
+    ASSERT_EQ(a.frame.rgba8.size(), b.frame.rgba8.size());
+    EXPECT_TRUE(a.frame.rgba8 == b.frame.rgba8);
+    EXPECT_EQ(std::memcmp(a.frame.linearRgba.data(), b.frame.linearRgba.data(),
+                          a.frame.linearRgba.size() * sizeof(float)),
+              0);
+}
+
+}  // namespace
