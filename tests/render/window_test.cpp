@@ -1,0 +1,73 @@
+// Window backend under Xvfb: `onelight` opens a GLFW window, renders three frames into its
+// swapchain, and a screenshot of the swapchain image (read back in-app) matches the offscreen
+// frame of a separate headless run of the same view. ctest runs this under
+// `xvfb-run -a -s '-screen 0 1280x720x24'`; without xvfb-run the test is skipped.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "capture/capture.hpp"
+#include "process.hpp"
+#include "test_scene.hpp"
+
+namespace {
+
+using namespace onelight;
+
+TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
+    if (!ONELIGHT_HAVE_XVFB_RUN) GTEST_SKIP() << "xvfb-run is not installed";
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr)
+        << "run under xvfb-run (see tests/render/CMakeLists.txt)";
+
+    test::Scene scene;
+    scene.materials = {{{0.7f, 0.7f, 0.7f, 1.0f}, 0.0f, 0.9f},
+                       {{0.8f, 0.4f, 0.2f, 1.0f}, 0.0f, 0.4f}};
+    test::addFloor(scene, 0.0f, 0.0f, 8.0f, 0.0f, 0);
+    test::addBox(scene, {-1.0f, 0.0f, -1.0f}, {1.0f, 1.5f, 1.0f}, 1);
+    test::SceneLight sun;
+    sun.intensity = 10000.0f;
+    sun.direction = glm::normalize(glm::vec3(0.6f, -0.8f, 0.4f));
+    scene.lights.push_back(sun);
+    const std::string dir = test::outputDir() + "/window";
+    std::filesystem::create_directories(dir);
+    const std::string gltf = dir + "/window_level.gltf";
+    test::writeGltf(scene, gltf);
+    ASSERT_EQ(test::compileLevel(gltf, dir + "/window_level.olpak"), 0);
+
+    const std::vector<std::string> view = {dir + "/window_level.olpak", "--size", "320x180",
+                                           "--camera", "2,3,6,15,-25"};
+    std::vector<std::string> windowed = view, headless = view;
+    windowed.insert(windowed.end(), {"--frames", "3", "--capture", dir + "/windowed"});
+    headless.insert(headless.end(), {"--headless", "--capture", dir + "/headless"});
+    const test::ProcessResult w = test::runProcess(ONELIGHT_ONELIGHT_PATH, windowed);
+    ASSERT_EQ(w.exitCode, 0) << w.stderrText;
+    const test::ProcessResult h = test::runProcess(ONELIGHT_ONELIGHT_PATH, headless);
+    ASSERT_EQ(h.exitCode, 0) << h.stderrText;
+
+    uint32_t sw = 0, sh = 0, hw = 0, hh = 0;
+    std::vector<uint8_t> screenshot, offscreen;
+    std::string error;
+    ASSERT_TRUE(capture::readPng(dir + "/windowed_window.png", sw, sh, screenshot, error)) << error;
+    ASSERT_TRUE(capture::readPng(dir + "/headless.png", hw, hh, offscreen, error)) << error;
+    ASSERT_EQ(sw, hw);
+    ASSERT_EQ(sh, hh);
+    // Same device, same pipelines: the screenshot equals the offscreen frame within the golden
+    // tolerance (tests/render/golden_test.cpp), and in practice exactly.
+    uint64_t over = 0;
+    double sum = 0.0;
+    for (size_t i = 0; i < screenshot.size(); ++i) {
+        if (i % 4 == 3) continue;
+        const int d = std::abs(int(screenshot[i]) - int(offscreen[i]));
+        sum += d;
+        if (d > 8) ++over;
+    }
+    const double pixels = double(sw) * sh;
+    std::printf(
+        "[ window ] %ux%u screenshot vs offscreen: %llu channels over 8/255, mean %.4f/255\n", sw,
+        sh, static_cast<unsigned long long>(over), sum / (pixels * 3));
+    EXPECT_LE(double(over), 0.005 * pixels);
+    EXPECT_LE(sum / (pixels * 3), 0.5);
+}
+
+}  // namespace
