@@ -31,6 +31,8 @@ inline float log(float x) { return std::log(x); }
 inline float log2(float x) { return std::log2(x); }
 inline float pow(float x, float y) { return std::pow(x, y); }
 inline float floor(float x) { return std::floor(x); }
+inline float atan(float y, float x) { return std::atan2(y, x); }
+inline float atan(float x) { return std::atan(x); }
 inline float fract(float x) { return x - std::floor(x); }
 inline float step(float edge, float x) { return x < edge ? 0.0f : 1.0f; }
 inline float sign(float x) { return float(x > 0.0f) - float(x < 0.0f); }

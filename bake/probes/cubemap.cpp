@@ -11,7 +11,8 @@ namespace glsl = onelight::glsl;
 
 Cubemap makeCubemap(int size) {
     Cubemap c;
-    for (int s = size; s >= 1; s /= 2) c.mips.push_back(CubeMip{s, std::vector<glm::vec3>(6 * size_t(s) * s)});
+    for (int s = size; s >= 1; s /= 2)
+        c.mips.push_back(CubeMip{s, std::vector<glm::vec3>(6 * size_t(s) * s)});
     return c;
 }
 
@@ -30,12 +31,18 @@ namespace {
 glm::vec3 texelCentreDirection(int face, int i, int j, int size) {
     float s = 2.0f * (i + 0.5f) / size - 1.0f, t = 2.0f * (j + 0.5f) / size - 1.0f;
     switch (face) {
-        case 0: return {1.0f, -t, -s};
-        case 1: return {-1.0f, -t, s};
-        case 2: return {s, 1.0f, t};
-        case 3: return {s, -1.0f, -t};
-        case 4: return {s, -t, 1.0f};
-        default: return {-s, -t, -1.0f};
+        case 0:
+            return {1.0f, -t, -s};
+        case 1:
+            return {-1.0f, -t, s};
+        case 2:
+            return {s, 1.0f, t};
+        case 3:
+            return {s, -1.0f, -t};
+        case 4:
+            return {s, -t, 1.0f};
+        default:
+            return {-s, -t, -1.0f};
     }
 }
 
@@ -46,7 +53,8 @@ TexelRef neighbourTexel(int face, int x, int y, int size) {
     glm::vec3 d = texelCentreDirection(face, x, y, size);
     int f = glsl::cubeFace(d);
     glm::vec2 uv = glsl::cubeFaceUV(d, f);
-    return {f, std::clamp(int(uv.x * size), 0, size - 1), std::clamp(int(uv.y * size), 0, size - 1)};
+    return {f, std::clamp(int(uv.x * size), 0, size - 1),
+            std::clamp(int(uv.y * size), 0, size - 1)};
 }
 
 glm::vec3 sampleBilinear(const CubeMip& mip, glm::vec3 d) {

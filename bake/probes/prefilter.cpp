@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "shading.hpp"
@@ -37,27 +38,64 @@ int prefilterSampleCount(float alpha, int sourceSize, const PrefilterOptions& op
     // GGX: P(tan^2 theta_h <= x) = x / (alpha^2 + x), so 90% of the half vectors lie within
     // tan^2 = 9 alpha^2; the reflected directions spread over twice that angle.
     float thetaH = std::atan(3.0f * alpha);
-    float lobeSolidAngle = 2.0f * glsl::PI * (1.0f - std::cos(std::min(2.0f * thetaH, glsl::PI / 2)));
+    float lobeSolidAngle =
+        2.0f * glsl::PI * (1.0f - std::cos(std::min(2.0f * thetaH, glsl::PI / 2)));
     float texel = 4.0f * glsl::PI / (6.0f * float(sourceSize) * float(sourceSize));
     float wanted = std::ceil(4.0f * lobeSolidAngle / texel);
-    return int(std::clamp(wanted, float(options.samplesPerTexel), float(options.maxSamplesPerTexel)));
+    return int(
+        std::clamp(wanted, float(options.samplesPerTexel), float(options.maxSamplesPerTexel)));
 }
+
+namespace {
+
+// L(r) = sum_t L_t D(h_t) NoL_t Omega_t / sum_t D(h_t) NoL_t Omega_t over every texel t of `src`.
+glm::vec3 sumOverTexels(const CubeMip& src, glm::vec3 r, float alpha) {
+    glm::vec3 sum(0.0f);
+    float weight = 0.0f;
+    for (int face = 0; face < 6; ++face)
+        for (int y = 0; y < src.size; ++y)
+            for (int x = 0; x < src.size; ++x) {
+                glm::vec3 l = texelDirection(face, x, y, src.size);
+                float NoL = glm::dot(r, l);
+                if (NoL <= 0.0f) continue;
+                glm::vec3 c = glm::cross(r, glm::normalize(r + l));
+                float w =
+                    glsl::D_GGX(glm::dot(c, c), alpha) * NoL * texelSolidAngle(x, y, src.size);
+                sum += src.at(face, x, y) * w;
+                weight += w;
+            }
+    return weight > 0.0f ? sum / weight : glm::vec3(0.0f);
+}
+
+}  // namespace
 
 Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options) {
     downsampleMips(radiance);
     Cubemap out = makeCubemap(radiance.mips[0].size);
     out.mips[0] = radiance.mips[0];
     const int mipCount = out.mipCount();
-    const float baseTexelSolidAngle = 4.0f * glsl::PI / (6.0f * float(radiance.mips[0].size) *
-                                                         float(radiance.mips[0].size));
+    const float baseTexelSolidAngle =
+        4.0f * glsl::PI / (6.0f * float(radiance.mips[0].size) * float(radiance.mips[0].size));
     for (int m = 1; m < mipCount; ++m) {
         CubeMip& dst = out.mips[m];
         float alpha = glsl::ggxAlpha_fromGloss(glsl::probeGlossOfMip(m, mipCount));
         float a2 = alpha * alpha;
         const int n = prefilterSampleCount(alpha, radiance.mips[0].size, options);
+        // The coarsest source mip with texels at most alpha / 16 across (a texel spans about
+        // (pi / 2) / size radians), and what summing over it would cost against sampling.
+        float baseTexelAngle = 0.5f * glsl::PI / float(radiance.mips[0].size);
+        int sourceMip = std::clamp(int(std::floor(std::log2(alpha / (16.0f * baseTexelAngle)))), 0,
+                                   mipCount - 1);
+        const CubeMip& coarse = radiance.mips[sourceMip];
+        bool sumTexels = 6.0 * coarse.size * coarse.size <= 2.0 * double(n);  // exact: wins ties
         tbb::parallel_for(0, 6 * dst.size, [&](int row) {
             int face = row / dst.size, y = row % dst.size;
             for (int x = 0; x < dst.size; ++x) {
+                if (sumTexels) {
+                    dst.at(face, x, y) =
+                        sumOverTexels(coarse, texelDirection(face, x, y, dst.size), alpha);
+                    continue;
+                }
                 glm::vec3 r = texelDirection(face, x, y, dst.size), t, b;
                 frame(r, t, b);
                 glm::vec3 sum(0.0f);
@@ -69,7 +107,8 @@ Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options) {
                     float cos2 = (1.0f - u1) / (1.0f + (a2 - 1.0f) * u1);
                     float cosH = std::sqrt(cos2), sinH = std::sqrt(std::max(0.0f, 1.0f - cos2));
                     float phi = 2.0f * glsl::PI * u2;
-                    glm::vec3 h = t * (sinH * std::cos(phi)) + b * (sinH * std::sin(phi)) + r * cosH;
+                    glm::vec3 h =
+                        t * (sinH * std::cos(phi)) + b * (sinH * std::sin(phi)) + r * cosH;
                     glm::vec3 l = 2.0f * glm::dot(r, h) * h - r;
                     float NoL = glm::dot(r, l);
                     if (NoL <= 0.0f) continue;
@@ -87,7 +126,8 @@ Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options) {
     return out;
 }
 
-glm::vec3 prefilteredReference(const Cubemap& radiance, glm::vec3 r, float alpha, int subdivisions) {
+glm::vec3 prefilteredReference(const Cubemap& radiance, glm::vec3 r, float alpha,
+                               int subdivisions) {
     const CubeMip& src = radiance.mips[0];
     double sum[3] = {0, 0, 0}, weight = 0.0;
     int fine = src.size * subdivisions;

@@ -12,7 +12,7 @@ struct PrefilterOptions {
     // GGX importance samples per output texel (Hammersley): at least this many, and at least
     // 4 per source texel under the lobe (4 * solid angle holding 90% of the lobe / solid angle
     // of a source texel), so that a source smaller than the lobe is never missed.
-    int samplesPerTexel = 256;
+    int samplesPerTexel = 1024;
     int maxSamplesPerTexel = 65536;
 };
 
@@ -28,6 +28,11 @@ int prefilterSampleCount(float alpha, int sourceSize, const PrefilterOptions& op
 // Each sample reads the source at the mip whose texel solid angle matches the sample's
 // (Krivanek and Colbert 2008, filtered importance sampling, no bias), which removes the noise
 // of undersampling small bright sources without blurring more than the lobe does.
+// Where the lobe is wide (the small, rough mips) summing the integral over every texel of a
+// source mip fine enough for the lobe (>= 16 texels per alpha: D moves by under 2% across a
+// texel there) is exact and cheaper than the
+// samples a tiny bright source needs, so each mip takes whichever of the two costs fewer
+// evaluations (Lazarov 2011 used CubeMapGen's angular-extent filtering, which sums texels).
 // `radiance` needs mip 0 filled; its mips are rebuilt. The result has the same mip count;
 // mip 0 (gloss 1, alpha 0.0028) is a copy, its lobe being narrower than a texel.
 Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options = {});
@@ -35,7 +40,6 @@ Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options = {});
 // The reference for tests: the same integral by brute-force quadrature over the whole sphere,
 // of `radiance`'s mip 0 read bilinearly as the prefilter reads it, at `subdivisions`^2 points
 // per source texel (choose them finer than alpha). Slow.
-glm::vec3 prefilteredReference(const Cubemap& radiance, glm::vec3 r, float alpha,
-                               int subdivisions);
+glm::vec3 prefilteredReference(const Cubemap& radiance, glm::vec3 r, float alpha, int subdivisions);
 
 }  // namespace onelight::bake

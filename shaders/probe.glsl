@@ -1,0 +1,103 @@
+// Environment probes, shared by the baker (capture, prefiltering) and the runtime shader:
+// cube-map addressing, the gloss-to-mip mapping, and box projection. Same GLSL/C++ subset as
+// brdf.glsl.
+#ifndef ONELIGHT_PROBE_GLSL
+#define ONELIGHT_PROBE_GLSL
+
+#include "common.glsl"
+
+// ---------------------------------------------------------------------------------------------
+// Cube-map addressing, as Vulkan samples a cube (Vulkan spec, "Cube Map Face Selection"):
+// faces +X, -X, +Y, -Y, +Z, -Z are layers 0..5; (u, v) in [0, 1] with v pointing down.
+
+int cubeFace(vec3 d) {
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0f ? 0 : 1;
+    if (a.y >= a.z) return d.y >= 0.0f ? 2 : 3;
+    return d.z >= 0.0f ? 4 : 5;
+}
+
+// (u, v) of direction d on `face` (d need not be unit; its major axis must be face's).
+vec2 cubeFaceUV(vec3 d, int face) {
+    float sc, tc, ma;
+    if (face == 0) {
+        sc = -d.z, tc = -d.y, ma = d.x;
+    } else if (face == 1) {
+        sc = d.z, tc = -d.y, ma = -d.x;
+    } else if (face == 2) {
+        sc = d.x, tc = d.z, ma = d.y;
+    } else if (face == 3) {
+        sc = d.x, tc = -d.z, ma = -d.y;
+    } else if (face == 4) {
+        sc = d.x, tc = -d.y, ma = d.z;
+    } else {
+        sc = -d.x, tc = -d.y, ma = -d.z;
+    }
+    return vec2(0.5f * (sc / ma + 1.0f), 0.5f * (tc / ma + 1.0f));
+}
+
+// The unit direction through (u, v) of `face`: the inverse of cubeFaceUV.
+vec3 cubeDirection(int face, vec2 uv) {
+    float s = 2.0f * uv.x - 1.0f;
+    float t = 2.0f * uv.y - 1.0f;
+    vec3 d;
+    if (face == 0) {
+        d = vec3(1.0f, -t, -s);
+    } else if (face == 1) {
+        d = vec3(-1.0f, -t, s);
+    } else if (face == 2) {
+        d = vec3(s, 1.0f, t);
+    } else if (face == 3) {
+        d = vec3(s, -1.0f, -t);
+    } else if (face == 4) {
+        d = vec3(s, -t, 1.0f);
+    } else {
+        d = vec3(-s, -t, -1.0f);
+    }
+    return normalize(d);
+}
+
+// Solid angle of the texel [u0, u1] x [v0, v1] of a face (any face), in steradians.
+// Each face is the plane at distance 1 over [-1, 1]^2; the solid angle of the rectangle from
+// the origin to (x, y) is atan(x y / sqrt(x^2 + y^2 + 1)) (Girard), so a texel is the signed
+// sum over its four corners.
+float cubeCornerSolidAngle(float x, float y) { return atan(x * y, sqrt(x * x + y * y + 1.0f)); }
+float cubeTexelSolidAngle(float u0, float v0, float u1, float v1) {
+    float x0 = 2.0f * u0 - 1.0f;
+    float y0 = 2.0f * v0 - 1.0f;
+    float x1 = 2.0f * u1 - 1.0f;
+    float y1 = 2.0f * v1 - 1.0f;
+    return cubeCornerSolidAngle(x0, y0) - cubeCornerSolidAngle(x0, y1) -
+           cubeCornerSolidAngle(x1, y0) + cubeCornerSolidAngle(x1, y1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Gloss and mips: mip 0 holds the mirror (gloss 1), the last mip gloss 0. Linear in gloss, as
+// Lazarov 2011, slide "Environment map: prefiltering": mip = nMips - gloss * nMips; the baker
+// convolves mip m with the GGX lobe of probeGlossOfMip(m) and the shader reads
+// probeMipOfGloss(gloss), so both sides use this one pair.
+
+float probeMipOfGloss(float gloss, int mipCount) {
+    return (1.0f - saturate(gloss)) * float(mipCount - 1);
+}
+
+float probeGlossOfMip(int mip, int mipCount) {
+    return mipCount > 1 ? 1.0f - float(mip) / float(mipCount - 1) : 1.0f;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Box projection (Lagarde and Zanuttini 2012, "Local Image-based Lighting With
+// Parallax-corrected Cubemap", the Sparta 3D approach): the reflection ray from the shaded
+// point P along R is intersected with the probe's box from inside; the cube is then read in
+// the direction from the probe's capture point to that hit.
+vec3 boxProjectedDirection(vec3 P, vec3 R, vec3 boxMin, vec3 boxMax, vec3 probePosition) {
+    // Distance along R to the box's far planes, per axis; an axis R does not move along never
+    // limits the ray (its distance is huge instead of an Inf or a NaN).
+    float tx = abs(R.x) > 1e-8f ? (R.x > 0.0f ? boxMax.x - P.x : boxMin.x - P.x) / R.x : 1e30f;
+    float ty = abs(R.y) > 1e-8f ? (R.y > 0.0f ? boxMax.y - P.y : boxMin.y - P.y) / R.y : 1e30f;
+    float tz = abs(R.z) > 1e-8f ? (R.z > 0.0f ? boxMax.z - P.z : boxMin.z - P.z) / R.z : 1e30f;
+    float t = max(min(min(tx, ty), tz), 0.0f);
+    return P + R * t - probePosition;
+}
+
+#endif
