@@ -110,13 +110,13 @@ float irradianceLinear(vec4 c, vec3 n) {
 
 // Secondary light reflected towards v: diffuse from irradiance E (lux, per channel) and specular
 // from a normalised probe sample (radiance / average irradiance at its capture point) scaled back
-// by E, times the environment "Fresnel" of the runtime model. Lambert-only surfaces take no
-// probe; metals no diffuse.
-vec3 secondaryRadiance(int materialClass, vec3 albedo, vec3 f0, float gloss, float NoV, vec3 irradiance,
+// by E, times the environment "Fresnel" f0 * env.x + env.y of the runtime model (EnvBRDF_Fit of
+// env_brdf_fit.glsl, or the runtime's table of it). Lambert-only surfaces take no probe; metals
+// no diffuse.
+vec3 secondaryRadiance(int materialClass, vec3 albedo, vec3 f0, vec2 env, vec3 irradiance,
                        vec3 normalisedProbe) {
     vec3 diffuse = albedo * (Fd_Lambert()) * irradiance;
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
-    vec2 env = EnvBRDF_Fit(NoV, gloss);
     vec3 specular = (f0 * env.x + vec3(env.y)) * normalisedProbe * irradiance;
     if (materialClass == MATERIAL_METAL) return specular;
     return diffuse + specular;

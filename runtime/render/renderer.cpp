@@ -117,7 +117,8 @@ void createPipelines(RendererState& s) {
          vk::layoutBinding(1, storage, fs), vk::layoutBinding(2, storage, fs),
          vk::layoutBinding(3, sampled, fs), vk::layoutBinding(4, sampled, fs),
          vk::layoutBinding(5, sampled, fs), vk::layoutBinding(6, sampled, fs, 3),
-         vk::layoutBinding(7, sampled, fs), vk::layoutBinding(8, storage, fs)},
+         vk::layoutBinding(7, sampled, fs), vk::layoutBinding(8, storage, fs),
+         vk::layoutBinding(9, sampled, fs)},
         {vk::layoutBinding(0, sampled, fs), vk::layoutBinding(1, sampled, fs),
          vk::layoutBinding(2, sampled, fs), vk::layoutBinding(3, sampled, fs),
          vk::layoutBinding(4, sampled, fs)}};
@@ -149,7 +150,10 @@ void createPipelines(RendererState& s) {
         forward.stages = {{VK_SHADER_STAGE_VERTEX_BIT, forward_vert_spv, {}},
                           {VK_SHADER_STAGE_FRAGMENT_BIT,
                            forward_frag_spv,
-                           {{0, materialClass}, {1, alphaMask ? 1 : 0}, {2, 0}}}};
+                           {{0, materialClass},
+                            {1, alphaMask ? 1 : 0},
+                            {2, 0},
+                            {3, s.options.samplePlaceholders ? 1 : 0}}}};
         s.forwardPipelines[key] = vk::createGraphicsPipeline(ctx, s.forwardLayout, forward);
         s.info.permutations.push_back(std::string(kClassNames[materialClass]) +
                                       (doubleSided ? "+double-sided" : "") +
@@ -183,7 +187,7 @@ void createPipelines(RendererState& s) {
     // Descriptors: the frame set, one set per material, the tonemap set.
     const uint32_t materialCount = uint32_t(s.materialTextures.size());
     const VkDescriptorPoolSize sizes[] = {
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {storage, 3}, {sampled, 7 + 5 * materialCount + 2}};
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {storage, 3}, {sampled, 8 + 5 * materialCount + 2}};
     s.descriptorPool = vk::createDescriptorPool(ctx, 2 + materialCount, sizes);
     s.frameSet = vk::allocateDescriptorSet(ctx, s.descriptorPool, s.forwardLayout.setLayouts[0]);
     vk::DescriptorWriter w;
@@ -198,6 +202,7 @@ void createPipelines(RendererState& s) {
         w.image(6, s.grid[c].view, s.linearClamp, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, c);
     w.image(7, s.probe.view, s.linearClamp);
     w.buffer(8, storage, s.materialBuffer.buffer);
+    w.image(9, s.envBrdf.view, s.linearClamp);
     w.update(ctx);
     for (const MaterialTextures& textures : s.materialTextures) {
         vk::DescriptorWriter m;
@@ -321,6 +326,7 @@ struct Draw {
     int32_t vertexOffset;
     uint32_t primaryLight, atlas;
     uint32_t entity;  // kNoIndex for static
+    float distance2;  // squared metres from the camera: front to back within a permutation
 };
 
 void beginColorRendering(VkCommandBuffer cmd, const RendererState& s) {
@@ -515,8 +521,9 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
             continue;
         }
         const uint32_t material = std::min(surface.material, materialCount - 1);
+        const glm::vec3 toCentre = 0.5f * (surface.boundsMin + surface.boundsMax) - camera.position;
         draws.push_back({keyOf(material), material, surface.firstIndex, surface.indexCount, 0,
-                         surface.primaryLight, surface.atlas, kNoIndex});
+                         surface.primaryLight, surface.atlas, kNoIndex, glm::dot(toCentre, toCentre)});
         if (surface.primaryLight != kNoIndex) visibleLights.push_back(surface.primaryLight);
         ++stats.surfacesDrawn;
     }
@@ -527,8 +534,10 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
         const uint32_t primary =
             pickDynamicPrimary(s, mesh.entity, glm::vec3(entityTransforms[mesh.entity][3]));
         const uint32_t material = std::min(mesh.material, materialCount - 1);
+        const glm::vec3 toCentre = 0.5f * (lo + hi) - camera.position;
         draws.push_back({keyOf(material), material, mesh.firstIndex, mesh.indexCount,
-                         mesh.vertexOffset, primary, kNoIndex, mesh.entity});
+                         mesh.vertexOffset, primary, kNoIndex, mesh.entity,
+                         glm::dot(toCentre, toCentre)});
         if (primary != kNoIndex) visibleLights.push_back(primary);
         ++stats.dynamicMeshesDrawn;
     }
@@ -536,7 +545,7 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
     visibleLights.erase(std::unique(visibleLights.begin(), visibleLights.end()),
                         visibleLights.end());
     std::stable_sort(draws.begin(), draws.end(), [](const Draw& a, const Draw& b) {
-        return a.key != b.key ? a.key < b.key : a.material < b.material;
+        return a.key != b.key ? a.key < b.key : a.distance2 < b.distance2;
     });
     if (s.options.flatShading) visibleLights.clear();
 
@@ -546,7 +555,7 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
     u.cameraPosition = glm::vec4(camera.position, stats.exposure);
     u.shadowParams = glm::vec4(s.options.shadowRadius, s.options.shadowBand,
                                1.0f / float(s.options.shadowMapSize), s.probeMaxLod);
-    u.gridMin = glm::vec4(s.boundsMin, 0.0f);
+    u.gridMin = glm::vec4(s.boundsMin, s.ambientLux);
     u.gridInvExtent = glm::vec4(1.0f / glm::max(s.boundsMax - s.boundsMin, glm::vec3(1e-3f)), 0.0f);
     const EffectLights& fx = inputs.effects;
     u.counts = glm::uvec4(std::min(fx.omniCount, kMaxEffectOmnis), fx.spotOn ? 1u : 0u, 0u, 0u);

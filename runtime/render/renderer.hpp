@@ -103,6 +103,8 @@ struct RendererOptions {
     float placeholderAmbientLux = -1.0f;  // constant ambient until the baker; < 0 = automatic
     int forceMaterialClass = -1;          // >= 0: every material in this class (benchmarks)
     bool flatShading = false;             // constant colour, no shadows (benchmark floor)
+    bool samplePlaceholders = false;      // fetch the placeholder baked textures anyway (tests);
+                                          // else a level without baked lighting fetches none
 };
 
 /// What the renderer settled on.

@@ -20,6 +20,7 @@ inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kDisplayFormat = VK_FORMAT_B8G8R8A8_UNORM;  // as the swapchain
 inline constexpr uint32_t kLutSize = 64;
+inline constexpr uint32_t kEnvBrdfSize = 32;
 
 /// A material's five texture slots (base, metallic-roughness, normal, occlusion, emissive).
 using MaterialTextures = std::array<std::pair<VkImageView, VkSampler>, 5>;
@@ -95,6 +96,7 @@ struct RendererState {
 
     // Colour.
     vk::Image lut;
+    vk::Image envBrdf;  // EnvBRDF_Fit at kEnvBrdfSize^2 texel centres (NoV, gloss)
 
     // Targets.
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;

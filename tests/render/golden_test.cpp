@@ -232,3 +232,27 @@ TEST(RenderDeterminism, SameFrameTwiceIsBitIdentical) {
 }
 
 }  // namespace
+
+namespace {
+
+// The baked-lighting interface with its placeholder textures fetched gives the frame of the
+// fetch-free placeholder permutation (a level without baked lighting): the interface is neutral.
+TEST(RenderBakedInterface, PlaceholderTexturesMatchConstantAmbient) {
+    const assets::LoadedLevel level = generated("sun_yard_placeholders", sunScene());
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({1.5f, 3.5f, 7.0f}, 10.0f, -25.0f);
+    render::RendererOptions options = smallFrame();
+    const test::RenderedFrame constant = test::renderOnce(level, options, inputs);
+    options.samplePlaceholders = true;
+    const test::RenderedFrame fetched = test::renderOnce(level, options, inputs);
+    EXPECT_EQ(constant.validationErrors + fetched.validationErrors, 0u);
+    ASSERT_EQ(constant.frame.rgba8.size(), fetched.frame.rgba8.size());
+    int worst = 0;
+    for (size_t i = 0; i < constant.frame.rgba8.size(); ++i)
+        worst =
+            std::max(worst, std::abs(int(constant.frame.rgba8[i]) - int(fetched.frame.rgba8[i])));
+    std::printf("[ baked interface ] worst difference %d/255\n", worst);
+    EXPECT_LE(worst, 2);  // half-float texels of the placeholders vs float constants
+}
+
+}  // namespace

@@ -10,6 +10,9 @@
 layout(constant_id = 0) const int MATERIAL_CLASS = MATERIAL_FULL;
 layout(constant_id = 1) const int ALPHA_MASK = 0;    // 1: discard below the cutoff
 layout(constant_id = 2) const int FLAT_SHADING = 0;  // 1: constant colour (benchmark floor)
+// 1: the level supplies baked lighting textures; 0: the neutral placeholder (a constant ambient
+// of frame.gridMin.w lux, no baked shadow, a uniform probe) without any fetch.
+layout(constant_id = 3) const int BAKED_LIGHTING = 1;
 
 layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
@@ -21,7 +24,8 @@ layout(location = 0) out vec4 outColor;
 
 const float HALF_MAX = 65000.0;  // the HDR target is RGBA16F
 
-// Percentage-closer filtering: 3x3 taps of the hardware 2x2 comparison.
+// Percentage-closer filtering: 2x2 taps, half a texel apart, of the hardware 2x2 bilinear
+// comparison: a 3x3-texel tent for four fetches.
 float runtimeShadow(GpuLight light, vec3 p, vec3 n) {
     uint view = light.info.y;
     if (view == NO_INDEX) return 1.0;
@@ -43,13 +47,14 @@ float runtimeShadow(GpuLight light, vec3 p, vec3 n) {
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
     float texel = frame.shadowParams.z;
     float sum = 0.0;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x)
-            sum += texture(shadowMaps, vec4(uv + vec2(x, y) * texel, float(view), ndc.z));
-    return sum * (1.0 / 9.0);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x)
+            sum += texture(shadowMaps, vec4(uv + (vec2(x, y) - 0.5) * texel, float(view), ndc.z));
+    return sum * 0.25;
 }
 
 vec3 secondaryIrradiance(vec3 p, vec3 n) {
+    if (BAKED_LIGHTING == 0) return vec3(frame.gridMin.w);
     vec4 c[3];
     if (draw.lightmapAtlas != NO_INDEX) {
         float base = float(draw.lightmapAtlas * 3u);
@@ -111,7 +116,7 @@ void main() {
                                               light.direction.xyz, light.cones.x, light.cones.y, p);
         BrdfDots d = brdfDots(n, v, s.l);
         if (dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0) {
-            float baked = draw.lightmapAtlas != NO_INDEX
+            float baked = BAKED_LIGHTING == 1 && draw.lightmapAtlas != NO_INDEX
                               ? texture(shadowMask, vec3(inUv1, float(draw.lightmapAtlas))).r
                               : 1.0;
             float runtime = viewDistance < frame.shadowParams.x
@@ -147,10 +152,13 @@ void main() {
     vec3 probeSample = vec3(0.0);
     if (MATERIAL_CLASS != MATERIAL_LAMBERT) {
         vec3 r = reflect(-v, n);
-        probeSample = textureLod(probe, r, (1.0 - gloss) * frame.shadowParams.w).rgb;
+        probeSample = BAKED_LIGHTING == 1 ? textureLod(probe, r, (1.0 - gloss) * frame.shadowParams.w).rgb
+                                          : vec3(INV_PI);
     }
     float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
-    radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, gloss, NoV, irradiance, probeSample);
+    vec2 env = vec2(0.0);
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT) env = texture(envBrdfTable, vec2(NoV, gloss)).rg;
+    radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, probeSample);
 
     // Pre-exposed output; emissive is exposure-relative (1 = display white before the curve).
     float exposure = frame.cameraPosition.w;

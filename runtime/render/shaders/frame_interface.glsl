@@ -11,7 +11,7 @@ layout(set = 0, binding = 0, std140) uniform FrameUniforms {
     mat4 viewProj;
     vec4 cameraPosition;  // xyz metres, w = exposure (pre-exposure of the HDR target)
     vec4 shadowParams;    // x runtime-shadow radius, y blend band (metres), z 1 / map size, w max probe lod
-    vec4 gridMin;         // light grid: xyz world min
+    vec4 gridMin;         // light grid: xyz world min; w placeholder ambient (lux)
     vec4 gridInvExtent;   // xyz 1 / (max - min)
     uvec4 counts;         // x effect omnis in use, y effect spot on (0/1)
     vec4 omniPositionRange[MAX_EFFECT_OMNIS];  // xyz metres, w range (0 unlimited)
@@ -56,6 +56,10 @@ struct GpuMaterial {
     uvec4 textures;  // x bit mask: 1 base, 2 metallic-roughness, 4 normal, 8 occlusion, 16 emissive
 };
 layout(set = 0, binding = 8, std430) readonly buffer Materials { GpuMaterial materials[]; };
+
+// EnvBRDF_Fit(NoV, gloss) tabulated at texel centres (rg = scale, bias): one fetch instead of the
+// 27-term fit per pixel.
+layout(set = 0, binding = 9) uniform sampler2D envBrdfTable;
 
 // Set 1: the material's textures (placeholders where it has none).
 layout(set = 1, binding = 0) uniform sampler2D baseColorTexture;

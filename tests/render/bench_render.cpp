@@ -1,0 +1,148 @@
+// onelight-bench-render: one run at 1280x720 on a generated level of about 50k triangles (a floor,
+// spheres and boxes of all four material classes, a sun, a spot and an omni primary). Reports
+// median frame times, the full-PBR / Lambert-only permutation ratio on the same frame (goal
+// <= 1.15), the full-frame / flat-shaded-floor ratio with the same geometry and MSAA (goal <= 1.3)
+// and resident memory. Compare ratios from one run only (TOOLCHAIN.md: timings are noisy).
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "test_scene.hpp"
+#include "vk/context.hpp"
+
+namespace {
+
+using namespace onelight;
+
+constexpr int kWarmup = 2;
+constexpr int kFrames = 7;
+
+test::Scene benchScene() {
+    test::Scene s;
+    s.materials = {{{0.6f, 0.6f, 0.6f, 1.0f}, 0.0f, 1.0f},   // lambert
+                   {{0.8f, 0.3f, 0.2f, 1.0f}, 0.0f, 0.4f},   // dielectric
+                   {{0.9f, 0.8f, 0.5f, 1.0f}, 1.0f, 0.3f},   // metal
+                   {{0.3f, 0.6f, 0.9f, 1.0f}, 0.5f, 0.5f}};  // full
+    test::addFloor(s, 0.0f, 0.0f, 20.0f, 0.0f, 0);
+    for (int z = 0; z < 6; ++z)
+        for (int x = 0; x < 8; ++x) {
+            const glm::vec3 c(-10.5f + 3.0f * float(x), 0.9f, -16.0f + 3.0f * float(z));
+            test::addSphere(s, c, 0.9f, 12, 20, uint32_t(1 + (x + z) % 3));
+            test::addBox(s, c + glm::vec3(1.1f, -0.9f, 0.6f), c + glm::vec3(1.7f, 0.3f, 1.2f),
+                         uint32_t((x + 2 * z) % 4));
+        }
+    test::SceneLight sun;
+    sun.intensity = 20000.0f;
+    sun.direction = glm::normalize(glm::vec3(0.5f, -0.8f, 0.3f));
+    s.lights.push_back(sun);
+    test::SceneLight spot;
+    spot.type = 2;
+    spot.intensity = 3000.0f;
+    spot.range = 20.0f;
+    spot.position = {-6.0f, 6.0f, -4.0f};
+    spot.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.2f));
+    s.lights.push_back(spot);
+    test::SceneLight omni;
+    omni.type = 1;
+    omni.intensity = 2000.0f;
+    omni.range = 10.0f;
+    omni.position = {6.0f, 3.0f, -8.0f};
+    s.lights.push_back(omni);
+    return s;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+std::string statusLine(const char* key) {
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind(key, 0) == 0) return line.substr(std::string(key).size());
+    return "?";
+}
+
+}  // namespace
+
+int main() {
+    try {
+        const std::string dir = test::outputDir();
+        const std::string gltf = dir + "/bench_level.gltf";
+        test::writeGltf(benchScene(), gltf);
+        const assets::LoadedLevel level = test::compileAndLoad(gltf, dir + "/bench_level.olpak");
+        size_t triangles = level.level.indices.size() / 3;
+
+        render::RenderDeviceFeatures features;
+        vk::Context ctx;
+        vk::createContext(ctx, render::renderContextOptions(features, {}));
+        render::FrameInputs inputs;
+        inputs.camera = render::cameraFromYawPitch({0.0f, 7.0f, 12.0f}, 0.0f, -25.0f);
+        // Four renderers of the same frame, their frames interleaved so that a load change on
+        // the machine hits each configuration alike: the level's permutations, everything full
+        // PBR, everything Lambert-only, and a flat-shaded floor (same geometry and MSAA).
+        std::vector<render::RendererOptions> configs(4);  // 1280x720, MSAA 2x requested
+        configs[1].forceMaterialClass = int(world::MaterialClass::full);
+        configs[2].forceMaterialClass = int(world::MaterialClass::lambert);
+        configs[3].flatShading = true;
+        std::vector<render::Renderer> renderers(configs.size());
+        std::string rssOne;
+        for (size_t c = 0; c < configs.size(); ++c) {
+            render::createRenderer(renderers[c], ctx, level, configs[c]);
+            for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderers[c], inputs);
+            if (c == 0) rssOne = statusLine("VmRSS:");
+        }
+        std::vector<std::vector<double>> gpu(configs.size()), cpu(configs.size());
+        uint64_t drawn = 0;
+        for (int i = 0; i < kFrames; ++i)
+            for (size_t c = 0; c < configs.size(); ++c) {
+                const render::FrameStats stats = render::drawFrame(renderers[c], inputs);
+                gpu[c].push_back(stats.gpuMs);
+                cpu[c].push_back(stats.cpuMs);
+                if (c == 0) drawn = stats.trianglesDrawn;
+            }
+        const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
+        for (auto it = renderers.rbegin(); it != renderers.rend(); ++it)
+            render::destroyRenderer(*it);
+        vk::destroyContext(ctx);
+        struct Row {
+            double gpuMs, cpuMs;
+        };
+        Row full{median(gpu[0]), median(cpu[0])}, pbr{median(gpu[1]), median(cpu[1])},
+            lambert{median(gpu[2]), median(cpu[2])}, flat{median(gpu[3]), median(cpu[3])};
+
+        std::printf(
+            "onelight-bench-render: 1280x720, MSAA %ux (2x requested), %s, %d interleaved frames "
+            "each after %d "
+            "warm-up, medians\n",
+            msaa, ctx.properties.deviceName, kFrames, kWarmup);
+        std::printf(
+            "  level: %zu static triangles in %zu surfaces, %llu drawn in the measured view\n",
+            triangles, level.level.surfaces.size(), static_cast<unsigned long long>(drawn));
+        std::printf(
+            "  full frame (level's permutations, shadows cached): %8.2f ms GPU %8.2f ms CPU\n",
+            full.gpuMs, full.cpuMs);
+        std::printf(
+            "  every material full PBR:                          %8.2f ms GPU %8.2f ms CPU\n",
+            pbr.gpuMs, pbr.cpuMs);
+        std::printf(
+            "  every material Lambert-only:                      %8.2f ms GPU %8.2f ms CPU\n",
+            lambert.gpuMs, lambert.cpuMs);
+        std::printf(
+            "  flat-shaded floor (same geometry, same MSAA):     %8.2f ms GPU %8.2f ms CPU\n",
+            flat.gpuMs, flat.cpuMs);
+        std::printf("  ratio full PBR / Lambert-only: %.3f (goal <= 1.15)\n",
+                    pbr.gpuMs / lambert.gpuMs);
+        std::printf("  ratio full frame / flat floor: %.3f (goal <= 1.3)\n",
+                    full.gpuMs / flat.gpuMs);
+        std::printf("  resident memory with one renderer: VmRSS%s; peak of the run VmHWM%s\n",
+                    rssOne.c_str(), statusLine("VmHWM:").c_str());
+        return 0;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "onelight-bench-render: %s\n", e.what());
+        return 1;
+    }
+}
