@@ -9,7 +9,7 @@
 #include <string>
 
 #include "tests/world/level_generator.hpp"
-#include "tests/world/gltf_builder.hpp"
+#include "tests/world/world_test_support.hpp"
 #include "world/compile/compile_level.hpp"
 #include "world/import/gltf_import.hpp"
 #include "world/package/package_writer.hpp"

@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/world/gltf_builder.hpp"
 #include "tests/world/level_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/bsp/bsp_query.hpp"

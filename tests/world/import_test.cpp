@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include "shading.hpp"
-#include "tests/world/gltf_builder.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/error.hpp"
 #include "world/import/gltf_import.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tests/world/gltf_builder.hpp"
+#include "tests/world/world_test_support.hpp"
 
 namespace onelight::test {
 namespace {

@@ -3,7 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/world/gltf_builder.hpp"
 #include "tests/world/level_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/package/crc32.hpp"

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "tests/world/gltf_builder.hpp"
+#include "tests/world/world_test_support.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/import/gltf_import.hpp"
 #include "world/regions/region_split.hpp"

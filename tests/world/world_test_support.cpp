@@ -1,8 +1,9 @@
 #include "tests/world/world_test_support.hpp"
 
+#include <unistd.h>
+
 #include <filesystem>
 
-#include "tests/world/gltf_builder.hpp"
 #include "world/import/gltf_import.hpp"
 
 namespace onelight::test {
@@ -29,6 +30,15 @@ std::string write_two_lamp_floor(const std::string& label, int cells, double siz
         }
     }
     return gltf.write(fresh_folder(label), label);
+}
+
+std::filesystem::path fresh_folder(const std::string& label) {
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() /
+        ("onelight-world-" + label + "-" + std::to_string(getpid()));
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    return folder;
 }
 
 }  // namespace onelight::test

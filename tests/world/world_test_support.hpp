@@ -1,11 +1,21 @@
 // Shared helpers of the world tests.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 #include "world/compile/compile_level.hpp"
+#include "world/gltf/gltf_builder.hpp"
 
 namespace onelight::test {
+
+using world::box_mesh;
+using world::GltfBuilder;
+using world::grid_mesh;
+using world::MeshData;
+
+/// A fresh empty folder under the system temp folder, named after `label`.
+std::filesystem::path fresh_folder(const std::string& label);
 
 /// Imports and compiles a glTF file.
 world::CompileResult compile_file(const std::string& path,

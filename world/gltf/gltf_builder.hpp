@@ -1,5 +1,5 @@
-// Writes small glTF 2.0 files (.gltf + .bin) for tests and the benchmark level, so fixtures
-// are generated where they are used instead of committed.
+// Writes glTF 2.0 files (.gltf + .bin) from code: the demo level's source, the tests' fixtures
+// and the benchmark level are generated where they are used instead of committed.
 #pragma once
 
 #include <cstdint>
@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-namespace onelight::test {
+namespace onelight::world {
 
 struct MeshData {
     std::string name;
@@ -26,16 +26,17 @@ class GltfBuilder {
 public:
     GltfBuilder();
 
-    int add_mesh(const MeshData& mesh);            // returns the glTF mesh index
+    int add_mesh(const MeshData& mesh);  // returns the glTF mesh index
     int add_material(const nlohmann::json& material);
-    int add_light(const nlohmann::json& light);    // KHR_lights_punctual entry
+    int add_light(const nlohmann::json& light);  // KHR_lights_punctual entry
     int add_camera(const nlohmann::json& camera);
     /// Adds a node; when `root`, it is listed in the scene.
     int add_node(const nlohmann::json& node, bool root = true);
 
     nlohmann::json& document() { return document_; }
 
-    /// Writes NAME.gltf and NAME.bin into `folder`; returns the .gltf path.
+    /// Writes NAME.gltf and NAME.bin into `folder` (each through a temporary file and a
+    /// rename); returns the .gltf path.
     std::string write(const std::filesystem::path& folder, const std::string& name) const;
 
 private:
@@ -45,9 +46,6 @@ private:
     nlohmann::json document_;
     std::vector<uint8_t> buffer_;
 };
-
-/// A fresh empty folder under the system temp folder, named after `label`.
-std::filesystem::path fresh_folder(const std::string& label);
 
 /// A flat square grid in the plane y = height: cells x cells quads, `size` metres wide,
 /// centred on (centre_x, centre_z), facing +y.
@@ -59,4 +57,4 @@ MeshData grid_mesh(const std::string& name, int cells, double size, double heigh
 MeshData box_mesh(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int cells,
                   bool open_bottom);
 
-}  // namespace onelight::test
+}  // namespace onelight::world

@@ -1,13 +1,28 @@
-#include "tests/world/gltf_builder.hpp"
+#include "world/gltf/gltf_builder.hpp"
 
 #include <cstring>
 #include <fstream>
-#include <unistd.h>
+#include <stdexcept>
 
-namespace onelight::test {
+namespace onelight::world {
+
+namespace {
+
+// Writes through a temporary file and a rename, so a reader never sees half a file.
+void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
+    const std::filesystem::path tmp = path.string() + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        if (!out) throw std::runtime_error(tmp.string() + ": cannot write");
+    }
+    std::filesystem::rename(tmp, path);
+}
+
+}  // namespace
 
 GltfBuilder::GltfBuilder() {
-    document_ = {{"asset", {{"version", "2.0"}, {"generator", "onelight tests"}}},
+    document_ = {{"asset", {{"version", "2.0"}, {"generator", "onelight"}}},
                  {"scene", 0},
                  {"scenes", nlohmann::json::array({{{"nodes", nlohmann::json::array()}}})},
                  {"nodes", nlohmann::json::array()},
@@ -24,7 +39,8 @@ int GltfBuilder::add_accessor(const void* data, size_t bytes, size_t count, int 
     const size_t offset = buffer_.size();
     buffer_.resize(offset + bytes);
     if (bytes > 0) std::memcpy(buffer_.data() + offset, data, bytes);
-    document_["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}});
+    document_["bufferViews"].push_back(
+        {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}});
     nlohmann::json accessor = {{"bufferView", document_["bufferViews"].size() - 1},
                                {"componentType", component_type},
                                {"count", count},
@@ -44,22 +60,24 @@ int GltfBuilder::add_accessor(const void* data, size_t bytes, size_t count, int 
 
 int GltfBuilder::add_mesh(const MeshData& mesh) {
     nlohmann::json attributes;
-    attributes["POSITION"] = add_accessor(mesh.positions.data(), mesh.positions.size() * 12,
-                                          mesh.positions.size(), 5126, "VEC3", true, &mesh.positions);
+    attributes["POSITION"] =
+        add_accessor(mesh.positions.data(), mesh.positions.size() * 12, mesh.positions.size(), 5126,
+                     "VEC3", true, &mesh.positions);
     if (!mesh.normals.empty())
         attributes["NORMAL"] = add_accessor(mesh.normals.data(), mesh.normals.size() * 12,
                                             mesh.normals.size(), 5126, "VEC3", false, nullptr);
     if (!mesh.uv0.empty())
-        attributes["TEXCOORD_0"] =
-            add_accessor(mesh.uv0.data(), mesh.uv0.size() * 8, mesh.uv0.size(), 5126, "VEC2", false, nullptr);
+        attributes["TEXCOORD_0"] = add_accessor(mesh.uv0.data(), mesh.uv0.size() * 8,
+                                                mesh.uv0.size(), 5126, "VEC2", false, nullptr);
     if (!mesh.uv1.empty())
-        attributes["TEXCOORD_1"] =
-            add_accessor(mesh.uv1.data(), mesh.uv1.size() * 8, mesh.uv1.size(), 5126, "VEC2", false, nullptr);
+        attributes["TEXCOORD_1"] = add_accessor(mesh.uv1.data(), mesh.uv1.size() * 8,
+                                                mesh.uv1.size(), 5126, "VEC2", false, nullptr);
     nlohmann::json primitive = {{"attributes", attributes}, {"mode", 4}};
-    primitive["indices"] = add_accessor(mesh.indices.data(), mesh.indices.size() * 4, mesh.indices.size(),
-                                        5125, "SCALAR", false, nullptr);
+    primitive["indices"] = add_accessor(mesh.indices.data(), mesh.indices.size() * 4,
+                                        mesh.indices.size(), 5125, "SCALAR", false, nullptr);
     if (mesh.material >= 0) primitive["material"] = mesh.material;
-    document_["meshes"].push_back({{"name", mesh.name}, {"primitives", nlohmann::json::array({primitive})}});
+    document_["meshes"].push_back(
+        {{"name", mesh.name}, {"primitives", nlohmann::json::array({primitive})}});
     return static_cast<int>(document_["meshes"].size() - 1);
 }
 
@@ -97,21 +115,11 @@ std::string GltfBuilder::write(const std::filesystem::path& folder, const std::s
     if (document["accessors"].empty()) document.erase("accessors");
     if (document["bufferViews"].empty()) document.erase("bufferViews");
     if (buffer_.empty()) document.erase("buffers");
-    {
-        std::ofstream bin(folder / (name + ".bin"), std::ios::binary);
-        bin.write(reinterpret_cast<const char*>(buffer_.data()), static_cast<std::streamsize>(buffer_.size()));
-    }
+    const std::string bytes(reinterpret_cast<const char*>(buffer_.data()), buffer_.size());
+    write_atomically(folder / (name + ".bin"), bytes);
     const std::filesystem::path path = folder / (name + ".gltf");
-    std::ofstream(path) << document.dump(1);
+    write_atomically(path, document.dump(1));
     return path.string();
-}
-
-std::filesystem::path fresh_folder(const std::string& label) {
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() / ("onelight-world-" + label + "-" + std::to_string(getpid()));
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-    return folder;
 }
 
 MeshData grid_mesh(const std::string& name, int cells, double size, double height, double centre_x,
@@ -121,7 +129,8 @@ MeshData grid_mesh(const std::string& name, int cells, double size, double heigh
     const double step = size / cells;
     for (int j = 0; j <= cells; ++j) {
         for (int i = 0; i <= cells; ++i) {
-            mesh.positions.emplace_back(centre_x - size / 2 + i * step, height, centre_z - size / 2 + j * step);
+            mesh.positions.emplace_back(centre_x - size / 2 + i * step, height,
+                                        centre_z - size / 2 + j * step);
             mesh.normals.emplace_back(0.0f, 1.0f, 0.0f);
             mesh.uv0.emplace_back(static_cast<float>(i) / cells, static_cast<float>(j) / cells);
         }
@@ -143,9 +152,10 @@ MeshData box_mesh(const std::string& name, const glm::vec3& lo, const glm::vec3&
     mesh.name = name;
     const glm::vec3 centre = (lo + hi) * 0.5f, half = (hi - lo) * 0.5f;
     // Each face: normal n, in-plane axes u, v with cross(u, v) == n.
-    const glm::vec3 faces[6][3] = {{{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
-                                   {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
-                                   {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}}};
+    const glm::vec3 faces[6][3] = {
+        {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+        {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}}};
     for (int f = 0; f < 6; ++f) {
         if (open_bottom && f == 3) continue;
         const glm::vec3 n = faces[f][0], u = faces[f][1], v = faces[f][2];
@@ -159,7 +169,9 @@ MeshData box_mesh(const std::string& name, const glm::vec3& lo, const glm::vec3&
                 mesh.uv0.emplace_back((a + 1.0f) * 0.5f, (b + 1.0f) * 0.5f);
             }
         }
-        const auto at = [&](int i, int j) { return base + static_cast<uint32_t>(j * (cells + 1) + i); };
+        const auto at = [&](int i, int j) {
+            return base + static_cast<uint32_t>(j * (cells + 1) + i);
+        };
         for (int j = 0; j < cells; ++j) {
             for (int i = 0; i < cells; ++i) {
                 mesh.indices.insert(mesh.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
@@ -170,4 +182,4 @@ MeshData box_mesh(const std::string& name, const glm::vec3& lo, const glm::vec3&
     return mesh;
 }
 
-}  // namespace onelight::test
+}  // namespace onelight::world
