@@ -200,6 +200,7 @@ int runWindow(const game::CommandLine& cl, const assets::LoadedLevel& level,
         std::printf("onelight: window %ux%u, MSAA %ux (requested %ux); WASD + mouse, Esc quits\n",
                     options.width, options.height, render::rendererInfo(renderer).msaaInUse,
                     cl.msaa);
+        std::fflush(stdout);
         if (cl.frames == 0) glfwSetInputMode(window.window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
 
         game::FreeFly fly = game::freeFlyFrom(camera);
