@@ -83,6 +83,7 @@ int run_bake_command(const std::vector<std::string>& arguments) {
                 return bad_argument("--texels-per-metre '" + arguments[i] +
                                     "'; expected a number in [0.01, 1024]");
             options.compile.charts.texels_per_metre = v;
+            options.compile.charts.density_from_command_line = true;
         } else if (a == "--quiet") {
             options.show_progress = false;
         } else if (!a.empty() && a[0] != '-' && input.empty()) {

@@ -92,6 +92,7 @@ int run_compile_command(const std::vector<std::string>& arguments) {
                 return 2;
             }
             options.charts.texels_per_metre = value;
+            options.charts.density_from_command_line = true;
         } else if (a == "--atlas-size" && has_value) {
             if (!parse_number(arguments[++i], 64.0, 16384.0, value)) {
                 std::fprintf(stderr,

@@ -157,11 +157,12 @@ TEST(Import, ExtrasMarkDynamicMoversSpawnsProbesGrid) {
          {"extras", {{"onelight", {{"mover", {{"offset", {0.0, 3.0, 0.0}}, {"period", 4.0}}}}}}}});
     gltf.add_node({{"name", "start"}, {"extras", {{"onelight", {{"spawn", true}}}}}});
     gltf.add_node({{"name", "probe"}, {"extras", {{"onelight", {{"probe", true}}}}}});
-    gltf.add_node(
-        {{"name", "settings"},
-         {"extras",
-          {{"onelight",
-            {{"grid", {{"min", {-1, -1, -1}}, {"max", {1, 1, 1}}}}, {"exposure", 10.0}}}}}});
+    gltf.add_node({{"name", "settings"},
+                   {"extras",
+                    {{"onelight",
+                      {{"grid", {{"min", {-1, -1, -1}}, {"max", {1, 1, 1}}}},
+                       {"exposure", 10.0},
+                       {"texels_per_metre", 6.0}}}}}});
     const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("extras"), "extras"));
     ASSERT_EQ(level.entities.size(), 3u);
     EXPECT_EQ(level.entities[0].flags, world::entity_dynamic | world::entity_mover);
@@ -172,6 +173,12 @@ TEST(Import, ExtrasMarkDynamicMoversSpawnsProbesGrid) {
     EXPECT_TRUE(level.has_grid_bounds);
     EXPECT_EQ(level.grid_max, glm::vec3(1.0f));
     EXPECT_TRUE(level.has_exposure);
+    EXPECT_FLOAT_EQ(level.texels_per_metre, 6.0f);
+    // The level's density drives the charts unless the command line gave one.
+    world::CompileOptions options;
+    EXPECT_FLOAT_EQ(world::compile_level(level, options).level.settings.texels_per_metre, 6.0f);
+    options.charts.density_from_command_line = true;
+    EXPECT_FLOAT_EQ(world::compile_level(level, options).level.settings.texels_per_metre, 16.0f);
 }
 
 TEST(Import, ImagesAreFileReferencesOrEncodedBytes) {
@@ -240,6 +247,12 @@ TEST(ImportErrors, AccessorPastItsBuffer) {
     gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(one_triangle("tri"))}});
     gltf.document()["accessors"][0]["count"] = 1000;
     expect_error(gltf.write(fresh_folder("accessor"), "accessor"), {"tri", "POSITION"});
+}
+
+TEST(ImportErrors, BadTexelDensity) {
+    GltfBuilder gltf;
+    gltf.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"texels_per_metre", -2.0}}}}}});
+    expect_error(gltf.write(fresh_folder("density"), "density"), {"settings", "texels_per_metre"});
 }
 
 TEST(ImportErrors, UnknownRole) {

@@ -169,7 +169,10 @@ CompileResult compile_level(const SourceLevel& source, const CompileOptions& opt
     stats.seconds_regions = seconds_since(start);
 
     start = Clock::now();
-    const ChartLayout charts = build_lightmap_charts(geometry, options.charts);
+    ChartOptions chart_options = options.charts;
+    if (source.texels_per_metre > 0.0f && !chart_options.density_from_command_line)
+        chart_options.texels_per_metre = source.texels_per_metre;
+    const ChartLayout charts = build_lightmap_charts(geometry, chart_options);
     stats.seconds_charts = seconds_since(start);
 
     start = Clock::now();
@@ -196,7 +199,7 @@ CompileResult compile_level(const SourceLevel& source, const CompileOptions& opt
     LevelSettings& settings = level.settings;
     settings.exposure_ev100 = source.exposure_ev100;
     settings.has_exposure = source.has_exposure;
-    settings.texels_per_metre = static_cast<float>(options.charts.texels_per_metre);
+    settings.texels_per_metre = static_cast<float>(chart_options.texels_per_metre);
     if (!level.vertices.empty()) {
         settings.bounds_min = glm::vec3(INFINITY);
         settings.bounds_max = glm::vec3(-INFINITY);

@@ -92,6 +92,13 @@ NodeExtras parse_node_extras(const tinygltf::Value& extras, const std::string& w
         out.has_grid = true;
         read_box(o.Get("grid"), "min", "max", base + ".grid", out.grid_min, out.grid_max);
     }
+    if (o.Has("texels_per_metre")) {
+        out.texels_per_metre = read_number(o.Get("texels_per_metre"), base + ".texels_per_metre");
+        if (!(out.texels_per_metre > 0.0f && out.texels_per_metre <= 1024.0f))
+            throw CompileError(base + ".texels_per_metre is " +
+                               std::to_string(out.texels_per_metre) +
+                               "; expected a density in (0, 1024] texels per metre");
+    }
     if (o.Has("exposure")) {
         out.has_exposure = true;
         out.exposure_ev100 = read_number(o.Get("exposure"), base + ".exposure");

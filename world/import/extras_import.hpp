@@ -29,6 +29,7 @@ struct NodeExtras {
     glm::vec3 grid_min{0.0f}, grid_max{0.0f};  // world metres, min < max
     bool has_exposure = false;
     float exposure_ev100 = 0.0f;
+    float texels_per_metre = 0.0f;  // lightmap density for the level, > 0 when given
 };
 
 /// Parses node.extras; `where` names the node for errors ("file.gltf: node 'lamp'").
