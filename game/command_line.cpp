@@ -7,7 +7,8 @@ namespace onelight::game {
 
 const char* const kUsage =
     "usage: onelight LEVEL(.gltf|.glb|.olpak) [--headless] [--size WxH] "
-    "[--camera NAME|x,y,z,yaw,pitch] [--capture out/NAME] [--msaa N] [--frames N] [--flashlight]";
+    "[--camera NAME|x,y,z,yaw,pitch] [--capture out/NAME] [--msaa N] [--frames N] [--flashlight] "
+    "[--replay SCRIPT [--capture-dir DIR]] [--free-fly]";
 
 namespace {
 
@@ -41,6 +42,12 @@ bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& erro
                 error = "--size '" + v + "': expected WxH, e.g. 1280x720";
                 return false;
             }
+        } else if (a == "--free-fly") {
+            out.freeFly = true;
+        } else if (a == "--replay" && hasValue) {
+            out.replay = argv[++i];
+        } else if (a == "--capture-dir" && hasValue) {
+            out.captureDir = argv[++i];
         } else if (a == "--camera" && hasValue) {
             out.camera = argv[++i];
         } else if (a == "--capture" && hasValue) {

@@ -15,6 +15,9 @@ struct CommandLine {
     uint32_t msaa = 2;
     uint32_t frames = 0;      // window: quit after this many frames (0 = until Esc)
     bool flashlight = false;  // the spot effect light at the camera
+    std::string replay;       // a replay script to run (game mode, fixed tick)
+    std::string captureDir;   // where a replay's captures go (default: captures/)
+    bool freeFly = false;     // window: a free-fly camera instead of the player
 };
 
 /// Parses argv. On failure returns false with a one-line `error` ("onelight: ..." not included).

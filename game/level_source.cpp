@@ -27,15 +27,17 @@ fs::path bakeExecutable() {
     return ec ? fs::path("onelight-bake") : self.parent_path() / "onelight-bake";
 }
 
-// Runs argv with stdout and stderr captured; returns the exit code (-1 when it did not run).
-int runCaptured(const std::vector<std::string>& argv, std::string& output) {
+// Runs argv with stdout (and stderr unless `passStderr`) captured; returns the exit code (-1
+// when it did not run).
+int runCaptured(const std::vector<std::string>& argv, std::string& output,
+                bool passStderr = false) {
     int fds[2];
     if (pipe(fds) != 0) return -1;
     const pid_t pid = fork();
     if (pid < 0) return -1;
     if (pid == 0) {
         dup2(fds[1], STDOUT_FILENO);
-        dup2(fds[1], STDERR_FILENO);
+        if (!passStderr) dup2(fds[1], STDERR_FILENO);
         close(fds[0]);
         close(fds[1]);
         std::vector<char*> args;
@@ -100,13 +102,23 @@ bool resolveLevelPackage(const std::string& level, std::string& package, std::st
                 "onelight-bake beside onelight";
         return false;
     }
+    // First compile alone (fast, its one-line errors captured), then bake the lighting with
+    // the baker's progress bars on stderr.
     std::string output;
-    const int code = runCaptured({bake.string(), "compile", level, "-o", package}, output);
+    int code = runCaptured({bake.string(), "compile", level, "-o", package}, output);
     if (code != 0) {
         const std::string why = compilerError(output);
         error = why.empty()
                     ? level + ": onelight-bake compile failed (exit " + std::to_string(code) + ")"
                     : why;
+        return false;
+    }
+    std::fprintf(stderr, "onelight: baking %s (the package is missing or older than the level)\n",
+                 level.c_str());
+    output.clear();
+    code = runCaptured({bake.string(), level, "-o", package}, output, true);
+    if (code != 0) {
+        error = level + ": onelight-bake failed (exit " + std::to_string(code) + ")";
         return false;
     }
     return true;

@@ -1,5 +1,5 @@
 // From what the user named to a package the runtime can load: a .olpak as it is, or a glTF level
-// compiled by `onelight-bake compile` (a child process, found beside this executable) when the
+// compiled and baked by `onelight-bake` (a child process, found beside this executable) when the
 // package beside it is missing or older than the glTF.
 #pragma once
 

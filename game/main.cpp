@@ -1,6 +1,8 @@
 // onelight LEVEL [--headless] [--size WxH] [--camera NAME|x,y,z,yaw,pitch] [--capture out/NAME]
-// Renders a level package (compiling a glTF level first when needed) in a window with a
-// free-fly camera, or one frame headless with its capture files.
+//                [--replay SCRIPT --capture-dir DIR]
+// Renders a level package (compiling and baking a glTF level first when needed) in a window
+// with a free-fly camera, or one frame headless with its capture files; with --replay it plays
+// the game from a replay script (replay_mode.hpp).
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
@@ -19,6 +21,7 @@
 #include "level_source.hpp"
 #include "platform/window.hpp"
 #include "render/renderer.hpp"
+#include "replay_mode.hpp"
 #include "vk/context.hpp"
 
 namespace {
@@ -270,6 +273,7 @@ int run(int argc, char** argv) {
     if (!game::resolveLevelPackage(cl.level, package, error)) return fail(error);
     assets::LoadedLevel level;
     if (!assets::loadLevel(package, level, error)) return fail(error);
+    if (!cl.replay.empty()) return game::runReplay(cl, level);
     render::Camera camera;
     if (!resolveCamera(cl, level, camera, error)) return fail(error);
     return cl.headless ? runHeadless(cl, level, camera) : runWindow(cl, level, camera);

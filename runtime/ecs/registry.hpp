@@ -66,6 +66,14 @@ public:
         assert(valid(e) && "Registry::get: invalid entity");
         return pool<T>().get(e);
     }
+    // Read-only access; the entity must have the component.
+    template <class T>
+    const T& get(Entity e) const {
+        assert(valid(e) && "Registry::get: invalid entity");
+        auto it = pools_.find(std::type_index(typeid(T)));
+        assert(it != pools_.end() && "Registry::get: no entity has this component");
+        return static_cast<const ComponentPool<T>&>(*it->second).get(e);
+    }
     template <class T>
     T* tryGet(Entity e) {
         return valid(e) ? pool<T>().tryGet(e) : nullptr;

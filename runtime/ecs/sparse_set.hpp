@@ -63,6 +63,10 @@ public:
         assert(contains(e) && "ComponentPool::get: the entity has no such component");
         return components_[sparse_[indexOf(e)]];
     }
+    const T& get(Entity e) const {
+        assert(contains(e) && "ComponentPool::get: the entity has no such component");
+        return components_[sparse_[indexOf(e)]];
+    }
     T* tryGet(Entity e) { return contains(e) ? &components_[sparse_[indexOf(e)]] : nullptr; }
 
     const std::vector<Entity>& entities() const { return entities_; }

@@ -1,0 +1,200 @@
+#include "replay_mode.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include "capture/capture.hpp"
+#include "platform/window.hpp"
+#include "render/camera.hpp"
+#include "session.hpp"
+#include "sim/replay_runner.hpp"
+#include "vk/context.hpp"
+
+namespace onelight::game {
+
+namespace {
+
+struct Capture {
+    std::string name;
+    uint32_t width, height;
+    std::vector<uint8_t> rgba8;
+};
+
+// NAME.json: the tick, the camera, the frame's timings and each visible dynamic object's
+// primary light.
+nlohmann::json captureJson(Session& s, const render::Renderer& renderer,
+                           const render::FrameInputs& in, const render::FrameStats& stats,
+                           uint64_t tick, double tickSeconds) {
+    const render::RendererInfo& info = render::rendererInfo(renderer);
+    const render::CapturedFrame& frame = render::capturedFrame(renderer);
+    const Player& p = s.registry.get<Player>(s.player);
+    glm::mat4 clip = render::projectionMatrix(in.camera, float(frame.width) / float(frame.height),
+                                              in.camera.zfar > 0.0f ? in.camera.zfar : 500.0f) *
+                     render::viewMatrix(in.camera);
+    render::Frustum frustum = render::frustumOf(clip);
+    nlohmann::json objects = nlohmann::json::array();
+    for (auto [e, name, transform, lit] :
+         s.registry.view<Name, Transform, DynamicLighting>().each()) {
+        glm::vec3 half(0.75f);
+        if (!render::intersects(frustum, transform.position - half, transform.position + half))
+            continue;
+        objects.push_back(
+            {{"name", name.value},
+             {"position", {transform.position.x, transform.position.y, transform.position.z}},
+             {"primary", lit.primary < s.lightNames.size() ? s.lightNames[lit.primary] : "none"}});
+    }
+    return {{"level", s.level->path},
+            {"tick", tick},
+            {"time", double(tick) * tickSeconds},
+            {"size", {frame.width, frame.height}},
+            {"camera",
+             {{"position", {in.camera.position.x, in.camera.position.y, in.camera.position.z}},
+              {"yaw_degrees", glm::degrees(p.yaw)},
+              {"pitch_degrees", glm::degrees(p.pitch)},
+              {"ev100", stats.ev100}}},
+            {"msaa", {{"requested", info.msaaRequested}, {"in_use", info.msaaInUse}}},
+            {"timings_ms", {{"cpu", stats.cpuMs}, {"gpu", stats.gpuMs}}},
+            {"effect_lights", {{"omni", in.effects.omniCount}, {"spot", in.effects.spotOn}}},
+            {"dynamic_objects", objects}};
+}
+
+// All captures side by side at half size, in script order: one PNG to look at.
+bool writeContactSheet(const std::string& path, const std::vector<Capture>& captures,
+                       std::string& error) {
+    if (captures.empty()) return true;
+    uint32_t cw = (captures[0].width + 1) / 2, ch = (captures[0].height + 1) / 2;
+    uint32_t columns = uint32_t(std::ceil(std::sqrt(double(captures.size()))));
+    uint32_t rows = uint32_t((captures.size() + columns - 1) / columns);
+    uint32_t gap = 4, width = columns * (cw + gap) + gap, height = rows * (ch + gap) + gap;
+    std::vector<uint8_t> sheet(size_t(width) * height * 4, 40);
+    for (size_t i = 0; i < captures.size(); ++i) {
+        const Capture& c = captures[i];
+        uint32_t ox = gap + uint32_t(i % columns) * (cw + gap),
+                 oy = gap + uint32_t(i / columns) * (ch + gap);
+        for (uint32_t y = 0; y < ch && 2 * y < c.height; ++y)
+            for (uint32_t x = 0; x < cw && 2 * x < c.width; ++x)
+                for (int k = 0; k < 4; ++k)
+                    sheet[(size_t(oy + y) * width + ox + x) * 4 + k] =
+                        c.rgba8[(size_t(2 * y) * c.width + 2 * x) * 4 + k];
+    }
+    for (size_t i = 3; i < sheet.size(); i += 4) sheet[i] = 255;
+    return capture::writePng(path, width, height, sheet, error);
+}
+
+}  // namespace
+
+int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
+    Session session;
+    startSession(session, level);
+    ReplayRunner runner;
+    try {
+        runner =
+            makeReplayRunner(replay::loadScript(cl.replay), session.lightNames, session.registry);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "onelight: %s\n", e.what());
+        return 1;
+    }
+    const double tickSeconds = 1.0 / runner.script.tickRate;
+    session.tickSeconds = tickSeconds;
+    const std::string dir = cl.captureDir.empty() ? std::string("captures") : cl.captureDir;
+    std::filesystem::create_directories(dir);
+
+    platform::Window window;
+    render::RenderDeviceFeatures features;
+    vk::Context ctx;
+    render::Renderer renderer;
+    std::string error;
+    if (!cl.headless &&
+        !platform::openWindow(window, "onelight replay", cl.width, cl.height, error)) {
+        std::fprintf(stderr, "onelight: %s\n", error.c_str());
+        return 1;
+    }
+    int code = 0;
+    std::vector<Capture> captures;
+    try {
+        vk::createContext(ctx, render::renderContextOptions(
+                                   features, cl.headless ? std::vector<const char*>{}
+                                                         : platform::windowInstanceExtensions()));
+        if (!cl.headless) platform::createWindowSwapchain(window, ctx);
+        render::RendererOptions options;
+        options.width = cl.headless ? cl.width : window.swapchain.extent.width;
+        options.height = cl.headless ? cl.height : window.swapchain.extent.height;
+        options.requestedMsaa = cl.msaa;
+        render::createRenderer(renderer, ctx, level, options);
+        std::printf("onelight: replay %s on %s, %zu commands, MSAA %ux\n", cl.replay.c_str(),
+                    level.path.c_str(), runner.script.commands.size(),
+                    render::rendererInfo(renderer).msaaInUse);
+
+        uint64_t lastTick = runner.script.commands.empty() ? 0 : runner.script.commands.back().tick;
+        std::vector<render::DynamicTransform> transforms;
+        for (uint64_t tick = 0; tick <= lastTick; ++tick) {
+            applyReplayInput(runner, tick, session.input, session.registry, session.player,
+                             session.tuning);
+            stepSession(session);
+            ReplayAfterTick after = finishReplayTick(runner, tick, session.registry);
+            bool show = !cl.headless;
+            if (!after.captures.empty() || show) {
+                render::FrameInputs in = frameInputsOf(session, transforms);
+                render::FrameOutput out;
+                out.readback = !after.captures.empty();
+                int image = -1;
+                if (show) {
+                    glfwPollEvents();
+                    if (glfwWindowShouldClose(window.window)) break;
+                    image = vk::acquireNextImage(ctx, window.swapchain);
+                    if (image >= 0)
+                        out.swapchain = &window.swapchain, out.swapchainImage = uint32_t(image);
+                }
+                render::FrameStats stats = render::drawFrame(renderer, in, out);
+                if (image >= 0) vk::presentImage(ctx, window.swapchain, uint32_t(image));
+                for (const std::string& name : after.captures) {
+                    const render::CapturedFrame& frame = render::capturedFrame(renderer);
+                    std::string base = dir + "/" + name;
+                    if (!capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8,
+                                           error) ||
+                        !capture::writeExr(base + ".exr", frame.width, frame.height,
+                                           frame.linearRgba, error) ||
+                        !capture::writeJson(
+                            base + ".json",
+                            captureJson(session, renderer, in, stats, tick, tickSeconds), error))
+                        throw std::runtime_error(error);
+                    captures.push_back({name, frame.width, frame.height, frame.rgba8});
+                    std::printf("onelight: tick %llu captured %s.png\n", (unsigned long long)tick,
+                                base.c_str());
+                }
+            }
+            if (after.quit) break;
+        }
+        if (!writeContactSheet(dir + "/contact_sheet.png", captures, error))
+            throw std::runtime_error(error);
+    } catch (const ReplayFailure& e) {
+        std::fprintf(stderr, "onelight: %s\n", e.what());
+        code = 1;
+    } catch (...) {
+        render::destroyRenderer(renderer);
+        if (!cl.headless) platform::closeWindow(window, ctx);
+        vk::destroyContext(ctx);
+        throw;
+    }
+    render::destroyRenderer(renderer);
+    if (!cl.headless) platform::closeWindow(window, ctx);
+    vk::destroyContext(ctx);
+    if (ctx.validationCounts.errors.load() > 0) {
+        std::fprintf(stderr, "onelight: %u Vulkan validation errors\n",
+                     unsigned(ctx.validationCounts.errors.load()));
+        code = 1;
+    }
+    if (code == 0)
+        std::printf("onelight: replay done, %zu captures and a contact sheet in %s/\n",
+                    captures.size(), dir.c_str());
+    return code;
+}
+
+}  // namespace onelight::game

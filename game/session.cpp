@@ -1,0 +1,160 @@
+#include "session.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "shading.hpp"
+
+namespace onelight::game {
+
+namespace {
+
+float luminance(glm::vec3 c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+glm::mat4 objectMatrix(glm::vec3 position, const world::Entity& e) {
+    glm::mat4 m = glm::mat4_cast(glm::normalize(e.rotation));
+    m[0] *= e.scale.x;
+    m[1] *= e.scale.y;
+    m[2] *= e.scale.z;
+    m[3] = glm::vec4(position, 1.0f);
+    return m;
+}
+
+}  // namespace
+
+void startSession(Session& s, const assets::LoadedLevel& loaded) {
+    s.level = &loaded;
+    const world::CompiledLevel& level = loaded.level;
+    s.bsp = world::bsp_view(level);
+
+    glm::vec3 feet = 0.5f * (level.settings.bounds_min + level.settings.bounds_max);
+    glm::vec3 forward(0.0f, 0.0f, -1.0f);
+    bool placed = false;
+    for (const world::Entity& e : level.entities)
+        if (!placed && (e.flags & world::entity_spawn)) {
+            feet = e.position;
+            forward = glm::normalize(e.rotation) * glm::vec3(0.0f, 0.0f, -1.0f);
+            placed = true;
+        }
+    if (!placed && !level.cameras.empty()) {
+        feet = level.cameras.front().position - glm::vec3(0.0f, s.tuning.eyeHeight, 0.0f);
+        forward = glm::normalize(level.cameras.front().rotation) * glm::vec3(0.0f, 0.0f, -1.0f);
+    }
+    s.player = s.registry.create();
+    s.registry.emplace<Name>(s.player, Name{"player"});
+    s.registry.emplace<Transform>(s.player, Transform{feet});
+    s.registry.emplace<Player>(s.player, Player{std::atan2(-forward.x, -forward.z),
+                                                std::asin(std::clamp(forward.y, -1.0f, 1.0f))});
+    s.registry.emplace<Flashlight>(s.player);
+
+    for (uint32_t i = 0; i < level.entities.size(); ++i) {
+        const world::Entity& e = level.entities[i];
+        if (!(e.flags & world::entity_dynamic)) continue;
+        ecs::Entity entity = s.registry.create();
+        s.registry.emplace<Name>(entity, Name{e.name});
+        s.registry.emplace<Transform>(entity, Transform{e.position, e.scale});
+        s.registry.emplace<LevelEntity>(entity, LevelEntity{i});
+        s.registry.emplace<DynamicLighting>(entity);
+        if (e.flags & world::entity_mover)
+            s.registry.emplace<Mover>(entity, Mover{e.position, e.mover_offset, e.mover_period});
+    }
+    for (uint32_t i = 0; i < level.lights.size(); ++i) {
+        s.lightNames.push_back(level.lights[i].name);
+        if (level.lights[i].role == world::LightRole::primary) s.primaryCandidates.push_back(i);
+    }
+}
+
+float primaryScore(const Session& s, uint32_t light, const glm::vec3& point) {
+    const world::Light& l = s.level->level.lights[light];
+    glm::vec3 direction = glm::normalize(l.direction);
+    glsl::LightSample sample = glsl::evaluatePunctualLight(
+        int(l.type), l.color, l.intensity, l.range, l.position, direction, std::cos(l.inner_cone),
+        std::cos(l.outer_cone), point);
+    float e = luminance(sample.illuminance);
+    if (!(e > 0.0f)) return 0.0f;
+    // Visibility: a ray from the point towards the light (1 km towards the sun).
+    glm::dvec3 toLight = l.type == world::LightType::directional
+                             ? -glm::dvec3(direction) * 1000.0
+                             : glm::dvec3(l.position) - glm::dvec3(point);
+    double distance = glm::length(toLight);
+    world::RayHit hit = world::raycast(s.bsp, glm::dvec3(point), toLight / distance, distance);
+    return hit.hit ? 0.0f : e;
+}
+
+float meteredEv100(const Session& s) {
+    const Transform& t = s.registry.get<Transform>(s.player);
+    glm::vec3 eye = t.position + glm::vec3(0.0f, s.tuning.eyeHeight, 0.0f);
+    float illuminance = 30.0f;
+    for (uint32_t light : s.primaryCandidates) illuminance += primaryScore(s, light, eye);
+    float luminance = illuminance * 0.18f / glsl::PI;
+    return std::clamp(std::log2(luminance * 100.0f / 12.5f), 1.0f, 17.0f);
+}
+
+void stepSession(Session& s) {
+    // The eye adapts to the metered exposure with a 0.4 s time constant (from the first tick
+    // on, it starts adapted).
+    float target = meteredEv100(s);
+    float rate = 1.0f - std::exp(-float(s.tickSeconds) / 0.4f);
+    s.ev100 = s.tick == 0 ? target : s.ev100 + (target - s.ev100) * rate;
+    ecs::Tick tick{s.tick++, s.tickSeconds};
+    playerSystem(s.registry, tick, s.input, s.tuning, &s.bsp);
+    moverSystem(s.registry, tick);
+    effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);
+    primarySelectionSystem(
+        s.registry, s.primaryCandidates,
+        [&s](uint32_t light, const glm::vec3& p) { return primaryScore(s, light, p); }, s.tuning);
+    s.input.endTick();
+}
+
+render::Camera playerCamera(const Session& s) {
+    const Transform& t = s.registry.get<Transform>(s.player);
+    const Player& p = s.registry.get<Player>(s.player);
+    glm::vec3 eye = t.position + glm::vec3(0.0f, s.tuning.eyeHeight, 0.0f);
+    render::Camera camera =
+        render::cameraFromYawPitch(eye, glm::degrees(p.yaw), glm::degrees(p.pitch));
+    camera.hasExposure = true;
+    camera.ev100 = s.ev100;
+    return camera;
+}
+
+render::FrameInputs frameInputsOf(Session& s, std::vector<render::DynamicTransform>& transforms) {
+    render::FrameInputs in;
+    in.camera = playerCamera(s);
+    ecs::Registry& r = s.registry;
+
+    for (auto [e, transform, flash] : r.view<Transform, GunFlash>().each()) {
+        if (in.effects.omniCount >= render::kMaxEffectOmnis) break;
+        render::EffectOmni& o = in.effects.omni[in.effects.omniCount++];
+        o.position = transform.position;
+        o.color = glm::vec3(1.0f, 0.75f, 0.45f);
+        o.intensity = s.tuning.gunFlashIntensity;
+        o.range = 12.0f;
+    }
+    const Flashlight& flashlight = r.get<Flashlight>(s.player);
+    if (flashlight.on) {
+        in.effects.spotOn = true;
+        in.effects.spot.position = in.camera.position;
+        in.effects.spot.direction = render::forwardOf(in.camera);
+        in.effects.spot.color = glm::vec3(1.0f, 0.96f, 0.9f);
+        in.effects.spot.intensity = s.tuning.flashlightIntensity;
+        in.effects.spot.range = 30.0f;
+        in.effects.spot.innerCone = glm::radians(s.tuning.flashlightInnerDeg);
+        in.effects.spot.outerCone = glm::radians(s.tuning.flashlightOuterDeg);
+    }
+
+    transforms.clear();
+    for (auto [e, transform, link] : r.view<Transform, LevelEntity>().each()) {
+        render::DynamicTransform d;
+        d.entity = link.index;
+        d.worldFromObject = objectMatrix(transform.position, s.level->level.entities[link.index]);
+        transforms.push_back(d);
+    }
+    in.dynamicTransforms = transforms;
+    return in;
+}
+
+}  // namespace onelight::game

@@ -1,0 +1,64 @@
+// A game in progress on a loaded level: the ECS world, the player, the fixed tick, and what each
+// frame hands the renderer. The same inputs, tick by tick, give the same state and frames.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "assets/level_assets.hpp"
+#include "render/renderer.hpp"
+#include "sim/components.hpp"
+#include "sim/input.hpp"
+#include "sim/systems.hpp"
+#include "sim/tuning.hpp"
+
+namespace onelight::game {
+
+// Links an ECS entity to its record in the level (for the renderer's dynamic meshes).
+struct LevelEntity {
+    uint32_t index = 0;  // into level.entities
+};
+
+struct Session {
+    const assets::LoadedLevel* level = nullptr;  // borrowed
+    world::BspView bsp;                          // collision and visibility
+    ecs::Registry registry;
+    ecs::Entity player = ecs::kNullEntity;
+    Tuning tuning;
+    InputState input;
+    uint64_t tick = 0;  // the next tick to run
+    double tickSeconds = 1.0 / 60.0;
+    uint64_t shotSerial = 0;                  // gun flashes fired so far
+    std::vector<uint32_t> primaryCandidates;  // lights that may be a dynamic object's primary
+    std::vector<std::string> lightNames;      // by light index
+    float ev100 = 0.0f;                       // the player's adapted exposure
+};
+
+// Sets up the player (at the level's spawn, else its first camera, else its centre) and one
+// entity per dynamic object of the level.
+void startSession(Session& session, const assets::LoadedLevel& level);
+
+// Runs one fixed tick: player, movers, effect lights, primary selection; then clears the
+// tick's one-shot input.
+void stepSession(Session& session);
+
+// The player's eye as a camera, with the adapted exposure.
+render::Camera playerCamera(const Session& session);
+
+// The exposure a light meter at the player's eye asks for: the shadowed illuminance of every
+// primary there, on a middle-grey (18%) Lambertian surface, EV100 = log2(L * S / K) with
+// S = 100, K = 12.5 (ISO 2720 reflected-light calibration; Lagarde and de Rousiers 2014, sec.
+// 5.1), plus a floor of 30 lux for the bounce light a meter of primaries alone misses.
+float meteredEv100(const Session& session);
+
+// The renderer's inputs for the current state; `transforms` holds what frame.dynamicTransforms
+// points to.
+render::FrameInputs frameInputsOf(Session& session,
+                                  std::vector<render::DynamicTransform>& transforms);
+
+// The shadowed contribution of primary `light` at `point`: its illuminance (luminance, lux) by
+// the shared light model times its visibility along a ray through the BSP.
+float primaryScore(const Session& session, uint32_t light, const glm::vec3& point);
+
+}  // namespace onelight::game
