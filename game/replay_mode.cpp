@@ -128,6 +128,7 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
         options.height = cl.headless ? cl.height : window.swapchain.extent.height;
         options.requestedMsaa = cl.msaa;
         render::createRenderer(renderer, ctx, level, options);
+        session.secondaryLux = std::max(render::rendererInfo(renderer).ambientLux, 1.0f);
         std::printf("onelight: replay %s on %s, %zu commands, MSAA %ux\n", cl.replay.c_str(),
                     level.path.c_str(), runner.script.commands.size(),
                     render::rendererInfo(renderer).msaaInUse);

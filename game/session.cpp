@@ -85,19 +85,45 @@ float primaryScore(const Session& s, uint32_t light, const glm::vec3& point) {
     return hit.hit ? 0.0f : e;
 }
 
-float meteredEv100(const Session& s) {
-    const Transform& t = s.registry.get<Transform>(s.player);
-    glm::vec3 eye = t.position + glm::vec3(0.0f, s.tuning.eyeHeight, 0.0f);
-    float illuminance = 30.0f;
-    for (uint32_t light : s.primaryCandidates) illuminance += primaryScore(s, light, eye);
-    float luminance = illuminance * 0.18f / glsl::PI;
-    return std::clamp(std::log2(luminance * 100.0f / 12.5f), 1.0f, 17.0f);
+float meteredEv100(const Session& s, float fallback) {
+    const world::CompiledLevel& level = s.level->level;
+    const render::Camera camera = playerCamera(s);
+    const glm::vec3 eye = camera.position;
+    double sumLog2 = 0.0;
+    int hits = 0;
+    for (int row = 0; row < 3; ++row)
+        for (int column = 0; column < 5; ++column) {
+            // A 5 x 3 grid over the central 70% of a 16:9 view with a 1-radian vertical field.
+            float x = (column - 2) / 2.0f * 0.7f * std::tan(0.5f) * 16.0f / 9.0f;
+            float y = (1 - row) * 0.7f * std::tan(0.5f);
+            glm::vec3 d = glm::normalize(camera.rotation * glm::vec3(x, y, -1.0f));
+            world::RayHit hit = world::raycast(s.bsp, glm::dvec3(eye), glm::dvec3(d), 200.0);
+            if (!hit.hit) continue;
+            const glm::vec3& a = s.bsp.vertices[s.bsp.indices[3 * hit.triangle]].position;
+            const glm::vec3& b = s.bsp.vertices[s.bsp.indices[3 * hit.triangle + 1]].position;
+            const glm::vec3& c = s.bsp.vertices[s.bsp.indices[3 * hit.triangle + 2]].position;
+            glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+            if (glm::dot(n, d) > 0.0f) n = -n;  // the side the eye sees
+            glm::vec3 p = eye + d * float(hit.t) + n * 0.02f;
+            float illuminance = s.secondaryLux;
+            for (uint32_t light : s.primaryCandidates) {
+                const world::Light& l = level.lights[light];
+                glsl::LightSample sample = glsl::evaluatePunctualLight(
+                    int(l.type), l.color, l.intensity, l.range, l.position,
+                    glm::normalize(l.direction), std::cos(l.inner_cone), std::cos(l.outer_cone), p);
+                float cosine = std::max(0.0f, glm::dot(n, sample.l));
+                if (cosine > 0.0f) illuminance += cosine * primaryScore(s, light, p);
+            }
+            sumLog2 += double(std::log2(illuminance * 0.18f / glsl::PI * 100.0f / 12.5f));
+            ++hits;
+        }
+    return hits ? std::clamp(float(sumLog2 / hits), 1.0f, 17.0f) : fallback;
 }
 
 void stepSession(Session& s) {
     // The eye adapts to the metered exposure with a 0.4 s time constant (from the first tick
     // on, it starts adapted).
-    float target = meteredEv100(s);
+    float target = meteredEv100(s, s.ev100);
     float rate = 1.0f - std::exp(-float(s.tickSeconds) / 0.4f);
     s.ev100 = s.tick == 0 ? target : s.ev100 + (target - s.ev100) * rate;
     ecs::Tick tick{s.tick++, s.tickSeconds};

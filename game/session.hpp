@@ -33,6 +33,7 @@ struct Session {
     std::vector<uint32_t> primaryCandidates;  // lights that may be a dynamic object's primary
     std::vector<std::string> lightNames;      // by light index
     float ev100 = 0.0f;                       // the player's adapted exposure
+    float secondaryLux = 30.0f;  // secondary illuminance the meter adds (the renderer's ambient)
 };
 
 // Sets up the player (at the level's spawn, else its first camera, else its centre) and one
@@ -46,11 +47,13 @@ void stepSession(Session& session);
 // The player's eye as a camera, with the adapted exposure.
 render::Camera playerCamera(const Session& session);
 
-// The exposure a light meter at the player's eye asks for: the shadowed illuminance of every
-// primary there, on a middle-grey (18%) Lambertian surface, EV100 = log2(L * S / K) with
-// S = 100, K = 12.5 (ISO 2720 reflected-light calibration; Lagarde and de Rousiers 2014, sec.
-// 5.1), plus a floor of 30 lux for the bounce light a meter of primaries alone misses.
-float meteredEv100(const Session& session);
+// The exposure a reflected-light meter in the player's view asks for: 15 rays across the view
+// find the surfaces it sees; each surface's luminance is the shadowed illuminance of every
+// primary on it (its own normal) plus session.secondaryLux, the secondary light the renderer
+// adds, on a middle-grey (18%) Lambertian surface; EV100 = log2(L * S / K) of their geometric
+// mean, S = 100, K = 12.5 (ISO 2720; Lagarde and de Rousiers 2014, sec. 5.1). Keeps `fallback`
+// when the view sees no surface.
+float meteredEv100(const Session& session, float fallback);
 
 // The renderer's inputs for the current state; `transforms` holds what frame.dynamicTransforms
 // points to.
