@@ -108,6 +108,18 @@ float irradianceLinear(vec4 c, vec3 n) {
     return max(0.0f, c.x + c.y * n.x + c.z * n.y + c.w * n.z);
 }
 
+// An ambient cube (Valve's, McTaggart 2004, "Half-Life 2 / Valve Source Shading", slide
+// "Ambient Cube"): six irradiances E(+x) E(-x) E(+y) E(-y) E(+z) E(-z) in lux, blended by the
+// squared normal components: E(n) = n.x^2 E(+-x) + n.y^2 E(+-y) + n.z^2 E(+-z), the sign of each
+// component picking the face. The light grid stores secondary irradiance this way.
+vec3 irradianceAmbientCube(vec3 px, vec3 nx, vec3 py, vec3 ny, vec3 pz, vec3 nz, vec3 n) {
+    vec3 n2 = n * n;
+    vec3 ex = n.x >= 0.0f ? px : nx;
+    vec3 ey = n.y >= 0.0f ? py : ny;
+    vec3 ez = n.z >= 0.0f ? pz : nz;
+    return ex * n2.x + ey * n2.y + ez * n2.z;
+}
+
 // Secondary light reflected towards v: diffuse from irradiance E (lux, per channel) and specular
 // from a normalised probe sample (radiance / average irradiance at its capture point) scaled back
 // by E, times the environment "Fresnel" f0 * env.x + env.y of the runtime model (EnvBRDF_Fit of

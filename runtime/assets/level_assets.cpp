@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -45,6 +46,21 @@ bool loadLevel(const std::string& path, LoadedLevel& out, std::string& error) {
     }
     out.path = path;
     out.level = std::move(read.level);
+    package::BakedReadResult baked =
+        package::decode_baked_sections(read.baked_sections, out.level, path);
+    if (!baked.ok()) {
+        error = baked.error;
+        return false;
+    }
+    if (baked.present && baked.baked.shard_count > 1) {
+        error = path + ": holds part " + std::to_string(baked.baked.shard_index + 1) + " of " +
+                std::to_string(baked.baked.shard_count) +
+                " of a sharded bake; expected a complete package (join the parts with "
+                "`onelight-bake merge`)";
+        return false;
+    }
+    out.hasBakedLighting = baked.present;
+    out.baked = baked.present ? std::move(baked.baked) : world::BakedLighting{};
     out.images.clear();
     out.images.resize(out.level.images.size());
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();

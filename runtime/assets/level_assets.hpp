@@ -1,11 +1,13 @@
-// A level package loaded for the runtime: the compiled level (world/package reader) and its
-// images decoded to RGBA8 (stb_image), from the package's embedded bytes or from files beside it.
+// A level package loaded for the runtime: the compiled level (world/package reader), its baked
+// lighting when the baker filled it (sections 32..34), and its images decoded to RGBA8
+// (stb_image), from the package's embedded bytes or from files beside it.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "world/baked_lighting.hpp"
 #include "world/compiled_level.hpp"
 
 namespace onelight::assets {
@@ -19,11 +21,14 @@ struct DecodedImage {
 struct LoadedLevel {
     std::string path;                  // the .olpak file
     world::CompiledLevel level;        // as the package holds it
+    bool hasBakedLighting = false;     // the package holds sections 32..34 (a complete bake)
+    world::BakedLighting baked;        // lightmap texels, shadow masks, light grid when present
     std::vector<DecodedImage> images;  // one per level.images, decoded
 };
 
-/// Reads the package at `path` and decodes every image it refers to. On failure returns false
-/// and sets `error` to one line naming the file and what was expected.
+/// Reads the package at `path`, its baked lighting when present, and decodes every image it
+/// refers to. On failure (including an unmerged part of a sharded bake) returns false and sets
+/// `error` to one line naming the file and what was expected.
 bool loadLevel(const std::string& path, LoadedLevel& out, std::string& error);
 
 /// Decodes PNG/JPEG bytes. On failure returns false and sets `error` (without a file name).

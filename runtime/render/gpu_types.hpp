@@ -15,9 +15,9 @@ struct FrameUniforms {
     glm::mat4 viewProj;
     glm::vec4 cameraPosition;  // xyz metres, w exposure
     glm::vec4 shadowParams;    // x radius, y band, z 1 / shadow map size, w max probe lod
-    glm::vec4 gridMin;
-    glm::vec4 gridInvExtent;
-    glm::uvec4 counts;  // x effect omnis, y effect spot on
+    glm::vec4 baked;           // x placeholder ambient (lux), y lightmap decode factor, zw 0
+    glm::vec4 reserved;        // 0
+    glm::uvec4 counts;         // x effect omnis, y effect spot on
     glm::vec4 omniPositionRange[kMaxEffectOmnis];
     glm::vec4 omniColor[kMaxEffectOmnis];
     glm::vec4 spotPositionRange;
@@ -51,13 +51,20 @@ struct GpuMaterial {
 };
 static_assert(sizeof(GpuMaterial) == 80);
 
+/// A dynamic object's baked lighting, sampled from the light grid at its lighting origin.
+struct GpuObjectLighting {
+    glm::vec4 ambientCube[6];  // rgb lux facing +x -x +y -y +z -z; [0].w baked primary visibility
+};
+static_assert(sizeof(GpuObjectLighting) == 96);
+
 struct DrawPush {
     glm::mat4 model;
     uint32_t material;
     uint32_t primaryLight;
     uint32_t lightmapAtlas;
-    uint32_t pad;
+    uint32_t objectLighting;  // into the object-lighting records or kNoIndex
+    glm::vec4 lightmapScale;  // xy: uv1 (over the surface's atlas) to the lightmap array's uv
 };
-static_assert(sizeof(DrawPush) == 80);
+static_assert(sizeof(DrawPush) == 96);
 
 }  // namespace onelight::render

@@ -11,6 +11,7 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "render/light_grid_sample.hpp"
 #include "render/renderer_state.hpp"
 #include "shading.hpp"
 #include "vk/commands.hpp"
@@ -116,7 +117,7 @@ void createPipelines(RendererState& s) {
         {vk::layoutBinding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vfs),
          vk::layoutBinding(1, storage, fs), vk::layoutBinding(2, storage, fs),
          vk::layoutBinding(3, sampled, fs), vk::layoutBinding(4, sampled, fs),
-         vk::layoutBinding(5, sampled, fs), vk::layoutBinding(6, sampled, fs, 3),
+         vk::layoutBinding(5, sampled, fs), vk::layoutBinding(6, storage, fs),
          vk::layoutBinding(7, sampled, fs), vk::layoutBinding(8, storage, fs),
          vk::layoutBinding(9, sampled, fs)},
         {vk::layoutBinding(0, sampled, fs), vk::layoutBinding(1, sampled, fs),
@@ -153,7 +154,7 @@ void createPipelines(RendererState& s) {
                            {{0, materialClass},
                             {1, alphaMask ? 1 : 0},
                             {2, 0},
-                            {3, s.options.samplePlaceholders ? 1 : 0}}}};
+                            {3, s.bakedLighting || s.options.samplePlaceholders ? 1 : 0}}}};
         s.forwardPipelines[key] = vk::createGraphicsPipeline(ctx, s.forwardLayout, forward);
         s.info.permutations.push_back(std::string(kClassNames[materialClass]) +
                                       (doubleSided ? "+double-sided" : "") +
@@ -187,7 +188,7 @@ void createPipelines(RendererState& s) {
     // Descriptors: the frame set, one set per material, the tonemap set.
     const uint32_t materialCount = uint32_t(s.materialTextures.size());
     const VkDescriptorPoolSize sizes[] = {
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {storage, 3}, {sampled, 8 + 5 * materialCount + 2}};
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {storage, 4}, {sampled, 6 + 5 * materialCount + 2}};
     s.descriptorPool = vk::createDescriptorPool(ctx, 2 + materialCount, sizes);
     s.frameSet = vk::allocateDescriptorSet(ctx, s.descriptorPool, s.forwardLayout.setLayouts[0]);
     vk::DescriptorWriter w;
@@ -198,8 +199,7 @@ void createPipelines(RendererState& s) {
     w.image(3, s.frameShadows.image ? s.frameShadows.view : s.staticShadows.view, s.shadowSampler);
     w.image(4, s.lightmap.view, s.linearClamp);
     w.image(5, s.shadowMask.view, s.linearClamp);
-    for (uint32_t c = 0; c < 3; ++c)
-        w.image(6, s.grid[c].view, s.linearClamp, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, c);
+    w.buffer(6, storage, s.objectLightingBuffer.buffer);
     w.image(7, s.probe.view, s.linearClamp);
     w.buffer(8, storage, s.materialBuffer.buffer);
     w.image(9, s.envBrdf.view, s.linearClamp);
@@ -291,20 +291,48 @@ float primaryIlluminance(const RendererState& s, uint32_t i, glm::vec3 p) {
     return luminance(sample.illuminance);
 }
 
-// The dominant primary at a dynamic object's origin, with hysteresis against flicker.
-uint32_t pickDynamicPrimary(RendererState& s, uint32_t entity, glm::vec3 origin) {
+// The primary of a dynamic object at its lighting origin, with hysteresis against flicker: a new
+// primary must score kPrimaryHysteresis times the current one. With a light grid the candidates
+// are the dominant primaries of the grid cells around the origin, scored by their illuminance
+// there times their baked visibility (dominantVisibility), so an object in a primary's shadow
+// does not pick it; a current primary that dominates none of those cells any more is dropped.
+// Without a grid every primary candidate is scored by its unshadowed illuminance.
+uint32_t pickDynamicPrimary(RendererState& s, uint32_t entity, glm::vec3 origin,
+                            const LightGridSample* grid) {
     uint32_t current = s.dynamicPrimary[entity];
-    float currentE = current != kNoIndex ? primaryIlluminance(s, current, origin) : 0.0f;
+    auto score = [&](uint32_t i) {
+        const float e = primaryIlluminance(s, i, origin);
+        return grid ? e * dominantVisibility(s.grid, *grid, i) : e;
+    };
+    float currentScore = current != kNoIndex ? score(current) : 0.0f;
+    if (grid && !(currentScore > 0.0f)) {
+        current = kNoIndex;
+        currentScore = 0.0f;
+    }
     for (uint32_t i = 0; i < s.lights.size(); ++i) {
         if (s.lights[i].role != world::LightRole::primary || i == current) continue;
-        const float e = primaryIlluminance(s, i, origin);
-        if (e > 0.0f && e > currentE * kPrimaryHysteresis) {
+        const float e = score(i);
+        if (e > 0.0f && e > currentScore * kPrimaryHysteresis) {
             current = i;
-            currentE = e;
+            currentScore = e;
         }
     }
     s.dynamicPrimary[entity] = current;
     return current;
+}
+
+// A dynamic object's baked lighting for the forward pass: the grid's ambient cube at its origin
+// and the baked visibility of its primary; neutral values (the placeholder ambient, visible) for
+// the placeholder textures of a level without a grid.
+GpuObjectLighting objectLightingOf(const RendererState& s, const LightGridSample* grid,
+                                   uint32_t primary) {
+    GpuObjectLighting o{};
+    for (int f = 0; f < 6; ++f)
+        o.ambientCube[f] = grid ? glm::vec4(grid->ambientCube[size_t(f)], 0.0f)
+                                : glm::vec4(glm::vec3(s.ambientLux), 0.0f);
+    o.ambientCube[0].w =
+        grid && primary != kNoIndex ? bakedVisibility(s.grid, *grid, primary) : 1.0f;
+    return o;
 }
 
 void worldBounds(const glm::mat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec3& outMin,
@@ -325,7 +353,7 @@ struct Draw {
     uint32_t firstIndex, indexCount;
     int32_t vertexOffset;
     uint32_t primaryLight, atlas;
-    uint32_t entity;  // kNoIndex for static
+    uint32_t entity;  // kNoIndex for static; a dynamic object's record in objectLighting
     float distance2;  // squared metres from the camera: front to back within a permutation
 };
 
@@ -466,6 +494,11 @@ const CapturedFrame& capturedFrame(const Renderer& renderer) {
     return renderer.state->captured;
 }
 
+uint32_t dynamicPrimary(const Renderer& renderer, uint32_t entity) {
+    const RendererState& s = *renderer.state;
+    return entity < s.dynamicPrimary.size() ? s.dynamicPrimary[entity] : kNoIndex;
+}
+
 void resizeRenderer(Renderer& renderer, uint32_t width, uint32_t height) {
     RendererState& s = *renderer.state;
     if (width == s.width && height == s.height) return;
@@ -523,16 +556,34 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
         const uint32_t material = std::min(surface.material, materialCount - 1);
         const glm::vec3 toCentre = 0.5f * (surface.boundsMin + surface.boundsMax) - camera.position;
         draws.push_back({keyOf(material), material, surface.firstIndex, surface.indexCount, 0,
-                         surface.primaryLight, surface.atlas, kNoIndex, glm::dot(toCentre, toCentre)});
+                         surface.primaryLight, surface.atlas, kNoIndex,
+                         glm::dot(toCentre, toCentre)});
         if (surface.primaryLight != kNoIndex) visibleLights.push_back(surface.primaryLight);
         ++stats.surfacesDrawn;
     }
+    // Dynamic objects: the primary and the grid's lighting once per visible entity.
+    std::vector<uint8_t> entityVisible(s.entities.size(), 0);
+    std::vector<uint32_t> entityPrimary(s.entities.size(), kNoIndex);
     for (const DrawDynamicMesh& mesh : s.dynamicMeshes) {
         glm::vec3 lo, hi;
         worldBounds(entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, lo, hi);
-        if (!intersects(frustum, lo, hi)) continue;
-        const uint32_t primary =
-            pickDynamicPrimary(s, mesh.entity, glm::vec3(entityTransforms[mesh.entity][3]));
+        if (intersects(frustum, lo, hi)) entityVisible[mesh.entity] = 1;
+    }
+    auto* records = static_cast<GpuObjectLighting*>(s.objectLightingBuffer.mapped);
+    const bool useGrid = s.bakedLighting && !s.grid.cells.empty();
+    for (uint32_t e = 0; e < s.entities.size(); ++e) {
+        if (!entityVisible[e]) continue;
+        const glm::vec3 origin(entityTransforms[e][3]);
+        LightGridSample sample;
+        if (useGrid) sample = sampleLightGrid(s.grid, origin);
+        entityPrimary[e] = pickDynamicPrimary(s, e, origin, useGrid ? &sample : nullptr);
+        records[e] = objectLightingOf(s, useGrid ? &sample : nullptr, entityPrimary[e]);
+    }
+    for (const DrawDynamicMesh& mesh : s.dynamicMeshes) {
+        if (!entityVisible[mesh.entity]) continue;
+        glm::vec3 lo, hi;
+        worldBounds(entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, lo, hi);
+        const uint32_t primary = entityPrimary[mesh.entity];
         const uint32_t material = std::min(mesh.material, materialCount - 1);
         const glm::vec3 toCentre = 0.5f * (lo + hi) - camera.position;
         draws.push_back({keyOf(material), material, mesh.firstIndex, mesh.indexCount,
@@ -555,8 +606,7 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
     u.cameraPosition = glm::vec4(camera.position, stats.exposure);
     u.shadowParams = glm::vec4(s.options.shadowRadius, s.options.shadowBand,
                                1.0f / float(s.options.shadowMapSize), s.probeMaxLod);
-    u.gridMin = glm::vec4(s.boundsMin, s.ambientLux);
-    u.gridInvExtent = glm::vec4(1.0f / glm::max(s.boundsMax - s.boundsMin, glm::vec3(1e-3f)), 0.0f);
+    u.baked = glm::vec4(s.ambientLux, s.lightmapDecode, 0.0f, 0.0f);
     const EffectLights& fx = inputs.effects;
     u.counts = glm::uvec4(std::min(fx.omniCount, kMaxEffectOmnis), fx.spotOn ? 1u : 0u, 0u, 0u);
     for (uint32_t i = 0; i < u.counts.x; ++i) {
@@ -626,6 +676,10 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
         push.material = d.material;
         push.primaryLight = d.primaryLight;
         push.lightmapAtlas = d.atlas;
+        push.objectLighting = d.entity;
+        push.lightmapScale = glm::vec4(1.0f);
+        if (d.atlas < s.atlasUvScale.size())
+            push.lightmapScale = glm::vec4(s.atlasUvScale[d.atlas], 0.0f, 0.0f);
         vkCmdPushConstants(cmd, s.forwardLayout.layout,
                            VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                            sizeof(push), &push);

@@ -100,7 +100,7 @@ struct RendererOptions {
     uint32_t maxShadowLayers = 48;        // sun 1, spot 1, omni 6 layers
     float shadowRadius = 40.0f;           // metres from the camera with runtime shadows
     float shadowBand = 8.0f;              // metres over which they blend into the baked ones
-    float placeholderAmbientLux = -1.0f;  // constant ambient until the baker; < 0 = automatic
+    float placeholderAmbientLux = -1.0f;  // constant ambient without baked lighting; < 0 = auto
     int forceMaterialClass = -1;          // >= 0: every material in this class (benchmarks)
     bool flatShading = false;             // constant colour, no shadows (benchmark floor)
     bool samplePlaceholders = false;      // fetch the placeholder baked textures anyway (tests);
@@ -114,6 +114,8 @@ struct RendererInfo {
     std::vector<std::string> permutations;  // the forward pipelines built
     float autoEv100 = 0.0f;                 // exposure when neither camera nor level gives one
     float ambientLux = 0.0f;                // the placeholder ambient in use
+    bool bakedLighting = false;             // lightmaps, shadow masks and grid from the package
+    float lightmapDecode = 1.0f;            // lux per stored RGBA16F lightmap unit
     uint32_t shadowLayers = 0;
 };
 
@@ -153,6 +155,10 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
 
 /// The frame of the last drawFrame with output.readback.
 const CapturedFrame& capturedFrame(const Renderer& renderer);
+
+/// The primary light (into level.lights) a dynamic entity was lit by in the last frame that saw
+/// it, or kNoIndex (none yet, or no primary reaches it).
+uint32_t dynamicPrimary(const Renderer& renderer, uint32_t entity);
 
 /// Changes the size of the offscreen targets (a resized window).
 void resizeRenderer(Renderer& renderer, uint32_t width, uint32_t height);

@@ -13,6 +13,7 @@
 #include "vk/buffer.hpp"
 #include "vk/graphics_pipeline.hpp"
 #include "vk/image.hpp"
+#include "world/baked_lighting.hpp"
 
 namespace onelight::render {
 
@@ -83,8 +84,13 @@ struct RendererState {
     VkSampler linearClamp = VK_NULL_HANDLE;          // owned: baked data, LUT
     VkSampler nearestClamp = VK_NULL_HANDLE;         // owned: HDR in the tonemap
 
-    // Baked lighting, placeholders until the baker fills them.
-    vk::Image lightmap, shadowMask, grid[3], probe;
+    // Baked lighting from the package, or neutral placeholders (see uploadBakedLighting).
+    bool bakedLighting = false;  // the level has it: the fetching permutation
+    vk::Image lightmap, shadowMask, probe;
+    float lightmapDecode = 1.0f;          // lux per stored lightmap unit (a power of two)
+    std::vector<glm::vec2> atlasUvScale;  // per atlas: uv1 to the lightmap array's uv
+    world::LightGrid grid;                // empty without baked lighting
+    vk::Buffer objectLightingBuffer;      // GpuObjectLighting per entity, written per frame
     float probeMaxLod = 0.0f;
 
     // Shadows.

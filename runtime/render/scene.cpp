@@ -1,5 +1,5 @@
-// The GPU scene: the level's geometry, materials, textures and lights, the baked-lighting
-// placeholders and the colour LUT, uploaded once.
+// The GPU scene: the level's geometry, materials, textures and lights, its baked lighting (or
+// neutral placeholders) and the colour LUT, uploaded once.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -234,20 +234,8 @@ void createPlaceholders(RendererState& s) {
     vk::createImage(*s.ctx, s.flatNormal, desc);
     vk::uploadImage(*s.ctx, s.flatNormal, flat);
 
-    // The baked-lighting interface with neutral content: a constant ambient of ambientLux in
-    // every channel, no baked shadow, a uniform environment (normalised radiance 1 / pi).
-    const float a = s.ambientLux;
-    vk::ImageDesc lm;
-    lm.layers = 3;
-    lm.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-    createHalfImage(*s.ctx, s.lightmap, lm,
-                    {a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f});
-    vk::ImageDesc mask;
-    mask.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-    createHalfImage(*s.ctx, s.shadowMask, mask, {1.0f, 1.0f, 1.0f, 1.0f});
-    vk::ImageDesc grid;
-    grid.viewType = VK_IMAGE_VIEW_TYPE_3D;
-    for (vk::Image& g : s.grid) createHalfImage(*s.ctx, g, grid, {a, 0.0f, 0.0f, 0.0f});
+    // The environment probe stays neutral (a uniform environment, normalised radiance 1 / pi)
+    // until the baker writes probes.
     vk::ImageDesc cube;
     cube.cube = true;
     cube.layers = 6;
@@ -256,6 +244,106 @@ void createPlaceholders(RendererState& s) {
         for (int c = 0; c < 4; ++c) faces.push_back(c < 3 ? float(glsl::INV_PI) : 1.0f);
     createHalfImage(*s.ctx, s.probe, cube, faces);
     s.probeMaxLod = 0.0f;
+}
+
+// The largest power of two 2^-k (k >= 0) that keeps every stored lightmap coefficient within
+// kLightmapStoredMax: RGBA16F tops out at 65504 and the sun's secondary can pass 100 klx.
+constexpr float kLightmapStoredMax = 32768.0f;
+float lightmapStorageScale(const world::BakedLighting& baked) {
+    float largest = 0.0f;  // c0 = E / (2 w) bounds |c0| and |c.xyz| (|d| <= 0.5)
+    for (const world::LightmapTexel& t : baked.texels)
+        for (int c = 0; c < 3; ++c)
+            largest = std::max(largest, world::linear_irradiance_coefficients(t, c).x);
+    float scale = 1.0f;
+    while (largest * scale > kLightmapStoredMax) scale *= 0.5f;
+    return scale;
+}
+
+// Lightmaps and shadow masks of a baked level: every atlas a layer range of one 2D array as large
+// as the largest atlas (a smaller atlas sits at the top-left; atlasUvScale maps its uv1). The
+// lightmap holds, per atlas and colour channel, the four linear coefficients of
+// world::linear_irradiance_coefficients in RGBA16F times a power-of-two storage scale; the shadow
+// mask its byte per texel in the red channel of RGBA8 (linear filtering is guaranteed for both).
+void uploadLightmaps(RendererState& s, const assets::LoadedLevel& loaded) {
+    const world::CompiledLevel& level = loaded.level;
+    const world::BakedLighting& baked = loaded.baked;
+    uint32_t width = 1, height = 1;
+    for (const world::Atlas& a : level.atlases) {
+        width = std::max(width, a.width);
+        height = std::max(height, a.height);
+    }
+    const uint32_t atlases = std::max<uint32_t>(uint32_t(level.atlases.size()), 1);
+    const float scale = lightmapStorageScale(baked);
+    s.lightmapDecode = 1.0f / scale;
+    const size_t layerTexels = size_t(width) * height;
+    std::vector<uint16_t> coefficients(layerTexels * 4 * 3 * atlases, 0);
+    std::vector<uint8_t> mask(layerTexels * 4 * atlases, 0);
+    s.atlasUvScale.clear();
+    for (uint32_t a = 0; a < level.atlases.size(); ++a) {
+        const world::Atlas& atlas = level.atlases[a];
+        s.atlasUvScale.push_back(
+            glm::vec2(float(atlas.width) / float(width), float(atlas.height) / float(height)));
+        const uint64_t first = world::atlas_texel_offset(level, a);
+        for (uint32_t y = 0; y < atlas.height; ++y)
+            for (uint32_t x = 0; x < atlas.width; ++x) {
+                const uint64_t texel = first + uint64_t(y) * atlas.width + x;
+                const size_t at = size_t(y) * width + x;
+                for (int c = 0; c < 3; ++c) {
+                    const glm::vec4 k =
+                        world::linear_irradiance_coefficients(baked.texels[texel], c) * scale;
+                    uint16_t* out = &coefficients[((size_t(a) * 3 + c) * layerTexels + at) * 4];
+                    for (int i = 0; i < 4; ++i) out[i] = glm::packHalf1x16(k[i]);
+                }
+                uint8_t* m = &mask[(size_t(a) * layerTexels + at) * 4];
+                m[0] = m[1] = m[2] = baked.shadow_mask[texel];
+                m[3] = 255;
+            }
+    }
+    vk::ImageDesc desc;
+    desc.width = width;
+    desc.height = height;
+    desc.layers = 3 * atlases;
+    desc.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    vk::createImage(*s.ctx, s.lightmap, desc);
+    vk::uploadImage(*s.ctx, s.lightmap,
+                    {reinterpret_cast<const uint8_t*>(coefficients.data()),
+                     coefficients.size() * sizeof(uint16_t)});
+    desc.layers = atlases;
+    desc.format = VK_FORMAT_R8G8B8A8_UNORM;
+    vk::createImage(*s.ctx, s.shadowMask, desc);
+    vk::uploadImage(*s.ctx, s.shadowMask, mask);
+}
+
+// The baked-lighting interface: the package's lightmaps, shadow masks and light grid, or
+// neutral content for a level without them (a constant ambient of ambientLux, no baked shadow)
+// that the placeholder-fetching test permutation reads.
+void uploadBakedLighting(RendererState& s, const assets::LoadedLevel& loaded) {
+    s.bakedLighting = loaded.hasBakedLighting;
+    if (s.bakedLighting) {
+        uploadLightmaps(s, loaded);
+        s.grid = loaded.baked.grid;
+    } else {
+        const float a = s.ambientLux;
+        vk::ImageDesc lm;
+        lm.layers = 3;
+        lm.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+        createHalfImage(*s.ctx, s.lightmap, lm,
+                        {a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f});
+        vk::ImageDesc mask;
+        mask.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+        createHalfImage(*s.ctx, s.shadowMask, mask, {1.0f, 1.0f, 1.0f, 1.0f});
+        s.lightmapDecode = 1.0f;
+        s.atlasUvScale.assign(loaded.level.atlases.size(), glm::vec2(1.0f));
+        s.grid = world::LightGrid{};
+    }
+    s.info.bakedLighting = s.bakedLighting;
+    s.info.lightmapDecode = s.lightmapDecode;
+    vk::createHostBuffer(*s.ctx, s.objectLightingBuffer,
+                         std::max<size_t>(s.entities.size(), 1) * sizeof(GpuObjectLighting),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    std::memset(s.objectLightingBuffer.mapped, 0, s.objectLightingBuffer.size);
 }
 
 // The colour LUT: filmic curve and sRGB encoding at the shaper's texel centres.
@@ -329,6 +417,7 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
     uploadLights(s);
     uploadMaterials(s, loaded);
     createPlaceholders(s);
+    uploadBakedLighting(s, loaded);
     createLut(s);
     createEnvBrdfTable(s);
 
@@ -366,10 +455,10 @@ void destroyScene(RendererState& s) {
     s.nearestClamp = s.linearClamp = VK_NULL_HANDLE;
     vk::destroyImage(ctx, s.envBrdf);
     vk::destroyImage(ctx, s.lut);
-    vk::destroyImage(ctx, s.probe);
-    for (int i = 2; i >= 0; --i) vk::destroyImage(ctx, s.grid[i]);
+    vk::destroyBuffer(ctx, s.objectLightingBuffer);
     vk::destroyImage(ctx, s.shadowMask);
     vk::destroyImage(ctx, s.lightmap);
+    vk::destroyImage(ctx, s.probe);
     vk::destroyImage(ctx, s.flatNormal);
     vk::destroyImage(ctx, s.white);
     for (auto& [key, sampler] : s.samplers) vkDestroySampler(ctx.device, sampler, nullptr);

@@ -186,10 +186,12 @@ void writeGltf(const Scene& scene, const std::string& path) {
             light["spot"] = {{"innerConeAngle", l.innerCone}, {"outerConeAngle", l.outerCone}};
         lights.push_back(light);
         const glm::quat q = lightRotation(l.direction);
-        nodes.push_back({{"name", "light" + std::to_string(i)},
-                         {"translation", {l.position.x, l.position.y, l.position.z}},
-                         {"rotation", {q.x, q.y, q.z, q.w}},
-                         {"extensions", {{"KHR_lights_punctual", {{"light", i}}}}}});
+        json node = {{"name", "light" + std::to_string(i)},
+                     {"translation", {l.position.x, l.position.y, l.position.z}},
+                     {"rotation", {q.x, q.y, q.z, q.w}},
+                     {"extensions", {{"KHR_lights_punctual", {{"light", i}}}}}};
+        if (l.role) node["extras"] = {{"onelight", {{"role", l.role}}}};
+        nodes.push_back(node);
     }
     json sceneNodes = json::array();
     for (size_t i = 0; i < nodes.size(); ++i) sceneNodes.push_back(i);
@@ -223,6 +225,25 @@ int compileLevel(const std::string& gltf, const std::string& package) {
 assets::LoadedLevel compileAndLoad(const std::string& gltf, const std::string& package) {
     if (compileLevel(gltf, package) != 0)
         throw std::runtime_error(gltf + ": onelight-bake compile failed");
+    assets::LoadedLevel level;
+    std::string error;
+    if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);
+    return level;
+}
+
+int bakeLevel(const std::string& gltf, const std::string& package,
+              const std::string& extraArguments) {
+    const std::string command = std::string("'") + ONELIGHT_BAKE_PATH + "' '" + gltf + "' -o '" +
+                                package + "' --quality draft --quiet " + extraArguments +
+                                " > /dev/null";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+assets::LoadedLevel bakeAndLoad(const std::string& gltf, const std::string& package,
+                                const std::string& extraArguments) {
+    if (bakeLevel(gltf, package, extraArguments) != 0)
+        throw std::runtime_error(gltf + ": onelight-bake failed");
     assets::LoadedLevel level;
     std::string error;
     if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);

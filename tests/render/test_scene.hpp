@@ -34,6 +34,7 @@ struct SceneLight {
     float innerCone = 0.3f, outerCone = 0.6f;
     glm::vec3 position{0.0f};
     glm::vec3 direction{0.0f, -1.0f, 0.0f};  // the way light travels
+    const char* role = nullptr;              // extras.onelight.role ("baked", "effect"), or none
 };
 
 struct Scene {
@@ -60,6 +61,15 @@ int compileLevel(const std::string& gltf, const std::string& package);
 
 /// Compiles (when needed) and loads; throws std::runtime_error with the error line.
 assets::LoadedLevel compileAndLoad(const std::string& gltf, const std::string& package);
+
+/// Runs `onelight-bake GLTF -o PACKAGE --quality draft --quiet` plus `extraArguments` (compile
+/// and bake); returns its exit code.
+int bakeLevel(const std::string& gltf, const std::string& package,
+              const std::string& extraArguments = "");
+
+/// Bakes and loads; throws std::runtime_error with the error line.
+assets::LoadedLevel bakeAndLoad(const std::string& gltf, const std::string& package,
+                                const std::string& extraArguments = "");
 
 /// A folder for a test's outputs under the build tree (created).
 std::string outputDir();

@@ -10,8 +10,9 @@
 layout(constant_id = 0) const int MATERIAL_CLASS = MATERIAL_FULL;
 layout(constant_id = 1) const int ALPHA_MASK = 0;    // 1: discard below the cutoff
 layout(constant_id = 2) const int FLAT_SHADING = 0;  // 1: constant colour (benchmark floor)
-// 1: the level supplies baked lighting textures; 0: the neutral placeholder (a constant ambient
-// of frame.gridMin.w lux, no baked shadow, a uniform probe) without any fetch.
+// 1: the level supplies baked lighting (lightmaps, shadow masks, grid samples per object; or
+// their placeholders in tests); 0: the neutral placeholder (a constant ambient of frame.baked.x
+// lux, no baked shadow, a uniform probe) without any fetch.
 layout(constant_id = 3) const int BAKED_LIGHTING = 1;
 
 layout(location = 0) in vec3 inWorldPosition;
@@ -53,17 +54,34 @@ float runtimeShadow(GpuLight light, vec3 p, vec3 n) {
     return sum * 0.25;
 }
 
-vec3 secondaryIrradiance(vec3 p, vec3 n) {
-    if (BAKED_LIGHTING == 0) return vec3(frame.gridMin.w);
-    vec4 c[3];
+// Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
+// (bilinear), a dynamic object's ambient cube from the light grid, else the constant ambient.
+vec3 secondaryIrradiance(vec3 n) {
+    if (BAKED_LIGHTING == 0) return vec3(frame.baked.x);
     if (draw.lightmapAtlas != NO_INDEX) {
+        vec2 uv = inUv1 * draw.lightmapScale.xy;
         float base = float(draw.lightmapAtlas * 3u);
-        for (int i = 0; i < 3; ++i) c[i] = texture(lightmap, vec3(inUv1, base + float(i)));
-    } else {
-        vec3 g = (p - frame.gridMin.xyz) * frame.gridInvExtent.xyz;
-        for (int i = 0; i < 3; ++i) c[i] = texture(lightGrid[i], g);
+        vec3 e = vec3(irradianceLinear(texture(lightmap, vec3(uv, base)), n),
+                      irradianceLinear(texture(lightmap, vec3(uv, base + 1.0)), n),
+                      irradianceLinear(texture(lightmap, vec3(uv, base + 2.0)), n));
+        return e * frame.baked.y;
     }
-    return vec3(irradianceLinear(c[0], n), irradianceLinear(c[1], n), irradianceLinear(c[2], n));
+    if (draw.objectLighting != NO_INDEX) {
+        GpuObjectLighting o = objectLighting[draw.objectLighting];
+        return irradianceAmbientCube(o.ambientCube[0].rgb, o.ambientCube[1].rgb, o.ambientCube[2].rgb,
+                                     o.ambientCube[3].rgb, o.ambientCube[4].rgb, o.ambientCube[5].rgb, n);
+    }
+    return vec3(frame.baked.x);
+}
+
+// The baked visibility of the draw's primary: a static surface's shadow mask, a dynamic object's
+// visibility from the light grid; 1 without baked lighting.
+float bakedShadow() {
+    if (BAKED_LIGHTING == 0) return 1.0;
+    if (draw.lightmapAtlas != NO_INDEX)
+        return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
+    if (draw.objectLighting != NO_INDEX) return objectLighting[draw.objectLighting].ambientCube[0].w;
+    return 1.0;
 }
 
 void main() {
@@ -116,12 +134,9 @@ void main() {
                                               light.direction.xyz, light.cones.x, light.cones.y, p);
         BrdfDots d = brdfDots(n, v, s.l);
         if (dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0) {
-            float baked = BAKED_LIGHTING == 1 && draw.lightmapAtlas != NO_INDEX
-                              ? texture(shadowMask, vec3(inUv1, float(draw.lightmapAtlas))).r
-                              : 1.0;
-            float runtime = viewDistance < frame.shadowParams.x
-                                ? runtimeShadow(light, p, geometricNormal)
-                                : 1.0;
+            float radius = frame.shadowParams.x;
+            float baked = viewDistance > radius - frame.shadowParams.y ? bakedShadow() : 1.0;
+            float runtime = viewDistance < radius ? runtimeShadow(light, p, geometricNormal) : 1.0;
             float shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
                                        frame.shadowParams.y);
             radiance += surfaceReflectance(MATERIAL_CLASS, albedo, f0, gloss, d) * s.illuminance * shadow;
@@ -146,7 +161,7 @@ void main() {
     }
 
     // Baked secondary lighting.
-    vec3 irradiance = secondaryIrradiance(p, n);
+    vec3 irradiance = secondaryIrradiance(n);
     if ((textures & 8u) != 0u)
         irradiance *= 1.0 + m.params.w * (texture(occlusionTexture, inUv0).r - 1.0);
     vec3 probeSample = vec3(0.0);

@@ -11,8 +11,8 @@ layout(set = 0, binding = 0, std140) uniform FrameUniforms {
     mat4 viewProj;
     vec4 cameraPosition;  // xyz metres, w = exposure (pre-exposure of the HDR target)
     vec4 shadowParams;    // x runtime-shadow radius, y blend band (metres), z 1 / map size, w max probe lod
-    vec4 gridMin;         // light grid: xyz world min; w placeholder ambient (lux)
-    vec4 gridInvExtent;   // xyz 1 / (max - min)
+    vec4 baked;           // x placeholder ambient (lux), y lightmap decode factor (stored x this = lux)
+    vec4 reserved;
     uvec4 counts;         // x effect omnis in use, y effect spot on (0/1)
     vec4 omniPositionRange[MAX_EFFECT_OMNIS];  // xyz metres, w range (0 unlimited)
     vec4 omniColor[MAX_EFFECT_OMNIS];          // rgb colour * intensity (candela)
@@ -41,10 +41,17 @@ layout(set = 0, binding = 2, std430) readonly buffer ShadowViews { GpuShadowView
 
 layout(set = 0, binding = 3) uniform sampler2DArrayShadow shadowMaps;
 
-// Baked lighting (the baker fills these; neutral placeholders until then).
-layout(set = 0, binding = 4) uniform sampler2DArray lightmap;    // layer 3 * atlas + channel: (c0, cx, cy, cz)
+// Baked lighting from the package (neutral placeholders for a level without it).
+// Lightmap: layer 3 * atlas + channel holds (c0, cx, cy, cz) of irradianceLinear, times a
+// power-of-two storage scale (frame.baked.y undoes it). Atlases share the array's size; an
+// atlas smaller than the array sits at its top-left corner (draw.lightmapScale).
+layout(set = 0, binding = 4) uniform sampler2DArray lightmap;
 layout(set = 0, binding = 5) uniform sampler2DArray shadowMask;  // layer atlas: r = primary visibility
-layout(set = 0, binding = 6) uniform sampler3D lightGrid[3];     // per channel: (c0, cx, cy, cz)
+// Dynamic objects: the light grid sampled at each object's lighting origin (GpuObjectLighting).
+struct GpuObjectLighting {
+    vec4 ambientCube[6];  // rgb lux facing +x -x +y -y +z -z; [0].w baked visibility of the primary
+};
+layout(set = 0, binding = 6, std430) readonly buffer ObjectLighting { GpuObjectLighting objectLighting[]; };
 layout(set = 0, binding = 7) uniform samplerCube probe;          // normalised radiance
 
 // A material (GpuMaterial, std430).
@@ -74,7 +81,8 @@ layout(push_constant) uniform DrawPush {
     uint material;         // into materials
     uint primaryLight;     // into lights or NO_INDEX
     uint lightmapAtlas;    // atlas of a static surface, NO_INDEX for a dynamic object (grid)
-    uint pad;
+    uint objectLighting;   // a dynamic object's record in objectLighting[], or NO_INDEX
+    vec4 lightmapScale;    // xy: uv1 (over the surface's atlas) to the lightmap array's uv
 } draw;
 
 #endif

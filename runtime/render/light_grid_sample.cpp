@@ -1,0 +1,75 @@
+#include "render/light_grid_sample.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace onelight::render {
+
+LightGridSample sampleLightGrid(const world::LightGrid& grid, glm::vec3 p) {
+    LightGridSample out;
+    if (grid.cells.empty()) return out;
+    // Continuous cell coordinate: cell (i, j, k) is centred at origin + (i + 0.5) size.
+    const glm::vec3 f = (p - grid.origin) / grid.cell_size - 0.5f;
+    glm::uvec3 lo{0u}, hi{0u};
+    glm::vec3 t{0.0f};
+    for (int a = 0; a < 3; ++a) {
+        const float top = float(grid.dims[a] - 1u);
+        const float c = std::isfinite(f[a]) ? std::clamp(f[a], 0.0f, top) : 0.0f;
+        lo[a] = std::min(uint32_t(std::floor(c)), grid.dims[a] - 1u);
+        hi[a] = std::min(lo[a] + 1u, grid.dims[a] - 1u);
+        t[a] = c - float(lo[a]);
+    }
+    float plain[8], total = 0.0f;
+    for (uint32_t corner = 0; corner < 8; ++corner) {
+        const glm::uvec3 c((corner & 1u) ? hi.x : lo.x, (corner & 2u) ? hi.y : lo.y,
+                           (corner & 4u) ? hi.z : lo.z);
+        const float w = ((corner & 1u) ? t.x : 1.0f - t.x) * ((corner & 2u) ? t.y : 1.0f - t.y) *
+                        ((corner & 4u) ? t.z : 1.0f - t.z);
+        const uint32_t cell = c.x + grid.dims.x * (c.y + grid.dims.y * c.z);
+        out.cells[corner] = cell;
+        plain[corner] = w;
+        const bool solid = (grid.cells[cell].flags & 1u) != 0;
+        out.weights[corner] = solid ? 0.0f : w;
+        total += out.weights[corner];
+    }
+    if (!(total > 1e-6f)) {  // every corner with weight is inside solid: keep them all
+        out.allSolid = true;
+        total = 0.0f;
+        for (uint32_t corner = 0; corner < 8; ++corner) {
+            out.weights[corner] = plain[corner];
+            total += plain[corner];
+        }
+    }
+    for (uint32_t corner = 0; corner < 8; ++corner) {
+        out.weights[corner] /= total;
+        const world::LightGridCell& cell = grid.cells[out.cells[corner]];
+        for (size_t face = 0; face < 6; ++face)
+            out.ambientCube[face] += out.weights[corner] * cell.ambient_cube[face];
+    }
+    return out;
+}
+
+float dominantVisibility(const world::LightGrid& grid, const LightGridSample& sample,
+                         uint32_t light) {
+    float sum = 0.0f;
+    for (uint32_t corner = 0; corner < 8; ++corner) {
+        const world::LightGridCell& cell = grid.cells[sample.cells[corner]];
+        if (sample.weights[corner] > 0.0f && cell.dominant_primary == light)
+            sum += sample.weights[corner] * cell.primary_visibility;
+    }
+    return sum;
+}
+
+float bakedVisibility(const world::LightGrid& grid, const LightGridSample& sample, uint32_t light) {
+    float weight = 0.0f, sum = 0.0f;
+    for (uint32_t corner = 0; corner < 8; ++corner) {
+        const world::LightGridCell& cell = grid.cells[sample.cells[corner]];
+        if (sample.weights[corner] > 0.0f && cell.dominant_primary == light) {
+            weight += sample.weights[corner];
+            sum += sample.weights[corner] * cell.primary_visibility;
+        }
+    }
+    return weight > 0.0f ? sum / weight : 0.0f;
+}
+
+}  // namespace onelight::render

@@ -1,0 +1,402 @@
+// Baked lighting at runtime: a small level baked in the test at draft quality (a floor, a static
+// block, a point primary, a second point light with role "baked", a dynamic box) renders what its
+// package says. A floor pixel's linear radiance equals the C++ evaluation from the package data
+// at that pixel: the primary through the shared BRDF times the baked shadow mask, plus the
+// secondary irradiance reconstructed from the lightmap texels (bilinear) times the albedo.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
+
+#include "capture/capture.hpp"
+#include "shading.hpp"
+#include "test_scene.hpp"
+
+namespace {
+
+using namespace onelight;
+namespace glsl = onelight::glsl;
+
+constexpr uint32_t kWidth = 192, kHeight = 128;
+
+// ---------------------------------------------------------------------------------------------
+// The C++ side: what a pixel sees and what the package says about it.
+
+struct Ray {
+    glm::vec3 origin, direction;
+};
+
+// The camera ray through point (px, py) of the frame (pixel centres at + 0.5), as the GPU
+// rasterises it.
+Ray pixelRay(const render::Camera& camera, float px, float py) {
+    const glm::mat4 viewProj =
+        render::projectionMatrix(camera, float(kWidth) / float(kHeight), 1000.0f) *
+        render::viewMatrix(camera);
+    const glm::mat4 inv = glm::inverse(viewProj);
+    const float ndcX = 2.0f * px / float(kWidth) - 1.0f;
+    const float ndcY = 2.0f * py / float(kHeight) - 1.0f;
+    const glm::vec4 far = inv * glm::vec4(ndcX, ndcY, 1.0f, 1.0f);
+    return {camera.position, glm::normalize(glm::vec3(far) / far.w - camera.position)};
+}
+
+// Distance along the ray to an axis-aligned box (slab test), or infinity.
+float hitBox(const Ray& r, glm::vec3 lo, glm::vec3 hi) {
+    float t0 = 0.0f, t1 = 1e30f;
+    for (int a = 0; a < 3; ++a) {
+        const float inv = 1.0f / r.direction[a];
+        float tn = (lo[a] - r.origin[a]) * inv, tf = (hi[a] - r.origin[a]) * inv;
+        if (tn > tf) std::swap(tn, tf);
+        t0 = std::max(t0, tn);
+        t1 = std::min(t1, tf);
+    }
+    return t0 <= t1 ? t0 : 1e30f;
+}
+
+// What the ray meets first: 0 nothing, 1 the floor, 2 the block, 3 the dynamic box at `dynamic`.
+int hitWhat(const Ray& r, glm::vec3 dynamic, float* distance = nullptr) {
+    float best = 1e30f;
+    int what = 0;
+    const float tf = r.direction.y < 0.0f ? -r.origin.y / r.direction.y : 1e30f;
+    const glm::vec3 pf = r.origin + tf * r.direction;
+    if (tf < best && std::fabs(pf.x) <= 10.0f && std::fabs(pf.z) <= 10.0f) {
+        best = tf;
+        what = 1;
+    }
+    const float tb = hitBox(r, {1.0f, 0.0f, -1.0f}, {2.0f, 1.5f, 1.0f});
+    if (tb < best) {
+        best = tb;
+        what = 2;
+    }
+    const float td = hitBox(r, dynamic - 0.3f, dynamic + 0.3f);
+    if (td < best) {
+        best = td;
+        what = 3;
+    }
+    if (distance) *distance = best;
+    return what;
+}
+
+// True when the pixel's centre and its four corners all see `what` (no silhouette inside).
+bool pixelSees(const render::Camera& camera, uint32_t x, uint32_t y, int what, glm::vec3 dynamic) {
+    const float offsets[5][2] = {
+        {0.5f, 0.5f}, {0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {1.0f, 1.0f}};
+    for (const auto& o : offsets)
+        if (hitWhat(pixelRay(camera, float(x) + o[0], float(y) + o[1]), dynamic) != what)
+            return false;
+    return true;
+}
+
+// The lightmap and shadow mask at a static point: the triangle of the level holding it gives
+// uv1 (barycentric), then bilinear filtering of the atlas texels as the sampler does it.
+struct LightmapSample {
+    bool found = false;
+    uint32_t surface = 0;
+    glm::vec4 coefficients[3];  // irradianceLinear per channel, lux
+    float mask = 1.0f;          // [0, 1]
+    float maskSpread = 0.0f;    // largest minus smallest of the four texels' masks
+};
+
+LightmapSample sampleLightmap(const assets::LoadedLevel& loaded, glm::vec3 p, glm::vec3 n) {
+    const world::CompiledLevel& level = loaded.level;
+    LightmapSample out;
+    for (uint32_t si = 0; si < level.surfaces.size() && !out.found; ++si) {
+        const world::Surface& surface = level.surfaces[si];
+        for (uint32_t i = surface.first_index; i < surface.first_index + surface.index_count;
+             i += 3) {
+            const world::Vertex& a = level.vertices[level.indices[i]];
+            const world::Vertex& b = level.vertices[level.indices[i + 1]];
+            const world::Vertex& c = level.vertices[level.indices[i + 2]];
+            const glm::vec3 normal = glm::cross(b.position - a.position, c.position - a.position);
+            if (glm::dot(glm::normalize(normal), n) < 0.99f) continue;
+            if (std::fabs(glm::dot(p - a.position, glm::normalize(normal))) > 1e-3f) continue;
+            const float area = glm::dot(normal, normal);
+            const float wa = glm::dot(glm::cross(b.position - p, c.position - p), normal) / area;
+            const float wb = glm::dot(glm::cross(c.position - p, a.position - p), normal) / area;
+            const float wc = 1.0f - wa - wb;
+            if (wa < -1e-5f || wb < -1e-5f || wc < -1e-5f) continue;
+            const glm::vec2 uv = wa * a.uv1 + wb * b.uv1 + wc * c.uv1;
+            const world::Atlas& atlas = level.atlases.at(surface.atlas);
+            const uint64_t first = world::atlas_texel_offset(level, surface.atlas);
+            const glm::vec2 t = uv * glm::vec2(atlas.width, atlas.height) - 0.5f;
+            const glm::vec2 f = glm::floor(t), frac = t - f;
+            for (auto& k : out.coefficients) k = glm::vec4(0.0f);
+            out.mask = 0.0f;
+            float lowest = 1.0f, highest = 0.0f;
+            for (int dy = 0; dy < 2; ++dy)
+                for (int dx = 0; dx < 2; ++dx) {
+                    const int x = std::clamp(int(f.x) + dx, 0, int(atlas.width) - 1);
+                    const int y = std::clamp(int(f.y) + dy, 0, int(atlas.height) - 1);
+                    const float w = (dx ? frac.x : 1.0f - frac.x) * (dy ? frac.y : 1.0f - frac.y);
+                    const uint64_t texel = first + uint64_t(y) * atlas.width + uint64_t(x);
+                    for (int ch = 0; ch < 3; ++ch)
+                        out.coefficients[ch] += w * world::linear_irradiance_coefficients(
+                                                        loaded.baked.texels[texel], ch);
+                    const float m = float(loaded.baked.shadow_mask[texel]) / 255.0f;
+                    out.mask += w * m;
+                    lowest = std::min(lowest, m);
+                    highest = std::max(highest, m);
+                }
+            out.maskSpread = highest - lowest;
+            out.found = true;
+            out.surface = si;
+            break;
+        }
+    }
+    return out;
+}
+
+// Radiance (cd/m^2) of a Lambert point lit by `primary` (illuminance times shadow) and by the
+// secondary irradiance `secondary`, through the shared shaders.
+glm::vec3 lambertRadiance(const world::CompiledLevel& level, uint32_t material, uint32_t primary,
+                          float shadow, glm::vec3 secondary, glm::vec3 p, glm::vec3 n,
+                          glm::vec3 eye) {
+    const world::Material& m = level.materials.at(material);
+    EXPECT_EQ(m.material_class, world::MaterialClass::lambert);
+    const glm::vec3 albedo = glsl::albedo_fromMetallic(glm::vec3(m.base_color), m.metallic);
+    const glm::vec3 v = glm::normalize(eye - p);
+    glm::vec3 radiance(0.0f);
+    if (primary != world::kNone) {
+        const world::Light& l = level.lights.at(primary);
+        const glsl::LightSample s = glsl::evaluatePunctualLight(
+            int(l.type), l.color * l.intensity, 1.0f, l.range, l.position,
+            glm::normalize(l.direction), std::cos(l.inner_cone), std::cos(l.outer_cone), p);
+        const glsl::BrdfDots d = glsl::brdfDots(n, v, s.l);
+        if (glm::dot(n, s.l) > 0.0f && d.NoL > 0.0f)
+            radiance +=
+                glsl::surfaceReflectance(MATERIAL_LAMBERT, albedo, glm::vec3(0.04f), 0.0f, d) *
+                s.illuminance * shadow;
+    }
+    return radiance + glsl::secondaryRadiance(MATERIAL_LAMBERT, albedo, glm::vec3(0.04f),
+                                              glm::vec2(0.0f), secondary, glm::vec3(0.0f));
+}
+
+glm::vec3 lightmapIrradiance(const LightmapSample& s, glm::vec3 n) {
+    return glm::vec3(glsl::irradianceLinear(s.coefficients[0], n),
+                     glsl::irradianceLinear(s.coefficients[1], n),
+                     glsl::irradianceLinear(s.coefficients[2], n));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The GPU side.
+
+test::Scene bakedScene() {
+    test::Scene s;
+    s.materials = {{{0.5f, 0.5f, 0.5f, 1.0f}, 0.0f, 1.0f},   // floor
+                   {{0.6f, 0.6f, 0.6f, 1.0f}, 0.0f, 1.0f},   // block
+                   {{0.7f, 0.7f, 0.7f, 1.0f}, 0.0f, 1.0f}};  // dynamic box
+    test::addFloor(s, 0.0f, 0.0f, 10.0f, 0.0f, 0);
+    test::addBox(s, {1.0f, 0.0f, -1.0f}, {2.0f, 1.5f, 1.0f}, 1);
+    test::addBox(s, {-0.3f, -0.3f, -0.3f}, {0.3f, 0.3f, 0.3f}, 2, true);
+    test::SceneLight primary;
+    primary.type = 1;
+    primary.intensity = 400.0f;
+    primary.position = {-2.0f, 4.0f, 0.0f};
+    s.lights.push_back(primary);
+    test::SceneLight baked;
+    baked.type = 1;
+    baked.intensity = 300.0f;
+    baked.color = {1.0f, 0.8f, 0.6f};
+    baked.position = {5.0f, 1.5f, -5.0f};
+    baked.role = "baked";
+    s.lights.push_back(baked);
+    return s;
+}
+
+// Each test bakes its own package (ctest may run them in parallel): ~1.5 s at draft quality.
+assets::LoadedLevel bake(const std::string& name) {
+    const std::string gltf = test::outputDir() + "/" + name + ".gltf";
+    test::writeGltf(bakedScene(), gltf);
+    assets::LoadedLevel level = test::bakeAndLoad(gltf, test::outputDir() + "/" + name + ".olpak");
+    EXPECT_TRUE(level.hasBakedLighting);
+    return level;
+}
+
+render::Camera testCamera() {
+    const glm::vec3 eye(-7.0f, 7.0f, 8.0f), target(2.0f, 0.0f, -2.0f);
+    const glm::vec3 d = glm::normalize(target - eye);
+    return render::cameraFromYawPitch(eye, glm::degrees(std::atan2(-d.x, -d.z)),
+                                      glm::degrees(std::asin(d.y)));
+}
+
+render::RendererOptions options(float shadowRadius, float shadowBand) {
+    render::RendererOptions o;
+    o.width = kWidth;
+    o.height = kHeight;
+    o.shadowRadius = shadowRadius;
+    o.shadowBand = shadowBand;
+    return o;
+}
+
+// Renders and returns the linear frame through an EXR file, as a capture writes it.
+std::vector<float> renderLinear(const assets::LoadedLevel& level, const render::RendererOptions& o,
+                                const render::FrameInputs& inputs, const std::string& name) {
+    const test::RenderedFrame r = test::renderOnce(level, o, inputs);
+    EXPECT_EQ(r.validationErrors, 0u);
+    const std::string exr = test::outputDir() + "/" + name + ".exr";
+    std::string error;
+    EXPECT_TRUE(capture::writeExr(exr, kWidth, kHeight, r.frame.linearRgba, error)) << error;
+    uint32_t w = 0, h = 0;
+    std::vector<float> linear;
+    EXPECT_TRUE(capture::readExr(exr, w, h, linear, error)) << error;
+    EXPECT_EQ(w, kWidth);
+    EXPECT_EQ(h, kHeight);
+    return linear;
+}
+
+glm::vec3 pixel(const std::vector<float>& linear, uint32_t x, uint32_t y) {
+    const size_t i = (size_t(y) * kWidth + x) * 4;
+    return {linear[i], linear[i + 1], linear[i + 2]};
+}
+
+// The pixel whose centre ray meets the floor nearest to world point (x, 0, z).
+glm::uvec2 floorPixelNear(const render::Camera& camera, glm::vec3 target) {
+    const glm::mat4 viewProj =
+        render::projectionMatrix(camera, float(kWidth) / float(kHeight), 1000.0f) *
+        render::viewMatrix(camera);
+    const glm::vec4 clip = viewProj * glm::vec4(target, 1.0f);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {uint32_t((ndc.x * 0.5f + 0.5f) * float(kWidth)),
+            uint32_t((ndc.y * 0.5f + 0.5f) * float(kHeight))};
+}
+
+glm::vec3 floorPointOf(const render::Camera& camera, glm::uvec2 px) {
+    const Ray r = pixelRay(camera, float(px.x) + 0.5f, float(px.y) + 0.5f);
+    return r.origin + (-r.origin.y / r.direction.y) * r.direction;
+}
+
+constexpr glm::vec3 kUp(0.0f, 1.0f, 0.0f);
+constexpr glm::vec3 kDynamicAtRest(0.0f);  // the dynamic box's entity sits at the origin
+
+double relativeError(glm::vec3 got, glm::vec3 want, double floor) {
+    double worst = 0.0;
+    for (int c = 0; c < 3; ++c)
+        worst = std::max(
+            worst, std::fabs(double(got[c]) - double(want[c])) / std::max(double(want[c]), floor));
+    return worst;
+}
+
+}  // namespace
+
+namespace {
+
+// Every floor pixel away from silhouettes, with the baked shadow mask in charge everywhere (a
+// runtime-shadow radius of 1 cm): the linear EXR equals the C++ evaluation from the package.
+// Tolerance: 1% relative (floor 1e-3 of the peak) for the RGBA16F lightmap coefficients and HDR
+// target (both round at 2^-11), plus, where the four mask texels differ (penumbrae), 1/256 of
+// their spread times the unshadowed primary: samplers weigh bilinear taps with 8 fractional bits
+// (lavapipe's subTexelPrecisionBits, as most GPUs), and a hard shadow edge steps by up to 1.
+TEST(RenderBaked, FloorPixelsMatchPackageEvaluation) {
+    const assets::LoadedLevel level = bake("baked_floor");
+    const render::Camera camera = testCamera();
+    render::FrameInputs inputs;
+    inputs.camera = camera;
+    const std::vector<float> gpu =
+        renderLinear(level, options(0.01f, 0.005f), inputs, "baked_floor");
+    ASSERT_EQ(gpu.size(), size_t(kWidth) * kHeight * 4);
+
+    std::vector<glm::vec3> cpu(size_t(kWidth) * kHeight, glm::vec3(-1.0f));
+    std::vector<float> penumbra(cpu.size(), 0.0f);  // the mask filtering's share of the bound
+    double peak = 0.0;
+    for (uint32_t y = 0; y < kHeight; ++y)
+        for (uint32_t x = 0; x < kWidth; ++x) {
+            if (!pixelSees(camera, x, y, 1, kDynamicAtRest)) continue;
+            const glm::vec3 p = floorPointOf(camera, {x, y});
+            const LightmapSample s = sampleLightmap(level, p, kUp);
+            ASSERT_TRUE(s.found) << "no floor triangle at " << p.x << " " << p.z;
+            const world::Surface& surface = level.level.surfaces[s.surface];
+            cpu[y * kWidth + x] =
+                lambertRadiance(level.level, surface.material, surface.primary_light, s.mask,
+                                lightmapIrradiance(s, kUp), p, kUp, camera.position);
+            const glm::vec3 unshadowed =
+                lambertRadiance(level.level, surface.material, surface.primary_light, 1.0f,
+                                glm::vec3(0.0f), p, kUp, camera.position);
+            penumbra[y * kWidth + x] = s.maskSpread / 256.0f * glm::max(unshadowed.x, unshadowed.y);
+            for (int c = 0; c < 3; ++c) peak = std::max(peak, double(cpu[y * kWidth + x][c]));
+        }
+    ASSERT_GT(peak, 0.0);
+    const double floor = 1e-3 * peak;
+    double worst = 0.0, sum = 0.0;
+    uint32_t tested = 0, failures = 0, shadowed = 0;
+    for (uint32_t y = 0; y < kHeight; ++y)
+        for (uint32_t x = 0; x < kWidth; ++x) {
+            const glm::vec3 want = cpu[y * kWidth + x];
+            if (want.x < 0.0f) continue;
+            const glm::vec3 got = pixel(gpu, x, y);
+            const double e = relativeError(got, want, floor);
+            worst = std::max(worst, e);
+            sum += e;
+            ++tested;
+            const glm::vec3 p = floorPointOf(camera, {x, y});
+            if (sampleLightmap(level, p, kUp).mask < 0.5f) ++shadowed;
+            bool bad = false;
+            for (int c = 0; c < 3; ++c)
+                bad = bad || std::fabs(double(got[c]) - double(want[c])) >
+                                 0.01 * double(want[c]) + floor + double(penumbra[y * kWidth + x]);
+            if (bad) {
+                if (failures < 5)
+                    ADD_FAILURE() << "pixel (" << x << ", " << y << ") at (" << p.x << ", " << p.z
+                                  << "): gpu " << got.x << " " << got.y << " " << got.z << " cpu "
+                                  << want.x << " " << want.y << " " << want.z << " mask "
+                                  << sampleLightmap(level, p, kUp).mask;
+                ++failures;
+            }
+        }
+    std::printf(
+        "[ baked ] floor: %u pixels (%u in the baked umbra), relative error max %.3e "
+        "(penumbrae included), mean %.3e (peak %.3g cd/m^2)\n",
+        tested, shadowed, worst, sum / std::max(tested, 1u), peak);
+    EXPECT_GT(tested, kWidth * kHeight / 3);
+    EXPECT_GT(shadowed, 50u);
+    EXPECT_EQ(failures, 0u);
+}
+
+}  // namespace
+
+namespace {
+
+// The secondary is not a constant: two floor pixels, one near the baked light and one far
+// from it, differ as their lightmap texels say (the primary's part, evaluated in C++, removed;
+// the far one lies in the primary's umbra, so it is all secondary).
+TEST(RenderBaked, SecondaryFollowsLightmap) {
+    const assets::LoadedLevel level = bake("baked_secondary");
+    const render::Camera camera = testCamera();
+    render::FrameInputs inputs;
+    inputs.camera = camera;
+    const std::vector<float> gpu =
+        renderLinear(level, options(0.01f, 0.005f), inputs, "baked_secondary");
+    glm::vec3 secondary[2], measured[2];
+    // Near the baked light, and in the primary's umbra behind the block (secondary only).
+    const glm::vec3 targets[2] = {{4.0f, 0.0f, -4.0f}, {3.2f, 0.0f, 0.3f}};
+    for (int i = 0; i < 2; ++i) {
+        const glm::uvec2 px = floorPixelNear(camera, targets[i]);
+        ASSERT_TRUE(pixelSees(camera, px.x, px.y, 1, kDynamicAtRest));
+        const glm::vec3 p = floorPointOf(camera, px);
+        const LightmapSample s = sampleLightmap(level, p, kUp);
+        ASSERT_TRUE(s.found);
+        const world::Surface& surface = level.level.surfaces[s.surface];
+        const glm::vec3 primaryOnly =
+            lambertRadiance(level.level, surface.material, surface.primary_light, s.mask,
+                            glm::vec3(0.0f), p, kUp, camera.position);
+        secondary[i] = lambertRadiance(level.level, surface.material, world::kNone, 0.0f,
+                                       lightmapIrradiance(s, kUp), p, kUp, camera.position);
+        measured[i] = pixel(gpu, px.x, px.y) - primaryOnly;
+        std::printf(
+            "[ baked ] floor (%.2f, %.2f): secondary %.4g %.4g %.4g cd/m^2 by the lightmap, "
+            "%.4g %.4g %.4g rendered\n",
+            double(p.x), double(p.z), double(secondary[i].x), double(secondary[i].y),
+            double(secondary[i].z), double(measured[i].x), double(measured[i].y),
+            double(measured[i].z));
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(measured[i][c], secondary[i][c], 0.01f * secondary[i][c] + 1e-4f);
+    }
+    EXPECT_GT(secondary[0].x, 3.0f * secondary[1].x);  // the lightmap varies a lot here...
+    for (int c = 0; c < 3; ++c)                        // ...and so does the frame, alike
+        EXPECT_NEAR(measured[0][c] / measured[1][c], secondary[0][c] / secondary[1][c],
+                    0.02f * secondary[0][c] / secondary[1][c]);
+}
+
+}  // namespace
