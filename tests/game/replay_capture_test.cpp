@@ -1,0 +1,164 @@
+// Frame-capture tests: the demo level's replays played by the `onelight` executable, headless on
+// lavapipe with the validation layer on, every capture compared with its golden
+// (tests/support/golden.hpp states the tolerance; a failure writes NAME_diff.png). The scripts'
+// expect lines are checked by the replay itself: a failed one makes `onelight` exit 1.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "capture/capture.hpp"
+#include "golden.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ProcessRun {
+    int exitCode;
+    std::string output;  // stdout and stderr
+};
+
+ProcessRun runOnelight(const std::string& arguments) {
+    std::string command = std::string(ONELIGHT_EXE) + " " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
+    int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string outputDir(const std::string& name) {
+    fs::path dir = fs::path(ONELIGHT_TEST_OUTPUT) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir.string();
+}
+
+// Plays game/replays/NAME.replay at 320x180 into a fresh folder (named `folder`, default NAME);
+// returns the folder.
+std::string playReplay(const std::string& name, const std::string& folder = "") {
+    std::string dir = outputDir(folder.empty() ? name : folder);
+    ProcessRun r =
+        runOnelight(std::string(ONELIGHT_DEMO_PACKAGE) + " --replay " + ONELIGHT_REPLAYS + "/" +
+                    name + ".replay --headless --size 320x180 --capture-dir " + dir);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return dir;
+}
+
+// Every capture of the replay (not the contact sheet) against golden/REPLAY_CAPTURE.png.
+void expectGoldens(const std::string& replay, const std::vector<std::string>& captures) {
+    std::string dir = playReplay(replay);
+    for (const std::string& c : captures) {
+        uint32_t w = 0, h = 0;
+        std::vector<uint8_t> rgba;
+        std::string error;
+        ASSERT_TRUE(onelight::capture::readPng(dir + "/" + c + ".png", w, h, rgba, error)) << error;
+        ASSERT_TRUE(fs::exists(dir + "/" + c + ".exr")) << c;
+        ASSERT_TRUE(fs::exists(dir + "/" + c + ".json")) << c;
+        onelight::test::GoldenResult g = onelight::test::compareWithGolden(
+            rgba, w, h, std::string(ONELIGHT_GAME_GOLDENS) + "/" + replay + "_" + c + ".png",
+            dir + "/" + c + "_diff.png");
+        EXPECT_TRUE(g.ok) << g.message;
+    }
+    EXPECT_TRUE(fs::exists(dir + "/contact_sheet.png"));
+}
+
+// Mean linear luminance (cd/m^2) of the central quarter of a capture's EXR.
+double centreLuminance(const std::string& exr) {
+    uint32_t w = 0, h = 0;
+    std::vector<float> rgba;
+    std::string error;
+    EXPECT_TRUE(onelight::capture::readExr(exr, w, h, rgba, error)) << error;
+    double sum = 0.0;
+    int count = 0;
+    for (uint32_t y = h / 4; y < 3 * h / 4; ++y)
+        for (uint32_t x = w / 4; x < 3 * w / 4; ++x, ++count) {
+            const float* p = &rgba[(size_t(y) * w + x) * 4];
+            sum += 0.2126 * double(p[0]) + 0.7152 * double(p[1]) + 0.0722 * double(p[2]);
+        }
+    return count ? sum / count : 0.0;
+}
+
+}  // namespace
+
+TEST(DemoReplays, SunlitCourtyard) {
+    expectGoldens("courtyard", {"courtyard", "courtyard_east"});
+}
+
+TEST(DemoReplays, SpotLitInterior) {
+    expectGoldens("interior", {"interior"});
+}
+
+// The script expects crate_1's primary to be the sun in the yard and the spot in the room.
+TEST(DemoReplays, MoverCrossesFromOnePrimaryToAnother) {
+    expectGoldens("mover", {"crate_in_the_sun", "crate_under_the_spot"});
+}
+
+TEST(DemoReplays, FlashlightOnAndOff) {
+    expectGoldens("flashlight", {"flashlight_off", "flashlight_on", "flashlight_off_again"});
+    std::string dir = std::string(ONELIGHT_TEST_OUTPUT) + "/flashlight";
+    double off = centreLuminance(dir + "/flashlight_off.exr");
+    double on = centreLuminance(dir + "/flashlight_on.exr");
+    double offAgain = centreLuminance(dir + "/flashlight_off_again.exr");
+    EXPECT_GT(on, off * 1.01) << "the flashlight adds light where it points";
+    EXPECT_NEAR(offAgain, off, off * 1e-6) << "off again is exactly off";
+}
+
+// The script expects 1, 2, 3, 4, then still 4 effect lights after five shots on five ticks.
+TEST(DemoReplays, FiveShotsNeverMoreThanFourFlashes) {
+    expectGoldens("shots", {"four_flashes", "flashes_gone"});
+}
+
+TEST(DemoReplays, GlossyReflection) {
+    expectGoldens("glossy", {"glossy_floor"});
+}
+
+TEST(DemoReplays, TheSameReplayGivesTheSameFrames) {
+    std::string first = playReplay("mover", "mover_first_run");
+    std::string second = playReplay("mover", "mover_second_run");
+    for (const char* c : {"crate_in_the_sun", "crate_under_the_spot"}) {
+        uint32_t w1, h1, w2, h2;
+        std::vector<uint8_t> a, b;
+        std::string error;
+        ASSERT_TRUE(onelight::capture::readPng(first + "/" + c + ".png", w1, h1, a, error));
+        ASSERT_TRUE(onelight::capture::readPng(second + "/" + c + ".png", w2, h2, b, error));
+        EXPECT_TRUE(a == b) << c << " differs between two runs of the same replay";
+    }
+}
+
+// Bad replays: one line `onelight: FILE:LINE: what was expected`, exit 1.
+TEST(DemoReplays, BadScriptsGiveOneClearLineAndExitOne) {
+    std::string dir = outputDir("bad_scripts");
+    struct {
+        const char* name;
+        const char* text;
+        const char* mustSay;
+    } cases[] = {
+        {"unknown_command", "level demo\nat 1 dance\n", ":2: unknown command 'dance'"},
+        {"bad_number", "at 1.x fire\n", ":1: expected a time in seconds (a number), found '1.x'"},
+        {"time_backwards", "at 2 fire\nat 1 fire\n", ":2: time 1 goes backwards"},
+        {"unknown_entity", "at 1 expect primary crate_9 == sun\n", ":1: unknown entity 'crate_9'"},
+        {"unknown_light", "at 1 expect primary crate_1 == moon\n", ":1: unknown light 'moon'"},
+    };
+    for (auto& c : cases) {
+        std::string script = dir + "/" + c.name + ".replay";
+        std::ofstream(script) << c.text;
+        ProcessRun r = runOnelight(std::string(ONELIGHT_DEMO_PACKAGE) + " --replay " + script +
+                                   " --headless --capture-dir " + dir);
+        EXPECT_EQ(r.exitCode, 1) << c.name << "\n" << r.output;
+        EXPECT_NE(r.output.find("onelight: " + script + c.mustSay), std::string::npos)
+            << c.name << "\n"
+            << r.output;
+    }
+    ProcessRun missing =
+        runOnelight(dir + "/no_such_level.olpak --replay " + dir + "/bad_number.replay --headless");
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.output.find("onelight: " + dir + "/no_such_level.olpak: no such file"),
+              std::string::npos)
+        << missing.output;
+}
