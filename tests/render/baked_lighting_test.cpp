@@ -15,6 +15,7 @@
 #include "capture/capture.hpp"
 #include "shading.hpp"
 #include "test_scene.hpp"
+#include "vk/context.hpp"
 
 namespace {
 
@@ -259,8 +260,12 @@ glm::uvec2 floorPixelNear(const render::Camera& camera, glm::vec3 target) {
         render::viewMatrix(camera);
     const glm::vec4 clip = viewProj * glm::vec4(target, 1.0f);
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    return {uint32_t((ndc.x * 0.5f + 0.5f) * float(kWidth)),
-            uint32_t((ndc.y * 0.5f + 0.5f) * float(kHeight))};
+    const glm::vec2 at((ndc.x * 0.5f + 0.5f) * float(kWidth),
+                       (ndc.y * 0.5f + 0.5f) * float(kHeight));
+    EXPECT_TRUE(at.x >= 0.0f && at.y >= 0.0f && at.x < float(kWidth) && at.y < float(kHeight))
+        << "point (" << target.x << ", " << target.y << ", " << target.z << ") is out of the frame";
+    return {uint32_t(std::clamp(at.x, 0.0f, float(kWidth - 1))),
+            uint32_t(std::clamp(at.y, 0.0f, float(kHeight - 1)))};
 }
 
 glm::vec3 floorPointOf(const render::Camera& camera, glm::uvec2 px) {
@@ -397,6 +402,155 @@ TEST(RenderBaked, SecondaryFollowsLightmap) {
     for (int c = 0; c < 3; ++c)                        // ...and so does the frame, alike
         EXPECT_NEAR(measured[0][c] / measured[1][c], secondary[0][c] / secondary[1][c],
                     0.02f * secondary[0][c] / secondary[1][c]);
+}
+
+}  // namespace
+
+namespace {
+
+// A point of the primary's umbra behind the block, 14.6 m from the camera: beyond a runtime-shadow
+// radius of 8 m it reads the baked mask (dark; lit once the mask is cleared in memory), inside a
+// radius of 40 m the runtime shadow map darkens it whatever the mask says.
+TEST(RenderBaked, FarUmbraReadsBakedMaskNearUsesShadowMap) {
+    const assets::LoadedLevel level = bake("baked_umbra");
+    assets::LoadedLevel cleared = level;
+    std::fill(cleared.baked.shadow_mask.begin(), cleared.baked.shadow_mask.end(), uint8_t(255));
+    const render::Camera camera = testCamera();
+    render::FrameInputs inputs;
+    inputs.camera = camera;
+    const glm::uvec2 px = floorPixelNear(camera, {3.2f, 0.0f, 0.3f});
+    ASSERT_TRUE(pixelSees(camera, px.x, px.y, 1, kDynamicAtRest));
+    const glm::vec3 p = floorPointOf(camera, px);
+    ASSERT_GT(glm::length(p - camera.position), 10.0f);
+    const LightmapSample s = sampleLightmap(level, p, kUp);
+    ASSERT_TRUE(s.found);
+    ASSERT_LT(s.mask, 0.01f) << "expected the primary's baked umbra";
+    const world::Surface& surface = level.level.surfaces[s.surface];
+    ASSERT_EQ(surface.primary_light, 0u);
+    const glm::vec3 secondary = lightmapIrradiance(s, kUp);
+    const glm::vec3 dark = lambertRadiance(level.level, surface.material, 0, s.mask, secondary, p,
+                                           kUp, camera.position);
+    const glm::vec3 lit =
+        lambertRadiance(level.level, surface.material, 0, 1.0f, secondary, p, kUp, camera.position);
+
+    const glm::vec3 far =
+        pixel(renderLinear(level, options(8.0f, 2.0f), inputs, "baked_umbra_far"), px.x, px.y);
+    const glm::vec3 farCleared = pixel(
+        renderLinear(cleared, options(8.0f, 2.0f), inputs, "baked_umbra_far_cleared"), px.x, px.y);
+    const glm::vec3 nearCleared =
+        pixel(renderLinear(cleared, options(40.0f, 8.0f), inputs, "baked_umbra_near_cleared"), px.x,
+              px.y);
+    std::printf(
+        "[ baked ] umbra (%.2f, %.2f), %.1f m away: baked mask %.3g; rendered %.4g (C++ "
+        "%.4g); mask cleared: %.4g beyond the radius (C++ lit %.4g), %.4g inside it\n",
+        double(p.x), double(p.z), double(glm::length(p - camera.position)), double(s.mask),
+        double(far.x), double(dark.x), double(farCleared.x), double(lit.x), double(nearCleared.x));
+    EXPECT_LT(relativeError(far, dark, 1e-4), 0.01);
+    EXPECT_LT(relativeError(farCleared, lit, 1e-4), 0.01);
+    EXPECT_GT(lit.x, 3.0f * dark.x);
+    EXPECT_LT(relativeError(nearCleared, dark, 1e-4), 0.02);  // the shadow map's 4-tap PCF
+}
+
+// The light grid at the object's origin, read as the renderer must: trilinear between cell
+// centres, cells inside solid skipped and the weights renormalised.
+struct GridAt {
+    glm::vec3 up{0.0f};  // ambient cube, +y face (lux)
+    uint32_t dominant = world::kNone;
+    float visibility = 0.0f;  // of `dominant`, over the corners it dominates
+    bool oneDominant = true;  // every used corner has the same dominant primary
+};
+
+GridAt gridAt(const world::LightGrid& g, glm::vec3 p) {
+    const glm::vec3 f =
+        glm::clamp((p - g.origin) / g.cell_size - 0.5f, glm::vec3(0.0f), glm::vec3(g.dims) - 1.0f);
+    const glm::ivec3 lo(glm::floor(f));
+    const glm::vec3 t = f - glm::vec3(lo);
+    GridAt out;
+    float total = 0.0f, dominantWeight = 0.0f;
+    bool first = true;
+    for (int k = 0; k < 8; ++k) {
+        const glm::ivec3 c =
+            glm::min(lo + glm::ivec3(k & 1, (k >> 1) & 1, (k >> 2) & 1), glm::ivec3(g.dims) - 1);
+        const float w = ((k & 1) ? t.x : 1.0f - t.x) * ((k & 2) ? t.y : 1.0f - t.y) *
+                        ((k & 4) ? t.z : 1.0f - t.z);
+        const world::LightGridCell& cell =
+            g.cells[size_t(c.x) +
+                    size_t(g.dims.x) * (size_t(c.y) + size_t(g.dims.y) * size_t(c.z))];
+        if (w <= 0.0f || (cell.flags & 1u)) continue;
+        total += w;
+        out.up += w * cell.ambient_cube[2];
+        if (first) out.dominant = cell.dominant_primary;
+        first = false;
+        if (cell.dominant_primary != out.dominant) out.oneDominant = false;
+        dominantWeight += w;
+        out.visibility += w * cell.primary_visibility;
+    }
+    out.up /= total;
+    out.visibility /= dominantWeight;
+    return out;
+}
+
+// A dynamic box moved between a cell near the baked light and one far from it: its top face
+// is lit by the grid's ambient cube (+y face) and by the grid's dominant primary times the
+// grid's visibility (runtime-shadow radius 1 cm), as the C++ evaluation of the grid says.
+TEST(RenderBaked, DynamicObjectFollowsGrid) {
+    const assets::LoadedLevel level = bake("baked_dynamic");
+    uint32_t entity = world::kNone;
+    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
+        if (level.level.entities[e].flags & world::entity_dynamic) entity = e;
+    ASSERT_NE(entity, world::kNone);
+    const render::Camera camera = testCamera();
+    const glm::vec3 places[2] = {{4.3f, 0.5f, -3.6f}, {-3.4f, 0.5f, 1.6f}};
+    glm::vec3 rendered[2], expected[2], secondary[2];
+
+    render::RenderDeviceFeatures features;
+    vk::Context ctx;
+    vk::createContext(ctx, render::renderContextOptions(features, {}));
+    {
+        render::Renderer renderer;
+        render::createRenderer(renderer, ctx, level, options(0.01f, 0.005f));
+        for (int i = 0; i < 2; ++i) {
+            render::DynamicTransform moved{entity, glm::translate(glm::mat4(1.0f), places[i])};
+            render::FrameInputs inputs;
+            inputs.camera = camera;
+            inputs.dynamicTransforms = {&moved, 1};
+            render::FrameOutput output;
+            output.readback = true;
+            render::drawFrame(renderer, inputs, output);
+            const render::CapturedFrame& frame = render::capturedFrame(renderer);
+
+            const glm::vec3 top = places[i] + glm::vec3(0.0f, 0.3f, 0.0f);
+            const glm::uvec2 px = floorPixelNear(camera, top);
+            ASSERT_TRUE(pixelSees(camera, px.x, px.y, 3, places[i]));
+            const Ray r = pixelRay(camera, float(px.x) + 0.5f, float(px.y) + 0.5f);
+            const glm::vec3 p = r.origin + ((top.y - r.origin.y) / r.direction.y) * r.direction;
+            const GridAt g = gridAt(level.baked.grid, places[i]);
+            ASSERT_TRUE(g.oneDominant);
+            EXPECT_EQ(render::dynamicPrimary(renderer, entity), g.dominant);
+            const uint32_t material = level.level.dynamic_meshes.at(0).material;
+            expected[i] = lambertRadiance(level.level, material, g.dominant, g.visibility, g.up, p,
+                                          kUp, camera.position);
+            secondary[i] = lambertRadiance(level.level, material, world::kNone, 0.0f, g.up, p, kUp,
+                                           camera.position);
+            const size_t at = (size_t(px.y) * kWidth + px.x) * 4;
+            rendered[i] = {frame.linearRgba[at], frame.linearRgba[at + 1],
+                           frame.linearRgba[at + 2]};
+            std::printf(
+                "[ baked ] dynamic box at (%.1f, %.1f, %.1f): grid +y %.4g lux, primary %d "
+                "visibility %.3f; top face %.4g %.4g %.4g rendered, %.4g %.4g %.4g by the "
+                "grid\n",
+                double(places[i].x), double(places[i].y), double(places[i].z), double(g.up.x),
+                int(g.dominant), double(g.visibility), double(rendered[i].x), double(rendered[i].y),
+                double(rendered[i].z), double(expected[i].x), double(expected[i].y),
+                double(expected[i].z));
+            EXPECT_LT(relativeError(rendered[i], expected[i], 1e-4), 0.01);
+        }
+        render::destroyRenderer(renderer);
+    }
+    vk::destroyContext(ctx);
+    EXPECT_EQ(ctx.validationCounts.errors.load(), 0u);
+    EXPECT_GT(secondary[0].x, 3.0f * secondary[1].x);  // a bright cell and a dark one...
+    EXPECT_GT(rendered[0].x - rendered[1].x, 0.5f * (secondary[0].x - secondary[1].x));  // ...seen
 }
 
 }  // namespace
