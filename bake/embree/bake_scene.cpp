@@ -154,6 +154,7 @@ SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, f
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &query);
     ++counter;
+    if (observer_) observer_(observer_user_, {origin, max_distance, dir, false});
     SurfaceHit hit;
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.found = true;
@@ -189,6 +190,7 @@ bool BakeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float ma
     ray.flags = 0;
     rtcOccluded1(scene_, &context, &ray);
     ++counter;
+    if (observer_) observer_(observer_user_, {origin, max_distance, dir, true});
     return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
 

@@ -59,6 +59,17 @@ struct SurfaceHit {
     bool back_face = false;    // the ray arrived on the side opposite `normal`
 };
 
+/// A ray as a BakeScene traced it, for tools that replay the baker's rays (the benchmark
+/// times them against raw rtcIntersect1 / rtcOccluded1).
+struct TracedRay {
+    glm::vec3 origin{0.0f};
+    float max_distance = 0.0f;  // metres
+    glm::vec3 dir{0.0f};        // unit
+    bool occlusion = false;     // rtcOccluded1 (else rtcIntersect1)
+};
+/// Receives every ray a BakeScene traces, from any thread (the callee synchronises).
+using RayObserver = void (*)(void* user, const TracedRay& ray);
+
 /// The static world in Embree, plus the per-triangle data hits are shaded with.
 class BakeScene {
 public:
@@ -87,6 +98,13 @@ public:
     glm::vec3 bounds_min() const { return bounds_min_; }
     glm::vec3 bounds_max() const { return bounds_max_; }
 
+    /// Calls `observer(user, ray)` for every ray traced from now on; null stops it.
+    void observe_rays(RayObserver observer, void* user) {
+        observer_ = observer;
+        observer_user_ = user;
+    }
+    RTCScene embree_scene() const { return scene_; }  // borrowed, committed
+
     const world::Material& material_of(uint32_t triangle) const;
     uint32_t triangle_count() const { return static_cast<uint32_t>(triangle_material_.size()); }
     size_t memory_bytes() const;
@@ -104,6 +122,8 @@ private:
     glm::vec3 bounds_min_{0.0f}, bounds_max_{0.0f};
     float ray_offset_ = 1e-4f;
     float diameter_ = 1.0f;
+    RayObserver observer_ = nullptr;
+    void* observer_user_ = nullptr;  // borrowed
 };
 
 }  // namespace onelight::bake

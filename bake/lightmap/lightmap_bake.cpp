@@ -77,6 +77,11 @@ TexelEstimate estimate_texel(const BakeScene& scene, const BakeLights& lights,
     origin = move_out_of_geometry(scene, origin, n, sample.texel_size, rays, out.moved);
     out.origin = origin;
 
+    // Visibility is sampled from `origin` (on the surface); the unshadowed light E_l (n.w_l)
+    // at the texel centre, which lies past the triangle's edge for an edge texel: bilinear
+    // filtering then reads the edge's own value at a chart border (texel_placement.hpp).
+    const glm::vec3 centre = out.moved ? origin : sample.centre + n * scene.ray_offset();
+
     const world::Surface& surface = level.surfaces[sample.surface];
     const BakeLight* own = own_primary(lights, surface.primary_light);
     if (own) {
@@ -88,13 +93,16 @@ TexelEstimate estimate_texel(const BakeScene& scene, const BakeLights& lights,
     for (const BakeLight& light : lights.lights) {
         if (&light == own) continue;
         const LightIncidence incidence = light_incidence(light, origin);
-        const float cosine = glm::dot(n, incidence.direction);
-        if (cosine <= 0.0f || incidence.irradiance == glm::vec3(0.0f)) continue;
+        const LightIncidence at_centre = light_incidence(light, centre);
+        const float cosine = glm::dot(n, at_centre.direction);
+        if (glm::dot(n, incidence.direction) <= 0.0f || cosine <= 0.0f ||
+            at_centre.irradiance == glm::vec3(0.0f))
+            continue;
         const float v =
             light_visibility(scene, light, incidence, origin, settings.shadow_samples, rng, rays);
-        const glm::vec3 e = incidence.irradiance * (cosine * v);
+        const glm::vec3 e = at_centre.irradiance * (cosine * v);
         out.direct += glm::dvec3(e);
-        out.direct_direction += double(luminance(e)) * glm::dvec3(incidence.direction);
+        out.direct_direction += double(luminance(e)) * glm::dvec3(at_centre.direction);
         out.direct_luminance += double(luminance(e));
     }
     const uint32_t count = settings.indirect_samples;

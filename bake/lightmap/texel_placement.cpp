@@ -9,8 +9,9 @@
 namespace onelight::bake {
 namespace {
 
-/// Texels whose centre is at most this far (texels) from a triangle sample it.
-constexpr double kTouchDistance = 0.7072;  // half the texel diagonal
+/// A bilinear lookup at lightmap point p reads the texels whose centres are less than one
+/// texel from p in x and in y: every texel that a lookup on a triangle can read samples it.
+constexpr double kBilinearReach = 1.0;  // texels
 /// A touching texel's point moves this fraction towards the triangle's centroid, off the edge.
 constexpr double kEdgeNudge = 1e-3;
 
@@ -44,6 +45,37 @@ glm::dvec3 closest_barycentrics(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::d
     const double denom = 1.0 / (va + vb + vc);
     const double v = vb * denom, w = vc * denom;
     return {1.0 - v - w, v, w};
+}
+
+/// Barycentrics of p in the plane of triangle abc (2D), negative outside it: the affine map
+/// that carries a lightmap point to the triangle's plane in world space.
+glm::dvec3 plane_barycentrics(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    const glm::dvec2 ab = b - a, ac = c - a, ap = p - a;
+    const double det = ab.x * ac.y - ab.y * ac.x;
+    if (det == 0.0) return {1.0, 0.0, 0.0};
+    const double v = (ap.x * ac.y - ap.y * ac.x) / det;
+    const double w = (ab.x * ap.y - ab.y * ap.x) / det;
+    return {1.0 - v - w, v, w};
+}
+
+/// True when triangle abc overlaps the open square of half-size h around p (texel space).
+/// Separating axis test (Ericson 2005, "Real-Time Collision Detection", sec. 5.2.9) on the
+/// square's two axes and the triangle's three edge normals.
+bool triangle_overlaps_square(glm::dvec2 p, double h, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    if (std::max({a.x, b.x, c.x}) <= p.x - h || std::min({a.x, b.x, c.x}) >= p.x + h ||
+        std::max({a.y, b.y, c.y}) <= p.y - h || std::min({a.y, b.y, c.y}) >= p.y + h)
+        return false;
+    const glm::dvec2 v[3] = {a, b, c};
+    for (int e = 0; e < 3; ++e) {
+        const glm::dvec2 edge = v[(e + 1) % 3] - v[e];
+        const glm::dvec2 n(-edge.y, edge.x);
+        const double on_edge = glm::dot(n, v[e]), opposite = glm::dot(n, v[(e + 2) % 3]);
+        const double centre = glm::dot(n, p), radius = h * (std::abs(n.x) + std::abs(n.y));
+        if (std::max(on_edge, opposite) <= centre - radius ||
+            std::min(on_edge, opposite) >= centre + radius)
+            return false;
+    }
+    return true;
 }
 
 struct Candidate {
@@ -90,7 +122,9 @@ std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
                     const glm::dvec3 b = closest_barycentrics(centre, q[0], q[1], q[2]);
                     const glm::dvec2 closest = b.x * q[0] + b.y * q[1] + b.z * q[2];
                     const double distance = glm::length(closest - centre);
-                    if (distance > kTouchDistance) continue;
+                    if (distance > 0.0 &&
+                        !triangle_overlaps_square(centre, kBilinearReach, q[0], q[1], q[2]))
+                        continue;
                     Candidate& c = best[base + uint64_t(y) * atlas.width + uint64_t(x)];
                     if (distance < c.distance) c = {distance, s, i, b};
                 }
@@ -127,6 +161,10 @@ std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
                 sample.y = y;
                 sample.surface = c.surface;
                 sample.position = glm::vec3(b.x * p0 + b.y * p1 + b.z * p2);
+                const glm::dvec3 u =
+                    plane_barycentrics(glm::dvec2(x + 0.5, y + 0.5), t0, t0 + e1, t0 + e2);
+                sample.centre =
+                    inside ? sample.position : glm::vec3(u.x * p0 + u.y * p1 + u.z * p2);
                 const double length = glm::length(cross);
                 sample.normal = length > 0.0 ? glm::vec3(cross / length) : v[0]->normal;
                 sample.texel_size = texel_area > 0.0

@@ -1,8 +1,11 @@
 // Where each lightmap texel is sampled. Every surface's triangles are rasterised into its
 // atlas in lightmap-texel space (uv1 times the atlas size): a texel whose centre lies in a
-// triangle samples that point; a texel the triangle only touches (its centre within half a
-// texel diagonal) samples the triangle's closest point, nudged inside, so bilinear filtering
-// reads correct values up to every chart edge and seams show no step. Texels no triangle
+// triangle samples that point; a texel the triangle only touches (a bilinear lookup somewhere
+// on the triangle reads it: its centre within one texel in x and in y) traces its rays from the
+// triangle's closest point, nudged inside, so no ray starts off the surface, but keeps its centre's
+// own place on the triangle's plane (`centre`): the smooth part of its light (distance and cosine
+// to each light) is evaluated there, so bilinear filtering reconstructs a linear field exactly up
+// to the chart edge and both charts of a seam read the same value at the border. Texels no triangle
 // touches are left for dilation. Sample points always lie on their own surface.
 #pragma once
 
@@ -20,6 +23,8 @@ struct TexelSample {
     uint32_t atlas = 0, x = 0, y = 0;
     uint32_t surface = 0;        // into CompiledLevel::surfaces
     glm::vec3 position{0.0f};    // metres, world, on the surface
+    glm::vec3 centre{0.0f};      // metres, world: the texel centre on the triangle's plane
+                                 // (== position when centre_inside, else past the edge)
     glm::vec3 normal{0.0f};      // unit geometric normal of the triangle (winding)
     float texel_size = 0.0f;     // metres: edge of the texel's footprint on the surface
     bool centre_inside = false;  // the texel centre lies inside the triangle

@@ -126,6 +126,18 @@ world::Light spot_light(glm::vec3 position, glm::vec3 direction, float candela, 
     return l;
 }
 
+world::SourceLevel agreement_room() {
+    world::SourceLevel level;
+    const uint32_t walls = add_lambert_material(level, 0.6f);
+    const uint32_t block = add_lambert_material(level, 0.3f);
+    add_box(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
+    add_box(level, {-0.4f, -0.4f, 0.0f}, {0.4f, 0.4f, 0.8f}, block, false, "block");
+    level.lights.push_back(point_light({-1.0f, 0.5f, 2.0f}, 60.0f, world::LightRole::primary));
+    level.lights.push_back(spot_light({1.5f, -1.0f, 2.2f}, {-0.5f, 0.4f, -1.0f}, 150.0f, 0.4f, 0.7f,
+                                      world::LightRole::baked));
+    return level;
+}
+
 BakeOptions test_options(float texels_per_metre, BakeQuality quality) {
     BakeOptions o;
     o.quality = quality;

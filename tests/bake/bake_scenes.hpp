@@ -29,6 +29,10 @@ world::Light point_light(glm::vec3 position, float candela, world::LightRole rol
 world::Light spot_light(glm::vec3 position, glm::vec3 direction, float candela, float inner,
                         float outer, world::LightRole role);
 
+/// The lightmap-vs-reference agreement room: a closed 4 x 3 x 2.5 m room (albedo 0.6) with an
+/// occluding block (albedo 0.3), a primary point light and a secondary ("baked") spot.
+world::SourceLevel agreement_room();
+
 /// Options for fast tests: no progress bar, the given lightmap density.
 BakeOptions test_options(float texels_per_metre, BakeQuality quality = BakeQuality::draft);
 

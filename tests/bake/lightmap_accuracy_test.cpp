@@ -195,14 +195,7 @@ TEST(LightmapAccuracy, OneCentimetreWallLeaksLessThanATenthOfAPercent) {
 // spot, default quality. Reference: 8192 independent samples per point (its own noise ~0.3%).
 // Issue tolerance: 2% RMS.
 TEST(LightmapAccuracy, LightmapAgreesWithReferencePathTracer) {
-    world::SourceLevel level;
-    const uint32_t walls = test::add_lambert_material(level, 0.6f);
-    const uint32_t block = test::add_lambert_material(level, 0.3f);
-    test::add_box(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
-    test::add_box(level, {-0.4f, -0.4f, 0.0f}, {0.4f, 0.4f, 0.8f}, block, false, "block");
-    level.lights.push_back(test::point_light({-1.0f, 0.5f, 2.0f}, 60.0f, LightRole::primary));
-    level.lights.push_back(test::spot_light({1.5f, -1.0f, 2.2f}, {-0.5f, 0.4f, -1.0f}, 150.0f, 0.4f,
-                                            0.7f, LightRole::baked));
+    const world::SourceLevel level = test::agreement_room();
     BakeOptions options = test::test_options(6.0f, BakeQuality::normal);
     if (const char* n = std::getenv("ONELIGHT_PATHS"))
         options.indirect_samples = uint32_t(std::atoi(n));
