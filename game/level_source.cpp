@@ -102,8 +102,8 @@ bool resolveLevelPackage(const std::string& level, std::string& package, std::st
                 "onelight-bake beside onelight";
         return false;
     }
-    // First compile alone (fast, its one-line errors captured), then bake the lighting with
-    // the baker's progress bars on stderr.
+    // First compile alone (fast, its one-line errors captured), then bake the lighting, with
+    // the baker's progress bars on stderr when a person watches it (a terminal).
     std::string output;
     int code = runCaptured({bake.string(), "compile", level, "-o", package}, output);
     if (code != 0) {
@@ -113,12 +113,17 @@ bool resolveLevelPackage(const std::string& level, std::string& package, std::st
                     : why;
         return false;
     }
-    std::fprintf(stderr, "onelight: baking %s (the package is missing or older than the level)\n",
-                 level.c_str());
+    const bool watched = isatty(STDERR_FILENO) != 0;
+    if (watched)
+        std::fprintf(stderr,
+                     "onelight: baking %s (the package is missing or older than the level)\n",
+                     level.c_str());
     output.clear();
-    code = runCaptured({bake.string(), level, "-o", package}, output, true);
+    code = runCaptured({bake.string(), level, "-o", package}, output, watched);
     if (code != 0) {
-        error = level + ": onelight-bake failed (exit " + std::to_string(code) + ")";
+        const std::string why = compilerError(output);
+        error = why.empty() ? level + ": onelight-bake failed (exit " + std::to_string(code) + ")"
+                            : why;
         return false;
     }
     return true;

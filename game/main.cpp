@@ -20,6 +20,7 @@
 #include "free_fly.hpp"
 #include "level_source.hpp"
 #include "platform/window.hpp"
+#include "play_mode.hpp"
 #include "render/renderer.hpp"
 #include "replay_mode.hpp"
 #include "vk/context.hpp"
@@ -274,6 +275,7 @@ int run(int argc, char** argv) {
     assets::LoadedLevel level;
     if (!assets::loadLevel(package, level, error)) return fail(error);
     if (!cl.replay.empty()) return game::runReplay(cl, level);
+    if (!cl.headless && !cl.freeFly && cl.camera.empty()) return game::runPlay(cl, level);
     render::Camera camera;
     if (!resolveCamera(cl, level, camera, error)) return fail(error);
     return cl.headless ? runHeadless(cl, level, camera) : runWindow(cl, level, camera);

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "render/light_grid_sample.hpp"
 #include "shading.hpp"
 
 namespace onelight::game {
@@ -22,6 +23,19 @@ glm::mat4 objectMatrix(glm::vec3 position, const world::Entity& e) {
     m[2] *= e.scale.z;
     m[3] = glm::vec4(position, 1.0f);
     return m;
+}
+
+// The secondary (baked) illuminance on a surface at p with normal n: the light grid's ambient
+// cube read along n (Valve's ambient cube: E(n) = sum_i n_i^2 cube[sign of n_i on axis i]), or
+// the renderer's placeholder ambient for a level baked without a grid.
+float secondaryIlluminance(const Session& s, glm::vec3 p, glm::vec3 n) {
+    const world::LightGrid& grid = s.level->baked.grid;
+    if (!s.level->hasBakedLighting || grid.cells.empty()) return s.secondaryLux;
+    render::LightGridSample sample = render::sampleLightGrid(grid, p);
+    glm::vec3 e(0.0f);
+    for (int axis = 0; axis < 3; ++axis)
+        e += n[axis] * n[axis] * sample.ambientCube[2 * axis + (n[axis] < 0.0f ? 1 : 0)];
+    return luminance(e);
 }
 
 }  // namespace
@@ -105,7 +119,7 @@ float meteredEv100(const Session& s, float fallback) {
             glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
             if (glm::dot(n, d) > 0.0f) n = -n;  // the side the eye sees
             glm::vec3 p = eye + d * float(hit.t) + n * 0.02f;
-            float illuminance = s.secondaryLux;
+            float illuminance = secondaryIlluminance(s, p, n);
             for (uint32_t light : s.primaryCandidates) {
                 const world::Light& l = level.lights[light];
                 glsl::LightSample sample = glsl::evaluatePunctualLight(

@@ -49,8 +49,9 @@ render::Camera playerCamera(const Session& session);
 
 // The exposure a reflected-light meter in the player's view asks for: 15 rays across the view
 // find the surfaces it sees; each surface's luminance is the shadowed illuminance of every
-// primary on it (its own normal) plus session.secondaryLux, the secondary light the renderer
-// adds, on a middle-grey (18%) Lambertian surface; EV100 = log2(L * S / K) of their geometric
+// primary on it (its own normal) plus the baked secondary light there (the light grid's ambient
+// cube along the normal; session.secondaryLux without a grid), on a middle-grey (18%)
+// Lambertian surface; EV100 = log2(L * S / K) of their geometric
 // mean, S = 100, K = 12.5 (ISO 2720; Lagarde and de Rousiers 2014, sec. 5.1). Keeps `fallback`
 // when the view sees no surface.
 float meteredEv100(const Session& session, float fallback);
