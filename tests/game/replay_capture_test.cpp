@@ -3,7 +3,6 @@
 // (tests/support/golden.hpp states the tolerance; a failure writes NAME_diff.png). The scripts'
 // expect lines are checked by the replay itself: a failed one makes `onelight` exit 1.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -11,25 +10,16 @@
 
 #include "capture/capture.hpp"
 #include "golden.hpp"
+#include "run_command.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct ProcessRun {
-    int exitCode;
-    std::string output;  // stdout and stderr
-};
+using onelight::test::CommandResult;
 
-ProcessRun runOnelight(const std::string& arguments) {
-    std::string command = std::string(ONELIGHT_EXE) + " " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+CommandResult runOnelight(const std::string& arguments) {
+    return onelight::test::runCommand(std::string(ONELIGHT_EXE) + " " + arguments);
 }
 
 std::string outputDir(const std::string& name) {
@@ -43,7 +33,7 @@ std::string outputDir(const std::string& name) {
 // returns the folder.
 std::string playReplay(const std::string& name, const std::string& folder = "") {
     std::string dir = outputDir(folder.empty() ? name : folder);
-    ProcessRun r =
+    CommandResult r =
         runOnelight(std::string(ONELIGHT_DEMO_PACKAGE) + " --replay " + ONELIGHT_REPLAYS + "/" +
                     name + ".replay --headless --size 320x180 --capture-dir " + dir);
     EXPECT_EQ(r.exitCode, 0) << r.output;
@@ -148,14 +138,14 @@ TEST(DemoReplays, BadScriptsGiveOneClearLineAndExitOne) {
     for (auto& c : cases) {
         std::string script = dir + "/" + c.name + ".replay";
         std::ofstream(script) << c.text;
-        ProcessRun r = runOnelight(std::string(ONELIGHT_DEMO_PACKAGE) + " --replay " + script +
-                                   " --headless --capture-dir " + dir);
+        CommandResult r = runOnelight(std::string(ONELIGHT_DEMO_PACKAGE) + " --replay " + script +
+                                      " --headless --capture-dir " + dir);
         EXPECT_EQ(r.exitCode, 1) << c.name << "\n" << r.output;
         EXPECT_NE(r.output.find("onelight: " + script + c.mustSay), std::string::npos)
             << c.name << "\n"
             << r.output;
     }
-    ProcessRun missing =
+    CommandResult missing =
         runOnelight(dir + "/no_such_level.olpak --replay " + dir + "/bad_number.replay --headless");
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_NE(missing.output.find("onelight: " + dir + "/no_such_level.olpak: no such file"),

@@ -1,6 +1,5 @@
 // onelight-lab as a user runs it: output format, agreement with the library, bad input.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -9,37 +8,20 @@
 #include <string>
 
 #include "albedo.hpp"
-
-#define STB_IMAGE_IMPLEMENTATION
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wdouble-promotion"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#include <stb_image.h>
-#pragma GCC diagnostic pop
+#include "capture/capture.hpp"
+#include "run_command.hpp"
 
 namespace {
 
-struct Result {
-    int exitCode;
-    std::string output;  // stdout and stderr
-};
-
-Result run(const std::string& args) {
-    std::string command = std::string(ONELIGHT_LAB_EXE) + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+onelight::test::CommandResult run(const std::string& args) {
+    return onelight::test::runCommand(std::string(ONELIGHT_LAB_EXE) + " " + args);
 }
 
 }  // namespace
 
 TEST(LabCli, BrdfAlbedoPrintsCsvThatMatchesTheLibrary) {
-    Result r = run("brdf-albedo --models ggx_smith,bp_schlick --mu 0.25,1 --gloss 0.5");
+    onelight::test::CommandResult r =
+        run("brdf-albedo --models ggx_smith,bp_schlick --mu 0.25,1 --gloss 0.5");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::istringstream lines(r.output);
     std::string line;
@@ -76,7 +58,7 @@ TEST(LabCli, BadInputGivesOneClearLineAndExitOne) {
         {"frobnicate", "unknown command 'frobnicate'"},
     };
     for (auto& c : cases) {
-        Result r = run(c.args);
+        onelight::test::CommandResult r = run(c.args);
         EXPECT_EQ(r.exitCode, 1) << c.args << "\n" << r.output;
         EXPECT_NE(r.output.find(c.mustSay), std::string::npos) << c.args << "\n" << r.output;
     }
@@ -85,7 +67,7 @@ TEST(LabCli, BadInputGivesOneClearLineAndExitOne) {
 TEST(LabCli, QuickReportWritesTablesCsvsAndPlots) {
     std::filesystem::path dir = std::filesystem::temp_directory_path() / "onelight_lab_report_test";
     std::filesystem::remove_all(dir);
-    Result r = run("brdf-report --quick -o " + dir.string());
+    onelight::test::CommandResult r = run("brdf-report --quick -o " + dir.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::ifstream readme(dir / "README.md");
     std::stringstream text;
@@ -95,12 +77,12 @@ TEST(LabCli, QuickReportWritesTablesCsvsAndPlots) {
         EXPECT_NE(text.str().find(std::string("| ") + model + " |"), std::string::npos) << model;
     for (const char* png : {"models_cost_vs_error.png", "models_cost_vs_albedo_error.png",
                             "env_cost_vs_error.png", "albedo_gloss05.png"}) {
-        int w = 0, h = 0, c = 0;
-        unsigned char* pixels = stbi_load((dir / png).c_str(), &w, &h, &c, 3);
-        ASSERT_NE(pixels, nullptr) << png;
-        EXPECT_EQ(w, 960);
-        EXPECT_EQ(h, 600);
-        stbi_image_free(pixels);
+        uint32_t w = 0, h = 0;
+        std::vector<uint8_t> rgba;
+        std::string error;
+        ASSERT_TRUE(onelight::capture::readPng((dir / png).string(), w, h, rgba, error)) << error;
+        EXPECT_EQ(w, 960u);
+        EXPECT_EQ(h, 600u);
     }
     for (const char* csv : {"models.csv", "models_grid.csv", "env_fresnel.csv"})
         EXPECT_TRUE(std::filesystem::file_size(dir / csv) > 40) << csv;
