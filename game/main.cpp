@@ -22,6 +22,7 @@
 #include "platform/window.hpp"
 #include "play_mode.hpp"
 #include "render/renderer.hpp"
+#include "render_target.hpp"
 #include "replay_mode.hpp"
 #include "vk/context.hpp"
 
@@ -140,130 +141,67 @@ bool writeCapture(const std::string& base, const render::CapturedFrame& frame,
            capture::writeJson(base + ".json", json, error);
 }
 
-int runHeadless(const game::CommandLine& cl, const assets::LoadedLevel& level,
-                render::Camera camera) {
-    render::RenderDeviceFeatures features;
-    vk::Context ctx;
-    vk::createContext(ctx, render::renderContextOptions(features, {}));
-    render::Renderer renderer;
-    int code = 0;
-    try {
-        render::RendererOptions options;
-        options.width = cl.width;
-        options.height = cl.height;
-        options.requestedMsaa = cl.msaa;
-        render::createRenderer(renderer, ctx, level, options);
-        render::FrameInputs inputs;
-        inputs.camera = camera;
-        inputs.effects = effectsFor(cl, camera);
-        render::FrameOutput output;
-        output.readback = true;
-        const render::FrameStats stats = render::drawFrame(renderer, inputs, output);
-        const render::RendererInfo& info = render::rendererInfo(renderer);
-        std::printf(
-            "onelight: %ux%u, MSAA %ux (requested %ux), %.2f ms CPU, %.2f ms GPU, %u surfaces\n",
-            cl.width, cl.height, info.msaaInUse, info.msaaRequested, stats.cpuMs, stats.gpuMs,
-            stats.surfacesDrawn);
-        if (!cl.capture.empty()) {
-            std::string error;
-            if (!writeCapture(cl.capture, render::capturedFrame(renderer),
-                              sidecar(cl, level, renderer, camera, stats, "headless"), error))
-                code = fail(error);
-        }
-    } catch (...) {
-        render::destroyRenderer(renderer);
-        vk::destroyContext(ctx);
-        throw;
-    }
-    render::destroyRenderer(renderer);
-    vk::destroyContext(ctx);
-    if (ctx.validationCounts.errors.load() > 0)
-        code =
-            fail(std::to_string(ctx.validationCounts.errors.load()) + " Vulkan validation errors");
-    return code;
-}
-
-int runWindow(const game::CommandLine& cl, const assets::LoadedLevel& level,
+// One frame, headless (and its capture files), or a free-fly camera in a window.
+int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
               render::Camera camera) {
-    platform::Window window;
+    game::RenderTarget target;
     std::string error;
-    if (!platform::openWindow(window, "onelight", cl.width, cl.height, error)) return fail(error);
-    render::RenderDeviceFeatures features;
-    vk::Context ctx;
-    render::Renderer renderer;
+    if (!game::openRenderTarget(target, cl, level, !cl.headless, error)) return fail(error);
+    const render::RendererInfo& info = render::rendererInfo(target.renderer);
+    const char* backend = cl.headless ? "headless" : "window";
+    if (cl.headless) {
+        std::printf("onelight: %ux%u, MSAA %ux (requested %ux)", cl.width, cl.height,
+                    info.msaaInUse, info.msaaRequested);
+    } else {
+        std::printf("onelight: window %ux%u, MSAA %ux (requested %ux); WASD + mouse, Esc quits\n",
+                    target.window.swapchain.extent.width, target.window.swapchain.extent.height,
+                    info.msaaInUse, info.msaaRequested);
+        if (cl.frames == 0)
+            glfwSetInputMode(target.window.window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
+    }
+    std::fflush(stdout);
     int code = 0;
     try {
-        vk::createContext(
-            ctx, render::renderContextOptions(features, platform::windowInstanceExtensions()));
-        platform::createWindowSwapchain(window, ctx);
-        render::RendererOptions options;
-        options.width = window.swapchain.extent.width;
-        options.height = window.swapchain.extent.height;
-        options.requestedMsaa = cl.msaa;
-        render::createRenderer(renderer, ctx, level, options);
-        std::printf("onelight: window %ux%u, MSAA %ux (requested %ux); WASD + mouse, Esc quits\n",
-                    options.width, options.height, render::rendererInfo(renderer).msaaInUse,
-                    cl.msaa);
-        std::fflush(stdout);
-        if (cl.frames == 0) glfwSetInputMode(window.window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
-
         game::FreeFly fly = game::freeFlyFrom(camera);
         auto last = std::chrono::steady_clock::now();
-        for (uint32_t frame = 0; !glfwWindowShouldClose(window.window); ++frame) {
-            glfwPollEvents();
-            if (glfwGetKey(window.window, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
+        const uint32_t frames = cl.headless ? 1 : cl.frames;
+        for (uint32_t frame = 0; !game::targetWantsToClose(target); ++frame) {
             const auto now = std::chrono::steady_clock::now();
             const float dt = std::chrono::duration<float>(now - last).count();
             last = now;
-            if (cl.frames == 0) {
-                game::updateFreeFly(fly, window.window, dt);
+            if (!cl.headless && cl.frames == 0) {
+                game::updateFreeFly(fly, target.window.window, dt);
                 camera = game::cameraOf(fly, camera);
             }
-            const int image = vk::acquireNextImage(ctx, window.swapchain);
-            if (image < 0) {
-                platform::recreateWindowSwapchain(window, ctx);
-                render::resizeRenderer(renderer, window.swapchain.extent.width,
-                                       window.swapchain.extent.height);
-                continue;
-            }
-            const bool last_frame = cl.frames > 0 && frame + 1 >= cl.frames;
+            const bool lastFrame = frames > 0 && frame + 1 >= frames;
             render::FrameInputs inputs;
             inputs.camera = camera;
             inputs.effects = effectsFor(cl, camera);
-            render::FrameOutput output;
-            output.swapchain = &window.swapchain;
-            output.swapchainImage = uint32_t(image);
-            output.readback = last_frame && !cl.capture.empty();
-            output.readbackSwapchain = output.readback;
-            const render::FrameStats stats = render::drawFrame(renderer, inputs, output);
-            if (!vk::presentImage(ctx, window.swapchain, uint32_t(image))) {
-                platform::recreateWindowSwapchain(window, ctx);
-                render::resizeRenderer(renderer, window.swapchain.extent.width,
-                                       window.swapchain.extent.height);
-            }
-            if (output.readback) {
-                const render::CapturedFrame& captured = render::capturedFrame(renderer);
+            const bool readback = lastFrame && !cl.capture.empty();
+            const render::FrameStats stats = game::drawToTarget(
+                target, inputs, readback || cl.headless, readback && !cl.headless);
+            if (cl.headless)
+                std::printf(", %.2f ms CPU, %.2f ms GPU, %u surfaces\n", stats.cpuMs, stats.gpuMs,
+                            stats.surfacesDrawn);
+            if (readback) {
+                const render::CapturedFrame& captured = render::capturedFrame(target.renderer);
                 if (!writeCapture(cl.capture, captured,
-                                  sidecar(cl, level, renderer, camera, stats, "window"), error) ||
-                    !capture::writePng(cl.capture + "_window.png", window.swapchain.extent.width,
-                                       window.swapchain.extent.height, captured.swapchainRgba8,
-                                       error))
+                                  sidecar(cl, level, target.renderer, camera, stats, backend),
+                                  error) ||
+                    (!cl.headless && !capture::writePng(cl.capture + "_window.png",
+                                                        target.window.swapchain.extent.width,
+                                                        target.window.swapchain.extent.height,
+                                                        captured.swapchainRgba8, error)))
                     code = fail(error);
             }
-            if (last_frame) break;
+            if (lastFrame) break;
         }
     } catch (...) {
-        render::destroyRenderer(renderer);
-        platform::closeWindow(window, ctx);
-        vk::destroyContext(ctx);
+        game::closeRenderTarget(target);
         throw;
     }
-    render::destroyRenderer(renderer);
-    platform::closeWindow(window, ctx);
-    vk::destroyContext(ctx);
-    if (ctx.validationCounts.errors.load() > 0)
-        code =
-            fail(std::to_string(ctx.validationCounts.errors.load()) + " Vulkan validation errors");
+    if (uint32_t errors = game::closeRenderTarget(target))
+        code = fail(std::to_string(errors) + " Vulkan validation errors");
     return code;
 }
 
@@ -278,7 +216,7 @@ int run(int argc, char** argv) {
     if (!cl.headless && !cl.freeFly && cl.camera.empty()) return game::runPlay(cl, level);
     render::Camera camera;
     if (!resolveCamera(cl, level, camera, error)) return fail(error);
-    return cl.headless ? runHeadless(cl, level, camera) : runWindow(cl, level, camera);
+    return runViewer(cl, level, camera);
 }
 
 }  // namespace

@@ -7,9 +7,8 @@
 #include <cstdio>
 
 #include "ecs/schedule.hpp"
-#include "platform/window.hpp"
+#include "render_target.hpp"
 #include "session.hpp"
-#include "vk/context.hpp"
 
 namespace onelight::game {
 
@@ -53,76 +52,42 @@ struct InputReader {
 }  // namespace
 
 int runPlay(const CommandLine& cl, const assets::LoadedLevel& level) {
-    platform::Window window;
+    RenderTarget target;
     std::string error;
-    if (!platform::openWindow(window, "onelight", cl.width, cl.height, error)) {
+    if (!openRenderTarget(target, cl, level, true, error)) {
         std::fprintf(stderr, "onelight: %s\n", error.c_str());
         return 1;
     }
-    render::RenderDeviceFeatures features;
-    vk::Context ctx;
-    render::Renderer renderer;
     Session session;
     startSession(session, level);
+    session.secondaryLux = std::max(render::rendererInfo(target.renderer).ambientLux, 1.0f);
+    std::printf("onelight: playing %s, %ux%u, MSAA %ux\n", level.path.c_str(),
+                target.window.swapchain.extent.width, target.window.swapchain.extent.height,
+                render::rendererInfo(target.renderer).msaaInUse);
+    std::fflush(stdout);
     try {
-        vk::createContext(
-            ctx, render::renderContextOptions(features, platform::windowInstanceExtensions()));
-        platform::createWindowSwapchain(window, ctx);
-        render::RendererOptions options;
-        options.width = window.swapchain.extent.width;
-        options.height = window.swapchain.extent.height;
-        options.requestedMsaa = cl.msaa;
-        render::createRenderer(renderer, ctx, level, options);
-        session.secondaryLux = std::max(render::rendererInfo(renderer).ambientLux, 1.0f);
-        std::printf("onelight: playing %s, %ux%u, MSAA %ux\n", level.path.c_str(), options.width,
-                    options.height, render::rendererInfo(renderer).msaaInUse);
-        std::fflush(stdout);
-        if (cl.frames == 0) glfwSetInputMode(window.window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
-
+        if (cl.frames == 0)
+            glfwSetInputMode(target.window.window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
         InputReader reader;
         ecs::FixedClock clock;
         clock.tickSeconds = session.tickSeconds;
         std::vector<render::DynamicTransform> transforms;
         auto last = std::chrono::steady_clock::now();
-        for (uint32_t frame = 0; !glfwWindowShouldClose(window.window); ++frame) {
-            glfwPollEvents();
-            if (glfwGetKey(window.window, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
+        for (uint32_t frame = 0; !targetWantsToClose(target); ++frame) {
             auto now = std::chrono::steady_clock::now();
             int ticks = clock.advance(std::chrono::duration<double>(now - last).count());
             last = now;
-            reader.read(window.window, session.input);
+            reader.read(target.window.window, session.input);
             for (int t = 0; t < std::max(ticks, frame == 0 ? 1 : 0); ++t) stepSession(session);
-
-            int image = vk::acquireNextImage(ctx, window.swapchain);
-            if (image < 0) {
-                platform::recreateWindowSwapchain(window, ctx);
-                render::resizeRenderer(renderer, window.swapchain.extent.width,
-                                       window.swapchain.extent.height);
-                continue;
-            }
-            render::FrameOutput out;
-            out.swapchain = &window.swapchain;
-            out.swapchainImage = uint32_t(image);
-            render::drawFrame(renderer, frameInputsOf(session, transforms), out);
-            if (!vk::presentImage(ctx, window.swapchain, uint32_t(image))) {
-                platform::recreateWindowSwapchain(window, ctx);
-                render::resizeRenderer(renderer, window.swapchain.extent.width,
-                                       window.swapchain.extent.height);
-            }
+            drawToTarget(target, frameInputsOf(session, transforms), false);
             if (cl.frames > 0 && frame + 1 >= cl.frames) break;
         }
     } catch (...) {
-        render::destroyRenderer(renderer);
-        platform::closeWindow(window, ctx);
-        vk::destroyContext(ctx);
+        closeRenderTarget(target);
         throw;
     }
-    render::destroyRenderer(renderer);
-    platform::closeWindow(window, ctx);
-    vk::destroyContext(ctx);
-    if (ctx.validationCounts.errors.load() > 0) {
-        std::fprintf(stderr, "onelight: %u Vulkan validation errors\n",
-                     unsigned(ctx.validationCounts.errors.load()));
+    if (uint32_t errors = closeRenderTarget(target)) {
+        std::fprintf(stderr, "onelight: %u Vulkan validation errors\n", errors);
         return 1;
     }
     return 0;

@@ -7,15 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
-#define GLFW_INCLUDE_VULKAN
-#include <GLFW/glfw3.h>
-
 #include "capture/capture.hpp"
-#include "platform/window.hpp"
 #include "render/camera.hpp"
+#include "render_target.hpp"
 #include "session.hpp"
 #include "sim/replay_runner.hpp"
-#include "vk/context.hpp"
 
 namespace onelight::game {
 
@@ -106,33 +102,19 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
     const std::string dir = cl.captureDir.empty() ? std::string("captures") : cl.captureDir;
     std::filesystem::create_directories(dir);
 
-    platform::Window window;
-    render::RenderDeviceFeatures features;
-    vk::Context ctx;
-    render::Renderer renderer;
+    RenderTarget target;
     std::string error;
-    if (!cl.headless &&
-        !platform::openWindow(window, "onelight replay", cl.width, cl.height, error)) {
+    if (!openRenderTarget(target, cl, level, !cl.headless, error)) {
         std::fprintf(stderr, "onelight: %s\n", error.c_str());
         return 1;
     }
+    session.secondaryLux = std::max(render::rendererInfo(target.renderer).ambientLux, 1.0f);
+    std::printf("onelight: replay %s on %s, %zu commands, MSAA %ux\n", cl.replay.c_str(),
+                level.path.c_str(), runner.script.commands.size(),
+                render::rendererInfo(target.renderer).msaaInUse);
     int code = 0;
     std::vector<Capture> captures;
     try {
-        vk::createContext(ctx, render::renderContextOptions(
-                                   features, cl.headless ? std::vector<const char*>{}
-                                                         : platform::windowInstanceExtensions()));
-        if (!cl.headless) platform::createWindowSwapchain(window, ctx);
-        render::RendererOptions options;
-        options.width = cl.headless ? cl.width : window.swapchain.extent.width;
-        options.height = cl.headless ? cl.height : window.swapchain.extent.height;
-        options.requestedMsaa = cl.msaa;
-        render::createRenderer(renderer, ctx, level, options);
-        session.secondaryLux = std::max(render::rendererInfo(renderer).ambientLux, 1.0f);
-        std::printf("onelight: replay %s on %s, %zu commands, MSAA %ux\n", cl.replay.c_str(),
-                    level.path.c_str(), runner.script.commands.size(),
-                    render::rendererInfo(renderer).msaaInUse);
-
         uint64_t lastTick = runner.script.commands.empty() ? 0 : runner.script.commands.back().tick;
         std::vector<render::DynamicTransform> transforms;
         for (uint64_t tick = 0; tick <= lastTick; ++tick) {
@@ -140,23 +122,13 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
                              session.tuning);
             stepSession(session);
             ReplayAfterTick after = finishReplayTick(runner, tick, session.registry);
-            bool show = !cl.headless;
-            if (!after.captures.empty() || show) {
+            // Headless, only the captured ticks are drawn; in a window, every tick is shown.
+            if (!after.captures.empty() || target.windowed) {
+                if (targetWantsToClose(target)) break;
                 render::FrameInputs in = frameInputsOf(session, transforms);
-                render::FrameOutput out;
-                out.readback = !after.captures.empty();
-                int image = -1;
-                if (show) {
-                    glfwPollEvents();
-                    if (glfwWindowShouldClose(window.window)) break;
-                    image = vk::acquireNextImage(ctx, window.swapchain);
-                    if (image >= 0)
-                        out.swapchain = &window.swapchain, out.swapchainImage = uint32_t(image);
-                }
-                render::FrameStats stats = render::drawFrame(renderer, in, out);
-                if (image >= 0) vk::presentImage(ctx, window.swapchain, uint32_t(image));
+                render::FrameStats stats = drawToTarget(target, in, !after.captures.empty());
                 for (const std::string& name : after.captures) {
-                    const render::CapturedFrame& frame = render::capturedFrame(renderer);
+                    const render::CapturedFrame& frame = render::capturedFrame(target.renderer);
                     std::string base = dir + "/" + name;
                     if (!capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8,
                                            error) ||
@@ -164,7 +136,8 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
                                            frame.linearRgba, error) ||
                         !capture::writeJson(
                             base + ".json",
-                            captureJson(session, renderer, in, stats, tick, tickSeconds), error))
+                            captureJson(session, target.renderer, in, stats, tick, tickSeconds),
+                            error))
                         throw std::runtime_error(error);
                     captures.push_back({name, frame.width, frame.height, frame.rgba8});
                     std::printf("onelight: tick %llu captured %s.png\n", (unsigned long long)tick,
@@ -179,17 +152,11 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
         std::fprintf(stderr, "onelight: %s\n", e.what());
         code = 1;
     } catch (...) {
-        render::destroyRenderer(renderer);
-        if (!cl.headless) platform::closeWindow(window, ctx);
-        vk::destroyContext(ctx);
+        closeRenderTarget(target);
         throw;
     }
-    render::destroyRenderer(renderer);
-    if (!cl.headless) platform::closeWindow(window, ctx);
-    vk::destroyContext(ctx);
-    if (ctx.validationCounts.errors.load() > 0) {
-        std::fprintf(stderr, "onelight: %u Vulkan validation errors\n",
-                     unsigned(ctx.validationCounts.errors.load()));
+    if (uint32_t errors = closeRenderTarget(target)) {
+        std::fprintf(stderr, "onelight: %u Vulkan validation errors\n", errors);
         code = 1;
     }
     if (code == 0)

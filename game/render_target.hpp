@@ -1,0 +1,39 @@
+// What every mode of `onelight` draws with: the Vulkan context, the window and its swapchain
+// when there is one, and the renderer, created together and destroyed in reverse order.
+#pragma once
+
+#include <string>
+
+#include "assets/level_assets.hpp"
+#include "command_line.hpp"
+#include "platform/window.hpp"
+#include "render/renderer.hpp"
+#include "vk/context.hpp"
+
+namespace onelight::game {
+
+struct RenderTarget {
+    bool windowed = false;
+    platform::Window window;    // owned, open when windowed
+    vk::Context ctx;            // owned
+    render::Renderer renderer;  // owned
+};
+
+// Opens the window (when `windowed`), the context and the renderer at the command line's size
+// and MSAA. False with `error` when there is no display; throws on Vulkan failures (after
+// releasing what it created).
+bool openRenderTarget(RenderTarget& target, const CommandLine& commandLine,
+                      const assets::LoadedLevel& level, bool windowed, std::string& error);
+
+// Draws one frame, into the window when there is one (acquiring, presenting, and following a
+// resized swapchain), and reads it back when asked. `presented` tells whether the window showed it.
+render::FrameStats drawToTarget(RenderTarget& target, const render::FrameInputs& inputs,
+                                bool readback, bool readbackSwapchain = false);
+
+// Whether the window was asked to close (Esc or the close button); false headless.
+bool targetWantsToClose(RenderTarget& target);
+
+// Destroys in reverse creation order; returns the Vulkan validation errors counted meanwhile.
+uint32_t closeRenderTarget(RenderTarget& target);
+
+}  // namespace onelight::game
