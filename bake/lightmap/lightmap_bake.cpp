@@ -131,6 +131,10 @@ TexelEstimate estimate_texel(const BakeScene& scene, const BakeLights& lights,
     return out;
 }
 
+// The indirect filter's radii (texels) and the relative-noise thresholds between them.
+constexpr int kIndirectFilterRadii[3] = {1, 2, 3};
+constexpr double kIndirectFilterNoise[2] = {0.10, 0.25};
+
 uint32_t chart_of(const world::CompiledLevel& level, const TexelSample& s) {
     return level.surfaces[s.surface].chart;
 }
@@ -152,8 +156,10 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
     // The filter reads each texel's 8 neighbours: estimate a halo of one atlas row and one
     // texel around the owned range too (every texel's estimate depends only on its identity,
     // so a halo texel gets the same value in whichever shard computes it).
+    const int max_radius = kIndirectFilterRadii[2];
     uint64_t halo = 1;
-    for (const world::Atlas& a : level.atlases) halo = std::max<uint64_t>(halo, a.width + 1ull);
+    for (const world::Atlas& a : level.atlases)
+        halo = std::max<uint64_t>(halo, uint64_t(max_radius) * (a.width + 1ull));
     const size_t owned_begin = lower(texel_begin), owned_end = lower(texel_end);
     const size_t begin = lower(texel_begin > halo ? texel_begin - halo : 0);
     const size_t end = lower(texel_end + halo);
@@ -173,26 +179,50 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
         if (i < begin || i >= end || samples[i].texel != texel) return -1;
         return static_cast<long>(i - begin);
     };
+    // The estimate of the texel (dx, dy) away from sample s in its atlas, or -1.
+    const auto neighbour = [&](const TexelSample& s, int dx, int dy) -> long {
+        const world::Atlas& atlas = level.atlases[s.atlas];
+        const int nx = int(s.x) + dx, ny = int(s.y) + dy;
+        if (nx < 0 || ny < 0 || nx >= int(atlas.width) || ny >= int(atlas.height)) return -1;
+        return find(s.texel - s.x - uint64_t(s.y) * atlas.width + uint64_t(ny) * atlas.width +
+                    uint64_t(nx));
+    };
+    // Relative noise of an estimate: its standard error over its whole (direct + indirect) value.
+    const auto relative_noise = [](const TexelEstimate& e) {
+        const double value = e.direct_luminance + e.indirect_luminance;
+        return value > 0.0 ? e.noise / value : 0.0;
+    };
     tbb::parallel_for(tbb::blocked_range<size_t>(owned_begin, owned_end, 64), [&](const auto& r) {
         RayCounts& local = rays.local();
         for (size_t i = r.begin(); i != r.end(); ++i) {
             const TexelSample& s = samples[i];
             const TexelEstimate& e = estimates[i - begin];
-            // filter_indirect: 3x3 tent ([1 2 1] x [1 2 1]) over neighbours of the same chart
-            // that were not moved out of geometry and that see this texel's origin (a short
-            // shadow ray), so no light crosses a wall. For a full window the noise drops to
-            // sqrt(sum w^2) / sum w = 0.375; a field linear across the window is unchanged.
-            glm::dvec3 indirect = 4.0 * e.indirect, indirect_direction = 4.0 * e.indirect_direction;
-            double indirect_luminance = 4.0 * e.indirect_luminance, weight = 4.0;
-            const world::Atlas& atlas = level.atlases[s.atlas];
-            for (int dy = -1; dy <= 1 && !e.moved; ++dy) {
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int nx = int(s.x) + dx, ny = int(s.y) + dy;
-                    if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= int(atlas.width) ||
-                        ny >= int(atlas.height))
-                        continue;
-                    const long j = find(s.texel - s.x - uint64_t(s.y) * atlas.width +
-                                        uint64_t(ny) * atlas.width + uint64_t(nx));
+            // filter_indirect: a tent of radius r ([1 .. r+1 .. 1] per axis) over neighbours
+            // of the same chart that were not moved out of geometry and that see this texel's
+            // origin (a short shadow ray), so no light crosses a wall. A field linear across
+            // the window is unchanged; for a full window the noise drops to sqrt(sum w^2) /
+            // sum w = 0.375 (r = 1), 0.24 (r = 2), 0.18 (r = 3). The radius grows with the
+            // largest relative noise in the texel's 3x3 neighbourhood (not its own: a texel
+            // whose paths happened to miss a small bright source looks quiet, while its
+            // neighbours' spikes show where the estimate is unreliable), so rare bright paths
+            // (a sunlit yard seen through a doorway) are spread instead of left as speckles.
+            double local_noise = relative_noise(e);
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    if (long j = neighbour(s, dx, dy); j >= 0)
+                        local_noise = std::max(local_noise, relative_noise(estimates[size_t(j)]));
+            const int radius = local_noise > kIndirectFilterNoise[1]   ? kIndirectFilterRadii[2]
+                               : local_noise > kIndirectFilterNoise[0] ? kIndirectFilterRadii[1]
+                                                                       : kIndirectFilterRadii[0];
+            const double centre_weight = double(radius + 1) * double(radius + 1);
+            glm::dvec3 indirect = centre_weight * e.indirect;
+            glm::dvec3 indirect_direction = centre_weight * e.indirect_direction;
+            double indirect_luminance = centre_weight * e.indirect_luminance;
+            double weight = centre_weight;
+            for (int dy = -radius; dy <= radius && !e.moved; ++dy) {
+                for (int dx = -radius; dx <= radius; ++dx) {
+                    if (dx == 0 && dy == 0) continue;
+                    const long j = neighbour(s, dx, dy);
                     if (j < 0) continue;
                     const TexelSample& ns = samples[size_t(j) + begin];
                     const TexelEstimate& ne = estimates[size_t(j)];
@@ -202,7 +232,8 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
                     if (distance > 0.0f &&
                         scene.occluded(e.origin, to / distance, distance, local.probe))
                         continue;
-                    const double w = (dx == 0 ? 2.0 : 1.0) * (dy == 0 ? 2.0 : 1.0);
+                    const double w =
+                        double(radius + 1 - std::abs(dx)) * double(radius + 1 - std::abs(dy));
                     indirect += w * ne.indirect;
                     indirect_direction += w * ne.indirect_direction;
                     indirect_luminance += w * ne.indirect_luminance;
@@ -238,7 +269,7 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
         value_sum += e.direct_luminance + e.indirect_luminance;
         stats.texels_moved += e.moved ? 1 : 0;
     }
-    // Before the filter; a full 3x3 tent window scales it by 0.375.
+    // Before the filter; a full tent window scales it by 0.375 (r = 1) to 0.18 (r = 3).
     stats.mean_relative_noise = value_sum > 0.0 ? noise_sum / value_sum : 0.0;
     return stats;
 }
