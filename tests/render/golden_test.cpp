@@ -1,16 +1,7 @@
 // Golden frames: small scenes rendered headless at 320x180 and compared, tonemapped and 8-bit,
-// with tests/render/golden/NAME.png. On failure NAME.png and NAME_diff.png (|difference| x 8) are
-// written to the test output folder. ONELIGHT_UPDATE_GOLDENS=1 rewrites the goldens instead.
-//
-// Tolerance, per 8-bit channel: a pixel "differs" when some channel is off by more than 8/255;
-// at most 0.5% of pixels may differ, and the mean absolute difference over all channels must
-// stay within 0.5/255. Why: a new LLVM (llvmpipe compiles the shaders) or another conformant GPU
-// changes float rounding (FMA contraction, transcendental approximations), which moves smooth
-// regions by 1-2 codes: far inside 8/255 and far inside the mean bound. Rasterisation and
-// filtering rules may flip the coverage of edge pixels and texels: those can differ by much more
-// than 8 codes but are few (0.5% of 57600 pixels is 288, about the length of the longest
-// silhouettes here). A real regression (a wrong term, a lost shadow, exposure off by a tenth of
-// a stop) moves most pixels by more than a code, which the mean bound catches.
+// with tests/render/golden/NAME.png under the tolerance stated in tests/support/golden.hpp. On
+// failure NAME.png and NAME_diff.png are written to the test output folder;
+// ONELIGHT_UPDATE_GOLDENS=1 rewrites the goldens instead.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "capture/capture.hpp"
+#include "golden.hpp"
 #include "test_scene.hpp"
 
 namespace {
@@ -28,61 +20,15 @@ namespace {
 using namespace onelight;
 
 constexpr uint32_t kWidth = 320, kHeight = 180;
-constexpr int kPixelTolerance = 8;  // codes of 255
-constexpr double kMaxDifferingFraction = 0.005;
-constexpr double kMaxMeanDifference = 0.5;  // codes of 255
-
-bool updateGoldens() {
-    const char* v = std::getenv("ONELIGHT_UPDATE_GOLDENS");
-    return v && std::strcmp(v, "1") == 0;
-}
-
 void compareWithGolden(const std::string& name, const render::CapturedFrame& frame) {
     const std::string out = test::outputDir() + "/" + name;
-    const std::string golden = std::string(ONELIGHT_GOLDEN_DIR) + "/" + name + ".png";
     std::string error;
     ASSERT_TRUE(capture::writePng(out + ".png", frame.width, frame.height, frame.rgba8, error))
         << error;
-    if (updateGoldens()) {
-        ASSERT_TRUE(capture::writePng(golden, frame.width, frame.height, frame.rgba8, error))
-            << error;
-        std::printf("[ golden ] updated %s\n", golden.c_str());
-        return;
-    }
-    uint32_t w = 0, h = 0;
-    std::vector<uint8_t> expected;
-    ASSERT_TRUE(capture::readPng(golden, w, h, expected, error))
-        << error << " (run with ONELIGHT_UPDATE_GOLDENS=1 to create it)";
-    ASSERT_EQ(w, frame.width);
-    ASSERT_EQ(h, frame.height);
-
-    std::vector<uint8_t> diff(expected.size(), 255);
-    uint64_t differing = 0;
-    double sum = 0.0;
-    int worst = 0;
-    for (size_t p = 0; p < size_t(w) * h; ++p) {
-        int pixelWorst = 0;
-        for (int c = 0; c < 3; ++c) {
-            const int d = std::abs(int(frame.rgba8[4 * p + c]) - int(expected[4 * p + c]));
-            sum += d;
-            pixelWorst = std::max(pixelWorst, d);
-            diff[4 * p + c] = uint8_t(std::min(d * 8, 255));
-        }
-        worst = std::max(worst, pixelWorst);
-        if (pixelWorst > kPixelTolerance) ++differing;
-    }
-    const double fraction = double(differing) / double(size_t(w) * h);
-    const double mean = sum / double(size_t(w) * h * 3);
-    std::printf("[ golden ] %s: %.3f%% pixels over %d/255, mean |diff| %.3f/255, worst %d\n",
-                name.c_str(), 100.0 * fraction, kPixelTolerance, mean, worst);
-    const bool ok = fraction <= kMaxDifferingFraction && mean <= kMaxMeanDifference;
-    if (!ok) {
-        capture::writePng(out + "_diff.png", w, h, diff, error);
-        ADD_FAILURE() << name << " differs from " << golden << ": " << 100.0 * fraction
-                      << "% pixels over " << kPixelTolerance << "/255 (max "
-                      << 100.0 * kMaxDifferingFraction << "%), mean " << mean << "/255 (max "
-                      << kMaxMeanDifference << "); see " << out << "_diff.png";
-    }
+    const test::GoldenResult result = test::compareWithGolden(
+        frame.rgba8, frame.width, frame.height,
+        std::string(ONELIGHT_GOLDEN_DIR) + "/" + name + ".png", out + "_diff.png");
+    EXPECT_TRUE(result.ok) << name << ": " << result.message;
 }
 
 render::RendererOptions smallFrame() {
