@@ -82,13 +82,27 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
     }
 }
 
+// Unshadowed illuminance (luminance, lux) of `light` at `point`, by the shared light model.
+float unshadowedIlluminance(const Session& s, uint32_t light, const glm::vec3& point) {
+    const world::Light& l = s.level->level.lights[light];
+    glsl::LightSample sample = glsl::evaluatePunctualLight(
+        int(l.type), l.color, l.intensity, l.range, l.position, glm::normalize(l.direction),
+        std::cos(l.inner_cone), std::cos(l.outer_cone), point);
+    return luminance(sample.illuminance);
+}
+
+float primaryPickScore(const Session& s, uint32_t light, const glm::vec3& point) {
+    const world::LightGrid& grid = s.level->baked.grid;
+    if (!s.level->hasBakedLighting || grid.cells.empty()) return primaryScore(s, light, point);
+    float e = unshadowedIlluminance(s, light, point);
+    if (!(e > 0.0f)) return 0.0f;
+    return e * render::dominantVisibility(grid, render::sampleLightGrid(grid, point), light);
+}
+
 float primaryScore(const Session& s, uint32_t light, const glm::vec3& point) {
     const world::Light& l = s.level->level.lights[light];
-    glm::vec3 direction = glm::normalize(l.direction);
-    glsl::LightSample sample = glsl::evaluatePunctualLight(
-        int(l.type), l.color, l.intensity, l.range, l.position, direction, std::cos(l.inner_cone),
-        std::cos(l.outer_cone), point);
-    float e = luminance(sample.illuminance);
+    const glm::vec3 direction = glm::normalize(l.direction);
+    float e = unshadowedIlluminance(s, light, point);
     if (!(e > 0.0f)) return 0.0f;
     // Visibility: a ray from the point towards the light (1 km towards the sun).
     glm::dvec3 toLight = l.type == world::LightType::directional
@@ -146,7 +160,8 @@ void stepSession(Session& s) {
     effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);
     primarySelectionSystem(
         s.registry, s.primaryCandidates,
-        [&s](uint32_t light, const glm::vec3& p) { return primaryScore(s, light, p); }, s.tuning);
+        [&s](uint32_t light, const glm::vec3& p) { return primaryPickScore(s, light, p); },
+        s.tuning);
     s.input.endTick();
 }
 
@@ -191,6 +206,7 @@ render::FrameInputs frameInputsOf(Session& s, std::vector<render::DynamicTransfo
         render::DynamicTransform d;
         d.entity = link.index;
         d.worldFromObject = objectMatrix(transform.position, s.level->level.entities[link.index]);
+        if (const DynamicLighting* lit = r.tryGet<DynamicLighting>(e)) d.primary = lit->primary;
         transforms.push_back(d);
     }
     in.dynamicTransforms = transforms;

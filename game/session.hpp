@@ -65,4 +65,10 @@ render::FrameInputs frameInputsOf(Session& session,
 // the shared light model times its visibility along a ray through the BSP.
 float primaryScore(const Session& session, uint32_t light, const glm::vec3& point);
 
+// What a dynamic object's primary is picked by (and handed to the renderer with): with a light
+// grid, the grid's answer — the light's illuminance times its baked visibility where it is the
+// dominant primary of the surrounding cells, as the renderer scores it; without one,
+// primaryScore.
+float primaryPickScore(const Session& session, uint32_t light, const glm::vec3& point);
+
 }  // namespace onelight::game

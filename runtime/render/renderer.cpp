@@ -532,10 +532,14 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
 
     // Dynamic objects: transforms, then their primary.
     std::vector<glm::mat4> entityTransforms(s.entities.size());
+    std::vector<uint32_t> givenPrimary(s.entities.size(), kNoIndex);
     for (size_t e = 0; e < s.entities.size(); ++e)
         entityTransforms[e] = entityMatrix(s.entities[e]);
-    for (const DynamicTransform& t : inputs.dynamicTransforms)
-        if (t.entity < entityTransforms.size()) entityTransforms[t.entity] = t.worldFromObject;
+    for (const DynamicTransform& t : inputs.dynamicTransforms) {
+        if (t.entity >= entityTransforms.size()) continue;
+        entityTransforms[t.entity] = t.worldFromObject;
+        if (t.primary < s.lights.size()) givenPrimary[t.entity] = t.primary;
+    }
 
     // Culling and the draw list.
     const Frustum frustum = frustumOf(viewProj);
@@ -576,7 +580,11 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
         const glm::vec3 origin(entityTransforms[e][3]);
         LightGridSample sample;
         if (useGrid) sample = sampleLightGrid(s.grid, origin);
-        entityPrimary[e] = pickDynamicPrimary(s, e, origin, useGrid ? &sample : nullptr);
+        // The game's pick when it made one (it runs on the fixed tick, so replays expect what
+        // is drawn); otherwise the renderer's own.
+        entityPrimary[e] = givenPrimary[e] != kNoIndex
+                               ? (s.dynamicPrimary[e] = givenPrimary[e])
+                               : pickDynamicPrimary(s, e, origin, useGrid ? &sample : nullptr);
         records[e] = objectLightingOf(s, useGrid ? &sample : nullptr, entityPrimary[e]);
     }
     for (const DrawDynamicMesh& mesh : s.dynamicMeshes) {

@@ -54,6 +54,8 @@ struct EffectLights {
 struct DynamicTransform {
     uint32_t entity = 0;  // into level.entities
     glm::mat4 worldFromObject{1.0f};
+    uint32_t primary =
+        0xFFFFFFFFu;  // the game's pick (into level.lights); none: the renderer picks
 };
 
 /// Everything a frame depends on besides the level: the same inputs give the same pixels.

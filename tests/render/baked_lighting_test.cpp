@@ -545,6 +545,16 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
                 double(expected[i].z));
             EXPECT_LT(relativeError(rendered[i], expected[i], 1e-4), 0.01);
         }
+        // The game's pick, when it hands one over, is what the renderer draws with.
+        const uint32_t other =
+            (render::dynamicPrimary(renderer, entity) + 1) % uint32_t(level.level.lights.size());
+        render::DynamicTransform given{entity, glm::translate(glm::mat4(1.0f), places[0])};
+        given.primary = other;
+        render::FrameInputs givenInputs;
+        givenInputs.camera = camera;
+        givenInputs.dynamicTransforms = {&given, 1};
+        render::drawFrame(renderer, givenInputs, render::FrameOutput{});
+        EXPECT_EQ(render::dynamicPrimary(renderer, entity), other);
         render::destroyRenderer(renderer);
     }
     vk::destroyContext(ctx);
