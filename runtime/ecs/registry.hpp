@@ -113,11 +113,14 @@ public:
          ...);
     }
 
-    // Calls f(entity, components&...) for every entity in the view.
+    // Calls f(entity, components&...) for every entity in the view: one sparse lookup per
+    // pool and entity (tryGet), none twice.
     template <class F>
     void forEach(F&& f) {
-        for (Entity e : *lead_)
-            if (hasAll(e)) f(e, std::get<ComponentPool<Ts>&>(pools_).get(e)...);
+        for (Entity e : *lead_) {
+            std::tuple<Ts*...> found{std::get<ComponentPool<Ts>&>(pools_).tryGet(e)...};
+            if ((std::get<Ts*>(found) && ...)) f(e, *std::get<Ts*>(found)...);
+        }
     }
 
     class Iterator {
