@@ -78,6 +78,25 @@ GridSettings grid_settings(const BakeOptions& options) {
     return g;
 }
 
+ProbeCaptureSettings probe_settings(const BakeOptions& options) {
+    ProbeCaptureSettings p;
+    switch (options.quality) {
+        case BakeQuality::draft:
+            p.faceSize = 32;
+            p.samplesPerTexel = 16;
+            break;
+        case BakeQuality::normal:
+            p.faceSize = 64;
+            p.samplesPerTexel = 64;
+            break;
+        case BakeQuality::high:
+            p.faceSize = 128;
+            p.samplesPerTexel = 256;
+            break;
+    }
+    return p;
+}
+
 ShardRange shard_range(uint64_t texels, uint64_t cells, uint32_t index, uint32_t count) {
     ShardRange r;
     r.texel_begin = texels * index / count;

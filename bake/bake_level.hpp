@@ -14,6 +14,7 @@
 #include "bake/grid/light_grid.hpp"
 #include "bake/lighting/lights.hpp"
 #include "bake/lightmap/lightmap_bake.hpp"
+#include "bake/probes/probe_capture.hpp"
 #include "bake/report/report.hpp"
 #include "world/baked_lighting.hpp"
 #include "world/compile/compile_level.hpp"
@@ -42,6 +43,9 @@ struct BakeOptions {
 /// Sample counts of a quality preset, overrides applied.
 LightmapSettings lightmap_settings(const BakeOptions& options);
 GridSettings grid_settings(const BakeOptions& options);
+/// Environment probe capture of a quality preset: face size draft 32, default 64, high 128;
+/// paths per texel 16, 64, 256.
+ProbeCaptureSettings probe_settings(const BakeOptions& options);
 
 struct BakeResult {
     world::CompiledLevel level;

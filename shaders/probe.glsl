@@ -100,4 +100,21 @@ vec3 boxProjectedDirection(vec3 P, vec3 R, vec3 boxMin, vec3 boxMax, vec3 probeP
     return P + R * t - probePosition;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Normalization (Lazarov 2011, slide "Environment map normalization"; DESIGN.md "The lighting
+// model", secondary specular). The baker stores each probe's radiance divided, per channel, by
+// E_avg: the average over every normal direction n of the secondary irradiance E(n) that the
+// runtime reconstructs from the light grid at the capture point (for the grid's ambient cube,
+// the mean of its six faces; bake/probes/probe_capture.hpp derives it). The shader multiplies
+// what it reads by the pixel's own secondary irradiance E(n) (lightmap or light grid). At the
+// capture point, averaged over all normals, denormalize(normalize(L)) = L E_avg / E_avg = L.
+// E_avg is floored at PROBE_MIN_IRRADIANCE (lux) so that an unlit channel stays finite.
+const float PROBE_MIN_IRRADIANCE = 1e-4f;
+
+vec3 probeNormalize(vec3 radiance, vec3 averageIrradiance) {
+    return radiance / max(averageIrradiance, vec3(PROBE_MIN_IRRADIANCE));
+}
+
+vec3 probeDenormalize(vec3 normalized, vec3 irradiance) { return normalized * irradiance; }
+
 #endif

@@ -337,4 +337,44 @@ struct DiskLightGridCell {
 };
 static_assert(sizeof(DiskLightGridCell) == 84);
 
+// ---------------------------------------------------------------------------------------------
+// Environment probes (id 35), written by `onelight-bake` (bake/probes/probe_capture.hpp).
+//
+// section_probes: uint8_t[]: one DiskProbeHeader, then DiskProbe[probe_count], then
+//   uint32_t[texel_count] texels in RGB9E5 (encode_rgb9e5 in package/probe_section.hpp; red in
+//   bits 0..8, green 9..17, blue 18..26, exponent 27..31, as Vulkan's
+//   VK_FORMAT_E5B9G9R9_UFLOAT_PACK32). Probe p owns texels [first_texel, first_texel +
+//   texel_count), the probes' ranges contiguous and in order: its mips from the largest, each
+//   6 faces (+X -X +Y -Y +Z -Z, shaders/probe.glsl) of face_size >> mip squared texels, rows
+//   from the top. Texels hold the GGX-prefiltered radiance (mip m for the gloss
+//   probeGlossOfMip(m)) divided per channel by irradiance_average (probeNormalize); the shader
+//   multiplies by the pixel's secondary irradiance (probeDenormalize). Bytes per probe:
+//   sizeof(DiskProbe) + 4 * 6 * sum_m (face_size >> m)^2, about 72 + 32 face_size^2.
+
+enum ProbeTexelFormat : uint32_t {
+    probe_texel_rgb9e5 = 1,  // uint32_t per texel, shared exponent
+};
+
+struct DiskProbeHeader {
+    uint32_t probe_count;   // DiskProbe records that follow
+    uint32_t texel_count;   // texels after the records; == the sum of the probes' counts
+    uint32_t texel_format;  // ProbeTexelFormat
+    uint32_t reserved;      // 0
+};
+static_assert(sizeof(DiskProbeHeader) == 16);
+
+struct DiskProbe {
+    float position[3];            // metres, world: the capture point
+    float box_min[3];             // metres, world: box projection when min < max on every
+    float box_max[3];             //   axis; all zero = no box projection
+    float irradiance_average[3];  // lux, RGB: E_avg, finite, > 0 (floored by the baker)
+    uint32_t face_size;           // texels per face edge of mip 0, a power of two <= 4096
+    uint32_t mip_count;           // log2(face_size) + 1: down to 1x1
+    uint32_t first_texel;         // into the section's texels
+    uint32_t texel_count;         // 6 * sum_m (face_size >> m)^2
+    uint32_t entity;              // the probe entity it came from, kNoIndex when placed
+    uint32_t reserved;            // 0
+};
+static_assert(sizeof(DiskProbe) == 72);
+
 }  // namespace onelight::package

@@ -1,0 +1,145 @@
+#include "probe_capture.hpp"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "bake/lighting/sampling.hpp"
+#include "shading.hpp"
+
+namespace onelight::bake {
+namespace {
+
+constexpr uint32_t kProbePass = 6;  // seed_from's pass id (reference 4 and 5)
+
+bool hasBox(glm::vec3 lo, glm::vec3 hi) {
+    return lo.x < hi.x && lo.y < hi.y && lo.z < hi.z;
+}
+
+}  // namespace
+
+std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level) {
+    std::vector<ProbePlacement> probes;
+    for (uint32_t i = 0; i < level.entities.size(); ++i) {
+        const world::Entity& e = level.entities[i];
+        if (!(e.flags & world::entity_probe)) continue;
+        ProbePlacement p;
+        p.position = e.position;
+        if (hasBox(e.probe_box_min, e.probe_box_max)) {
+            p.boxMin = e.probe_box_min;
+            p.boxMax = e.probe_box_max;
+        }
+        p.entity = i;
+        probes.push_back(p);
+    }
+    if (!probes.empty() || !(level.features.flags & world::feature_probes)) return probes;
+    ProbePlacement centre;
+    centre.position = 0.5f * (level.settings.bounds_min + level.settings.bounds_max);
+    probes.push_back(centre);
+    for (const world::Camera& camera : level.cameras) {
+        bool near = false;
+        for (const ProbePlacement& p : probes)
+            near = near || glm::length(p.position - camera.position) <= 0.01f;
+        if (near) continue;
+        ProbePlacement p;
+        p.position = camera.position;
+        probes.push_back(p);
+    }
+    return probes;
+}
+
+glm::vec3 ambientCubeAverage(const std::array<glm::vec3, 6>& ambientCube) {
+    glm::vec3 sum(0.0f);
+    for (const glm::vec3& face : ambientCube) sum += face;
+    return sum / 6.0f;
+}
+
+Cubemap captureProbe(const BakeScene& scene, const BakeLights& lights, glm::vec3 position,
+                     uint32_t probeIndex, const ProbeCaptureSettings& settings, Progress* progress,
+                     RayCounts& rays) {
+    const int size = int(settings.faceSize);
+    Cubemap cube = makeCubemap(size);
+    const uint32_t n = std::max(1u, settings.samplesPerTexel);
+    const float area = (2.0f / float(size)) * (2.0f / float(size));
+    tbb::enumerable_thread_specific<RayCounts> counts;
+    tbb::parallel_for(tbb::blocked_range<int>(0, 6 * size), [&](const auto& rows) {
+        RayCounts& local = counts.local();
+        for (int row = rows.begin(); row != rows.end(); ++row) {
+            const int face = row / size, y = row % size;
+            for (int x = 0; x < size; ++x) {
+                Rng rng{seed_from(probeIndex, uint32_t(face), uint32_t(y * size + x), kProbePass)};
+                const float s0 = rng.next(), s1 = rng.next();
+                glm::dvec3 sum(0.0);
+                for (uint32_t i = 0; i < n; ++i) {
+                    const glm::vec2 jitter = rotated_hammersley(i, n, s0, s1);
+                    const glm::vec2 uv((float(x) + jitter.x) / float(size),
+                                       (float(y) + jitter.y) / float(size));
+                    const float px = 2.0f * uv.x - 1.0f, py = 2.0f * uv.y - 1.0f;
+                    const float r2 = px * px + py * py + 1.0f;
+                    const float weight = 1.0f / (r2 * std::sqrt(r2));  // pdf(w) = r^3 / A
+                    const glm::vec3 dir = glsl::cubeDirection(face, uv);
+                    sum += glm::dvec3(trace_radiance(scene, lights, settings.transport, position,
+                                                     dir, rng, local)) *
+                           double(weight);
+                }
+                cube.mips[0].at(face, x, y) = glm::vec3(
+                    sum * double(area) / (double(n) * double(texelSolidAngle(x, y, size))));
+            }
+        }
+        if (progress) progress->advance(rows.size());
+    });
+    for (const RayCounts& r : counts) rays += r;
+    return cube;
+}
+
+std::vector<uint32_t> packProbeTexels(const Cubemap& cube) {
+    std::vector<uint32_t> texels;
+    for (const CubeMip& mip : cube.mips)
+        for (const glm::vec3& t : mip.texels) texels.push_back(package::encode_rgb9e5(t));
+    return texels;
+}
+
+Cubemap unpackProbeTexels(const world::EnvironmentProbe& probe) {
+    Cubemap cube = makeCubemap(int(probe.face_size));
+    size_t next = 0;
+    for (CubeMip& mip : cube.mips)
+        for (glm::vec3& t : mip.texels)
+            t = next < probe.texels.size() ? package::decode_rgb9e5(probe.texels[next++])
+                                           : glm::vec3(0.0f);
+    return cube;
+}
+
+world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& placement,
+                                    glm::vec3 averageIrradiance, const PrefilterOptions& options) {
+    world::EnvironmentProbe probe;
+    probe.position = placement.position;
+    probe.box_min = placement.boxMin;
+    probe.box_max = placement.boxMax;
+    probe.entity = placement.entity;
+    probe.irradiance_average = glm::max(averageIrradiance, glm::vec3(glsl::PROBE_MIN_IRRADIANCE));
+    for (glm::vec3& t : radiance.mips[0].texels) t = glsl::probeNormalize(t, averageIrradiance);
+    const Cubemap filtered = prefilterGGX(std::move(radiance), options);
+    probe.face_size = uint32_t(filtered.mips[0].size);
+    probe.mip_count = uint32_t(filtered.mipCount());
+    probe.texels = packProbeTexels(filtered);
+    return probe;
+}
+
+std::vector<world::EnvironmentProbe> bakeProbes(const BakeScene& scene, const BakeLights& lights,
+                                                const std::vector<ProbePlacement>& placements,
+                                                const std::vector<glm::vec3>& averageIrradiance,
+                                                const ProbeCaptureSettings& settings,
+                                                bool showProgress, RayCounts& rays) {
+    std::vector<world::EnvironmentProbe> probes;
+    Progress progress("probes", uint64_t(placements.size()) * 6 * settings.faceSize, showProgress);
+    for (size_t i = 0; i < placements.size(); ++i) {
+        Cubemap cube = captureProbe(scene, lights, placements[i].position, uint32_t(i), settings,
+                                    &progress, rays);
+        const glm::vec3 average =
+            i < averageIrradiance.size() ? averageIrradiance[i] : glm::vec3(0.0f);
+        probes.push_back(finishProbe(std::move(cube), placements[i], average, settings.prefilter));
+    }
+    progress.finish();
+    return probes;
+}
+
+}  // namespace onelight::bake

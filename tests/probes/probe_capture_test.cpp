@@ -1,0 +1,193 @@
+// Probe capture against the reference path tracer: a closed box room lit by one point light,
+// captured through trace_radiance; the cube's solid-angle-weighted mean radiance (whole sphere
+// and per face) against independent uniform-sphere paths of the same routine; determinism.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "bake/lighting/sampling.hpp"
+#include "bake/probes/probe_capture.hpp"
+#include "bake_scenes.hpp"
+#include "shading.hpp"
+#include "world/compile/static_split.hpp"
+
+using namespace onelight;
+using namespace onelight::bake;
+namespace glsl = onelight::glsl;
+
+namespace {
+
+// A closed 4 x 3 x 2.5 m room (albedo 0.6) with one primary point light of 60 cd.
+world::SourceLevel boxRoom() {
+    world::SourceLevel level;
+    const uint32_t walls = test::add_lambert_material(level, 0.6f);
+    test::add_box(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
+    level.lights.push_back(
+        test::point_light({-1.0f, 0.5f, 2.0f}, 60.0f, world::LightRole::primary));
+    return level;
+}
+
+struct Room {
+    world::SourceLevel source = boxRoom();
+    EmbreeDevice device;
+    world::SplitLevel split = world::split_static_dynamic(source);
+    BakeScene scene{device, split.static_geometry, source.materials};
+    BakeLights lights = make_bake_lights(source.lights, LightSizes{}, glm::vec3(0.0f));
+};
+
+const glm::vec3 kCapturePoint(0.3f, -0.2f, 1.2f);
+
+}  // namespace
+
+TEST(ProbeCapture, BoxRoomMatchesThePathTracerWithinItsNoise) {
+    Room room;
+    ProbeCaptureSettings settings;
+    settings.faceSize = 16;
+    settings.samplesPerTexel = 128;
+    RayCounts rays;
+    const Cubemap cube =
+        captureProbe(room.scene, room.lights, kCapturePoint, 0, settings, nullptr, rays);
+    const int size = int(settings.faceSize);
+
+    // The cube's mean radiance per face and over the sphere (solid-angle weighted), and the
+    // sum of squared weights for its noise.
+    double face_mean[6] = {}, face_weight2[6] = {}, sphere = 0.0, sphere_weight2 = 0.0;
+    const double face_angle = 4.0 * M_PI / 6.0;
+    for (int f = 0; f < 6; ++f)
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const glm::vec3 l = cube.mips[0].at(f, x, y);
+                ASSERT_TRUE(std::isfinite(l.x) && std::isfinite(l.y) && std::isfinite(l.z));
+                ASSERT_GE(std::min(l.x, std::min(l.y, l.z)), 0.0f);
+                const double w = texelSolidAngle(x, y, size);
+                face_mean[f] += w / face_angle * double(luminance(l));
+                face_weight2[f] += (w / face_angle) * (w / face_angle);
+                sphere += w / (4.0 * M_PI) * double(luminance(l));
+                sphere_weight2 += (w / (4.0 * M_PI)) * (w / (4.0 * M_PI));
+            }
+
+    // The reference: uniform sphere directions (pdf 1 / (4 pi)) from the same point, binned by
+    // face; each bin's plain mean estimates that face's mean radiance.
+    constexpr uint32_t kPaths = 3200000;
+    Rng rng{seed_from(77, 0, 0, 99)};
+    double sum[6] = {}, sum2[6] = {}, all = 0.0, all2 = 0.0;
+    uint32_t count[6] = {};
+    for (uint32_t i = 0; i < kPaths; ++i) {
+        const glm::vec3 w = sample_uniform_sphere({rng.next(), rng.next()});
+        const double l = luminance(trace_radiance(room.scene, room.lights, settings.transport,
+                                                  kCapturePoint, w, rng, rays));
+        const int f = glsl::cubeFace(w);
+        sum[f] += l;
+        sum2[f] += l * l;
+        ++count[f];
+        all += l;
+        all2 += l * l;
+    }
+    // Tolerance: 4 standard errors of the difference. The reference's from its sample
+    // variance; the cube's from the same per-path variance over samplesPerTexel paths per
+    // texel, weighted by the texels' solid angles.
+    const auto check = [&](const char* what, double cube_mean, double weight2, double s, double s2,
+                           uint32_t n) {
+        const double mean = s / n;
+        const double var = std::max(0.0, s2 / n - mean * mean);
+        const double se_ref = std::sqrt(var / n);
+        const double se_cube = std::sqrt(var * weight2 / settings.samplesPerTexel);
+        const double tolerance = 4.0 * std::sqrt(se_ref * se_ref + se_cube * se_cube);
+        std::printf("%-7s cube %.4f reference %.4f cd/m^2, difference %+.2f%%, tolerance %.2f%%\n",
+                    what, cube_mean, mean, 100.0 * (cube_mean - mean) / mean,
+                    100.0 * tolerance / mean);
+        EXPECT_NEAR(cube_mean, mean, tolerance) << what;
+        EXPECT_LT(tolerance / mean, 0.04) << what << ": the test is too noisy to mean anything";
+    };
+    check("sphere", sphere, sphere_weight2, all, all2, kPaths);
+    const char* names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+    for (int f = 0; f < 6; ++f)
+        check(names[f], face_mean[f], face_weight2[f], sum[f], sum2[f], count[f]);
+}
+
+TEST(ProbeCapture, IsDeterministicAndPacksToTheSameBytes) {
+    Room room;
+    ProbeCaptureSettings settings;
+    settings.faceSize = 16;
+    settings.samplesPerTexel = 8;
+    const glm::vec3 average(2.0f, 3.0f, 4.0f);
+    std::vector<uint8_t> bytes[2];
+    for (auto& out : bytes) {
+        RayCounts rays;
+        const Cubemap cube =
+            captureProbe(room.scene, room.lights, kCapturePoint, 3, settings, nullptr, rays);
+        const world::EnvironmentProbe probe =
+            finishProbe(cube, ProbePlacement{kCapturePoint}, average, settings.prefilter);
+        EXPECT_EQ(probe.texels.size(), world::probe_texel_count(16));
+        EXPECT_EQ(probe.mip_count, 5u);
+        out = package::encode_probe_section({probe}).bytes;
+    }
+    EXPECT_EQ(bytes[0], bytes[1]);
+    // The whole stage gives probe 3 of a list the same bytes.
+    RayCounts rays;
+    const std::vector<ProbePlacement> placements(4, ProbePlacement{kCapturePoint});
+    const std::vector<world::EnvironmentProbe> probes =
+        bakeProbes(room.scene, room.lights, placements, std::vector<glm::vec3>(4, average),
+                   settings, false, rays);
+    ASSERT_EQ(probes.size(), 4u);
+    EXPECT_EQ(package::encode_probe_section({probes[3]}).bytes, bytes[0]);
+}
+
+TEST(ProbeCapture, StoredMipZeroIsTheCapturedRadianceOverEAvg) {
+    Room room;
+    ProbeCaptureSettings settings;
+    settings.faceSize = 8;
+    settings.samplesPerTexel = 8;
+    RayCounts rays;
+    const Cubemap cube =
+        captureProbe(room.scene, room.lights, kCapturePoint, 1, settings, nullptr, rays);
+    const glm::vec3 average(0.5f, 2.0f, 8.0f);
+    const world::EnvironmentProbe probe =
+        finishProbe(cube, ProbePlacement{kCapturePoint}, average, settings.prefilter);
+    EXPECT_EQ(probe.irradiance_average, average);
+    const Cubemap stored = unpackProbeTexels(probe);
+    for (size_t i = 0; i < cube.mips[0].texels.size(); ++i) {
+        const glm::vec3 back = glsl::probeDenormalize(stored.mips[0].texels[i], average);
+        const glm::vec3 l = cube.mips[0].texels[i];
+        // RGB9E5's bound on the normalised texel, scaled back per channel.
+        const glm::vec3 normalised = l / average;
+        const float step = std::max(normalised.x, std::max(normalised.y, normalised.z)) / 512.0f;
+        for (int c = 0; c < 3; ++c) ASSERT_NEAR(back[c], l[c], average[c] * (step + 1e-7f)) << i;
+    }
+}
+
+TEST(ProbePlacement, AuthoredProbesElseCentreAndCameras) {
+    world::CompiledLevel level;
+    level.settings.bounds_min = glm::vec3(-2.0f);
+    level.settings.bounds_max = glm::vec3(4.0f);
+    EXPECT_TRUE(placeProbes(level).empty());  // no specular material: no probe
+    level.features.flags = world::feature_probes;
+    world::Camera camera;
+    camera.position = glm::vec3(1.0f, 0.0f, 0.0f);
+    level.cameras = {camera, camera};
+    camera.position = glm::vec3(1.0f, 1.0f, 1.0f);  // at the centre: no second probe there
+    level.cameras.push_back(camera);
+    std::vector<ProbePlacement> automatic = placeProbes(level);
+    ASSERT_EQ(automatic.size(), 2u);
+    EXPECT_EQ(automatic[0].position, glm::vec3(1.0f));
+    EXPECT_EQ(automatic[1].position, glm::vec3(1.0f, 0.0f, 0.0f));
+    EXPECT_EQ(automatic[1].entity, world::kNone);
+
+    world::Entity e;
+    e.flags = world::entity_dynamic;
+    level.entities.push_back(e);
+    e.flags = world::entity_probe;
+    e.position = glm::vec3(5.0f);
+    e.probe_box_min = glm::vec3(4.0f);
+    e.probe_box_max = glm::vec3(6.0f);
+    level.entities.push_back(e);
+    e.probe_box_max = glm::vec3(6.0f, 4.0f, 6.0f);  // empty on y: no box
+    level.entities.push_back(e);
+    const std::vector<ProbePlacement> authored = placeProbes(level);
+    ASSERT_EQ(authored.size(), 2u);
+    EXPECT_EQ(authored[0].entity, 1u);
+    EXPECT_EQ(authored[0].boxMax, glm::vec3(6.0f));
+    EXPECT_EQ(authored[1].entity, 2u);
+    EXPECT_EQ(authored[1].boxMax, glm::vec3(0.0f));
+}

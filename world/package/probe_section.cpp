@@ -1,0 +1,227 @@
+#include "world/package/probe_section.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "world/package/format.hpp"
+
+namespace onelight::world {
+
+uint64_t probe_texel_count(uint32_t face_size) {
+    uint64_t count = 0;
+    for (uint64_t size = face_size; size > 0; size /= 2) count += 6 * size * size;
+    return count;
+}
+
+}  // namespace onelight::world
+
+namespace onelight::package {
+namespace {
+
+constexpr int kMantissaBits = 9;
+constexpr int kExponentBias = 15;
+constexpr int kMaxExponent = 31;
+// (2^N - 1) / 2^N * 2^(Emax - B): the largest value RGB9E5 holds.
+constexpr float kSharedExpMax = 511.0f / 512.0f * 65536.0f;
+constexpr uint32_t kMaxFaceSize = 4096;
+
+// Into bytes already sized (inserting small records one by one trips GCC 12's
+// -Wstringop-overflow false positive).
+template <class T>
+void write_record(std::vector<uint8_t>& out, size_t& offset, const T& value) {
+    std::memcpy(out.data() + offset, &value, sizeof(T));
+    offset += sizeof(T);
+}
+
+template <class T>
+T read_record(const std::vector<uint8_t>& bytes, size_t offset) {
+    T value;
+    std::memcpy(&value, bytes.data() + offset, sizeof(T));
+    return value;
+}
+
+float clamp_channel(float c) {
+    // NaN fails both comparisons and becomes 0, as the extension asks.
+    return c > 0.0f ? std::min(c, kSharedExpMax) : 0.0f;
+}
+
+bool all_finite(const float* v, int n) {
+    for (int i = 0; i < n; ++i)
+        if (!std::isfinite(v[i])) return false;
+    return true;
+}
+
+}  // namespace
+
+uint32_t encode_rgb9e5(glm::vec3 rgb) {
+    const float r = clamp_channel(rgb.r), g = clamp_channel(rgb.g), b = clamp_channel(rgb.b);
+    const float max_c = std::max(r, std::max(g, b));
+    // floor(log2(max_c)) exactly: frexp gives max_c = m 2^e with m in [0.5, 1).
+    int e = 0;
+    std::frexp(max_c, &e);
+    const int floor_log2 = max_c > 0.0f ? e - 1 : -kExponentBias - 1;
+    int exp_shared = std::max(-kExponentBias - 1, floor_log2) + 1 + kExponentBias;
+    // The mantissa of max_c may round up to 2^N: take the next exponent then.
+    if (std::floor(std::ldexp(max_c, kExponentBias + kMantissaBits - exp_shared) + 0.5f) ==
+        float(1 << kMantissaBits))
+        ++exp_shared;
+    exp_shared = std::min(exp_shared, kMaxExponent);
+    const auto mantissa = [&](float c) {
+        const float s =
+            std::floor(std::ldexp(c, kExponentBias + kMantissaBits - exp_shared) + 0.5f);
+        return std::min(uint32_t(s), (1u << kMantissaBits) - 1u);
+    };
+    return mantissa(r) | (mantissa(g) << 9) | (mantissa(b) << 18) | (uint32_t(exp_shared) << 27);
+}
+
+glm::vec3 decode_rgb9e5(uint32_t packed) {
+    const int exponent = int(packed >> 27) - kExponentBias - kMantissaBits;
+    return glm::vec3(std::ldexp(float(packed & 511u), exponent),
+                     std::ldexp(float((packed >> 9) & 511u), exponent),
+                     std::ldexp(float((packed >> 18) & 511u), exponent));
+}
+
+RawSection encode_probe_section(const std::vector<world::EnvironmentProbe>& probes) {
+    RawSection out;
+    out.id = section_probes;
+    out.element_size = 1;
+    DiskProbeHeader h{};
+    h.probe_count = static_cast<uint32_t>(probes.size());
+    uint64_t texels = 0;
+    for (const world::EnvironmentProbe& p : probes) texels += p.texels.size();
+    h.texel_count = static_cast<uint32_t>(texels);
+    h.texel_format = probe_texel_rgb9e5;
+    out.bytes.resize(sizeof(DiskProbeHeader) + probes.size() * sizeof(DiskProbe) +
+                     texels * sizeof(uint32_t));
+    size_t offset = 0;
+    write_record(out.bytes, offset, h);
+    uint32_t first = 0;
+    for (const world::EnvironmentProbe& p : probes) {
+        DiskProbe d{};
+        for (int c = 0; c < 3; ++c) {
+            d.position[c] = p.position[c];
+            d.box_min[c] = p.box_min[c];
+            d.box_max[c] = p.box_max[c];
+            d.irradiance_average[c] = p.irradiance_average[c];
+        }
+        d.face_size = p.face_size;
+        d.mip_count = p.mip_count;
+        d.first_texel = first;
+        d.texel_count = static_cast<uint32_t>(p.texels.size());
+        d.entity = p.entity == world::kNone ? kNoIndex : p.entity;
+        first += d.texel_count;
+        write_record(out.bytes, offset, d);
+    }
+    for (const world::EnvironmentProbe& p : probes)
+        for (uint32_t t : p.texels) write_record(out.bytes, offset, t);
+    out.count = static_cast<uint32_t>(out.bytes.size());
+    return out;
+}
+
+ProbeReadResult decode_probe_section(std::span<const RawSection> sections,
+                                     const world::CompiledLevel& level, const std::string& name) {
+    ProbeReadResult result;
+    const RawSection* section = nullptr;
+    for (const RawSection& s : sections) {
+        if (s.id != section_probes) continue;
+        if (section) {
+            result.error = name + ": section " + std::to_string(s.id) + " appears twice";
+            return result;
+        }
+        section = &s;
+    }
+    if (!section) return result;
+    result.present = true;
+    const std::vector<uint8_t>& bytes = section->bytes;
+    if (section->element_size != 1 || bytes.size() != section->count ||
+        bytes.size() < sizeof(DiskProbeHeader)) {
+        result.error = name + ": section probes: element size " +
+                       std::to_string(section->element_size) + ", count " +
+                       std::to_string(section->count) + ", " + std::to_string(bytes.size()) +
+                       " bytes; expected element size 1, count == bytes, and a header of " +
+                       std::to_string(sizeof(DiskProbeHeader)) + " bytes";
+        return result;
+    }
+    const auto h = read_record<DiskProbeHeader>(bytes, 0);
+    const uint64_t expected_bytes = sizeof(DiskProbeHeader) +
+                                    uint64_t(h.probe_count) * sizeof(DiskProbe) +
+                                    uint64_t(h.texel_count) * sizeof(uint32_t);
+    if (bytes.size() != expected_bytes) {
+        result.error = name + ": section probes: probe_count " + std::to_string(h.probe_count) +
+                       ", texel_count " + std::to_string(h.texel_count) + ", " +
+                       std::to_string(bytes.size()) + " bytes; expected " +
+                       std::to_string(expected_bytes) + " bytes";
+        return result;
+    }
+    if (h.texel_format != probe_texel_rgb9e5 || h.reserved != 0) {
+        result.error = name + ": section probes: texel_format " + std::to_string(h.texel_format) +
+                       ", reserved " + std::to_string(h.reserved) + "; expected " +
+                       std::to_string(probe_texel_rgb9e5) + " (RGB9E5) and 0";
+        return result;
+    }
+    const size_t texel_base = sizeof(DiskProbeHeader) + size_t(h.probe_count) * sizeof(DiskProbe);
+    uint64_t next_texel = 0;
+    result.probes.resize(h.probe_count);
+    for (uint32_t i = 0; i < h.probe_count; ++i) {
+        const auto d =
+            read_record<DiskProbe>(bytes, sizeof(DiskProbeHeader) + size_t(i) * sizeof(DiskProbe));
+        const bool power_of_two = d.face_size != 0 && (d.face_size & (d.face_size - 1)) == 0;
+        uint32_t mips = 0;
+        for (uint32_t s = d.face_size; s > 0; s /= 2) ++mips;
+        std::string bad;
+        if (!all_finite(d.position, 3) || !all_finite(d.box_min, 3) || !all_finite(d.box_max, 3))
+            bad = "position or box not finite";
+        else if (!all_finite(d.irradiance_average, 3) ||
+                 !(std::min({d.irradiance_average[0], d.irradiance_average[1],
+                             d.irradiance_average[2]}) > 0.0f))
+            bad = "irradiance_average not finite or not > 0";
+        else if (!power_of_two || d.face_size > kMaxFaceSize)
+            bad = "face_size " + std::to_string(d.face_size) +
+                  " is not a power of two <= " + std::to_string(kMaxFaceSize);
+        else if (d.mip_count != mips)
+            bad = "mip_count " + std::to_string(d.mip_count) + "; expected " +
+                  std::to_string(mips) + " for face_size " + std::to_string(d.face_size);
+        else if (d.texel_count != world::probe_texel_count(d.face_size))
+            bad = "texel_count " + std::to_string(d.texel_count) + "; expected " +
+                  std::to_string(world::probe_texel_count(d.face_size)) + " for face_size " +
+                  std::to_string(d.face_size);
+        else if (d.first_texel != next_texel ||
+                 uint64_t(d.first_texel) + d.texel_count > h.texel_count)
+            bad = "texels [" + std::to_string(d.first_texel) + ", +" +
+                  std::to_string(d.texel_count) + ") not at " + std::to_string(next_texel) +
+                  " or past texel_count " + std::to_string(h.texel_count);
+        else if (d.entity != kNoIndex && (d.entity >= level.entities.size() ||
+                                          !(level.entities[d.entity].flags & world::entity_probe)))
+            bad = "entity " + std::to_string(d.entity) + " is not a probe entity of " +
+                  std::to_string(level.entities.size());
+        else if (d.reserved != 0)
+            bad = "reserved " + std::to_string(d.reserved) + "; expected 0";
+        if (!bad.empty()) {
+            result.error = name + ": section probes, record " + std::to_string(i) + ": " + bad;
+            return result;
+        }
+        world::EnvironmentProbe& p = result.probes[i];
+        p.position = glm::vec3(d.position[0], d.position[1], d.position[2]);
+        p.box_min = glm::vec3(d.box_min[0], d.box_min[1], d.box_min[2]);
+        p.box_max = glm::vec3(d.box_max[0], d.box_max[1], d.box_max[2]);
+        p.irradiance_average =
+            glm::vec3(d.irradiance_average[0], d.irradiance_average[1], d.irradiance_average[2]);
+        p.face_size = d.face_size;
+        p.mip_count = d.mip_count;
+        p.entity = d.entity == kNoIndex ? world::kNone : d.entity;
+        p.texels.resize(d.texel_count);
+        if (d.texel_count)
+            std::memcpy(p.texels.data(), bytes.data() + texel_base + size_t(d.first_texel) * 4,
+                        size_t(d.texel_count) * 4);
+        next_texel += d.texel_count;
+    }
+    if (next_texel != h.texel_count) {
+        result.error = name + ": section probes: texel_count " + std::to_string(h.texel_count) +
+                       "; the probes own " + std::to_string(next_texel);
+        return result;
+    }
+    return result;
+}
+
+}  // namespace onelight::package
