@@ -1,5 +1,7 @@
 #include "albedo.hpp"
 
+#include <optional>
+
 #include "shading.hpp"
 
 namespace onelight::lab {
@@ -20,8 +22,17 @@ double sharedLobe(const SpecularModel& model, float gloss, const Reflection& r) 
     return 0.25 * D * V * r.NoL;
 }
 
-double referenceLobe(const SpecularModel& model, double gloss, const Reflection& r) {
-    return reference::smithLobe(model.referenceNdf, gloss, r.NoV, r.NoL, r.sin2H, r.cosH);
+// The Blinn-Phong Lambda table the reference needs for this model and gloss (none otherwise).
+std::optional<reference::BlinnPhongLambda> lambdaTableFor(const SpecularModel& model,
+                                                          double gloss) {
+    if (model.referenceNdf != reference::Ndf::BlinnPhong) return std::nullopt;
+    return reference::BlinnPhongLambda(reference::specPower(gloss));
+}
+
+double referenceLobe(const SpecularModel& model, double gloss, const Reflection& r,
+                     const std::optional<reference::BlinnPhongLambda>& table) {
+    return reference::smithLobe(model.referenceNdf, gloss, r.NoV, r.NoL, r.sin2H, r.cosH,
+                                table ? &*table : nullptr);
 }
 
 double schlickWeight(double VoH) {
@@ -47,14 +58,16 @@ ScaleBias specularAlbedo(const SpecularModel& model, double mu, double gloss) {
 }
 
 ScaleBias referenceAlbedo(const SpecularModel& model, double mu, double gloss) {
-    return albedoOf([&](const Reflection& r) { return referenceLobe(model, gloss, r); }, mu,
+    const auto table = lambdaTableFor(model, gloss);
+    return albedoOf([&](const Reflection& r) { return referenceLobe(model, gloss, r, table); }, mu,
                     lobeWidth(model, gloss));
 }
 
 double lobeError(const SpecularModel& model, double mu, double gloss) {
     float g = float(gloss);
+    const auto table = lambdaTableFor(model, gloss);
     Vec<2> e = integrateHalfVectors<2>(mu, lobeWidth(model, gloss), [&](const Reflection& r) {
-        double ref = referenceLobe(model, gloss, r);
+        double ref = referenceLobe(model, gloss, r, table);
         return Vec<2>{std::abs(sharedLobe(model, g, r) - ref) * 4.0 * r.VoH, ref * 4.0 * r.VoH};
     });
     return e[0] / e[1];

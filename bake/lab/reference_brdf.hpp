@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <mutex>
 #include <numbers>
 #include <vector>
 
@@ -57,8 +55,8 @@ inline double lambdaGGX(double mu, double alpha) {
 // integral is analytic: for a = sin(theta_o) sin(theta), b = mu cos(theta),
 //   int_0^2pi max(0, a cos phi + b) dphi = 2 pi b               (b >= a)
 //                                        = 2 (a sin phi0 + b phi0), cos phi0 = -b / a  (b < a).
-// P(mu) = mu (1 + Lambda) is smooth and finite down to mu = 0, so it is tabulated once per
-// exponent at 2049 values of mu and interpolated linearly (error < 1e-8).
+// P(mu) = mu (1 + Lambda) is smooth and finite down to mu = 0, so BlinnPhongLambda tabulates it
+// once per exponent at 2049 values of mu and interpolates linearly (error < 1e-8).
 // ndf(sin2, cos) of any isotropic NDF; w its lobe width (for the theta mapping).
 template <class Ndf>
 double projectedArea(double mu, double w, const Ndf& ndf) {
@@ -89,30 +87,32 @@ inline double projectedAreaBlinnPhong(double mu, double n) {
                          [n](double s2, double c) { return ndfBlinnPhong(s2, c, n); });
 }
 
-inline double lambdaBlinnPhong(double mu, double n) {
-    constexpr int kSamples = 2049;
-    static std::mutex mutex;
-    static std::map<double, std::vector<double>> tables;  // exponent -> P at mu = i / 2048
-    const std::vector<double>* table;
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        std::vector<double>& t = tables[n];
-        if (t.empty())
-            for (int i = 0; i < kSamples; ++i)
-                t.push_back(projectedAreaBlinnPhong(double(i) / (kSamples - 1), n));
-        table = &t;
+// Blinn-Phong's exact Lambda for one exponent: P(mu) tabulated at 2049 values of mu.
+class BlinnPhongLambda {
+public:
+    explicit BlinnPhongLambda(double n) {
+        for (int i = 0; i < kSamples; ++i)
+            projected_.push_back(projectedAreaBlinnPhong(double(i) / (kSamples - 1), n));
     }
-    double x = std::clamp(mu, 0.0, 1.0) * (kSamples - 1);
-    int i = std::min(int(x), kSamples - 2);
-    double P = (*table)[i] + ((*table)[i + 1] - (*table)[i]) * (x - i);
-    return std::max(0.0, P / mu - 1.0);
-}
+    double operator()(double mu) const {
+        double x = std::clamp(mu, 0.0, 1.0) * (kSamples - 1);
+        int i = std::min(int(x), kSamples - 2);
+        double P = projected_[i] + (projected_[i + 1] - projected_[i]) * (x - i);
+        return std::max(0.0, P / mu - 1.0);
+    }
+
+private:
+    static constexpr int kSamples = 2049;
+    std::vector<double> projected_;  // P at mu = i / 2048
+};
 
 enum class Ndf { BlinnPhong, Beckmann, GGX };
 
 // The exact height-correlated Smith BRDF times the cosine, F = 1:
-// f NoL = D G2 / (4 NoV), G2 = 1 / (1 + Lambda(v) + Lambda(l)), each NDF with its own Lambda.
-inline double smithLobe(Ndf ndf, double gloss, double NoV, double NoL, double sin2H, double cosH) {
+// f NoL = D G2 / (4 NoV), G2 = 1 / (1 + Lambda(v) + Lambda(l)), each NDF with its own Lambda
+// (Blinn-Phong's from `blinnPhongLambda`, which must be built for specPower(gloss)).
+inline double smithLobe(Ndf ndf, double gloss, double NoV, double NoL, double sin2H, double cosH,
+                        const BlinnPhongLambda* blinnPhongLambda = nullptr) {
     if (NoL <= 0.0 || NoV <= 0.0) return 0.0;
     double D, lv, ll;
     if (ndf == Ndf::GGX) {
@@ -126,10 +126,9 @@ inline double smithLobe(Ndf ndf, double gloss, double NoV, double NoL, double si
         lv = lambdaBeckmann(NoV, m);
         ll = lambdaBeckmann(NoL, m);
     } else {
-        double n = specPower(gloss);
-        D = ndfBlinnPhong(sin2H, cosH, n);
-        lv = lambdaBlinnPhong(NoV, n);
-        ll = lambdaBlinnPhong(NoL, n);
+        D = ndfBlinnPhong(sin2H, cosH, specPower(gloss));
+        lv = (*blinnPhongLambda)(NoV);
+        ll = (*blinnPhongLambda)(NoL);
     }
     return D / (4.0 * NoV * (1.0 + lv + ll));
 }

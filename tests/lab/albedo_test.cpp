@@ -206,12 +206,13 @@ TEST(LabReference, ProjectedAreaLambdaMatchesClosedForms) {
 // Walter et al. 2007 (sec. 5.2): for high exponents Blinn-Phong's Lambda approaches Beckmann's
 // at m = sqrt(2 / (n + 2)); at n = 1 they differ, which is why the reference integrates it.
 TEST(LabReference, BlinnPhongLambdaApproachesBeckmannAtHighExponents) {
-    double n = ref::specPower(0.8), m = ref::beckmannM(0.8);
+    const ref::BlinnPhongLambda lambda(ref::specPower(0.8));
+    const double m = ref::beckmannM(0.8);
     for (double mu : {0.05, 0.2, 0.5})
-        EXPECT_NEAR(ref::lambdaBlinnPhong(mu, n), ref::lambdaBeckmann(mu, m),
+        EXPECT_NEAR(lambda(mu), ref::lambdaBeckmann(mu, m),
                     0.02 * ref::lambdaBeckmann(mu, m) + 1e-6)
             << mu;
     EXPECT_GT(
-        std::abs(ref::lambdaBlinnPhong(0.2, 1.0) - ref::lambdaBeckmann(0.2, ref::beckmannM(0.0))),
+        std::abs(ref::BlinnPhongLambda(1.0)(0.2) - ref::lambdaBeckmann(0.2, ref::beckmannM(0.0))),
         1e-2);
 }
