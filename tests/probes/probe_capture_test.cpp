@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <tbb/parallel_for.h>
+
 #include "bake/lighting/sampling.hpp"
 #include "bake/probes/probe_capture.hpp"
 #include "bake_scenes.hpp"
@@ -69,21 +71,37 @@ TEST(ProbeCapture, BoxRoomMatchesThePathTracerWithinItsNoise) {
 
     // The reference: uniform sphere directions (pdf 1 / (4 pi)) from the same point, binned by
     // face; each bin's plain mean estimates that face's mean radiance.
-    constexpr uint32_t kPaths = 3200000;
-    Rng rng{seed_from(77, 0, 0, 99)};
+    // Chunks of paths with their own streams, summed in order: the same on any thread count.
+    constexpr uint32_t kChunks = 64, kPathsPerChunk = 50000, kPaths = kChunks * kPathsPerChunk;
+    struct Sums {
+        double sum[6] = {}, sum2[6] = {};
+        uint32_t count[6] = {};
+        RayCounts rays;
+    };
+    std::vector<Sums> chunks(kChunks);
+    tbb::parallel_for(0u, kChunks, [&](uint32_t c) {
+        Sums& out = chunks[c];
+        Rng rng{seed_from(77, c, 0, 99)};
+        for (uint32_t i = 0; i < kPathsPerChunk; ++i) {
+            const glm::vec3 w = sample_uniform_sphere({rng.next(), rng.next()});
+            const double l = luminance(trace_radiance(room.scene, room.lights, settings.transport,
+                                                      kCapturePoint, w, rng, out.rays));
+            const int f = glsl::cubeFace(w);
+            out.sum[f] += l;
+            out.sum2[f] += l * l;
+            ++out.count[f];
+        }
+    });
     double sum[6] = {}, sum2[6] = {}, all = 0.0, all2 = 0.0;
     uint32_t count[6] = {};
-    for (uint32_t i = 0; i < kPaths; ++i) {
-        const glm::vec3 w = sample_uniform_sphere({rng.next(), rng.next()});
-        const double l = luminance(trace_radiance(room.scene, room.lights, settings.transport,
-                                                  kCapturePoint, w, rng, rays));
-        const int f = glsl::cubeFace(w);
-        sum[f] += l;
-        sum2[f] += l * l;
-        ++count[f];
-        all += l;
-        all2 += l * l;
-    }
+    for (const Sums& c : chunks)
+        for (int f = 0; f < 6; ++f) {
+            sum[f] += c.sum[f];
+            sum2[f] += c.sum2[f];
+            count[f] += c.count[f];
+            all += c.sum[f];
+            all2 += c.sum2[f];
+        }
     // Tolerance: 4 standard errors of the difference. The reference's from its sample
     // variance; the cube's from the same per-path variance over samplesPerTexel paths per
     // texel, weighted by the texels' solid angles.
