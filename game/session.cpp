@@ -5,8 +5,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "render/light_grid_sample.hpp"
 #include "shading.hpp"
+#include "world/light_grid_sample.hpp"
 
 namespace onelight::game {
 
@@ -31,7 +31,7 @@ glm::mat4 objectMatrix(glm::vec3 position, const world::Entity& e) {
 float secondaryIlluminance(const Session& s, glm::vec3 p, glm::vec3 n) {
     const world::LightGrid& grid = s.level->baked.grid;
     if (!s.level->hasBakedLighting || grid.cells.empty()) return s.secondaryLux;
-    render::LightGridSample sample = render::sampleLightGrid(grid, p);
+    world::LightGridSample sample = world::sampleLightGrid(grid, p);
     glm::vec3 e(0.0f);
     for (int axis = 0; axis < 3; ++axis)
         e += n[axis] * n[axis] * sample.ambientCube[2 * axis + (n[axis] < 0.0f ? 1 : 0)];
@@ -96,7 +96,7 @@ float primaryPickScore(const Session& s, uint32_t light, const glm::vec3& point)
     if (!s.level->hasBakedLighting || grid.cells.empty()) return primaryScore(s, light, point);
     float e = unshadowedIlluminance(s, light, point);
     if (!(e > 0.0f)) return 0.0f;
-    return e * render::dominantVisibility(grid, render::sampleLightGrid(grid, point), light);
+    return e * world::dominantVisibility(grid, world::sampleLightGrid(grid, point), light);
 }
 
 float primaryScore(const Session& s, uint32_t light, const glm::vec3& point) {

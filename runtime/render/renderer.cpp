@@ -11,12 +11,12 @@
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "render/light_grid_sample.hpp"
 #include "render/renderer_state.hpp"
 #include "shading.hpp"
 #include "vk/commands.hpp"
 #include "vk/descriptors.hpp"
 #include "vk/vk_check.hpp"
+#include "world/light_grid_sample.hpp"
 
 #include "forward.frag.spv.h"
 #include "forward.vert.spv.h"
@@ -294,15 +294,15 @@ float primaryIlluminance(const RendererState& s, uint32_t i, glm::vec3 p) {
 // The primary of a dynamic object at its lighting origin, with hysteresis against flicker: a new
 // primary must score kPrimaryHysteresis times the current one. With a light grid the candidates
 // are the dominant primaries of the grid cells around the origin, scored by their illuminance
-// there times their baked visibility (dominantVisibility), so an object in a primary's shadow
-// does not pick it; a current primary that dominates none of those cells any more is dropped.
-// Without a grid every primary candidate is scored by its unshadowed illuminance.
+// there times their baked visibility (world::dominantVisibility), so an object in a primary's
+// shadow does not pick it; a current primary that dominates none of those cells any more is
+// dropped. Without a grid every primary candidate is scored by its unshadowed illuminance.
 uint32_t pickDynamicPrimary(RendererState& s, uint32_t entity, glm::vec3 origin,
-                            const LightGridSample* grid) {
+                            const world::LightGridSample* grid) {
     uint32_t current = s.dynamicPrimary[entity];
     auto score = [&](uint32_t i) {
         const float e = primaryIlluminance(s, i, origin);
-        return grid ? e * dominantVisibility(s.grid, *grid, i) : e;
+        return grid ? e * world::dominantVisibility(s.grid, *grid, i) : e;
     };
     float currentScore = current != kNoIndex ? score(current) : 0.0f;
     if (grid && !(currentScore > 0.0f)) {
@@ -324,14 +324,14 @@ uint32_t pickDynamicPrimary(RendererState& s, uint32_t entity, glm::vec3 origin,
 // A dynamic object's baked lighting for the forward pass: the grid's ambient cube at its origin
 // and the baked visibility of its primary; neutral values (the placeholder ambient, visible) for
 // the placeholder textures of a level without a grid.
-GpuObjectLighting objectLightingOf(const RendererState& s, const LightGridSample* grid,
+GpuObjectLighting objectLightingOf(const RendererState& s, const world::LightGridSample* grid,
                                    uint32_t primary) {
     GpuObjectLighting o{};
     for (int f = 0; f < 6; ++f)
         o.ambientCube[f] = grid ? glm::vec4(grid->ambientCube[size_t(f)], 0.0f)
                                 : glm::vec4(glm::vec3(s.ambientLux), 0.0f);
     o.ambientCube[0].w =
-        grid && primary != kNoIndex ? bakedVisibility(s.grid, *grid, primary) : 1.0f;
+        grid && primary != kNoIndex ? world::bakedVisibility(s.grid, *grid, primary) : 1.0f;
     return o;
 }
 
@@ -578,8 +578,8 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
     for (uint32_t e = 0; e < s.entities.size(); ++e) {
         if (!entityVisible[e]) continue;
         const glm::vec3 origin(entityTransforms[e][3]);
-        LightGridSample sample;
-        if (useGrid) sample = sampleLightGrid(s.grid, origin);
+        world::LightGridSample sample;
+        if (useGrid) sample = world::sampleLightGrid(s.grid, origin);
         // The game's pick when it made one (it runs on the fixed tick, so replays expect what
         // is drawn); otherwise the renderer's own.
         entityPrimary[e] = givenPrimary[e] != kNoIndex

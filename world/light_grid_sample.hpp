@@ -1,5 +1,6 @@
-// The light grid (package section 34) read at a dynamic object's lighting origin, on the CPU:
-// the renderer samples it once per object and frame and uploads the result with the draw.
+// The light grid (package section 34) read at a point, on the CPU, as every consumer reads it:
+// the renderer once per dynamic object and frame, the game for primaries and exposure, the
+// baker for the probes' normalization.
 #pragma once
 
 #include <array>
@@ -9,7 +10,7 @@
 
 #include "world/baked_lighting.hpp"
 
-namespace onelight::render {
+namespace onelight::world {
 
 /// The grid at a point: trilinear interpolation between the centres of the (up to) eight cells
 /// around it, cells flagged inside solid skipped and the other weights renormalised to sum 1.
@@ -23,15 +24,14 @@ struct LightGridSample {
 };
 
 /// Samples `grid` at world point p. The grid must have cells (dims >= 1 each).
-LightGridSample sampleLightGrid(const world::LightGrid& grid, glm::vec3 p);
+LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p);
 
 /// Sum of weight * primary_visibility over the corners whose dominant primary is `light`: the
 /// baked score of that light at the sample, before its illuminance (0 when it dominates none).
-float dominantVisibility(const world::LightGrid& grid, const LightGridSample& sample,
-                         uint32_t light);
+float dominantVisibility(const LightGrid& grid, const LightGridSample& sample, uint32_t light);
 
 /// The baked visibility of `light` at the sample: primary_visibility averaged (by weight) over
 /// the corners where it is the dominant primary; 0 when it dominates none of them.
-float bakedVisibility(const world::LightGrid& grid, const LightGridSample& sample, uint32_t light);
+float bakedVisibility(const LightGrid& grid, const LightGridSample& sample, uint32_t light);
 
-}  // namespace onelight::render
+}  // namespace onelight::world

@@ -1,11 +1,11 @@
-#include "render/light_grid_sample.hpp"
+#include "world/light_grid_sample.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace onelight::render {
+namespace onelight::world {
 
-LightGridSample sampleLightGrid(const world::LightGrid& grid, glm::vec3 p) {
+LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p) {
     LightGridSample out;
     if (grid.cells.empty()) return out;
     // Continuous cell coordinate: cell (i, j, k) is centred at origin + (i + 0.5) size.
@@ -42,28 +42,27 @@ LightGridSample sampleLightGrid(const world::LightGrid& grid, glm::vec3 p) {
     }
     for (uint32_t corner = 0; corner < 8; ++corner) {
         out.weights[corner] /= total;
-        const world::LightGridCell& cell = grid.cells[out.cells[corner]];
+        const LightGridCell& cell = grid.cells[out.cells[corner]];
         for (size_t face = 0; face < 6; ++face)
             out.ambientCube[face] += out.weights[corner] * cell.ambient_cube[face];
     }
     return out;
 }
 
-float dominantVisibility(const world::LightGrid& grid, const LightGridSample& sample,
-                         uint32_t light) {
+float dominantVisibility(const LightGrid& grid, const LightGridSample& sample, uint32_t light) {
     float sum = 0.0f;
     for (uint32_t corner = 0; corner < 8; ++corner) {
-        const world::LightGridCell& cell = grid.cells[sample.cells[corner]];
+        const LightGridCell& cell = grid.cells[sample.cells[corner]];
         if (sample.weights[corner] > 0.0f && cell.dominant_primary == light)
             sum += sample.weights[corner] * cell.primary_visibility;
     }
     return sum;
 }
 
-float bakedVisibility(const world::LightGrid& grid, const LightGridSample& sample, uint32_t light) {
+float bakedVisibility(const LightGrid& grid, const LightGridSample& sample, uint32_t light) {
     float weight = 0.0f, sum = 0.0f;
     for (uint32_t corner = 0; corner < 8; ++corner) {
-        const world::LightGridCell& cell = grid.cells[sample.cells[corner]];
+        const LightGridCell& cell = grid.cells[sample.cells[corner]];
         if (sample.weights[corner] > 0.0f && cell.dominant_primary == light) {
             weight += sample.weights[corner];
             sum += sample.weights[corner] * cell.primary_visibility;
@@ -72,4 +71,4 @@ float bakedVisibility(const world::LightGrid& grid, const LightGridSample& sampl
     return weight > 0.0f ? sum / weight : 0.0f;
 }
 
-}  // namespace onelight::render
+}  // namespace onelight::world
