@@ -10,11 +10,11 @@ namespace {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
 #include "brdf.glsl"
-#include "env_brdf_fit.glsl"
 #include "brdf_pieces.glsl"
-#include "probe.glsl"
+#include "env_brdf_fit.glsl"
 #include "lighting.glsl"
 #include "material.glsl"
+#include "probe.glsl"
 #include "tonemap.glsl"
 #pragma GCC diagnostic pop
 }  // namespace

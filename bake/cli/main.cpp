@@ -23,9 +23,10 @@ constexpr Subcommand kSubcommands[] = {
 };
 
 void print_usage() {
-    std::fprintf(stderr, "usage: onelight-bake LEVEL.gltf -o LEVEL.olpak [--quality "
-                         "draft|default|high] [--threads N] [--report R.json] [--shard i/N]\n"
-                         "       onelight-bake SUBCOMMAND [ARGS]\n");
+    std::fprintf(stderr,
+                 "usage: onelight-bake LEVEL.gltf -o LEVEL.olpak [--quality "
+                 "draft|default|high] [--threads N] [--report R.json] [--shard i/N]\n"
+                 "       onelight-bake SUBCOMMAND [ARGS]\n");
     for (const Subcommand& s : kSubcommands) std::fprintf(stderr, "  %s\n", s.summary);
 }
 

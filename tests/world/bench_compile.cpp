@@ -33,8 +33,10 @@ int main(int argc, char** argv) {
     std::string keep;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--triangles" && i + 1 < argc) triangles = std::strtoull(argv[++i], nullptr, 10);
-        else if (a == "--keep" && i + 1 < argc) keep = argv[++i];
+        if (a == "--triangles" && i + 1 < argc)
+            triangles = std::strtoull(argv[++i], nullptr, 10);
+        else if (a == "--keep" && i + 1 < argc)
+            keep = argv[++i];
         else {
             std::fprintf(stderr, "usage: onelight-bench-compile [--triangles N] [--keep DIR]\n");
             return 2;
@@ -42,7 +44,8 @@ int main(int argc, char** argv) {
     }
     using namespace onelight;
     const test::GeneratedLevelOptions options = test::options_for_triangles(triangles);
-    const std::filesystem::path folder = keep.empty() ? test::fresh_folder("bench") : std::filesystem::path(keep);
+    const std::filesystem::path folder =
+        keep.empty() ? test::fresh_folder("bench") : std::filesystem::path(keep);
     std::filesystem::create_directories(folder);
     const std::string path = test::write_generated_level(folder, "bench_level", options);
     const double rss_after_generate = peak_rss_mib();
@@ -55,7 +58,8 @@ int main(int argc, char** argv) {
         const double compile_s = seconds(start);
         start = std::chrono::steady_clock::now();
         const std::vector<uint8_t> bytes = package::serialize_package(result.level);
-        const std::string error = package::write_file_atomically((folder / "bench_level.olpak").string(), bytes);
+        const std::string error =
+            package::write_file_atomically((folder / "bench_level.olpak").string(), bytes);
         const double write_s = seconds(start);
         if (!error.empty()) {
             std::fprintf(stderr, "%s\n", error.c_str());
@@ -64,18 +68,23 @@ int main(int argc, char** argv) {
         const world::CompileStats& s = result.stats;
         std::printf("level      %s (%llu static triangles generated)\n", path.c_str(),
                     static_cast<unsigned long long>(test::generated_triangle_count(options)));
-        std::printf("result     %llu triangles, %llu surfaces, bsp depth %u / %llu leaves, %llu charts in %llu atlases, "
-                    "%zu bytes\n",
-                    static_cast<unsigned long long>(s.triangles), static_cast<unsigned long long>(s.surfaces),
-                    s.bsp_depth, static_cast<unsigned long long>(s.bsp_leaves),
-                    static_cast<unsigned long long>(s.charts), static_cast<unsigned long long>(s.atlases),
-                    bytes.size());
-        std::printf("time       import %.3f s, compile %.3f s (split %.3f, regions %.3f, charts %.3f, bsp %.3f, "
-                    "surfaces %.3f), write %.3f s, total %.3f s\n",
-                    import_s, compile_s, s.seconds_split, s.seconds_regions, s.seconds_charts, s.seconds_bsp,
-                    s.seconds_surfaces, write_s, import_s + compile_s + write_s);
-        std::printf("memory     peak RSS %.1f MiB (%.1f MiB after generating the level)\n", peak_rss_mib(),
-                    rss_after_generate);
+        std::printf(
+            "result     %llu triangles, %llu surfaces, bsp depth %u / %llu leaves, %llu charts in "
+            "%llu atlases, "
+            "%zu bytes\n",
+            static_cast<unsigned long long>(s.triangles),
+            static_cast<unsigned long long>(s.surfaces), s.bsp_depth,
+            static_cast<unsigned long long>(s.bsp_leaves),
+            static_cast<unsigned long long>(s.charts), static_cast<unsigned long long>(s.atlases),
+            bytes.size());
+        std::printf(
+            "time       import %.3f s, compile %.3f s (split %.3f, regions %.3f, charts %.3f, bsp "
+            "%.3f, "
+            "surfaces %.3f), write %.3f s, total %.3f s\n",
+            import_s, compile_s, s.seconds_split, s.seconds_regions, s.seconds_charts,
+            s.seconds_bsp, s.seconds_surfaces, write_s, import_s + compile_s + write_s);
+        std::printf("memory     peak RSS %.1f MiB (%.1f MiB after generating the level)\n",
+                    peak_rss_mib(), rss_after_generate);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "onelight-bench-compile: %s\n", e.what());
         return 1;

@@ -41,7 +41,8 @@ SourceLevel soup_level(const std::vector<glm::vec3>& corners) {
 
 /// Random triangles of about `size` metres in a cube of `extent` metres around `centre`, plus the
 /// hard cases: coplanar grids, duplicated faces, slivers and T-junctions.
-std::vector<glm::vec3> hard_soup(uint32_t seed, int count, float extent, float size, glm::vec3 centre) {
+std::vector<glm::vec3> hard_soup(uint32_t seed, int count, float extent, float size,
+                                 glm::vec3 centre) {
     std::mt19937 random(seed);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     std::vector<glm::vec3> c;
@@ -64,8 +65,10 @@ std::vector<glm::vec3> hard_soup(uint32_t seed, int count, float extent, float s
     // A nearly coplanar copy one micrometre above, slivers, and a T-junction fan.
     const glm::vec3 up = centre + glm::vec3(0, 1e-6f * extent, 0);
     c.insert(c.end(), {up, up + glm::vec3(0, 0, 1), up + glm::vec3(1, 0, 1)});
-    c.insert(c.end(), {centre, centre + glm::vec3(extent, 0, 0), centre + glm::vec3(extent / 2, 1e-4f, 0.0f)});
-    c.insert(c.end(), {centre, centre + glm::vec3(0, extent, 0), centre + glm::vec3(1e-4f, extent / 2, 1e-4f)});
+    c.insert(c.end(), {centre, centre + glm::vec3(extent, 0, 0),
+                       centre + glm::vec3(extent / 2, 1e-4f, 0.0f)});
+    c.insert(c.end(), {centre, centre + glm::vec3(0, extent, 0),
+                       centre + glm::vec3(1e-4f, extent / 2, 1e-4f)});
     const glm::vec3 t = centre + glm::vec3(0, extent / 2, 0);
     c.insert(c.end(), {t, t + glm::vec3(2, 0, 0), t + glm::vec3(1, 1, 0)});
     c.insert(c.end(), {t, t + glm::vec3(1, 0, 0), t + glm::vec3(1, -1, 0)});
@@ -110,12 +113,15 @@ protected:
         const BspCase& c = GetParam();
         CompileOptions options;
         options.bsp.max_leaf_triangles = 8;
-        level_ = compile_level(soup_level(hard_soup(7, 600, c.extent, c.extent / 5, c.centre)), options).level;
+        level_ =
+            compile_level(soup_level(hard_soup(7, 600, c.extent, c.extent / 5, c.centre)), options)
+                .level;
         view_ = bsp_view(level_);
     }
     glm::dvec3 random_point(std::mt19937& random) const {
         std::uniform_real_distribution<double> unit(-1.3, 1.3);
-        return glm::dvec3(GetParam().centre) + double(GetParam().extent) * glm::dvec3(unit(random), unit(random), unit(random));
+        return glm::dvec3(GetParam().centre) +
+               double(GetParam().extent) * glm::dvec3(unit(random), unit(random), unit(random));
     }
     CompiledLevel level_;
     BspView view_;
@@ -126,12 +132,14 @@ TEST_P(BspInvariants, EveryTriangleLiesInExactlyOneLeaf) {
     ASSERT_GT(level_.bsp_nodes.size(), 10u);
     std::vector<int> owners(triangles, 0);
     for (const BspLeaf& leaf : level_.bsp_leaves)
-        for (uint32_t t = leaf.first_triangle; t < leaf.first_triangle + leaf.triangle_count; ++t) ++owners[t];
+        for (uint32_t t = leaf.first_triangle; t < leaf.first_triangle + leaf.triangle_count; ++t)
+            ++owners[t];
     for (size_t t = 0; t < triangles; ++t) ASSERT_EQ(owners[t], 1) << "triangle " << t;
     const auto paths = leaf_paths(level_);
     for (size_t l = 0; l < level_.bsp_leaves.size(); ++l) {
         const BspLeaf& leaf = level_.bsp_leaves[l];
-        for (uint32_t i = 3 * leaf.first_triangle; i < 3 * (leaf.first_triangle + leaf.triangle_count); ++i) {
+        for (uint32_t i = 3 * leaf.first_triangle;
+             i < 3 * (leaf.first_triangle + leaf.triangle_count); ++i) {
             const glm::dvec3 p(level_.vertices[level_.indices[i]].position);
             for (const auto& [plane, side] : paths[l])
                 ASSERT_GE(side * signed_distance(level_, plane, p), -view_.epsilon)
@@ -207,8 +215,11 @@ TEST_P(BspInvariants, FrontToBackVisitsEveryLeafOnceNearSideFirst) {
         ASSERT_EQ(static_cast<size_t>(next), level_.bsp_leaves.size());
         ASSERT_EQ(rank[find_leaf(view_, eye)], 0);
         // For every node, each leaf on the eye's side comes before each leaf on the other.
-        std::function<std::pair<int, int>(int32_t)> span = [&](int32_t child) -> std::pair<int, int> {
-            if (child < 0) return {rank[static_cast<size_t>(-child - 1)], rank[static_cast<size_t>(-child - 1)]};
+        std::function<std::pair<int, int>(int32_t)> span =
+            [&](int32_t child) -> std::pair<int, int> {
+            if (child < 0)
+                return {rank[static_cast<size_t>(-child - 1)],
+                        rank[static_cast<size_t>(-child - 1)]};
             const BspNode& n = level_.bsp_nodes[static_cast<size_t>(child)];
             const auto f = span(n.front), b = span(n.back);
             const bool front_near = signed_distance(level_, n.plane, eye) >= 0.0;
@@ -219,10 +230,11 @@ TEST_P(BspInvariants, FrontToBackVisitsEveryLeafOnceNearSideFirst) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scales, BspInvariants,
-                         ::testing::Values(BspCase{"metres", 10.0f, glm::vec3(0.0f)},
-                                           BspCase{"far_from_origin", 50.0f, glm::vec3(1e5f, -1e5f, 1e5f)}),
-                         [](const ::testing::TestParamInfo<BspCase>& param_info) { return param_info.param.name; });
+INSTANTIATE_TEST_SUITE_P(
+    Scales, BspInvariants,
+    ::testing::Values(BspCase{"metres", 10.0f, glm::vec3(0.0f)},
+                      BspCase{"far_from_origin", 50.0f, glm::vec3(1e5f, -1e5f, 1e5f)}),
+    [](const ::testing::TestParamInfo<BspCase>& param_info) { return param_info.param.name; });
 
 TEST(Bsp, SplittingKeepsAreaAndCountsSplits) {
     SourceLevel source = soup_level(hard_soup(3, 400, 10.0f, 2.0f, glm::vec3(0.0f)));
@@ -238,7 +250,8 @@ TEST(Bsp, SplittingKeepsAreaAndCountsSplits) {
         const glm::dvec3 c(instance.vertices[instance.indices[t + 2]].position);
         before += 0.5 * glm::length(glm::cross(b - a, c - a));
     }
-    // The duplicated first row of the floor (8 quads' first triangles) is removed by the split stage.
+    // The duplicated first row of the floor (8 quads' first triangles) is removed by the split
+    // stage.
     before -= 8 * 0.5 * (10.0 / 4) * (10.0 / 4);
     const CompiledLevel& level = result.level;
     for (size_t t = 0; t < level.indices.size(); t += 3) {
@@ -265,8 +278,12 @@ TEST(Bsp, EmptyLevelHasOneEmptyLeafAndQueriesWork) {
 
 TEST(Bsp, SphereStopsAgainstAFloor) {
     const CompiledLevel level =
-        compile_level(soup_level({{-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {-5, 0, -5}, {5, 0, 5}, {5, 0, -5}}), {}).level;
-    const SweepHit hit = sweep_sphere(bsp_view(level), glm::dvec3(0, 2, 0), glm::dvec3(0, -2, 0), 0.5);
+        compile_level(
+            soup_level({{-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {-5, 0, -5}, {5, 0, 5}, {5, 0, -5}}),
+            {})
+            .level;
+    const SweepHit hit =
+        sweep_sphere(bsp_view(level), glm::dvec3(0, 2, 0), glm::dvec3(0, -2, 0), 0.5);
     ASSERT_TRUE(hit.hit);
     EXPECT_NEAR(hit.fraction, 1.5 / 4.0, 1e-12);
     EXPECT_NEAR(hit.normal.y, 1.0, 1e-12);

@@ -21,8 +21,8 @@ void expect_no_overlap_and_padding(const CompiledLevel& level) {
         for (size_t b = a + 1; b < level.charts.size(); ++b) {
             const Chart& d = level.charts[b];
             if (d.atlas != c.atlas) continue;
-            const bool apart = c.x + c.width <= d.x || d.x + d.width <= c.x || c.y + c.height <= d.y ||
-                               d.y + d.height <= c.y;
+            const bool apart = c.x + c.width <= d.x || d.x + d.width <= c.x ||
+                               c.y + c.height <= d.y || d.y + d.height <= c.y;
             ASSERT_TRUE(apart) << "charts " << a << " and " << b << " overlap";
         }
     }
@@ -48,7 +48,8 @@ TEST(Charts, NeverOverlapAndAlwaysKeepPadding) {
     const auto folder = fresh_folder("charts");
     CompileOptions compile;
     compile.charts.atlas_size = 256;  // small atlases: several pages, many shelves
-    const CompileResult result = compile_file(write_generated_level(folder, "charts", options), compile);
+    const CompileResult result =
+        compile_file(write_generated_level(folder, "charts", options), compile);
     EXPECT_GT(result.stats.atlases, 1u);
     EXPECT_GT(result.stats.fill_ratio, 0.05);
     EXPECT_LE(result.stats.fill_ratio, 1.0);
@@ -60,7 +61,8 @@ TEST(Charts, ChartsFollowDensity) {
     gltf.add_node({{"name", "floor"}, {"mesh", gltf.add_mesh(grid_mesh("floor", 4, 10.0, 0.0))}});
     CompileOptions compile;
     compile.charts.texels_per_metre = 8.0;
-    const CompileResult result = compile_file(gltf.write(fresh_folder("density"), "density"), compile);
+    const CompileResult result =
+        compile_file(gltf.write(fresh_folder("density"), "density"), compile);
     ASSERT_EQ(result.level.charts.size(), 1u) << "a flat connected floor is one chart";
     const Chart& c = result.level.charts[0];
     EXPECT_EQ(c.width, 80u + 2 * c.padding);

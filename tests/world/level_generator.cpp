@@ -28,7 +28,8 @@ uint64_t generated_triangle_count(const GeneratedLevelOptions& o) {
 
 GeneratedLevelOptions options_for_triangles(uint64_t triangles) {
     GeneratedLevelOptions o;
-    o.ground_cells = std::max(2, static_cast<int>(std::sqrt(0.2 * static_cast<double>(triangles) / 2.0)));
+    o.ground_cells =
+        std::max(2, static_cast<int>(std::sqrt(0.2 * static_cast<double>(triangles) / 2.0)));
     const double per_building = 0.8 * static_cast<double>(triangles) / o.buildings;
     o.building_cells = std::max(1, static_cast<int>(std::lround(std::sqrt(per_building / 10.0))));
     return o;
@@ -60,15 +61,17 @@ std::string write_generated_level(const std::filesystem::path& folder, const std
         const double w = spacing * (0.35 + 0.3 * random.next());
         const double d = spacing * (0.35 + 0.3 * random.next());
         const double h = 5.0 + 25.0 * random.next();
-        MeshData box = box_mesh("building_" + std::to_string(b),
-                                glm::vec3(static_cast<float>(cx - w / 2), 0.0f, static_cast<float>(cz - d / 2)),
-                                glm::vec3(static_cast<float>(cx + w / 2), static_cast<float>(h),
-                                          static_cast<float>(cz + d / 2)),
-                                o.building_cells, true);
+        MeshData box = box_mesh(
+            "building_" + std::to_string(b),
+            glm::vec3(static_cast<float>(cx - w / 2), 0.0f, static_cast<float>(cz - d / 2)),
+            glm::vec3(static_cast<float>(cx + w / 2), static_cast<float>(h),
+                      static_cast<float>(cz + d / 2)),
+            o.building_cells, true);
         box.material = b % 7 == 3 ? metal : concrete;
         gltf.add_node({{"name", "building_" + std::to_string(b)}, {"mesh", gltf.add_mesh(box)}});
     }
-    MeshData crate = box_mesh("crate", glm::vec3(-0.5f, 0.0f, -0.5f), glm::vec3(0.5f, 1.0f, 0.5f), 2, false);
+    MeshData crate =
+        box_mesh("crate", glm::vec3(-0.5f, 0.0f, -0.5f), glm::vec3(0.5f, 1.0f, 0.5f), 2, false);
     crate.material = metal;
     const int crate_mesh = gltf.add_mesh(crate);
     for (int c = 0; c < o.dynamic_crates; ++c) {
@@ -80,20 +83,23 @@ std::string write_generated_level(const std::filesystem::path& folder, const std
                        {"extras", {{"onelight", extras}}}});
     }
     if (o.lights) {
-        const int sun = gltf.add_light({{"type", "directional"}, {"intensity", 10000.0}, {"color", {1.0, 0.95, 0.9}}});
+        const int sun = gltf.add_light(
+            {{"type", "directional"}, {"intensity", 10000.0}, {"color", {1.0, 0.95, 0.9}}});
         // Turned 60 degrees about x: the light travels down and towards -z.
         gltf.add_node({{"name", "sun"},
                        {"rotation", {-0.5, 0.0, 0.0, 0.8660254}},
                        {"extensions", {{"KHR_lights_punctual", {{"light", sun}}}}}});
         for (int p = 0; p < 6; ++p) {
-            const int lamp = gltf.add_light({{"type", "point"}, {"intensity", 20000.0}, {"range", 40.0}});
+            const int lamp =
+                gltf.add_light({{"type", "point"}, {"intensity", 20000.0}, {"range", 40.0}});
             gltf.add_node({{"name", "lamp_" + std::to_string(p)},
                            {"translation", {-75.0 + 30.0 * p, 4.0, 10.0 * (p % 3) - 10.0}},
                            {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}}});
         }
-        const int spot = gltf.add_light({{"type", "spot"},
-                                         {"intensity", 50000.0},
-                                         {"spot", {{"innerConeAngle", 0.3}, {"outerConeAngle", 0.6}}}});
+        const int spot =
+            gltf.add_light({{"type", "spot"},
+                            {"intensity", 50000.0},
+                            {"spot", {{"innerConeAngle", 0.3}, {"outerConeAngle", 0.6}}}});
         gltf.add_node({{"name", "stage_spot"},
                        {"translation", {0.0, 12.0, 0.0}},
                        {"rotation", {-0.7071068, 0.0, 0.0, 0.7071068}},
@@ -113,8 +119,9 @@ std::string write_generated_level(const std::filesystem::path& folder, const std
                        {"extensions", {{"KHR_lights_punctual", {{"light", flash}}}}},
                        {"extras", {{"onelight", {{"role", "effect"}}}}}});
     }
-    const int camera = gltf.add_camera({{"type", "perspective"},
-                                        {"perspective", {{"yfov", 1.0}, {"znear", 0.05}, {"aspectRatio", 1.7778}}}});
+    const int camera = gltf.add_camera(
+        {{"type", "perspective"},
+         {"perspective", {{"yfov", 1.0}, {"znear", 0.05}, {"aspectRatio", 1.7778}}}});
     gltf.add_node({{"name", "overview"},
                    {"camera", camera},
                    {"translation", {0.0, 60.0, 120.0}},
@@ -123,12 +130,17 @@ std::string write_generated_level(const std::filesystem::path& folder, const std
     gltf.add_node({{"name", "player_start"},
                    {"translation", {0.0, 1.7, 30.0}},
                    {"extras", {{"onelight", {{"spawn", true}}}}}});
-    gltf.add_node({{"name", "plaza_probe"},
-                   {"translation", {0.0, 2.0, 0.0}},
-                   {"extras", {{"onelight", {{"probe", {{"box_min", {-20.0, 0.0, -20.0}}, {"box_max", {20.0, 10.0, 20.0}}}}}}}}});
+    gltf.add_node(
+        {{"name", "plaza_probe"},
+         {"translation", {0.0, 2.0, 0.0}},
+         {"extras",
+          {{"onelight",
+            {{"probe", {{"box_min", {-20.0, 0.0, -20.0}}, {"box_max", {20.0, 10.0, 20.0}}}}}}}}});
     gltf.add_node({{"name", "level_settings"},
-                   {"extras", {{"onelight", {{"grid", {{"min", {-100.0, -1.0, -100.0}}, {"max", {100.0, 40.0, 100.0}}}},
-                                             {"exposure", 11.0}}}}}});
+                   {"extras",
+                    {{"onelight",
+                      {{"grid", {{"min", {-100.0, -1.0, -100.0}}, {"max", {100.0, 40.0, 100.0}}}},
+                       {"exposure", 11.0}}}}}});
     return gltf.write(folder, name);
 }
 

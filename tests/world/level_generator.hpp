@@ -10,7 +10,7 @@
 namespace onelight::test {
 
 struct GeneratedLevelOptions {
-    int ground_cells = 160;   // ground is ground_cells^2 quads
+    int ground_cells = 160;  // ground is ground_cells^2 quads
     int buildings = 80;
     int building_cells = 16;  // quads per side of each building face (5 faces, open bottom)
     int dynamic_crates = 8;

@@ -20,7 +20,8 @@ const world::CompiledLevel& sample_level() {
     static const world::CompiledLevel level = [] {
         GeneratedLevelOptions options = options_for_triangles(600);
         options.buildings = 4;
-        return compile_file(write_generated_level(fresh_folder("package"), "package", options)).level;
+        return compile_file(write_generated_level(fresh_folder("package"), "package", options))
+            .level;
     }();
     return level;
 }
@@ -50,16 +51,18 @@ void fix_crcs(std::vector<uint8_t>& bytes) {
     }
     header.table_crc32 = 0;
     std::memcpy(bytes.data(), &header, sizeof header);
-    header.table_crc32 = crc32(bytes.data(), sizeof(FileHeader) + header.section_count * sizeof(SectionEntry));
+    header.table_crc32 =
+        crc32(bytes.data(), sizeof(FileHeader) + header.section_count * sizeof(SectionEntry));
     std::memcpy(bytes.data(), &header, sizeof header);
 }
 
 /// Overwrites a uint32 field of record `record` in section `id`, then fixes the CRCs.
-std::vector<uint8_t> patched(std::vector<uint8_t> bytes, uint32_t id, uint32_t record, size_t field_offset,
-                             uint32_t value) {
+std::vector<uint8_t> patched(std::vector<uint8_t> bytes, uint32_t id, uint32_t record,
+                             size_t field_offset, uint32_t value) {
     const SectionEntry e = entry(bytes, id);
     EXPECT_LT(record, e.count);
-    std::memcpy(bytes.data() + e.offset + uint64_t(record) * e.element_size + field_offset, &value, 4);
+    std::memcpy(bytes.data() + e.offset + uint64_t(record) * e.element_size + field_offset, &value,
+                4);
     fix_crcs(bytes);
     return bytes;
 }
@@ -97,8 +100,10 @@ TEST(Package, BakedSectionsSurviveARoundTrip) {
 TEST(Package, CompileIsDeterministic) {
     GeneratedLevelOptions options = options_for_triangles(2000);
     options.buildings = 6;
-    const std::string path = write_generated_level(fresh_folder("determinism"), "determinism", options);
-    EXPECT_EQ(serialize_package(compile_file(path).level), serialize_package(compile_file(path).level));
+    const std::string path =
+        write_generated_level(fresh_folder("determinism"), "determinism", options);
+    EXPECT_EQ(serialize_package(compile_file(path).level),
+              serialize_package(compile_file(path).level));
 }
 
 TEST(Package, EveryTruncationIsRejected) {
@@ -144,26 +149,45 @@ TEST(Package, OutOfRangeIndicesAreRejected) {
     expect_rejected(patched(bytes, section_indices, 5, 0, huge), "section indices record 5: index");
     expect_rejected(patched(bytes, section_surfaces, 0, offsetof(DiskSurface, material), huge),
                     "section surfaces record 0: material");
-    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, chart), huge), "chart");
-    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, primary_light), huge), "primary_light");
-    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, index_count), 3u * 0x20000000u), "indices [");
-    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, first_given_up), huge),
-                    "given-up lights");
+    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, chart), huge),
+                    "chart");
+    expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, primary_light), huge),
+                    "primary_light");
+    expect_rejected(
+        patched(bytes, section_surfaces, 1, offsetof(DiskSurface, index_count), 3u * 0x20000000u),
+        "indices [");
+    expect_rejected(
+        patched(bytes, section_surfaces, 1, offsetof(DiskSurface, first_given_up), huge),
+        "given-up lights");
     expect_rejected(patched(bytes, section_surfaces, 1, offsetof(DiskSurface, leaf), huge), "leaf");
-    expect_rejected(patched(bytes, section_bsp_nodes, 0, offsetof(DiskBspNode, plane), huge), "section bsp_nodes");
-    expect_rejected(patched(bytes, section_bsp_nodes, 1, offsetof(DiskBspNode, front), 0), "child node 0");
-    expect_rejected(patched(bytes, section_bsp_leaves, 0, offsetof(DiskBspLeaf, triangle_count), huge), "triangles");
-    expect_rejected(patched(bytes, section_bsp_leaves, 0, offsetof(DiskBspLeaf, first_surface), huge), "surfaces");
-    expect_rejected(patched(bytes, section_charts, 0, offsetof(DiskChart, atlas), huge), "section charts");
-    expect_rejected(patched(bytes, section_charts, 0, offsetof(DiskChart, x), huge), "section charts");
-    expect_rejected(patched(bytes, section_materials, 0, offsetof(DiskMaterial, normal_texture), 99), "normal_texture");
-    expect_rejected(patched(bytes, section_materials, 0, offsetof(DiskMaterial, name) + 4, huge), "name string");
-    expect_rejected(patched(bytes, section_lights, 0, offsetof(DiskLight, name), huge), "section lights");
-    expect_rejected(patched(bytes, section_dynamic_meshes, 0, offsetof(DiskDynamicMesh, vertex_count), huge),
-                    "section dynamic_meshes");
+    expect_rejected(patched(bytes, section_bsp_nodes, 0, offsetof(DiskBspNode, plane), huge),
+                    "section bsp_nodes");
+    expect_rejected(patched(bytes, section_bsp_nodes, 1, offsetof(DiskBspNode, front), 0),
+                    "child node 0");
+    expect_rejected(
+        patched(bytes, section_bsp_leaves, 0, offsetof(DiskBspLeaf, triangle_count), huge),
+        "triangles");
+    expect_rejected(
+        patched(bytes, section_bsp_leaves, 0, offsetof(DiskBspLeaf, first_surface), huge),
+        "surfaces");
+    expect_rejected(patched(bytes, section_charts, 0, offsetof(DiskChart, atlas), huge),
+                    "section charts");
+    expect_rejected(patched(bytes, section_charts, 0, offsetof(DiskChart, x), huge),
+                    "section charts");
+    expect_rejected(
+        patched(bytes, section_materials, 0, offsetof(DiskMaterial, normal_texture), 99),
+        "normal_texture");
+    expect_rejected(patched(bytes, section_materials, 0, offsetof(DiskMaterial, name) + 4, huge),
+                    "name string");
+    expect_rejected(patched(bytes, section_lights, 0, offsetof(DiskLight, name), huge),
+                    "section lights");
+    expect_rejected(
+        patched(bytes, section_dynamic_meshes, 0, offsetof(DiskDynamicMesh, vertex_count), huge),
+        "section dynamic_meshes");
     expect_rejected(patched(bytes, section_dynamic_indices, 0, 0, huge), "section dynamic_meshes");
-    expect_rejected(patched(bytes, section_entities, 0, offsetof(DiskEntity, dynamic_mesh_count), huge),
-                    "section entities");
+    expect_rejected(
+        patched(bytes, section_entities, 0, offsetof(DiskEntity, dynamic_mesh_count), huge),
+        "section entities");
     expect_rejected(patched(bytes, section_given_up_lights, 0, 0, huge), "section given_up_lights");
     expect_rejected(patched(bytes, section_atlases, 0, 0, 0), "section atlases");
 }
@@ -172,7 +196,8 @@ TEST(Package, TableEntriesAreValidated) {
     const std::vector<uint8_t> bytes = serialize_package(sample_level());
     const auto table_patch = [&](uint32_t index, size_t field, uint64_t value, size_t width) {
         std::vector<uint8_t> b = bytes;
-        std::memcpy(b.data() + sizeof(FileHeader) + index * sizeof(SectionEntry) + field, &value, width);
+        std::memcpy(b.data() + sizeof(FileHeader) + index * sizeof(SectionEntry) + field, &value,
+                    width);
         fix_crcs(b);
         return b;
     };

@@ -13,8 +13,8 @@ namespace onelight::world {
 struct ChartOptions {
     double texels_per_metre = 16.0;  // requested density; a chart too big for an atlas gets less
     bool density_from_command_line = false;  // when false, a level's own density wins
-    uint32_t atlas_size = 1024;      // texels per side of a generated atlas
-    uint32_t padding = 2;            // texels kept free on each side of a chart, >= 2
+    uint32_t atlas_size = 1024;              // texels per side of a generated atlas
+    uint32_t padding = 2;                    // texels kept free on each side of a chart, >= 2
     double max_normal_angle_degrees = 40.0;  // between a triangle and its chart's normal
 };
 
