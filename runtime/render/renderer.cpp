@@ -394,19 +394,6 @@ void beginColorRendering(VkCommandBuffer cmd, const RendererState& s) {
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
-vk::ImageBarrier barrier(VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
-                         VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                         VkAccessFlags dstAccess) {
-    vk::ImageBarrier b;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcStage = srcStage;
-    b.srcAccess = srcAccess;
-    b.dstStage = dstStage;
-    b.dstAccess = dstAccess;
-    return b;
-}
-
 void copyImageToBuffer(VkCommandBuffer cmd, VkImage image, uint32_t width, uint32_t height,
                        const vk::Buffer& buffer) {
     VkBufferImageCopy copy{};
@@ -646,20 +633,22 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
     const VkPipelineStageFlags colorStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
     const VkPipelineStageFlags depthStages =
         VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
-    vk::imageBarrier(cmd, s.hdr,
-                     barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                             VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                             0, colorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
+    vk::imageBarrier(
+        cmd, s.hdr,
+        vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                          colorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
     if (s.msaaColor.image)
         vk::imageBarrier(
             cmd, s.msaaColor,
-            barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, colorStage,
-                    0, colorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
-    vk::imageBarrier(cmd, s.depth,
-                     barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                             depthStages, 0, depthStages,
-                             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                                 VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
+            vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                              colorStage, 0, colorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
+    vk::imageBarrier(
+        cmd, s.depth,
+        vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                          depthStages, 0, depthStages,
+                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
     beginColorRendering(cmd, s);
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &s.vertices.buffer, &zero);
@@ -700,13 +689,15 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
     // Tonemap pass.
     vk::imageBarrier(
         cmd, s.hdr,
-        barrier(VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                colorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
-    vk::imageBarrier(cmd, s.display,
-                     barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                             VK_PIPELINE_STAGE_TRANSFER_BIT, 0, colorStage,
-                             VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
+        vk::layoutBarrier(VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, colorStage,
+                          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+    vk::imageBarrier(
+        cmd, s.display,
+        vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, 0, colorStage,
+                          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
     {
         VkRenderingAttachmentInfo color{};
         color.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
@@ -736,15 +727,17 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
     // Outputs.
     vk::imageBarrier(
         cmd, s.display,
-        barrier(VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                colorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_TRANSFER_READ_BIT));
+        vk::layoutBarrier(VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, colorStage,
+                          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_TRANSFER_READ_BIT));
     if (output.readback) {
         vk::imageBarrier(
             cmd, s.hdr,
-            barrier(VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                    VK_ACCESS_TRANSFER_READ_BIT));
+            vk::layoutBarrier(VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT));
         copyImageToBuffer(cmd, s.hdr.image, s.width, s.height, s.readbackHdr);
         copyImageToBuffer(cmd, s.display.image, s.width, s.height, s.readbackDisplay);
     }
@@ -754,10 +747,11 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
         swapImage = output.swapchain->images.at(output.swapchainImage);
         swapWidth = std::min(output.swapchain->extent.width, s.width);
         swapHeight = std::min(output.swapchain->extent.height, s.height);
-        vk::imageBarrier(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
-                         barrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                 VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                 VK_ACCESS_TRANSFER_WRITE_BIT));
+        vk::imageBarrier(
+            cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
+            vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                              VK_ACCESS_TRANSFER_WRITE_BIT));
         VkImageCopy copy{};
         copy.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         copy.dstSubresource = copy.srcSubresource;
@@ -772,18 +766,20 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
                 vk::createHostBuffer(ctx, s.readbackSwapchain, bytes,
                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT);
             }
-            vk::imageBarrier(cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
-                             barrier(layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT));
+            vk::imageBarrier(
+                cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
+                vk::layoutBarrier(layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT));
             layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
             copyImageToBuffer(cmd, swapImage, swapWidth, swapHeight, s.readbackSwapchain);
         }
         vk::imageBarrier(
             cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
-            barrier(layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                    VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT,
-                    VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0));
+            vk::layoutBarrier(layout, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT,
+                              VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+                              VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0));
     }
     VK_CHECK(vkEndCommandBuffer(cmd));
 

@@ -124,21 +124,6 @@ void drawDynamicCasters(RendererState& s, VkCommandBuffer cmd, const ShadowView&
     }
 }
 
-vk::ImageBarrier layersBarrier(uint32_t first, uint32_t count, VkImageLayout from, VkImageLayout to,
-                               VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
-                               VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
-    vk::ImageBarrier b;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcStage = srcStage;
-    b.srcAccess = srcAccess;
-    b.dstStage = dstStage;
-    b.dstAccess = dstAccess;
-    b.baseLayer = first;
-    b.layerCount = count;
-    return b;
-}
-
 constexpr VkPipelineStageFlags kDepthStages =
     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
 
@@ -193,21 +178,21 @@ void createShadows(RendererState& s) {
             if (!image->image) continue;
             vk::imageBarrier(
                 cmd, *image,
-                layersBarrier(0, VK_REMAINING_ARRAY_LAYERS, VK_IMAGE_LAYOUT_UNDEFINED,
-                              VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                              VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                              VK_ACCESS_TRANSFER_WRITE_BIT));
+                vk::layersBarrier(0, VK_REMAINING_ARRAY_LAYERS, VK_IMAGE_LAYOUT_UNDEFINED,
+                                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                  VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT));
             const VkClearDepthStencilValue one{1.0f, 0};
             const VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0,
                                                 VK_REMAINING_ARRAY_LAYERS};
             vkCmdClearDepthStencilImage(cmd, image->image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                                         &one, 1, &range);
-            vk::imageBarrier(
-                cmd, *image,
-                layersBarrier(0, VK_REMAINING_ARRAY_LAYERS, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                              VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+            vk::imageBarrier(cmd, *image,
+                             vk::layersBarrier(
+                                 0, VK_REMAINING_ARRAY_LAYERS, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
         }
     });
 
@@ -265,14 +250,14 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
         if (s.lightSlot[light] == kNoIndex) continue;
         ShadowSlot& slot = s.slots[s.lightSlot[light]];
         if (slot.staticValid) continue;
-        vk::imageBarrier(
-            cmd, s.staticShadows,
-            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                          VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
-                          kDepthStages,
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
+        vk::imageBarrier(cmd, s.staticShadows,
+                         vk::layersBarrier(slot.firstView, slot.viewCount,
+                                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                           VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                           VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                                           VK_ACCESS_SHADER_READ_BIT, kDepthStages,
+                                           VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
             beginDepthRendering(cmd, s.views[v].staticLayer, size, true);
             drawStaticCasters(s, cmd, s.views[v]);
@@ -281,11 +266,12 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
         }
         vk::imageBarrier(
             cmd, s.staticShadows,
-            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT));
+            vk::layersBarrier(
+                slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
+                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT));
         slot.staticValid = true;
     }
     if (s.dynamicMeshes.empty()) return rendered;
@@ -296,16 +282,16 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
         const ShadowSlot& slot = s.slots[s.lightSlot[light]];
         vk::imageBarrier(
             cmd, s.staticShadows,
-            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_ACCESS_TRANSFER_READ_BIT));
+            vk::layersBarrier(
+                slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
+                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT));
         vk::imageBarrier(
             cmd, s.frameShadows,
-            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_ACCESS_TRANSFER_WRITE_BIT));
+            vk::layersBarrier(
+                slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
+                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT));
         VkImageCopy copy{};
         copy.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, slot.firstView, slot.viewCount};
         copy.dstSubresource = copy.srcSubresource;
@@ -314,16 +300,18 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
                        s.frameShadows.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
         vk::imageBarrier(
             cmd, s.staticShadows,
-            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          0, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+            vk::layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
         vk::imageBarrier(
             cmd, s.frameShadows,
-            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                          VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_ACCESS_TRANSFER_WRITE_BIT, kDepthStages,
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
+            vk::layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                              kDepthStages,
+                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
             beginDepthRendering(cmd, s.views[v].frameLayer, size, false);
             drawDynamicCasters(s, cmd, s.views[v], entityTransforms);
@@ -331,10 +319,11 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
         }
         vk::imageBarrier(
             cmd, s.frameShadows,
-            layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+            vk::layersBarrier(slot.firstView, slot.viewCount,
+                              VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
+                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
     }
     return rendered;
 }

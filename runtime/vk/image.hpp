@@ -63,6 +63,31 @@ struct ImageBarrier {
     uint32_t baseLayer = 0, layerCount = VK_REMAINING_ARRAY_LAYERS;
 };
 
+// A layout transition over every mip and layer.
+inline ImageBarrier layoutBarrier(VkImageLayout from, VkImageLayout to,
+                                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                                  VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+    ImageBarrier b;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcStage = srcStage;
+    b.srcAccess = srcAccess;
+    b.dstStage = dstStage;
+    b.dstAccess = dstAccess;
+    return b;
+}
+
+// The same over layers [first, first + count) only.
+inline ImageBarrier layersBarrier(uint32_t first, uint32_t count, VkImageLayout from,
+                                  VkImageLayout to, VkPipelineStageFlags srcStage,
+                                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
+                                  VkAccessFlags dstAccess) {
+    ImageBarrier b = layoutBarrier(from, to, srcStage, srcAccess, dstStage, dstAccess);
+    b.baseLayer = first;
+    b.layerCount = count;
+    return b;
+}
+
 // Records one image memory barrier.
 void imageBarrier(VkCommandBuffer cmd, const Image& image, const ImageBarrier& barrier);
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
