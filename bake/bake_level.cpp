@@ -9,6 +9,7 @@
 #include "bake/embree/bake_scene.hpp"
 #include "bake/lightmap/texel_placement.hpp"
 #include "world/compile/static_split.hpp"
+#include "world/light_grid_sample.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_writer.hpp"
 
@@ -94,11 +95,16 @@ ProbeCaptureSettings probe_settings(const BakeOptions& options) {
             p.samplesPerTexel = 256;
             break;
     }
+    if (options.probe_face_size) p.faceSize = options.probe_face_size;
+    if (options.probe_samples) p.samplesPerTexel = options.probe_samples;
     return p;
 }
 
-ShardRange shard_range(uint64_t texels, uint64_t cells, uint32_t index, uint32_t count) {
+ShardRange shard_range(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
+                       uint32_t count) {
     ShardRange r;
+    r.probe_begin = probes * index / count;
+    r.probe_end = probes * (index + 1) / count;
     r.texel_begin = texels * index / count;
     r.texel_end = texels * (index + 1) / count;
     r.cell_begin = cells * index / count;
@@ -151,8 +157,10 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
     const std::vector<TexelSample> samples = place_texels(level);
     const uint64_t texel_count = total_texels(level);
     world::LightGrid grid = layout_light_grid(level, grid_settings(options));
-    const ShardRange range =
-        shard_range(texel_count, grid.cells.size(), options.shard_index, options.shard_count);
+    const world::LightGrid grid_layout = grid;
+    const std::vector<ProbePlacement> placements = placeProbes(level);
+    const ShardRange range = shard_range(texel_count, grid.cells.size(), placements.size(),
+                                         options.shard_index, options.shard_count);
     world::BakedLighting& baked = result.baked;
     baked.texels.assign(texel_count, world::LightmapTexel{});
     baked.shadow_mask.assign(texel_count, 0);
@@ -193,12 +201,53 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
     }
     baked.grid = std::move(grid);
 
-    // 5. Finish (a whole bake only; parts are finished by merge).
+    // 5. Environment probes (only where the level has them: placeProbes decides).
+    start = std::chrono::steady_clock::now();
+    if (!placements.empty()) {
+        const ProbeCaptureSettings ps = probe_settings(options);
+        RayCounts rays;
+        const std::vector<glm::vec3> average = probe_average_irradiance(
+            scene, lights, grid_settings(options), grid_layout, placements, rays);
+        baked.probes = bakeProbes(scene, lights, placements, average, ps, range.probe_begin,
+                                  range.probe_end, options.show_progress, rays);
+        report.stages.push_back({"probes", seconds_since(start), rays, baked.probes.size()});
+        report.probes_total = placements.size();
+        report.probes_baked = baked.probes.size();
+        report.probe_face_size = ps.faceSize;
+        report.probe_samples_per_texel = ps.samplesPerTexel;
+        if (!baked.probes.empty())
+            report.probe_bytes = package::encode_probe_section(baked.probes).bytes.size();
+    }
+
+    // 6. Finish (a whole bake only; parts are finished by merge).
     start = std::chrono::steady_clock::now();
     if (options.shard_count == 1) finish_baked_lighting(level, baked);
     report.stages.push_back({"dilate", seconds_since(start), {}, texel_count});
     report.peak_memory_bytes = peak_memory_bytes();
     return result;
+}
+
+std::vector<glm::vec3> probe_average_irradiance(const BakeScene& scene, const BakeLights& lights,
+                                                const GridSettings& settings,
+                                                const world::LightGrid& layout,
+                                                const std::vector<ProbePlacement>& probes,
+                                                RayCounts& rays) {
+    std::vector<glm::vec3> average(probes.size(), glm::vec3(0.0f));
+    if (layout.cells.empty()) return average;
+    world::LightGrid scratch = layout;
+    std::vector<uint8_t> baked(scratch.cells.size(), 0);
+    for (size_t i = 0; i < probes.size(); ++i) {
+        const world::LightGridSample corners = world::sampleLightGrid(scratch, probes[i].position);
+        for (size_t k = 0; k < corners.cells.size(); ++k) {
+            const uint32_t c = corners.cells[k];
+            if (corners.weights[k] <= 0.0f || baked[c]) continue;
+            rays += bake_light_grid(scene, lights, settings, c, c + 1, scratch, nullptr).rays;
+            baked[c] = 1;
+        }
+        average[i] =
+            ambientCubeAverage(world::sampleLightGrid(scratch, probes[i].position).ambientCube);
+    }
+    return average;
 }
 
 void finish_baked_lighting(const world::CompiledLevel& level, world::BakedLighting& baked) {
@@ -232,13 +281,18 @@ std::string merge_baked_lighting(const world::CompiledLevel& level,
     merged = parts[0];
     for (uint32_t i = 0; i < count; ++i) {
         const world::BakedLighting& p = *by_index[i];
-        const ShardRange r = shard_range(texels, p.grid.cells.size(), i, count);
+        const ShardRange r = shard_range(texels, p.grid.cells.size(), 0, i, count);
         for (uint64_t t = r.texel_begin; t < r.texel_end; ++t) {
             merged.texels[t] = p.texels[t];
             merged.shadow_mask[t] = p.shadow_mask[t];
         }
         for (uint64_t c = r.cell_begin; c < r.cell_end; ++c) merged.grid.cells[c] = p.grid.cells[c];
     }
+    // Each part holds its contiguous range of the probes: in shard order they are the whole list.
+    merged.probes.clear();
+    for (uint32_t i = 0; i < count; ++i)
+        merged.probes.insert(merged.probes.end(), by_index[i]->probes.begin(),
+                             by_index[i]->probes.end());
     finish_baked_lighting(level, merged);
     return "";
 }

@@ -1,8 +1,8 @@
 // The bake pipeline: import -> Embree scene of the static world -> world compile with the
 // shadowed dominant-primary function -> lightmap texels (shadow masks + directional secondary
-// irradiance) -> light grid -> dilation -> package. Sharding bakes a contiguous part of the
-// texels and of the grid cells; merge joins the parts and finishes them exactly as a whole
-// bake does, so the package is byte-identical.
+// irradiance) -> light grid -> environment probes -> dilation -> package. Sharding bakes a
+// contiguous part of the texels, of the grid cells and of the probes; merge joins the parts
+// and finishes them exactly as a whole bake does, so the package is byte-identical.
 #pragma once
 
 #include <cstdint>
@@ -38,13 +38,14 @@ struct BakeOptions {
     bool show_progress = true;
     // Overrides of the quality preset; 0 keeps the preset.
     uint32_t shadow_samples = 0, indirect_samples = 0, grid_samples = 0;
+    uint32_t probe_face_size = 0, probe_samples = 0;  // a power of two; paths per texel
 };
 
 /// Sample counts of a quality preset, overrides applied.
 LightmapSettings lightmap_settings(const BakeOptions& options);
 GridSettings grid_settings(const BakeOptions& options);
 /// Environment probe capture of a quality preset: face size draft 32, default 64, high 128;
-/// paths per texel 16, 64, 256.
+/// paths per texel 16, 64, 256; overrides applied.
 ProbeCaptureSettings probe_settings(const BakeOptions& options);
 
 struct BakeResult {
@@ -58,12 +59,24 @@ struct BakeResult {
 /// std::runtime_error on Embree failures.
 BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& options);
 
-/// Texels [begin, end) and cells [begin, end) that shard i of n owns: contiguous ranges.
+/// Texels, cells and probes [begin, end) that shard i of n owns: contiguous ranges.
 struct ShardRange {
     uint64_t texel_begin = 0, texel_end = 0;
     uint64_t cell_begin = 0, cell_end = 0;
+    uint64_t probe_begin = 0, probe_end = 0;
 };
-ShardRange shard_range(uint64_t texels, uint64_t cells, uint32_t index, uint32_t count);
+ShardRange shard_range(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
+                       uint32_t count);
+
+/// E_avg of each probe (probe_capture.hpp): ambientCubeAverage of the light grid sampled at the
+/// capture point exactly as world::sampleLightGrid samples the finished grid. Only the corner
+/// cells the sample weighs are baked, into a scratch copy of `layout` (seeded per cell, so they
+/// equal the grid stage's cells): a shard gets the whole grid's value without the whole grid.
+std::vector<glm::vec3> probe_average_irradiance(const BakeScene& scene, const BakeLights& lights,
+                                                const GridSettings& settings,
+                                                const world::LightGrid& layout,
+                                                const std::vector<ProbePlacement>& probes,
+                                                RayCounts& rays);
 
 /// The steps after every texel is baked: dilation. Makes a part complete (shard 0 of 1).
 void finish_baked_lighting(const world::CompiledLevel& level, world::BakedLighting& baked);

@@ -1,5 +1,5 @@
 // Baked lighting in memory: what the baker produces and what the runtime reads back from the
-// package's sections 32..34 (their on-disk twins are in package/format.hpp). Plain data.
+// package's sections 32..35 (their on-disk twins are in package/format.hpp). Plain data.
 #pragma once
 
 #include <array>
@@ -36,10 +36,22 @@ struct LightGrid {
     std::vector<LightGridCell> cells;  // x fastest
 };
 
+/// One baked environment probe in memory (DiskProbe's twin): its prefiltered, normalised
+/// radiance as RGB9E5 texels, mips from the largest, each 6 faces of rows from the top.
+struct EnvironmentProbe {
+    glm::vec3 position{0.0f};                // metres, world: the capture point
+    glm::vec3 box_min{0.0f}, box_max{0.0f};  // box projection when min < max on every axis
+    glm::vec3 irradiance_average{1.0f};      // lux, RGB: E_avg (probeNormalize)
+    uint32_t face_size = 0, mip_count = 0;   // mip 0 edge (a power of two); down to 1x1
+    uint32_t entity = kNone;                 // the probe entity, kNone when placed
+    std::vector<uint32_t> texels;            // RGB9E5, 6 * sum_m (face_size >> m)^2
+};
+
 struct BakedLighting {
     std::vector<LightmapTexel> texels;  // every atlas in order, row-major
     std::vector<uint8_t> shadow_mask;   // same order: own primary's visibility 0..255
     LightGrid grid;
+    std::vector<EnvironmentProbe> probes;       // section 35; a part holds its shard's range
     uint32_t shard_index = 0, shard_count = 1;  // shard_count > 1: an unmerged part
 };
 

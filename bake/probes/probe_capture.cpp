@@ -127,11 +127,13 @@ world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& plac
 std::vector<world::EnvironmentProbe> bakeProbes(const BakeScene& scene, const BakeLights& lights,
                                                 const std::vector<ProbePlacement>& placements,
                                                 const std::vector<glm::vec3>& averageIrradiance,
-                                                const ProbeCaptureSettings& settings,
-                                                bool showProgress, RayCounts& rays) {
+                                                const ProbeCaptureSettings& settings, size_t begin,
+                                                size_t end, bool showProgress, RayCounts& rays) {
     std::vector<world::EnvironmentProbe> probes;
-    Progress progress("probes", uint64_t(placements.size()) * 6 * settings.faceSize, showProgress);
-    for (size_t i = 0; i < placements.size(); ++i) {
+    end = std::min(end, placements.size());
+    begin = std::min(begin, end);
+    Progress progress("probes", uint64_t(end - begin) * 6 * settings.faceSize, showProgress);
+    for (size_t i = begin; i < end; ++i) {
         Cubemap cube = captureProbe(scene, lights, placements[i].position, uint32_t(i), settings,
                                     &progress, rays);
         const glm::vec3 average =

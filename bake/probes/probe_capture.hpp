@@ -80,13 +80,14 @@ Cubemap unpackProbeTexels(const world::EnvironmentProbe& probe);
 world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& placement,
                                     glm::vec3 averageIrradiance, const PrefilterOptions& options);
 
-// Every probe of `placements`, in order: captured (probe i seeds with i), normalised by
-// averageIrradiance[i] (ambientCubeAverage of the light grid as the runtime samples it at the
-// capture point), prefiltered, packed. One progress bar, "probes", over every probe's rows.
+// Probes [begin, end) of `placements`, in order: captured (probe i seeds with i, so a shard
+// of the range gives the same probes as the whole), normalised by averageIrradiance[i]
+// (ambientCubeAverage of the light grid as the runtime samples it at the capture point),
+// prefiltered, packed. One progress bar, "probes", over every probe's rows.
 std::vector<world::EnvironmentProbe> bakeProbes(const BakeScene& scene, const BakeLights& lights,
                                                 const std::vector<ProbePlacement>& placements,
                                                 const std::vector<glm::vec3>& averageIrradiance,
-                                                const ProbeCaptureSettings& settings,
-                                                bool showProgress, RayCounts& rays);
+                                                const ProbeCaptureSettings& settings, size_t begin,
+                                                size_t end, bool showProgress, RayCounts& rays);
 
 }  // namespace onelight::bake

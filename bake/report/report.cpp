@@ -58,6 +58,11 @@ std::string report_json(const BakeReport& r) {
     j["light_grid"] = {{"cells", r.grid_cells},
                        {"cells_inside_solid", r.grid_cells_inside},
                        {"samples_per_cell", r.grid_samples_per_cell}};
+    j["probes"] = {{"placed", r.probes_total},
+                   {"baked", r.probes_baked},
+                   {"face_size", r.probe_face_size},
+                   {"paths_per_texel", r.probe_samples_per_texel},
+                   {"bytes", r.probe_bytes}};
     return j.dump(2) + "\n";
 }
 
@@ -101,6 +106,14 @@ std::string report_summary(const BakeReport& r) {
                   static_cast<unsigned long long>(r.grid_cells),
                   static_cast<unsigned long long>(r.grid_cells_inside));
     s += line;
+    if (r.probes_total) {
+        std::snprintf(line, sizeof line,
+                      "  probes     %llu of %llu baked, face %u, %u paths/texel, %.1f KiB\n",
+                      static_cast<unsigned long long>(r.probes_baked),
+                      static_cast<unsigned long long>(r.probes_total), r.probe_face_size,
+                      r.probe_samples_per_texel, double(r.probe_bytes) / 1024.0);
+        s += line;
+    }
     return s;
 }
 

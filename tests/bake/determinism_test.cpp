@@ -8,7 +8,9 @@
 
 #include "bake/dominant/dominant_primary.hpp"
 #include "bake_scenes.hpp"
+#include "shading.hpp"
 #include "world/compile/static_split.hpp"
+#include "world/light_grid_sample.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
 
@@ -27,17 +29,46 @@ world::SourceLevel small_room() {
     return level;
 }
 
+// The room with a glossy block and three authored probes (one box-projected), so that the
+// probe stage runs and two shards split its probes 1 + 2.
+world::SourceLevel small_room_with_probes() {
+    world::SourceLevel level = small_room();
+    world::Material glossy = level.materials[0];
+    glossy.name = "glossy";
+    glossy.material_class = world::MaterialClass::dielectric;
+    glossy.specular_color = glm::vec3(0.04f);
+    glossy.gloss = 0.8f;
+    level.materials.push_back(glossy);
+    for (world::MeshInstance& m : level.instances)
+        if (m.node_name == "block") m.material = 1;
+    for (const glm::vec3 p :
+         {glm::vec3(-1.0f, 0.0f, 1.0f), glm::vec3(0.0f, 0.5f, 1.2f), glm::vec3(1.0f, 0.0f, 0.8f)}) {
+        world::Entity e;
+        e.name = "probe" + std::to_string(level.entities.size());
+        e.flags = world::entity_probe;
+        e.position = p;
+        if (level.entities.empty()) {
+            e.probe_box_min = {-1.5f, -1.0f, 0.0f};
+            e.probe_box_max = {1.5f, 1.0f, 2.0f};
+        }
+        level.entities.push_back(e);
+    }
+    return level;
+}
+
 BakeOptions fast_options() {
     BakeOptions o = test::test_options(4.0f);
     o.indirect_samples = 16;
     o.shadow_samples = 4;
     o.grid_samples = 16;
     o.grid_cell_size = 0.75f;
+    o.probe_face_size = 8;
+    o.probe_samples = 4;
     return o;
 }
 
 TEST(BakeDeterminism, OneAndTwoThreadsGiveIdenticalBytes) {
-    const world::SourceLevel level = small_room();
+    const world::SourceLevel level = small_room_with_probes();
     std::vector<uint8_t> one, two;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
@@ -54,8 +85,17 @@ TEST(BakeDeterminism, OneAndTwoThreadsGiveIdenticalBytes) {
 }
 
 TEST(BakeDeterminism, ShardsMergedEqualAWholeBake) {
-    const world::SourceLevel level = small_room();
+    const world::SourceLevel level = small_room_with_probes();
     const BakeResult whole = bake_level(level, fast_options());
+    ASSERT_EQ(whole.baked.probes.size(), 3u);
+    // Each probe's E_avg is exactly what the runtime reads from the finished grid there.
+    for (const world::EnvironmentProbe& p : whole.baked.probes) {
+        const glm::vec3 runtime = glm::max(
+            ambientCubeAverage(world::sampleLightGrid(whole.baked.grid, p.position).ambientCube),
+            glm::vec3(onelight::glsl::PROBE_MIN_IRRADIANCE));
+        EXPECT_EQ(p.irradiance_average, runtime);
+        EXPECT_GT(p.irradiance_average.x, 0.1f);  // lit room: far above the floor
+    }
     std::vector<world::BakedLighting> parts;
     world::CompiledLevel compiled;
     for (uint32_t i : {1u, 0u}) {  // any order
@@ -85,13 +125,27 @@ TEST(BakeDeterminism, ShardsMergedEqualAWholeBake) {
 }
 
 TEST(BakedSections, RoundTripAndErrorsNameTheSection) {
-    const BakeResult r = bake_level(small_room(), fast_options());
+    const BakeResult r = bake_level(small_room_with_probes(), fast_options());
     std::vector<package::RawSection> sections = package::encode_baked_sections(r.baked);
+    ASSERT_EQ(sections.size(), 4u);  // 32..34 and the probes
     package::BakedReadResult back = package::decode_baked_sections(sections, r.level, "x.olpak");
     ASSERT_TRUE(back.ok()) << back.error;
     EXPECT_TRUE(back.present);
     EXPECT_EQ(back.baked.texels.size(), r.baked.texels.size());
     EXPECT_EQ(back.baked.grid.cells.size(), r.baked.grid.cells.size());
+    ASSERT_EQ(back.baked.probes.size(), 3u);
+    EXPECT_EQ(back.baked.probes[2].texels, r.baked.probes[2].texels);
+    EXPECT_EQ(back.baked.probes[0].box_max, glm::vec3(1.5f, 1.0f, 2.0f));
+
+    const std::vector<package::RawSection> probes_alone(sections.begin() + 3, sections.end());
+    back = package::decode_baked_sections(probes_alone, r.level, "x.olpak");
+    EXPECT_NE(back.error.find("x.olpak: section probes present without baked lighting"),
+              std::string::npos)
+        << back.error;
+    std::vector<package::RawSection> bad_probe = sections;
+    bad_probe[3].bytes[16 + 12 * 4] = 3;  // probe 0's face_size 8 -> 3: not a power of two
+    back = package::decode_baked_sections(bad_probe, r.level, "x.olpak");
+    EXPECT_NE(back.error.find("record 0: face_size 3"), std::string::npos) << back.error;
 
     std::vector<package::RawSection> truncated = sections;
     truncated[0].bytes.resize(truncated[0].bytes.size() - 32);

@@ -142,14 +142,18 @@ TEST(ProbeCapture, IsDeterministicAndPacksToTheSameBytes) {
         out = package::encode_probe_section({probe}).bytes;
     }
     EXPECT_EQ(bytes[0], bytes[1]);
-    // The whole stage gives probe 3 of a list the same bytes.
+    // The whole stage gives probe 3 of a list the same bytes, and so does a shard's range.
     RayCounts rays;
     const std::vector<ProbePlacement> placements(4, ProbePlacement{kCapturePoint});
+    const std::vector<glm::vec3> averages(4, average);
     const std::vector<world::EnvironmentProbe> probes =
-        bakeProbes(room.scene, room.lights, placements, std::vector<glm::vec3>(4, average),
-                   settings, false, rays);
+        bakeProbes(room.scene, room.lights, placements, averages, settings, 0, 4, false, rays);
     ASSERT_EQ(probes.size(), 4u);
     EXPECT_EQ(package::encode_probe_section({probes[3]}).bytes, bytes[0]);
+    const std::vector<world::EnvironmentProbe> tail =
+        bakeProbes(room.scene, room.lights, placements, averages, settings, 3, 4, false, rays);
+    ASSERT_EQ(tail.size(), 1u);
+    EXPECT_EQ(package::encode_probe_section(tail).bytes, bytes[0]);
 }
 
 TEST(ProbeCapture, StoredMipZeroIsTheCapturedRadianceOverEAvg) {

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "world/package/format.hpp"
+#include "world/package/probe_section.hpp"
 
 namespace onelight::package {
 namespace {
@@ -81,6 +82,7 @@ std::vector<RawSection> encode_baked_sections(const world::BakedLighting& baked)
         append_bytes(grid.bytes, d);
     }
     grid.count = static_cast<uint32_t>(grid.bytes.size());
+    if (!baked.probes.empty()) out.push_back(encode_probe_section(baked.probes));
     return out;
 }
 
@@ -100,7 +102,14 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
         }
         *slot = &s;
     }
-    if (!texels && !masks && !grid) return result;
+    if (!texels && !masks && !grid) {
+        for (const RawSection& s : sections)
+            if (s.id == section_probes)
+                result.error = name +
+                               ": section probes present without baked lighting; expected "
+                               "sections lightmap_texels, shadow_masks and light_grid too";
+        return result;
+    }
     if (!texels || !masks || !grid) {
         result.error = name + ": baked lighting incomplete: sections lightmap_texels " +
                        (texels ? "present" : "missing") + ", shadow_masks " +
@@ -232,6 +241,14 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
         cell.primary_visibility = d.primary_visibility;
         cell.flags = d.flags;
     }
+
+    // Environment probes (optional: only levels with glossy materials have them).
+    ProbeReadResult probes = decode_probe_section(sections, level, name);
+    if (!probes.ok()) {
+        result.error = probes.error;
+        return result;
+    }
+    baked.probes = std::move(probes.probes);
     return result;
 }
 

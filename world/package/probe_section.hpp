@@ -10,21 +10,11 @@
 
 #include <glm/glm.hpp>
 
+#include "world/baked_lighting.hpp"
 #include "world/compiled_level.hpp"
 #include "world/package/package_writer.hpp"
 
 namespace onelight::world {
-
-/// One baked environment probe in memory (DiskProbe's twin): its prefiltered, normalised
-/// radiance as RGB9E5 texels, mips from the largest, each 6 faces of rows from the top.
-struct EnvironmentProbe {
-    glm::vec3 position{0.0f};                // metres, world: the capture point
-    glm::vec3 box_min{0.0f}, box_max{0.0f};  // box projection when min < max on every axis
-    glm::vec3 irradiance_average{1.0f};      // lux, RGB: E_avg (probeNormalize)
-    uint32_t face_size = 0, mip_count = 0;   // mip 0 edge (a power of two); down to 1x1
-    uint32_t entity = kNone;                 // the probe entity, kNone when placed
-    std::vector<uint32_t> texels;            // RGB9E5, 6 * sum_m (face_size >> m)^2
-};
 
 /// Texels of a cube of edge `face_size` with every mip down to 1x1: 6 * sum_m (size >> m)^2.
 uint64_t probe_texel_count(uint32_t face_size);
