@@ -223,6 +223,7 @@ struct LevelSettings {
     bool has_exposure = false;
     float texels_per_metre = 0.0f;                 // requested lightmap density
     glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // static geometry, metres
+    float probe_spacing = 0.0f;                    // metres between automatic probes; 0 = unset
 };
 
 struct CompiledLevel {

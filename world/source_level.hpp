@@ -38,6 +38,7 @@ struct SourceLevel {
     float exposure_ev100 = 0.0f;
     bool has_exposure = false;
     float texels_per_metre = 0.0f;  // the level's lightmap density (extras), 0 when not given
+    float probe_spacing = 0.0f;     // metres between automatic probes (extras), 0 when not given
     bool has_grid_bounds = false;
     glm::vec3 grid_min{0.0f}, grid_max{0.0f};
 };

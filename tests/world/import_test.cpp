@@ -181,6 +181,16 @@ TEST(Import, ExtrasMarkDynamicMoversSpawnsProbesGrid) {
     EXPECT_FLOAT_EQ(world::compile_level(level, options).level.settings.texels_per_metre, 16.0f);
 }
 
+TEST(Import, ProbeSpacingIsTheLevels) {
+    GltfBuilder gltf;
+    gltf.add_node({{"name", "tri"}, {"mesh", gltf.add_mesh(one_triangle("tri"))}});
+    gltf.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"probe_spacing", 3.5}}}}}});
+    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("spacing_ok"), "spacing"));
+    EXPECT_FLOAT_EQ(level.probe_spacing, 3.5f);
+    world::CompileOptions options;
+    EXPECT_FLOAT_EQ(world::compile_level(level, options).level.settings.probe_spacing, 3.5f);
+}
+
 TEST(Import, ImagesAreFileReferencesOrEncodedBytes) {
     GltfBuilder gltf;
     MeshData mesh = one_triangle("tri");
@@ -253,6 +263,16 @@ TEST(ImportErrors, BadTexelDensity) {
     GltfBuilder gltf;
     gltf.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"texels_per_metre", -2.0}}}}}});
     expect_error(gltf.write(fresh_folder("density"), "density"), {"settings", "texels_per_metre"});
+}
+
+TEST(ImportErrors, BadProbeSpacing) {
+    for (double spacing : {0.0, -2.0}) {
+        GltfBuilder gltf;
+        gltf.add_node(
+            {{"name", "settings"}, {"extras", {{"onelight", {{"probe_spacing", spacing}}}}}});
+        expect_error(gltf.write(fresh_folder("spacing"), "spacing"),
+                     {"settings", "probe_spacing", "expected metres > 0"});
+    }
 }
 
 TEST(ImportErrors, UnknownRole) {

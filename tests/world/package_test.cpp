@@ -83,6 +83,21 @@ TEST(Package, RoundTripIsByteIdentical) {
     EXPECT_EQ(serialize_package(read.level), bytes);
 }
 
+TEST(Package, ProbeSpacingRoundTripsAndIsChecked) {
+    world::CompiledLevel level = sample_level();
+    EXPECT_EQ(level.settings.probe_spacing, 0.0f) << "not given: the former reserved 0";
+    level.settings.probe_spacing = 3.5f;
+    const std::vector<uint8_t> bytes = serialize_package(level);
+    const PackageReadResult read = parse_package(bytes, "test.olpak");
+    ASSERT_TRUE(read.ok()) << read.error;
+    EXPECT_EQ(read.level.settings.probe_spacing, 3.5f);
+    uint32_t negative;
+    const float minus_one = -1.0f;
+    std::memcpy(&negative, &minus_one, 4);
+    expect_rejected(patched(bytes, section_level, 0, offsetof(DiskLevel, probe_spacing), negative),
+                    "probe_spacing");
+}
+
 TEST(Package, BakedSectionsSurviveARoundTrip) {
     RawSection grid;
     grid.id = section_light_grid;

@@ -99,6 +99,12 @@ NodeExtras parse_node_extras(const tinygltf::Value& extras, const std::string& w
                                std::to_string(out.texels_per_metre) +
                                "; expected a density in (0, 1024] texels per metre");
     }
+    if (o.Has("probe_spacing")) {
+        out.probe_spacing = read_number(o.Get("probe_spacing"), base + ".probe_spacing");
+        if (!(out.probe_spacing > 0.0f))
+            throw CompileError(base + ".probe_spacing is " + std::to_string(out.probe_spacing) +
+                               "; expected metres > 0 between automatic probes");
+    }
     if (o.Has("exposure")) {
         out.has_exposure = true;
         out.exposure_ev100 = read_number(o.Get("exposure"), base + ".exposure");

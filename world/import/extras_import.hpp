@@ -1,5 +1,6 @@
 // The `extras.onelight` object of a glTF node (schema in import/README.md): role, dynamic,
-// mover, probe, spawn, grid bounds, exposure. Wrong types or values are CompileErrors.
+// mover, probe, spawn, grid bounds, exposure, lightmap density, probe spacing. Wrong types or
+// values are CompileErrors.
 #pragma once
 
 #include <string>
@@ -30,6 +31,7 @@ struct NodeExtras {
     bool has_exposure = false;
     float exposure_ev100 = 0.0f;
     float texels_per_metre = 0.0f;  // lightmap density for the level, > 0 when given
+    float probe_spacing = 0.0f;     // metres between the level's automatic probes, > 0 when given
 };
 
 /// Parses node.extras; `where` names the node for errors ("file.gltf: node 'lamp'").

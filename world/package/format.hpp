@@ -95,7 +95,8 @@ struct DiskLevel {
     float texels_per_metre;  // requested lightmap density, > 0
     float bounds_min[3];     // metres, static geometry (0 when there is none)
     float bounds_max[3];     // metres, >= bounds_min
-    uint32_t reserved;       // 0
+    float probe_spacing;     // metres between automatic probes, >= 0; 0 = the baker's default
+    // probe_spacing took the place of a reserved 0, so older files read as "not given".
 };
 static_assert(sizeof(DiskLevel) == 40);
 

@@ -264,9 +264,13 @@ private:
         if (!(d.texels_per_metre > 0.0f) || !std::isfinite(d.texels_per_metre))
             fail(section_level, 0,
                  "texels_per_metre " + std::to_string(d.texels_per_metre) + "; expected > 0");
+        if (!(d.probe_spacing >= 0.0f) || !std::isfinite(d.probe_spacing))
+            fail(section_level, 0,
+                 "probe_spacing " + std::to_string(d.probe_spacing) + "; expected metres >= 0");
         level.settings.exposure_ev100 = d.exposure_ev100;
         level.settings.has_exposure = d.has_exposure != 0;
         level.settings.texels_per_metre = d.texels_per_metre;
+        level.settings.probe_spacing = d.probe_spacing;
         level.settings.bounds_min = vec3_of(d.bounds_min);
         level.settings.bounds_max = vec3_of(d.bounds_max);
     }

@@ -109,6 +109,7 @@ void build_sections(const CompiledLevel& level, PackageBuilder& b) {
     dl.exposure_ev100 = level.settings.exposure_ev100;
     dl.has_exposure = level.settings.has_exposure ? 1 : 0;
     dl.texels_per_metre = level.settings.texels_per_metre;
+    dl.probe_spacing = level.settings.probe_spacing;
     put3(dl.bounds_min, level.settings.bounds_min);
     put3(dl.bounds_max, level.settings.bounds_max);
     b.add(section_level, dl);

@@ -1,0 +1,81 @@
+// Automatic environment-probe placement: a lattice over the level's static bounds, its points
+// that are not inside solid geometry, grouped into connected regions by unoccluded segments.
+// Replaces the bounds-centre-plus-cameras stand-in of placeProbes(level) (probe_capture.hpp),
+// whose centre could land inside a wall.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "bake/embree/bake_scene.hpp"
+#include "probe_capture.hpp"
+#include "world/compiled_level.hpp"
+
+namespace onelight::bake {
+
+struct ProbePlacementSettings {
+    float spacing = 8.0f;  // metres, lattice step requested when the level sets none; > 0
+};
+
+/// Lattice points at most; a finer lattice grows its spacing until it fits.
+inline constexpr uint32_t kMaxProbeLatticePoints = 4096;
+/// Directions cast from a point to tell whether it is inside solid (a Fibonacci sphere set).
+inline constexpr uint32_t kProbeSolidRays = 64;
+/// Inside solid when more than this fraction of the rays that hit something hit a back face.
+inline constexpr float kProbeSolidFraction = 0.5f;
+
+/// What placement found, for tests and the bake report.
+struct ProbePlacementStats {
+    float spacing = 0.0f;        // metres, the step used (requested, or grown by the cap)
+    glm::uvec3 lattice{0u};      // points per axis (0 when no lattice was laid)
+    uint32_t latticePoints = 0;  // lattice.x * lattice.y * lattice.z
+    uint32_t openPoints = 0;     // lattice points not inside solid: one probe each
+    uint32_t components = 0;     // connected regions of open points
+    uint32_t cameraProbes = 0;   // probes added at authored cameras
+    bool fallback = false;       // nothing open: one probe at the least solid lattice point
+    RayCounts rays;              // solid tests in `probe`, segments in `shadow`
+};
+
+// The probes of a level whose static world is `scene` (built from the same level).
+//
+// Authored probes win: when any entity is flagged entity_probe, exactly those, in entity
+// order, each with its box when the box is non-empty (as placeProbes(level)). Otherwise none
+// unless the level has specular materials (feature_probes). Then, with no box and entity kNone:
+//
+// - Empty level (no static triangle): one probe at the centre of the bounds.
+// - Lattice: the spacing is level.settings.probe_spacing when the level sets it (> 0), else
+//   settings.spacing. Over the static bounds (level.settings.bounds_min/max), per axis
+//   n = max(1, ceil(extent / spacing)) cells of extent / n metres (<= spacing), a point at each
+//   cell centre (at bounds_min on an axis of zero extent), as the light grid lays its cells.
+//   Over kMaxProbeLatticePoints points in all, the spacing grows by
+//   max(1.01, cbrt(points / kMaxProbeLatticePoints)) until it fits.
+// - Open: a point is inside solid when, of kProbeSolidRays fixed directions (a Fibonacci sphere
+//   set, the same for every point), more than kProbeSolidFraction of the rays that hit
+//   something hit a back face. This mirrors the light grid's inside-solid rule (bake/grid,
+//   back-face first hits over GridSettings::inside_fraction = 0.5, not exposed as a function)
+//   with one difference: the grid divides by all its rays, this by the rays that hit. In a
+//   closed room every ray hits and the two agree; in the void outside a level's closed shell
+//   rays escape or hit the outside (back) of walls, which the grid's rule can call open and
+//   this one calls solid. A point with no geometry around it (no ray hits) is open, so a
+//   point of that void far enough from every wall that all its rays escape is still open.
+// - Connected: two open 6-neighbours are connected when the segment between them is
+//   unoccluded (one Embree occlusion ray from the lower index). Components by union-find; a
+//   component is numbered by its lowest lattice index.
+// - Probes: one at every open lattice point, by component (lowest lattice index first), then
+//   by lattice index (x fastest, then y, then z). So each component has at least one probe
+//   and probes are `spacing` apart. A region that holds no lattice point (a room smaller than
+//   the spacing, between points) gets none and is not seen: lower the spacing for it.
+// - Cameras (where the player looks): then one probe at each authored camera, in order, that
+//   is not inside solid (the rule above) and not within spacing / 2 of any probe before it.
+// - Fallback: when that leaves no probe (every point inside solid, no camera kept), one at the
+//   lattice point with the smallest back-face fraction (lowest index on ties), so a level with
+//   specular materials always has a probe; stats->fallback says so.
+//
+// The same level and scene give the same probes in the same order on any thread count.
+std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const BakeScene& scene,
+                                        const ProbePlacementSettings& settings,
+                                        ProbePlacementStats* stats = nullptr);
+
+}  // namespace onelight::bake
