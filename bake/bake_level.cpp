@@ -8,6 +8,7 @@
 #include "bake/dominant/dominant_primary.hpp"
 #include "bake/embree/bake_scene.hpp"
 #include "bake/lightmap/texel_placement.hpp"
+#include "bake/probes/probe_placement.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/light_grid_sample.hpp"
 #include "world/package/baked_sections.hpp"
@@ -158,7 +159,8 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
     const uint64_t texel_count = total_texels(level);
     world::LightGrid grid = layout_light_grid(level, grid_settings(options));
     const world::LightGrid grid_layout = grid;
-    const std::vector<ProbePlacement> placements = placeProbes(level);
+    const std::vector<ProbePlacement> placements =
+        placeProbes(level, scene, ProbePlacementSettings{options.probe_spacing});
     const ShardRange range = shard_range(texel_count, grid.cells.size(), placements.size(),
                                          options.shard_index, options.shard_count);
     world::BakedLighting& baked = result.baked;

@@ -34,6 +34,7 @@ struct BakeOptions {
     LightSizes light_sizes;
     glm::vec3 sky_radiance{0.0f};  // cd/m^2, uniform sky (0: none)
     float grid_cell_size = 1.0f;   // metres
+    float probe_spacing = 8.0f;    // metres between automatic probes unless the level sets it
     uint32_t shard_index = 0, shard_count = 1;
     bool show_progress = true;
     // Overrides of the quality preset; 0 keeps the preset.

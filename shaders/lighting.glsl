@@ -10,6 +10,7 @@
 
 #include "brdf.glsl"
 #include "env_brdf_fit.glsl"
+#include "probe.glsl"
 
 // ---------------------------------------------------------------------------------------------
 // The runtime specular model: ggx_smith, chosen by docs/brdf-report (cheapest exact model).
@@ -120,16 +121,25 @@ vec3 irradianceAmbientCube(vec3 px, vec3 nx, vec3 py, vec3 ny, vec3 pz, vec3 nz,
     return ex * n2.x + ey * n2.y + ez * n2.z;
 }
 
-// Secondary light reflected towards v: diffuse from irradiance E (lux, per channel) and specular
-// from a normalised probe sample (radiance / average irradiance at its capture point) scaled back
-// by E, times the environment "Fresnel" f0 * env.x + env.y of the runtime model (EnvBRDF_Fit of
-// env_brdf_fit.glsl, or the runtime's table of it). Lambert-only surfaces take no probe; metals
-// no diffuse.
+// Specular occlusion from an ambient occlusion `ao` (Lagarde and de Rousiers 2014, "Moving
+// Frostbite to PBR", listing 26): saturate((NoV + ao)^(2^(-16 alpha - 1)) - 1 + ao). It is 1
+// where ao is 1, ao at normal incidence on a rough surface, and tends to 1 at grazing angles
+// on a glossy one, where the reflection leaves the occluded hemisphere.
+float specularOcclusion(float NoV, float ao, float alpha) {
+    return saturate(pow(NoV + ao, exp2(-16.0f * alpha - 1.0f)) - 1.0f + ao);
+}
+
+// Secondary light reflected towards v: diffuse from irradiance E (lux, per channel) times the
+// material's ambient occlusion `ao`, and specular from a normalised probe sample (radiance /
+// average irradiance at its capture point) scaled back by E (probeDenormalize), times the
+// environment "Fresnel" f0 * env.x + env.y of the runtime model (EnvBRDF_Fit of
+// env_brdf_fit.glsl, or the runtime's table of it) and the specular occlusion `so` (which
+// replaces ao for the specular). Lambert-only surfaces take no probe; metals no diffuse.
 vec3 secondaryRadiance(int materialClass, vec3 albedo, vec3 f0, vec2 env, vec3 irradiance,
-                       vec3 normalisedProbe) {
-    vec3 diffuse = albedo * (Fd_Lambert()) * irradiance;
+                       float ao, float so, vec3 normalisedProbe) {
+    vec3 diffuse = albedo * (Fd_Lambert() * ao) * irradiance;
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
-    vec3 specular = (f0 * env.x + vec3(env.y)) * normalisedProbe * irradiance;
+    vec3 specular = (f0 * env.x + vec3(env.y)) * normalisedProbe * irradiance * so;
     if (materialClass == MATERIAL_METAL) return specular;
     return diffuse + specular;
 }

@@ -101,6 +101,19 @@ vec3 boxProjectedDirection(vec3 P, vec3 R, vec3 boxMin, vec3 boxMax, vec3 probeP
 }
 
 // ---------------------------------------------------------------------------------------------
+// Influence (Lagarde and Zanuttini 2012, "Local Image-based Lighting With Parallax-corrected
+// Cubemap", section "Blending"): each probe lights the points inside its influence box, fully
+// at least `band` metres inside every face and fading linearly to 0 at the faces. The runtime
+// orders probes from the smallest influence volume to the largest and takes, per pixel, the
+// first two that reach it: c1 = w1, c2 = (1 - w1) w2, normalised by c1 + c2 (an inner volume
+// overrides an outer one; across a boundary the two blend).
+float probeInfluenceWeight(vec3 p, vec3 influenceMin, vec3 influenceMax, float band) {
+    vec3 inside = min(p - influenceMin, influenceMax - p);
+    float d = min(min(inside.x, inside.y), inside.z);
+    return saturate(d / max(band, 1e-4f));
+}
+
+// ---------------------------------------------------------------------------------------------
 // Normalization (Lazarov 2011, slide "Environment map normalization"; DESIGN.md "The lighting
 // model", secondary specular). The baker stores each probe's radiance divided, per channel, by
 // E_avg: the average over every normal direction n of the secondary irradiance E(n) that the

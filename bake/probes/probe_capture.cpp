@@ -11,41 +11,7 @@ namespace {
 
 constexpr uint32_t kProbePass = 6;  // seed_from's pass id (reference 4 and 5)
 
-bool hasBox(glm::vec3 lo, glm::vec3 hi) {
-    return lo.x < hi.x && lo.y < hi.y && lo.z < hi.z;
-}
-
 }  // namespace
-
-std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level) {
-    std::vector<ProbePlacement> probes;
-    for (uint32_t i = 0; i < level.entities.size(); ++i) {
-        const world::Entity& e = level.entities[i];
-        if (!(e.flags & world::entity_probe)) continue;
-        ProbePlacement p;
-        p.position = e.position;
-        if (hasBox(e.probe_box_min, e.probe_box_max)) {
-            p.boxMin = e.probe_box_min;
-            p.boxMax = e.probe_box_max;
-        }
-        p.entity = i;
-        probes.push_back(p);
-    }
-    if (!probes.empty() || !(level.features.flags & world::feature_probes)) return probes;
-    ProbePlacement centre;
-    centre.position = 0.5f * (level.settings.bounds_min + level.settings.bounds_max);
-    probes.push_back(centre);
-    for (const world::Camera& camera : level.cameras) {
-        bool near = false;
-        for (const ProbePlacement& p : probes)
-            near = near || glm::length(p.position - camera.position) <= 0.01f;
-        if (near) continue;
-        ProbePlacement p;
-        p.position = camera.position;
-        probes.push_back(p);
-    }
-    return probes;
-}
 
 glm::vec3 ambientCubeAverage(const std::array<glm::vec3, 6>& ambientCube) {
     glm::vec3 sum(0.0f);

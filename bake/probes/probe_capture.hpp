@@ -26,13 +26,7 @@ struct ProbePlacement {
     uint32_t entity = world::kNone;        // the probe entity, kNone when placed
 };
 
-// The probes of a level. Authored: one per entity flagged entity_probe, at its position, with
-// its box when the box is non-empty (min < max on every axis), else none. Automatic, only when
-// no entity is a probe and the level has specular materials (feature_probes): one at the
-// centre of the static geometry's bounds, then one at each authored camera position that is
-// more than 1 cm from every probe before it; none of them has a box. (A stand-in for one probe
-// per BSP leaf cluster; a centre inside solid geometry still gets a probe.)
-std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level);
+// The probes of a level: placeProbes in probe_placement.hpp.
 
 struct ProbeCaptureSettings {
     uint32_t faceSize = 64;         // mip 0 edge, a power of two: draft 32, default 64, high 128

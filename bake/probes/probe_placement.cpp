@@ -17,7 +17,7 @@ bool hasBox(glm::vec3 lo, glm::vec3 hi) {
     return lo.x < hi.x && lo.y < hi.y && lo.z < hi.z;
 }
 
-// The entities flagged entity_probe, as placeProbes(level) gives them.
+// The entities flagged entity_probe, each with its box when the box is non-empty.
 std::vector<ProbePlacement> authoredProbes(const world::CompiledLevel& level) {
     std::vector<ProbePlacement> probes;
     for (uint32_t i = 0; i < level.entities.size(); ++i) {

@@ -1,7 +1,5 @@
 // Automatic environment-probe placement: a lattice over the level's static bounds, its points
 // that are not inside solid geometry, grouped into connected regions by unoccluded segments.
-// Replaces the bounds-centre-plus-cameras stand-in of placeProbes(level) (probe_capture.hpp),
-// whose centre could land inside a wall.
 #pragma once
 
 #include <cstdint>
@@ -41,7 +39,7 @@ struct ProbePlacementStats {
 // The probes of a level whose static world is `scene` (built from the same level).
 //
 // Authored probes win: when any entity is flagged entity_probe, exactly those, in entity
-// order, each with its box when the box is non-empty (as placeProbes(level)). Otherwise none
+// order, each with its box when the box is non-empty. Otherwise none
 // unless the level has specular materials (feature_probes). Then, with no box and entity kNone:
 //
 // - Empty level (no static triangle): one probe at the centre of the bounds.

@@ -14,10 +14,10 @@ inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 struct FrameUniforms {
     glm::mat4 viewProj;
     glm::vec4 cameraPosition;  // xyz metres, w exposure
-    glm::vec4 shadowParams;    // x radius, y band, z 1 / shadow map size, w max probe lod
+    glm::vec4 shadowParams;    // x radius, y band, z 1 / shadow map size, w 0
     glm::vec4 baked;           // x placeholder ambient (lux), y lightmap decode factor, zw 0
-    glm::vec4 reserved;        // 0
-    glm::uvec4 counts;         // x effect omnis, y effect spot on
+    glm::vec4 probeParams;     // x mip count of the probes' cubes, yzw 0
+    glm::uvec4 counts;         // x effect omnis, y effect spot on, z probe records
     glm::vec4 omniPositionRange[kMaxEffectOmnis];
     glm::vec4 omniColor[kMaxEffectOmnis];
     glm::vec4 spotPositionRange;
@@ -56,6 +56,16 @@ struct GpuObjectLighting {
     glm::vec4 ambientCube[6];  // rgb lux facing +x -x +y -y +z -z; [0].w baked primary visibility
 };
 static_assert(sizeof(GpuObjectLighting) == 96);
+
+/// An environment probe (render/probe_records.hpp; shaders/probe.glsl for the rules).
+struct GpuProbe {
+    glm::vec4 position;      // xyz capture point, metres
+    glm::vec4 boxMin;        // xyz box-projection box, w 1 = box projection
+    glm::vec4 boxMax;        // xyz
+    glm::vec4 influenceMin;  // xyz influence box, w blend band (metres)
+    glm::vec4 influenceMax;  // xyz
+};
+static_assert(sizeof(GpuProbe) == 80);
 
 struct DrawPush {
     glm::mat4 model;

@@ -119,7 +119,7 @@ void createPipelines(RendererState& s) {
          vk::layoutBinding(3, sampled, fs), vk::layoutBinding(4, sampled, fs),
          vk::layoutBinding(5, sampled, fs), vk::layoutBinding(6, storage, fs),
          vk::layoutBinding(7, sampled, fs), vk::layoutBinding(8, storage, fs),
-         vk::layoutBinding(9, sampled, fs)},
+         vk::layoutBinding(9, sampled, fs), vk::layoutBinding(10, storage, fs)},
         {vk::layoutBinding(0, sampled, fs), vk::layoutBinding(1, sampled, fs),
          vk::layoutBinding(2, sampled, fs), vk::layoutBinding(3, sampled, fs),
          vk::layoutBinding(4, sampled, fs)}};
@@ -188,7 +188,7 @@ void createPipelines(RendererState& s) {
     // Descriptors: the frame set, one set per material, the tonemap set.
     const uint32_t materialCount = uint32_t(s.materialTextures.size());
     const VkDescriptorPoolSize sizes[] = {
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {storage, 4}, {sampled, 6 + 5 * materialCount + 2}};
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {storage, 5}, {sampled, 6 + 5 * materialCount + 2}};
     s.descriptorPool = vk::createDescriptorPool(ctx, 2 + materialCount, sizes);
     s.frameSet = vk::allocateDescriptorSet(ctx, s.descriptorPool, s.forwardLayout.setLayouts[0]);
     vk::DescriptorWriter w;
@@ -203,6 +203,7 @@ void createPipelines(RendererState& s) {
     w.image(7, s.probe.view, s.linearClamp);
     w.buffer(8, storage, s.materialBuffer.buffer);
     w.image(9, s.envBrdf.view, s.linearClamp);
+    w.buffer(10, storage, s.probeBuffer.buffer);
     w.update(ctx);
     for (const MaterialTextures& textures : s.materialTextures) {
         vk::DescriptorWriter m;
@@ -430,6 +431,7 @@ vk::ContextOptions renderContextOptions(RenderDeviceFeatures& features,
     features.vulkan13 = {};
     features.vulkan13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
     features.vulkan13.dynamicRendering = VK_TRUE;
+    options.features.imageCubeArray = VK_TRUE;  // the probes' cube array
     options.featureChain = &features.vulkan13;
     return options;
 }
@@ -600,10 +602,12 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
     u.viewProj = viewProj;
     u.cameraPosition = glm::vec4(camera.position, stats.exposure);
     u.shadowParams = glm::vec4(s.options.shadowRadius, s.options.shadowBand,
-                               1.0f / float(s.options.shadowMapSize), s.probeMaxLod);
+                               1.0f / float(s.options.shadowMapSize), 0.0f);
     u.baked = glm::vec4(s.ambientLux, s.lightmapDecode, 0.0f, 0.0f);
+    u.probeParams = glm::vec4(float(s.probeMips), 0.0f, 0.0f, 0.0f);
     const EffectLights& fx = inputs.effects;
-    u.counts = glm::uvec4(std::min(fx.omniCount, kMaxEffectOmnis), fx.spotOn ? 1u : 0u, 0u, 0u);
+    u.counts =
+        glm::uvec4(std::min(fx.omniCount, kMaxEffectOmnis), fx.spotOn ? 1u : 0u, s.probeCount, 0u);
     for (uint32_t i = 0; i < u.counts.x; ++i) {
         u.omniPositionRange[i] = glm::vec4(fx.omni[i].position, fx.omni[i].range);
         u.omniColor[i] = glm::vec4(fx.omni[i].color * fx.omni[i].intensity, 0.0f);

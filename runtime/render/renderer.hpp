@@ -107,6 +107,7 @@ struct RendererOptions {
     bool flatShading = false;             // constant colour, no shadows (benchmark floor)
     bool samplePlaceholders = false;      // fetch the placeholder baked textures anyway (tests);
                                           // else a level without baked lighting fetches none
+    bool probes = true;  // false: the package's probes ignored, a uniform environment instead
 };
 
 /// What the renderer settled on.
@@ -119,6 +120,8 @@ struct RendererInfo {
     bool bakedLighting = false;             // lightmaps, shadow masks and grid from the package
     float lightmapDecode = 1.0f;            // lux per stored RGBA16F lightmap unit
     uint32_t shadowLayers = 0;
+    uint32_t probes = 0;      // environment probes in use (0: the uniform placeholder)
+    uint64_t probeBytes = 0;  // their cube array, every mip
 };
 
 struct RendererState;  // render/renderer_state.hpp

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include "render/probe_records.hpp"
 #include "render/renderer_state.hpp"
 #include "shading.hpp"
 
@@ -233,17 +234,6 @@ void createPlaceholders(RendererState& s) {
     vk::uploadImage(*s.ctx, s.white, white);
     vk::createImage(*s.ctx, s.flatNormal, desc);
     vk::uploadImage(*s.ctx, s.flatNormal, flat);
-
-    // The environment probe stays neutral (a uniform environment, normalised radiance 1 / pi)
-    // until the baker writes probes.
-    vk::ImageDesc cube;
-    cube.cube = true;
-    cube.layers = 6;
-    std::vector<float> faces;
-    for (int f = 0; f < 6; ++f)
-        for (int c = 0; c < 4; ++c) faces.push_back(c < 3 ? float(glsl::INV_PI) : 1.0f);
-    createHalfImage(*s.ctx, s.probe, cube, faces);
-    s.probeMaxLod = 0.0f;
 }
 
 // The largest power of two 2^-k (k >= 0) that keeps every stored lightmap coefficient within
@@ -316,6 +306,63 @@ void uploadLightmaps(RendererState& s, const assets::LoadedLevel& loaded) {
     vk::uploadImage(*s.ctx, s.shadowMask, mask);
 }
 
+// The environment probes: every probe's RGB9E5 texels, as baked, in one cube array (cube i for
+// record i of makeProbeRecords' order). The package's texel order (per probe: mips from the
+// largest, each six faces of rows) becomes the upload's (per mip: every probe's six faces).
+// Without probes (or with options.probes off) one neutral cube: a uniform environment of
+// normalised radiance 1 / pi (its irradiance is its average: a uniform environment of L gives
+// E = pi L) behind a record that influences everything.
+void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
+    const std::vector<world::EnvironmentProbe>& probes = loaded.baked.probes;
+    vk::ImageDesc desc;
+    desc.cube = true;
+    desc.viewType = VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    std::vector<GpuProbe> records;
+    if (s.bakedLighting && s.options.probes && !probes.empty()) {
+        const uint32_t size = probes[0].face_size;
+        for (size_t i = 0; i < probes.size(); ++i)
+            if (probes[i].face_size != size)
+                throw std::runtime_error("probe " + std::to_string(i) + " has face size " +
+                                         std::to_string(probes[i].face_size) + "; expected " +
+                                         std::to_string(size) + " like probe 0 (one cube array)");
+        const ProbeRecords ordered = makeProbeRecords(probes, s.boundsMin, s.boundsMax);
+        records = ordered.records;
+        desc.format = VK_FORMAT_E5B9G9R9_UFLOAT_PACK32;
+        desc.width = desc.height = size;
+        desc.mipLevels = probes[0].mip_count;
+        desc.layers = 6 * uint32_t(probes.size());
+        std::vector<uint32_t> texels;
+        texels.reserve(probes.size() * probes[0].texels.size());
+        size_t mipStart = 0;
+        for (uint32_t mip = 0; mip < desc.mipLevels; ++mip) {
+            const size_t mipTexels = 6 * size_t(size >> mip) * (size >> mip);
+            for (uint32_t p : ordered.order)
+                texels.insert(texels.end(), probes[p].texels.begin() + long(mipStart),
+                              probes[p].texels.begin() + long(mipStart + mipTexels));
+            mipStart += mipTexels;
+        }
+        vk::createImage(*s.ctx, s.probe, desc);
+        vk::uploadImageMips(*s.ctx, s.probe,
+                            {reinterpret_cast<const uint8_t*>(texels.data()), texels.size() * 4});
+        s.info.probes = uint32_t(probes.size());
+        s.info.probeBytes = texels.size() * 4;
+    } else {
+        records = {placeholderProbeRecord()};
+        desc.layers = 6;
+        std::vector<float> faces;
+        for (int f = 0; f < 6; ++f)
+            for (int c = 0; c < 4; ++c) faces.push_back(c < 3 ? float(glsl::INV_PI) : 1.0f);
+        createHalfImage(*s.ctx, s.probe, desc, faces);
+        s.info.probes = 0;
+        s.info.probeBytes = 0;
+    }
+    s.probeCount = uint32_t(records.size());
+    s.probeMips = s.probe.desc.mipLevels;
+    createFilledBuffer(*s.ctx, s.probeBuffer, records.data(), records.size() * sizeof(GpuProbe),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
 // The baked-lighting interface: the package's lightmaps, shadow masks and light grid, or
 // neutral content for a level without them (a constant ambient of ambientLux, no baked shadow)
 // that the placeholder-fetching test permutation reads.
@@ -344,6 +391,7 @@ void uploadBakedLighting(RendererState& s, const assets::LoadedLevel& loaded) {
                          std::max<size_t>(s.entities.size(), 1) * sizeof(GpuObjectLighting),
                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     std::memset(s.objectLightingBuffer.mapped, 0, s.objectLightingBuffer.size);
+    uploadProbes(s, loaded);
 }
 
 // The colour LUT: filmic curve and sRGB encoding at the shaper's texel centres.
@@ -459,6 +507,7 @@ void destroyScene(RendererState& s) {
     vk::destroyImage(ctx, s.shadowMask);
     vk::destroyImage(ctx, s.lightmap);
     vk::destroyImage(ctx, s.probe);
+    vk::destroyBuffer(ctx, s.probeBuffer);
     vk::destroyImage(ctx, s.flatNormal);
     vk::destroyImage(ctx, s.white);
     for (auto& [key, sampler] : s.samplers) vkDestroySampler(ctx.device, sampler, nullptr);

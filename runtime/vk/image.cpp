@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <vector>
 
 #include "vk/commands.hpp"
 #include "vk/vk_check.hpp"
@@ -26,6 +27,7 @@ uint32_t bytesPerTexel(VkFormat format) {
         case VK_FORMAT_B8G8R8A8_SRGB:
         case VK_FORMAT_D32_SFLOAT:
         case VK_FORMAT_R32_SFLOAT:
+        case VK_FORMAT_E5B9G9R9_UFLOAT_PACK32:
             return 4;
         case VK_FORMAT_R16G16B16A16_SFLOAT:
             return 8;
@@ -202,6 +204,50 @@ void uploadImage(const Context& ctx, Image& image, std::span<const uint8_t> byte
             toReadDst.baseMip = d.mipLevels - 1;
             toReadDst.mipCount = 1;
             imageBarrier(cmd, image, toReadDst);
+        });
+    } catch (...) {
+        destroyBuffer(ctx, staging);
+        throw;
+    }
+    destroyBuffer(ctx, staging);
+}
+
+void uploadImageMips(const Context& ctx, Image& image, std::span<const uint8_t> bytes) {
+    const ImageDesc& d = image.desc;
+    std::vector<VkBufferImageCopy> copies;
+    VkDeviceSize offset = 0;
+    for (uint32_t mip = 0; mip < d.mipLevels; ++mip) {
+        const uint32_t w = std::max(d.width >> mip, 1u), h = std::max(d.height >> mip, 1u);
+        VkBufferImageCopy copy{};
+        copy.bufferOffset = offset;
+        copy.imageSubresource = {aspectOf(d.format), mip, 0, d.layers};
+        copy.imageExtent = {w, h, 1};
+        copies.push_back(copy);
+        offset += VkDeviceSize(w) * h * d.layers * bytesPerTexel(d.format);
+    }
+    if (bytes.size() != offset)
+        throw std::runtime_error("uploadImageMips: " + std::to_string(bytes.size()) +
+                                 " bytes given, " + std::to_string(offset) + " expected");
+    Buffer staging;
+    createHostBuffer(ctx, staging, offset, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    std::memcpy(staging.mapped, bytes.data(), bytes.size());
+    try {
+        submitOnce(ctx, [&](VkCommandBuffer cmd) {
+            imageBarrier(cmd, image,
+                         layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED,
+                                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                       VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                                       VK_PIPELINE_STAGE_TRANSFER_BIT,
+                                       VK_ACCESS_TRANSFER_WRITE_BIT));
+            vkCmdCopyBufferToImage(cmd, staging.buffer, image.image,
+                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(copies.size()),
+                                   copies.data());
+            imageBarrier(cmd, image,
+                         layoutBarrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                                       VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                                       VK_ACCESS_SHADER_READ_BIT));
         });
     } catch (...) {
         destroyBuffer(ctx, staging);

@@ -98,6 +98,11 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
 // the image in SHADER_READ_ONLY_OPTIMAL. Waits for the upload to finish.
 void uploadImage(const Context& ctx, Image& image, std::span<const uint8_t> bytes);
 
+// Fills every mip and layer of `image` from `bytes`, which hold, mip after mip from the largest,
+// every layer of that mip tightly packed (no blits: the caller made the mips, e.g. prefiltered
+// probes), and leaves it in SHADER_READ_ONLY_OPTIMAL. Waits for the upload to finish.
+void uploadImageMips(const Context& ctx, Image& image, std::span<const uint8_t> bytes);
+
 // A sampler. Create-info helper; the caller destroys it with vkDestroySampler.
 struct SamplerDesc {
     VkFilter magFilter = VK_FILTER_LINEAR;

@@ -178,38 +178,3 @@ TEST(ProbeCapture, StoredMipZeroIsTheCapturedRadianceOverEAvg) {
         for (int c = 0; c < 3; ++c) ASSERT_NEAR(back[c], l[c], average[c] * (step + 1e-7f)) << i;
     }
 }
-
-TEST(ProbePlacement, AuthoredProbesElseCentreAndCameras) {
-    world::CompiledLevel level;
-    level.settings.bounds_min = glm::vec3(-2.0f);
-    level.settings.bounds_max = glm::vec3(4.0f);
-    EXPECT_TRUE(placeProbes(level).empty());  // no specular material: no probe
-    level.features.flags = world::feature_probes;
-    world::Camera camera;
-    camera.position = glm::vec3(1.0f, 0.0f, 0.0f);
-    level.cameras = {camera, camera};
-    camera.position = glm::vec3(1.0f, 1.0f, 1.0f);  // at the centre: no second probe there
-    level.cameras.push_back(camera);
-    std::vector<ProbePlacement> automatic = placeProbes(level);
-    ASSERT_EQ(automatic.size(), 2u);
-    EXPECT_EQ(automatic[0].position, glm::vec3(1.0f));
-    EXPECT_EQ(automatic[1].position, glm::vec3(1.0f, 0.0f, 0.0f));
-    EXPECT_EQ(automatic[1].entity, world::kNone);
-
-    world::Entity e;
-    e.flags = world::entity_dynamic;
-    level.entities.push_back(e);
-    e.flags = world::entity_probe;
-    e.position = glm::vec3(5.0f);
-    e.probe_box_min = glm::vec3(4.0f);
-    e.probe_box_max = glm::vec3(6.0f);
-    level.entities.push_back(e);
-    e.probe_box_max = glm::vec3(6.0f, 4.0f, 6.0f);  // empty on y: no box
-    level.entities.push_back(e);
-    const std::vector<ProbePlacement> authored = placeProbes(level);
-    ASSERT_EQ(authored.size(), 2u);
-    EXPECT_EQ(authored[0].entity, 1u);
-    EXPECT_EQ(authored[0].boxMax, glm::vec3(6.0f));
-    EXPECT_EQ(authored[1].entity, 2u);
-    EXPECT_EQ(authored[1].boxMax, glm::vec3(0.0f));
-}

@@ -172,7 +172,8 @@ glm::vec3 lambertRadiance(const world::CompiledLevel& level, uint32_t material, 
                 s.illuminance * shadow;
     }
     return radiance + glsl::secondaryRadiance(MATERIAL_LAMBERT, albedo, glm::vec3(0.04f),
-                                              glm::vec2(0.0f), secondary, glm::vec3(0.0f));
+                                              glm::vec2(0.0f), secondary, 1.0f, 1.0f,
+                                              glm::vec3(0.0f));
 }
 
 glm::vec3 lightmapIrradiance(const LightmapSample& s, glm::vec3 n) {

@@ -12,7 +12,7 @@ layout(constant_id = 1) const int ALPHA_MASK = 0;    // 1: discard below the cut
 layout(constant_id = 2) const int FLAT_SHADING = 0;  // 1: constant colour (benchmark floor)
 // 1: the level supplies baked lighting (lightmaps, shadow masks, grid samples per object; or
 // their placeholders in tests); 0: the neutral placeholder (a constant ambient of frame.baked.x
-// lux, no baked shadow, a uniform probe) without any fetch.
+// lux, no baked shadow, a uniform environment of normalised radiance 1 / pi) without any fetch.
 layout(constant_id = 3) const int BAKED_LIGHTING = 1;
 
 layout(location = 0) in vec3 inWorldPosition;
@@ -82,6 +82,45 @@ float bakedShadow() {
         return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
     if (draw.objectLighting != NO_INDEX) return objectLighting[draw.objectLighting].ambientCube[0].w;
     return 1.0;
+}
+
+// One probe's normalised radiance for the reflection ray (p, r): box-projected when the probe
+// has a box, at the mip of the gloss.
+vec3 sampleProbe(uint i, vec3 p, vec3 r, float lod) {
+    GpuProbe g = probeRecords[i];
+    vec3 dir = g.boxMin.w > 0.5 ? boxProjectedDirection(p, r, g.boxMin.xyz, g.boxMax.xyz, g.position.xyz) : r;
+    return textureLod(probes, vec4(dir, float(i)), lod).rgb;
+}
+
+// The secondary specular's normalised radiance (shaders/probe.glsl, "Influence"): the first two
+// records, in order, whose influence reaches p, weighted c1 = w1, c2 = (1 - w1) w2 and
+// normalised; outside every influence volume, the probe captured nearest to p.
+vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
+    if (BAKED_LIGHTING == 0) return vec3(INV_PI);
+    float lod = probeMipOfGloss(gloss, int(frame.probeParams.x));
+    vec3 sum = vec3(0.0);
+    float weight = 0.0;
+    uint taken = 0u;
+    for (uint i = 0u; i < frame.counts.z && taken < 2u; ++i) {
+        GpuProbe g = probeRecords[i];
+        float w = probeInfluenceWeight(p, g.influenceMin.xyz, g.influenceMax.xyz, g.influenceMin.w) *
+                  (1.0 - weight);
+        if (w <= 0.0) continue;
+        sum += w * sampleProbe(i, p, r, lod);
+        weight += w;
+        ++taken;
+    }
+    if (weight > 0.0) return sum / weight;
+    uint nearest = 0u;
+    float best = 1e30;
+    for (uint i = 0u; i < frame.counts.z; ++i) {
+        vec3 d = p - probeRecords[i].position.xyz;
+        if (dot(d, d) < best) {
+            best = dot(d, d);
+            nearest = i;
+        }
+    }
+    return sampleProbe(nearest, p, r, lod);
 }
 
 void main() {
@@ -160,20 +199,21 @@ void main() {
         radiance += surfaceReflectance(MATERIAL_CLASS, albedo, f0, gloss, brdfDots(n, v, s.l)) * s.illuminance;
     }
 
-    // Baked secondary lighting.
+    // Baked secondary lighting: diffuse from the lightmap or grid, specular from the probes
+    // de-normalised by the same irradiance (shaders/probe.glsl, "Normalization").
     vec3 irradiance = secondaryIrradiance(n);
-    if ((textures & 8u) != 0u)
-        irradiance *= 1.0 + m.params.w * (texture(occlusionTexture, inUv0).r - 1.0);
-    vec3 probeSample = vec3(0.0);
-    if (MATERIAL_CLASS != MATERIAL_LAMBERT) {
-        vec3 r = reflect(-v, n);
-        probeSample = BAKED_LIGHTING == 1 ? textureLod(probe, r, (1.0 - gloss) * frame.shadowParams.w).rgb
-                                          : vec3(INV_PI);
-    }
+    float ao = 1.0;
+    if ((textures & 8u) != 0u) ao = 1.0 + m.params.w * (texture(occlusionTexture, inUv0).r - 1.0);
     float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
+    vec3 probeSample = vec3(0.0);
     vec2 env = vec2(0.0);
-    if (MATERIAL_CLASS != MATERIAL_LAMBERT) env = texture(envBrdfTable, vec2(NoV, gloss)).rg;
-    radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, probeSample);
+    float so = 1.0;
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT) {
+        probeSample = probeRadiance(p, reflect(-v, n), gloss);
+        env = texture(envBrdfTable, vec2(NoV, gloss)).rg;
+        so = specularOcclusion(NoV, ao, ggxAlpha_fromGloss(gloss));
+    }
+    radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, ao, so, probeSample);
 
     // Pre-exposed output; emissive is exposure-relative (1 = display white before the curve).
     float exposure = frame.cameraPosition.w;

@@ -10,10 +10,10 @@
 layout(set = 0, binding = 0, std140) uniform FrameUniforms {
     mat4 viewProj;
     vec4 cameraPosition;  // xyz metres, w = exposure (pre-exposure of the HDR target)
-    vec4 shadowParams;    // x runtime-shadow radius, y blend band (metres), z 1 / map size, w max probe lod
+    vec4 shadowParams;    // x runtime-shadow radius, y blend band (metres), z 1 / map size
     vec4 baked;           // x placeholder ambient (lux), y lightmap decode factor (stored x this = lux)
-    vec4 reserved;
-    uvec4 counts;         // x effect omnis in use, y effect spot on (0/1)
+    vec4 probeParams;     // x mip count of the probes' cubes
+    uvec4 counts;         // x effect omnis in use, y effect spot on (0/1), z probe records
     vec4 omniPositionRange[MAX_EFFECT_OMNIS];  // xyz metres, w range (0 unlimited)
     vec4 omniColor[MAX_EFFECT_OMNIS];          // rgb colour * intensity (candela)
     vec4 spotPositionRange;
@@ -52,7 +52,17 @@ struct GpuObjectLighting {
     vec4 ambientCube[6];  // rgb lux facing +x -x +y -y +z -z; [0].w baked visibility of the primary
 };
 layout(set = 0, binding = 6, std430) readonly buffer ObjectLighting { GpuObjectLighting objectLighting[]; };
-layout(set = 0, binding = 7) uniform samplerCube probe;          // normalised radiance
+// Environment probes (render/probe_records.hpp): cube i of the array is record i, in blending
+// order; RGB9E5 normalised radiance, mip m prefiltered for probeGlossOfMip(m).
+layout(set = 0, binding = 7) uniform samplerCubeArray probes;
+struct GpuProbe {
+    vec4 position;      // xyz capture point
+    vec4 boxMin;        // xyz box-projection box, w 1 = box projection
+    vec4 boxMax;
+    vec4 influenceMin;  // xyz influence box, w blend band (metres)
+    vec4 influenceMax;
+};
+layout(set = 0, binding = 10, std430) readonly buffer Probes { GpuProbe probeRecords[]; };
 
 // A material (GpuMaterial, std430).
 struct GpuMaterial {

@@ -1,0 +1,37 @@
+// The environment probes as the forward shader reads them: one GpuProbe record per probe and
+// one cube of the probes' cube array per record, both in the order the shader's blending walks
+// (shaders/probe.glsl, "Influence"): from the smallest influence volume to the largest.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/gpu_types.hpp"
+#include "world/baked_lighting.hpp"
+
+namespace onelight::render {
+
+/// A probe with a box (min < max on every axis) is box-projected and influences its box, with a
+/// blend band of 10% of the box's smallest extent, at most kMaxProbeBand. A probe without one
+/// influences the cube centred on its capture point whose half-extent R is the distance to the
+/// nearest other probe (at least kMinProbeRadius), with a band of R: a tent that reaches 0 at
+/// the neighbour, so neighbouring probes cross-fade. A lone probe without a box influences the
+/// whole level (R reaches its farthest bounds corner).
+inline constexpr float kMaxProbeBand = 1.0f;    // metres
+inline constexpr float kMinProbeRadius = 0.5f;  // metres
+
+struct ProbeRecords {
+    std::vector<GpuProbe> records;  // records[i] is probes[order[i]], cube-array cube i
+    std::vector<uint32_t> order;
+};
+
+/// Records of `probes` in blending order (influence volume ascending, index on ties).
+ProbeRecords makeProbeRecords(const std::vector<world::EnvironmentProbe>& probes,
+                              glm::vec3 levelMin, glm::vec3 levelMax);
+
+/// One record that influences everything, for the neutral placeholder cube.
+GpuProbe placeholderProbeRecord();
+
+}  // namespace onelight::render

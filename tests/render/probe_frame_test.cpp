@@ -1,0 +1,265 @@
+// Environment probes at runtime against the reference path tracer: a closed room with a floor
+// of three glossy strips (GGX roughness 0.5, 0.25, 0.1), coloured panels on the walls, a point
+// primary and a baked point light, and one authored box-projected probe. The room is baked at
+// draft quality, rendered headless with its probe and again with the uniform placeholder
+// environment (RendererOptions::probes off: the secondary specular is E(n) / pi times the
+// environment "Fresnel"), and path traced by `onelight-bake reference` from the same camera.
+// Per strip the relative RMS error over its 8x8-pixel blocks is printed for both frames; the frame
+// with the probe must not be worse than the one without, on every strip.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "capture/capture.hpp"
+#include "render/camera.hpp"
+#include "shading.hpp"
+#include "test_scene.hpp"
+#include "world/gltf/gltf_builder.hpp"
+
+namespace {
+
+using namespace onelight;
+using nlohmann::json;
+
+constexpr uint32_t kWidth = 192, kHeight = 128;
+constexpr float kRoomHalf = 3.0f, kRoomHeight = 3.0f;
+constexpr float kStripRoughness[3] = {0.5f, 0.25f, 0.1f};  // strips at x in [-3,-1], [-1,1], [1,3]
+constexpr uint32_t kReferenceSpp = 256;
+
+json vec(glm::vec3 v) {
+    return json::array({v.x, v.y, v.z});
+}
+
+json material(const char* name, glm::vec3 colour, float roughness) {
+    return {{"name", name},
+            {"pbrMetallicRoughness",
+             {{"baseColorFactor", {colour.x, colour.y, colour.z, 1.0f}},
+              {"metallicFactor", 0.0f},
+              {"roughnessFactor", roughness}}}};
+}
+
+// A rectangle in the plane y = height facing +y, x in [x0, x1], z in [z0, z1].
+world::MeshData floorRect(const std::string& name, float x0, float x1, float z0, float z1,
+                          int materialIndex) {
+    world::MeshData m;
+    m.name = name;
+    m.positions = {{x0, 0.0f, z0}, {x1, 0.0f, z0}, {x1, 0.0f, z1}, {x0, 0.0f, z1}};
+    m.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
+    m.indices = {0, 2, 1, 0, 3, 2};
+    m.material = materialIndex;
+    return m;
+}
+
+// A box seen from inside: the outward box with its winding and normals turned.
+world::MeshData insideOut(world::MeshData m) {
+    for (size_t i = 0; i + 2 < m.indices.size(); i += 3)
+        std::swap(m.indices[i + 1], m.indices[i + 2]);
+    for (glm::vec3& n : m.normals) n = -n;
+    return m;
+}
+
+std::string writeRoom(const std::string& folder) {
+    world::GltfBuilder g;
+    const int plaster = g.add_material(material("plaster", {0.7f, 0.7f, 0.68f}, 0.9f));
+    const int red = g.add_material(material("red", {0.7f, 0.08f, 0.05f}, 0.9f));
+    const int blue = g.add_material(material("blue", {0.05f, 0.12f, 0.7f}, 0.9f));
+    int strips[3];
+    for (int i = 0; i < 3; ++i)
+        strips[i] = g.add_material(material(("floor" + std::to_string(i)).c_str(),
+                                            {0.03f, 0.03f, 0.03f}, kStripRoughness[i]));
+    auto node = [&](const world::MeshData& mesh) {
+        g.add_node({{"name", mesh.name}, {"mesh", g.add_mesh(mesh)}});
+    };
+    const glm::vec3 lo(-kRoomHalf, 0.0f, -kRoomHalf), hi(kRoomHalf, kRoomHeight, kRoomHalf);
+    world::MeshData room = insideOut(world::box_mesh("room", lo, hi, 1, true));
+    room.material = plaster;
+    node(room);
+    for (int i = 0; i < 3; ++i)
+        node(floorRect("strip" + std::to_string(i), -3.0f + 2.0f * float(i),
+                       -1.0f + 2.0f * float(i), -kRoomHalf, kRoomHalf, strips[i]));
+    world::MeshData panel =
+        world::box_mesh("red_panel", {-2.0f, 0.6f, -3.0f}, {0.5f, 2.4f, -2.9f}, 1, false);
+    panel.material = red;
+    node(panel);
+    world::MeshData side =
+        world::box_mesh("blue_panel", {2.9f, 0.4f, -2.5f}, {3.0f, 2.2f, 0.5f}, 1, false);
+    side.material = blue;
+    node(side);
+
+    const int primary =
+        g.add_light({{"type", "point"}, {"intensity", 300.0f}, {"color", {1.0f, 1.0f, 1.0f}}});
+    g.add_node({{"name", "primary"},
+                {"translation", vec({0.0f, 2.7f, 0.5f})},
+                {"extensions", {{"KHR_lights_punctual", {{"light", primary}}}}}});
+    const int fill =
+        g.add_light({{"type", "point"}, {"intensity", 200.0f}, {"color", {1.0f, 0.8f, 0.6f}}});
+    g.add_node({{"name", "fill"},
+                {"translation", vec({-2.5f, 2.5f, -2.5f})},
+                {"extensions", {{"KHR_lights_punctual", {{"light", fill}}}}},
+                {"extras", {{"onelight", {{"role", "baked"}}}}}});
+    g.add_node(
+        {{"name", "probe_room"},
+         {"translation", vec({0.0f, 1.5f, 0.0f})},
+         {"extras", {{"onelight", {{"probe", {{"box_min", vec(lo)}, {"box_max", vec(hi)}}}}}}}});
+    const int camera = g.add_camera({{"name", "view"},
+                                     {"type", "perspective"},
+                                     {"perspective",
+                                      {{"yfov", 0.9f},
+                                       {"znear", 0.05f},
+                                       {"zfar", 100.0f},
+                                       {"aspectRatio", float(kWidth) / float(kHeight)}}}});
+    const glm::quat look = glm::angleAxis(glm::radians(-28.0f), glm::vec3(1.0f, 0.0f, 0.0f));
+    g.add_node({{"name", "view"},
+                {"translation", vec({0.0f, 1.4f, 2.7f})},
+                {"rotation", {look.x, look.y, look.z, look.w}},
+                {"camera", camera},
+                {"extras", {{"onelight", {{"exposure", 3.0f}}}}}});
+    return g.write(folder, "probe_room");
+}
+
+// The floor point a pixel centre sees (the room is convex and the camera inside it, so the
+// floor is what the ray meets when it meets y = 0 inside the walls), or y = 1 when none.
+glm::vec3 floorPointOf(const render::Camera& camera, uint32_t x, uint32_t y) {
+    const glm::mat4 inv =
+        glm::inverse(render::projectionMatrix(camera, float(kWidth) / float(kHeight), 1000.0f) *
+                     render::viewMatrix(camera));
+    const glm::vec4 far =
+        inv * glm::vec4(2.0f * (float(x) + 0.5f) / float(kWidth) - 1.0f,
+                        2.0f * (float(y) + 0.5f) / float(kHeight) - 1.0f, 1.0f, 1.0f);
+    const glm::vec3 d = glm::normalize(glm::vec3(far) / far.w - camera.position);
+    if (d.y >= 0.0f) return glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 p = camera.position + (-camera.position.y / d.y) * d;
+    if (std::fabs(p.x) > kRoomHalf || std::fabs(p.z) > kRoomHalf)
+        return glm::vec3(0.0f, 1.0f, 0.0f);
+    return p;
+}
+
+float luminance(const std::vector<float>& rgba, size_t pixel, size_t channels) {
+    return 0.2126f * rgba[pixel * channels] + 0.7152f * rgba[pixel * channels + 1] +
+           0.0722f * rgba[pixel * channels + 2];
+}
+
+// Blocks of kBlock x kBlock pixels all on one strip are compared by their mean luminance:
+// the reference's noise (256 paths per pixel, fireflies from the glossy floor) averages down
+// by kBlock, the runtime's and the reference's structure (reflections, penumbrae) stays.
+constexpr uint32_t kBlock = 8;
+
+struct StripError {
+    double rms = 0.0;  // relative: sqrt(mean (L - L_ref)^2) / mean L_ref over the strip's blocks
+    size_t blocks = 0;
+};
+
+StripError stripError(const render::Camera& camera, const std::vector<float>& frame,
+                      const std::vector<float>& reference, int strip) {
+    const float x0 = -3.0f + 2.0f * float(strip) + 0.15f, x1 = x0 + 2.0f - 0.3f;
+    double squared = 0.0, sum = 0.0;
+    StripError e;
+    for (uint32_t by = 0; by + kBlock <= kHeight; by += kBlock)
+        for (uint32_t bx = 0; bx + kBlock <= kWidth; bx += kBlock) {
+            double got = 0.0, want = 0.0;
+            bool inside = true;
+            for (uint32_t y = by; y < by + kBlock && inside; ++y)
+                for (uint32_t x = bx; x < bx + kBlock && inside; ++x) {
+                    const glm::vec3 p = floorPointOf(camera, x, y);
+                    inside = p.y == 0.0f && p.x >= x0 && p.x <= x1 &&
+                             std::fabs(p.z) <= kRoomHalf - 0.15f;
+                    const size_t i = size_t(y) * kWidth + x;
+                    got += double(luminance(frame, i, 4));
+                    want += double(luminance(reference, i, 3));
+                }
+            if (!inside) continue;
+            squared += (got - want) * (got - want);
+            sum += want;
+            ++e.blocks;
+        }
+    if (e.blocks)
+        e.rms = std::sqrt(squared / double(e.blocks)) / std::max(sum / double(e.blocks), 1e-9);
+    return e;
+}
+
+// reference | with the probe | without, side by side, x / (1 + x) after a common scale, sRGB
+// gamma: a picture of where the errors are.
+void writeComparison(const std::string& path, const std::vector<float>& reference,
+                     const std::vector<float>& with, const std::vector<float>& without) {
+    double mean = 0.0;
+    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i)
+        mean += double(luminance(reference, i, 3));
+    const float scale = float(0.5 / std::max(mean / double(kWidth * kHeight), 1e-9));
+    std::vector<uint8_t> rgba(size_t(3 * kWidth) * kHeight * 4, 255);
+    const std::vector<float>* images[3] = {&reference, &with, &without};
+    for (int k = 0; k < 3; ++k)
+        for (uint32_t y = 0; y < kHeight; ++y)
+            for (uint32_t x = 0; x < kWidth; ++x) {
+                const size_t channels = k == 0 ? 3 : 4, i = size_t(y) * kWidth + x;
+                for (size_t c = 0; c < 3; ++c) {
+                    const float v = (*images[k])[i * channels + c] * scale;
+                    const float display = std::pow(v / (1.0f + v), 1.0f / 2.2f);
+                    rgba[((size_t(y) * 3 * kWidth) + size_t(k) * kWidth + x) * 4 + c] =
+                        uint8_t(std::lround(255.0f * std::clamp(display, 0.0f, 1.0f)));
+                }
+            }
+    std::string error;
+    EXPECT_TRUE(capture::writePng(path, 3 * kWidth, kHeight, rgba, error)) << error;
+}
+
+TEST(RenderProbes, GlossyFloorIsCloserToThePathTracerWithTheProbe) {
+    const std::string folder = test::outputDir() + "/probe_room";
+    std::filesystem::create_directories(folder);
+    const std::string gltf = writeRoom(folder);
+    const assets::LoadedLevel level = test::bakeAndLoad(gltf, folder + "/probe_room.olpak");
+    ASSERT_TRUE(level.hasBakedLighting);
+    ASSERT_EQ(level.baked.probes.size(), 1u);
+    ASSERT_EQ(level.level.cameras.size(), 1u);
+
+    const std::string referencePath = folder + "/reference.exr";
+    const std::string command =
+        std::string(ONELIGHT_BAKE_PATH) + " reference " + gltf + " --camera view --size " +
+        std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --spp " +
+        std::to_string(kReferenceSpp) + " -o " + referencePath + " > /dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::vector<float> reference;
+    {
+        uint32_t w = 0, h = 0;
+        std::string error;
+        std::vector<float> rgba;
+        ASSERT_TRUE(capture::readExr(referencePath, w, h, rgba, error)) << error;
+        ASSERT_EQ(w, kWidth);
+        ASSERT_EQ(h, kHeight);
+        for (size_t i = 0; i < size_t(w) * h; ++i)
+            reference.insert(reference.end(), {rgba[i * 4], rgba[i * 4 + 1], rgba[i * 4 + 2]});
+    }
+
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromLevel(level.level.cameras[0]);
+    render::RendererOptions options;
+    options.width = kWidth;
+    options.height = kHeight;
+    const test::RenderedFrame with = test::renderOnce(level, options, inputs);
+    options.probes = false;
+    const test::RenderedFrame without = test::renderOnce(level, options, inputs);
+    EXPECT_EQ(with.validationErrors, 0u);
+    EXPECT_EQ(without.validationErrors, 0u);
+    writeComparison(folder + "/comparison.png", reference, with.frame.linearRgba,
+                    without.frame.linearRgba);
+
+    for (int strip = 0; strip < 3; ++strip) {
+        const StripError a = stripError(inputs.camera, with.frame.linearRgba, reference, strip);
+        const StripError b = stripError(inputs.camera, without.frame.linearRgba, reference, strip);
+        const float gloss = onelight::glsl::gloss_fromRoughness(kStripRoughness[strip]);
+        std::printf(
+            "[ probes ] gloss %.2f (roughness %.2f): relative RMS error %.4f with the "
+            "probe, %.4f without (%zu blocks of %ux%u pixels)\n",
+            double(gloss), double(kStripRoughness[strip]), a.rms, b.rms, a.blocks, kBlock, kBlock);
+        EXPECT_GE(a.blocks, 12u);
+        EXPECT_LE(a.rms, b.rms) << "gloss " << gloss;
+    }
+}
+
+}  // namespace
