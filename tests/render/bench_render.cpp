@@ -2,10 +2,13 @@
 // spheres and boxes of all four material classes, a sun, a spot and an omni primary). Reports
 // median frame times, the full-PBR / Lambert-only permutation ratio on the same frame (goal
 // <= 1.15), the full-frame / flat-shaded-floor ratio with the same geometry and MSAA (goal <= 1.3)
-// and resident memory. Compare ratios from one run only (TOOLCHAIN.md: timings are noisy).
+// and resident memory; then the probes' cost on a baked level (`onelight-bench-render
+// [PACKAGE]`, default the demo's draft package). Compare ratios from one run only
+// (TOOLCHAIN.md: timings are noisy).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -66,9 +69,43 @@ std::string statusLine(const char* key) {
     return "?";
 }
 
+// The probes' frame cost on a baked level (the demo's draft package unless a path is given):
+// its first camera rendered with the package's probes and with the uniform placeholder
+// environment (RendererOptions::probes off), frames interleaved, medians.
+void benchProbes(vk::Context& ctx, const std::string& package) {
+    assets::LoadedLevel level;
+    std::string error;
+    if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);
+    if (level.level.cameras.empty()) throw std::runtime_error(package + ": no camera");
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromLevel(level.level.cameras.front());
+    std::vector<render::RendererOptions> configs(2);
+    configs[1].probes = false;
+    std::vector<render::Renderer> renderers(configs.size());
+    for (size_t c = 0; c < configs.size(); ++c) {
+        render::createRenderer(renderers[c], ctx, level, configs[c]);
+        for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderers[c], inputs);
+    }
+    std::vector<std::vector<double>> gpu(configs.size());
+    for (int i = 0; i < kFrames; ++i)
+        for (size_t c = 0; c < configs.size(); ++c)
+            gpu[c].push_back(render::drawFrame(renderers[c], inputs).gpuMs);
+    const render::RendererInfo info = render::rendererInfo(renderers[0]);
+    for (auto it = renderers.rbegin(); it != renderers.rend(); ++it) render::destroyRenderer(*it);
+    const double with = median(gpu[0]), without = median(gpu[1]);
+    std::printf("  probes: %s, camera '%s': %u probes, %.1f KiB of cube array (%.1f KiB each)\n",
+                package.c_str(), level.level.cameras.front().name.c_str(), info.probes,
+                double(info.probeBytes) / 1024.0,
+                info.probes ? double(info.probeBytes) / 1024.0 / info.probes : 0.0);
+    std::printf(
+        "  frame with probes %8.2f ms GPU, with the uniform placeholder %8.2f ms GPU, "
+        "ratio %.3f\n",
+        with, without, with / without);
+}
+
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
     try {
         const std::string dir = test::outputDir();
         const std::string gltf = dir + "/bench_level.gltf";
@@ -107,6 +144,7 @@ int main() {
         const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
         for (auto it = renderers.rbegin(); it != renderers.rend(); ++it)
             render::destroyRenderer(*it);
+        benchProbes(ctx, argc > 1 ? argv[1] : ONELIGHT_DEMO_PACKAGE);
         vk::destroyContext(ctx);
         struct Row {
             double gpuMs, cpuMs;
