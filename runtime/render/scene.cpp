@@ -326,6 +326,12 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
                 throw std::runtime_error("probe " + std::to_string(i) + " has face size " +
                                          std::to_string(probes[i].face_size) + "; expected " +
                                          std::to_string(size) + " like probe 0 (one cube array)");
+        const uint32_t maxProbes = s.ctx->properties.limits.maxImageArrayLayers / 6;
+        if (probes.size() > maxProbes)
+            throw std::runtime_error(std::to_string(probes.size()) + " environment probes; this " +
+                                     "device holds at most " + std::to_string(maxProbes) +
+                                     " (maxImageArrayLayers " +
+                                     std::to_string(maxProbes * 6) + " / 6 faces)");
         const ProbeRecords ordered = makeProbeRecords(probes, s.boundsMin, s.boundsMax);
         records = ordered.records;
         desc.format = VK_FORMAT_E5B9G9R9_UFLOAT_PACK32;

@@ -180,9 +180,9 @@ TEST(ProbePlacement, NoProbeInsideASolidBlock) {
     test::add_box(source, glm::vec3(2.0f), glm::vec3(6.0f), m, false, "block");
     const Built built(source);
     ProbePlacementStats stats;
-    const std::vector<ProbePlacement> probes = place(built, 1.0f, &stats);
+    const std::vector<ProbePlacement> probes = place(built, 2.0f, &stats);
     EXPECT_EQ(countInside(probes, glm::vec3(2.0f), glm::vec3(6.0f)), 0u);
-    EXPECT_EQ(probes.size(), 512u - 64u);  // 8^3 points, 4^3 of them in the block
+    EXPECT_EQ(probes.size(), 64u - 8u);  // 4^3 points (1, 3, 5, 7 per axis), 2^3 in the block
     EXPECT_EQ(stats.components, 1u);
 }
 
@@ -192,11 +192,11 @@ TEST(ProbePlacement, HalvingTheSpacingGivesEightTimesTheProbes) {
                   test::add_lambert_material(source, 0.5f), true, "room");
     const Built built(source);
     ProbePlacementStats coarse, fine;
-    EXPECT_EQ(place(built, 2.0f, &coarse).size(), 64u);
-    EXPECT_EQ(place(built, 1.0f, &fine).size(), 512u);
+    EXPECT_EQ(place(built, 4.0f, &coarse).size(), 8u);
+    EXPECT_EQ(place(built, 2.0f, &fine).size(), 64u);
     EXPECT_EQ(coarse.components, 1u);
     EXPECT_EQ(fine.components, 1u);
-    EXPECT_FLOAT_EQ(fine.spacing, 1.0f);
+    EXPECT_FLOAT_EQ(fine.spacing, 2.0f);
 }
 
 TEST(ProbePlacement, TheLevelsSpacingWinsOverTheBakeDefault) {
