@@ -330,8 +330,8 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
         if (probes.size() > maxProbes)
             throw std::runtime_error(std::to_string(probes.size()) + " environment probes; this " +
                                      "device holds at most " + std::to_string(maxProbes) +
-                                     " (maxImageArrayLayers " +
-                                     std::to_string(maxProbes * 6) + " / 6 faces)");
+                                     " (maxImageArrayLayers " + std::to_string(maxProbes * 6) +
+                                     " / 6 faces)");
         const ProbeRecords ordered = makeProbeRecords(probes, s.boundsMin, s.boundsMax);
         records = ordered.records;
         desc.format = VK_FORMAT_E5B9G9R9_UFLOAT_PACK32;
