@@ -233,21 +233,20 @@ void uploadImageMips(const Context& ctx, Image& image, std::span<const uint8_t> 
     std::memcpy(staging.mapped, bytes.data(), bytes.size());
     try {
         submitOnce(ctx, [&](VkCommandBuffer cmd) {
-            imageBarrier(cmd, image,
-                         layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED,
-                                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                       VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                                       VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                       VK_ACCESS_TRANSFER_WRITE_BIT));
+            imageBarrier(
+                cmd, image,
+                layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                              VK_ACCESS_TRANSFER_WRITE_BIT));
             vkCmdCopyBufferToImage(cmd, staging.buffer, image.image,
                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(copies.size()),
                                    copies.data());
-            imageBarrier(cmd, image,
-                         layoutBarrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                                       VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                                       VK_ACCESS_SHADER_READ_BIT));
+            imageBarrier(
+                cmd, image,
+                layoutBarrier(VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                              VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
         });
     } catch (...) {
         destroyBuffer(ctx, staging);
