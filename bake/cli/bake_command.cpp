@@ -11,6 +11,7 @@
 #include <tbb/global_control.h>
 
 #include "bake/bake_level.hpp"
+#include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "world/error.hpp"
 #include "world/import/gltf_import.hpp"
@@ -23,16 +24,6 @@ constexpr const char* kUsage =
     "usage: onelight-bake LEVEL.gltf -o LEVEL.olpak [--quality draft|default|high] "
     "[--threads N] [--report report.json] [--shard i/N] [--sky CD_PER_M2] [--grid-cell M] "
     "[--texels-per-metre N] [--quiet]";
-
-bool parse_double(const std::string& text, double low, double high, double& out) {
-    try {
-        size_t used = 0;
-        out = std::stod(text, &used);
-        return used == text.size() && out >= low && out <= high;
-    } catch (const std::exception&) {
-        return false;
-    }
-}
 
 int bad_argument(const std::string& what) {
     std::fprintf(stderr, "onelight-bake: %s\n%s\n", what.c_str(), kUsage);
@@ -56,7 +47,7 @@ int run_bake_command(const std::vector<std::string>& arguments) {
                 return bad_argument("--quality '" + arguments[i] +
                                     "'; expected draft, default or high");
         } else if (a == "--threads" && has_value) {
-            if (!parse_double(arguments[++i], 1, 1024, v))
+            if (!parse_number(arguments[++i], 1, 1024, v))
                 return bad_argument("--threads '" + arguments[i] + "'; expected 1..1024");
             threads = static_cast<int>(v);
         } else if (a == "--report" && has_value) {
@@ -65,21 +56,21 @@ int run_bake_command(const std::vector<std::string>& arguments) {
             const std::string s = arguments[++i];
             const size_t slash = s.find('/');
             double index = 0, count = 0;
-            if (slash == std::string::npos || !parse_double(s.substr(0, slash), 0, 65535, index) ||
-                !parse_double(s.substr(slash + 1), 1, 65536, count) || index >= count)
+            if (slash == std::string::npos || !parse_number(s.substr(0, slash), 0, 65535, index) ||
+                !parse_number(s.substr(slash + 1), 1, 65536, count) || index >= count)
                 return bad_argument("--shard '" + s + "'; expected i/N with 0 <= i < N");
             options.shard_index = static_cast<uint32_t>(index);
             options.shard_count = static_cast<uint32_t>(count);
         } else if (a == "--sky" && has_value) {
-            if (!parse_double(arguments[++i], 0, 1e9, v))
+            if (!parse_number(arguments[++i], 0, 1e9, v))
                 return bad_argument("--sky '" + arguments[i] + "'; expected cd/m^2 >= 0");
             options.sky_radiance = glm::vec3(static_cast<float>(v));
         } else if (a == "--grid-cell" && has_value) {
-            if (!parse_double(arguments[++i], 0.05, 1000, v))
+            if (!parse_number(arguments[++i], 0.05, 1000, v))
                 return bad_argument("--grid-cell '" + arguments[i] + "'; expected metres");
             options.grid_cell_size = static_cast<float>(v);
         } else if (a == "--texels-per-metre" && has_value) {
-            if (!parse_double(arguments[++i], 0.01, 1024, v))
+            if (!parse_number(arguments[++i], 0.01, 1024, v))
                 return bad_argument("--texels-per-metre '" + arguments[i] +
                                     "'; expected a number in [0.01, 1024]");
             options.compile.charts.texels_per_metre = v;
@@ -98,7 +89,7 @@ int run_bake_command(const std::vector<std::string>& arguments) {
     if (threads > 0)
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(threads));
-    try {
+    return run_reporting_errors(input, [&] {
         const world::SourceLevel source = world::import_gltf(input);
         BakeResult result = bake_level(source, options);
         const std::vector<uint8_t> bytes = package_bytes(result.level, result.baked);
@@ -119,14 +110,7 @@ int run_bake_command(const std::vector<std::string>& arguments) {
                                             : "");
         std::printf("%s", report_summary(result.report).c_str());
         return 0;
-    } catch (const world::CompileError& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s\n", e.what());
-    } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "onelight-bake: error: %s: out of memory\n", input.c_str());
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s: %s\n", input.c_str(), e.what());
-    }
-    return 1;
+    });
 }
 
 }  // namespace onelight::bake

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "world/compile/compile_level.hpp"
 #include "world/error.hpp"
@@ -17,16 +18,6 @@ namespace {
 constexpr const char* kUsage =
     "usage: onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [--texels-per-metre N] "
     "[--atlas-size N]";
-
-bool parse_number(const std::string& text, double low, double high, double& out) {
-    try {
-        size_t used = 0;
-        out = std::stod(text, &used);
-        return used == text.size() && out >= low && out <= high;
-    } catch (const std::exception&) {
-        return false;
-    }
-}
 
 /// Image file references become relative to the package's folder.
 void rebase_image_paths(world::CompiledLevel& level, const std::filesystem::path& package) {
@@ -115,7 +106,7 @@ int run_compile_command(const std::vector<std::string>& arguments) {
         return 2;
     }
     if (output.empty()) output = std::filesystem::path(input).replace_extension(".olpak").string();
-    try {
+    return run_reporting_errors(input, [&] {
         const world::SourceLevel source = world::import_gltf(input);
         world::CompileResult result = world::compile_level(source, options);
         rebase_image_paths(result.level, output);
@@ -127,14 +118,7 @@ int run_compile_command(const std::vector<std::string>& arguments) {
         }
         print_summary(output, result.stats, bytes.size());
         return 0;
-    } catch (const world::CompileError& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s\n", e.what());
-    } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "onelight-bake: error: %s: out of memory\n", input.c_str());
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s: %s\n", input.c_str(), e.what());
-    }
-    return 1;
+    });
 }
 
 }  // namespace onelight::bake

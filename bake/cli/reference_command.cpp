@@ -10,6 +10,7 @@
 
 #include <tbb/global_control.h>
 
+#include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "bake/reference/path_tracer.hpp"
 #include "world/compile/static_split.hpp"
@@ -69,7 +70,7 @@ int run_reference_command(const std::vector<std::string>& arguments) {
     if (threads > 0)
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(threads));
-    try {
+    return run_reporting_errors(input, [&] {
         const world::SourceLevel source = world::import_gltf(input);
         const world::Camera* camera = nullptr;
         for (const world::Camera& c : source.cameras)
@@ -106,12 +107,7 @@ int run_reference_command(const std::vector<std::string>& arguments) {
                     height, spp, static_cast<unsigned long long>(rays.total()),
                     double(rays.total()) / progress.seconds() * 1e-6);
         return 0;
-    } catch (const world::CompileError& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s\n", e.what());
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s: %s\n", input.c_str(), e.what());
-    }
-    return 1;
+    });
 }
 
 }  // namespace onelight::bake
