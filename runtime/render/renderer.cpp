@@ -358,6 +358,25 @@ struct Draw {
     float distance2;  // squared metres from the camera: front to back within a permutation
 };
 
+// Dynamic rendering over the whole frame into `color` (and `depth` when given), with the
+// viewport and scissor set to it.
+void beginFrameRendering(VkCommandBuffer cmd, const RendererState& s,
+                         const VkRenderingAttachmentInfo& color,
+                         const VkRenderingAttachmentInfo* depth) {
+    VkRenderingInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
+    info.renderArea = {{0, 0}, {s.width, s.height}};
+    info.layerCount = 1;
+    info.colorAttachmentCount = 1;
+    info.pColorAttachments = &color;
+    info.pDepthAttachment = depth;
+    vkCmdBeginRendering(cmd, &info);
+    const VkViewport viewport{0.0f, 0.0f, float(s.width), float(s.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {s.width, s.height}};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
 void beginColorRendering(VkCommandBuffer cmd, const RendererState& s) {
     VkRenderingAttachmentInfo color{};
     color.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
@@ -381,18 +400,7 @@ void beginColorRendering(VkCommandBuffer cmd, const RendererState& s) {
     depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
     depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     depth.clearValue.depthStencil = {1.0f, 0};
-    VkRenderingInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
-    info.renderArea = {{0, 0}, {s.width, s.height}};
-    info.layerCount = 1;
-    info.colorAttachmentCount = 1;
-    info.pColorAttachments = &color;
-    info.pDepthAttachment = &depth;
-    vkCmdBeginRendering(cmd, &info);
-    const VkViewport viewport{0.0f, 0.0f, float(s.width), float(s.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {s.width, s.height}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    beginFrameRendering(cmd, s, color, &depth);
 }
 
 void copyImageToBuffer(VkCommandBuffer cmd, VkImage image, uint32_t width, uint32_t height,
@@ -709,17 +717,7 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
         color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
         color.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
         color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        VkRenderingInfo info{};
-        info.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
-        info.renderArea = {{0, 0}, {s.width, s.height}};
-        info.layerCount = 1;
-        info.colorAttachmentCount = 1;
-        info.pColorAttachments = &color;
-        vkCmdBeginRendering(cmd, &info);
-        const VkViewport viewport{0.0f, 0.0f, float(s.width), float(s.height), 0.0f, 1.0f};
-        const VkRect2D scissor{{0, 0}, {s.width, s.height}};
-        vkCmdSetViewport(cmd, 0, 1, &viewport);
-        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        beginFrameRendering(cmd, s, color, nullptr);
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.tonemapPipeline);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.tonemapLayout.layout, 0, 1,
                                 &s.tonemapSet, 0, nullptr);
