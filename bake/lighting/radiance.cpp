@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bake/lighting/surface_sampling.hpp"
 #include "shading.hpp"
 
 namespace onelight::bake {
@@ -64,22 +65,16 @@ glm::vec3 trace_radiance(const BakeScene& scene, const BakeLights& lights,
         radiance +=
             throughput * direct_radiance(scene, lights, material, hit.position, n, v, rng, rays);
 
-        const glm::vec3 local = sample_cosine_hemisphere({rng.next(), rng.next()});
-        const glm::vec3 next = glm::normalize(frame_around(n).to_world(local));
-        glm::vec3 weight = material.albedo;
-        if (local.z > 1e-6f)
-            weight += kPi / local.z *
-                      glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
-                                         material.specular_color, material.gloss,
-                                         glsl::brdfDots(n, v, next));
-        throughput *= weight;
+        const SurfaceSample next = sample_surface(material, n, v, rng);
+        if (next.weight == glm::vec3(0.0f)) break;
+        throughput *= next.weight;
         if (depth + 1 >= settings.roulette_depth) {
             const float q = std::min(0.95f, std::max({throughput.x, throughput.y, throughput.z}));
             if (!(q > 0.0f) || rng.next() >= q) break;
             throughput /= q;
         }
         origin = hit.position + n * scene.ray_offset();
-        dir = next;
+        dir = next.direction;
     }
     return finite_non_negative(radiance) ? radiance : glm::vec3(0.0f);
 }

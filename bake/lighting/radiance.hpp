@@ -49,15 +49,16 @@ struct FirstHit {
 };
 
 /// Radiance arriving at `origin` from direction `-dir` (i.e. found by looking along `dir`):
-/// a path traced with next-event estimation at every hit and cosine-sampled continuation.
+/// a path traced with next-event estimation at every hit and a continuation drawn from the
+/// diffuse-specular mixture of surface_sampling.hpp.
 /*
    L(x, -w) = Lo(y, -w),  y the first hit along w, or the sky radiance when there is none.
    Lo(y, v) = Lo_direct(y, v) + int f(v, w') L(y, -w') cos' dw'
-   Continuation: w' cosine-distributed (pdf cos' / pi), so the path throughput multiplies by
-     f cos' / pdf = pi f = albedo + pi specularLobe / NoL
-   and by 1 / q when Russian roulette survives with probability q (unbiased).
+   Continuation: w' from the mixture density pdf(w') (sample_surface), so the path throughput
+   multiplies by f cos' / pdf (albedo exactly for a Lambert-only surface), and by 1 / q when
+   Russian roulette survives with probability q (unbiased).
      +------------------------------------------------------------------------------+
-     | L ~ sum_k T_k Lo_direct(y_k),  T_{k+1} = T_k (albedo + pi specularLobe / NoL) / q |
+     | L ~ sum_k T_k Lo_direct(y_k),  T_{k+1} = T_k (f cos' / pdf(w')) / q              |
      +------------------------------------------------------------------------------+
    Back faces of single-sided materials absorb (they are only seen from inside solids).
 */

@@ -147,10 +147,9 @@ float luminance(const std::vector<float>& rgba, size_t pixel, size_t channels) {
            0.0722f * rgba[pixel * channels + 2];
 }
 
-// Blocks of kBlock x kBlock pixels all on one strip are compared by their mean luminance:
-// the reference's noise (1024 paths per pixel; its fireflies are the light's caustic off the
-// glossy floor onto the walls, seen again in the floor: real light, slow to converge) averages down
-// by kBlock, the runtime's and the reference's structure (reflections, penumbrae) stays.
+// Blocks of kBlock x kBlock pixels all on one strip are compared by their mean luminance: the
+// reference's noise (1024 paths per pixel) averages down by kBlock, the structure (reflections,
+// penumbrae) stays.
 constexpr uint32_t kBlock = 8;
 
 struct StripError {

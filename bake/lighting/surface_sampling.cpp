@@ -1,0 +1,68 @@
+#include "bake/lighting/surface_sampling.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bake/lighting/radiance.hpp"
+#include "shading.hpp"
+
+namespace onelight::bake {
+
+float specular_probability(const world::Material& material, float NoV) {
+    const float specular =
+        luminance(glsl::F_Schlick(material.specular_color, std::clamp(NoV, 0.0f, 1.0f)));
+    if (!(luminance(material.specular_color) > 0.0f)) return 0.0f;
+    const float diffuse = luminance(material.albedo);
+    return specular / (specular + std::max(diffuse, 0.0f));
+}
+
+float surface_pdf(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
+                  const glm::vec3& l) {
+    const float NoL = glm::dot(n, l);
+    if (NoL <= 0.0f) return 0.0f;
+    const float p = specular_probability(material, glm::dot(n, v));
+    float pdf = (1.0f - p) * NoL / kPi;
+    if (p > 0.0f) {
+        const glsl::BrdfDots d = glsl::brdfDots(n, v, l);
+        const float NoH = std::sqrt(std::max(0.0f, 1.0f - d.NxH2));
+        const float D = glsl::D_GGX(d.NxH2, glsl::ggxAlpha_fromGloss(material.gloss));
+        pdf += p * D * NoH / (4.0f * std::max(d.LoH, 1e-8f));
+    }
+    return pdf;
+}
+
+SurfaceSample sample_surface(const world::Material& material, const glm::vec3& n,
+                             const glm::vec3& v, Rng& rng) {
+    const Frame frame = frame_around(n);
+    const float p = specular_probability(material, glm::dot(n, v));
+    SurfaceSample s;
+    if (p > 0.0f && (p >= 1.0f || rng.next() < p)) {
+        const float a = glsl::ggxAlpha_fromGloss(material.gloss);
+        const float u1 = rng.next(), u2 = rng.next();
+        const float cos2 = (1.0f - u1) / (1.0f + (a * a - 1.0f) * u1);
+        const float sin_h = std::sqrt(std::max(0.0f, 1.0f - cos2));
+        const float phi = 2.0f * kPi * u2;
+        const glm::vec3 h = frame.to_world(
+            {sin_h * std::cos(phi), sin_h * std::sin(phi), std::sqrt(std::max(0.0f, cos2))});
+        s.direction = glm::normalize(2.0f * glm::dot(v, h) * h - v);
+    } else {
+        s.direction =
+            glm::normalize(frame.to_world(sample_cosine_hemisphere({rng.next(), rng.next()})));
+        if (p == 0.0f) {  // Lambert alone: f cos / pdf = (albedo NoL / pi) / (NoL / pi)
+            s.weight = material.albedo;
+            return s;
+        }
+    }
+    const float NoL = glm::dot(n, s.direction);
+    if (NoL <= 1e-6f) return s;  // below the horizon: no contribution
+    const float pdf = surface_pdf(material, n, v, s.direction);
+    if (!(pdf > 0.0f)) return s;
+    const glsl::BrdfDots d = glsl::brdfDots(n, v, s.direction);
+    const glm::vec3 f_cos = material.albedo * (glsl::Fd_Lambert() * d.NoL) +
+                            glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
+                                               material.specular_color, material.gloss, d);
+    s.weight = f_cos / pdf;
+    return s;
+}
+
+}  // namespace onelight::bake

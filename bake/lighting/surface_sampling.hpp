@@ -1,0 +1,44 @@
+// Where a path goes after it hits a surface: one direction drawn from a mixture of the diffuse
+// lobe (cosine) and the specular lobe (the GGX normal distribution), weighted by the mixture's
+// density. Sampling only the cosine left the specular lobe to chance: a floor of gloss 0.8 seen
+// through cosine samples is a field of fireflies (its lobe covers ~1e-4 of the hemisphere).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "bake/lighting/sampling.hpp"
+#include "world/compiled_level.hpp"
+
+namespace onelight::bake {
+
+/// The continuation and its throughput factor f(v, l) NoL / pdf(l); weight 0 ends the path.
+struct SurfaceSample {
+    glm::vec3 direction{0.0f};
+    glm::vec3 weight{0.0f};
+};
+
+/// Probability of drawing from the specular lobe at view cosine NoV: the luminance of its
+/// Schlick reflectance at normal view, F(NoV) = f0 + (1 - f0)(1 - NoV)^5, over that plus the
+/// diffuse albedo's. 0 for a surface without specular colour, 1 without albedo.
+float specular_probability(const world::Material& material, float NoV);
+
+/// Density (per steradian) of sample_surface drawing l at (n, v): the mixture
+///   pdf(l) = (1 - p) NoL / pi + p D(h) NoH / (4 VoH),   h = normalize(v + l), p as above
+/// (Walter et al. 2007, eq. 14 and 38: a half vector drawn with density D NoH reflects to l
+/// with density D NoH / (4 VoH)).
+float surface_pdf(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
+                  const glm::vec3& l);
+
+/// Draws the continuation at a hit with unit normal n (facing v) seen from unit v: with
+/// probability p a GGX half vector about n (cos^2 theta_h = (1 - u) / (1 + (a^2 - 1) u),
+/// Walter et al. 2007 eq. 35) reflected about v, else a cosine direction. The weight is the
+/// BRDF times NoL over the mixture density (Veach 1997, sec. 9.2.2: one sample from a mixture
+/// is unbiased with weight f cos / sum_i p_i pdf_i, the balance heuristic):
+///            +---------------------------------------------------------------------+
+///            | weight = (albedo NoL / pi + specularLobe(v, l)) / pdf(l)             |
+///            +---------------------------------------------------------------------+
+/// A surface without specular colour draws exactly as before (two random numbers, cosine).
+SurfaceSample sample_surface(const world::Material& material, const glm::vec3& n,
+                             const glm::vec3& v, Rng& rng);
+
+}  // namespace onelight::bake
