@@ -75,6 +75,11 @@ std::string compilerError(const std::string& output) {
 }  // namespace
 
 bool resolveLevelPackage(const std::string& level, std::string& package, std::string& error) {
+    return resolveLevelPackage(level, package, error, bakeExecutable().string());
+}
+
+bool resolveLevelPackage(const std::string& level, std::string& package, std::string& error,
+                         const std::string& baker) {
     std::error_code ec;
     if (!fs::is_regular_file(level, ec)) {
         error = level + ": no such file; expected a glTF level (.gltf, .glb) or a .olpak package";
@@ -91,12 +96,16 @@ bool resolveLevelPackage(const std::string& level, std::string& package, std::st
     }
     const fs::path compiled = fs::path(level).replace_extension(".olpak");
     package = compiled.string();
-    const bool fresh = fs::exists(compiled, ec) &&
-                       fs::last_write_time(compiled, ec) >= fs::last_write_time(level, ec);
+    const fs::path bake = baker;
+    // Fresh: newer than the level and than the baker (a rebuilt baker bakes differently).
+    const bool bakerKnown = fs::exists(bake, ec);
+    const bool fresh =
+        fs::exists(compiled, ec) &&
+        fs::last_write_time(compiled, ec) >= fs::last_write_time(level, ec) &&
+        (!bakerKnown || fs::last_write_time(compiled, ec) >= fs::last_write_time(bake, ec));
     if (fresh && !ec) return true;
 
-    const fs::path bake = bakeExecutable();
-    if (!fs::exists(bake, ec)) {
+    if (!bakerKnown) {
         error = level + ": needs compiling, but " + bake.string() +
                 " is missing; expected "
                 "onelight-bake beside onelight";
@@ -115,9 +124,10 @@ bool resolveLevelPackage(const std::string& level, std::string& package, std::st
     }
     const bool watched = isatty(STDERR_FILENO) != 0;
     if (watched)
-        std::fprintf(stderr,
-                     "onelight: baking %s (the package is missing or older than the level)\n",
-                     level.c_str());
+        std::fprintf(
+            stderr,
+            "onelight: baking %s (the package is missing or older than the level or the baker)\n",
+            level.c_str());
     output.clear();
     code = runCaptured({bake.string(), level, "-o", package}, output, watched);
     if (code != 0) {

@@ -1,0 +1,82 @@
+// When the game rebakes a glTF level (game/level_source.cpp): only when its package is missing
+// or older than the level or the baker. A stand-in baker (a shell script) records its calls and
+// writes the package, so the test sees each decision without a real bake.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "level_source.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Fixture {
+    fs::path dir, level, package, baker, calls;
+    Fixture() {
+        dir = fs::temp_directory_path() / ("onelight_level_source_" + std::to_string(::getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        level = dir / "level.gltf";
+        package = dir / "level.olpak";
+        baker = dir / "fake-bake";
+        calls = dir / "calls.txt";
+        std::ofstream(level) << "{}";
+        // Records its arguments; writes the package named after -o.
+        std::ofstream(baker) << "#!/bin/sh\necho \"$1\" >> '" << calls.string()
+                             << "'\nwhile [ $# -gt 1 ]; do [ \"$1\" = -o ] && echo pak > \"$2\"; "
+                                "shift; done\nexit 0\n";
+        fs::permissions(baker, fs::perms::owner_all);
+    }
+    ~Fixture() { fs::remove_all(dir); }
+    int callCount() const {
+        std::ifstream in(calls);
+        int n = 0;
+        for (std::string line; std::getline(in, line);) ++n;
+        return n;
+    }
+    void age(const fs::path& p, int seconds) const {
+        fs::last_write_time(p, fs::file_time_type::clock::now() - std::chrono::seconds(seconds));
+    }
+};
+
+TEST(LevelSource, RebakesOnlyWhenThePackageIsOlderThanTheLevelOrTheBaker) {
+    const Fixture f;
+    std::string package, error;
+    // Missing package: compile, then bake.
+    ASSERT_TRUE(onelight::game::resolveLevelPackage(f.level, package, error, f.baker)) << error;
+    EXPECT_EQ(package, f.package.string());
+    EXPECT_EQ(f.callCount(), 2);
+
+    // Newer than both: used as it is.
+    f.age(f.level, 100);
+    f.age(f.baker, 100);
+    ASSERT_TRUE(onelight::game::resolveLevelPackage(f.level, package, error, f.baker)) << error;
+    EXPECT_EQ(f.callCount(), 2);
+
+    // A rebuilt baker makes it stale.
+    f.age(f.package, 200);
+    f.age(f.level, 300);
+    ASSERT_TRUE(onelight::game::resolveLevelPackage(f.level, package, error, f.baker)) << error;
+    EXPECT_EQ(f.callCount(), 4);
+
+    // So does an edited level.
+    f.age(f.package, 200);
+    f.age(f.baker, 300);
+    f.age(f.level, 100);
+    ASSERT_TRUE(onelight::game::resolveLevelPackage(f.level, package, error, f.baker)) << error;
+    EXPECT_EQ(f.callCount(), 6);
+
+    // No baker and a stale package: a clear error naming the level and the baker.
+    f.age(f.package, 200);
+    EXPECT_FALSE(
+        onelight::game::resolveLevelPackage(f.level, package, error, (f.dir / "absent").string()));
+    EXPECT_NE(error.find("level.gltf: needs compiling"), std::string::npos) << error;
+}
+
+}  // namespace
