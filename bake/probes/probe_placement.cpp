@@ -147,8 +147,10 @@ std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const
     assert(std::isfinite(spacing) && spacing > 0.0f && "probe spacing must be metres > 0");
     // Without asserts, a bad spacing (0 would never let the cap's growth end) gets the default.
     if (!(std::isfinite(spacing) && spacing > 0.0f)) spacing = ProbePlacementSettings{}.spacing;
-    const Lattice lattice =
-        layLattice(level.settings.bounds_min, level.settings.bounds_max, spacing);
+    // A flat level (a floor alone) would put its points on the floor, half their view in it.
+    glm::vec3 top = level.settings.bounds_max;
+    top.y = std::max(top.y, level.settings.bounds_min.y + kProbeMinLatticeHeight);
+    const Lattice lattice = layLattice(level.settings.bounds_min, top, spacing);
     const uint32_t count = lattice.count();
     out.spacing = lattice.spacing;
     out.lattice = lattice.dims;

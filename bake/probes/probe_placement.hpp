@@ -22,6 +22,9 @@ struct ProbePlacementSettings {
 /// default quality (131 KB, 1.5 s each), and 1536 cube-array layers at runtime, under the 2048
 /// layers Vulkan implementations commonly allow (maxImageArrayLayers; lavapipe's too).
 inline constexpr uint32_t kMaxProbeLatticePoints = 256;
+/// The lattice spans at least this much above the bounds' bottom (y is up): a flat level's
+/// probes float half of it above the floor instead of lying in it.
+inline constexpr float kProbeMinLatticeHeight = 2.0f;  // metres
 /// Directions cast from a point to tell whether it is inside solid (a Fibonacci sphere set).
 inline constexpr uint32_t kProbeSolidRays = 64;
 /// Inside solid when more than this fraction of the rays that hit something hit a back face.
@@ -49,7 +52,8 @@ struct ProbePlacementStats {
 // - Lattice: the spacing is level.settings.probe_spacing when the level sets it (> 0), else
 //   settings.spacing. Over the static bounds (level.settings.bounds_min/max), per axis
 //   n = max(1, ceil(extent / spacing)) cells of extent / n metres (<= spacing), a point at each
-//   cell centre (at bounds_min on an axis of zero extent), as the light grid lays its cells.
+//   cell centre (at bounds_min on an axis of zero extent), as the light grid lays its cells;
+//   the top is raised to at least bounds_min.y + kProbeMinLatticeHeight.
 //   Over kMaxProbeLatticePoints points in all, the spacing grows by
 //   max(1.01, cbrt(points / kMaxProbeLatticePoints)) until it fits.
 // - Open: a point is inside solid when, of kProbeSolidRays fixed directions (a Fibonacci sphere

@@ -287,6 +287,19 @@ TEST(ProbePlacement, NoneWithoutSpecularMaterials) {
     EXPECT_TRUE(place(built, 1.0f).empty());
 }
 
+// A floor alone: the lattice is lifted to kProbeMinLatticeHeight, so its probes float half of
+// it above the floor (they would otherwise lie in the floor, half their view black).
+TEST(ProbePlacement, AFlatLevelsProbesFloatAboveIt) {
+    world::SourceLevel source;
+    test::add_quad(source, {-4.0f, 0.0f, -4.0f}, {-4.0f, 0.0f, 4.0f}, {4.0f, 0.0f, 4.0f},
+                   {4.0f, 0.0f, -4.0f}, test::add_lambert_material(source, 0.5f), "floor");
+    const Built built(source);
+    const std::vector<ProbePlacement> probes = place(built, 4.0f);
+    ASSERT_EQ(probes.size(), 4u);  // 2 x 1 x 2
+    for (const ProbePlacement& p : probes)
+        EXPECT_FLOAT_EQ(p.position.y, 0.5f * kProbeMinLatticeHeight);
+}
+
 TEST(ProbePlacement, AnEmptyLevelGetsOneProbeAtTheCentre) {
     EmbreeDevice device;
     const BakeScene scene(device, world::StaticGeometry{}, {});
