@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,7 @@ struct BakeOptions {
     BakeQuality quality = BakeQuality::normal;
     world::CompileOptions compile;
     LightSizes light_sizes;
-    glm::vec3 sky_radiance{0.0f};  // cd/m^2, uniform sky (0: none)
+    std::optional<glm::vec3> sky_radiance;  // cd/m^2, uniform sky; unset: the level's
     float grid_cell_size = 1.0f;   // metres
     float probe_spacing = 8.0f;    // metres between automatic probes unless the level sets it
     uint32_t shard_index = 0, shard_count = 1;

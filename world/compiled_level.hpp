@@ -224,6 +224,7 @@ struct LevelSettings {
     float texels_per_metre = 0.0f;                 // requested lightmap density
     glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // static geometry, metres
     float probe_spacing = 0.0f;                    // metres between automatic probes; 0 = unset
+    glm::vec3 sky_radiance{0.0f};                  // cd/m^2, RGB: the uniform sky, 0 = none
 };
 
 struct CompiledLevel {

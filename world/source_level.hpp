@@ -39,6 +39,7 @@ struct SourceLevel {
     bool has_exposure = false;
     float texels_per_metre = 0.0f;  // the level's lightmap density (extras), 0 when not given
     float probe_spacing = 0.0f;     // metres between automatic probes (extras), 0 when not given
+    glm::vec3 sky_radiance{0.0f};   // cd/m^2, RGB: a uniform sky around the level (extras)
     bool has_grid_bounds = false;
     glm::vec3 grid_min{0.0f}, grid_max{0.0f};
 };

@@ -1,7 +1,8 @@
 // onelight-bake LEVEL.gltf -o LEVEL.olpak [--quality draft|default|high] [--threads N]
 //     [--report report.json] [--shard i/N] [--sky L] [--grid-cell M] [--texels-per-metre N]
 //     [--quiet]
-// Compiles and bakes in one go: progress bars with ETA on stderr, a summary on stdout.
+// Compiles and bakes in one go: progress bars with ETA on stderr, a summary on stdout. --sky
+// overrides the level's uniform sky (extras.onelight.sky).
 #include <cstdio>
 #include <exception>
 #include <filesystem>

@@ -1,5 +1,5 @@
 // onelight-bake reference LEVEL.gltf --camera NAME [--size WxH] --spp N -o out.exr
-//     [--sky CD_PER_M2] [--threads N]
+//     [--sky CD_PER_M2] [--threads N]   (--sky overrides the level's extras.onelight.sky)
 // The path-traced ground truth of a camera's view: linear radiance in cd/m^2, every light at
 // full strength, no exposure, no tonemap.
 #include <cmath>
@@ -28,7 +28,7 @@ int run_reference_command(const std::vector<std::string>& arguments) {
     std::string input, output, camera_name;
     uint32_t width = 0, height = 0, spp = 0;
     int threads = 0;
-    float sky = 0.0f;
+    float sky = -1.0f;  // < 0: the level's sky
     try {
         for (size_t i = 0; i < arguments.size(); ++i) {
             const std::string& a = arguments[i];
@@ -92,7 +92,8 @@ int run_reference_command(const std::vector<std::string>& arguments) {
         const EmbreeDevice device;
         const world::SplitLevel split = world::split_static_dynamic(source);
         const BakeScene scene(device, split.static_geometry, source.materials);
-        const BakeLights lights = make_bake_lights(source.lights, LightSizes{}, glm::vec3(sky));
+        const BakeLights lights = make_bake_lights(
+            source.lights, LightSizes{}, sky >= 0.0f ? glm::vec3(sky) : source.sky_radiance);
         RayCounts rays;
         Progress progress("reference", height, true);
         const ReferenceImage image =

@@ -169,10 +169,15 @@ std::string writeDemoLevel(const std::string& folder) {
             {{"type", "point"}, {"color", vec({0.8f, 0.85f, 1.0f})}, {"intensity", 150.0f}},
             {13, 3.5f, -3}, {0, -1, 0}, "baked");
 
-    // Level settings: lightmap density (17 cm texels keep the bake to seconds at draft quality)
-    // and the default exposure.
+    // Level settings: lightmap density (17 cm texels keep the bake to seconds at draft quality),
+    // the default exposure and a clear sky (luminance 4,900 cd/m^2, bluish: about 15 klx on the
+    // courtyard floor beside the sun's 60 klx).
     g.add_node({{"name", "level_settings"},
-                {"extras", {{"onelight", {{"texels_per_metre", 6.0f}, {"exposure", 13.0f}}}}}});
+                {"extras",
+                 {{"onelight",
+                   {{"texels_per_metre", 6.0f},
+                    {"exposure", 13.0f},
+                    {"sky", vec({4000.0f, 5000.0f, 6500.0f})}}}}}});
 
     // Cameras (with their exposure) and the player's spawn.
     l.camera("courtyard", {-10, 1.7f, 6}, -115, -4, 14.5f);

@@ -377,12 +377,14 @@ void beginFrameRendering(VkCommandBuffer cmd, const RendererState& s,
     vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
-void beginColorRendering(VkCommandBuffer cmd, const RendererState& s) {
+// The forward pass over a clear to the level's sky (pre-exposed radiance, as the pass writes).
+void beginColorRendering(VkCommandBuffer cmd, const RendererState& s, float exposure) {
     VkRenderingAttachmentInfo color{};
     color.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.clearValue.color = {{0.0f, 0.0f, 0.0f, 1.0f}};
+    const glm::vec3 sky = glm::min(s.settings.sky_radiance * exposure, glm::vec3(65000.0f));  // HALF_MAX of forward.frag
+    color.clearValue.color = {{sky.r, sky.g, sky.b, 1.0f}};
     if (s.samples != VK_SAMPLE_COUNT_1_BIT) {
         color.imageView = s.msaaColor.view;
         color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
@@ -661,7 +663,7 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
                           depthStages, 0, depthStages,
                           VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
-    beginColorRendering(cmd, s);
+    beginColorRendering(cmd, s, stats.exposure);
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &s.vertices.buffer, &zero);
     vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);

@@ -23,7 +23,8 @@ struct Baked {
 
 Baked bake(const world::SourceLevel& source, const BakeOptions& options) {
     Baked b{bake_level(source, options),
-            make_bake_lights(source.lights, options.light_sizes, options.sky_radiance),
+            make_bake_lights(source.lights, options.light_sizes,
+                             options.sky_radiance.value_or(source.sky_radiance)),
             {}};
     b.samples = place_texels(b.result.level);
     return b;

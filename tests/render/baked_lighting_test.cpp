@@ -564,4 +564,35 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
     EXPECT_GT(rendered[0].x - rendered[1].x, 0.5f * (secondary[0].x - secondary[1].x));  // ...seen
 }
 
+// A Lambert floor under a uniform sky of radiance L and nothing else sees sky over its whole
+// upper hemisphere: E = pi L, so its radiance is albedo L (closed form; and noise-free, as
+// every path escapes at its first ray). Where the frame shows no geometry it shows the sky, L.
+// Tolerance 1%: RGBA16F lightmap coefficients and HDR target (2^-11 each), the readback's
+// un-exposure.
+TEST(RenderBaked, FloorUnderAUniformSkyIsAlbedoTimesSky) {
+    test::Scene scene;
+    scene.materials = {{{0.5f, 0.5f, 0.5f, 1.0f}, 0.0f, 1.0f}};  // Lambert
+    test::addFloor(scene, 0.0f, 0.0f, 10.0f, 0.0f, 0);
+    scene.sky = glm::vec3(1000.0f, 2000.0f, 3000.0f);
+    const std::string gltf = test::outputDir() + "/sky_floor.gltf";
+    test::writeGltf(scene, gltf);
+    const assets::LoadedLevel level =
+        test::bakeAndLoad(gltf, test::outputDir() + "/sky_floor.olpak");
+    ASSERT_TRUE(level.hasBakedLighting);
+    EXPECT_EQ(level.level.settings.sky_radiance, scene.sky);
+
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({0.0f, 2.0f, 6.0f}, 0.0f, -10.0f);
+    inputs.camera.hasExposure = true;
+    inputs.camera.ev100 = 10.0f;
+    const std::vector<float> linear =
+        renderLinear(level, options(40.0f, 8.0f), inputs, "sky_floor");
+    const glm::vec3 sky = pixel(linear, kWidth / 2, 2);
+    EXPECT_LT(relativeError(sky, scene.sky, 1.0), 0.01) << sky.x << " " << sky.y << " " << sky.z;
+    const glm::uvec2 at = floorPixelNear(inputs.camera, {0.0f, 0.0f, 2.0f});
+    const glm::vec3 floor = pixel(linear, at.x, at.y);
+    EXPECT_LT(relativeError(floor, 0.5f * scene.sky, 1.0), 0.01)
+        << floor.x << " " << floor.y << " " << floor.z;
+}
+
 }  // namespace

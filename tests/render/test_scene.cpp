@@ -193,6 +193,10 @@ void writeGltf(const Scene& scene, const std::string& path) {
         if (l.role) node["extras"] = {{"onelight", {{"role", l.role}}}};
         nodes.push_back(node);
     }
+    if (scene.sky != glm::vec3(0.0f))
+        nodes.push_back(
+            {{"name", "level_settings"},
+             {"extras", {{"onelight", {{"sky", {scene.sky.x, scene.sky.y, scene.sky.z}}}}}}});
     json sceneNodes = json::array();
     for (size_t i = 0; i < nodes.size(); ++i) sceneNodes.push_back(i);
     json gltf = {{"asset", {{"version", "2.0"}}},

@@ -41,6 +41,7 @@ struct Scene {
     std::vector<SceneMaterial> materials;
     std::vector<SceneMesh> meshes;
     std::vector<SceneLight> lights;
+    glm::vec3 sky{0.0f};  // cd/m^2: extras.onelight.sky of a settings node when non-zero
 };
 
 /// A quad in the plane y = height, facing +Y, of half size `half` around (cx, cz).

@@ -191,6 +191,21 @@ TEST(Import, ProbeSpacingIsTheLevels) {
     EXPECT_FLOAT_EQ(world::compile_level(level, options).level.settings.probe_spacing, 3.5f);
 }
 
+// The level's sky: one number (grey) or [r, g, b], cd/m^2, through the compile.
+TEST(Import, SkyIsTheLevels) {
+    for (const auto& [sky, expected] : {std::pair{nlohmann::json(1200.0), glm::vec3(1200.0f)},
+                                        std::pair{nlohmann::json::array({4000.0, 5000.0, 6500.0}),
+                                                  glm::vec3(4000, 5000, 6500)}}) {
+        GltfBuilder gltf;
+        gltf.add_node({{"name", "tri"}, {"mesh", gltf.add_mesh(one_triangle("tri"))}});
+        gltf.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"sky", sky}}}}}});
+        const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("sky_ok"), "sky"));
+        EXPECT_EQ(level.sky_radiance, expected);
+        world::CompileOptions options;
+        EXPECT_EQ(world::compile_level(level, options).level.settings.sky_radiance, expected);
+    }
+}
+
 TEST(Import, ImagesAreFileReferencesOrEncodedBytes) {
     GltfBuilder gltf;
     MeshData mesh = one_triangle("tri");
@@ -273,6 +288,16 @@ TEST(ImportErrors, BadProbeSpacing) {
         expect_error(gltf.write(fresh_folder("spacing"), "spacing"),
                      {"settings", "probe_spacing", "expected metres > 0"});
     }
+}
+
+TEST(ImportErrors, BadSky) {
+    GltfBuilder gltf;
+    gltf.add_node({{"name", "settings"},
+                   {"extras", {{"onelight", {{"sky", nlohmann::json::array({1.0, -2.0, 3.0})}}}}}});
+    expect_error(gltf.write(fresh_folder("sky"), "sky"), {"settings", "sky", "cd/m^2 >= 0"});
+    GltfBuilder words;
+    words.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"sky", "blue"}}}}}});
+    expect_error(words.write(fresh_folder("sky_words"), "sky"), {"settings", "sky"});
 }
 
 TEST(ImportErrors, UnknownRole) {

@@ -1,5 +1,6 @@
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -85,7 +86,7 @@ TEST(Package, RoundTripIsByteIdentical) {
 
 TEST(Package, ProbeSpacingRoundTripsAndIsChecked) {
     world::CompiledLevel level = sample_level();
-    EXPECT_EQ(level.settings.probe_spacing, 0.0f) << "not given: the former reserved 0";
+    EXPECT_EQ(level.settings.probe_spacing, 0.0f) << "not given";
     level.settings.probe_spacing = 3.5f;
     const std::vector<uint8_t> bytes = serialize_package(level);
     const PackageReadResult read = parse_package(bytes, "test.olpak");
@@ -96,6 +97,23 @@ TEST(Package, ProbeSpacingRoundTripsAndIsChecked) {
     std::memcpy(&negative, &minus_one, 4);
     expect_rejected(patched(bytes, section_level, 0, offsetof(DiskLevel, probe_spacing), negative),
                     "probe_spacing");
+}
+
+TEST(Package, SkyRoundTripsAndIsChecked) {
+    world::CompiledLevel level = sample_level();
+    level.settings.sky_radiance = glm::vec3(4000.0f, 5000.0f, 6500.0f);
+    const std::vector<uint8_t> bytes = serialize_package(level);
+    const PackageReadResult read = parse_package(bytes, "test.olpak");
+    ASSERT_TRUE(read.ok()) << read.error;
+    EXPECT_EQ(read.level.settings.sky_radiance, level.settings.sky_radiance);
+    for (const float bad :
+         {-1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        uint32_t bits;
+        std::memcpy(&bits, &bad, 4);
+        expect_rejected(
+            patched(bytes, section_level, 0, offsetof(DiskLevel, sky_radiance) + 4, bits),
+            "sky_radiance");
+    }
 }
 
 TEST(Package, BakedSectionsSurviveARoundTrip) {

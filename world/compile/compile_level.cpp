@@ -201,6 +201,7 @@ CompileResult compile_level(const SourceLevel& source, const CompileOptions& opt
     settings.has_exposure = source.has_exposure;
     settings.texels_per_metre = static_cast<float>(chart_options.texels_per_metre);
     settings.probe_spacing = source.probe_spacing;
+    settings.sky_radiance = source.sky_radiance;
     if (!level.vertices.empty()) {
         settings.bounds_min = glm::vec3(INFINITY);
         settings.bounds_max = glm::vec3(-INFINITY);

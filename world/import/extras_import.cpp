@@ -1,5 +1,6 @@
 #include "world/import/extras_import.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <tiny_gltf.h>
@@ -104,6 +105,15 @@ NodeExtras parse_node_extras(const tinygltf::Value& extras, const std::string& w
         if (!(out.probe_spacing > 0.0f))
             throw CompileError(base + ".probe_spacing is " + std::to_string(out.probe_spacing) +
                                "; expected metres > 0 between automatic probes");
+    }
+    if (o.Has("sky")) {
+        const tinygltf::Value& sky = o.Get("sky");
+        out.has_sky = true;
+        out.sky_radiance = sky.IsArray() ? read_vec3(sky, base + ".sky")
+                                         : glm::vec3(read_number(sky, base + ".sky"));
+        if (!(std::min({out.sky_radiance.x, out.sky_radiance.y, out.sky_radiance.z}) >= 0.0f))
+            throw CompileError(base + ".sky is negative; expected a radiance in cd/m^2 >= 0 "
+                                      "(one number, or [r, g, b])");
     }
     if (o.Has("exposure")) {
         out.has_exposure = true;

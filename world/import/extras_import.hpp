@@ -32,6 +32,8 @@ struct NodeExtras {
     float exposure_ev100 = 0.0f;
     float texels_per_metre = 0.0f;  // lightmap density for the level, > 0 when given
     float probe_spacing = 0.0f;     // metres between the level's automatic probes, > 0 when given
+    bool has_sky = false;
+    glm::vec3 sky_radiance{0.0f};  // cd/m^2, RGB, >= 0: the level's uniform sky
 };
 
 /// Parses node.extras; `where` names the node for errors ("file.gltf: node 'lamp'").

@@ -123,6 +123,7 @@ struct Importer {
         }
         if (extras.texels_per_metre > 0.0f) level.texels_per_metre = extras.texels_per_metre;
         if (extras.probe_spacing > 0.0f) level.probe_spacing = extras.probe_spacing;
+        if (extras.has_sky) level.sky_radiance = extras.sky_radiance;
         if (extras.has_exposure && node.camera < 0 && !level.has_exposure) {
             level.has_exposure = true;
             level.exposure_ev100 = extras.exposure_ev100;

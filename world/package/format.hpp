@@ -25,7 +25,7 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 1;
+inline constexpr uint32_t kVersion = 2;  // 2: DiskLevel holds the sky
 inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -96,9 +96,10 @@ struct DiskLevel {
     float bounds_min[3];     // metres, static geometry (0 when there is none)
     float bounds_max[3];     // metres, >= bounds_min
     float probe_spacing;     // metres between automatic probes, >= 0; 0 = the baker's default
-    // probe_spacing took the place of a reserved 0, so older files read as "not given".
+    float sky_radiance[3];   // cd/m^2, RGB, finite, >= 0: the uniform sky (0 = none)
+    uint32_t reserved;       // 0
 };
-static_assert(sizeof(DiskLevel) == 40);
+static_assert(sizeof(DiskLevel) == 56);
 
 struct DiskMaterial {
     StringRef name;

@@ -1,5 +1,6 @@
 #include "world/package/package_reader.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -270,7 +271,13 @@ private:
         level.settings.exposure_ev100 = d.exposure_ev100;
         level.settings.has_exposure = d.has_exposure != 0;
         level.settings.texels_per_metre = d.texels_per_metre;
+        check_finite(section_level, 0, d.sky_radiance, 3, "sky_radiance");
+        if (!(std::min({d.sky_radiance[0], d.sky_radiance[1], d.sky_radiance[2]}) >= 0.0f))
+            fail(section_level, 0, "sky_radiance negative; expected cd/m^2 >= 0");
+        if (d.reserved != 0)
+            fail(section_level, 0, "reserved " + std::to_string(d.reserved) + "; expected 0");
         level.settings.probe_spacing = d.probe_spacing;
+        level.settings.sky_radiance = vec3_of(d.sky_radiance);
         level.settings.bounds_min = vec3_of(d.bounds_min);
         level.settings.bounds_max = vec3_of(d.bounds_max);
     }

@@ -110,6 +110,7 @@ void build_sections(const CompiledLevel& level, PackageBuilder& b) {
     dl.has_exposure = level.settings.has_exposure ? 1 : 0;
     dl.texels_per_metre = level.settings.texels_per_metre;
     dl.probe_spacing = level.settings.probe_spacing;
+    for (int c = 0; c < 3; ++c) dl.sky_radiance[c] = level.settings.sky_radiance[c];
     put3(dl.bounds_min, level.settings.bounds_min);
     put3(dl.bounds_max, level.settings.bounds_max);
     b.add(section_level, dl);
