@@ -16,6 +16,7 @@
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
+#include "world/package/probe_section.hpp"
 
 namespace {
 
@@ -593,6 +594,74 @@ TEST(RenderBaked, FloorUnderAUniformSkyIsAlbedoTimesSky) {
     const glm::vec3 floor = pixel(linear, at.x, at.y);
     EXPECT_LT(relativeError(floor, 0.5f * scene.sky, 1.0), 0.01)
         << floor.x << " " << floor.y << " " << floor.z;
+}
+
+// The probe path of the forward shader against the C++ formula: a dielectric floor (dark, so
+// the specular weighs) under a uniform grey sky L, its baked probes replaced in memory by one
+// synthetic probe (and a decoy) whose mips are uniform and coloured apart (mip 0 red, 1 green, 2
+// blue, normalised radiance 1 / pi). The floor's E(n) is pi L (it sees only sky), so a floor pixel
+// is
+//   albedo L + (f0 A + B) c(lod) pi L,   lod = probeMipOfGloss(gloss, 3),
+// c the trilinear mix of the two mips around lod and (A, B) = EnvBRDF_Fit(NoV, gloss): the mip
+// chosen by the gloss, the upload's mip order (per mip, every probe's faces), the
+// de-normalisation by E(n) and the environment "Fresnel" all show in the colour. Tolerance 1.5%
+// of the pixel: the GPU reads the fit from a 32^2 table (bilinear), RGB9E5 rounds at 1/512 and
+// the mip lerp weight has 8 fractional bits.
+TEST(RenderBaked, GlossyFloorReadsTheProbeMipOfItsGlossTimesItsIrradiance) {
+    test::Scene scene;
+    const float roughness = 0.4f;
+    scene.materials = {{{0.05f, 0.05f, 0.05f, 1.0f}, 0.0f, roughness}};  // dielectric, f0 0.04
+    test::addFloor(scene, 0.0f, 0.0f, 10.0f, 0.0f, 0);
+    scene.sky = glm::vec3(1000.0f);
+    const std::string gltf = test::outputDir() + "/probe_floor.gltf";
+    test::writeGltf(scene, gltf);
+    assets::LoadedLevel level = test::bakeAndLoad(gltf, test::outputDir() + "/probe_floor.olpak");
+    ASSERT_TRUE(level.hasBakedLighting);
+
+    // The coloured probe is boxed around the floor; a grey one without a box, 30 m away, comes
+    // first in the package but last in blending order (larger influence volume) and in the cube
+    // array: the floor reads only the coloured one, through the per-mip, per-probe upload.
+    const glm::vec3 mipColour[3] = {
+        {glsl::INV_PI, 0.0f, 0.0f}, {0.0f, glsl::INV_PI, 0.0f}, {0.0f, 0.0f, glsl::INV_PI}};
+    world::EnvironmentProbe coloured, grey;
+    coloured.position = glm::vec3(0.0f, 1.0f, 0.0f);
+    coloured.box_min = glm::vec3(-20.0f, -1.0f, -20.0f);
+    coloured.box_max = glm::vec3(20.0f, 10.0f, 20.0f);
+    grey.position = glm::vec3(30.0f, 1.0f, 0.0f);
+    for (world::EnvironmentProbe* probe : {&coloured, &grey}) {
+        probe->face_size = 4;
+        probe->mip_count = 3;
+        for (uint32_t m = 0; m < 3; ++m)
+            for (uint32_t t = 0; t < 6 * (4u >> m) * (4u >> m); ++t)
+                probe->texels.push_back(package::encode_rgb9e5(
+                    probe == &coloured ? mipColour[m] : glm::vec3(0.5f * glsl::INV_PI)));
+    }
+    level.baked.probes = {grey, coloured};
+
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({0.0f, 2.0f, 6.0f}, 0.0f, -20.0f);
+    inputs.camera.hasExposure = true;
+    inputs.camera.ev100 = 10.0f;
+    const std::vector<float> linear =
+        renderLinear(level, options(40.0f, 8.0f), inputs, "probe_floor");
+    for (const glm::vec3 target : {glm::vec3(0.0f, 0.0f, 2.0f), glm::vec3(-1.5f, 0.0f, 0.0f)}) {
+        const glm::uvec2 at = floorPixelNear(inputs.camera, target);
+        const glm::vec3 p = floorPointOf(inputs.camera, at);
+        const float NoV = glm::normalize(inputs.camera.position - p).y;
+        const float gloss = glsl::gloss_fromRoughness(roughness);
+        const float lod = glsl::probeMipOfGloss(gloss, 3);
+        const int below = int(std::floor(lod));
+        const float t = lod - float(below);
+        const glm::vec3 c = (1.0f - t) * mipColour[below] + t * mipColour[std::min(below + 1, 2)];
+        const glm::vec2 env = glsl::EnvBRDF_Fit(NoV, gloss);
+        const glm::vec3 want =
+            0.05f * scene.sky + (0.04f * env.x + env.y) * c * glsl::PI * scene.sky;
+        const glm::vec3 got = pixel(linear, at.x, at.y);
+        const float tolerance = 0.015f * std::max({want.x, want.y, want.z});
+        for (int ch = 0; ch < 3; ++ch)
+            EXPECT_NEAR(got[ch], want[ch], tolerance)
+                << "channel " << ch << " at (" << target.x << ", " << target.z << "), lod " << lod;
+    }
 }
 
 }  // namespace
