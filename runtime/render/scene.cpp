@@ -10,6 +10,7 @@
 #include "render/probe_records.hpp"
 #include "render/renderer_state.hpp"
 #include "shading.hpp"
+#include "world/package/probe_section.hpp"
 
 namespace onelight::render {
 
@@ -321,11 +322,19 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
     std::vector<GpuProbe> records;
     if (s.bakedLighting && s.options.probes && !probes.empty()) {
         const uint32_t size = probes[0].face_size;
-        for (size_t i = 0; i < probes.size(); ++i)
-            if (probes[i].face_size != size)
+        for (size_t i = 0; i < probes.size(); ++i) {
+            if (probes[i].face_size != size || probes[i].mip_count != probes[0].mip_count)
                 throw std::runtime_error("probe " + std::to_string(i) + " has face size " +
                                          std::to_string(probes[i].face_size) + "; expected " +
                                          std::to_string(size) + " like probe 0 (one cube array)");
+            const uint32_t mips = probes[i].mip_count;
+            const bool chain = size != 0 && mips >= 1 && mips <= 32 && (size >> (mips - 1)) == 1;
+            if (!chain || probes[i].texels.size() != world::probe_texel_count(size))
+                throw std::runtime_error("probe " + std::to_string(i) + " holds " +
+                                         std::to_string(probes[i].texels.size()) +
+                                         " texels; expected every mip of a " +
+                                         std::to_string(size) + "^2 cube down to 1x1");
+        }
         const uint32_t maxProbes = s.ctx->properties.limits.maxImageArrayLayers / 6;
         if (probes.size() > maxProbes)
             throw std::runtime_error(std::to_string(probes.size()) + " environment probes; this " +
