@@ -131,9 +131,8 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
     const EmbreeDevice device;
     const world::SplitLevel split = world::split_static_dynamic(source);
     const BakeScene scene(device, split.static_geometry, source.materials);
-    const BakeLights lights =
-        make_bake_lights(source.lights, options.light_sizes,
-                         options.sky_radiance.value_or(source.sky_radiance));
+    const BakeLights lights = make_bake_lights(source.lights, options.light_sizes,
+                                               options.sky_radiance.value_or(source.sky_radiance));
     report.stages.push_back({"scene", seconds_since(start), {}, scene.triangle_count()});
     report.triangles = scene.triangle_count();
 

@@ -34,8 +34,8 @@ struct BakeOptions {
     world::CompileOptions compile;
     LightSizes light_sizes;
     std::optional<glm::vec3> sky_radiance;  // cd/m^2, uniform sky; unset: the level's
-    float grid_cell_size = 1.0f;   // metres
-    float probe_spacing = 8.0f;    // metres between automatic probes unless the level sets it
+    float grid_cell_size = 1.0f;            // metres
+    float probe_spacing = 8.0f;  // metres between automatic probes unless the level sets it
     uint32_t shard_index = 0, shard_count = 1;
     bool show_progress = true;
     // Overrides of the quality preset; 0 keeps the preset.

@@ -207,9 +207,8 @@ TEST(LightmapSeams, ChartBordersShowNoVisibleStep) {
     options.indirect_samples = 4096;
     options.shadow_samples = 64;
     const BakeResult r = bake_level(source, options);
-    const BakeLights lights =
-        make_bake_lights(source.lights, options.light_sizes,
-                             options.sky_radiance.value_or(source.sky_radiance));
+    const BakeLights lights = make_bake_lights(source.lights, options.light_sizes,
+                                               options.sky_radiance.value_or(source.sky_radiance));
     const std::vector<SeamPoint> points = seam_points(r.level, r.baked, lights);
     const bool verbose = std::getenv("ONELIGHT_VERBOSE") != nullptr;
     double sum_sq = 0.0, worst_smooth = 0.0, worst_ratio = 0.0;

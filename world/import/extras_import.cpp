@@ -112,8 +112,9 @@ NodeExtras parse_node_extras(const tinygltf::Value& extras, const std::string& w
         out.sky_radiance = sky.IsArray() ? read_vec3(sky, base + ".sky")
                                          : glm::vec3(read_number(sky, base + ".sky"));
         if (!(std::min({out.sky_radiance.x, out.sky_radiance.y, out.sky_radiance.z}) >= 0.0f))
-            throw CompileError(base + ".sky is negative; expected a radiance in cd/m^2 >= 0 "
-                                      "(one number, or [r, g, b])");
+            throw CompileError(base +
+                               ".sky is negative; expected a radiance in cd/m^2 >= 0 "
+                               "(one number, or [r, g, b])");
     }
     if (o.Has("exposure")) {
         out.has_exposure = true;

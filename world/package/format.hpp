@@ -25,7 +25,7 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 2;  // 2: DiskLevel holds the sky
+inline constexpr uint32_t kVersion = 2;          // 2: DiskLevel holds the sky
 inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
