@@ -161,6 +161,14 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
     const world::LightGrid grid_layout = grid;
     const std::vector<ProbePlacement> placements =
         placeProbes(level, scene, ProbePlacementSettings{options.probe_spacing});
+    for (const ProbePlacement& p : placements)
+        if (p.insideSolid)
+            report.warnings.push_back(
+                "probe '" +
+                (p.entity < level.entities.size() ? level.entities[p.entity].name : "placed") +
+                "' at (" + std::to_string(p.position.x) + ", " + std::to_string(p.position.y) +
+                ", " + std::to_string(p.position.z) +
+                ") is inside solid geometry: its reflections will be dark; move it into the open");
     const ShardRange range = shard_range(texel_count, grid.cells.size(), placements.size(),
                                          options.shard_index, options.shard_count);
     world::BakedLighting& baked = result.baked;

@@ -110,6 +110,9 @@ int run_bake_command(const std::vector<std::string>& arguments) {
                                                   .c_str()
                                             : "");
         std::printf("%s", report_summary(result.report).c_str());
+        for (const std::string& warning : result.report.warnings)
+            std::fprintf(stderr, "onelight-bake: warning: %s: %s\n", input.c_str(),
+                         warning.c_str());
         return 0;
     });
 }

@@ -135,6 +135,7 @@ std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const
     out = ProbePlacementStats{};
 
     std::vector<ProbePlacement> probes = authoredProbes(level);
+    for (ProbePlacement& p : probes) p.insideSolid = testSolid(scene, p.position, out.rays).solid();
     if (!probes.empty() || !(level.features.flags & world::feature_probes)) return probes;
     if (scene.triangle_count() == 0) {
         ProbePlacement centre;

@@ -45,7 +45,8 @@ struct ProbePlacementStats {
 // The probes of a level whose static world is `scene` (built from the same level).
 //
 // Authored probes win: when any entity is flagged entity_probe, exactly those, in entity
-// order, each with its box when the box is non-empty. Otherwise none
+// order, each with its box when the box is non-empty, flagged insideSolid by the solid test
+// below (the bake warns: such a probe's reflections come out dark). Otherwise none
 // unless the level has specular materials (feature_probes). Then, with no box and entity kNone:
 //
 // - Empty level (no static triangle): one probe at the centre of the bounds.

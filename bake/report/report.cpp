@@ -63,6 +63,7 @@ std::string report_json(const BakeReport& r) {
                    {"face_size", r.probe_face_size},
                    {"paths_per_texel", r.probe_samples_per_texel},
                    {"bytes", r.probe_bytes}};
+    j["warnings"] = r.warnings;
     return j.dump(2) + "\n";
 }
 

@@ -32,7 +32,8 @@ struct BakeReport {
     double lightmap_mean_relative_noise = 0.0;    // estimated standard error / value
     uint64_t probes_total = 0, probes_baked = 0;  // placed in the level; captured by this run
     uint32_t probe_face_size = 0, probe_samples_per_texel = 0;
-    uint64_t probe_bytes = 0;  // section 35 bytes of the probes this run baked
+    uint64_t probe_bytes = 0;           // section 35 bytes of the probes this run baked
+    std::vector<std::string> warnings;  // one line each, naming the thing and what to change
     uint64_t peak_memory_bytes = 0;
     uint64_t package_bytes = 0;
 };

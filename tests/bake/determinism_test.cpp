@@ -124,6 +124,19 @@ TEST(BakeDeterminism, ShardsMergedEqualAWholeBake) {
               std::string::npos);
 }
 
+// A probe authored inside the solid block is baked but warned about, by name.
+TEST(BakeProbes, AProbeInsideSolidGeometryIsWarnedAbout) {
+    world::SourceLevel level = small_room_with_probes();
+    EXPECT_TRUE(bake_level(level, fast_options()).report.warnings.empty());
+    level.entities[1].position = glm::vec3(0.0f, 0.0f, 0.25f);  // inside the block
+    const BakeResult r = bake_level(level, fast_options());
+    ASSERT_EQ(r.report.warnings.size(), 1u);
+    EXPECT_NE(r.report.warnings[0].find("probe 'probe1'"), std::string::npos)
+        << r.report.warnings[0];
+    EXPECT_NE(r.report.warnings[0].find("inside solid geometry"), std::string::npos);
+    EXPECT_EQ(r.baked.probes.size(), 3u);
+}
+
 TEST(BakedSections, RoundTripAndErrorsNameTheSection) {
     const BakeResult r = bake_level(small_room_with_probes(), fast_options());
     std::vector<package::RawSection> sections = package::encode_baked_sections(r.baked);

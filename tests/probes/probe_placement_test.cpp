@@ -259,6 +259,26 @@ TEST(ProbePlacement, CamerasAddAProbeWhenFarFromOthersAndNotInSolid) {
     EXPECT_EQ(probes.back().entity, world::kNone);
 }
 
+// An authored probe inside a solid block is kept (the author asked for it) but flagged, so
+// that the bake can warn; one in the open is not.
+TEST(ProbePlacement, AuthoredProbesInsideSolidAreFlagged) {
+    world::SourceLevel source;
+    const uint32_t m = test::add_lambert_material(source, 0.5f);
+    test::add_box(source, glm::vec3(0.0f), glm::vec3(8.0f), m, true, "room");
+    test::add_box(source, glm::vec3(2.0f), glm::vec3(4.0f), m, false, "block");
+    Built built(source);
+    world::Entity e;
+    e.flags = world::entity_probe;
+    e.position = glm::vec3(3.0f);  // in the block
+    built.level.entities.push_back(e);
+    e.position = glm::vec3(6.0f);  // in the open
+    built.level.entities.push_back(e);
+    const std::vector<ProbePlacement> probes = place(built, 2.0f);
+    ASSERT_EQ(probes.size(), 2u);
+    EXPECT_TRUE(probes[0].insideSolid);
+    EXPECT_FALSE(probes[1].insideSolid);
+}
+
 TEST(ProbePlacement, AuthoredProbesWin) {
     Built built(twoRooms(true));
     world::Entity e;
