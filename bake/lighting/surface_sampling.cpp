@@ -9,26 +9,36 @@
 namespace onelight::bake {
 
 float specular_probability(const world::Material& material, float NoV) {
+    if (!(luminance(material.specular_color) > 0.0f)) return 0.0f;
     const float specular =
         luminance(glsl::F_Schlick(material.specular_color, std::clamp(NoV, 0.0f, 1.0f)));
-    if (!(luminance(material.specular_color) > 0.0f)) return 0.0f;
     const float diffuse = luminance(material.albedo);
     return specular / (specular + std::max(diffuse, 0.0f));
 }
+
+namespace {
+
+// The mixture density for a direction l above the surface (NoL = n.l > 0) whose dots with n and
+// v are `d`, drawn with specular probability p: shared by surface_pdf and sample_surface, which
+// has p and the dots already.
+float mixture_pdf(float p, float gloss, const glsl::BrdfDots& d, float NoL) {
+    float pdf = (1.0f - p) * NoL / kPi;
+    if (p > 0.0f) {
+        const float NoH = std::sqrt(std::max(0.0f, 1.0f - d.NxH2));
+        const float D = glsl::D_GGX(d.NxH2, glsl::ggxAlpha_fromGloss(gloss));
+        pdf += p * D * NoH / (4.0f * std::max(d.LoH, 1e-8f));
+    }
+    return pdf;
+}
+
+}  // namespace
 
 float surface_pdf(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
                   const glm::vec3& l) {
     const float NoL = glm::dot(n, l);
     if (NoL <= 0.0f) return 0.0f;
-    const float p = specular_probability(material, glm::dot(n, v));
-    float pdf = (1.0f - p) * NoL / kPi;
-    if (p > 0.0f) {
-        const glsl::BrdfDots d = glsl::brdfDots(n, v, l);
-        const float NoH = std::sqrt(std::max(0.0f, 1.0f - d.NxH2));
-        const float D = glsl::D_GGX(d.NxH2, glsl::ggxAlpha_fromGloss(material.gloss));
-        pdf += p * D * NoH / (4.0f * std::max(d.LoH, 1e-8f));
-    }
-    return pdf;
+    return mixture_pdf(specular_probability(material, glm::dot(n, v)), material.gloss,
+                       glsl::brdfDots(n, v, l), NoL);
 }
 
 SurfaceSample sample_surface(const world::Material& material, const glm::vec3& n,
@@ -55,9 +65,9 @@ SurfaceSample sample_surface(const world::Material& material, const glm::vec3& n
     }
     const float NoL = glm::dot(n, s.direction);
     if (NoL <= 1e-6f) return s;  // below the horizon: no contribution
-    const float pdf = surface_pdf(material, n, v, s.direction);
-    if (!(pdf > 0.0f)) return s;
     const glsl::BrdfDots d = glsl::brdfDots(n, v, s.direction);
+    const float pdf = mixture_pdf(p, material.gloss, d, NoL);
+    if (!(pdf > 0.0f)) return s;
     const glm::vec3 f_cos = material.albedo * (glsl::Fd_Lambert() * d.NoL) +
                             glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
                                                material.specular_color, material.gloss, d);

@@ -10,6 +10,7 @@ namespace onelight::render {
 
 inline constexpr uint32_t kMaxEffectOmnis = 4;  // MAX_EFFECT_OMNIS
 inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+inline constexpr float kHdrMax = 65000.0f;  // HALF_MAX of forward.frag: the RGBA16F target's cap
 
 struct FrameUniforms {
     glm::mat4 viewProj;

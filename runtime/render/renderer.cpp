@@ -383,8 +383,7 @@ void beginColorRendering(VkCommandBuffer cmd, const RendererState& s, float expo
     color.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
     color.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    const glm::vec3 sky = glm::min(s.settings.sky_radiance * exposure,
-                                   glm::vec3(65000.0f));  // HALF_MAX of forward.frag
+    const glm::vec3 sky = glm::min(s.settings.sky_radiance * exposure, glm::vec3(kHdrMax));
     color.clearValue.color = {{sky.r, sky.g, sky.b, 1.0f}};
     if (s.samples != VK_SAMPLE_COUNT_1_BIT) {
         color.imageView = s.msaaColor.view;
