@@ -1,4 +1,4 @@
-# Every third-party dependency of onelight, found once (see ../shared/TOOLCHAIN.md).
+# Every third-party dependency of onelight, found once (see docs/toolchain.md, "CMake").
 # Imported targets are used everywhere; their headers are system headers, so the project's
 # -Werror applies to its own code only.
 find_package(Threads REQUIRED)  # before glslang: its config needs Threads::Threads

@@ -2,7 +2,7 @@
 // the runtime specular model, material classes, punctual lights in glTF units, the baked
 // secondary terms and the runtime/baked shadow blend. The BRDF itself comes from brdf.glsl.
 //
-// Units (DESIGN.md "The lighting model"): metres; directional lights in lux, point and spot
+// Units (docs/lighting.md "Units"): metres; directional lights in lux, point and spot
 // lights in candela (KHR_lights_punctual). A light's "illuminance" below is what it delivers at
 // normal incidence, in lux; reflected radiance = reflectance * illuminance, in cd/m^2.
 #ifndef ONELIGHT_LIGHTING_GLSL
@@ -97,7 +97,8 @@ vec3 surfaceReflectance(int materialClass, vec3 albedo, vec3 f0, float gloss, Br
     return diffuse + specular;
 }
 
-// Diffuse only, for the omni effect lights (DESIGN.md: gun flashes light diffusely).
+// Diffuse only, for the omni effect lights (docs/lighting.md "Effect lights": gun flashes light
+// diffusely).
 vec3 diffuseReflectance(vec3 albedo, BrdfDots d) { return albedo * (Fd_Lambert() * d.NoL); }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,7 +1,8 @@
 // glTF metallic-roughness to onelight's material parameters, per texel, written once for GLSL and
 // C++. The level compiler applies the same conversion to the factors (world/compiled_level.hpp,
-// Material); the runtime applies it to textured materials until the baker's texture processing
-// stores albedo, f0 and gloss maps.
+// Material); the runtime applies it per texel to the glTF textures as they are, with mips made
+// by a linear blit at upload. Texture processing in the baker (albedo, f0 and gloss maps with
+// filtered mips) is planned, not built (docs/architecture.md, "Planned, not built").
 #ifndef ONELIGHT_MATERIAL_GLSL
 #define ONELIGHT_MATERIAL_GLSL
 

@@ -114,8 +114,8 @@ float probeInfluenceWeight(vec3 p, vec3 influenceMin, vec3 influenceMax, float b
 }
 
 // ---------------------------------------------------------------------------------------------
-// Normalization (Lazarov 2011, slide "Environment map normalization"; DESIGN.md "The lighting
-// model", secondary specular). The baker stores each probe's radiance divided, per channel, by
+// Normalization (Lazarov 2011, slide "Environment map normalization"; docs/lighting.md
+// "Secondary specular"). The baker stores each probe's radiance divided, per channel, by
 // E_avg: the average over every normal direction n of the secondary irradiance E(n) that the
 // runtime reconstructs from the light grid at the capture point (for the grid's ambient cube,
 // the mean of its six faces; bake/probes/probe_capture.hpp derives it). The shader multiplies

@@ -31,7 +31,7 @@ struct Light {
     glm::vec3 direction{0.0f, 0.0f, -1.0f};  // unit, world space, the way the light travels
 };
 
-/// Shader permutation a material needs (DESIGN.md "Material classes").
+/// Shader permutation a material needs (docs/lighting.md "Material classes").
 enum class MaterialClass : uint8_t { metal = 0, dielectric = 1, full = 2, lambert = 3 };
 enum class AlphaMode : uint8_t { opaque = 0, mask = 1, blend = 2 };
 
@@ -40,8 +40,9 @@ enum class AlphaMode : uint8_t { opaque = 0, mask = 1, blend = 2 };
 ///   specular_color = mix(0.04, baseColor.rgb, metallic)
 ///   gloss          = saturate(log2(2 / roughness^4 - 1) / 18)   (inverse of
 ///                    ggxAlpha_fromGloss with GGX alpha = roughness^2)
-/// When textures are present these are the factors; the texture processing of the baker
-/// applies the same formula per texel.
+/// When textures are present these are the factors: the runtime applies the same formula per
+/// texel to the glTF textures (shaders/material.glsl) and the baker shades with the factors
+/// alone. Texture processing in the baker is planned, not built.
 struct Material {
     std::string name;
     glm::vec4 base_color{1.0f};       // linear RGBA factor
@@ -203,7 +204,7 @@ enum FeatureFlags : uint32_t {
     feature_authored_grid = 1u << 11,
 };
 
-/// What the level needs, so only that is built (DESIGN.md promise 3).
+/// What the level needs, so only that is built (docs/architecture.md "Principles", 3).
 struct Features {
     uint32_t flags = 0;                // FeatureFlags
     uint32_t material_classes = 0;     // bit (1 << MaterialClass)

@@ -15,7 +15,7 @@
 namespace onelight::bake {
 
 /// The one place the bake picks its BRDF pieces (brdf.glsl NDF_*, VIS_*, FRESNEL_*): GGX,
-/// height-correlated Smith, Schlick (WWII's model, DESIGN.md "BRDF lego pieces").
+/// height-correlated Smith, Schlick (WWII's model, docs/lighting.md "BRDF lego pieces").
 inline constexpr int kShadingNdf = 2;      // NDF_GGX
 inline constexpr int kShadingVis = 3;      // VIS_SMITH_CORRELATED
 inline constexpr int kShadingFresnel = 1;  // FRESNEL_SCHLICK

@@ -50,7 +50,9 @@ glm::vec3 move_out_of_geometry(const BakeScene& scene, const glm::vec3& origin,
    Indirect part: w_i cosine-distributed on a rotated Hammersley set (pdf (n . w) / pi), so
      int L (n . w) dw ~ (1/N) sum_i L(w_i) (n . w_i) / pdf(w_i) = (pi / N) sum_i L(w_i)
    where L(w_i) = trace_radiance (every bounce of every light, and the sky on escape).
-   The indirect part is then averaged with the texel's neighbours (see filter_indirect).
+   The indirect part is then averaged with the texel's neighbours (the second pass of
+   bake_lightmap_texels: a tent whose radius, one of kIndirectFilterRadii, grows with the local
+   noise past the kIndirectFilterNoise thresholds).
    Direction: d = 1/2 sum (Y(E_k) w_k) / sum Y(E_k) over the same terms (luminance-weighted).
                   +--------------------------------------------------------------------+
                   | E_sec ~ sum_{l != P} E_l (n.w_l) V_l + (pi / N) sum_i L(w_i)        |
@@ -153,9 +155,10 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
                              [](const TexelSample& s, uint64_t t) { return s.texel < t; }) -
             samples.begin());
     };
-    // The filter reads each texel's 8 neighbours: estimate a halo of one atlas row and one
-    // texel around the owned range too (every texel's estimate depends only on its identity,
-    // so a halo texel gets the same value in whichever shard computes it).
+    // The filter reads neighbours up to kIndirectFilterRadii[2] texels away: estimate a halo of
+    // that many atlas rows (and texels) around the owned range too (every texel's estimate
+    // depends only on its identity, so a halo texel gets the same value in whichever shard
+    // computes it).
     const int max_radius = kIndirectFilterRadii[2];
     uint64_t halo = 1;
     for (const world::Atlas& a : level.atlases)
@@ -197,7 +200,7 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
         for (size_t i = r.begin(); i != r.end(); ++i) {
             const TexelSample& s = samples[i];
             const TexelEstimate& e = estimates[i - begin];
-            // filter_indirect: a tent of radius r ([1 .. r+1 .. 1] per axis) over neighbours
+            // The indirect filter: a tent of radius r ([1 .. r+1 .. 1] per axis) over neighbours
             // of the same chart that were not moved out of geometry and that see this texel's
             // origin (a short shadow ray), so no light crosses a wall. A field linear across
             // the window is unchanged; for a full window the noise drops to sqrt(sum w^2) /

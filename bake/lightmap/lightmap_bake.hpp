@@ -1,5 +1,5 @@
 // Lightmap texels: the own primary's baked shadow mask and the directional secondary
-// irradiance, per texel of every static surface (DESIGN.md "The lighting model").
+// irradiance, per texel of every static surface (docs/lighting.md "Secondary diffuse").
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Replay scripts: plain text, one command a line, run on a fixed tick so that the same script
-// gives the same frames (../shared/DESIGN.md, "Replay scripts").
+// gives the same frames (docs/level-authoring.md, "Replay scripts").
 //
 //   # comment                      blank lines and comments are ignored
 //   level demo                     the level to play (once, before any timed command)

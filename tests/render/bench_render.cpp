@@ -4,7 +4,7 @@
 // <= 1.15), the full-frame / flat-shaded-floor ratio with the same geometry and MSAA (goal <= 1.3)
 // and resident memory; then the probes' cost on a baked level (`onelight-bench-render
 // [PACKAGE]`, default the demo's draft package). Compare ratios from one run only
-// (TOOLCHAIN.md: timings are noisy).
+// (docs/toolchain.md, "Timing things": timings are noisy).
 #include <algorithm>
 #include <cstdio>
 #include <fstream>

@@ -290,7 +290,7 @@ static_assert(sizeof(DiskFeatures) == 60);
 //
 // section_lightmap_texels: DiskLightmapTexel[], every atlas in order, each row-major
 //   (texel (x, y) of atlas a at sum_{b<a} width_b height_b + y width_a + x); count == the sum
-//   of the atlases' areas. Secondary diffuse irradiance (DESIGN.md "lighting model"): direct
+//   of the atlases' areas. Secondary diffuse irradiance (docs/lighting.md): direct
 //   light of every light but the surface's own primary, plus every bounce of every light. A
 //   per-pixel normal n' reconstructs it as
 //       E(n') = irradiance * max(0, 0.5 + dot(n', direction)) / normal_weight
