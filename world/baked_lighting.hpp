@@ -12,20 +12,31 @@
 
 namespace onelight::world {
 
+enum LightmapTexelFlags : uint32_t {
+    lightmap_texel_sampled = 1u << 0,  // baked at a point of its own surface
+    lightmap_texel_dilated = 1u << 1,  // padding, copied from sampled neighbours
+};
+inline constexpr uint32_t kAllLightmapTexelFlags = lightmap_texel_sampled | lightmap_texel_dilated;
+
 /// One lightmap texel: directional secondary irradiance (see DiskLightmapTexel for the
 /// reconstruction E(n') = irradiance * max(0, 0.5 + n'.direction) / normal_weight).
 struct LightmapTexel {
     glm::vec3 irradiance{0.0f};  // lux at the surface normal, >= 0
     glm::vec3 direction{0.0f};   // |direction| <= 0.5
     float normal_weight = 1.0f;  // 0.5 + dot(normal, direction)
-    uint32_t flags = 0;          // bit 0 sampled, bit 1 dilated
+    uint32_t flags = 0;          // LightmapTexelFlags; 0 = outside every chart (all zero)
 };
+
+enum LightGridCellFlags : uint32_t {
+    light_grid_cell_inside_solid = 1u << 0,  // centre inside geometry: skip when interpolating
+};
+inline constexpr uint32_t kAllLightGridCellFlags = light_grid_cell_inside_solid;
 
 struct LightGridCell {
     std::array<glm::vec3, 6> ambient_cube{};  // lux facing +x -x +y -y +z -z
     uint32_t dominant_primary = kNone;        // into lights
     float primary_visibility = 0.0f;          // [0, 1]
-    uint32_t flags = 0;                       // bit 0 inside solid
+    uint32_t flags = 0;                       // LightGridCellFlags
 };
 
 struct LightGrid {

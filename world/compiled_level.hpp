@@ -175,6 +175,8 @@ enum EntityFlags : uint32_t {
     entity_spawn = 1u << 2,    // a player spawn point
     entity_probe = 1u << 3,    // an environment probe position
 };
+inline constexpr uint32_t kAllEntityFlags =
+    entity_dynamic | entity_mover | entity_spawn | entity_probe;
 
 /// A node the game or the baker needs by name: dynamic meshes, movers, spawns, probes.
 struct Entity {

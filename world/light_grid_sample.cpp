@@ -28,7 +28,7 @@ LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p) {
         const uint32_t cell = c.x + grid.dims.x * (c.y + grid.dims.y * c.z);
         out.cells[corner] = cell;
         plain[corner] = w;
-        const bool solid = (grid.cells[cell].flags & 1u) != 0;
+        const bool solid = (grid.cells[cell].flags & light_grid_cell_inside_solid) != 0;
         out.weights[corner] = solid ? 0.0f : w;
         total += out.weights[corner];
     }

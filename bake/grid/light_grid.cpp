@@ -32,7 +32,7 @@ world::LightGridCell bake_cell(const BakeScene& scene, const BakeLights& lights,
             cube[a] += glm::dvec3(l) * double(std::max(0.0f, glm::dot(kAxes[a], w)));
     }
     if (static_cast<float>(back_faces) > settings.inside_fraction * static_cast<float>(count)) {
-        cell.flags = 1u;  // inside solid
+        cell.flags = world::light_grid_cell_inside_solid;
         return cell;
     }
     // Dominant primary and every light's shadowed direct irradiance at the centre.
@@ -109,7 +109,8 @@ GridStats bake_light_grid(const BakeScene& scene, const BakeLights& lights,
     GridStats stats;
     for (const RayCounts& r : rays) stats.rays += r;
     stats.cells_baked = cell_end - cell_begin;
-    for (uint64_t i = cell_begin; i < cell_end; ++i) stats.cells_inside += grid.cells[i].flags & 1u;
+    for (uint64_t i = cell_begin; i < cell_end; ++i)
+        stats.cells_inside += (grid.cells[i].flags & world::light_grid_cell_inside_solid) != 0;
     return stats;
 }
 

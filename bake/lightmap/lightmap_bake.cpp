@@ -256,7 +256,7 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
                     : glm::vec3(0.0f);
             if (glm::length(t.direction) > 0.5f) t.direction *= 0.5f / glm::length(t.direction);
             t.normal_weight = std::clamp(0.5f + glm::dot(s.normal, t.direction), 0.5f, 1.0f);
-            t.flags = 1u;  // sampled
+            t.flags = world::lightmap_texel_sampled;
             if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z)) t = {};
             baked.texels[s.texel] = t;
             baked.shadow_mask[s.texel] = e.mask;
@@ -317,7 +317,7 @@ void dilate_lightmaps(const world::CompiledLevel& level, world::BakedLighting& b
                     t.irradiance = irradiance * inv;
                     t.direction = direction * inv;
                     t.normal_weight = std::clamp(weight * inv, 0.5f, 1.0f);
-                    t.flags = 2u;  // dilated
+                    t.flags = world::lightmap_texel_dilated;
                     fills.emplace_back(index(x, y), t);
                     fill_masks.push_back(static_cast<uint8_t>((mask + count / 2) / count));
                 }

@@ -305,6 +305,7 @@ enum LightmapTexelFlags : uint32_t {
     lightmap_texel_sampled = 1u << 0,  // baked at a point of its own surface
     lightmap_texel_dilated = 1u << 1,  // padding, copied from sampled neighbours
 };
+inline constexpr uint32_t kAllLightmapTexelFlags = lightmap_texel_sampled | lightmap_texel_dilated;
 
 struct DiskLightmapTexel {
     float irradiance[3];  // lux, RGB, at the surface normal; finite, >= 0
@@ -317,6 +318,7 @@ static_assert(sizeof(DiskLightmapTexel) == 32);
 enum LightGridCellFlags : uint32_t {
     light_grid_cell_inside_solid = 1u << 0,  // centre inside geometry: skip when interpolating
 };
+inline constexpr uint32_t kAllLightGridCellFlags = light_grid_cell_inside_solid;
 
 struct DiskLightGridHeader {
     float origin[3];       // metres, world: the grid's minimum corner
