@@ -167,6 +167,8 @@ TEST(ProbeSection, RejectsCorruptedAndOutOfRangeRecords) {
         {"probe count", 0, 2, "probe_count 2"},
         {"texel format", 8, 7, "texel_format 7"},
         {"position NaN", field(offsetof(package::DiskProbe, position)), nan_bits, "not finite"},
+        {"box_max NaN", field(offsetof(package::DiskProbe, box_max) + 8), nan_bits,
+         "box_max[2] = nan: not finite"},
         {"E_avg zero", field(offsetof(package::DiskProbe, irradiance_average)), 0,
          "irradiance_average"},
         {"face size", field(offsetof(package::DiskProbe, face_size)), 3, "face_size 3"},

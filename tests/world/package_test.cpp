@@ -225,6 +225,61 @@ TEST(Package, OutOfRangeIndicesAreRejected) {
     expect_rejected(patched(bytes, section_atlases, 0, 0, 0), "section atlases");
 }
 
+TEST(Package, ANaNIsNamedByItsFieldAndElement) {
+    const std::vector<uint8_t> bytes = serialize_package(sample_level());
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    uint32_t bits;
+    std::memcpy(&bits, &nan, 4);
+    struct Case {
+        uint32_t section;
+        size_t offset;  // bytes into record 0
+        const char* error;
+    };
+    const Case cases[] = {
+        {section_entities, offsetof(DiskEntity, scale) + 4,
+         "section entities record 0: scale[1] is NaN or Inf"},
+        {section_entities, offsetof(DiskEntity, rotation) + 12,
+         "section entities record 0: rotation[3] is NaN or Inf"},
+        {section_entities, offsetof(DiskEntity, probe_box_max) + 8,
+         "section entities record 0: probe_box_max[2] is NaN or Inf"},
+        {section_vertices, offsetof(DiskVertex, tangent) + 12,
+         "section vertices record 0: tangent[3] is NaN or Inf"},
+        {section_vertices, offsetof(DiskVertex, uv1) + 4,
+         "section vertices record 0: uv1[1] is NaN or Inf"},
+        {section_dynamic_vertices, offsetof(DiskVertex, normal) + 8,
+         "section dynamic_vertices record 0: normal[2] is NaN or Inf"},
+        {section_cameras, offsetof(DiskCamera, zfar),
+         "section cameras record 0: zfar is NaN or Inf"},
+        {section_cameras, offsetof(DiskCamera, position),
+         "section cameras record 0: position[0] is NaN or Inf"},
+        {section_charts, offsetof(DiskChart, axis_v) + 4,
+         "section charts record 0: axis_v[1] is NaN or Inf"},
+        {section_surfaces, offsetof(DiskSurface, bounds_max),
+         "section surfaces record 0: bounds_max[0] is NaN or Inf"},
+        {section_bsp_nodes, offsetof(DiskBspNode, bounds_max) + 8,
+         "section bsp_nodes record 0: bounds_max[2] is NaN or Inf"},
+        {section_bsp_leaves, offsetof(DiskBspLeaf, bounds_min) + 4,
+         "section bsp_leaves record 0: bounds_min[1] is NaN or Inf"},
+        {section_materials, offsetof(DiskMaterial, emissive) + 8,
+         "section materials record 0: emissive[2] is NaN or Inf"},
+        {section_lights, offsetof(DiskLight, direction) + 4,
+         "section lights record 0: direction[1] is NaN or Inf"},
+        {section_level, offsetof(DiskLevel, bounds_max) + 4,
+         "section level record 0: bounds_max[1] is NaN or Inf"},
+        {section_features, offsetof(DiskFeatures, grid_max) + 8,
+         "section features record 0: grid_max[2] is NaN or Inf"},
+    };
+    for (const Case& c : cases)
+        expect_rejected(patched(bytes, c.section, 0, c.offset, bits), c.error);
+}
+
+TEST(Package, UnknownEntityFlagsAreRejected) {
+    const std::vector<uint8_t> bytes = serialize_package(sample_level());
+    expect_rejected(patched(bytes, section_entities, 0, offsetof(DiskEntity, flags),
+                            world::kAllEntityFlags + 1),
+                    "section entities record 0: flags 16 has unknown bits");
+}
+
 TEST(Package, TableEntriesAreValidated) {
     const std::vector<uint8_t> bytes = serialize_package(sample_level());
     const auto table_patch = [&](uint32_t index, size_t field, uint64_t value, size_t width) {

@@ -5,6 +5,7 @@
 
 #include "world/package/format.hpp"
 #include "world/package/probe_section.hpp"
+#include "world/package/records.hpp"
 
 namespace onelight::package {
 namespace {
@@ -22,10 +23,48 @@ T read_record(const std::vector<uint8_t>& bytes, size_t offset) {
     return value;
 }
 
-bool finite_non_negative(const float* v, size_t n) {
-    for (size_t i = 0; i < n; ++i)
-        if (!std::isfinite(v[i]) || v[i] < 0.0f) return false;
-    return true;
+/// "" when every element of the array field `name` is finite and >= 0, else which one is not.
+template <size_t N>
+std::string not_finite_non_negative(const std::string& name, const float (&v)[N]) {
+    for (size_t k = 0; k < N; ++k)
+        if (!std::isfinite(v[k]) || v[k] < 0.0f)
+            return name + "[" + std::to_string(k) + "] = " + std::to_string(v[k]) +
+                   ": not finite or negative";
+    return "";
+}
+
+/// What is wrong with a lightmap texel, "" when nothing.
+std::string check(const DiskLightmapTexel& d) {
+    if (std::string bad = not_finite_non_negative("irradiance", d.irradiance); !bad.empty())
+        return bad;
+    const float length =
+        std::sqrt(d.direction[0] * d.direction[0] + d.direction[1] * d.direction[1] +
+                  d.direction[2] * d.direction[2]);
+    if (!(length <= 0.5f + 1e-4f)) return "direction length " + std::to_string(length) + " > 0.5";
+    if (!(d.normal_weight >= 0.5f - 1e-4f && d.normal_weight <= 1.0f + 1e-4f))
+        return "normal_weight " + std::to_string(d.normal_weight) + " outside [0.5, 1]";
+    if (d.flags & ~kAllLightmapTexelFlags)
+        return "flags " + std::to_string(d.flags) + " has unknown bits";
+    return "";
+}
+
+/// What is wrong with a light grid cell of `level`, "" when nothing.
+std::string check(const DiskLightGridCell& d, const world::CompiledLevel& level) {
+    for (int f = 0; f < 6; ++f)
+        if (std::string bad = not_finite_non_negative("ambient_cube[" + std::to_string(f) + "]",
+                                                      d.ambient_cube[f]);
+            !bad.empty())
+            return bad;
+    if (d.dominant_primary != kNoIndex &&
+        (d.dominant_primary >= level.lights.size() ||
+         level.lights[d.dominant_primary].role != world::LightRole::primary))
+        return "dominant_primary " + std::to_string(d.dominant_primary) +
+               " is not a primary light of " + std::to_string(level.lights.size());
+    if (!(d.primary_visibility >= 0.0f && d.primary_visibility <= 1.0f))
+        return "primary_visibility " + std::to_string(d.primary_visibility) + " outside [0, 1]";
+    if (d.flags & ~kAllLightGridCellFlags)
+        return "flags " + std::to_string(d.flags) + " has unknown bits";
+    return "";
 }
 
 std::string where(const std::string& name, const char* section, uint64_t record) {
@@ -41,16 +80,7 @@ std::vector<RawSection> encode_baked_sections(const world::BakedLighting& baked)
     texels.element_size = sizeof(DiskLightmapTexel);
     texels.count = static_cast<uint32_t>(baked.texels.size());
     texels.bytes.reserve(baked.texels.size() * sizeof(DiskLightmapTexel));
-    for (const world::LightmapTexel& t : baked.texels) {
-        DiskLightmapTexel d{};
-        for (int c = 0; c < 3; ++c) {
-            d.irradiance[c] = t.irradiance[c];
-            d.direction[c] = t.direction[c];
-        }
-        d.normal_weight = t.normal_weight;
-        d.flags = t.flags;
-        append_bytes(texels.bytes, d);
-    }
+    for (const world::LightmapTexel& t : baked.texels) append_bytes(texels.bytes, to_disk(t));
     RawSection& masks = out[1];
     masks.id = section_shadow_masks;
     masks.element_size = 1;
@@ -60,27 +90,9 @@ std::vector<RawSection> encode_baked_sections(const world::BakedLighting& baked)
     RawSection& grid = out[2];
     grid.id = section_light_grid;
     grid.element_size = 1;
-    DiskLightGridHeader h{};
-    for (int c = 0; c < 3; ++c) {
-        h.origin[c] = baked.grid.origin[c];
-        h.cell_size[c] = baked.grid.cell_size[c];
-        h.dims[c] = baked.grid.dims[c];
-    }
-    h.cell_count = static_cast<uint32_t>(baked.grid.cells.size());
-    h.shard_index = baked.shard_index;
-    h.shard_count = baked.shard_count;
-    h.samples = baked.grid.samples;
-    append_bytes(grid.bytes, h);
-    for (const world::LightGridCell& cell : baked.grid.cells) {
-        DiskLightGridCell d{};
-        for (int f = 0; f < 6; ++f)
-            for (int c = 0; c < 3; ++c) d.ambient_cube[f][c] = cell.ambient_cube[f][c];
-        d.dominant_primary =
-            cell.dominant_primary == world::kNone ? kNoIndex : cell.dominant_primary;
-        d.primary_visibility = cell.primary_visibility;
-        d.flags = cell.flags;
-        append_bytes(grid.bytes, d);
-    }
+    append_bytes(grid.bytes, to_disk_grid_header(baked));
+    for (const world::LightGridCell& cell : baked.grid.cells)
+        append_bytes(grid.bytes, to_disk(cell));
     grid.count = static_cast<uint32_t>(grid.bytes.size());
     if (!baked.probes.empty()) out.push_back(encode_probe_section(baked.probes));
     return out;
@@ -138,27 +150,11 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
     for (uint32_t i = 0; i < texels->count; ++i) {
         const auto d =
             read_record<DiskLightmapTexel>(texels->bytes, size_t(i) * sizeof(DiskLightmapTexel));
-        const float length =
-            std::sqrt(d.direction[0] * d.direction[0] + d.direction[1] * d.direction[1] +
-                      d.direction[2] * d.direction[2]);
-        std::string bad;
-        if (!finite_non_negative(d.irradiance, 3))
-            bad = "irradiance not finite or negative";
-        else if (!(length <= 0.5f + 1e-4f))
-            bad = "direction length " + std::to_string(length) + " > 0.5";
-        else if (!(d.normal_weight >= 0.5f - 1e-4f && d.normal_weight <= 1.0f + 1e-4f))
-            bad = "normal_weight " + std::to_string(d.normal_weight) + " outside [0.5, 1]";
-        else if (d.flags > 3u)
-            bad = "flags " + std::to_string(d.flags) + " has unknown bits";
-        if (!bad.empty()) {
+        if (const std::string bad = check(d); !bad.empty()) {
             result.error = where(name, "lightmap_texels", i) + bad;
             return result;
         }
-        world::LightmapTexel& t = baked.texels[i];
-        t.irradiance = glm::vec3(d.irradiance[0], d.irradiance[1], d.irradiance[2]);
-        t.direction = glm::vec3(d.direction[0], d.direction[1], d.direction[2]);
-        t.normal_weight = d.normal_weight;
-        t.flags = d.flags;
+        baked.texels[i] = from_disk(d);
     }
 
     // Shadow masks.
@@ -207,39 +203,16 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
                        std::to_string(h.shard_count) + "; expected index < count";
         return result;
     }
-    baked.shard_index = h.shard_index;
-    baked.shard_count = h.shard_count;
-    baked.grid.origin = glm::vec3(h.origin[0], h.origin[1], h.origin[2]);
-    baked.grid.cell_size = glm::vec3(h.cell_size[0], h.cell_size[1], h.cell_size[2]);
-    baked.grid.dims = glm::uvec3(h.dims[0], h.dims[1], h.dims[2]);
-    baked.grid.samples = h.samples;
+    from_disk_grid_header(h, baked);
     baked.grid.cells.resize(h.cell_count);
     for (uint32_t i = 0; i < h.cell_count; ++i) {
         const auto d = read_record<DiskLightGridCell>(
             grid->bytes, sizeof(DiskLightGridHeader) + size_t(i) * sizeof(DiskLightGridCell));
-        std::string bad;
-        if (!finite_non_negative(&d.ambient_cube[0][0], 18))
-            bad = "ambient cube not finite or negative";
-        else if (d.dominant_primary != kNoIndex &&
-                 (d.dominant_primary >= level.lights.size() ||
-                  level.lights[d.dominant_primary].role != world::LightRole::primary))
-            bad = "dominant_primary " + std::to_string(d.dominant_primary) +
-                  " is not a primary light of " + std::to_string(level.lights.size());
-        else if (!(d.primary_visibility >= 0.0f && d.primary_visibility <= 1.0f))
-            bad = "primary_visibility " + std::to_string(d.primary_visibility) + " outside [0, 1]";
-        else if (d.flags > 1u)
-            bad = "flags " + std::to_string(d.flags) + " has unknown bits";
-        if (!bad.empty()) {
+        if (const std::string bad = check(d, level); !bad.empty()) {
             result.error = where(name, "light_grid cells", i) + bad;
             return result;
         }
-        world::LightGridCell& cell = baked.grid.cells[i];
-        for (int f = 0; f < 6; ++f)
-            cell.ambient_cube[static_cast<size_t>(f)] =
-                glm::vec3(d.ambient_cube[f][0], d.ambient_cube[f][1], d.ambient_cube[f][2]);
-        cell.dominant_primary = d.dominant_primary == kNoIndex ? world::kNone : d.dominant_primary;
-        cell.primary_visibility = d.primary_visibility;
-        cell.flags = d.flags;
+        baked.grid.cells[i] = from_disk(d);
     }
 
     // Environment probes (optional: only levels with glossy materials have them).

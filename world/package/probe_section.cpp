@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "world/package/format.hpp"
+#include "world/package/records.hpp"
 
 namespace onelight::world {
 
@@ -46,10 +47,51 @@ float clamp_channel(float c) {
     return c > 0.0f ? std::min(c, kSharedExpMax) : 0.0f;
 }
 
-bool all_finite(const float* v, int n) {
-    for (int i = 0; i < n; ++i)
-        if (!std::isfinite(v[i])) return false;
-    return true;
+/// "" when every element of the array field `name` is finite, else which one is not.
+template <size_t N>
+std::string not_finite(const char* name, const float (&v)[N]) {
+    for (size_t k = 0; k < N; ++k)
+        if (!std::isfinite(v[k]))
+            return std::string(name) + "[" + std::to_string(k) + "] = " + std::to_string(v[k]) +
+                   ": not finite";
+    return "";
+}
+
+/// What is wrong with a probe record whose texels should start at `next_texel` of the section's
+/// `texel_count`, "" when nothing.
+std::string check(const DiskProbe& d, uint64_t next_texel, uint32_t texel_count,
+                  const world::CompiledLevel& level) {
+    for (const std::string& bad :
+         {not_finite("position", d.position), not_finite("box_min", d.box_min),
+          not_finite("box_max", d.box_max)})
+        if (!bad.empty()) return bad;
+    if (!not_finite("irradiance_average", d.irradiance_average).empty() ||
+        !(std::min({d.irradiance_average[0], d.irradiance_average[1], d.irradiance_average[2]}) >
+          0.0f))
+        return "irradiance_average not finite or not > 0";
+    const bool power_of_two = d.face_size != 0 && (d.face_size & (d.face_size - 1)) == 0;
+    if (!power_of_two || d.face_size > kMaxFaceSize)
+        return "face_size " + std::to_string(d.face_size) +
+               " is not a power of two <= " + std::to_string(kMaxFaceSize);
+    uint32_t mips = 0;
+    for (uint32_t s = d.face_size; s > 0; s /= 2) ++mips;
+    if (d.mip_count != mips)
+        return "mip_count " + std::to_string(d.mip_count) + "; expected " + std::to_string(mips) +
+               " for face_size " + std::to_string(d.face_size);
+    if (d.texel_count != world::probe_texel_count(d.face_size))
+        return "texel_count " + std::to_string(d.texel_count) + "; expected " +
+               std::to_string(world::probe_texel_count(d.face_size)) + " for face_size " +
+               std::to_string(d.face_size);
+    if (d.first_texel != next_texel || uint64_t(d.first_texel) + d.texel_count > texel_count)
+        return "texels [" + std::to_string(d.first_texel) + ", +" + std::to_string(d.texel_count) +
+               ") not at " + std::to_string(next_texel) + " or past texel_count " +
+               std::to_string(texel_count);
+    if (d.entity != kNoIndex && (d.entity >= level.entities.size() ||
+                                 !(level.entities[d.entity].flags & world::entity_probe)))
+        return "entity " + std::to_string(d.entity) + " is not a probe entity of " +
+               std::to_string(level.entities.size());
+    if (d.reserved != 0) return "reserved " + std::to_string(d.reserved) + "; expected 0";
+    return "";
 }
 
 }  // namespace
@@ -98,18 +140,7 @@ RawSection encode_probe_section(const std::vector<world::EnvironmentProbe>& prob
     write_record(out.bytes, offset, h);
     uint32_t first = 0;
     for (const world::EnvironmentProbe& p : probes) {
-        DiskProbe d{};
-        for (int c = 0; c < 3; ++c) {
-            d.position[c] = p.position[c];
-            d.box_min[c] = p.box_min[c];
-            d.box_max[c] = p.box_max[c];
-            d.irradiance_average[c] = p.irradiance_average[c];
-        }
-        d.face_size = p.face_size;
-        d.mip_count = p.mip_count;
-        d.first_texel = first;
-        d.texel_count = static_cast<uint32_t>(p.texels.size());
-        d.entity = p.entity == world::kNone ? kNoIndex : p.entity;
+        const DiskProbe d = to_disk(p, first);
         first += d.texel_count;
         write_record(out.bytes, offset, d);
     }
@@ -166,54 +197,12 @@ ProbeReadResult decode_probe_section(std::span<const RawSection> sections,
     for (uint32_t i = 0; i < h.probe_count; ++i) {
         const auto d =
             read_record<DiskProbe>(bytes, sizeof(DiskProbeHeader) + size_t(i) * sizeof(DiskProbe));
-        const bool power_of_two = d.face_size != 0 && (d.face_size & (d.face_size - 1)) == 0;
-        uint32_t mips = 0;
-        for (uint32_t s = d.face_size; s > 0; s /= 2) ++mips;
-        std::string bad;
-        if (!all_finite(d.position, 3) || !all_finite(d.box_min, 3) || !all_finite(d.box_max, 3))
-            bad = "position or box not finite";
-        else if (!all_finite(d.irradiance_average, 3) ||
-                 !(std::min({d.irradiance_average[0], d.irradiance_average[1],
-                             d.irradiance_average[2]}) > 0.0f))
-            bad = "irradiance_average not finite or not > 0";
-        else if (!power_of_two || d.face_size > kMaxFaceSize)
-            bad = "face_size " + std::to_string(d.face_size) +
-                  " is not a power of two <= " + std::to_string(kMaxFaceSize);
-        else if (d.mip_count != mips)
-            bad = "mip_count " + std::to_string(d.mip_count) + "; expected " +
-                  std::to_string(mips) + " for face_size " + std::to_string(d.face_size);
-        else if (d.texel_count != world::probe_texel_count(d.face_size))
-            bad = "texel_count " + std::to_string(d.texel_count) + "; expected " +
-                  std::to_string(world::probe_texel_count(d.face_size)) + " for face_size " +
-                  std::to_string(d.face_size);
-        else if (d.first_texel != next_texel ||
-                 uint64_t(d.first_texel) + d.texel_count > h.texel_count)
-            bad = "texels [" + std::to_string(d.first_texel) + ", +" +
-                  std::to_string(d.texel_count) + ") not at " + std::to_string(next_texel) +
-                  " or past texel_count " + std::to_string(h.texel_count);
-        else if (d.entity != kNoIndex && (d.entity >= level.entities.size() ||
-                                          !(level.entities[d.entity].flags & world::entity_probe)))
-            bad = "entity " + std::to_string(d.entity) + " is not a probe entity of " +
-                  std::to_string(level.entities.size());
-        else if (d.reserved != 0)
-            bad = "reserved " + std::to_string(d.reserved) + "; expected 0";
+        const std::string bad = check(d, next_texel, h.texel_count, level);
         if (!bad.empty()) {
             result.error = name + ": section probes, record " + std::to_string(i) + ": " + bad;
             return result;
         }
-        world::EnvironmentProbe& p = result.probes[i];
-        p.position = glm::vec3(d.position[0], d.position[1], d.position[2]);
-        p.box_min = glm::vec3(d.box_min[0], d.box_min[1], d.box_min[2]);
-        p.box_max = glm::vec3(d.box_max[0], d.box_max[1], d.box_max[2]);
-        p.irradiance_average =
-            glm::vec3(d.irradiance_average[0], d.irradiance_average[1], d.irradiance_average[2]);
-        p.face_size = d.face_size;
-        p.mip_count = d.mip_count;
-        p.entity = d.entity == kNoIndex ? world::kNone : d.entity;
-        p.texels.resize(d.texel_count);
-        if (d.texel_count)
-            std::memcpy(p.texels.data(), bytes.data() + texel_base + size_t(d.first_texel) * 4,
-                        size_t(d.texel_count) * 4);
+        result.probes[i] = from_disk(d, std::span(bytes).subspan(texel_base));
         next_texel += d.texel_count;
     }
     if (next_texel != h.texel_count) {
