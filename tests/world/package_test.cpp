@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <limits>
@@ -278,6 +279,38 @@ TEST(Package, UnknownEntityFlagsAreRejected) {
     expect_rejected(patched(bytes, section_entities, 0, offsetof(DiskEntity, flags),
                             world::kAllEntityFlags + 1),
                     "section entities record 0: flags 16 has unknown bits");
+}
+
+TEST(Package, ASurfaceHoldsItsChartsLightmapRectangle) {
+    const world::CompiledLevel& level = sample_level();
+    const std::vector<uint8_t> bytes = serialize_package(level);
+    const auto away_from_the_corner = [&](const world::Surface& s) {
+        return level.charts[s.chart].x > 0 && level.charts[s.chart].y > 0;
+    };
+    const auto it =
+        std::find_if(level.surfaces.begin(), level.surfaces.end(), away_from_the_corner);
+    ASSERT_NE(it, level.surfaces.end());
+    const uint32_t surface = static_cast<uint32_t>(it - level.surfaces.begin());
+    const world::Surface& s = *it;
+    const world::Chart& c = level.charts[s.chart];
+    const std::string chart = "chart " + std::to_string(s.chart) + "'s ";
+    struct Case {
+        size_t offset;
+        uint32_t expected;
+        const char* field;
+        const char* chart_field;
+    };
+    const Case cases[] = {
+        {offsetof(DiskSurface, lightmap_x), c.x, "lightmap_x", "x"},
+        {offsetof(DiskSurface, lightmap_y), c.y, "lightmap_y", "y"},
+        {offsetof(DiskSurface, lightmap_width), c.width, "lightmap_width", "width"},
+        {offsetof(DiskSurface, lightmap_height), c.height, "lightmap_height", "height"},
+    };
+    for (const Case& k : cases)
+        expect_rejected(patched(bytes, section_surfaces, surface, k.offset, k.expected + 1),
+                        "section surfaces record " + std::to_string(surface) + ": " + k.field +
+                            " " + std::to_string(k.expected + 1) + "; expected " +
+                            std::to_string(k.expected) + ", " + chart + k.chart_field);
 }
 
 TEST(Package, TableEntriesAreValidated) {

@@ -489,6 +489,10 @@ private:
         const Chart& c = level.charts[d.chart];
         const std::string chart = "chart " + std::to_string(d.chart) + "'s ";
         check_equal(id, i, "atlas", d.atlas, c.atlas, chart + "atlas");
+        check_equal(id, i, "lightmap_x", d.lightmap_x, c.x, chart + "x");
+        check_equal(id, i, "lightmap_y", d.lightmap_y, c.y, chart + "y");
+        check_equal(id, i, "lightmap_width", d.lightmap_width, c.width, chart + "width");
+        check_equal(id, i, "lightmap_height", d.lightmap_height, c.height, chart + "height");
         check_range(id, i, "given-up lights", d.first_given_up, d.given_up_count,
                     level.given_up_lights.size(), "given-up lights");
         check_index(id, i, "leaf", d.leaf, level.bsp_leaves.size(), "leaves", false);
