@@ -44,7 +44,8 @@ nlohmann::json captureJson(Session& s, const render::Renderer& renderer,
         objects.push_back(
             {{"name", name.value},
              {"position", {transform.position.x, transform.position.y, transform.position.z}},
-             {"primary", lit.primary < s.lightNames.size() ? s.lightNames[lit.primary] : "none"}});
+             {"primary",
+              lit.pick.primary < s.lightNames.size() ? s.lightNames[lit.pick.primary] : "none"}});
     }
     return {{"level", s.level->path},
             {"tick", tick},

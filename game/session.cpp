@@ -1,29 +1,17 @@
 #include "session.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
-#include <glm/gtc/quaternion.hpp>
-
 #include "shading.hpp"
+#include "world/entity_transform.hpp"
 #include "world/light_grid_sample.hpp"
+#include "world/light_model.hpp"
 
 namespace onelight::game {
 
 namespace {
-
-float luminance(glm::vec3 c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
-
-glm::mat4 objectMatrix(glm::vec3 position, const world::Entity& e) {
-    glm::mat4 m = glm::mat4_cast(glm::normalize(e.rotation));
-    m[0] *= e.scale.x;
-    m[1] *= e.scale.y;
-    m[2] *= e.scale.z;
-    m[3] = glm::vec4(position, 1.0f);
-    return m;
-}
 
 // The secondary (baked) illuminance on a surface at p with normal n: the light grid's ambient
 // cube read along n (Valve's ambient cube: E(n) = sum_i n_i^2 cube[sign of n_i on axis i]), or
@@ -31,11 +19,8 @@ glm::mat4 objectMatrix(glm::vec3 position, const world::Entity& e) {
 float secondaryIlluminance(const Session& s, glm::vec3 p, glm::vec3 n) {
     const world::LightGrid& grid = s.level->baked.grid;
     if (!s.level->hasBakedLighting || grid.cells.empty()) return s.secondaryLux;
-    world::LightGridSample sample = world::sampleLightGrid(grid, p);
-    glm::vec3 e(0.0f);
-    for (int axis = 0; axis < 3; ++axis)
-        e += n[axis] * n[axis] * sample.ambientCube[2 * axis + (n[axis] < 0.0f ? 1 : 0)];
-    return luminance(e);
+    const std::array<glm::vec3, 6>& c = world::sampleLightGrid(grid, p).ambientCube;
+    return glsl::luminance(glsl::irradianceAmbientCube(c[0], c[1], c[2], c[3], c[4], c[5], n));
 }
 
 }  // namespace
@@ -82,31 +67,20 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
     }
 }
 
-// Unshadowed illuminance (luminance, lux) of `light` at `point`, by the shared light model.
-float unshadowedIlluminance(const Session& s, uint32_t light, const glm::vec3& point) {
-    const world::Light& l = s.level->level.lights[light];
-    glsl::LightSample sample = glsl::evaluatePunctualLight(
-        int(l.type), l.color, l.intensity, l.range, l.position, glm::normalize(l.direction),
-        std::cos(l.inner_cone), std::cos(l.outer_cone), point);
-    return luminance(sample.illuminance);
-}
-
 float primaryPickScore(const Session& s, uint32_t light, const glm::vec3& point) {
     const world::LightGrid& grid = s.level->baked.grid;
     if (!s.level->hasBakedLighting || grid.cells.empty()) return primaryScore(s, light, point);
-    float e = unshadowedIlluminance(s, light, point);
-    if (!(e > 0.0f)) return 0.0f;
-    return e * world::dominantVisibility(grid, world::sampleLightGrid(grid, point), light);
+    return world::gridPrimaryScore(s.level->level.lights, grid, world::sampleLightGrid(grid, point),
+                                   light, point);
 }
 
 float primaryScore(const Session& s, uint32_t light, const glm::vec3& point) {
     const world::Light& l = s.level->level.lights[light];
-    const glm::vec3 direction = glm::normalize(l.direction);
-    float e = unshadowedIlluminance(s, light, point);
+    float e = world::unshadowedIlluminance(l, point);
     if (!(e > 0.0f)) return 0.0f;
     // Visibility: a ray from the point towards the light (1 km towards the sun).
     glm::dvec3 toLight = l.type == world::LightType::directional
-                             ? -glm::dvec3(direction) * 1000.0
+                             ? -glm::dvec3(l.direction) * 1000.0
                              : glm::dvec3(l.position) - glm::dvec3(point);
     double distance = glm::length(toLight);
     world::RayHit hit = world::raycast(s.bsp, glm::dvec3(point), toLight / distance, distance);
@@ -135,11 +109,8 @@ float meteredEv100(const Session& s, float fallback) {
             glm::vec3 p = eye + d * float(hit.t) + n * 0.02f;
             float illuminance = secondaryIlluminance(s, p, n);
             for (uint32_t light : s.primaryCandidates) {
-                const world::Light& l = level.lights[light];
-                glsl::LightSample sample = glsl::evaluatePunctualLight(
-                    int(l.type), l.color, l.intensity, l.range, l.position,
-                    glm::normalize(l.direction), std::cos(l.inner_cone), std::cos(l.outer_cone), p);
-                float cosine = std::max(0.0f, glm::dot(n, sample.l));
+                const world::LightAtPoint sample = world::evaluateLight(level.lights[light], p);
+                float cosine = std::max(0.0f, glm::dot(n, sample.toLight));
                 if (cosine > 0.0f) illuminance += cosine * primaryScore(s, light, p);
             }
             sumLog2 += double(std::log2(illuminance * 0.18f / glsl::PI * 100.0f / 12.5f));
@@ -158,10 +129,9 @@ void stepSession(Session& s) {
     playerSystem(s.registry, tick, s.input, s.tuning, &s.bsp);
     moverSystem(s.registry, tick);
     effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);
-    primarySelectionSystem(
-        s.registry, s.primaryCandidates,
-        [&s](uint32_t light, const glm::vec3& p) { return primaryPickScore(s, light, p); },
-        s.tuning);
+    primarySelectionSystem(s.registry, s.primaryCandidates, [&s](uint32_t light, glm::vec3 p) {
+        return primaryPickScore(s, light, p);
+    });
     s.input.endTick();
 }
 
@@ -205,8 +175,10 @@ render::FrameInputs frameInputsOf(Session& s, std::vector<render::DynamicTransfo
     for (auto [e, transform, link] : r.view<Transform, LevelEntity>().each()) {
         render::DynamicTransform d;
         d.entity = link.index;
-        d.worldFromObject = objectMatrix(transform.position, s.level->level.entities[link.index]);
-        if (const DynamicLighting* lit = r.tryGet<DynamicLighting>(e)) d.primary = lit->primary;
+        d.worldFromObject =
+            world::worldFromObject(s.level->level.entities[link.index], transform.position);
+        if (const DynamicLighting* lit = r.tryGet<DynamicLighting>(e))
+            d.primary = lit->pick.primary;
         transforms.push_back(d);
     }
     in.dynamicTransforms = transforms;

@@ -16,6 +16,9 @@ float pow5(float x) {
     return x2 * x2 * x;
 }
 
+// Rec. 709 luminance of linear RGB (ITU-R BT.709-6, item 3.2).
+float luminance(vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
 // 1 - x^2 for x in [0, 1] without cancellation: 1 - x is exact for x >= 0.5 (Sterbenz).
 float oneMinusSq(float x) { return (1.0f - x) * (1.0f + x); }
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "shading.hpp"
+#include "world/light_model.hpp"
 
 namespace onelight::bake {
 
@@ -19,8 +19,6 @@ BakeLights make_bake_lights(const std::vector<world::Light>& level_lights, const
         b.level_index = static_cast<uint32_t>(i);
         b.radius =
             l.type == world::LightType::directional ? sizes.sun_angular_radius : sizes.point_radius;
-        b.cos_outer = std::cos(l.outer_cone);
-        b.cos_inner = std::cos(l.inner_cone);
         out.lights.push_back(b);
     }
     return out;
@@ -29,11 +27,9 @@ BakeLights make_bake_lights(const std::vector<world::Light>& level_lights, const
 LightIncidence light_incidence(const BakeLight& light, const glm::vec3& position) {
     // The runtime's own evaluation (shaders/lighting.glsl), so bake and runtime agree exactly.
     const world::Light& l = light.light;
-    const glsl::LightSample sample = glsl::evaluatePunctualLight(
-        static_cast<int>(l.type), l.color, l.intensity, l.range, l.position, l.direction,
-        light.cos_inner, light.cos_outer, position);
+    const world::LightAtPoint sample = world::evaluateLight(l, position);
     LightIncidence out;
-    out.direction = sample.l;
+    out.direction = sample.toLight;
     out.distance = l.type == world::LightType::directional ? std::numeric_limits<float>::infinity()
                                                            : sample.distance;
     const glm::vec3 e = sample.illuminance;

@@ -29,7 +29,6 @@ struct BakeLight {
     world::Light light;
     uint32_t level_index = world::kNone;  // into CompiledLevel::lights
     float radius = 0.0f;                  // metres (point, spot) or radians (directional)
-    float cos_outer = 0.0f, cos_inner = 1.0f;
 };
 
 /// The lights a bake uses (effect lights are runtime-only and left out), plus the sky.

@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "shading.hpp"
+
 namespace onelight::bake {
 
 inline constexpr float kPi = 3.14159265358979f;
@@ -102,9 +104,7 @@ inline glm::vec3 sample_uniform_cone(glm::vec2 u, float one_minus_cos_max) {
     return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
 }
 
-/// Rec. 709 luminance of linear RGB.
-inline float luminance(const glm::vec3& c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
+/// Rec. 709 luminance of linear RGB (shaders/common.glsl).
+using glsl::luminance;
 
 }  // namespace onelight::bake

@@ -6,9 +6,11 @@
 
 #include <glm/glm.hpp>
 
+#include "world/dynamic_primary.hpp"
+
 namespace onelight::game {
 
-inline constexpr uint32_t kNoLight = 0xFFFFFFFFu;
+inline constexpr uint32_t kNoLight = world::kNone;
 
 struct Name {
     std::string value;  // as in the level (node name), for replays and captures
@@ -46,13 +48,11 @@ struct GunFlash {
     uint64_t serial = 0;  // order of firing; the oldest gives way first
 };
 
-// A dynamic object lit by one primary light, picked whenever it moves.
+// A dynamic object lit by one primary light, picked whenever it moves (world/dynamic_primary.hpp)
+// and handed to the renderer with its transform.
 struct DynamicLighting {
-    glm::vec3 originOffset{0.0f};    // lighting origin relative to Transform.position
-    uint32_t primary = kNoLight;     // index of the level's light
-    uint32_t challenger = kNoLight;  // a light that currently beats the primary
-    int challengerTicks = 0;         // consecutive evaluations the challenger has led
-    glm::vec3 lastOrigin{1e30f};     // where it was last evaluated
+    glm::vec3 originOffset{0.0f};  // lighting origin relative to Transform.position
+    world::DynamicPrimary pick;    // pick.primary: into the level's lights, or kNoLight
 };
 
 }  // namespace onelight::game

@@ -112,8 +112,9 @@ ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, ecs::Registry& 
             case CommandKind::ExpectPrimary: {
                 const DynamicLighting& lit =
                     registry.get<DynamicLighting>(findNamed(registry, c.name));
-                std::string actual = lit.primary < r.lightNames.size() ? r.lightNames[lit.primary]
-                                                                       : std::string("none");
+                std::string actual = lit.pick.primary < r.lightNames.size()
+                                         ? r.lightNames[lit.pick.primary]
+                                         : std::string("none");
                 if (actual != c.light)
                     throw ReplayFailure(place(r, c) + "expected primary " + c.name +
                                         " == " + c.light + ", found " + actual);

@@ -114,34 +114,10 @@ void effectLightSystem(ecs::Registry& registry, const ecs::Tick& tick, const Inp
 }
 
 void primarySelectionSystem(ecs::Registry& registry, std::span<const uint32_t> candidates,
-                            const LightScore& score, const Tuning& tuning) {
-    if (candidates.empty()) return;
-    for (auto [e, transform, lit] : registry.view<Transform, DynamicLighting>().each()) {
-        glm::vec3 origin = transform.position + lit.originOffset;
-        if (glm::length(origin - lit.lastOrigin) < 0.01f) continue;
-        lit.lastOrigin = origin;
-        uint32_t best = kNoLight;
-        float bestScore = -1.0f, currentScore = 0.0f;
-        for (uint32_t light : candidates) {
-            float s = score(light, origin);
-            if (s > bestScore) best = light, bestScore = s;  // ties: the earlier light
-            if (light == lit.primary) currentScore = s;
-        }
-        if (lit.primary == kNoLight || best == lit.primary) {
-            lit.primary = best;
-            lit.challenger = kNoLight;
-            lit.challengerTicks = 0;
-            continue;
-        }
-        lit.challengerTicks = (best == lit.challenger) ? lit.challengerTicks + 1 : 1;
-        lit.challenger = best;
-        if (bestScore > currentScore * tuning.primarySwitchRatio ||
-            lit.challengerTicks >= tuning.primarySwitchTicks) {
-            lit.primary = best;
-            lit.challenger = kNoLight;
-            lit.challengerTicks = 0;
-        }
-    }
+                            const world::PrimaryScore& score) {
+    for (auto [e, transform, lit] : registry.view<Transform, DynamicLighting>().each())
+        world::updateDynamicPrimary(lit.pick, transform.position + lit.originOffset, candidates,
+                                    score);
 }
 
 }  // namespace onelight::game

@@ -36,15 +36,11 @@ void moverSystem(ecs::Registry& registry, const ecs::Tick& tick);
 void effectLightSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputState& input,
                        const Tuning& tuning, uint64_t& shotSerial);
 
-// The shadowed contribution of a light at a point (larger wins): the light grid's answer, or a
-// direct evaluation with visibility.
-using LightScore = std::function<float(uint32_t light, const glm::vec3& point)>;
-
-// Picks the primary of every dynamic object that moved (> 1 cm) since its last evaluation: the
-// candidate with the largest score. A new light takes over only when it beats the current one
-// by tuning.primarySwitchRatio, or has led for tuning.primarySwitchTicks evaluations in a row,
-// so that an object resting on a boundary does not flicker.
+// Re-picks the primary of every dynamic object whose lighting origin moved, by
+// world::updateDynamicPrimary (its hysteresis and constants) over `candidates` scored by `score`:
+// the shadowed contribution of a light at a point (the light grid's answer, or a direct evaluation
+// with visibility).
 void primarySelectionSystem(ecs::Registry& registry, std::span<const uint32_t> candidates,
-                            const LightScore& score, const Tuning& tuning);
+                            const world::PrimaryScore& score);
 
 }  // namespace onelight::game

@@ -18,8 +18,6 @@ struct Tuning {
     float flashlightInnerDeg = 12.0f;     // half-angle where the cone starts to fall off
     float flashlightOuterDeg = 25.0f;     // half-angle where it reaches zero
     int maxGunFlashes = 4;                // the Black Ops budget of omni effect lights
-    float primarySwitchRatio = 1.25f;     // a challenger must beat the primary by this much...
-    int primarySwitchTicks = 6;           // ...or lead for this many evaluations in a row
 };
 
 }  // namespace onelight::game

@@ -35,7 +35,7 @@ struct MiniGame {
         ReplayRunner runner =
             makeReplayRunner(replay::parseScript(text, "t.replay"), lights, registry);
         const uint32_t candidates[] = {0, 1};
-        LightScore score = [](uint32_t l, const glm::vec3& p) {
+        world::PrimaryScore score = [](uint32_t l, glm::vec3 p) {
             return l == 0 ? std::exp(-p.x) : std::exp(p.x);
         };
         std::vector<std::pair<uint64_t, std::string>> captures;
@@ -45,7 +45,7 @@ struct MiniGame {
             playerSystem(registry, t, input, tuning, nullptr);
             moverSystem(registry, t);
             effectLightSystem(registry, t, input, tuning, shots);
-            primarySelectionSystem(registry, candidates, score, tuning);
+            primarySelectionSystem(registry, candidates, score);
             input.endTick();
             ReplayAfterTick after = finishReplayTick(runner, tick, registry);
             for (auto& c : after.captures) captures.emplace_back(tick, c);

@@ -178,34 +178,33 @@ TEST(GameSim, PrimarySelectionHasHysteresisAtABoundary) {
     r.emplace<Transform>(crate, Transform{{-3, 0, 0}});
     r.emplace<DynamicLighting>(crate);
     const uint32_t lights[] = {0, 1};
-    LightScore score = [](uint32_t light, const glm::vec3& p) {
+    world::PrimaryScore score = [](uint32_t light, glm::vec3 p) {
         return light == 0 ? std::exp(-p.x) : std::exp(p.x);
     };
-    Tuning tuning;
-    primarySelectionSystem(r, lights, score, tuning);
-    EXPECT_EQ(r.get<DynamicLighting>(crate).primary, 0u);
+    primarySelectionSystem(r, lights, score);
+    EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 0u);
     // Jitter across the boundary: +-2 cm moves, each re-evaluated; no flicker.
     int switches = 0;
     uint32_t last = 0;
     for (int i = 0; i < 100; ++i) {
         r.get<Transform>(crate).position.x = (i % 2 ? 0.02f : -0.02f);
-        primarySelectionSystem(r, lights, score, tuning);
-        switches += r.get<DynamicLighting>(crate).primary != last;
-        last = r.get<DynamicLighting>(crate).primary;
+        primarySelectionSystem(r, lights, score);
+        switches += r.get<DynamicLighting>(crate).pick.primary != last;
+        last = r.get<DynamicLighting>(crate).pick.primary;
     }
     EXPECT_EQ(switches, 0);
     // Crossing decisively: light 1 beats light 0 by more than the ratio at once.
     r.get<Transform>(crate).position.x = 1.0f;
-    primarySelectionSystem(r, lights, score, tuning);
-    EXPECT_EQ(r.get<DynamicLighting>(crate).primary, 1u);
+    primarySelectionSystem(r, lights, score);
+    EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 1u);
     // Resting just past the boundary, moving a little each tick: it switches after
-    // primarySwitchTicks evaluations even though the margin stays small.
+    // kPrimarySwitchEvaluations evaluations even though the margin stays small.
     r.get<Transform>(crate).position.x = -0.05f;
-    primarySelectionSystem(r, lights, score, tuning);
-    EXPECT_EQ(r.get<DynamicLighting>(crate).primary, 1u);
-    for (int i = 1; i < tuning.primarySwitchTicks; ++i) {
+    primarySelectionSystem(r, lights, score);
+    EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 1u);
+    for (int i = 1; i < world::kPrimarySwitchEvaluations; ++i) {
         r.get<Transform>(crate).position.x = -0.05f - 0.02f * i;
-        primarySelectionSystem(r, lights, score, tuning);
+        primarySelectionSystem(r, lights, score);
     }
-    EXPECT_EQ(r.get<DynamicLighting>(crate).primary, 0u);
+    EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 0u);
 }
