@@ -12,6 +12,8 @@ namespace onelight::glsl {
 
 using glm::ivec2;
 using glm::ivec4;
+using glm::mat4;
+using glm::uvec4;
 using glm::vec2;
 using glm::vec3;
 using glm::vec4;

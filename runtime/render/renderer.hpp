@@ -4,7 +4,12 @@
 // (readback of the frame) and a window (the frame is copied into a swapchain image).
 //
 // Use: loadLevel (runtime/assets) -> createContext with renderContextOptions -> createRenderer ->
-// drawFrame per frame -> destroyRenderer -> destroyContext.
+// drawFrame per frame -> destroyRenderer -> destroyContext. Frames are submitted without waiting:
+// while the GPU draws one, the CPU prepares the next (two frames in flight); a frame whose output
+// is read back is waited for.
+//
+// The renderer draws what it is handed: dynamic objects' transforms and primaries come from the
+// game (world/dynamic_primary.hpp picks them), never from the renderer.
 #pragma once
 
 #include <array>
@@ -50,12 +55,12 @@ struct EffectLights {
     EffectSpot spot;
 };
 
-/// Where a dynamic entity is this frame (overrides the entity's placement in the package).
+/// Where a dynamic entity is this frame (overrides the entity's placement in the package) and the
+/// primary light it is lit by.
 struct DynamicTransform {
     uint32_t entity = 0;  // into level.entities
     glm::mat4 worldFromObject{1.0f};
-    uint32_t primary =
-        0xFFFFFFFFu;  // the game's pick (into level.lights); none: the renderer picks
+    uint32_t primary = kNoIndex;  // the game's pick, into level.lights; kNoIndex: no primary
 };
 
 /// Everything a frame depends on besides the level: the same inputs give the same pixels.
@@ -71,16 +76,22 @@ struct FrameOutput {
     vk::Swapchain* swapchain = nullptr;  // borrowed: copy the frame into this swapchain...
     uint32_t swapchainImage = 0;         // ...image (acquired), ready to present after
     bool readbackSwapchain = false;      // copy the swapchain image back too (screenshot)
+    bool wait = false;  // wait for this frame and report its own GPU times (benchmarks)
 };
 
-/// What a frame cost and did.
+/// What a frame cost and did. The GPU times are those of frame `gpuFrame`: this frame when
+/// drawFrame waited for it (readback or FrameOutput::wait), else the frame kFramesInFlight
+/// before it, whose end drawFrame waited for before reusing its resources.
 struct FrameStats {
-    double cpuMs = 0.0;  // drawFrame on the CPU: culling, recording, submit and wait
-    double gpuMs = 0.0;  // first to last timestamp (0 without timestamps)
+    uint64_t frame = 0;          // this frame's number, counted from 0 per renderer
+    double cpuMs = 0.0;          // drawFrame on the CPU: culling, recording, submit (and any wait)
+    bool gpuTimestamps = false;  // the GPU times below are set (the device gives timestamps
+                                 // and frame gpuFrame has finished)
+    uint64_t gpuFrame = 0;
+    double gpuMs = 0.0;  // first to last timestamp
     double gpuShadowMs = 0.0;
     double gpuForwardMs = 0.0;
     double gpuTonemapMs = 0.0;
-    bool gpuTimestamps = false;  // the device gave timestamps
     uint32_t surfacesDrawn = 0, surfacesCulled = 0, dynamicMeshesDrawn = 0;
     uint32_t shadowViewsRendered = 0;  // static views redrawn this frame
     uint64_t trianglesDrawn = 0;       // forward pass
@@ -155,15 +166,20 @@ void destroyRenderer(Renderer& renderer);
 
 const RendererInfo& rendererInfo(const Renderer& renderer);
 
-/// Renders one frame (shadow passes, forward pass, tonemap) and waits for it.
+/// Records and submits one frame (shadow passes, forward pass, tonemap, outputs). It first waits
+/// for the frame kFramesInFlight before (whose resources it reuses), and afterwards for this
+/// frame only when `output` reads it back or asks to wait.
 FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameOutput& output = {});
+
+/// Waits until every submitted frame has finished.
+void waitForFrames(Renderer& renderer);
 
 /// The frame of the last drawFrame with output.readback.
 const CapturedFrame& capturedFrame(const Renderer& renderer);
 
-/// The primary light (into level.lights) a dynamic entity was lit by in the last frame that saw
-/// it, or kNoIndex (none yet, or no primary reaches it).
-uint32_t dynamicPrimary(const Renderer& renderer, uint32_t entity);
+/// The primary light (into level.lights) the last frame drew dynamic entity `entity` with;
+/// kNoIndex when it drew the entity with none, or did not draw it (culled, or not dynamic).
+uint32_t drawnPrimary(const Renderer& renderer, uint32_t entity);
 
 /// Changes the size of the offscreen targets (a resized window).
 void resizeRenderer(Renderer& renderer, uint32_t width, uint32_t height);

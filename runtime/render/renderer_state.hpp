@@ -11,6 +11,7 @@
 #include "render/gpu_types.hpp"
 #include "render/renderer.hpp"
 #include "vk/buffer.hpp"
+#include "vk/context.hpp"
 #include "vk/graphics_pipeline.hpp"
 #include "vk/image.hpp"
 #include "world/baked_lighting.hpp"
@@ -22,9 +23,13 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kDisplayFormat = VK_FORMAT_B8G8R8A8_UNORM;  // as the swapchain
 inline constexpr uint32_t kLutSize = 64;
 inline constexpr uint32_t kEnvBrdfSize = 32;
+inline constexpr uint32_t kFramesInFlight =
+    2;  // the CPU records one frame while the GPU draws another
+inline constexpr uint32_t kTimestampCount = 4;  // frame start, after shadows, forward, tonemap
 
-/// A material's five texture slots (base, metallic-roughness, normal, occlusion, emissive).
-using MaterialTextures = std::array<std::pair<VkImageView, VkSampler>, 5>;
+/// A material's texture slots (TEXTURE_* of gpu_interface.glsl): view and sampler each.
+using MaterialTextures =
+    std::array<std::pair<VkImageView, VkSampler>, size_t(glsl::TEXTURE_SLOT_COUNT)>;
 
 /// A static surface as the renderer draws it.
 struct DrawSurface {
@@ -57,6 +62,20 @@ struct ShadowView {
     VkImageView frameLayer = VK_NULL_HANDLE;   // owned, layer of frameShadows (with dynamics)
 };
 
+/// What one frame in flight owns: its command buffer and fence, and every buffer the CPU writes
+/// for it, so that the CPU fills the next frame while the GPU still reads this one.
+struct FrameSlot {
+    VkCommandBuffer cmd = VK_NULL_HANDLE;       // from ctx->commandPool
+    VkFence done = VK_NULL_HANDLE;              // owned, signalled when its last submit finished
+    VkQueryPool timestamps = VK_NULL_HANDLE;    // owned, kTimestampCount (when supported)
+    vk::Buffer uniforms;                        // FrameUniforms
+    vk::Buffer shadowViews;                     // GpuShadowView per shadow view
+    vk::Buffer objectLighting;                  // GpuObjectLighting per entity
+    VkDescriptorSet frameSet = VK_NULL_HANDLE;  // set 0 over these buffers, from the pool
+    uint64_t frame = 0;                         // the frame it last submitted
+    bool pending = false;                       // submitted and not waited for yet
+};
+
 struct RendererState {
     vk::Context* ctx = nullptr;  // borrowed
     RendererOptions options;
@@ -72,10 +91,10 @@ struct RendererState {
     std::vector<DrawDynamicMesh> dynamicMeshes;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
     float ambientLux = 0.0f;
-    std::vector<uint32_t> dynamicPrimary;  // per entity, with hysteresis
+    std::vector<uint32_t> drawnPrimary;  // per entity: the primary its last drawn frame used
 
     // GPU scene.
-    vk::Buffer vertices, indices, lightBuffer, shadowViewBuffer, materialBuffer, frameBuffer;
+    vk::Buffer vertices, indices, lightBuffer, materialBuffer;  // device-local
     std::deque<vk::Image> textures;                  // owned, decoded level images (never moved)
     std::map<uint64_t, uint32_t> textureIndex;       // (image << 1 | srgb) -> textures
     std::map<uint64_t, VkSampler> samplers;          // owned, by glTF sampler state
@@ -90,7 +109,6 @@ struct RendererState {
     float lightmapDecode = 1.0f;          // lux per stored lightmap unit (a power of two)
     std::vector<glm::vec2> atlasUvScale;  // per atlas: uv1 to the lightmap array's uv
     world::LightGrid grid;                // empty without baked lighting
-    vk::Buffer objectLightingBuffer;      // GpuObjectLighting per entity, written per frame
     vk::Buffer probeBuffer;               // GpuProbe records (render/probe_records.hpp)
     uint32_t probeCount = 1;              // records; the cube array holds as many cubes
     uint32_t probeMips = 1;
@@ -120,14 +138,13 @@ struct RendererState {
     VkPipeline shadowPipeline = VK_NULL_HANDLE;        // owned
     VkPipeline tonemapPipeline = VK_NULL_HANDLE;       // owned
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;  // owned, frees the sets
-    VkDescriptorSet frameSet = VK_NULL_HANDLE, tonemapSet = VK_NULL_HANDLE;
+    VkDescriptorSet tonemapSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> materialSets;  // per material (one default when none)
 
-    // Submission.
-    VkCommandBuffer cmd = VK_NULL_HANDLE;  // from ctx->commandPool
-    VkFence fence = VK_NULL_HANDLE;        // owned
-    VkQueryPool queries = VK_NULL_HANDLE;  // owned, 4 timestamps
-    bool timestamps = false;
+    // Submission: kFramesInFlight slots used in turn; frame n records into frames[n % count].
+    std::array<FrameSlot, kFramesInFlight> frames;
+    uint64_t framesSubmitted = 0;
+    bool timestamps = false;  // the device writes timestamps
 };
 
 /// Pipeline key of a forward permutation: material class, double-sided, alpha mask.
@@ -137,7 +154,23 @@ inline uint32_t permutationKey(uint32_t materialClass, bool doubleSided, bool al
 
 // scene.cpp
 void uploadScene(RendererState& s, const assets::LoadedLevel& loaded);
+/// The level's lights with their first shadow views: after createShadows has given them slots.
+void uploadLights(RendererState& s);
 void destroyScene(RendererState& s);
+
+// targets.cpp
+/// The supported sample count nearest to `requested` (in powers of two; ties go up).
+VkSampleCountFlagBits pickSamples(const vk::Context& ctx, uint32_t requested);
+void createTargets(RendererState& s);
+void destroyTargets(RendererState& s);
+
+// pipelines.cpp
+/// Pipeline layouts, the forward permutations the level uses, shadow and tonemap pipelines, and
+/// the descriptor sets (one frame set per frame slot, one per material, the tonemap set).
+void createPipelines(RendererState& s);
+void destroyPipelines(RendererState& s);
+/// Points the tonemap set at the current HDR target (after createTargets).
+void writeTonemapSet(RendererState& s);
 
 // shadows.cpp
 void createShadows(RendererState& s);
@@ -145,9 +178,67 @@ void destroyShadows(RendererState& s);
 /// Fits the views of the slots of `visibleLights` for this camera; marks slots to redraw.
 void updateShadowViews(RendererState& s, const Camera& camera,
                        const std::vector<uint32_t>& visibleLights);
+/// Copies the shadow views fitted for this frame into `out` (GpuShadowView per view).
+void writeShadowViews(const RendererState& s, GpuShadowView* out);
 /// Records the shadow passes; returns how many static views were redrawn.
 uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
                             const std::vector<uint32_t>& visibleLights,
                             const std::vector<glm::mat4>& entityTransforms);
+
+// frame_view.cpp: what a frame sees and draws, on the CPU.
+/// Light records (gpu_interface.glsl GpuLight): a level light with its first shadow view, and
+/// the effect lights (no shadow).
+GpuLight gpuLightOf(const world::Light& light, uint32_t firstShadowView);
+GpuLight gpuLightOf(const EffectOmni& omni);
+GpuLight gpuLightOf(const EffectSpot& spot);
+
+/// One draw of the forward pass.
+struct Draw {
+    uint32_t key = 0;  // permutationKey of the material (0 with flat shading)
+    uint32_t material = 0;
+    uint32_t firstIndex = 0, indexCount = 0;
+    int32_t vertexOffset = 0;
+    uint32_t primaryLight = kNoIndex, atlas = kNoIndex;
+    uint32_t entity = kNoIndex;  // kNoIndex for static; a dynamic object's record in objectLighting
+    float distance2 = 0.0f;      // squared metres from the camera: front to back within a key
+};
+
+/// The camera, the exposure and the dynamic objects' transforms and primaries of one frame.
+struct FrameView {
+    Camera camera;
+    glm::mat4 viewProj{1.0f};
+    float ev100 = 0.0f, exposure = 1.0f;
+    std::vector<glm::mat4> entityTransforms;  // per entity: given, else its placement
+    std::vector<uint32_t> entityPrimary;      // per entity: the game's pick, or kNoIndex
+};
+FrameView frameViewOf(const RendererState& s, const FrameInputs& inputs);
+
+/// The frame's draws, sorted by pipeline then front to back, and the primaries they use.
+struct DrawList {
+    std::vector<Draw> draws;
+    std::vector<uint32_t> visibleLights;  // sorted, unique
+    std::vector<uint8_t> entityVisible;   // per entity
+};
+/// Culls static surfaces and dynamic meshes against the view; counts them in `stats`.
+DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats& stats);
+
+/// The grid's lighting of every visible dynamic object, into `out` (one record per entity).
+void writeObjectLighting(const RendererState& s, const FrameView& view, const DrawList& list,
+                         GpuObjectLighting* out);
+
+/// The frame's uniforms: camera, exposure, shadow and baked parameters, effect lights.
+FrameUniforms frameUniformsOf(const RendererState& s, const FrameView& view,
+                              const EffectLights& effects);
+
+// frame_passes.cpp: recording the frame after the shadow passes.
+/// The forward pass into the HDR target (resolved from MSAA); counts triangles in `stats`.
+void recordForwardPass(RendererState& s, VkCommandBuffer cmd, const FrameSlot& slot,
+                       const FrameView& view, const DrawList& list, FrameStats& stats);
+/// The tonemap pass from the HDR target into the display target.
+void recordTonemapPass(RendererState& s, VkCommandBuffer cmd);
+/// Copies to the host (readback) and into the swapchain image, as `output` asks.
+void recordOutputs(RendererState& s, VkCommandBuffer cmd, const FrameOutput& output);
+/// Fills s.captured from the readback buffers of a finished frame.
+void readBackFrame(RendererState& s, const FrameOutput& output, float exposure);
 
 }  // namespace onelight::render

@@ -1,8 +1,10 @@
 // The GPU scene: the level's geometry, materials, textures and lights, its baked lighting (or
 // neutral placeholders) and the colour LUT, uploaded once.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <span>
 #include <stdexcept>
 
 #include <glm/gtc/packing.hpp>
@@ -18,10 +20,32 @@ namespace {
 
 namespace glsl = onelight::glsl;
 
-void createFilledBuffer(const vk::Context& ctx, vk::Buffer& buffer, const void* data, size_t bytes,
+// A material's texture indices by slot (TEXTURE_* of gpu_interface.glsl).
+using TextureSlots = std::array<uint32_t, size_t(glsl::TEXTURE_SLOT_COUNT)>;
+TextureSlots textureSlotsOf(const world::Material& m) {
+    TextureSlots slots{};
+    slots[glsl::TEXTURE_BASE_COLOR] = m.base_color_texture;
+    slots[glsl::TEXTURE_METALLIC_ROUGHNESS] = m.metallic_roughness_texture;
+    slots[glsl::TEXTURE_NORMAL] = m.normal_texture;
+    slots[glsl::TEXTURE_OCCLUSION] = m.occlusion_texture;
+    slots[glsl::TEXTURE_EMISSIVE] = m.emissive_texture;
+    return slots;
+}
+
+// Every slot's placeholder: white, a flat normal for the normal map.
+MaterialTextures placeholderTextures(const RendererState& s) {
+    MaterialTextures bound;
+    for (uint32_t t = 0; t < bound.size(); ++t)
+        bound[t] = {int(t) == glsl::TEXTURE_NORMAL ? s.flatNormal.view : s.white.view,
+                    s.linearClamp};
+    return bound;
+}
+
+// A device-local buffer holding `records`.
+template <class T>
+void createRecordBuffer(const vk::Context& ctx, vk::Buffer& buffer, const std::vector<T>& records,
                         VkBufferUsageFlags usage) {
-    vk::createHostBuffer(ctx, buffer, std::max<size_t>(bytes, 16), usage);
-    if (bytes > 0) std::memcpy(buffer.mapped, data, bytes);
+    vk::createDeviceBuffer(ctx, buffer, vk::bytesOf(std::span<const T>(records)), usage);
 }
 
 // A 2D (array) or 3D image of RGBA16F texels given as floats.
@@ -78,10 +102,6 @@ vk::SamplerDesc samplerDesc(const world::Sampler& sampler) {
     return d;
 }
 
-float luminance(glm::vec3 c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
-
 // The brightest primary's illuminance at the level centre (lux): what automatic exposure and
 // the automatic placeholder ambient are based on.
 float referenceIlluminance(const RendererState& s) {
@@ -89,7 +109,7 @@ float referenceIlluminance(const RendererState& s) {
     float best = 0.0f;
     for (const world::Light& light : s.lights) {
         if (light.role != world::LightRole::primary) continue;
-        float e = light.intensity * luminance(light.color);
+        float e = light.intensity * glsl::luminance(light.color);
         if (light.type != world::LightType::directional) {
             const glm::vec3 d = centre - light.position;
             e /= std::max(glm::dot(d, d), 1.0f);
@@ -138,11 +158,8 @@ void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
     vertices.insert(vertices.end(), level.dynamic_vertices.begin(), level.dynamic_vertices.end());
     std::vector<uint32_t> indices = level.indices;
     indices.insert(indices.end(), level.dynamic_indices.begin(), level.dynamic_indices.end());
-    static_assert(sizeof(world::Vertex) == 56, "vertex layout of forward.vert");
-    createFilledBuffer(*s.ctx, s.vertices, vertices.data(), vertices.size() * sizeof(world::Vertex),
-                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    createFilledBuffer(*s.ctx, s.indices, indices.data(), indices.size() * sizeof(uint32_t),
-                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    createRecordBuffer(*s.ctx, s.vertices, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    createRecordBuffer(*s.ctx, s.indices, indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
     for (const world::Surface& surface : level.surfaces) {
         DrawSurface d;
@@ -181,21 +198,6 @@ void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
     }
 }
 
-void uploadLights(RendererState& s) {
-    std::vector<GpuLight> gpu(std::max<size_t>(s.lights.size(), 1));
-    for (size_t i = 0; i < s.lights.size(); ++i) {
-        const world::Light& l = s.lights[i];
-        GpuLight& g = gpu[i];
-        g.positionRange = glm::vec4(l.position, l.range);
-        g.direction = glm::vec4(glm::normalize(l.direction), 0.0f);
-        g.color = glm::vec4(l.color * l.intensity, 0.0f);
-        g.cones = glm::vec4(std::cos(l.inner_cone), std::cos(l.outer_cone), 0.0f, 0.0f);
-        g.info = glm::uvec4(uint32_t(l.type), kNoIndex, 0u, 0u);
-    }
-    createFilledBuffer(*s.ctx, s.lightBuffer, gpu.data(), gpu.size() * sizeof(GpuLight),
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-}
-
 void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
     const world::CompiledLevel& level = loaded.level;
     std::vector<GpuMaterial> gpu(std::max<size_t>(level.materials.size(), 1));
@@ -207,9 +209,8 @@ void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
         g.emissive = glm::vec4(m.emissive, m.alpha_cutoff);
         g.params = glm::vec4(m.metallic, m.roughness, m.normal_scale, m.occlusion_strength);
         uint32_t bits = 0;
-        const uint32_t slots[5] = {m.base_color_texture, m.metallic_roughness_texture,
-                                   m.normal_texture, m.occlusion_texture, m.emissive_texture};
-        for (uint32_t t = 0; t < 5; ++t)
+        const TextureSlots slots = textureSlotsOf(m);
+        for (uint32_t t = 0; t < slots.size(); ++t)
             if (slots[t] != world::kNone) bits |= 1u << t;
         g.textures = glm::uvec4(bits, 0u, 0u, 0u);
         uint8_t cls = uint8_t(m.material_class);
@@ -222,8 +223,7 @@ void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
         gpu[0].baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
         gpu[0].params = glm::vec4(0.0f, 1.0f, 1.0f, 1.0f);
     }
-    createFilledBuffer(*s.ctx, s.materialBuffer, gpu.data(), gpu.size() * sizeof(GpuMaterial),
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    createRecordBuffer(*s.ctx, s.materialBuffer, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
 void createPlaceholders(RendererState& s) {
@@ -374,8 +374,7 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
     }
     s.probeCount = uint32_t(records.size());
     s.probeMips = s.probe.desc.mipLevels;
-    createFilledBuffer(*s.ctx, s.probeBuffer, records.data(), records.size() * sizeof(GpuProbe),
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    createRecordBuffer(*s.ctx, s.probeBuffer, records, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
 // The baked-lighting interface: the package's lightmaps, shadow masks and light grid, or
@@ -402,10 +401,6 @@ void uploadBakedLighting(RendererState& s, const assets::LoadedLevel& loaded) {
     }
     s.info.bakedLighting = s.bakedLighting;
     s.info.lightmapDecode = s.lightmapDecode;
-    vk::createHostBuffer(*s.ctx, s.objectLightingBuffer,
-                         std::max<size_t>(s.entities.size(), 1) * sizeof(GpuObjectLighting),
-                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    std::memset(s.objectLightingBuffer.mapped, 0, s.objectLightingBuffer.size);
     uploadProbes(s, loaded);
 }
 
@@ -449,6 +444,17 @@ void createEnvBrdfTable(RendererState& s) {
 
 }  // namespace
 
+void uploadLights(RendererState& s) {
+    std::vector<GpuLight> gpu;
+    for (uint32_t i = 0; i < s.lights.size(); ++i) {
+        const uint32_t slot = s.lightSlot.at(i);
+        gpu.push_back(
+            gpuLightOf(s.lights[i], slot == kNoIndex ? kNoIndex : s.slots[slot].firstView));
+    }
+    if (gpu.empty()) gpu.emplace_back();  // a binding needs a record
+    createRecordBuffer(*s.ctx, s.lightBuffer, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
 void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
     const world::CompiledLevel& level = loaded.level;
     s.settings = level.settings;
@@ -460,7 +466,7 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
         s.boundsMin = glm::min(s.boundsMin, e.position);
         s.boundsMax = glm::max(s.boundsMax, e.position);
     }
-    s.dynamicPrimary.assign(level.entities.size(), kNoIndex);
+    s.drawnPrimary.assign(level.entities.size(), kNoIndex);
 
     const float reference = referenceIlluminance(s);
     s.ambientLux = s.options.placeholderAmbientLux >= 0.0f
@@ -477,7 +483,6 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
     s.nearestClamp = vk::createSampler(*s.ctx, clamp);
 
     uploadGeometry(s, level);
-    uploadLights(s);
     uploadMaterials(s, loaded);
     createPlaceholders(s);
     uploadBakedLighting(s, loaded);
@@ -487,23 +492,20 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
     // Material textures: (image, sampler) per slot, placeholders where absent.
     s.materialTextures.clear();
     for (const world::Material& m : level.materials) {
-        const uint32_t slots[5] = {m.base_color_texture, m.metallic_roughness_texture,
-                                   m.normal_texture, m.occlusion_texture, m.emissive_texture};
-        MaterialTextures bound;
-        for (uint32_t t = 0; t < 5; ++t) {
-            bound[t] = {t == 2 ? s.flatNormal.view : s.white.view, s.linearClamp};
+        const TextureSlots slots = textureSlotsOf(m);
+        MaterialTextures bound = placeholderTextures(s);
+        for (uint32_t t = 0; t < slots.size(); ++t) {
             if (slots[t] == world::kNone) continue;
-            const uint32_t image = textureFor(s, loaded, slots[t], t == 0 || t == 4);
+            const bool srgb =
+                int(t) == glsl::TEXTURE_BASE_COLOR || int(t) == glsl::TEXTURE_EMISSIVE;
+            const uint32_t image = textureFor(s, loaded, slots[t], srgb);
             if (image == kNoIndex) continue;
             bound[t] = {s.textures[image].view, samplerFor(s, level.textures.at(slots[t]).sampler)};
         }
         s.materialTextures.push_back(bound);
     }
     if (s.materialTextures.empty()) {
-        MaterialTextures bound;
-        for (uint32_t t = 0; t < 5; ++t)
-            bound[t] = {t == 2 ? s.flatNormal.view : s.white.view, s.linearClamp};
-        s.materialTextures.push_back(bound);
+        s.materialTextures.push_back(placeholderTextures(s));
         s.materialClasses.push_back(
             uint8_t(s.options.forceMaterialClass >= 0 ? s.options.forceMaterialClass : 3));
         s.materialDoubleSided.push_back(0);
@@ -518,7 +520,6 @@ void destroyScene(RendererState& s) {
     s.nearestClamp = s.linearClamp = VK_NULL_HANDLE;
     vk::destroyImage(ctx, s.envBrdf);
     vk::destroyImage(ctx, s.lut);
-    vk::destroyBuffer(ctx, s.objectLightingBuffer);
     vk::destroyImage(ctx, s.shadowMask);
     vk::destroyImage(ctx, s.lightmap);
     vk::destroyImage(ctx, s.probe);

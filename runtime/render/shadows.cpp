@@ -4,12 +4,12 @@
 // objects in the level, each frame copies the static layers and draws only the dynamic casters.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/renderer_state.hpp"
 #include "vk/commands.hpp"
+#include "vk/rendering.hpp"
 #include "vk/vk_check.hpp"
 
 namespace onelight::render {
@@ -84,25 +84,16 @@ void fitSpotOrOmni(RendererState& s, ShadowSlot& slot) {
     }
 }
 
+// Slope-scaled depth bias of the shadow pass (constant, clamp, slope), in depth-buffer units.
+constexpr float kShadowBiasConstant = 1.25f;
+constexpr float kShadowBiasSlope = 2.0f;
+
 void beginDepthRendering(VkCommandBuffer cmd, VkImageView view, uint32_t size, bool clear) {
-    VkRenderingAttachmentInfo depth{};
-    depth.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-    depth.imageView = view;
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-    depth.loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {1.0f, 0};
-    VkRenderingInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
-    info.renderArea = {{0, 0}, {size, size}};
-    info.layerCount = 1;
-    info.pDepthAttachment = &depth;
-    vkCmdBeginRendering(cmd, &info);
-    const VkViewport viewport{0.0f, 0.0f, float(size), float(size), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {size, size}};
-    vkCmdSetViewport(cmd, 0, 1, &viewport);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
-    vkCmdSetDepthBias(cmd, 1.25f, 0.0f, 2.0f);
+    const VkRenderingAttachmentInfo depth =
+        vk::depthAttachment(view, clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
+                            VK_ATTACHMENT_STORE_OP_STORE);
+    vk::beginRendering(cmd, {size, size}, nullptr, &depth);
+    vkCmdSetDepthBias(cmd, kShadowBiasConstant, 0.0f, kShadowBiasSlope);
 }
 
 void drawStaticCasters(RendererState& s, VkCommandBuffer cmd, const ShadowView& view) {
@@ -149,13 +140,6 @@ void createShadows(RendererState& s) {
     }
     s.views.resize(std::max(layers, 1u));
     s.info.shadowLayers = layers;
-
-    // Shadow-view indices into the light records.
-    auto* gpuLights = static_cast<GpuLight*>(s.lightBuffer.mapped);
-    for (const ShadowSlot& slot : s.slots) gpuLights[slot.light].info.y = slot.firstView;
-    vk::createHostBuffer(ctx, s.shadowViewBuffer, s.views.size() * sizeof(GpuShadowView),
-                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    std::memset(s.shadowViewBuffer.mapped, 0, s.views.size() * sizeof(GpuShadowView));
 
     vk::ImageDesc desc;
     desc.format = kDepthFormat;
@@ -215,7 +199,6 @@ void destroyShadows(RendererState& s) {
     }
     vk::destroyImage(ctx, s.frameShadows);
     vk::destroyImage(ctx, s.staticShadows);
-    vk::destroyBuffer(ctx, s.shadowViewBuffer);
 }
 
 void updateShadowViews(RendererState& s, const Camera& camera,
@@ -228,10 +211,12 @@ void updateShadowViews(RendererState& s, const Camera& camera,
         else if (!slot.staticValid)
             fitSpotOrOmni(s, slot);
     }
-    auto* gpu = static_cast<GpuShadowView*>(s.shadowViewBuffer.mapped);
+}
+
+void writeShadowViews(const RendererState& s, GpuShadowView* out) {
     for (size_t i = 0; i < s.views.size(); ++i) {
-        gpu[i].viewProj = s.views[i].viewProj;
-        gpu[i].params = s.views[i].params;
+        out[i].viewProj = s.views[i].viewProj;
+        out[i].params = s.views[i].params;
     }
 }
 
@@ -292,12 +277,8 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
                 slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT));
-        VkImageCopy copy{};
-        copy.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, slot.firstView, slot.viewCount};
-        copy.dstSubresource = copy.srcSubresource;
-        copy.extent = {size, size, 1};
-        vkCmdCopyImage(cmd, s.staticShadows.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                       s.frameShadows.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+        vk::copyImage(cmd, s.staticShadows.image, s.frameShadows.image, VK_IMAGE_ASPECT_DEPTH_BIT,
+                      size, size, slot.firstView, slot.viewCount);
         vk::imageBarrier(
             cmd, s.staticShadows,
             vk::layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,

@@ -1,8 +1,12 @@
-// Buffers and their memory. For now only host-visible buffers: the CPU writes and reads them
-// directly through a persistent mapping.
+// Buffers and their memory: host-visible buffers, which the CPU writes and reads through a
+// persistent mapping (per-frame data, readback, staging), and device-local buffers filled once
+// through a staging buffer (geometry, materials, lights).
 #pragma once
 
 #include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <span>
 
 #include "vk/context.hpp"
 
@@ -13,7 +17,8 @@ struct Buffer {
     VkBuffer buffer = VK_NULL_HANDLE;        // owned
     VkDeviceMemory memory = VK_NULL_HANDLE;  // owned
     VkDeviceSize size = 0;                   // bytes, as requested
-    void* mapped = nullptr;                  // host pointer to the whole buffer while it lives
+    void* mapped =
+        nullptr;  // host pointer to the whole buffer while it lives; null if device-local
 
     Buffer() = default;
     Buffer(const Buffer&) = delete;
@@ -29,6 +34,17 @@ int findMemoryType(const Context& ctx, uint32_t typeBits, VkMemoryPropertyFlags 
 // after the writes (bufferBarrier in commands.hpp).
 void createHostBuffer(const Context& ctx, Buffer& buffer, VkDeviceSize size,
                       VkBufferUsageFlags usage);
+
+// A device-local buffer holding `bytes` (at least 16 bytes are allocated, so an empty array still
+// binds), copied in through a staging buffer; waits for the copy. `usage` gains TRANSFER_DST.
+void createDeviceBuffer(const Context& ctx, Buffer& buffer, std::span<const uint8_t> bytes,
+                        VkBufferUsageFlags usage);
+
+// The bytes of a contiguous array of plain records, for createDeviceBuffer.
+template <class T>
+std::span<const uint8_t> bytesOf(std::span<const T> records) {
+    return {reinterpret_cast<const uint8_t*>(records.data()), records.size_bytes()};
+}
 
 // Unmaps, destroys and frees. Safe on an empty Buffer.
 void destroyBuffer(const Context& ctx, Buffer& buffer);

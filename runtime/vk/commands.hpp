@@ -1,4 +1,5 @@
-// Command buffers: a one-shot submit, and barrier helpers.
+// Command buffers, fences and semaphores: create-info helpers, a one-shot submit, a frame submit,
+// and barrier and copy helpers.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -11,6 +12,33 @@
 
 namespace onelight::vk {
 
+// A primary command buffer from ctx.commandPool (freed with the pool, or by vkFreeCommandBuffers).
+VkCommandBuffer allocateCommandBuffer(const Context& ctx);
+
+// A fence, signalled from the start when `signalled`. The caller destroys it with vkDestroyFence.
+VkFence createFence(const Context& ctx, bool signalled = false);
+
+// A binary semaphore. The caller destroys it with vkDestroySemaphore.
+VkSemaphore createSemaphore(const Context& ctx);
+
+// Resets `cmd` and begins recording it for one submit.
+void beginOneTimeCommands(VkCommandBuffer cmd);
+
+// Waits for `fence` (throws "... timed out" on VK_TIMEOUT after timeoutNs, naming `what`).
+void waitForFence(const Context& ctx, VkFence fence, const char* what,
+                  uint64_t timeoutNs = 120'000'000'000ull);
+
+// What a submit of one command buffer waits for and signals (all optional).
+struct SubmitSync {
+    VkSemaphore wait = VK_NULL_HANDLE;  // waited at waitStage
+    VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT;
+    VkSemaphore signal = VK_NULL_HANDLE;
+    VkFence fence = VK_NULL_HANDLE;  // signalled when the work is done (reset by submit)
+};
+
+// Submits `cmd` (ended) to ctx.queue with `sync`; resets sync.fence first.
+void submitCommands(const Context& ctx, VkCommandBuffer cmd, const SubmitSync& sync);
+
 // Records a primary command buffer from ctx.commandPool with `record`, submits it to ctx.queue
 // and waits for it to finish (throws on VK_TIMEOUT after timeoutNs). For uploads, readbacks and
 // tests, not for frames.
@@ -22,5 +50,15 @@ void submitOnce(const Context& ctx, const std::function<void(VkCommandBuffer)>& 
 // (COMPUTE_SHADER, SHADER_WRITE) -> (HOST, HOST_READ).
 void bufferBarrier(VkCommandBuffer cmd, const Buffer& buffer, VkPipelineStageFlags srcStage,
                    VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+
+// Copies mip 0, layer 0 of a colour image in TRANSFER_SRC_OPTIMAL into `buffer` (tightly packed
+// rows), then makes the copy visible to host reads after the submit's fence.
+void copyImageToHost(VkCommandBuffer cmd, VkImage image, uint32_t width, uint32_t height,
+                     const Buffer& buffer);
+
+// Copies layers [firstLayer, firstLayer + layerCount) of mip 0 of `src` (TRANSFER_SRC_OPTIMAL)
+// into the same layers of `dst` (TRANSFER_DST_OPTIMAL), width x height texels of `aspect`.
+void copyImage(VkCommandBuffer cmd, VkImage src, VkImage dst, VkImageAspectFlags aspect,
+               uint32_t width, uint32_t height, uint32_t firstLayer = 0, uint32_t layerCount = 1);
 
 }  // namespace onelight::vk

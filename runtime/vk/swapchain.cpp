@@ -3,9 +3,24 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "vk/commands.hpp"
 #include "vk/vk_check.hpp"
 
 namespace onelight::vk {
+
+namespace {
+
+void destroySemaphores(const Context& ctx, Swapchain& swapchain) {
+    for (VkSemaphore semaphore : swapchain.acquireRing)
+        vkDestroySemaphore(ctx.device, semaphore, nullptr);
+    for (VkSemaphore semaphore : swapchain.frameCopied)
+        vkDestroySemaphore(ctx.device, semaphore, nullptr);
+    swapchain.acquireRing.clear();
+    swapchain.frameCopied.clear();
+    swapchain.imageAcquired.clear();
+}
+
+}  // namespace
 
 void createSwapchain(const Context& ctx, Swapchain& swapchain, VkSurfaceKHR surface, uint32_t width,
                      uint32_t height) {
@@ -61,19 +76,15 @@ void createSwapchain(const Context& ctx, Swapchain& swapchain, VkSurfaceKHR surf
     VK_CHECK(
         vkGetSwapchainImagesKHR(ctx.device, swapchain.swapchain, &count, swapchain.images.data()));
 
-    VkSemaphoreCreateInfo semaphoreInfo{};
-    semaphoreInfo.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO;
-    if (!swapchain.imageAcquired)
-        VK_CHECK(vkCreateSemaphore(ctx.device, &semaphoreInfo, nullptr, &swapchain.imageAcquired));
-    if (!swapchain.frameCopied)
-        VK_CHECK(vkCreateSemaphore(ctx.device, &semaphoreInfo, nullptr, &swapchain.frameCopied));
+    destroySemaphores(ctx, swapchain);  // the old ones may count other images
+    for (uint32_t i = 0; i <= count; ++i) swapchain.acquireRing.push_back(createSemaphore(ctx));
+    for (uint32_t i = 0; i < count; ++i) swapchain.frameCopied.push_back(createSemaphore(ctx));
+    swapchain.imageAcquired.assign(count, VK_NULL_HANDLE);
+    swapchain.nextAcquire = 0;
 }
 
 void destroySwapchain(const Context& ctx, Swapchain& swapchain) {
-    if (swapchain.frameCopied) vkDestroySemaphore(ctx.device, swapchain.frameCopied, nullptr);
-    swapchain.frameCopied = VK_NULL_HANDLE;
-    if (swapchain.imageAcquired) vkDestroySemaphore(ctx.device, swapchain.imageAcquired, nullptr);
-    swapchain.imageAcquired = VK_NULL_HANDLE;
+    destroySemaphores(ctx, swapchain);
     swapchain.images.clear();
     if (swapchain.swapchain) vkDestroySwapchainKHR(ctx.device, swapchain.swapchain, nullptr);
     swapchain.swapchain = VK_NULL_HANDLE;
@@ -81,10 +92,13 @@ void destroySwapchain(const Context& ctx, Swapchain& swapchain) {
 
 int acquireNextImage(const Context& ctx, Swapchain& swapchain) {
     uint32_t index = 0;
+    const VkSemaphore signal = swapchain.acquireRing[swapchain.nextAcquire];
     const VkResult result = vkAcquireNextImageKHR(ctx.device, swapchain.swapchain, UINT64_MAX,
-                                                  swapchain.imageAcquired, VK_NULL_HANDLE, &index);
+                                                  signal, VK_NULL_HANDLE, &index);
     if (result == VK_ERROR_OUT_OF_DATE_KHR) return -1;
     if (result != VK_SUBOPTIMAL_KHR) VK_CHECK(result);
+    swapchain.nextAcquire = (swapchain.nextAcquire + 1) % uint32_t(swapchain.acquireRing.size());
+    swapchain.imageAcquired.at(index) = signal;
     return int(index);
 }
 
@@ -92,7 +106,7 @@ bool presentImage(const Context& ctx, Swapchain& swapchain, uint32_t index) {
     VkPresentInfoKHR info{};
     info.sType = VK_STRUCTURE_TYPE_PRESENT_INFO_KHR;
     info.waitSemaphoreCount = 1;
-    info.pWaitSemaphores = &swapchain.frameCopied;
+    info.pWaitSemaphores = &swapchain.frameCopied.at(index);
     info.swapchainCount = 1;
     info.pSwapchains = &swapchain.swapchain;
     info.pImageIndices = &index;

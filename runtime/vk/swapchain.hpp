@@ -17,8 +17,14 @@ struct Swapchain {
     std::vector<VkImage> images;                // borrowed from swapchain
     VkFormat format = VK_FORMAT_B8G8R8A8_UNORM;
     VkExtent2D extent{};
-    VkSemaphore imageAcquired = VK_NULL_HANDLE;  // owned, signalled by acquire
-    VkSemaphore frameCopied = VK_NULL_HANDLE;    // owned, waited by present
+    // Acquire signals the next semaphore of a ring of images + 1, so that with frames in flight
+    // a semaphore is reused only after the frame that waited on it has finished.
+    std::vector<VkSemaphore> acquireRing;    // owned
+    uint32_t nextAcquire = 0;                // into acquireRing
+    std::vector<VkSemaphore> imageAcquired;  // per image: borrowed from acquireRing, signalled by
+                                             // the acquire that returned it, waited by its frame
+    std::vector<VkSemaphore> frameCopied;    // owned, per image: signalled by the frame that
+                                             // fills it, waited by its present
 
     Swapchain() = default;
     Swapchain(const Swapchain&) = delete;
@@ -31,14 +37,15 @@ struct Swapchain {
 void createSwapchain(const Context& ctx, Swapchain& swapchain, VkSurfaceKHR surface, uint32_t width,
                      uint32_t height);
 
-// Destroys semaphores and swapchain (not the surface).
+// Destroys the semaphores and the swapchain (not the surface).
 void destroySwapchain(const Context& ctx, Swapchain& swapchain);
 
-// The index of the next image, signalling swapchain.imageAcquired; -1 when the swapchain is out
-// of date and must be recreated.
+// The index of the next image, signalling swapchain.imageAcquired[index]; -1 when the swapchain is
+// out of date and must be recreated.
 int acquireNextImage(const Context& ctx, Swapchain& swapchain);
 
-// Presents image `index` after swapchain.frameCopied. False when out of date or suboptimal.
+// Presents image `index` after swapchain.frameCopied[index]. False when out of date or
+// suboptimal.
 bool presentImage(const Context& ctx, Swapchain& swapchain, uint32_t index);
 
 }  // namespace onelight::vk

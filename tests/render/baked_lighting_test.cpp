@@ -16,6 +16,8 @@
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
+#include "world/dynamic_primary.hpp"
+#include "world/light_grid_sample.hpp"
 #include "world/package/probe_section.hpp"
 
 namespace {
@@ -511,8 +513,19 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
     {
         render::Renderer renderer;
         render::createRenderer(renderer, ctx, level, options(0.01f, 0.005f));
+        std::vector<uint32_t> candidates;
+        for (uint32_t l = 0; l < level.level.lights.size(); ++l)
+            if (level.level.lights[l].role == world::LightRole::primary) candidates.push_back(l);
         for (int i = 0; i < 2; ++i) {
-            render::DynamicTransform moved{entity, glm::translate(glm::mat4(1.0f), places[i])};
+            // The game's pick, by the grid's score, handed over with the transform.
+            world::DynamicPrimary pick;
+            const world::LightGridSample sample =
+                world::sampleLightGrid(level.baked.grid, places[i]);
+            world::updateDynamicPrimary(pick, places[i], candidates, [&](uint32_t l, glm::vec3 p) {
+                return world::gridPrimaryScore(level.level.lights, level.baked.grid, sample, l, p);
+            });
+            render::DynamicTransform moved{entity, glm::translate(glm::mat4(1.0f), places[i]),
+                                           pick.primary};
             render::FrameInputs inputs;
             inputs.camera = camera;
             inputs.dynamicTransforms = {&moved, 1};
@@ -528,7 +541,8 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
             const glm::vec3 p = r.origin + ((top.y - r.origin.y) / r.direction.y) * r.direction;
             const GridAt g = gridAt(level.baked.grid, places[i]);
             ASSERT_TRUE(g.oneDominant);
-            EXPECT_EQ(render::dynamicPrimary(renderer, entity), g.dominant);
+            EXPECT_EQ(pick.primary, g.dominant);
+            EXPECT_EQ(render::drawnPrimary(renderer, entity), pick.primary);
             const uint32_t material = level.level.dynamic_meshes.at(0).material;
             expected[i] = lambertRadiance(level.level, material, g.dominant, g.visibility, g.up, p,
                                           kUp, camera.position);
@@ -547,16 +561,16 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
                 double(expected[i].z));
             EXPECT_LT(relativeError(rendered[i], expected[i], 1e-4), 0.01);
         }
-        // The game's pick, when it hands one over, is what the renderer draws with.
+        // Whatever the game hands over is what the renderer draws with.
         const uint32_t other =
-            (render::dynamicPrimary(renderer, entity) + 1) % uint32_t(level.level.lights.size());
+            (render::drawnPrimary(renderer, entity) + 1) % uint32_t(level.level.lights.size());
         render::DynamicTransform given{entity, glm::translate(glm::mat4(1.0f), places[0])};
         given.primary = other;
         render::FrameInputs givenInputs;
         givenInputs.camera = camera;
         givenInputs.dynamicTransforms = {&given, 1};
         render::drawFrame(renderer, givenInputs, render::FrameOutput{});
-        EXPECT_EQ(render::dynamicPrimary(renderer, entity), other);
+        EXPECT_EQ(render::drawnPrimary(renderer, entity), other);
         render::destroyRenderer(renderer);
     }
     vk::destroyContext(ctx);

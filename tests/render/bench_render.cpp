@@ -20,6 +20,12 @@ namespace {
 using namespace onelight;
 
 constexpr int kWarmup = 2;
+// Each measured frame is waited for, so that its GPU times are its own.
+const onelight::render::FrameOutput waited = [] {
+    onelight::render::FrameOutput o;
+    o.wait = true;
+    return o;
+}();
 constexpr int kFrames = 7;
 
 test::Scene benchScene() {
@@ -89,7 +95,7 @@ void benchProbes(vk::Context& ctx, const std::string& package) {
     std::vector<std::vector<double>> gpu(configs.size());
     for (int i = 0; i < kFrames; ++i)
         for (size_t c = 0; c < configs.size(); ++c)
-            gpu[c].push_back(render::drawFrame(renderers[c], inputs).gpuMs);
+            gpu[c].push_back(render::drawFrame(renderers[c], inputs, waited).gpuMs);
     const render::RendererInfo info = render::rendererInfo(renderers[0]);
     for (auto it = renderers.rbegin(); it != renderers.rend(); ++it) render::destroyRenderer(*it);
     const double with = median(gpu[0]), without = median(gpu[1]);
@@ -136,7 +142,7 @@ int main(int argc, char** argv) {
         uint64_t drawn = 0;
         for (int i = 0; i < kFrames; ++i)
             for (size_t c = 0; c < configs.size(); ++c) {
-                const render::FrameStats stats = render::drawFrame(renderers[c], inputs);
+                const render::FrameStats stats = render::drawFrame(renderers[c], inputs, waited);
                 gpu[c].push_back(stats.gpuMs);
                 cpu[c].push_back(stats.cpuMs);
                 if (c == 0) drawn = stats.trianglesDrawn;

@@ -14,6 +14,8 @@
 #include "capture/capture.hpp"
 #include "golden.hpp"
 #include "test_scene.hpp"
+#include "world/dynamic_primary.hpp"
+#include "world/light_model.hpp"
 
 namespace {
 
@@ -138,7 +140,18 @@ TEST(RenderGolden, SunShadowsMaterialClassesAndDynamicObject) {
             ++dynamicEntities;
         }
     ASSERT_EQ(dynamicEntities, 1u);
-    moved.worldFromObject = glm::translate(glm::mat4(1.0f), glm::vec3(2.5f, 0.0f, 1.5f));
+    const glm::vec3 place(2.5f, 0.0f, 1.5f);
+    moved.worldFromObject = glm::translate(glm::mat4(1.0f), place);
+    // The game's pick for a level without a grid: the brightest primary, unshadowed.
+    std::vector<uint32_t> candidates;
+    for (uint32_t l = 0; l < level.level.lights.size(); ++l)
+        if (level.level.lights[l].role == world::LightRole::primary) candidates.push_back(l);
+    world::DynamicPrimary pick;
+    world::updateDynamicPrimary(pick, place, candidates, [&](uint32_t light, glm::vec3 p) {
+        return world::unshadowedIlluminance(level.level.lights[light], p);
+    });
+    ASSERT_NE(pick.primary, world::kNone);
+    moved.primary = pick.primary;
     inputs.dynamicTransforms = {&moved, 1};
     const test::RenderedFrame r = test::renderOnce(level, smallFrame(), inputs);
     EXPECT_EQ(r.validationErrors, 0u);

@@ -7,13 +7,13 @@
 #include "lighting.glsl"
 #include "material.glsl"
 
-layout(constant_id = 0) const int MATERIAL_CLASS = MATERIAL_FULL;
-layout(constant_id = 1) const int ALPHA_MASK = 0;    // 1: discard below the cutoff
-layout(constant_id = 2) const int FLAT_SHADING = 0;  // 1: constant colour (benchmark floor)
+layout(constant_id = SPEC_MATERIAL_CLASS) const int MATERIAL_CLASS = MATERIAL_FULL;
+layout(constant_id = SPEC_ALPHA_MASK) const int ALPHA_MASK = 0;      // 1: discard below the cutoff
+layout(constant_id = SPEC_FLAT_SHADING) const int FLAT_SHADING = 0;  // 1: constant colour
 // 1: the level supplies baked lighting (lightmaps, shadow masks, grid samples per object; or
 // their placeholders in tests); 0: the neutral placeholder (a constant ambient of frame.baked.x
 // lux, no baked shadow, a uniform environment of normalised radiance 1 / pi) without any fetch.
-layout(constant_id = 3) const int BAKED_LIGHTING = 1;
+layout(constant_id = SPEC_BAKED_LIGHTING) const int BAKED_LIGHTING = 1;
 
 layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
@@ -23,21 +23,12 @@ layout(location = 4) in vec2 inUv1;
 
 layout(location = 0) out vec4 outColor;
 
-const float HALF_MAX = 65000.0;  // the HDR target is RGBA16F
-
 // Percentage-closer filtering: 2x2 taps, half a texel apart, of the hardware 2x2 bilinear
 // comparison: a 3x3-texel tent for four fetches.
 float runtimeShadow(GpuLight light, vec3 p, vec3 n) {
     uint view = light.info.y;
     if (view == NO_INDEX) return 1.0;
-    if (light.info.x == LIGHT_POINT) {
-        vec3 d = p - light.positionRange.xyz;
-        vec3 a = abs(d);
-        uint face = a.x >= a.y && a.x >= a.z ? (d.x > 0.0 ? 0u : 1u)
-                  : a.y >= a.z               ? (d.y > 0.0 ? 2u : 3u)
-                                             : (d.z > 0.0 ? 4u : 5u);
-        view += face;
-    }
+    if (light.info.x == LIGHT_POINT) view += uint(cubeFace(p - light.positionRange.xyz));
     GpuShadowView sv = shadowViews[view];
     float texelWorld = sv.params.x;
     if (sv.params.y > 0.5) texelWorld *= length(p - light.positionRange.xyz);
@@ -123,22 +114,28 @@ vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
     return sampleProbe(nearest, p, r, lod);
 }
 
+// A light record seen from p, by the shared light model (its colour holds the intensity).
+LightSample evaluateGpuLight(GpuLight light, vec3 p) {
+    return evaluatePunctualLight(int(light.info.x), light.color.rgb, 1.0, light.positionRange.w,
+                                 light.positionRange.xyz, light.direction.xyz, light.cones.x,
+                                 light.cones.y, p);
+}
+
 void main() {
     if (FLAT_SHADING == 1) {
         outColor = vec4(0.18, 0.18, 0.18, 1.0);
         return;
     }
     GpuMaterial m = materials[draw.material];
-    uint textures = m.textures.x;
 
     vec4 base = m.baseColor;
-    if ((textures & 1u) != 0u) base *= texture(baseColorTexture, inUv0);
+    if (hasTexture(m, TEXTURE_BASE_COLOR)) base *= texture(baseColorTexture, inUv0);
     if (ALPHA_MASK == 1 && base.a < m.emissive.a) discard;
 
     // Material parameters per texel (shaders/material.glsl), by class.
     float metallic = m.params.x;
     float roughness = m.params.y;
-    if (MATERIAL_CLASS != MATERIAL_LAMBERT && (textures & 2u) != 0u) {
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT && hasTexture(m, TEXTURE_METALLIC_ROUGHNESS)) {
         vec4 mr = texture(metallicRoughnessTexture, inUv0);
         roughness *= mr.g;
         metallic *= mr.b;
@@ -152,7 +149,7 @@ void main() {
     vec3 geometricNormal = normalize(inNormal);
     if (!gl_FrontFacing) geometricNormal = -geometricNormal;
     vec3 n = geometricNormal;
-    if ((textures & 4u) != 0u) {
+    if (hasTexture(m, TEXTURE_NORMAL)) {
         vec3 t = inTangent.xyz - geometricNormal * dot(geometricNormal, inTangent.xyz);
         float tl = length(t);
         if (tl > 1e-6)
@@ -168,9 +165,7 @@ void main() {
     // The one primary light, times its shadow.
     if (draw.primaryLight != NO_INDEX) {
         GpuLight light = lights[draw.primaryLight];
-        LightSample s = evaluatePunctualLight(int(light.info.x), light.color.rgb, 1.0,
-                                              light.positionRange.w, light.positionRange.xyz,
-                                              light.direction.xyz, light.cones.x, light.cones.y, p);
+        LightSample s = evaluateGpuLight(light, p);
         BrdfDots d = brdfDots(n, v, s.l);
         if (dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0) {
             float radius = frame.shadowParams.x;
@@ -185,17 +180,12 @@ void main() {
     // Effect lights: up to 4 diffuse-only omnis (gun flashes) and the flashlight spot.
     if (MATERIAL_CLASS != MATERIAL_METAL) {
         for (uint i = 0u; i < frame.counts.x; ++i) {
-            LightSample s = evaluatePunctualLight(LIGHT_POINT, frame.omniColor[i].rgb, 1.0,
-                                                  frame.omniPositionRange[i].w,
-                                                  frame.omniPositionRange[i].xyz, vec3(0.0, 0.0, -1.0),
-                                                  1.0, 0.0, p);
+            LightSample s = evaluateGpuLight(frame.effectOmnis[i], p);
             radiance += diffuseReflectance(albedo, brdfDots(n, v, s.l)) * s.illuminance;
         }
     }
     if (frame.counts.y != 0u) {
-        LightSample s = evaluatePunctualLight(LIGHT_SPOT, frame.spotColor.rgb, 1.0, frame.spotPositionRange.w,
-                                              frame.spotPositionRange.xyz, frame.spotDirection.xyz,
-                                              frame.spotCones.x, frame.spotCones.y, p);
+        LightSample s = evaluateGpuLight(frame.effectSpot, p);
         radiance += surfaceReflectance(MATERIAL_CLASS, albedo, f0, gloss, brdfDots(n, v, s.l)) * s.illuminance;
     }
 
@@ -203,7 +193,7 @@ void main() {
     // de-normalised by the same irradiance (shaders/probe.glsl, "Normalization").
     vec3 irradiance = secondaryIrradiance(n);
     float ao = 1.0;
-    if ((textures & 8u) != 0u) ao = 1.0 + m.params.w * (texture(occlusionTexture, inUv0).r - 1.0);
+    if (hasTexture(m, TEXTURE_OCCLUSION)) ao = 1.0 + m.params.w * (texture(occlusionTexture, inUv0).r - 1.0);
     float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
     vec3 probeSample = vec3(0.0);
     vec2 env = vec2(0.0);
@@ -218,8 +208,8 @@ void main() {
     // Pre-exposed output; emissive is exposure-relative (1 = display white before the curve).
     float exposure = frame.cameraPosition.w;
     vec3 emissive = m.emissive.rgb;
-    if ((textures & 16u) != 0u) emissive *= texture(emissiveTexture, inUv0).rgb;
+    if (hasTexture(m, TEXTURE_EMISSIVE)) emissive *= texture(emissiveTexture, inUv0).rgb;
     vec3 color = radiance * exposure + emissive;
     if (any(isnan(color)) || any(isinf(color))) color = vec3(0.0);
-    outColor = vec4(min(color, vec3(HALF_MAX)), 1.0);
+    outColor = vec4(min(color, vec3(HDR_MAX)), 1.0);
 }

@@ -1,0 +1,184 @@
+// What a frame sees and draws, worked out on the CPU before recording: the camera and exposure,
+// the dynamic objects' transforms and the primaries the game handed over, the culled and sorted
+// draw list, the dynamic objects' grid lighting and the frame's uniforms.
+#include <algorithm>
+#include <cmath>
+
+#include "render/renderer_state.hpp"
+#include "shading.hpp"
+#include "world/entity_transform.hpp"
+#include "world/light_grid_sample.hpp"
+
+namespace onelight::render {
+
+namespace {
+
+// The world-space box around an object-space box moved by m.
+void worldBounds(const glm::mat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec3& outMin,
+                 glm::vec3& outMax) {
+    outMin = glm::vec3(1e30f);
+    outMax = glm::vec3(-1e30f);
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+        const glm::vec3 w = glm::vec3(m * glm::vec4(corner, 1.0f));
+        outMin = glm::min(outMin, w);
+        outMax = glm::max(outMax, w);
+    }
+}
+
+uint32_t pipelineKeyOf(const RendererState& s, uint32_t material) {
+    return s.options.flatShading
+               ? 0u
+               : permutationKey(s.materialClasses[material], s.materialDoubleSided[material] != 0,
+                                s.materialAlphaMask[material] != 0);
+}
+
+}  // namespace
+
+GpuLight gpuLightOf(const world::Light& l, uint32_t firstShadowView) {
+    GpuLight g{};
+    g.positionRange = glm::vec4(l.position, l.range);
+    g.direction = glm::vec4(glm::normalize(l.direction), 0.0f);
+    g.color = glm::vec4(l.color * l.intensity, 0.0f);
+    g.cones = glm::vec4(std::cos(l.inner_cone), std::cos(l.outer_cone), 0.0f, 0.0f);
+    g.info = glm::uvec4(uint32_t(l.type), firstShadowView, 0u, 0u);
+    return g;
+}
+
+GpuLight gpuLightOf(const EffectOmni& omni) {
+    GpuLight g{};
+    g.positionRange = glm::vec4(omni.position, omni.range);
+    g.direction = glm::vec4(0.0f, 0.0f, -1.0f, 0.0f);
+    g.color = glm::vec4(omni.color * omni.intensity, 0.0f);
+    g.cones = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+    g.info = glm::uvec4(uint32_t(world::LightType::point), kNoIndex, 0u, 0u);
+    return g;
+}
+
+GpuLight gpuLightOf(const EffectSpot& spot) {
+    GpuLight g{};
+    g.positionRange = glm::vec4(spot.position, spot.range);
+    g.direction = glm::vec4(glm::normalize(spot.direction), 0.0f);
+    g.color = glm::vec4(spot.color * spot.intensity, 0.0f);
+    g.cones = glm::vec4(std::cos(spot.innerCone), std::cos(spot.outerCone), 0.0f, 0.0f);
+    g.info = glm::uvec4(uint32_t(world::LightType::spot), kNoIndex, 0u, 0u);
+    return g;
+}
+
+FrameView frameViewOf(const RendererState& s, const FrameInputs& inputs) {
+    FrameView v;
+    v.camera = inputs.camera;
+    const float diagonal = std::max(glm::length(s.boundsMax - s.boundsMin), 1.0f);
+    const float zfar =
+        v.camera.zfar > 0.0f
+            ? v.camera.zfar
+            : glm::length(v.camera.position - 0.5f * (s.boundsMin + s.boundsMax)) + diagonal;
+    v.viewProj =
+        projectionMatrix(v.camera, float(s.width) / float(s.height), zfar) * viewMatrix(v.camera);
+    v.ev100 = v.camera.hasExposure      ? v.camera.ev100
+              : s.settings.has_exposure ? s.settings.exposure_ev100
+                                        : s.info.autoEv100;
+    v.exposure = glsl::exposure_fromEV100(v.ev100);
+
+    v.entityTransforms.resize(s.entities.size());
+    v.entityPrimary.assign(s.entities.size(), kNoIndex);
+    for (size_t e = 0; e < s.entities.size(); ++e)
+        v.entityTransforms[e] = world::worldFromObject(s.entities[e], s.entities[e].position);
+    for (const DynamicTransform& t : inputs.dynamicTransforms) {
+        if (t.entity >= v.entityTransforms.size()) continue;
+        v.entityTransforms[t.entity] = t.worldFromObject;
+        if (t.primary < s.lights.size()) v.entityPrimary[t.entity] = t.primary;
+    }
+    return v;
+}
+
+DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats& stats) {
+    DrawList list;
+    const Frustum frustum = frustumOf(view.viewProj);
+    const glm::vec3 eye = view.camera.position;
+    const uint32_t materialCount = uint32_t(s.materialClasses.size());
+    for (const DrawSurface& surface : s.surfaces) {
+        if (!intersects(frustum, surface.boundsMin, surface.boundsMax)) {
+            ++stats.surfacesCulled;
+            continue;
+        }
+        Draw d;
+        d.material = std::min(surface.material, materialCount - 1);
+        d.key = pipelineKeyOf(s, d.material);
+        d.firstIndex = surface.firstIndex;
+        d.indexCount = surface.indexCount;
+        d.primaryLight = surface.primaryLight;
+        d.atlas = surface.atlas;
+        const glm::vec3 toCentre = 0.5f * (surface.boundsMin + surface.boundsMax) - eye;
+        d.distance2 = glm::dot(toCentre, toCentre);
+        list.draws.push_back(d);
+        if (surface.primaryLight != kNoIndex) list.visibleLights.push_back(surface.primaryLight);
+        ++stats.surfacesDrawn;
+    }
+    list.entityVisible.assign(s.entities.size(), 0);
+    for (const DrawDynamicMesh& mesh : s.dynamicMeshes) {
+        glm::vec3 lo, hi;
+        worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, lo, hi);
+        if (!intersects(frustum, lo, hi)) continue;
+        list.entityVisible[mesh.entity] = 1;
+        Draw d;
+        d.material = std::min(mesh.material, materialCount - 1);
+        d.key = pipelineKeyOf(s, d.material);
+        d.firstIndex = mesh.firstIndex;
+        d.indexCount = mesh.indexCount;
+        d.vertexOffset = mesh.vertexOffset;
+        d.primaryLight = view.entityPrimary[mesh.entity];
+        d.entity = mesh.entity;
+        const glm::vec3 toCentre = 0.5f * (lo + hi) - eye;
+        d.distance2 = glm::dot(toCentre, toCentre);
+        list.draws.push_back(d);
+        if (d.primaryLight != kNoIndex) list.visibleLights.push_back(d.primaryLight);
+        ++stats.dynamicMeshesDrawn;
+    }
+    std::sort(list.visibleLights.begin(), list.visibleLights.end());
+    list.visibleLights.erase(std::unique(list.visibleLights.begin(), list.visibleLights.end()),
+                             list.visibleLights.end());
+    std::stable_sort(list.draws.begin(), list.draws.end(), [](const Draw& a, const Draw& b) {
+        return a.key != b.key ? a.key < b.key : a.distance2 < b.distance2;
+    });
+    if (s.options.flatShading) list.visibleLights.clear();
+    return list;
+}
+
+void writeObjectLighting(const RendererState& s, const FrameView& view, const DrawList& list,
+                         GpuObjectLighting* out) {
+    const bool useGrid = s.bakedLighting && !s.grid.cells.empty();
+    for (uint32_t e = 0; e < s.entities.size(); ++e) {
+        if (!list.entityVisible[e]) continue;
+        GpuObjectLighting& o = out[e];
+        if (!useGrid) {  // the placeholder textures' neutral values: the ambient, visible
+            for (glm::vec4& face : o.ambientCube) face = glm::vec4(glm::vec3(s.ambientLux), 0.0f);
+            o.ambientCube[0].w = 1.0f;
+            continue;
+        }
+        const world::LightGridSample sample =
+            world::sampleLightGrid(s.grid, glm::vec3(view.entityTransforms[e][3]));
+        for (size_t f = 0; f < 6; ++f) o.ambientCube[f] = glm::vec4(sample.ambientCube[f], 0.0f);
+        const uint32_t primary = view.entityPrimary[e];
+        o.ambientCube[0].w =
+            primary != kNoIndex ? world::bakedVisibility(s.grid, sample, primary) : 1.0f;
+    }
+}
+
+FrameUniforms frameUniformsOf(const RendererState& s, const FrameView& view,
+                              const EffectLights& effects) {
+    FrameUniforms u{};
+    u.viewProj = view.viewProj;
+    u.cameraPosition = glm::vec4(view.camera.position, view.exposure);
+    u.shadowParams = glm::vec4(s.options.shadowRadius, s.options.shadowBand,
+                               1.0f / float(s.options.shadowMapSize), 0.0f);
+    u.baked = glm::vec4(s.ambientLux, s.lightmapDecode, 0.0f, 0.0f);
+    u.probeParams = glm::vec4(float(s.probeMips), 0.0f, 0.0f, 0.0f);
+    const uint32_t omnis = std::min(effects.omniCount, kMaxEffectOmnis);
+    u.counts = glm::uvec4(omnis, effects.spotOn ? 1u : 0u, s.probeCount, 0u);
+    for (uint32_t i = 0; i < omnis; ++i) u.effectOmnis[i] = gpuLightOf(effects.omni[i]);
+    u.effectSpot = gpuLightOf(effects.spot);
+    return u;
+}
+
+}  // namespace onelight::render

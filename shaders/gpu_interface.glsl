@@ -1,0 +1,119 @@
+// The renderer's GPU interface, written once for GLSL and C++ (see common.glsl for the dialect):
+// the limits, the descriptor bindings, the specialization constants, the material texture slots
+// and the records the renderer shares with its shaders, laid out byte for byte: std140 for the
+// frame's uniform block, std430 for the storage buffers and the push constants. Every member is a
+// vec4, a mat4 or a 4-byte scalar in an order without padding, so both layouts equal C++'s.
+//
+// Only constants and structs live here (no functions): C++ includes it once, outside an anonymous
+// namespace (runtime/render/gpu_types.hpp), so the records are one type in every translation
+// unit. The GLSL resource declarations that use it are in runtime/render/shaders/
+// frame_interface.glsl.
+#ifndef ONELIGHT_GPU_INTERFACE_GLSL
+#define ONELIGHT_GPU_INTERFACE_GLSL
+
+// ---------------------------------------------------------------------------------------------
+// Limits and markers
+
+const uint NO_INDEX = 0xFFFFFFFFu;  // "none" in every index field (world::kNoIndex)
+const uint MAX_EFFECT_OMNIS = 4u;   // Black Ops' budget of diffuse omni effect lights
+const float HDR_MAX = 65000.0f;     // the RGBA16F targets' cap (half's largest finite is 65504)
+
+// ---------------------------------------------------------------------------------------------
+// Descriptor set 0: the frame's resources.
+
+const int BINDING_FRAME = 0;            // uniform FrameUniforms
+const int BINDING_LIGHTS = 1;           // storage GpuLight[]
+const int BINDING_SHADOW_VIEWS = 2;     // storage GpuShadowView[]
+const int BINDING_SHADOW_MAPS = 3;      // sampler2DArrayShadow
+const int BINDING_LIGHTMAP = 4;         // sampler2DArray
+const int BINDING_SHADOW_MASK = 5;      // sampler2DArray
+const int BINDING_OBJECT_LIGHTING = 6;  // storage GpuObjectLighting[]
+const int BINDING_PROBES = 7;           // samplerCubeArray
+const int BINDING_MATERIALS = 8;        // storage GpuMaterial[]
+const int BINDING_ENV_BRDF = 9;         // sampler2D
+const int BINDING_PROBE_RECORDS = 10;   // storage GpuProbe[]
+const int FRAME_BINDING_COUNT = 11;
+
+// Descriptor set 1: a material's textures, binding = slot. GpuMaterial.textures.x holds bit
+// (1 << slot) for every slot the material fills (the others hold placeholders).
+const int TEXTURE_BASE_COLOR = 0;
+const int TEXTURE_METALLIC_ROUGHNESS = 1;
+const int TEXTURE_NORMAL = 2;
+const int TEXTURE_OCCLUSION = 3;
+const int TEXTURE_EMISSIVE = 4;
+const int TEXTURE_SLOT_COUNT = 5;
+
+// The tonemap pass's set 0.
+const int BINDING_TONEMAP_HDR = 0;  // sampler2D, the resolved pre-exposed frame
+const int BINDING_TONEMAP_LUT = 1;  // sampler3D, the colour LUT
+
+// Specialization constants of forward.frag.
+const int SPEC_MATERIAL_CLASS = 0;  // MATERIAL_* of lighting.glsl
+const int SPEC_ALPHA_MASK = 1;      // 1: discard below the cutoff
+const int SPEC_FLAT_SHADING = 2;    // 1: constant colour (the benchmark floor)
+const int SPEC_BAKED_LIGHTING = 3;  // 1: fetch the baked lighting (or its placeholders)
+
+// ---------------------------------------------------------------------------------------------
+// Records
+
+// A light: a level light (storage buffer) or an effect light (in FrameUniforms).
+struct GpuLight {
+    vec4 positionRange;  // xyz metres, w range (0 unlimited)
+    vec4 direction;      // xyz unit, the way light travels
+    vec4 color;          // rgb colour * intensity (lux or candela)
+    vec4 cones;          // x cos inner, y cos outer
+    uvec4 info;          // x type (LIGHT_* of lighting.glsl), y first shadow view or NO_INDEX
+};
+
+// Per-frame values (uniform block, std140).
+struct FrameUniforms {
+    mat4 viewProj;
+    vec4 cameraPosition;  // xyz metres, w exposure (pre-exposure of the HDR target)
+    vec4 shadowParams;    // x runtime-shadow radius, y blend band (metres), z 1 / map size
+    vec4 baked;           // x placeholder ambient (lux), y lightmap decode (stored x this = lux)
+    vec4 probeParams;     // x mip count of the probes' cubes
+    uvec4 counts;         // x effect omnis in use, y effect spot on (0/1), z probe records
+    GpuLight effectOmnis[MAX_EFFECT_OMNIS];  // diffuse only; info.y NO_INDEX (no shadow)
+    GpuLight effectSpot;                     // the flashlight; no shadow
+};
+
+// One shadow-map view: layer i of the shadow array.
+struct GpuShadowView {
+    mat4 viewProj;
+    vec4 params;  // x world texel size (ortho) or per metre of distance (perspective), y 1 = perspective
+};
+
+// A material: the glTF factors; textures.x is the bit mask of TEXTURE_* slots in use.
+struct GpuMaterial {
+    vec4 baseColor;  // linear RGBA factor
+    vec4 f0Gloss;    // rgb specular colour factor, a gloss factor
+    vec4 emissive;   // rgb emissive factor (exposure-relative), a alpha cutoff
+    vec4 params;     // x metallic, y roughness, z normal scale, w occlusion strength
+    uvec4 textures;  // x bit mask (1 << TEXTURE_*)
+};
+
+// A dynamic object's baked lighting: the light grid sampled at its lighting origin.
+struct GpuObjectLighting {
+    vec4 ambientCube[6];  // rgb lux facing +x -x +y -y +z -z; [0].w baked visibility of the primary
+};
+
+// An environment probe (runtime/render/probe_records.hpp; shaders/probe.glsl for the rules).
+struct GpuProbe {
+    vec4 position;      // xyz capture point, metres
+    vec4 boxMin;        // xyz box-projection box, w 1 = box projection
+    vec4 boxMax;        // xyz
+    vec4 influenceMin;  // xyz influence box, w blend band (metres)
+    vec4 influenceMax;  // xyz
+};
+
+// Per draw (push constants).
+struct DrawPush {
+    mat4 model;            // world from object (identity for static surfaces)
+    uint material;         // into materials
+    uint primaryLight;     // into lights or NO_INDEX
+    uint lightmapAtlas;    // a static surface's atlas, NO_INDEX for a dynamic object (grid)
+    uint objectLighting;   // a dynamic object's record in objectLighting[], or NO_INDEX
+    vec4 lightmapScale;    // xy: uv1 (over the surface's atlas) to the lightmap array's uv
+};
+
+#endif
