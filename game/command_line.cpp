@@ -2,13 +2,37 @@
 
 #include <cstdlib>
 #include <exception>
+#include <utility>
 
 namespace onelight::game {
 
-const char* const kUsage =
-    "usage: onelight LEVEL(.gltf|.glb|.olpak) [--headless] [--size WxH] "
-    "[--camera NAME|x,y,z,yaw,pitch] [--capture out/NAME] [--msaa N] [--frames N] [--flashlight] "
-    "[--replay SCRIPT [--capture-dir DIR]] [--free-fly]";
+std::string usage() {
+    const CommandLine d;
+    const std::pair<const char*, std::string> options[] = {
+        {"--headless", "no window: draw offscreen, one frame or the replay (default: a window)"},
+        {"--size WxH", "frame size, 1..16384 each (default: " + std::to_string(d.width) + "x" +
+                           std::to_string(d.height) + ")"},
+        {"--camera NAME|x,y,z,yaw,pitch",
+         "view from a level camera or a pose (default: the player in a window; headless, the "
+         "level's first camera, else one framing the level)"},
+        {"--capture out/NAME", "write NAME.png, NAME.exr and NAME.json (default: none)"},
+        {"--msaa N",
+         "samples, the nearest supported is used (default: " + std::to_string(d.msaa) + ")"},
+        {"--frames N", "quit after N frames (default: until Esc; headless 1)"},
+        {"--flashlight", "the spot effect light at the camera (default: off)"},
+        {"--replay SCRIPT", "play a replay script on the fixed tick (default: none)"},
+        {"--capture-dir DIR", "where a replay's captures go (default: captures/)"},
+        {"--free-fly", "a free-fly camera instead of the player (default: the player)"},
+        {"-h, --help", "this help"}};
+    std::string text =
+        "usage: onelight LEVEL(.gltf|.glb|.olpak) [OPTIONS]\n"
+        "  plays LEVEL in a window (a .gltf or .glb is baked first when its package is stale)\n";
+    for (const auto& [flag, meaning] : options) {
+        const std::string f = flag;
+        text += "  " + f + std::string(f.size() < 32 ? 32 - f.size() : 1, ' ') + meaning + "\n";
+    }
+    return text;
+}
 
 namespace {
 
@@ -30,7 +54,10 @@ bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& erro
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool hasValue = i + 1 < argc;
-        if (a == "--headless") {
+        if (a == "-h" || a == "--help") {
+            out.help = true;
+            return true;
+        } else if (a == "--headless") {
             out.headless = true;
         } else if (a == "--flashlight") {
             out.flashlight = true;
@@ -65,12 +92,12 @@ bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& erro
         } else if (!a.empty() && a[0] != '-' && out.level.empty()) {
             out.level = a;
         } else {
-            error = "unexpected argument '" + a + "'; " + kUsage;
+            error = "unexpected argument '" + a + "' (onelight --help lists the options)";
             return false;
         }
     }
     if (out.level.empty()) {
-        error = std::string("no level given; ") + kUsage;
+        error = "no level given (onelight --help lists the options)";
         return false;
     }
     return true;

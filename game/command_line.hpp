@@ -18,11 +18,13 @@ struct CommandLine {
     std::string replay;       // a replay script to run (game mode, fixed tick)
     std::string captureDir;   // where a replay's captures go (default: captures/)
     bool freeFly = false;     // window: a free-fly camera instead of the player
+    bool help = false;        // -h or --help: print usage() and exit 0
 };
 
 /// Parses argv. On failure returns false with a one-line `error` ("onelight: ..." not included).
 bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& error);
 
-extern const char* const kUsage;
+/// The help: synopsis, what the modes are, every option with its default.
+std::string usage();
 
 }  // namespace onelight::game

@@ -209,6 +209,10 @@ int run(int argc, char** argv) {
     game::CommandLine cl;
     std::string error, package;
     if (!game::parseCommandLine(argc, argv, cl, error)) return fail(error);
+    if (cl.help) {
+        std::printf("%s", game::usage().c_str());
+        return 0;
+    }
     if (!game::resolveLevelPackage(cl.level, package, error)) return fail(error);
     assets::LoadedLevel level;
     if (!assets::loadLevel(package, level, error)) return fail(error);

@@ -1,6 +1,4 @@
-// onelight-bake LEVEL.gltf -o LEVEL.olpak [--quality draft|default|high] [--threads N]
-//     [--report report.json] [--shard i/N] [--sky L] [--grid-cell M] [--texels-per-metre N]
-//     [--quiet]
+// onelight-bake LEVEL.gltf -o LEVEL.olpak [OPTIONS] (bake_usage lists them with their defaults).
 // Compiles and bakes in one go: progress bars with ETA on stderr, a summary on stdout. --sky
 // overrides the level's uniform sky (extras.onelight.sky).
 #include <cstdio>
@@ -21,19 +19,37 @@
 namespace onelight::bake {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: onelight-bake LEVEL.gltf -o LEVEL.olpak [--quality draft|default|high] "
-    "[--threads N] [--report report.json] [--shard i/N] [--sky CD_PER_M2] [--grid-cell M] "
-    "[--texels-per-metre N] [--quiet]";
-
 int bad_argument(const std::string& what) {
-    std::fprintf(stderr, "onelight-bake: %s\n%s\n", what.c_str(), kUsage);
+    std::fprintf(stderr, "onelight-bake: %s\n%s", what.c_str(), bake_usage().c_str());
     return 2;
 }
 
 }  // namespace
 
+std::string bake_usage() {
+    const BakeOptions d;
+    const world::ChartOptions& charts = d.compile.charts;
+    return format_usage(
+        "onelight-bake LEVEL.gltf [-o LEVEL.olpak] [OPTIONS]",
+        "compiles LEVEL and bakes its lighting: progress on stderr, a summary on stdout",
+        {{"-o PATH", "the package to write", "LEVEL with the extension .olpak"},
+         {"--quality Q", "draft, default or high", quality_name(d.quality)},
+         {"--threads N", "worker threads, 1..1024", "every core"},
+         {"--report PATH", "a JSON report of every stage", "none"},
+         {"--shard i/N", "bake part i of N (join them with merge)", "the whole level"},
+         {"--sky CD_PER_M2", "a uniform sky's radiance", "the level's extras.onelight.sky, or 0"},
+         {"--grid-cell M", "the light grid's cell size in metres", format_number(d.grid_cell_size)},
+         {"--texels-per-metre N", "lightmap density, 0.01..1024",
+          "the level's, or " + format_number(charts.texels_per_metre)},
+         {"--quiet", "no progress bars", "bars on a terminal"},
+         {"-h, --help", "this help", ""}});
+}
+
 int run_bake_command(const std::vector<std::string>& arguments) {
+    if (asks_for_help(arguments)) {
+        std::printf("%s", bake_usage().c_str());
+        return 0;
+    }
     std::string input, output, report_path;
     BakeOptions options;
     int threads = 0;

@@ -1,5 +1,6 @@
 #include "bake/cli/cli_common.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -7,6 +8,32 @@
 #include "world/error.hpp"
 
 namespace onelight::bake {
+
+std::string format_usage(const std::string& synopsis, const std::string& summary,
+                         const std::vector<CliOption>& options) {
+    size_t width = 0;
+    for (const CliOption& o : options) width = std::max(width, o.flag.size());
+    std::string text = "usage: " + synopsis + "\n  " + summary + "\n";
+    for (const CliOption& o : options)
+        text += "  " + o.flag + std::string(width + 2 - o.flag.size(), ' ') + o.meaning +
+                (o.defaultValue.empty()        ? ""
+                 : o.defaultValue == kRequired ? " (required)"
+                                               : " (default: " + o.defaultValue + ")") +
+                "\n";
+    return text;
+}
+
+std::string format_number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%g", value);
+    return text;
+}
+
+bool asks_for_help(const std::vector<std::string>& arguments) {
+    for (const std::string& a : arguments)
+        if (a == "-h" || a == "--help") return true;
+    return false;
+}
 
 bool parse_number(const std::string& text, double low, double high, double& out) {
     try {

@@ -4,8 +4,28 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace onelight::bake {
+
+/// One option of a subcommand, as its help lists it.
+struct CliOption {
+    std::string flag;          // e.g. "--quality Q"
+    std::string meaning;       // what it sets
+    std::string defaultValue;  // what applies without it; kRequired, or "" for none (-h)
+};
+inline const std::string kRequired = "required";
+
+/// A subcommand's help: the synopsis, what it does, then every option with its default, one a
+/// line, aligned.
+std::string format_usage(const std::string& synopsis, const std::string& summary,
+                         const std::vector<CliOption>& options);
+
+/// `value` as the shortest text that reads it back ("%g").
+std::string format_number(double value);
+
+/// Whether `arguments` ask for help (-h or --help anywhere).
+bool asks_for_help(const std::vector<std::string>& arguments);
 
 /// The whole of `text` as a number in [low, high]; false otherwise (no partial parses).
 bool parse_number(const std::string& text, double low, double high, double& out);

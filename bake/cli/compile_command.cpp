@@ -1,4 +1,4 @@
-// onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [--texels-per-metre N] [--atlas-size N]
+// onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [OPTIONS] (compile_usage lists them).
 // Imports, compiles without lighting, writes the package atomically and prints a summary.
 #include <cstdio>
 #include <exception>
@@ -14,10 +14,6 @@
 
 namespace onelight::bake {
 namespace {
-
-constexpr const char* kUsage =
-    "usage: onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [--texels-per-metre N] "
-    "[--atlas-size N]";
 
 /// Image file references become relative to the package's folder.
 void rebase_image_paths(world::CompiledLevel& level, const std::filesystem::path& package) {
@@ -65,7 +61,23 @@ void print_summary(const std::string& output, const world::CompileStats& s, size
 
 }  // namespace
 
+std::string compile_usage() {
+    const world::ChartOptions d;
+    return format_usage(
+        "onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [OPTIONS]",
+        "compiles LEVEL without lighting (BSP, primaries, charts) and prints a summary",
+        {{"-o PATH", "the package to write", "LEVEL with the extension .olpak"},
+         {"--texels-per-metre N", "lightmap density, 0.01..1024",
+          "the level's, or " + format_number(d.texels_per_metre)},
+         {"--atlas-size N", "texels per side of an atlas, 64..16384", std::to_string(d.atlas_size)},
+         {"-h, --help", "this help", ""}});
+}
+
 int run_compile_command(const std::vector<std::string>& arguments) {
+    if (asks_for_help(arguments)) {
+        std::printf("%s", compile_usage().c_str());
+        return 0;
+    }
     std::string input, output;
     world::CompileOptions options;
     for (size_t i = 0; i < arguments.size(); ++i) {
@@ -96,13 +108,13 @@ int run_compile_command(const std::vector<std::string>& arguments) {
         } else if (!a.empty() && a[0] != '-' && input.empty()) {
             input = a;
         } else {
-            std::fprintf(stderr, "onelight-bake compile: unexpected argument '%s'\n%s\n", a.c_str(),
-                         kUsage);
+            std::fprintf(stderr, "onelight-bake compile: unexpected argument '%s'\n%s", a.c_str(),
+                         compile_usage().c_str());
             return 2;
         }
     }
     if (input.empty()) {
-        std::fprintf(stderr, "%s\n", kUsage);
+        std::fprintf(stderr, "onelight-bake compile: no level given\n%s", compile_usage().c_str());
         return 2;
     }
     if (output.empty()) output = std::filesystem::path(input).replace_extension(".olpak").string();

@@ -9,44 +9,43 @@ namespace {
 
 struct Subcommand {
     const char* name;
-    const char* summary;
     int (*run)(const std::vector<std::string>&);
+    std::string (*usage)();
 };
 
 constexpr Subcommand kSubcommands[] = {
-    {"compile", "compile LEVEL.gltf -o LEVEL.olpak: world compile without lighting",
-     &onelight::bake::run_compile_command},
-    {"reference", "reference LEVEL.gltf --camera NAME [--size WxH] --spp N -o OUT.exr",
-     &onelight::bake::run_reference_command},
-    {"merge", "merge -o LEVEL.olpak PART.olpak...: join the parts of a sharded bake",
-     &onelight::bake::run_merge_command},
+    {"compile", &onelight::bake::run_compile_command, &onelight::bake::compile_usage},
+    {"reference", &onelight::bake::run_reference_command, &onelight::bake::reference_usage},
+    {"merge", &onelight::bake::run_merge_command, &onelight::bake::merge_usage},
 };
 
-void print_usage() {
-    std::fprintf(stderr,
-                 "usage: onelight-bake LEVEL.gltf -o LEVEL.olpak [--quality "
-                 "draft|default|high] [--threads N] [--report R.json] [--shard i/N]\n"
-                 "       onelight-bake SUBCOMMAND [ARGS]\n");
-    for (const Subcommand& s : kSubcommands) std::fprintf(stderr, "  %s\n", s.summary);
+// Every command's help: the bake, then each subcommand.
+std::string usage() {
+    std::string text = onelight::bake::bake_usage();
+    for (const Subcommand& s : kSubcommands) {
+        text += '\n';
+        text += s.usage();
+    }
+    return text;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     if (argc < 2) {
-        print_usage();
+        std::fprintf(stderr, "onelight-bake: no level or subcommand given\n%s", usage().c_str());
         return 2;
     }
     const std::string name = argv[1];
     if (name == "-h" || name == "--help") {
-        print_usage();
+        std::printf("%s", usage().c_str());
         return 0;
     }
     const std::vector<std::string> arguments(argv + 2, argv + argc);
     for (const Subcommand& s : kSubcommands)
         if (name == s.name) return s.run(arguments);
     if (name[0] != '-') return onelight::bake::run_bake_command({argv + 1, argv + argc});
-    std::fprintf(stderr, "onelight-bake: unknown subcommand '%s'\n", name.c_str());
-    print_usage();
+    std::fprintf(stderr, "onelight-bake: unknown subcommand '%s'\n%s", name.c_str(),
+                 usage().c_str());
     return 2;
 }

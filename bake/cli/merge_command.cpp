@@ -4,13 +4,25 @@
 #include <string>
 
 #include "bake/bake_level.hpp"
+#include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
 
 namespace onelight::bake {
 
+std::string merge_usage() {
+    return format_usage(
+        "onelight-bake merge -o LEVEL.olpak PART.olpak...",
+        "joins the parts of a sharded bake (--shard i/N) into the whole package",
+        {{"-o PATH", "the package to write", kRequired}, {"-h, --help", "this help", ""}});
+}
+
 int run_merge_command(const std::vector<std::string>& arguments) {
+    if (asks_for_help(arguments)) {
+        std::printf("%s", merge_usage().c_str());
+        return 0;
+    }
     std::string output;
     std::vector<std::string> inputs;
     for (size_t i = 0; i < arguments.size(); ++i) {
@@ -25,7 +37,8 @@ int run_merge_command(const std::vector<std::string>& arguments) {
         }
     }
     if (output.empty() || inputs.empty()) {
-        std::fprintf(stderr, "usage: onelight-bake merge -o LEVEL.olpak PART.olpak...\n");
+        std::fprintf(stderr, "onelight-bake merge: -o and at least one part are required\n%s",
+                     merge_usage().c_str());
         return 2;
     }
     world::CompiledLevel level;

@@ -1,5 +1,5 @@
-// onelight-bake reference LEVEL.gltf --camera NAME [--size WxH] --spp N -o out.exr
-//     [--sky CD_PER_M2] [--threads N]   (--sky overrides the level's extras.onelight.sky)
+// onelight-bake reference LEVEL.gltf --camera NAME --spp N -o out.exr [OPTIONS]
+// (reference_usage lists them with their defaults).
 // The path-traced ground truth of a camera's view: linear radiance in cd/m^2, every light at
 // full strength, no exposure, no tonemap.
 #include <cmath>
@@ -18,13 +18,25 @@
 #include "world/import/gltf_import.hpp"
 
 namespace onelight::bake {
-namespace {
-constexpr const char* kUsage =
-    "usage: onelight-bake reference LEVEL.gltf --camera NAME [--size WxH] --spp N -o OUT.exr "
-    "[--sky CD_PER_M2] [--threads N]";
-}  // namespace
+std::string reference_usage() {
+    return format_usage(
+        "onelight-bake reference LEVEL.gltf --camera NAME --spp N -o OUT.exr [OPTIONS]",
+        "path-traces the camera's view: linear radiance in cd/m^2, no exposure, no tonemap",
+        {{"--camera NAME", "the level's camera to render", kRequired},
+         {"--spp N", "paths per pixel", kRequired},
+         {"-o PATH", "the EXR to write", kRequired},
+         {"--size WxH", "image size, 1..16384 each",
+          "720 rows at the camera's aspect, else 1280x720"},
+         {"--sky CD_PER_M2", "a uniform sky's radiance", "the level's extras.onelight.sky, or 0"},
+         {"--threads N", "worker threads", "every core"},
+         {"-h, --help", "this help", ""}});
+}
 
 int run_reference_command(const std::vector<std::string>& arguments) {
+    if (asks_for_help(arguments)) {
+        std::printf("%s", reference_usage().c_str());
+        return 0;
+    }
     std::string input, output, camera_name;
     uint32_t width = 0, height = 0, spp = 0;
     int threads = 0;
@@ -59,11 +71,14 @@ int run_reference_command(const std::vector<std::string>& arguments) {
             }
         }
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "onelight-bake reference: bad argument (%s)\n%s\n", e.what(), kUsage);
+        std::fprintf(stderr, "onelight-bake reference: bad argument (%s)\n%s", e.what(),
+                     reference_usage().c_str());
         return 2;
     }
     if (input.empty() || output.empty() || camera_name.empty() || spp == 0) {
-        std::fprintf(stderr, "%s\n", kUsage);
+        std::fprintf(stderr,
+                     "onelight-bake reference: a level, --camera, --spp and -o are required\n%s",
+                     reference_usage().c_str());
         return 2;
     }
     std::unique_ptr<tbb::global_control> limit;

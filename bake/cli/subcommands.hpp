@@ -12,4 +12,10 @@ int run_bake_command(const std::vector<std::string>& arguments);       // LEVEL.
 int run_reference_command(const std::vector<std::string>& arguments);  // reference ...
 int run_merge_command(const std::vector<std::string>& arguments);      // merge ...
 
+// Each subcommand's help: synopsis, summary, every option with its default (-h or --help).
+std::string compile_usage();
+std::string bake_usage();
+std::string reference_usage();
+std::string merge_usage();
+
 }  // namespace onelight::bake

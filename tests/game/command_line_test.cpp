@@ -1,0 +1,37 @@
+// onelight's help: -h and --help print the usage on stdout and exit 0, listing every option
+// with its default, before any level is looked for.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "run_command.hpp"
+
+namespace {
+const std::string kOnelight = ONELIGHT_EXE;
+}  // namespace
+
+TEST(GameCommandLine, HelpExitsZeroAndListsEveryOptionWithItsDefault) {
+    for (const char* ask : {"--help", "-h", "no_such_level.gltf --help"}) {
+        const onelight::test::CommandResult r = onelight::test::runCommand(kOnelight + " " + ask);
+        EXPECT_EQ(r.exitCode, 0) << ask << ": " << r.output;
+        EXPECT_EQ(r.output.rfind("usage: onelight LEVEL", 0), 0u) << r.output;
+        for (const char* flag :
+             {"--headless", "--size WxH", "--camera", "--capture out/NAME", "--msaa N",
+              "--frames N", "--flashlight", "--replay SCRIPT", "--capture-dir DIR", "--free-fly"}) {
+            const size_t at = r.output.find(std::string("\n  ") + flag);
+            ASSERT_NE(at, std::string::npos) << flag << " is not listed\n" << r.output;
+            const size_t next = r.output.find("\n  -", at + 1);
+            EXPECT_NE(r.output.substr(at, next - at).find("default: "), std::string::npos)
+                << flag << " has no default\n"
+                << r.output;
+        }
+        EXPECT_NE(r.output.find("(default: 1280x720)"), std::string::npos) << r.output;
+    }
+}
+
+TEST(GameCommandLine, AnUnknownOptionFailsAndPointsToTheHelp) {
+    const onelight::test::CommandResult r = onelight::test::runCommand(kOnelight + " --nope");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("unexpected argument '--nope'"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("onelight --help"), std::string::npos) << r.output;
+}
