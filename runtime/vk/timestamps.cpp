@@ -1,5 +1,7 @@
 #include "vk/timestamps.hpp"
 
+#include <algorithm>
+
 #include "vk/vk_check.hpp"
 
 namespace onelight::vk {
@@ -30,7 +32,9 @@ std::vector<double> readTimestampsMs(const Context& ctx, VkQueryPool pool, uint3
                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     const double msPerTick = double(ctx.properties.limits.timestampPeriod) * 1e-6;
     std::vector<double> ms(count);
-    for (uint32_t i = 0; i < count; ++i) ms[i] = double(ticks[i] - ticks[0]) * msPerTick;
+    // Later timestamps may read a tick or two below the first (stages finish out of order).
+    for (uint32_t i = 0; i < count; ++i)
+        ms[i] = double(std::max<int64_t>(int64_t(ticks[i] - ticks[0]), 0)) * msPerTick;
     return ms;
 }
 

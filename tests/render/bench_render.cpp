@@ -3,9 +3,11 @@
 // median frame times, the full-PBR / Lambert-only permutation ratio on the same frame (goal
 // <= 1.15), the full-frame / flat-shaded-floor ratio with the same geometry and MSAA (goal <= 1.3)
 // and resident memory; then the probes' cost on a baked level (`onelight-bench-render
-// [PACKAGE]`, default the demo's draft package). Compare ratios from one run only
+// [PACKAGE]`, default the demo's draft package) and its frame loop with and without frames in
+// flight. Compare ratios from one run only
 // (docs/toolchain.md, "Timing things": timings are noisy).
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -109,6 +111,40 @@ void benchProbes(vk::Context& ctx, const std::string& package) {
         with, without, with / without);
 }
 
+// The frame loop on the same baked level: wall time per frame over runs of kLoopFrames frames,
+// each frame waited for before the next starts (the loop before frames in flight) against
+// frames submitted without waiting (two in flight, as the window plays), runs interleaved.
+void benchFrameLoop(vk::Context& ctx, const std::string& package) {
+    constexpr int kLoopFrames = 12, kLoopRuns = 3;
+    assets::LoadedLevel level;
+    std::string error;
+    if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromLevel(level.level.cameras.front());
+    render::Renderer renderer;
+    render::createRenderer(renderer, ctx, level, render::RendererOptions{});
+    for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderer, inputs, waited);
+    std::vector<double> waitedMs, inFlightMs;
+    for (int run = 0; run < kLoopRuns; ++run)
+        for (bool inFlight : {false, true}) {
+            const auto start = std::chrono::steady_clock::now();
+            for (int i = 0; i < kLoopFrames; ++i)
+                render::drawFrame(renderer, inputs, inFlight ? render::FrameOutput{} : waited);
+            render::waitForFrames(renderer);
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count() /
+                kLoopFrames;
+            (inFlight ? inFlightMs : waitedMs).push_back(ms);
+        }
+    render::destroyRenderer(renderer);
+    const double before = median(waitedMs), after = median(inFlightMs);
+    std::printf(
+        "  frame loop on that level: %8.2f ms a frame waiting for each, %8.2f ms with two in "
+        "flight, ratio %.3f\n",
+        before, after, after / before);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -139,18 +175,24 @@ int main(int argc, char** argv) {
             if (c == 0) rssOne = statusLine("VmRSS:");
         }
         std::vector<std::vector<double>> gpu(configs.size()), cpu(configs.size());
+        std::vector<double> shadowPass, forwardPass, tonemapPass;  // the full frame's passes
         uint64_t drawn = 0;
         for (int i = 0; i < kFrames; ++i)
             for (size_t c = 0; c < configs.size(); ++c) {
                 const render::FrameStats stats = render::drawFrame(renderers[c], inputs, waited);
                 gpu[c].push_back(stats.gpuMs);
                 cpu[c].push_back(stats.cpuMs);
-                if (c == 0) drawn = stats.trianglesDrawn;
+                if (c != 0) continue;
+                drawn = stats.trianglesDrawn;
+                shadowPass.push_back(stats.gpuShadowMs);
+                forwardPass.push_back(stats.gpuForwardMs);
+                tonemapPass.push_back(stats.gpuTonemapMs);
             }
         const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
         for (auto it = renderers.rbegin(); it != renderers.rend(); ++it)
             render::destroyRenderer(*it);
         benchProbes(ctx, argc > 1 ? argv[1] : ONELIGHT_DEMO_PACKAGE);
+        benchFrameLoop(ctx, argc > 1 ? argv[1] : ONELIGHT_DEMO_PACKAGE);
         vk::destroyContext(ctx);
         struct Row {
             double gpuMs, cpuMs;
@@ -169,6 +211,8 @@ int main(int argc, char** argv) {
         std::printf(
             "  full frame (level's permutations, shadows cached): %8.2f ms GPU %8.2f ms CPU\n",
             full.gpuMs, full.cpuMs);
+        std::printf("    its passes: shadows %.2f ms, forward %.2f ms, tonemap %.2f ms GPU\n",
+                    median(shadowPass), median(forwardPass), median(tonemapPass));
         std::printf(
             "  every material full PBR:                          %8.2f ms GPU %8.2f ms CPU\n",
             pbr.gpuMs, pbr.cpuMs);
