@@ -163,4 +163,50 @@ bool all_finite_non_negative(const world::BakedLighting& baked) {
     return true;
 }
 
+world::SourceLevel small_room() {
+    world::SourceLevel level;
+    const uint32_t m = add_lambert_material(level, 0.6f);
+    add_box(level, {-1.5f, -1.0f, 0.0f}, {1.5f, 1.0f, 2.0f}, m, true, "room");
+    add_box(level, {-0.3f, -0.3f, 0.0f}, {0.3f, 0.3f, 0.5f}, m, false, "block");
+    level.lights.push_back(point_light({-0.8f, 0.2f, 1.6f}, 40.0f, world::LightRole::primary));
+    level.lights.push_back(point_light({0.9f, -0.3f, 1.5f}, 30.0f, world::LightRole::primary));
+    return level;
+}
+
+world::SourceLevel small_room_with_probes() {
+    world::SourceLevel level = small_room();
+    world::Material glossy = level.materials[0];
+    glossy.name = "glossy";
+    glossy.material_class = world::MaterialClass::dielectric;
+    glossy.specular_color = glm::vec3(0.04f);
+    glossy.gloss = 0.8f;
+    level.materials.push_back(glossy);
+    for (world::MeshInstance& m : level.instances)
+        if (m.node_name == "block") m.material = 1;
+    for (const glm::vec3 p :
+         {glm::vec3(-1.0f, 0.0f, 1.0f), glm::vec3(0.0f, 0.5f, 1.2f), glm::vec3(1.0f, 0.0f, 0.8f)}) {
+        world::Entity e;
+        e.name = "probe" + std::to_string(level.entities.size());
+        e.flags = world::entity_probe;
+        e.position = p;
+        if (level.entities.empty()) {
+            e.probe_box_min = {-1.5f, -1.0f, 0.0f};
+            e.probe_box_max = {1.5f, 1.0f, 2.0f};
+        }
+        level.entities.push_back(e);
+    }
+    return level;
+}
+
+BakeOptions fast_bake_options() {
+    BakeOptions o = test_options(4.0f);
+    o.indirect_samples = 16;
+    o.shadow_samples = 4;
+    o.grid_samples = 16;
+    o.grid_cell_size = 0.75f;
+    o.probe_face_size = 8;
+    o.probe_samples = 4;
+    return o;
+}
+
 }  // namespace onelight::bake::test

@@ -33,6 +33,16 @@ world::Light spot_light(glm::vec3 position, glm::vec3 direction, float candela, 
 /// occluding block (albedo 0.3), a primary point light and a secondary ("baked") spot.
 world::SourceLevel agreement_room();
 
+/// A closed 3 x 2 x 2 m room (albedo 0.6) with a solid block and two primary point lights.
+world::SourceLevel small_room();
+
+/// small_room with a glossy block and three authored probes (the first box-projected), so that
+/// the probe stage runs and two shards split its probes 1 + 2.
+world::SourceLevel small_room_with_probes();
+
+/// test_options at 4 texels/m with a few samples of everything: seconds for small_room.
+BakeOptions fast_bake_options();
+
 /// Options for fast tests: no progress bar, the given lightmap density.
 BakeOptions test_options(float texels_per_metre, BakeQuality quality = BakeQuality::draft);
 

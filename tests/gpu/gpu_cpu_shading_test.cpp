@@ -119,7 +119,7 @@ void checkLight(const char* name, const test::SceneLight& light,
     EXPECT_EQ(c.failures, 0u);
 }
 
-TEST(RenderGpuCpu, DirectionalLightMatchesCpu) {
+TEST(GpuCpuAgreement, DirectionalLightMatchesCpu) {
     test::SceneLight sun;
     sun.type = 0;
     sun.intensity = 3.0f;
@@ -128,7 +128,7 @@ TEST(RenderGpuCpu, DirectionalLightMatchesCpu) {
     checkLight("directional", sun, {{0.8f, 0.6f, 0.4f, 1.0f}, 0.3f, 0.45f});
 }
 
-TEST(RenderGpuCpu, PointLightMatchesCpu) {
+TEST(GpuCpuAgreement, PointLightMatchesCpu) {
     test::SceneLight omni;
     omni.type = 1;
     omni.intensity = 8.0f;
@@ -137,7 +137,7 @@ TEST(RenderGpuCpu, PointLightMatchesCpu) {
     checkLight("point", omni, {{0.5f, 0.7f, 0.9f, 1.0f}, 0.0f, 0.35f});
 }
 
-TEST(RenderGpuCpu, SpotLightMatchesCpu) {
+TEST(GpuCpuAgreement, SpotLightMatchesCpu) {
     test::SceneLight spot;
     spot.type = 2;
     spot.intensity = 20.0f;

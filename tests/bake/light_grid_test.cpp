@@ -1,0 +1,39 @@
+// The light grid (bake/grid): cells inside solid geometry are flagged and hold no light.
+#include <gtest/gtest.h>
+
+#include "bake_scenes.hpp"
+
+namespace onelight::bake {
+namespace {
+
+using world::LightRole;
+
+// Cells whose centre is inside a solid block are flagged and hold no light; the others see
+// the primary and hold it as dominant with full visibility.
+TEST(LightGrid, CellsInsideSolidsAreMarked) {
+    world::SourceLevel level;
+    const uint32_t m = test::add_lambert_material(level, 0.5f);
+    test::add_box(level, {0.0f, 0.0f, 0.0f}, {4.0f, 4.0f, 4.0f}, m, true, "room");
+    test::add_box(level, {0.0f, 0.0f, 0.0f}, {2.0f, 4.0f, 4.0f}, m, false, "solid");
+    level.lights.push_back(test::point_light({3.0f, 2.0f, 2.0f}, 50.0f, LightRole::primary));
+    BakeOptions o = test::fast_bake_options();
+    o.grid_cell_size = 1.0f;
+    const BakeResult r = bake_level(level, o);
+    const world::LightGrid& g = r.baked.grid;
+    ASSERT_EQ(g.dims, glm::uvec3(4, 4, 4));
+    for (uint32_t i = 0; i < g.cells.size(); ++i) {
+        const uint32_t x = i % 4;
+        const world::LightGridCell& c = g.cells[i];
+        if (x < 2) {
+            EXPECT_EQ(c.flags, uint32_t(world::light_grid_cell_inside_solid)) << i;
+            EXPECT_EQ(c.dominant_primary, world::kNone);
+        } else {
+            EXPECT_EQ(c.flags, 0u) << i;  // no flag
+            EXPECT_EQ(c.dominant_primary, 0u);
+            EXPECT_EQ(c.primary_visibility, 1.0f);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace onelight::bake
