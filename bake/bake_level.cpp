@@ -10,6 +10,7 @@
 #include "bake/lightmap/texel_placement.hpp"
 #include "bake/probes/probe_placement.hpp"
 #include "world/compile/static_split.hpp"
+#include "world/error.hpp"
 #include "world/light_grid_sample.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_writer.hpp"
@@ -266,29 +267,29 @@ void finish_baked_lighting(const world::CompiledLevel& level, world::BakedLighti
     baked.shard_count = 1;
 }
 
-std::string merge_baked_lighting(const world::CompiledLevel& level,
-                                 std::vector<world::BakedLighting> parts,
-                                 world::BakedLighting& merged) {
-    if (parts.empty()) return "merge: no parts given";
+world::BakedLighting merge_baked_lighting(const world::CompiledLevel& level,
+                                          std::vector<world::BakedLighting> parts) {
+    if (parts.empty()) throw world::Error("merge: no parts given");
     const uint32_t count = parts[0].shard_count;
     if (parts.size() != count)
-        return "merge: " + std::to_string(parts.size()) + " parts given; the first is a part of " +
-               std::to_string(count);
+        throw world::Error("merge: " + std::to_string(parts.size()) +
+                           " parts given; the first is a part of " + std::to_string(count));
     std::vector<const world::BakedLighting*> by_index(count, nullptr);
     const uint64_t texels = total_texels(level);
     for (const world::BakedLighting& p : parts) {
         if (p.shard_count != count || p.shard_index >= count)
-            return "merge: a part is shard " + std::to_string(p.shard_index) + "/" +
-                   std::to_string(p.shard_count) + "; expected a part of " + std::to_string(count);
+            throw world::Error("merge: a part is shard " + std::to_string(p.shard_index) + "/" +
+                               std::to_string(p.shard_count) + "; expected a part of " +
+                               std::to_string(count));
         if (by_index[p.shard_index])
-            return "merge: shard " + std::to_string(p.shard_index) + " given twice";
+            throw world::Error("merge: shard " + std::to_string(p.shard_index) + " given twice");
         if (p.texels.size() != texels || p.shadow_mask.size() != texels ||
             p.grid.cells.size() != parts[0].grid.cells.size() || p.grid.dims != parts[0].grid.dims)
-            return "merge: shard " + std::to_string(p.shard_index) +
-                   " does not match the level (texel or grid cell counts differ)";
+            throw world::Error("merge: shard " + std::to_string(p.shard_index) +
+                               " does not match the level (texel or grid cell counts differ)");
         by_index[p.shard_index] = &p;
     }
-    merged = parts[0];
+    world::BakedLighting merged = parts[0];
     for (uint32_t i = 0; i < count; ++i) {
         const world::BakedLighting& p = *by_index[i];
         const ShardRange r = shard_range(texels, p.grid.cells.size(), 0, i, count);
@@ -304,7 +305,7 @@ std::string merge_baked_lighting(const world::CompiledLevel& level,
         merged.probes.insert(merged.probes.end(), by_index[i]->probes.begin(),
                              by_index[i]->probes.end());
     finish_baked_lighting(level, merged);
-    return "";
+    return merged;
 }
 
 std::vector<uint8_t> package_bytes(const world::CompiledLevel& level,

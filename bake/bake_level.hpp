@@ -57,7 +57,7 @@ struct BakeResult {
     BakeReport report;
 };
 
-/// Compiles and bakes `source` (or its shard). Throws world::CompileError on bad input and
+/// Compiles and bakes `source` (or its shard). Throws world::Error on bad input and
 /// std::runtime_error on Embree failures.
 BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& options);
 
@@ -84,10 +84,9 @@ std::vector<glm::vec3> probe_average_irradiance(const BakeScene& scene, const Ba
 void finish_baked_lighting(const world::CompiledLevel& level, world::BakedLighting& baked);
 
 /// Joins the parts of a sharded bake (any order) into the unfinished whole, then finishes it.
-/// Returns "" on success, else a one-line error (missing or repeated shard, mismatched sizes).
-std::string merge_baked_lighting(const world::CompiledLevel& level,
-                                 std::vector<world::BakedLighting> parts,
-                                 world::BakedLighting& merged);
+/// Throws world::Error on a missing or repeated shard or mismatched sizes.
+[[nodiscard]] world::BakedLighting merge_baked_lighting(const world::CompiledLevel& level,
+                                                        std::vector<world::BakedLighting> parts);
 
 /// The package bytes of a bake result.
 std::vector<uint8_t> package_bytes(const world::CompiledLevel& level,

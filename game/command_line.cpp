@@ -4,6 +4,8 @@
 #include <exception>
 #include <utility>
 
+#include "world/error.hpp"
+
 namespace onelight::game {
 
 std::string usage() {
@@ -50,13 +52,14 @@ bool parseUnsigned(const std::string& text, uint32_t low, uint32_t high, uint32_
 
 }  // namespace
 
-bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& error) {
+CommandLine parseCommandLine(int argc, char** argv) {
+    CommandLine out;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool hasValue = i + 1 < argc;
         if (a == "-h" || a == "--help") {
             out.help = true;
-            return true;
+            return out;
         } else if (a == "--headless") {
             out.headless = true;
         } else if (a == "--flashlight") {
@@ -65,10 +68,9 @@ bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& erro
             const std::string v = argv[++i];
             const size_t x = v.find('x');
             if (x == std::string::npos || !parseUnsigned(v.substr(0, x), 1, 16384, out.width) ||
-                !parseUnsigned(v.substr(x + 1), 1, 16384, out.height)) {
-                error = "--size '" + v + "': expected WxH, e.g. 1280x720";
-                return false;
-            }
+                !parseUnsigned(v.substr(x + 1), 1, 16384, out.height))
+                throw world::Error("--size '" + v + "': expected WxH, e.g. 1280x720");
+
         } else if (a == "--free-fly") {
             out.freeFly = true;
         } else if (a == "--replay" && hasValue) {
@@ -80,27 +82,23 @@ bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& erro
         } else if (a == "--capture" && hasValue) {
             out.capture = argv[++i];
         } else if (a == "--msaa" && hasValue) {
-            if (!parseUnsigned(argv[++i], 1, 64, out.msaa)) {
-                error = std::string("--msaa '") + argv[i] + "': expected 1, 2, 4 or 8";
-                return false;
-            }
+            if (!parseUnsigned(argv[++i], 1, 64, out.msaa))
+                throw world::Error(std::string("--msaa '") + argv[i] + "': expected 1, 2, 4 or 8");
+
         } else if (a == "--frames" && hasValue) {
-            if (!parseUnsigned(argv[++i], 1, 1u << 30, out.frames)) {
-                error = std::string("--frames '") + argv[i] + "': expected a positive count";
-                return false;
-            }
+            if (!parseUnsigned(argv[++i], 1, 1u << 30, out.frames))
+                throw world::Error(std::string("--frames '") + argv[i] +
+                                   "': expected a positive count");
+
         } else if (!a.empty() && a[0] != '-' && out.level.empty()) {
             out.level = a;
-        } else {
-            error = "unexpected argument '" + a + "' (onelight --help lists the options)";
-            return false;
-        }
+        } else
+            throw world::Error("unexpected argument '" + a +
+                               "' (onelight --help lists the options)");
     }
-    if (out.level.empty()) {
-        error = "no level given (onelight --help lists the options)";
-        return false;
-    }
-    return true;
+    if (out.level.empty()) throw world::Error("no level given (onelight --help lists the options)");
+
+    return out;
 }
 
 }  // namespace onelight::game

@@ -21,8 +21,8 @@ struct CommandLine {
     bool help = false;        // -h or --help: print usage() and exit 0
 };
 
-/// Parses argv. On failure returns false with a one-line `error` ("onelight: ..." not included).
-bool parseCommandLine(int argc, char** argv, CommandLine& out, std::string& error);
+/// Parses argv. Throws world::Error, one line ("onelight: " not included), on a bad argument.
+[[nodiscard]] CommandLine parseCommandLine(int argc, char** argv);
 
 /// The help: synopsis, what the modes are, every option with its default.
 std::string usage();

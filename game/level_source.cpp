@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "world/error.hpp"
+
 namespace onelight::game {
 
 namespace {
@@ -74,28 +76,21 @@ std::string compilerError(const std::string& output) {
 
 }  // namespace
 
-bool resolveLevelPackage(const std::string& level, std::string& package, std::string& error) {
-    return resolveLevelPackage(level, package, error, bakeExecutable().string());
+std::string resolveLevelPackage(const std::string& level) {
+    return resolveLevelPackage(level, bakeExecutable().string());
 }
 
-bool resolveLevelPackage(const std::string& level, std::string& package, std::string& error,
-                         const std::string& baker) {
+std::string resolveLevelPackage(const std::string& level, const std::string& baker) {
     std::error_code ec;
-    if (!fs::is_regular_file(level, ec)) {
-        error = level + ": no such file; expected a glTF level (.gltf, .glb) or a .olpak package";
-        return false;
-    }
+    if (!fs::is_regular_file(level, ec))
+        throw world::Error(
+            level + ": no such file; expected a glTF level (.gltf, .glb) or a .olpak package");
     const std::string ext = lowerExtension(level);
-    if (ext == ".olpak") {
-        package = level;
-        return true;
-    }
-    if (ext != ".gltf" && ext != ".glb") {
-        error = level + ": unknown kind of file; expected .gltf, .glb or .olpak";
-        return false;
-    }
+    if (ext == ".olpak") return level;
+    if (ext != ".gltf" && ext != ".glb")
+        throw world::Error(level + ": unknown kind of file; expected .gltf, .glb or .olpak");
     const fs::path compiled = fs::path(level).replace_extension(".olpak");
-    package = compiled.string();
+    const std::string package = compiled.string();
     const fs::path bake = baker;
     // Fresh: newer than the level and than the baker (a rebuilt baker bakes differently).
     const bool bakerKnown = fs::exists(bake, ec);
@@ -103,24 +98,20 @@ bool resolveLevelPackage(const std::string& level, std::string& package, std::st
         fs::exists(compiled, ec) &&
         fs::last_write_time(compiled, ec) >= fs::last_write_time(level, ec) &&
         (!bakerKnown || fs::last_write_time(compiled, ec) >= fs::last_write_time(bake, ec));
-    if (fresh && !ec) return true;
+    if (fresh && !ec) return package;
 
-    if (!bakerKnown) {
-        error = level + ": needs compiling, but " + bake.string() +
-                " is missing; expected "
-                "onelight-bake beside onelight";
-        return false;
-    }
+    if (!bakerKnown)
+        throw world::Error(level + ": needs compiling, but " + bake.string() +
+                           " is missing; expected onelight-bake beside onelight");
     // First compile alone (fast, its one-line errors captured), then bake the lighting, with
     // the baker's progress bars on stderr when a person watches it (a terminal).
     std::string output;
     int code = runCaptured({bake.string(), "compile", level, "-o", package}, output);
     if (code != 0) {
         const std::string why = compilerError(output);
-        error = why.empty()
-                    ? level + ": onelight-bake compile failed (exit " + std::to_string(code) + ")"
-                    : why;
-        return false;
+        throw world::Error(why.empty() ? level + ": onelight-bake compile failed (exit " +
+                                             std::to_string(code) + ")"
+                                       : why);
     }
     const bool watched = isatty(STDERR_FILENO) != 0;
     if (watched)
@@ -132,11 +123,11 @@ bool resolveLevelPackage(const std::string& level, std::string& package, std::st
     code = runCaptured({bake.string(), level, "-o", package}, output, watched);
     if (code != 0) {
         const std::string why = compilerError(output);
-        error = why.empty() ? level + ": onelight-bake failed (exit " + std::to_string(code) + ")"
-                            : why;
-        return false;
+        throw world::Error(why.empty() ? level + ": onelight-bake failed (exit " +
+                                             std::to_string(code) + ")"
+                                       : why);
     }
-    return true;
+    return package;
 }
 
 }  // namespace onelight::game

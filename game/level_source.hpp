@@ -7,13 +7,12 @@
 
 namespace onelight::game {
 
-/// The package to load for `level`, compiling it first when needed. On failure returns false
-/// and sets `error` to one line "FILE: what was expected".
-bool resolveLevelPackage(const std::string& level, std::string& package, std::string& error);
+/// The package to load for `level`, compiling it first when needed. Throws world::Error, one
+/// line "FILE: what was expected".
+[[nodiscard]] std::string resolveLevelPackage(const std::string& level);
 
 /// The same with the baker's path given (tests); the one above uses onelight-bake beside this
 /// executable.
-bool resolveLevelPackage(const std::string& level, std::string& package, std::string& error,
-                         const std::string& baker);
+[[nodiscard]] std::string resolveLevelPackage(const std::string& level, const std::string& baker);
 
 }  // namespace onelight::game

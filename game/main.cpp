@@ -25,6 +25,7 @@
 #include "render_target.hpp"
 #include "replay_mode.hpp"
 #include "vk/context.hpp"
+#include "world/error.hpp"
 
 namespace {
 
@@ -36,20 +37,15 @@ int fail(const std::string& message) {
 }
 
 // --camera NAME | x,y,z,yaw,pitch; empty: the level's first camera, else a view of the bounds.
-bool resolveCamera(const game::CommandLine& cl, const assets::LoadedLevel& level,
-                   render::Camera& camera, std::string& error) {
+render::Camera resolveCamera(const game::CommandLine& cl, const assets::LoadedLevel& level) {
     const world::CompiledLevel& l = level.level;
     if (cl.camera.empty()) {
-        if (!l.cameras.empty()) {
-            camera = render::cameraFromLevel(l.cameras.front());
-            return true;
-        }
+        if (!l.cameras.empty()) return render::cameraFromLevel(l.cameras.front());
         const glm::vec3 centre = 0.5f * (l.settings.bounds_min + l.settings.bounds_max);
         const float radius =
             std::max(0.5f * glm::length(l.settings.bounds_max - l.settings.bounds_min), 0.5f);
-        camera = render::cameraFromYawPitch(centre + glm::vec3(0.0f, 0.35f, 1.2f) * radius, 0.0f,
-                                            -16.26f);
-        return true;
+        return render::cameraFromYawPitch(centre + glm::vec3(0.0f, 0.35f, 1.2f) * radius, 0.0f,
+                                          -16.26f);
     }
     std::vector<float> numbers;
     std::stringstream in(cl.camera);
@@ -64,22 +60,17 @@ bool resolveCamera(const game::CommandLine& cl, const assets::LoadedLevel& level
             numeric = false;
         }
     }
-    if (numeric && numbers.size() == 5) {
-        camera = render::cameraFromYawPitch({numbers[0], numbers[1], numbers[2]}, numbers[3],
-                                            numbers[4]);
-        return true;
-    }
+    if (numeric && numbers.size() == 5)
+        return render::cameraFromYawPitch({numbers[0], numbers[1], numbers[2]}, numbers[3],
+                                          numbers[4]);
     std::string names;
     for (const world::Camera& c : l.cameras) {
-        if (c.name == cl.camera) {
-            camera = render::cameraFromLevel(c);
-            return true;
-        }
+        if (c.name == cl.camera) return render::cameraFromLevel(c);
         names += (names.empty() ? "" : ", ") + c.name;
     }
-    error = level.path + ": no camera '" + cl.camera + "'; expected x,y,z,yaw,pitch or one of: " +
-            (names.empty() ? std::string("(the level has no cameras)") : names);
-    return false;
+    throw world::Error(level.path + ": no camera '" + cl.camera +
+                       "'; expected x,y,z,yaw,pitch or one of: " +
+                       (names.empty() ? std::string("(the level has no cameras)") : names));
 }
 
 render::EffectLights effectsFor(const game::CommandLine& cl, const render::Camera& camera) {
@@ -131,22 +122,21 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
     return j;
 }
 
-bool writeCapture(const std::string& base, const render::CapturedFrame& frame,
-                  const nlohmann::json& json, std::string& error) {
+void writeCapture(const std::string& base, const render::CapturedFrame& frame,
+                  const nlohmann::json& json) {
     std::error_code ec;
     const std::filesystem::path parent = std::filesystem::path(base).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-    return capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8, error) &&
-           capture::writeExr(base + ".exr", frame.width, frame.height, frame.linearRgba, error) &&
-           capture::writeJson(base + ".json", json, error);
+    capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8);
+    capture::writeExr(base + ".exr", frame.width, frame.height, frame.linearRgba);
+    capture::writeJson(base + ".json", json);
 }
 
 // One frame, headless (and its capture files), or a free-fly camera in a window.
 int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
               render::Camera camera) {
     game::RenderTarget target;
-    std::string error;
-    if (!game::openRenderTarget(target, cl, level, !cl.headless, error)) return fail(error);
+    game::openRenderTarget(target, cl, level, !cl.headless);
     const render::RendererInfo& info = render::rendererInfo(target.renderer);
     const char* backend = cl.headless ? "headless" : "window";
     if (cl.headless) {
@@ -185,14 +175,12 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
                             stats.surfacesDrawn);
             if (readback) {
                 const render::CapturedFrame& captured = render::capturedFrame(target.renderer);
-                if (!writeCapture(cl.capture, captured,
-                                  sidecar(cl, level, target.renderer, camera, stats, backend),
-                                  error) ||
-                    (!cl.headless && !capture::writePng(cl.capture + "_window.png",
-                                                        target.window.swapchain.extent.width,
-                                                        target.window.swapchain.extent.height,
-                                                        captured.swapchainRgba8, error)))
-                    code = fail(error);
+                writeCapture(cl.capture, captured,
+                             sidecar(cl, level, target.renderer, camera, stats, backend));
+                if (!cl.headless)
+                    capture::writePng(
+                        cl.capture + "_window.png", target.window.swapchain.extent.width,
+                        target.window.swapchain.extent.height, captured.swapchainRgba8);
             }
             if (lastFrame) break;
         }
@@ -206,21 +194,15 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
 }
 
 int run(int argc, char** argv) {
-    game::CommandLine cl;
-    std::string error, package;
-    if (!game::parseCommandLine(argc, argv, cl, error)) return fail(error);
+    const game::CommandLine cl = game::parseCommandLine(argc, argv);
     if (cl.help) {
         std::printf("%s", game::usage().c_str());
         return 0;
     }
-    if (!game::resolveLevelPackage(cl.level, package, error)) return fail(error);
-    assets::LoadedLevel level;
-    if (!assets::loadLevel(package, level, error)) return fail(error);
+    const assets::LoadedLevel level = assets::loadLevel(game::resolveLevelPackage(cl.level));
     if (!cl.replay.empty()) return game::runReplay(cl, level);
     if (!cl.headless && !cl.freeFly && cl.camera.empty()) return game::runPlay(cl, level);
-    render::Camera camera;
-    if (!resolveCamera(cl, level, camera, error)) return fail(error);
-    return runViewer(cl, level, camera);
+    return runViewer(cl, level, resolveCamera(cl, level));
 }
 
 }  // namespace

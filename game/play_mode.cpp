@@ -53,11 +53,7 @@ struct InputReader {
 
 int runPlay(const CommandLine& cl, const assets::LoadedLevel& level) {
     RenderTarget target;
-    std::string error;
-    if (!openRenderTarget(target, cl, level, true, error)) {
-        std::fprintf(stderr, "onelight: %s\n", error.c_str());
-        return 1;
-    }
+    openRenderTarget(target, cl, level, true);
     Session session;
     startSession(session, level);
     session.secondaryLux = std::max(render::rendererInfo(target.renderer).ambientLux, 1.0f);

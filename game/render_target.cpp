@@ -5,11 +5,10 @@
 
 namespace onelight::game {
 
-bool openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::LoadedLevel& level,
-                      bool windowed, std::string& error) {
+void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::LoadedLevel& level,
+                      bool windowed) {
     t.windowed = windowed;
-    if (windowed && !platform::openWindow(t.window, "onelight", cl.width, cl.height, error))
-        return false;
+    if (windowed) platform::openWindow(t.window, "onelight", cl.width, cl.height);
     render::RenderDeviceFeatures features;
     try {
         vk::createContext(t.ctx, render::renderContextOptions(
@@ -25,7 +24,6 @@ bool openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::Load
         closeRenderTarget(t);
         throw;
     }
-    return true;
 }
 
 render::FrameStats drawToTarget(RenderTarget& t, const render::FrameInputs& inputs, bool readback,

@@ -20,10 +20,10 @@ struct RenderTarget {
 };
 
 // Opens the window (when `windowed`), the context and the renderer at the command line's size
-// and MSAA. False with `error` when there is no display; throws on Vulkan failures (after
-// releasing what it created).
-bool openRenderTarget(RenderTarget& target, const CommandLine& commandLine,
-                      const assets::LoadedLevel& level, bool windowed, std::string& error);
+// and MSAA. Throws when there is no display or on Vulkan failures (after releasing what it
+// created).
+void openRenderTarget(RenderTarget& target, const CommandLine& commandLine,
+                      const assets::LoadedLevel& level, bool windowed);
 
 // Draws one frame, into the window when there is one (acquiring, presenting, and following a
 // resized swapchain), and reads it back when asked. `presented` tells whether the window showed it.

@@ -63,9 +63,8 @@ nlohmann::json captureJson(Session& s, const render::Renderer& renderer,
 }
 
 // All captures side by side at half size, in script order: one PNG to look at.
-bool writeContactSheet(const std::string& path, const std::vector<Capture>& captures,
-                       std::string& error) {
-    if (captures.empty()) return true;
+void writeContactSheet(const std::string& path, const std::vector<Capture>& captures) {
+    if (captures.empty()) return;
     uint32_t cw = (captures[0].width + 1) / 2, ch = (captures[0].height + 1) / 2;
     uint32_t columns = uint32_t(std::ceil(std::sqrt(double(captures.size()))));
     uint32_t rows = uint32_t((captures.size() + columns - 1) / columns);
@@ -82,7 +81,7 @@ bool writeContactSheet(const std::string& path, const std::vector<Capture>& capt
                         c.rgba8[(size_t(2 * y) * c.width + 2 * x) * 4 + k];
     }
     for (size_t i = 3; i < sheet.size(); i += 4) sheet[i] = 255;
-    return capture::writePng(path, width, height, sheet, error);
+    capture::writePng(path, width, height, sheet);
 }
 
 }  // namespace
@@ -90,25 +89,15 @@ bool writeContactSheet(const std::string& path, const std::vector<Capture>& capt
 int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
     Session session;
     startSession(session, level);
-    ReplayRunner runner;
-    try {
-        runner =
-            makeReplayRunner(replay::loadScript(cl.replay), session.lightNames, session.registry);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "onelight: %s\n", e.what());
-        return 1;
-    }
+    ReplayRunner runner =
+        makeReplayRunner(replay::loadScript(cl.replay), session.lightNames, session.registry);
     const double tickSeconds = 1.0 / runner.script.tickRate;
     session.tickSeconds = tickSeconds;
     const std::string dir = cl.captureDir.empty() ? std::string("captures") : cl.captureDir;
     std::filesystem::create_directories(dir);
 
     RenderTarget target;
-    std::string error;
-    if (!openRenderTarget(target, cl, level, !cl.headless, error)) {
-        std::fprintf(stderr, "onelight: %s\n", error.c_str());
-        return 1;
-    }
+    openRenderTarget(target, cl, level, !cl.headless);
     session.secondaryLux = std::max(render::rendererInfo(target.renderer).ambientLux, 1.0f);
     std::printf("onelight: replay %s on %s, %zu commands, MSAA %ux\n", cl.replay.c_str(),
                 level.path.c_str(), runner.script.commands.size(),
@@ -131,15 +120,10 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
                 for (const std::string& name : after.captures) {
                     const render::CapturedFrame& frame = render::capturedFrame(target.renderer);
                     std::string base = dir + "/" + name;
-                    if (!capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8,
-                                           error) ||
-                        !capture::writeExr(base + ".exr", frame.width, frame.height,
-                                           frame.linearRgba, error) ||
-                        !capture::writeJson(
-                            base + ".json",
-                            captureJson(session, target.renderer, in, stats, tick, tickSeconds),
-                            error))
-                        throw std::runtime_error(error);
+                    capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8);
+                    capture::writeExr(base + ".exr", frame.width, frame.height, frame.linearRgba);
+                    capture::writeJson(base + ".json", captureJson(session, target.renderer, in,
+                                                                   stats, tick, tickSeconds));
                     captures.push_back({name, frame.width, frame.height, frame.rgba8});
                     std::printf("onelight: tick %llu captured %s.png\n", (unsigned long long)tick,
                                 base.c_str());
@@ -147,8 +131,7 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
             }
             if (after.quit) break;
         }
-        if (!writeContactSheet(dir + "/contact_sheet.png", captures, error))
-            throw std::runtime_error(error);
+        writeContactSheet(dir + "/contact_sheet.png", captures);
     } catch (const ReplayFailure& e) {
         std::fprintf(stderr, "onelight: %s\n", e.what());
         code = 1;

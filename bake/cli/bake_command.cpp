@@ -110,14 +110,10 @@ int run_bake_command(const std::vector<std::string>& arguments) {
         const world::SourceLevel source = world::import_gltf(input);
         BakeResult result = bake_level(source, options);
         const std::vector<uint8_t> bytes = package_bytes(result.level, result.baked);
-        std::string error = package::write_file_atomically(output, bytes);
-        if (error.empty() && !report_path.empty()) {
+        package::write_file_atomically(output, bytes);
+        if (!report_path.empty()) {
             result.report.package_bytes = bytes.size();
-            error = write_report(report_path, result.report);
-        }
-        if (!error.empty()) {
-            std::fprintf(stderr, "onelight-bake: error: %s\n", error.c_str());
-            return 1;
+            write_report(report_path, result.report);
         }
         std::printf("baked %s (%zu bytes, quality %s%s)\n", output.c_str(), bytes.size(),
                     quality_name(options.quality),

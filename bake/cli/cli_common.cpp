@@ -48,7 +48,7 @@ bool parse_number(const std::string& text, double low, double high, double& out)
 int run_reporting_errors(const std::string& input, const std::function<int()>& command) {
     try {
         return command();
-    } catch (const world::CompileError& e) {
+    } catch (const world::Error& e) {
         std::fprintf(stderr, "onelight-bake: error: %s\n", e.what());
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "onelight-bake: error: %s: out of memory\n", input.c_str());

@@ -31,7 +31,7 @@ bool asks_for_help(const std::vector<std::string>& arguments);
 bool parse_number(const std::string& text, double low, double high, double& out);
 
 /// Runs `command` and returns its exit code; an exception becomes "onelight-bake: error: ..."
-/// on stderr and exit code 1: a world::CompileError as its message (it names file and place),
+/// on stderr and exit code 1: a world::Error as its message (it names file and place),
 /// anything else prefixed with `input`, running out of memory as "out of memory".
 int run_reporting_errors(const std::string& input, const std::function<int()>& command);
 

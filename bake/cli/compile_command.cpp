@@ -123,11 +123,7 @@ int run_compile_command(const std::vector<std::string>& arguments) {
         world::CompileResult result = world::compile_level(source, options);
         rebase_image_paths(result.level, output);
         const std::vector<uint8_t> bytes = package::serialize_package(result.level);
-        const std::string error = package::write_file_atomically(output, bytes);
-        if (!error.empty()) {
-            std::fprintf(stderr, "onelight-bake: error: %s\n", error.c_str());
-            return 1;
-        }
+        package::write_file_atomically(output, bytes);
         print_summary(output, result.stats, bytes.size());
         return 0;
     });

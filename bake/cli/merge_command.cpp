@@ -6,6 +6,7 @@
 #include "bake/bake_level.hpp"
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
+#include "world/error.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
 
@@ -41,48 +42,31 @@ int run_merge_command(const std::vector<std::string>& arguments) {
                      merge_usage().c_str());
         return 2;
     }
-    world::CompiledLevel level;
-    std::vector<uint8_t> first_core;
-    std::vector<world::BakedLighting> parts;
-    for (const std::string& path : inputs) {
-        package::PackageReadResult read = package::read_package_file(path);
-        if (!read.ok()) {
-            std::fprintf(stderr, "onelight-bake: error: %s\n", read.error.c_str());
-            return 1;
+    return run_reporting_errors(inputs[0], [&] {
+        world::CompiledLevel level;
+        std::vector<uint8_t> first_core;
+        std::vector<world::BakedLighting> parts;
+        for (const std::string& path : inputs) {
+            package::PackageContents read = package::read_package_file(path);
+            const std::vector<uint8_t> core = package::serialize_package(read.level);
+            if (first_core.empty()) {
+                first_core = core;
+                level = read.level;
+            } else if (core != first_core) {
+                throw world::Error(path + ": compiled level differs from " + inputs[0] + "'s");
+            }
+            package::BakedContents baked =
+                package::decode_baked_sections(read.baked_sections, read.level, path);
+            if (!baked.present) throw world::Error(path + ": no baked lighting");
+            parts.push_back(std::move(baked.baked));
         }
-        const std::vector<uint8_t> core = package::serialize_package(read.level);
-        if (first_core.empty()) {
-            first_core = core;
-            level = read.level;
-        } else if (core != first_core) {
-            std::fprintf(stderr, "onelight-bake: error: %s: compiled level differs from %s's\n",
-                         path.c_str(), inputs[0].c_str());
-            return 1;
-        }
-        package::BakedReadResult baked =
-            package::decode_baked_sections(read.baked_sections, read.level, path);
-        if (!baked.ok() || !baked.present) {
-            std::fprintf(stderr, "onelight-bake: error: %s\n",
-                         baked.ok() ? (path + ": no baked lighting").c_str() : baked.error.c_str());
-            return 1;
-        }
-        parts.push_back(std::move(baked.baked));
-    }
-    world::BakedLighting merged;
-    const std::string error = merge_baked_lighting(level, std::move(parts), merged);
-    if (!error.empty()) {
-        std::fprintf(stderr, "onelight-bake: error: %s\n", error.c_str());
-        return 1;
-    }
-    const std::vector<uint8_t> bytes = package_bytes(level, merged);
-    const std::string write_error = package::write_file_atomically(output, bytes);
-    if (!write_error.empty()) {
-        std::fprintf(stderr, "onelight-bake: error: %s\n", write_error.c_str());
-        return 1;
-    }
-    std::printf("merged %zu parts into %s (%zu bytes)\n", inputs.size(), output.c_str(),
-                bytes.size());
-    return 0;
+        const world::BakedLighting merged = merge_baked_lighting(level, std::move(parts));
+        const std::vector<uint8_t> bytes = package_bytes(level, merged);
+        package::write_file_atomically(output, bytes);
+        std::printf("merged %zu parts into %s (%zu bytes)\n", inputs.size(), output.c_str(),
+                    bytes.size());
+        return 0;
+    });
 }
 
 }  // namespace onelight::bake

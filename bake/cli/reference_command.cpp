@@ -93,10 +93,8 @@ int run_reference_command(const std::vector<std::string>& arguments) {
         if (!camera) {
             std::string names;
             for (const world::Camera& c : source.cameras) names += " " + c.name;
-            std::fprintf(stderr, "onelight-bake: error: %s: no camera named '%s' (cameras:%s)\n",
-                         input.c_str(), camera_name.c_str(),
-                         names.empty() ? " none" : names.c_str());
-            return 1;
+            throw world::Error(input + ": no camera named '" + camera_name + "' (cameras:" +
+                               (names.empty() ? std::string(" none") : names) + ")");
         }
         if (width == 0) {
             height = 720;
@@ -114,11 +112,7 @@ int run_reference_command(const std::vector<std::string>& arguments) {
         const ReferenceImage image =
             render_reference(scene, lights, *camera, width, height, spp, {}, &progress, rays);
         progress.finish();
-        const std::string error = write_exr(output, image);
-        if (!error.empty()) {
-            std::fprintf(stderr, "onelight-bake: error: %s\n", error.c_str());
-            return 1;
-        }
+        write_exr(output, image);
         std::printf("reference %s: %ux%u, %u spp, %llu rays, %.2f Mrays/s\n", output.c_str(), width,
                     height, spp, static_cast<unsigned long long>(rays.total()),
                     double(rays.total()) / progress.seconds() * 1e-6);

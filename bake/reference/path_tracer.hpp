@@ -48,7 +48,7 @@ glm::vec3 reference_irradiance(const BakeScene& scene, const BakeLights& lights,
                                const glm::vec3& position, const glm::vec3& normal, uint32_t samples,
                                uint32_t seed, const TransportSettings& transport, RayCounts& rays);
 
-/// Writes linear RGB float32 EXR through `path.tmp` and a rename; "" on success.
-std::string write_exr(const std::string& path, const ReferenceImage& image);
+/// Writes linear RGB float32 EXR through `path.tmp` and a rename. Throws world::Error.
+void write_exr(const std::string& path, const ReferenceImage& image);
 
 }  // namespace onelight::bake

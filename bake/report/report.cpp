@@ -3,10 +3,11 @@
 #include <sys/resource.h>
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <span>
 
 #include <nlohmann/json.hpp>
+
+#include "world/package/package_writer.hpp"
 
 namespace onelight::bake {
 
@@ -67,16 +68,10 @@ std::string report_json(const BakeReport& r) {
     return j.dump(2) + "\n";
 }
 
-std::string write_report(const std::string& path, const BakeReport& report) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        out << report_json(report);
-        if (!out) return path + ": cannot write the report";
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    return ec ? path + ": cannot rename " + temporary + " (" + ec.message() + ")" : "";
+void write_report(const std::string& path, const BakeReport& report) {
+    const std::string json = report_json(report);
+    package::write_file_atomically(
+        path, std::span(reinterpret_cast<const uint8_t*>(json.data()), json.size()));
 }
 
 std::string report_summary(const BakeReport& r) {

@@ -42,8 +42,8 @@ struct BakeReport {
 uint64_t peak_memory_bytes();
 
 std::string report_json(const BakeReport& report);
-/// Writes the JSON to `path` (atomically); "" on success.
-std::string write_report(const std::string& path, const BakeReport& report);
+/// Writes the JSON to `path` (atomically). Throws world::Error.
+void write_report(const std::string& path, const BakeReport& report);
 /// A few lines for stdout at the end of a run.
 std::string report_summary(const BakeReport& report);
 

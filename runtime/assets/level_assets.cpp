@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "world/error.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
 
@@ -20,74 +21,56 @@
 
 namespace onelight::assets {
 
-bool decodeImage(const uint8_t* bytes, size_t size, DecodedImage& out, std::string& error) {
-    if (size == 0 || size > size_t(1) << 30) {
-        error = "empty or oversized image data";
-        return false;
-    }
+DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where) {
+    if (size == 0 || size > size_t(1) << 30)
+        throw world::Error(where + ": empty or oversized image data");
     int width = 0, height = 0, channels = 0;
     stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
-    if (!pixels) {
-        error = std::string("not a decodable PNG/JPEG image (") + stbi_failure_reason() + ")";
-        return false;
-    }
+    if (!pixels)
+        throw world::Error(where + ": not a decodable PNG/JPEG image (" + stbi_failure_reason() +
+                           ")");
+    DecodedImage out;
     out.width = uint32_t(width);
     out.height = uint32_t(height);
     out.rgba.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
     stbi_image_free(pixels);
-    return true;
+    return out;
 }
 
-bool loadLevel(const std::string& path, LoadedLevel& out, std::string& error) {
-    package::PackageReadResult read = package::read_package_file(path);
-    if (!read.ok()) {
-        error = read.error;
-        return false;
-    }
+LoadedLevel loadLevel(const std::string& path) {
+    package::PackageContents read = package::read_package_file(path);
+    LoadedLevel out;
     out.path = path;
     out.level = std::move(read.level);
-    package::BakedReadResult baked =
+    package::BakedContents baked =
         package::decode_baked_sections(read.baked_sections, out.level, path);
-    if (!baked.ok()) {
-        error = baked.error;
-        return false;
-    }
-    if (baked.present && baked.baked.shard_count > 1) {
-        error = path + ": holds part " + std::to_string(baked.baked.shard_index + 1) + " of " +
-                std::to_string(baked.baked.shard_count) +
-                " of a sharded bake; expected a complete package (join the parts with "
-                "`onelight-bake merge`)";
-        return false;
-    }
+    if (baked.present && baked.baked.shard_count > 1)
+        throw world::Error(path + ": holds part " + std::to_string(baked.baked.shard_index + 1) +
+                           " of " + std::to_string(baked.baked.shard_count) +
+                           " of a sharded bake; expected a complete package (join the parts "
+                           "with `onelight-bake merge`)");
     out.hasBakedLighting = baked.present;
-    out.baked = baked.present ? std::move(baked.baked) : world::BakedLighting{};
-    out.images.clear();
-    out.images.resize(out.level.images.size());
+    if (baked.present) out.baked = std::move(baked.baked);
+    out.images.reserve(out.level.images.size());
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     for (size_t i = 0; i < out.level.images.size(); ++i) {
         const world::Image& image = out.level.images[i];
-        std::vector<uint8_t> fileBytes;
-        const std::vector<uint8_t>* bytes = &image.encoded_bytes;
-        std::string where = path + ": image " + std::to_string(i) + " '" + image.name + "'";
-        if (image.encoded_bytes.empty()) {
-            const std::filesystem::path file = folder / image.uri;
-            std::ifstream in(file, std::ios::binary);
-            if (!in) {
-                error = file.string() + ": cannot open the image referenced by " + where +
-                        "; expected a PNG or JPEG file";
-                return false;
-            }
-            fileBytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-            bytes = &fileBytes;
-            where = file.string();
+        const std::string where = path + ": image " + std::to_string(i) + " '" + image.name + "'";
+        if (!image.encoded_bytes.empty()) {
+            out.images.push_back(
+                decodeImage(image.encoded_bytes.data(), image.encoded_bytes.size(), where));
+            continue;
         }
-        std::string why;
-        if (!decodeImage(bytes->data(), bytes->size(), out.images[i], why)) {
-            error = where + ": " + why;
-            return false;
-        }
+        const std::filesystem::path file = folder / image.uri;
+        std::ifstream in(file, std::ios::binary);
+        if (!in)
+            throw world::Error(file.string() + ": cannot open the image referenced by " + where +
+                               "; expected a PNG or JPEG file");
+        const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                         std::istreambuf_iterator<char>());
+        out.images.push_back(decodeImage(bytes.data(), bytes.size(), file.string()));
     }
-    return true;
+    return out;
 }
 
 }  // namespace onelight::assets

@@ -27,11 +27,11 @@ struct LoadedLevel {
 };
 
 /// Reads the package at `path`, its baked lighting when present, and decodes every image it
-/// refers to. On failure (including an unmerged part of a sharded bake) returns false and sets
-/// `error` to one line naming the file and what was expected.
-bool loadLevel(const std::string& path, LoadedLevel& out, std::string& error);
+/// refers to. Throws world::Error naming the file and what was expected (an unmerged part of a
+/// sharded bake included).
+[[nodiscard]] LoadedLevel loadLevel(const std::string& path);
 
-/// Decodes PNG/JPEG bytes. On failure returns false and sets `error` (without a file name).
-bool decodeImage(const uint8_t* bytes, size_t size, DecodedImage& out, std::string& error);
+/// Decodes PNG/JPEG bytes. Throws world::Error, its message starting with `where` (the file).
+[[nodiscard]] DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where);
 
 }  // namespace onelight::assets

@@ -15,7 +15,7 @@
 #include <stb_image_write.h>
 #pragma GCC diagnostic pop
 
-#include "assets/level_assets.hpp"
+#include "world/error.hpp"
 
 namespace onelight::capture {
 
@@ -25,98 +25,76 @@ std::string temporaryName(const std::string& path) {
     return path + ".tmp";
 }
 
-bool commit(const std::string& path, std::string& error) {
+void commit(const std::string& path) {
     std::error_code ec;
     std::filesystem::rename(temporaryName(path), path, ec);
     if (ec) {
-        error = path + ": cannot rename the finished file into place (" + ec.message() + ")";
+        const std::string why = ec.message();
         std::filesystem::remove(temporaryName(path), ec);
-        return false;
+        throw world::Error(path + ": cannot rename the finished file into place (" + why + ")");
     }
-    return true;
 }
 
 }  // namespace
 
-bool writePng(const std::string& path, uint32_t width, uint32_t height,
-              const std::vector<uint8_t>& rgba8, std::string& error) {
-    if (rgba8.size() != size_t(width) * height * 4) {
-        error = path + ": the image has " + std::to_string(rgba8.size()) + " bytes, expected " +
-                std::to_string(size_t(width) * height * 4);
-        return false;
-    }
+void writePng(const std::string& path, uint32_t width, uint32_t height,
+              const std::vector<uint8_t>& rgba8) {
+    if (rgba8.size() != size_t(width) * height * 4)
+        throw world::Error(path + ": the image has " + std::to_string(rgba8.size()) +
+                           " bytes, expected " + std::to_string(size_t(width) * height * 4));
     if (!stbi_write_png(temporaryName(path).c_str(), int(width), int(height), 4, rgba8.data(),
-                        int(width * 4))) {
-        error = path + ": cannot write the PNG";
-        return false;
-    }
-    return commit(path, error);
+                        int(width * 4)))
+        throw world::Error(path + ": cannot write the PNG");
+    commit(path);
 }
 
-bool writeExr(const std::string& path, uint32_t width, uint32_t height,
-              const std::vector<float>& rgba, std::string& error) {
-    if (rgba.size() != size_t(width) * height * 4) {
-        error = path + ": the image has " + std::to_string(rgba.size()) + " floats, expected " +
-                std::to_string(size_t(width) * height * 4);
-        return false;
-    }
+void writeExr(const std::string& path, uint32_t width, uint32_t height,
+              const std::vector<float>& rgba) {
+    if (rgba.size() != size_t(width) * height * 4)
+        throw world::Error(path + ": the image has " + std::to_string(rgba.size()) +
+                           " floats, expected " + std::to_string(size_t(width) * height * 4));
     const char* message = nullptr;
     const std::string tmp = temporaryName(path);
     if (SaveEXR(rgba.data(), int(width), int(height), 4, 0, tmp.c_str(), &message) < 0) {
-        error = path + ": cannot write the EXR (" + (message ? message : "unknown error") + ")";
+        const std::string why = message ? message : "unknown error";
         if (message) FreeEXRErrorMessage(message);
-        return false;
+        throw world::Error(path + ": cannot write the EXR (" + why + ")");
     }
-    return commit(path, error);
+    commit(path);
 }
 
-bool readExr(const std::string& path, uint32_t& width, uint32_t& height, std::vector<float>& rgba,
-             std::string& error) {
+FloatImage readExr(const std::string& path) {
     float* data = nullptr;
     int w = 0, h = 0;
     const char* message = nullptr;
     if (LoadEXR(&data, &w, &h, path.c_str(), &message) < 0) {
-        error = path + ": cannot read the EXR (" + (message ? message : "unknown error") + ")";
+        const std::string why = message ? message : "unknown error";
         if (message) FreeEXRErrorMessage(message);
-        return false;
+        throw world::Error(path + ": cannot read the EXR (" + why + ")");
     }
-    width = uint32_t(w);
-    height = uint32_t(h);
-    rgba.assign(data, data + size_t(w) * size_t(h) * 4);
+    FloatImage image;
+    image.width = uint32_t(w);
+    image.height = uint32_t(h);
+    image.rgba.assign(data, data + size_t(w) * size_t(h) * 4);
     std::free(data);
-    return true;
+    return image;
 }
 
-bool readPng(const std::string& path, uint32_t& width, uint32_t& height,
-             std::vector<uint8_t>& rgba8, std::string& error) {
+assets::DecodedImage readPng(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = path + ": cannot open";
-        return false;
-    }
+    if (!in) throw world::Error(path + ": cannot open");
     const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
                                      std::istreambuf_iterator<char>());
-    assets::DecodedImage image;
-    if (!assets::decodeImage(bytes.data(), bytes.size(), image, error)) {
-        error = path + ": " + error;
-        return false;
-    }
-    width = image.width;
-    height = image.height;
-    rgba8 = std::move(image.rgba);
-    return true;
+    return assets::decodeImage(bytes.data(), bytes.size(), path);
 }
 
-bool writeJson(const std::string& path, const nlohmann::json& value, std::string& error) {
+void writeJson(const std::string& path, const nlohmann::json& value) {
     {
         std::ofstream out(temporaryName(path), std::ios::binary | std::ios::trunc);
         out << value.dump(2) << '\n';
-        if (!out) {
-            error = path + ": cannot write the JSON";
-            return false;
-        }
+        if (!out) throw world::Error(path + ": cannot write the JSON");
     }
-    return commit(path, error);
+    commit(path);
 }
 
 }  // namespace onelight::capture

@@ -8,25 +8,33 @@
 
 #include <nlohmann/json.hpp>
 
+#include "assets/level_assets.hpp"
+
 namespace onelight::capture {
 
-/// 8-bit RGBA, top row first. False with `error` set on failure.
-bool writePng(const std::string& path, uint32_t width, uint32_t height,
-              const std::vector<uint8_t>& rgba8, std::string& error);
+/// A float RGBA image, top row first.
+struct FloatImage {
+    uint32_t width = 0, height = 0;
+    std::vector<float> rgba;  // width * height * 4
+};
+
+// Every function throws world::Error naming the file.
+
+/// 8-bit RGBA, top row first.
+void writePng(const std::string& path, uint32_t width, uint32_t height,
+              const std::vector<uint8_t>& rgba8);
 
 /// 32-bit float RGBA, top row first, ZIP-compressed.
-bool writeExr(const std::string& path, uint32_t width, uint32_t height,
-              const std::vector<float>& rgba, std::string& error);
+void writeExr(const std::string& path, uint32_t width, uint32_t height,
+              const std::vector<float>& rgba);
 
 /// Reads an EXR back as float RGBA (tests).
-bool readExr(const std::string& path, uint32_t& width, uint32_t& height, std::vector<float>& rgba,
-             std::string& error);
+[[nodiscard]] FloatImage readExr(const std::string& path);
 
 /// Reads a PNG as 8-bit RGBA (tests).
-bool readPng(const std::string& path, uint32_t& width, uint32_t& height,
-             std::vector<uint8_t>& rgba8, std::string& error);
+[[nodiscard]] assets::DecodedImage readPng(const std::string& path);
 
 /// Pretty-printed JSON.
-bool writeJson(const std::string& path, const nlohmann::json& value, std::string& error);
+void writeJson(const std::string& path, const nlohmann::json& value);
 
 }  // namespace onelight::capture

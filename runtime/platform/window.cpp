@@ -4,23 +4,23 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "vk/vk_check.hpp"
 
 namespace onelight::platform {
 
-bool openWindow(Window& window, const char* title, uint32_t width, uint32_t height,
-                std::string& error) {
+void openWindow(Window& window, const char* title, uint32_t width, uint32_t height) {
     if (!glfwInit()) {
         const char* why = nullptr;
         glfwGetError(&why);
-        error = std::string("cannot initialise GLFW (") + (why ? why : "no display?") + ")";
-        return false;
+        throw std::runtime_error(std::string("cannot initialise GLFW (") +
+                                 (why ? why : "no display?") + ")");
     }
     if (!glfwVulkanSupported()) {
-        error = "GLFW finds no Vulkan loader";
         glfwTerminate();
-        return false;
+        throw std::runtime_error("GLFW finds no Vulkan loader");
     }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
@@ -28,11 +28,10 @@ bool openWindow(Window& window, const char* title, uint32_t width, uint32_t heig
     if (!window.window) {
         const char* why = nullptr;
         glfwGetError(&why);
-        error = std::string("cannot open a window (") + (why ? why : "unknown") + ")";
         glfwTerminate();
-        return false;
+        throw std::runtime_error(std::string("cannot open a window (") + (why ? why : "unknown") +
+                                 ")");
     }
-    return true;
 }
 
 std::vector<const char*> windowInstanceExtensions() {

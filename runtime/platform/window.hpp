@@ -26,9 +26,8 @@ struct Window {
 };
 
 /// Initialises GLFW and opens a window without a client API. Call before createContext (the
-/// context needs windowInstanceExtensions). False with `error` set when there is no display.
-bool openWindow(Window& window, const char* title, uint32_t width, uint32_t height,
-                std::string& error);
+/// context needs windowInstanceExtensions). Throws std::runtime_error when there is no display.
+void openWindow(Window& window, const char* title, uint32_t width, uint32_t height);
 
 /// The instance extensions Vulkan needs to present to GLFW windows.
 std::vector<const char*> windowInstanceExtensions();

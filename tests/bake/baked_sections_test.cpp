@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "bake_scenes.hpp"
+#include "tests/support/error_message.hpp"
 #include "world/package/baked_sections.hpp"
 
 namespace onelight::bake {
@@ -14,8 +15,8 @@ TEST(BakedSections, RoundTripAndErrorsNameTheSection) {
     const BakeResult r = bake_level(test::small_room_with_probes(), test::fast_bake_options());
     std::vector<package::RawSection> sections = package::encode_baked_sections(r.baked);
     ASSERT_EQ(sections.size(), 4u);  // 32..34 and the probes
-    package::BakedReadResult back = package::decode_baked_sections(sections, r.level, "x.olpak");
-    ASSERT_TRUE(back.ok()) << back.error;
+    const package::BakedContents back =
+        package::decode_baked_sections(sections, r.level, "x.olpak");
     EXPECT_TRUE(back.present);
     EXPECT_EQ(back.baked.texels.size(), r.baked.texels.size());
     EXPECT_EQ(back.baked.grid.cells.size(), r.baked.grid.cells.size());
@@ -23,31 +24,33 @@ TEST(BakedSections, RoundTripAndErrorsNameTheSection) {
     EXPECT_EQ(back.baked.probes[2].texels, r.baked.probes[2].texels);
     EXPECT_EQ(back.baked.probes[0].box_max, glm::vec3(1.5f, 1.0f, 2.0f));
 
+    // What decoding `broken` throws ("" when nothing).
+    auto errorOf = [&](const std::vector<package::RawSection>& broken) {
+        return onelight::test::errorMessage(
+            [&] { (void)package::decode_baked_sections(broken, r.level, "x.olpak"); });
+    };
     const std::vector<package::RawSection> probes_alone(sections.begin() + 3, sections.end());
-    back = package::decode_baked_sections(probes_alone, r.level, "x.olpak");
-    EXPECT_NE(back.error.find("x.olpak: section probes present without baked lighting"),
+    EXPECT_NE(errorOf(probes_alone).find("x.olpak: section probes present without baked lighting"),
               std::string::npos)
-        << back.error;
+        << errorOf(probes_alone);
     std::vector<package::RawSection> bad_probe = sections;
     bad_probe[3].bytes[16 + 12 * 4] = 3;  // probe 0's face_size 8 -> 3: not a power of two
-    back = package::decode_baked_sections(bad_probe, r.level, "x.olpak");
-    EXPECT_NE(back.error.find("record 0: face_size 3"), std::string::npos) << back.error;
+    EXPECT_NE(errorOf(bad_probe).find("record 0: face_size 3"), std::string::npos)
+        << errorOf(bad_probe);
 
     std::vector<package::RawSection> truncated = sections;
     truncated[0].bytes.resize(truncated[0].bytes.size() - 32);
     truncated[0].count -= 1;
-    back = package::decode_baked_sections(truncated, r.level, "x.olpak");
-    EXPECT_NE(back.error.find("lightmap_texels"), std::string::npos) << back.error;
+    EXPECT_NE(errorOf(truncated).find("lightmap_texels"), std::string::npos) << errorOf(truncated);
 
     std::vector<package::RawSection> bad_light = sections;
     const uint32_t bogus = 77;  // not a light of the level
     std::memcpy(bad_light[2].bytes.data() + 56 + 72, &bogus, 4);
-    back = package::decode_baked_sections(bad_light, r.level, "x.olpak");
-    EXPECT_NE(back.error.find("dominant_primary 77"), std::string::npos) << back.error;
+    EXPECT_NE(errorOf(bad_light).find("dominant_primary 77"), std::string::npos)
+        << errorOf(bad_light);
 
     std::vector<package::RawSection> only_two(sections.begin(), sections.begin() + 2);
-    back = package::decode_baked_sections(only_two, r.level, "x.olpak");
-    EXPECT_NE(back.error.find("light_grid missing"), std::string::npos) << back.error;
+    EXPECT_NE(errorOf(only_two).find("light_grid missing"), std::string::npos) << errorOf(only_two);
 }
 
 }  // namespace

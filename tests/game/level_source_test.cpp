@@ -11,6 +11,7 @@
 #include <string>
 
 #include "level_source.hpp"
+#include "tests/support/error_message.hpp"
 
 namespace {
 
@@ -47,35 +48,33 @@ struct Fixture {
 
 TEST(LevelSource, RebakesOnlyWhenThePackageIsOlderThanTheLevelOrTheBaker) {
     const Fixture f;
-    std::string package, error;
     // Missing package: compile, then bake.
-    ASSERT_TRUE(onelight::game::resolveLevelPackage(f.level, package, error, f.baker)) << error;
-    EXPECT_EQ(package, f.package.string());
+    EXPECT_EQ(onelight::game::resolveLevelPackage(f.level, f.baker), f.package.string());
     EXPECT_EQ(f.callCount(), 2);
 
     // Newer than both: used as it is.
     f.age(f.level, 100);
     f.age(f.baker, 100);
-    ASSERT_TRUE(onelight::game::resolveLevelPackage(f.level, package, error, f.baker)) << error;
+    EXPECT_EQ(onelight::game::resolveLevelPackage(f.level, f.baker), f.package.string());
     EXPECT_EQ(f.callCount(), 2);
 
     // A rebuilt baker makes it stale.
     f.age(f.package, 200);
     f.age(f.level, 300);
-    ASSERT_TRUE(onelight::game::resolveLevelPackage(f.level, package, error, f.baker)) << error;
+    EXPECT_EQ(onelight::game::resolveLevelPackage(f.level, f.baker), f.package.string());
     EXPECT_EQ(f.callCount(), 4);
 
     // So does an edited level.
     f.age(f.package, 200);
     f.age(f.baker, 300);
     f.age(f.level, 100);
-    ASSERT_TRUE(onelight::game::resolveLevelPackage(f.level, package, error, f.baker)) << error;
+    EXPECT_EQ(onelight::game::resolveLevelPackage(f.level, f.baker), f.package.string());
     EXPECT_EQ(f.callCount(), 6);
 
     // No baker and a stale package: a clear error naming the level and the baker.
     f.age(f.package, 200);
-    EXPECT_FALSE(
-        onelight::game::resolveLevelPackage(f.level, package, error, (f.dir / "absent").string()));
+    const std::string error = onelight::test::errorMessage(
+        [&] { (void)onelight::game::resolveLevelPackage(f.level, (f.dir / "absent").string()); });
     EXPECT_NE(error.find("level.gltf: needs compiling"), std::string::npos) << error;
 }
 

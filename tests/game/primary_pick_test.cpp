@@ -16,9 +16,7 @@ namespace {
 using namespace onelight;
 
 TEST(GamePrimaryPick, TheRendererDrawsThePickTheGameReports) {
-    assets::LoadedLevel level;
-    std::string error;
-    ASSERT_TRUE(assets::loadLevel(ONELIGHT_DEMO_PACKAGE, level, error)) << error;
+    const assets::LoadedLevel level = assets::loadLevel(ONELIGHT_DEMO_PACKAGE);
 
     game::Session session;
     game::startSession(session, level);

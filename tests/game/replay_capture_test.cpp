@@ -44,14 +44,13 @@ std::string playReplay(const std::string& name, const std::string& folder = "") 
 void expectGoldens(const std::string& replay, const std::vector<std::string>& captures) {
     std::string dir = playReplay(replay);
     for (const std::string& c : captures) {
-        uint32_t w = 0, h = 0;
-        std::vector<uint8_t> rgba;
-        std::string error;
-        ASSERT_TRUE(onelight::capture::readPng(dir + "/" + c + ".png", w, h, rgba, error)) << error;
+        const onelight::assets::DecodedImage png =
+            onelight::capture::readPng(dir + "/" + c + ".png");
         ASSERT_TRUE(fs::exists(dir + "/" + c + ".exr")) << c;
         ASSERT_TRUE(fs::exists(dir + "/" + c + ".json")) << c;
         onelight::test::GoldenResult g = onelight::test::compareWithGolden(
-            rgba, w, h, std::string(ONELIGHT_GAME_GOLDENS) + "/" + replay + "_" + c + ".png",
+            png.rgba, png.width, png.height,
+            std::string(ONELIGHT_GAME_GOLDENS) + "/" + replay + "_" + c + ".png",
             dir + "/" + c + "_diff.png");
         EXPECT_TRUE(g.ok) << g.message;
     }
@@ -60,10 +59,9 @@ void expectGoldens(const std::string& replay, const std::vector<std::string>& ca
 
 // Mean linear luminance (cd/m^2) of the central quarter of a capture's EXR.
 double centreLuminance(const std::string& exr) {
-    uint32_t w = 0, h = 0;
-    std::vector<float> rgba;
-    std::string error;
-    EXPECT_TRUE(onelight::capture::readExr(exr, w, h, rgba, error)) << error;
+    const onelight::capture::FloatImage image = onelight::capture::readExr(exr);
+    const uint32_t w = image.width, h = image.height;
+    const std::vector<float>& rgba = image.rgba;
     double sum = 0.0;
     int count = 0;
     for (uint32_t y = h / 4; y < 3 * h / 4; ++y)
@@ -112,11 +110,8 @@ TEST(DemoReplays, TheSameReplayGivesTheSameFrames) {
     std::string first = playReplay("mover", "mover_first_run");
     std::string second = playReplay("mover", "mover_second_run");
     for (const char* c : {"crate_in_the_sun", "crate_under_the_spot"}) {
-        uint32_t w1, h1, w2, h2;
-        std::vector<uint8_t> a, b;
-        std::string error;
-        ASSERT_TRUE(onelight::capture::readPng(first + "/" + c + ".png", w1, h1, a, error));
-        ASSERT_TRUE(onelight::capture::readPng(second + "/" + c + ".png", w2, h2, b, error));
+        const std::vector<uint8_t> a = onelight::capture::readPng(first + "/" + c + ".png").rgba;
+        const std::vector<uint8_t> b = onelight::capture::readPng(second + "/" + c + ".png").rgba;
         EXPECT_TRUE(a == b) << c << " differs between two runs of the same replay";
     }
 }

@@ -83,13 +83,11 @@ void checkLight(const char* name, const test::SceneLight& light,
 
     // Through the EXR file, as a capture writes it.
     const std::string exr = dir + "/gpu_cpu_" + name + ".exr";
-    std::string error;
-    ASSERT_TRUE(capture::writeExr(exr, kWidth, kHeight, rendered.frame.linearRgba, error)) << error;
-    uint32_t w = 0, h = 0;
-    std::vector<float> gpu;
-    ASSERT_TRUE(capture::readExr(exr, w, h, gpu, error)) << error;
-    ASSERT_EQ(w, kWidth);
-    ASSERT_EQ(h, kHeight);
+    capture::writeExr(exr, kWidth, kHeight, rendered.frame.linearRgba);
+    const capture::FloatImage image = capture::readExr(exr);
+    ASSERT_EQ(image.width, kWidth);
+    ASSERT_EQ(image.height, kHeight);
+    const std::vector<float>& gpu = image.rgba;
 
     std::vector<glm::vec3> cpu(size_t(kWidth) * kHeight);
     Comparison c;

@@ -77,12 +77,10 @@ TEST(LabCli, QuickReportWritesTablesCsvsAndPlots) {
         EXPECT_NE(text.str().find(std::string("| ") + model + " |"), std::string::npos) << model;
     for (const char* png : {"models_cost_vs_error.png", "models_cost_vs_albedo_error.png",
                             "env_cost_vs_error.png", "albedo_gloss05.png"}) {
-        uint32_t w = 0, h = 0;
-        std::vector<uint8_t> rgba;
-        std::string error;
-        ASSERT_TRUE(onelight::capture::readPng((dir / png).string(), w, h, rgba, error)) << error;
-        EXPECT_EQ(w, 960u);
-        EXPECT_EQ(h, 600u);
+        const onelight::assets::DecodedImage image =
+            onelight::capture::readPng((dir / png).string());
+        EXPECT_EQ(image.width, 960u);
+        EXPECT_EQ(image.height, 600u);
     }
     for (const char* csv : {"models.csv", "models_grid.csv", "env_fresnel.csv"})
         EXPECT_TRUE(std::filesystem::file_size(dir / csv) > 40) << csv;

@@ -10,6 +10,7 @@
 #include "bake/grid/light_grid.hpp"
 #include "bake/probes/probe_capture.hpp"
 #include "shading.hpp"
+#include "tests/support/error_message.hpp"
 #include "world/package/format.hpp"
 #include "world/package/package_reader.hpp"
 
@@ -125,9 +126,8 @@ TEST(ProbeSection, RoundTripsAndCountsBytes) {
     EXPECT_EQ(section.bytes.size(),
               sizeof(package::DiskProbeHeader) + 2 * sizeof(package::DiskProbe) +
                   4 * (world::probe_texel_count(8) + world::probe_texel_count(4)));
-    const package::ProbeReadResult read =
+    const package::ProbeContents read =
         package::decode_probe_section(std::span(&section, 1), level, "test");
-    ASSERT_TRUE(read.ok()) << read.error;
     ASSERT_TRUE(read.present);
     ASSERT_EQ(read.probes.size(), 2u);
     for (size_t i = 0; i < 2; ++i) {
@@ -141,8 +141,7 @@ TEST(ProbeSection, RoundTripsAndCountsBytes) {
     }
     EXPECT_EQ(world::probe_texel_count(64),
               6u * (64 * 64 + 32 * 32 + 16 * 16 + 8 * 8 + 16 + 4 + 1));
-    const package::ProbeReadResult none = package::decode_probe_section({}, level, "test");
-    EXPECT_TRUE(none.ok());
+    const package::ProbeContents none = package::decode_probe_section({}, level, "test");
     EXPECT_FALSE(none.present);
 }
 
@@ -187,14 +186,17 @@ TEST(ProbeSection, RejectsCorruptedAndOutOfRangeRecords) {
         } else {
             std::memcpy(bad.bytes.data() + c.offset, &c.value, 4);
         }
-        const package::ProbeReadResult read =
-            package::decode_probe_section(std::span(&bad, 1), level, "pkg");
-        ASSERT_FALSE(read.ok()) << c.what;
-        EXPECT_NE(read.error.find("section probes"), std::string::npos) << read.error;
-        EXPECT_NE(read.error.find(c.expect), std::string::npos) << c.what << ": " << read.error;
+        const std::string error = test::errorMessage(
+            [&] { (void)package::decode_probe_section(std::span(&bad, 1), level, "pkg"); });
+        ASSERT_NE(error, "") << c.what;
+        EXPECT_NE(error.find("section probes"), std::string::npos) << error;
+        EXPECT_NE(error.find(c.expect), std::string::npos) << c.what << ": " << error;
     }
     const std::vector<package::RawSection> twice = {good, good};
-    EXPECT_FALSE(package::decode_probe_section(twice, level, "pkg").ok());
+    EXPECT_NE(test::errorMessage([&] {
+                  (void)package::decode_probe_section(twice, level, "pkg");
+              }).find("appears twice"),
+              std::string::npos);
 }
 
 TEST(ProbeSection, SurvivesAWholePackage) {
@@ -203,11 +205,9 @@ TEST(ProbeSection, SurvivesAWholePackage) {
     level.settings.texels_per_metre = 8.0f;
     const package::RawSection section = package::encode_probe_section({smallProbe(16, 2)});
     const std::vector<uint8_t> bytes = package::serialize_package(level, std::span(&section, 1));
-    const package::PackageReadResult read = package::parse_package(bytes, "pkg");
-    ASSERT_TRUE(read.ok()) << read.error;
-    const package::ProbeReadResult probes =
+    const package::PackageContents read = package::parse_package(bytes, "pkg");
+    const package::ProbeContents probes =
         package::decode_probe_section(read.baked_sections, read.level, "pkg");
-    ASSERT_TRUE(probes.ok()) << probes.error;
     ASSERT_EQ(probes.probes.size(), 1u);
     EXPECT_EQ(probes.probes[0].texels, smallProbe(16, 2).texels);
 }

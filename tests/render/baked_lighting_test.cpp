@@ -242,14 +242,11 @@ std::vector<float> renderLinear(const assets::LoadedLevel& level, const render::
     const test::RenderedFrame r = test::renderOnce(level, o, inputs);
     EXPECT_EQ(r.validationErrors, 0u);
     const std::string exr = test::outputDir() + "/" + name + ".exr";
-    std::string error;
-    EXPECT_TRUE(capture::writeExr(exr, kWidth, kHeight, r.frame.linearRgba, error)) << error;
-    uint32_t w = 0, h = 0;
-    std::vector<float> linear;
-    EXPECT_TRUE(capture::readExr(exr, w, h, linear, error)) << error;
-    EXPECT_EQ(w, kWidth);
-    EXPECT_EQ(h, kHeight);
-    return linear;
+    capture::writeExr(exr, kWidth, kHeight, r.frame.linearRgba);
+    capture::FloatImage image = capture::readExr(exr);
+    EXPECT_EQ(image.width, kWidth);
+    EXPECT_EQ(image.height, kHeight);
+    return std::move(image.rgba);
 }
 
 glm::vec3 pixel(const std::vector<float>& linear, uint32_t x, uint32_t y) {

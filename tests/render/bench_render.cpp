@@ -81,9 +81,7 @@ std::string statusLine(const char* key) {
 // its first camera rendered with the package's probes and with the uniform placeholder
 // environment (RendererOptions::probes off), frames interleaved, medians.
 void benchProbes(vk::Context& ctx, const std::string& package) {
-    assets::LoadedLevel level;
-    std::string error;
-    if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);
+    const assets::LoadedLevel level = assets::loadLevel(package);
     if (level.level.cameras.empty()) throw std::runtime_error(package + ": no camera");
     render::FrameInputs inputs;
     inputs.camera = render::cameraFromLevel(level.level.cameras.front());
@@ -116,9 +114,7 @@ void benchProbes(vk::Context& ctx, const std::string& package) {
 // frames submitted without waiting (two in flight, as the window plays), runs interleaved.
 void benchFrameLoop(vk::Context& ctx, const std::string& package) {
     constexpr int kLoopFrames = 12, kLoopRuns = 3;
-    assets::LoadedLevel level;
-    std::string error;
-    if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);
+    const assets::LoadedLevel level = assets::loadLevel(package);
     render::FrameInputs inputs;
     inputs.camera = render::cameraFromLevel(level.level.cameras.front());
     render::Renderer renderer;

@@ -206,8 +206,7 @@ void writeComparison(const std::string& path, const std::vector<float>& referenc
                         uint8_t(std::lround(255.0f * std::clamp(display, 0.0f, 1.0f)));
                 }
             }
-    std::string error;
-    EXPECT_TRUE(capture::writePng(path, 3 * kWidth, kHeight, rgba, error)) << error;
+    capture::writePng(path, 3 * kWidth, kHeight, rgba);
 }
 
 TEST(RenderProbes, GlossyFloorIsCloserToThePathTracerWithTheProbe) {
@@ -227,13 +226,11 @@ TEST(RenderProbes, GlossyFloorIsCloserToThePathTracerWithTheProbe) {
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     std::vector<float> reference;
     {
-        uint32_t w = 0, h = 0;
-        std::string error;
-        std::vector<float> rgba;
-        ASSERT_TRUE(capture::readExr(referencePath, w, h, rgba, error)) << error;
-        ASSERT_EQ(w, kWidth);
-        ASSERT_EQ(h, kHeight);
-        for (size_t i = 0; i < size_t(w) * h; ++i)
+        const capture::FloatImage image = capture::readExr(referencePath);
+        ASSERT_EQ(image.width, kWidth);
+        ASSERT_EQ(image.height, kHeight);
+        const std::vector<float>& rgba = image.rgba;
+        for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i)
             reference.insert(reference.end(), {rgba[i * 4], rgba[i * 4 + 1], rgba[i * 4 + 2]});
     }
 

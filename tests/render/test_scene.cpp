@@ -229,10 +229,7 @@ int compileLevel(const std::string& gltf, const std::string& package) {
 assets::LoadedLevel compileAndLoad(const std::string& gltf, const std::string& package) {
     if (compileLevel(gltf, package) != 0)
         throw std::runtime_error(gltf + ": onelight-bake compile failed");
-    assets::LoadedLevel level;
-    std::string error;
-    if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);
-    return level;
+    return assets::loadLevel(package);
 }
 
 int bakeLevel(const std::string& gltf, const std::string& package,
@@ -248,10 +245,7 @@ assets::LoadedLevel bakeAndLoad(const std::string& gltf, const std::string& pack
                                 const std::string& extraArguments) {
     if (bakeLevel(gltf, package, extraArguments) != 0)
         throw std::runtime_error(gltf + ": onelight-bake failed");
-    assets::LoadedLevel level;
-    std::string error;
-    if (!assets::loadLevel(package, level, error)) throw std::runtime_error(error);
-    return level;
+    return assets::loadLevel(package);
 }
 
 std::string outputDir() {

@@ -45,13 +45,13 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
     const test::ProcessResult h = test::runProcess(ONELIGHT_ONELIGHT_PATH, headless);
     ASSERT_EQ(h.exitCode, 0) << h.stderrText;
 
-    uint32_t sw = 0, sh = 0, hw = 0, hh = 0;
-    std::vector<uint8_t> screenshot, offscreen;
-    std::string error;
-    ASSERT_TRUE(capture::readPng(dir + "/windowed_window.png", sw, sh, screenshot, error)) << error;
-    ASSERT_TRUE(capture::readPng(dir + "/headless.png", hw, hh, offscreen, error)) << error;
-    ASSERT_EQ(sw, hw);
-    ASSERT_EQ(sh, hh);
+    const assets::DecodedImage windowShot = capture::readPng(dir + "/windowed_window.png");
+    const assets::DecodedImage headlessShot = capture::readPng(dir + "/headless.png");
+    ASSERT_EQ(windowShot.width, headlessShot.width);
+    ASSERT_EQ(windowShot.height, headlessShot.height);
+    const std::vector<uint8_t>& screenshot = windowShot.rgba;
+    const std::vector<uint8_t>& offscreen = headlessShot.rgba;
+    const uint32_t sw = windowShot.width, sh = windowShot.height;
     // Same device, same pipelines: the screenshot equals the offscreen frame within the golden
     // tolerance (tests/render/golden_test.cpp), and in practice exactly.
     uint64_t over = 0;

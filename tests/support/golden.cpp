@@ -17,18 +17,19 @@ constexpr double kMaxMeanDifference = 0.5;  // codes of 255
 
 GoldenResult compareWithGolden(const std::vector<uint8_t>& rgba8, uint32_t width, uint32_t height,
                                const std::string& goldenPath, const std::string& diffPath) {
-    std::string error;
     const char* update = std::getenv("ONELIGHT_UPDATE_GOLDENS");
     if (update && std::strcmp(update, "1") == 0) {
         std::filesystem::create_directories(std::filesystem::path(goldenPath).parent_path());
-        if (!capture::writePng(goldenPath, width, height, rgba8, error)) return {false, error};
+        capture::writePng(goldenPath, width, height, rgba8);
         std::printf("[ golden ] updated %s\n", goldenPath.c_str());
         return {true, "updated"};
     }
-    uint32_t w = 0, h = 0;
-    std::vector<uint8_t> expected;
-    if (!capture::readPng(goldenPath, w, h, expected, error))
-        return {false, error + " (run with ONELIGHT_UPDATE_GOLDENS=1 to create it)"};
+    if (!std::filesystem::exists(goldenPath))
+        return {false,
+                goldenPath + ": no golden (run with ONELIGHT_UPDATE_GOLDENS=1 to create it)"};
+    const assets::DecodedImage golden = capture::readPng(goldenPath);
+    const uint32_t w = golden.width, h = golden.height;
+    const std::vector<uint8_t>& expected = golden.rgba;
     if (w != width || h != height)
         return {false, goldenPath + ": golden is " + std::to_string(w) + "x" + std::to_string(h) +
                            ", frame is " + std::to_string(width) + "x" + std::to_string(height)};
@@ -59,7 +60,7 @@ GoldenResult compareWithGolden(const std::vector<uint8_t>& rgba8, uint32_t width
     std::printf("[ golden ] %s\n", buffer);
     const bool ok = fraction <= kMaxDifferingFraction && mean <= kMaxMeanDifference;
     if (!ok) {
-        capture::writePng(diffPath, w, h, diff, error);
+        capture::writePng(diffPath, w, h, diff);
         return {false, std::string(buffer) + "; see " + diffPath};
     }
     return {true, buffer};

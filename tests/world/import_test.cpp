@@ -13,7 +13,7 @@
 namespace onelight::test {
 namespace {
 
-using world::CompileError;
+using world::Error;
 using world::import_gltf;
 
 MeshData one_triangle(const std::string& name) {
@@ -230,12 +230,12 @@ TEST(Import, ImagesAreFileReferencesOrEncodedBytes) {
     EXPECT_TRUE(level.images[1].encoded_bytes.empty());
 }
 
-/// Expects import to throw a CompileError whose message contains every fragment.
+/// Expects import to throw a Error whose message contains every fragment.
 void expect_error(const std::string& path, std::initializer_list<const char*> fragments) {
     try {
         import_gltf(path);
-        FAIL() << "expected a CompileError for " << path;
-    } catch (const CompileError& e) {
+        FAIL() << "expected a Error for " << path;
+    } catch (const Error& e) {
         const std::string message = e.what();
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         for (const char* f : fragments) EXPECT_NE(message.find(f), std::string::npos) << message;

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/error_message.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/records.hpp"
 
@@ -188,15 +189,15 @@ TEST(PackageRecords, BakedErrorsNameTheElement) {
     baked.grid.dims = glm::uvec3(1);
     baked.grid.cells.resize(1);
     std::vector<RawSection> sections = encode_baked_sections(baked);
-    ASSERT_TRUE(decode_baked_sections(sections, level, "x.olpak").ok());
+    ASSERT_TRUE(decode_baked_sections(sections, level, "x.olpak").present);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     std::memcpy(sections[2].bytes.data() + sizeof(DiskLightGridHeader) +
                     offsetof(DiskLightGridCell, ambient_cube) + (2 * 3 + 1) * 4,
                 &nan, 4);
-    const BakedReadResult read = decode_baked_sections(sections, level, "x.olpak");
-    EXPECT_NE(read.error.find("light_grid cells, record 0: ambient_cube[2][1] = nan"),
-              std::string::npos)
-        << read.error;
+    const std::string error =
+        test::errorMessage([&] { (void)decode_baked_sections(sections, level, "x.olpak"); });
+    EXPECT_NE(error.find("light_grid cells, record 0: ambient_cube[2][1] = nan"), std::string::npos)
+        << error;
 }
 
 }  // namespace

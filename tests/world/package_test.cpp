@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/error_message.hpp"
 #include "tests/world/level_generator.hpp"
 #include "tests/world/world_test_support.hpp"
+#include "world/error.hpp"
 #include "world/package/crc32.hpp"
 #include "world/package/format.hpp"
 #include "world/package/package_reader.hpp"
@@ -70,16 +72,15 @@ std::vector<uint8_t> patched(std::vector<uint8_t> bytes, uint32_t id, uint32_t r
 }
 
 void expect_rejected(const std::vector<uint8_t>& bytes, const std::string& fragment) {
-    const PackageReadResult result = parse_package(bytes, "test.olpak");
-    ASSERT_FALSE(result.ok()) << "expected an error mentioning " << fragment;
-    EXPECT_NE(result.error.find(fragment), std::string::npos) << result.error;
-    EXPECT_EQ(result.error.find('\n'), std::string::npos) << result.error;
+    const std::string error = errorMessage([&] { (void)parse_package(bytes, "test.olpak"); });
+    ASSERT_NE(error, "") << "expected an error mentioning " << fragment;
+    EXPECT_NE(error.find(fragment), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
 TEST(Package, RoundTripIsByteIdentical) {
     const std::vector<uint8_t> bytes = serialize_package(sample_level());
-    const PackageReadResult read = parse_package(bytes, "test.olpak");
-    ASSERT_TRUE(read.ok()) << read.error;
+    const PackageContents read = parse_package(bytes, "test.olpak");
     EXPECT_EQ(read.level.surfaces.size(), sample_level().surfaces.size());
     EXPECT_EQ(read.level.lights[0].name, sample_level().lights[0].name);
     EXPECT_EQ(serialize_package(read.level), bytes);
@@ -90,8 +91,7 @@ TEST(Package, ProbeSpacingRoundTripsAndIsChecked) {
     EXPECT_EQ(level.settings.probe_spacing, 0.0f) << "not given";
     level.settings.probe_spacing = 3.5f;
     const std::vector<uint8_t> bytes = serialize_package(level);
-    const PackageReadResult read = parse_package(bytes, "test.olpak");
-    ASSERT_TRUE(read.ok()) << read.error;
+    const PackageContents read = parse_package(bytes, "test.olpak");
     EXPECT_EQ(read.level.settings.probe_spacing, 3.5f);
     uint32_t negative;
     const float minus_one = -1.0f;
@@ -104,8 +104,7 @@ TEST(Package, SkyRoundTripsAndIsChecked) {
     world::CompiledLevel level = sample_level();
     level.settings.sky_radiance = glm::vec3(4000.0f, 5000.0f, 6500.0f);
     const std::vector<uint8_t> bytes = serialize_package(level);
-    const PackageReadResult read = parse_package(bytes, "test.olpak");
-    ASSERT_TRUE(read.ok()) << read.error;
+    const PackageContents read = parse_package(bytes, "test.olpak");
     EXPECT_EQ(read.level.settings.sky_radiance, level.settings.sky_radiance);
     for (const float bad :
          {-1.0f, std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
@@ -124,8 +123,7 @@ TEST(Package, BakedSectionsSurviveARoundTrip) {
     grid.count = 3;
     grid.bytes = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};
     const std::vector<uint8_t> bytes = serialize_package(sample_level(), {&grid, 1});
-    const PackageReadResult read = parse_package(bytes, "test.olpak");
-    ASSERT_TRUE(read.ok()) << read.error;
+    const PackageContents read = parse_package(bytes, "test.olpak");
     ASSERT_EQ(read.baked_sections.size(), 1u);
     EXPECT_EQ(read.baked_sections[0].bytes, grid.bytes);
     EXPECT_EQ(serialize_package(read.level, read.baked_sections), bytes);
@@ -143,8 +141,8 @@ TEST(Package, CompileIsDeterministic) {
 TEST(Package, EveryTruncationIsRejected) {
     const std::vector<uint8_t> bytes = serialize_package(sample_level());
     for (size_t size = 0; size < bytes.size(); ++size) {
-        const PackageReadResult result = parse_package(std::span(bytes.data(), size), "test.olpak");
-        ASSERT_FALSE(result.ok()) << "truncated to " << size;
+        EXPECT_THROW((void)parse_package(std::span(bytes.data(), size), "test.olpak"), world::Error)
+            << "truncated to " << size;
     }
 }
 
@@ -153,10 +151,10 @@ TEST(Package, EveryBitFlipInTheHeaderAndTableIsRejected) {
     const size_t header_bytes = sizeof(FileHeader) + core_section_count * sizeof(SectionEntry);
     for (size_t bit = 0; bit < header_bytes * 8; ++bit) {
         bytes[bit / 8] ^= static_cast<uint8_t>(1u << (bit % 8));
-        ASSERT_FALSE(parse_package(bytes, "test.olpak").ok()) << "bit " << bit;
+        EXPECT_THROW((void)parse_package(bytes, "test.olpak"), world::Error) << "bit " << bit;
         bytes[bit / 8] ^= static_cast<uint8_t>(1u << (bit % 8));
     }
-    ASSERT_TRUE(parse_package(bytes, "test.olpak").ok());
+    EXPECT_NO_THROW((void)parse_package(bytes, "test.olpak"));
 }
 
 TEST(Package, PayloadCorruptionIsCaughtByTheSectionCrc) {
@@ -332,12 +330,12 @@ TEST(Package, WritesAtomically) {
     const auto folder = fresh_folder("atomic");
     const std::string path = (folder / "level.olpak").string();
     const std::vector<uint8_t> bytes = serialize_package(sample_level());
-    ASSERT_EQ(write_file_atomically(path, bytes), "");
+    write_file_atomically(path, bytes);
     EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
-    const PackageReadResult read = read_package_file(path);
-    ASSERT_TRUE(read.ok()) << read.error;
-    EXPECT_NE(write_file_atomically((folder / "missing" / "level.olpak").string(), bytes), "");
-    EXPECT_FALSE(read_package_file((folder / "absent.olpak").string()).ok());
+    EXPECT_EQ(serialize_package(read_package_file(path).level), bytes);
+    EXPECT_THROW(write_file_atomically((folder / "missing" / "level.olpak").string(), bytes),
+                 world::Error);
+    EXPECT_THROW((void)read_package_file((folder / "absent.olpak").string()), world::Error);
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ struct CompileResult {
 };
 
 /// Compiles `source`. `illuminance` gives each primary candidate's illuminance (the baker's
-/// includes visibility); null uses make_unshadowed_primary_illuminance. Throws CompileError.
+/// includes visibility); null uses make_unshadowed_primary_illuminance. Throws Error.
 CompileResult compile_level(const SourceLevel& source, const CompileOptions& options,
                             const PrimaryIlluminanceFn* illuminance = nullptr);
 

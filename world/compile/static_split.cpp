@@ -98,9 +98,9 @@ SplitLevel split_static_dynamic(const SourceLevel& level) {
             cv.position = glm::dvec3(m * glm::dvec4(glm::dvec3(v.position), 1.0));
             if (!std::isfinite(cv.position.x) || !std::isfinite(cv.position.y) ||
                 !std::isfinite(cv.position.z))
-                throw CompileError(level.source_path + ": mesh '" + instance.mesh_name +
-                                   "' of node '" + instance.node_name +
-                                   "': world position is NaN or Inf; expected finite values");
+                throw Error(level.source_path + ": mesh '" + instance.mesh_name + "' of node '" +
+                            instance.node_name +
+                            "': world position is NaN or Inf; expected finite values");
             cv.normal = w.normal;
             cv.tangent = w.tangent;
             cv.uv0 = v.uv0;
@@ -146,8 +146,8 @@ SplitLevel split_static_dynamic(const SourceLevel& level) {
         const glm::dmat4 world = entity_world(entity);
         const double det = glm::determinant(glm::dmat3(world));
         if (!(std::abs(det) > 1e-30) || !std::isfinite(det))
-            throw CompileError(level.source_path + ": node '" + entity.name +
-                               "': a dynamic node needs an invertible transform (no zero scale)");
+            throw Error(level.source_path + ": node '" + entity.name +
+                        "': a dynamic node needs an invertible transform (no zero scale)");
         const glm::dmat4 m = glm::inverse(world) * instance.world_from_local;
         const glm::dmat3 normal_matrix = normal_matrix_of(m);
         const bool mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
@@ -162,9 +162,8 @@ SplitLevel split_static_dynamic(const SourceLevel& level) {
             const Vertex w = transform_vertex(v, m, normal_matrix, mirrored ? -1.0f : 1.0f);
             if (!std::isfinite(w.position.x) || !std::isfinite(w.position.y) ||
                 !std::isfinite(w.position.z))
-                throw CompileError(level.source_path + ": mesh '" + instance.mesh_name +
-                                   "' of node '" + instance.node_name +
-                                   "': position is NaN or Inf in its entity's space");
+                throw Error(level.source_path + ": mesh '" + instance.mesh_name + "' of node '" +
+                            instance.node_name + "': position is NaN or Inf in its entity's space");
             out.dynamic_vertices.push_back(w);
         }
         for (size_t t = 0; t + 2 < instance.indices.size(); t += 3) {

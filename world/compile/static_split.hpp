@@ -21,7 +21,7 @@ struct SplitLevel {
     uint32_t duplicates_removed = 0;          // exact duplicates (same corners, same winding)
 };
 
-/// Throws CompileError when a world transform turns a position into NaN or Inf.
+/// Throws Error when a world transform turns a position into NaN or Inf.
 SplitLevel split_static_dynamic(const SourceLevel& level);
 
 }  // namespace onelight::world

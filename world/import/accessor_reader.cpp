@@ -54,9 +54,9 @@ struct AccessorBytes {
 const tinygltf::Accessor& checked_accessor(const tinygltf::Model& model, int accessor_index,
                                            const std::string& where) {
     if (accessor_index < 0 || static_cast<size_t>(accessor_index) >= model.accessors.size()) {
-        throw CompileError(where + ": accessor index " + std::to_string(accessor_index) +
-                           " is out of range (the file has " +
-                           std::to_string(model.accessors.size()) + " accessors)");
+        throw Error(where + ": accessor index " + std::to_string(accessor_index) +
+                    " is out of range (the file has " + std::to_string(model.accessors.size()) +
+                    " accessors)");
     }
     return model.accessors[static_cast<size_t>(accessor_index)];
 }
@@ -65,8 +65,7 @@ AccessorBytes checked_bytes(const tinygltf::Model& model, int accessor_index,
                             const std::string& where) {
     const tinygltf::Accessor& accessor = checked_accessor(model, accessor_index, where);
     const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
-    if (accessor.sparse.isSparse)
-        throw CompileError(place + ": sparse accessors are not supported");
+    if (accessor.sparse.isSparse) throw Error(place + ": sparse accessors are not supported");
     AccessorBytes bytes;
     bytes.count = accessor.count;
     bytes.component_type = accessor.componentType;
@@ -74,41 +73,41 @@ AccessorBytes checked_bytes(const tinygltf::Model& model, int accessor_index,
     bytes.normalized = accessor.normalized;
     const size_t size = component_size(accessor.componentType);
     if (size == 0 || bytes.components == 0) {
-        throw CompileError(place + ": unsupported component type " +
-                           std::to_string(accessor.componentType) + " or type " +
-                           std::to_string(accessor.type));
+        throw Error(place + ": unsupported component type " +
+                    std::to_string(accessor.componentType) + " or type " +
+                    std::to_string(accessor.type));
     }
     if (accessor.count == 0) return bytes;
     if (accessor.bufferView < 0 ||
         static_cast<size_t>(accessor.bufferView) >= model.bufferViews.size()) {
-        throw CompileError(place + ": bufferView " + std::to_string(accessor.bufferView) +
-                           " is out of range");
+        throw Error(place + ": bufferView " + std::to_string(accessor.bufferView) +
+                    " is out of range");
     }
     const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(accessor.bufferView)];
     if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size()) {
-        throw CompileError(place + ": buffer " + std::to_string(view.buffer) + " is out of range");
+        throw Error(place + ": buffer " + std::to_string(view.buffer) + " is out of range");
     }
     const tinygltf::Buffer& buffer = model.buffers[static_cast<size_t>(view.buffer)];
     const uint64_t element_size = size * static_cast<uint64_t>(bytes.components);
     const uint64_t stride = view.byteStride != 0 ? view.byteStride : element_size;
     if (stride < element_size) {
-        throw CompileError(place + ": byteStride " + std::to_string(stride) +
-                           " is smaller than the element size " + std::to_string(element_size));
+        throw Error(place + ": byteStride " + std::to_string(stride) +
+                    " is smaller than the element size " + std::to_string(element_size));
     }
     const uint64_t view_end = static_cast<uint64_t>(view.byteOffset) + view.byteLength;
     if (view_end > buffer.data.size()) {
-        throw CompileError(place + ": bufferView ends at byte " + std::to_string(view_end) +
-                           " but the buffer has " + std::to_string(buffer.data.size()) + " bytes");
+        throw Error(place + ": bufferView ends at byte " + std::to_string(view_end) +
+                    " but the buffer has " + std::to_string(buffer.data.size()) + " bytes");
     }
     if (accessor.count > view.byteLength) {
-        throw CompileError(place + ": count " + std::to_string(accessor.count) +
-                           " does not fit in the bufferView");
+        throw Error(place + ": count " + std::to_string(accessor.count) +
+                    " does not fit in the bufferView");
     }
     const uint64_t needed =
         static_cast<uint64_t>(accessor.byteOffset) + stride * (accessor.count - 1) + element_size;
     if (needed > view.byteLength) {
-        throw CompileError(place + ": needs " + std::to_string(needed) +
-                           " bytes but the bufferView has " + std::to_string(view.byteLength));
+        throw Error(place + ": needs " + std::to_string(needed) + " bytes but the bufferView has " +
+                    std::to_string(view.byteLength));
     }
     bytes.data = buffer.data.data() + view.byteOffset + accessor.byteOffset;
     bytes.stride = static_cast<size_t>(stride);
@@ -154,12 +153,12 @@ std::vector<float> read_float_accessor(const tinygltf::Model& model, int accesso
     const AccessorBytes bytes = checked_bytes(model, accessor_index, where);
     const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
     if (bytes.components != components) {
-        throw CompileError(place + ": expected " + std::to_string(components) +
-                           " components per element, found " + std::to_string(bytes.components));
+        throw Error(place + ": expected " + std::to_string(components) +
+                    " components per element, found " + std::to_string(bytes.components));
     }
     if (bytes.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !bytes.normalized) {
-        throw CompileError(place + ": expected FLOAT or a normalized integer type, found type " +
-                           std::to_string(bytes.component_type));
+        throw Error(place + ": expected FLOAT or a normalized integer type, found type " +
+                    std::to_string(bytes.component_type));
     }
     const size_t size = component_size(bytes.component_type);
     std::vector<float> values(bytes.count * static_cast<size_t>(components));
@@ -177,7 +176,7 @@ std::vector<uint32_t> read_index_accessor(const tinygltf::Model& model, int acce
                                           const std::string& where) {
     const AccessorBytes bytes = checked_bytes(model, accessor_index, where);
     const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
-    if (bytes.components != 1) throw CompileError(place + ": indices must be SCALAR");
+    if (bytes.components != 1) throw Error(place + ": indices must be SCALAR");
     std::vector<uint32_t> values(bytes.count);
     for (size_t i = 0; i < bytes.count; ++i) {
         const unsigned char* element = bytes.data + i * bytes.stride;
@@ -192,10 +191,10 @@ std::vector<uint32_t> read_index_accessor(const tinygltf::Model& model, int acce
                 values[i] = load<uint32_t>(element);
                 break;
             default:
-                throw CompileError(place +
-                                   ": indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or "
-                                   "UNSIGNED_INT, found type " +
-                                   std::to_string(bytes.component_type));
+                throw Error(place +
+                            ": indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or "
+                            "UNSIGNED_INT, found type " +
+                            std::to_string(bytes.component_type));
         }
     }
     return values;

@@ -1,5 +1,5 @@
 // Reads glTF accessors into plain arrays, checking every index, offset, stride and size first,
-// so a malformed file gives a CompileError naming the place instead of reading out of bounds.
+// so a malformed file gives a Error naming the place instead of reading out of bounds.
 #pragma once
 
 #include <cstdint>

@@ -28,7 +28,7 @@ Camera import_camera(const tinygltf::Camera& source, const glm::dmat4& world_fro
     Camera camera;
     camera.name = name;
     const auto finite = [&](double v, const char* field) {
-        if (!std::isfinite(v)) throw CompileError(where + ": camera " + field + " is not finite");
+        if (!std::isfinite(v)) throw Error(where + ": camera " + field + " is not finite");
         return static_cast<float>(v);
     };
     if (source.type == "orthographic") {
@@ -43,14 +43,14 @@ Camera import_camera(const tinygltf::Camera& source, const glm::dmat4& world_fro
         camera.znear = finite(source.perspective.znear, "znear");
         camera.zfar = finite(source.perspective.zfar, "zfar");
         if (!(camera.yfov > 0.0f && camera.yfov < 3.14159f))
-            throw CompileError(where + ": camera yfov " + std::to_string(camera.yfov) +
-                               "; expected radians in (0, pi)");
+            throw Error(where + ": camera yfov " + std::to_string(camera.yfov) +
+                        "; expected radians in (0, pi)");
         if (!(camera.znear > 0.0f))
-            throw CompileError(where + ": camera znear " + std::to_string(camera.znear) +
-                               "; expected > 0");
+            throw Error(where + ": camera znear " + std::to_string(camera.znear) +
+                        "; expected > 0");
     } else {
-        throw CompileError(where + ": camera type \"" + source.type +
-                           "\"; expected \"perspective\" or \"orthographic\"");
+        throw Error(where + ": camera type \"" + source.type +
+                    "\"; expected \"perspective\" or \"orthographic\"");
     }
     camera.position = glm::vec3(glm::dvec3(world_from_local[3]));
     camera.rotation = rotation_of(world_from_local);

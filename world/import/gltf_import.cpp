@@ -68,7 +68,7 @@ glm::dmat4 local_transform(const tinygltf::Node& node, const std::string& where)
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
             if (!std::isfinite(m[c][r]))
-                throw CompileError(where + ": transform is NaN or Inf; expected finite numbers");
+                throw Error(where + ": transform is NaN or Inf; expected finite numbers");
     return m;
 }
 
@@ -83,8 +83,8 @@ struct Importer {
     uint32_t use_texture(int gltf_texture) {
         if (gltf_texture < 0) return kNone;
         if (static_cast<size_t>(gltf_texture) >= model.textures.size())
-            throw CompileError(file + ": texture index " + std::to_string(gltf_texture) +
-                               " is out of range");
+            throw Error(file + ": texture index " + std::to_string(gltf_texture) +
+                        " is out of range");
         return textures.use(gltf_texture);
     }
 
@@ -94,20 +94,19 @@ struct Importer {
             return default_material;
         }
         if (static_cast<size_t>(gltf_material) >= model.materials.size())
-            throw CompileError(file + ": material index " + std::to_string(gltf_material) +
-                               " is out of range");
+            throw Error(file + ": material index " + std::to_string(gltf_material) +
+                        " is out of range");
         return materials.use(gltf_material);
     }
 
     void visit(int node_index, const glm::dmat4& parent, uint32_t entity, std::vector<bool>& seen,
                int depth) {
         if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size())
-            throw CompileError(file + ": node index " + std::to_string(node_index) +
-                               " is out of range");
+            throw Error(file + ": node index " + std::to_string(node_index) + " is out of range");
         if (seen[static_cast<size_t>(node_index)])
-            throw CompileError(file + ": node " + std::to_string(node_index) +
-                               " appears twice in the hierarchy; expected a tree");
-        if (depth > 1024) throw CompileError(file + ": node hierarchy deeper than 1024");
+            throw Error(file + ": node " + std::to_string(node_index) +
+                        " appears twice in the hierarchy; expected a tree");
+        if (depth > 1024) throw Error(file + ": node hierarchy deeper than 1024");
         seen[static_cast<size_t>(node_index)] = true;
         const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
         const std::string name =
@@ -153,18 +152,18 @@ struct Importer {
             const tinygltf::Value& index_value = light_extension->second.Get("light");
             const int light_index = index_value.IsInt() ? index_value.Get<int>() : -1;
             if (light_index < 0 || static_cast<size_t>(light_index) >= model.lights.size())
-                throw CompileError(where + ": KHR_lights_punctual light index " +
-                                   std::to_string(light_index) + " is out of range");
+                throw Error(where + ": KHR_lights_punctual light index " +
+                            std::to_string(light_index) + " is out of range");
             level.lights.push_back(import_light(model.lights[static_cast<size_t>(light_index)],
                                                 world, name, extras.role, where));
         } else if (extras.has_role) {
-            throw CompileError(where + ": extras.onelight.role is set but the node has no light");
+            throw Error(where + ": extras.onelight.role is set but the node has no light");
         }
 
         if (node.camera >= 0) {
             if (static_cast<size_t>(node.camera) >= model.cameras.size())
-                throw CompileError(where + ": camera index " + std::to_string(node.camera) +
-                                   " is out of range");
+                throw Error(where + ": camera index " + std::to_string(node.camera) +
+                            " is out of range");
             Camera camera =
                 import_camera(model.cameras[static_cast<size_t>(node.camera)], world, name, where);
             camera.has_exposure = extras.has_exposure;
@@ -174,8 +173,8 @@ struct Importer {
 
         if (node.mesh >= 0) {
             if (static_cast<size_t>(node.mesh) >= model.meshes.size())
-                throw CompileError(where + ": mesh index " + std::to_string(node.mesh) +
-                                   " is out of range");
+                throw Error(where + ": mesh index " + std::to_string(node.mesh) +
+                            " is out of range");
             const tinygltf::Mesh& mesh = model.meshes[static_cast<size_t>(node.mesh)];
             for (size_t p = 0; p < mesh.primitives.size(); ++p) {
                 ImportedPrimitive imported =
@@ -202,17 +201,15 @@ struct Importer {
     std::vector<unsigned char> buffer_view_bytes(int view_index, int image_index) const {
         const std::string where = file + ": image " + std::to_string(image_index);
         if (static_cast<size_t>(view_index) >= model.bufferViews.size())
-            throw CompileError(where + ": bufferView " + std::to_string(view_index) +
-                               " is out of range");
+            throw Error(where + ": bufferView " + std::to_string(view_index) + " is out of range");
         const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(view_index)];
         if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
-            throw CompileError(where + ": buffer " + std::to_string(view.buffer) +
-                               " is out of range");
+            throw Error(where + ": buffer " + std::to_string(view.buffer) + " is out of range");
         const std::vector<unsigned char>& data =
             model.buffers[static_cast<size_t>(view.buffer)].data;
         if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-            throw CompileError(where + ": bufferView bytes lie outside buffer " +
-                               std::to_string(view.buffer));
+            throw Error(where + ": bufferView bytes lie outside buffer " +
+                        std::to_string(view.buffer));
         return std::vector<unsigned char>(
             data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset),
             data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
@@ -237,16 +234,14 @@ struct Importer {
             Texture texture;
             if (source.source >= 0) {
                 if (static_cast<size_t>(source.source) >= model.images.size())
-                    throw CompileError(file + ": texture " + std::to_string(source_index) +
-                                       " image " + std::to_string(source.source) +
-                                       " is out of range");
+                    throw Error(file + ": texture " + std::to_string(source_index) + " image " +
+                                std::to_string(source.source) + " is out of range");
                 texture.image = images.use(source.source);
             }
             if (source.sampler >= 0) {
                 if (static_cast<size_t>(source.sampler) >= model.samplers.size())
-                    throw CompileError(file + ": texture " + std::to_string(source_index) +
-                                       " sampler " + std::to_string(source.sampler) +
-                                       " is out of range");
+                    throw Error(file + ": texture " + std::to_string(source_index) + " sampler " +
+                                std::to_string(source.sampler) + " is out of range");
                 const tinygltf::Sampler& s = model.samplers[static_cast<size_t>(source.sampler)];
                 texture.sampler.mag_filter =
                     static_cast<uint16_t>(s.magFilter < 0 ? 0 : s.magFilter);
@@ -280,7 +275,7 @@ struct Importer {
 SourceLevel import_gltf(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
-        throw CompileError(path + ": cannot open; expected a readable .gltf or .glb file");
+        throw Error(path + ": cannot open; expected a readable .gltf or .glb file");
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keep_encoded_image, nullptr);
@@ -289,8 +284,8 @@ SourceLevel import_gltf(const std::string& path) {
     const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
                                : loader.LoadASCIIFromFile(&model, &error, &warning, path);
     if (!loaded)
-        throw CompileError(path + ": not a valid glTF 2.0 file: " +
-                           (error.empty() ? std::string("unknown error") : first_line(error)));
+        throw Error(path + ": not a valid glTF 2.0 file: " +
+                    (error.empty() ? std::string("unknown error") : first_line(error)));
 
     Importer importer{model, path, std::filesystem::path(path).parent_path().string(), {}, {}, {},
                       {},    kNone};

@@ -10,7 +10,7 @@
 
 namespace onelight::world {
 
-/// Throws CompileError with a one-line message naming the file and the place on bad input.
+/// Throws Error with a one-line message naming the file and the place on bad input.
 SourceLevel import_gltf(const std::string& path);
 
 }  // namespace onelight::world

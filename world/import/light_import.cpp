@@ -20,27 +20,26 @@ Light import_light(const tinygltf::Light& source, const glm::dmat4& world_from_l
     else if (source.type == "spot")
         light.type = LightType::spot;
     else
-        throw CompileError(where + ": light type \"" + source.type +
-                           "\"; expected \"directional\", \"point\" or \"spot\"");
+        throw Error(where + ": light type \"" + source.type +
+                    "\"; expected \"directional\", \"point\" or \"spot\"");
     if (!std::isfinite(source.intensity) || source.intensity < 0.0)
-        throw CompileError(where + ": light intensity " + std::to_string(source.intensity) +
-                           "; expected a finite value >= 0");
+        throw Error(where + ": light intensity " + std::to_string(source.intensity) +
+                    "; expected a finite value >= 0");
     light.intensity = static_cast<float>(source.intensity);
     for (size_t i = 0; i < 3 && i < source.color.size(); ++i) {
         if (!std::isfinite(source.color[i]) || source.color[i] < 0.0)
-            throw CompileError(where + ": light color[" + std::to_string(i) +
-                               "]; expected a finite value >= 0");
+            throw Error(where + ": light color[" + std::to_string(i) +
+                        "]; expected a finite value >= 0");
         light.color[static_cast<int>(i)] = static_cast<float>(source.color[i]);
     }
     if (!std::isfinite(source.range) || source.range < 0.0)
-        throw CompileError(where + ": light range; expected a finite value >= 0");
+        throw Error(where + ": light range; expected a finite value >= 0");
     light.range = static_cast<float>(source.range);
     if (light.type == LightType::spot) {
         const double inner = source.spot.innerConeAngle, outer = source.spot.outerConeAngle;
         if (!(inner >= 0.0 && inner < outer && outer <= 1.5707963267948966 + 1e-6))
-            throw CompileError(where + ": spot cone angles inner " + std::to_string(inner) +
-                               ", outer " + std::to_string(outer) +
-                               "; expected 0 <= inner < outer <= pi/2");
+            throw Error(where + ": spot cone angles inner " + std::to_string(inner) + ", outer " +
+                        std::to_string(outer) + "; expected 0 <= inner < outer <= pi/2");
         light.inner_cone = static_cast<float>(inner);
         light.outer_cone = static_cast<float>(outer);
     }
@@ -48,7 +47,7 @@ Light import_light(const tinygltf::Light& source, const glm::dmat4& world_from_l
     const glm::dvec3 direction = glm::dvec3(world_from_local * glm::dvec4(0.0, 0.0, -1.0, 0.0));
     const double length = glm::length(direction);
     if (!std::isfinite(length) || !(length > 0.0))
-        throw CompileError(where + ": the light's node transform is degenerate");
+        throw Error(where + ": the light's node transform is degenerate");
     light.position = glm::vec3(position);
     light.direction = glm::vec3(direction / length);
     return light;

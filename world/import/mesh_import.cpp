@@ -87,13 +87,13 @@ ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
         return it == primitive.attributes.end() ? -1 : it->second;
     };
     const int position_accessor = attribute("POSITION");
-    if (position_accessor < 0) throw CompileError(where + ": POSITION attribute is missing");
+    if (position_accessor < 0) throw Error(where + ": POSITION attribute is missing");
     const std::vector<float> positions =
         read_float_accessor(model, position_accessor, 3, where + " POSITION");
     if (!all_finite(positions)) {
-        throw CompileError(where + ": POSITION of vertex " +
-                           std::to_string(first_non_finite(positions, 3)) +
-                           " is NaN or Inf; expected finite coordinates");
+        throw Error(where + ": POSITION of vertex " +
+                    std::to_string(first_non_finite(positions, 3)) +
+                    " is NaN or Inf; expected finite coordinates");
     }
     const size_t vertex_count = positions.size() / 3;
     const auto read_optional = [&](const char* name, int components) {
@@ -102,14 +102,14 @@ ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
         const std::string place = where + " " + name;
         std::vector<float> values = read_float_accessor(model, accessor, components, place);
         if (values.size() != vertex_count * static_cast<size_t>(components)) {
-            throw CompileError(
-                place + ": has " + std::to_string(values.size() / static_cast<size_t>(components)) +
-                " elements; expected " + std::to_string(vertex_count) + " like POSITION");
+            throw Error(place + ": has " +
+                        std::to_string(values.size() / static_cast<size_t>(components)) +
+                        " elements; expected " + std::to_string(vertex_count) + " like POSITION");
         }
         if (!all_finite(values)) {
-            throw CompileError(place + ": element " +
-                               std::to_string(first_non_finite(values, components)) +
-                               " is NaN or Inf; expected finite values");
+            throw Error(place + ": element " +
+                        std::to_string(first_non_finite(values, components)) +
+                        " is NaN or Inf; expected finite values");
         }
         return values;
     };
@@ -144,9 +144,9 @@ ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
         raw = read_index_accessor(model, primitive.indices, where + " indices");
         for (size_t i = 0; i < raw.size(); ++i) {
             if (raw[i] >= vertex_count) {
-                throw CompileError(where + ": index " + std::to_string(i) + " is " +
-                                   std::to_string(raw[i]) + "; expected below the vertex count " +
-                                   std::to_string(vertex_count));
+                throw Error(where + ": index " + std::to_string(i) + " is " +
+                            std::to_string(raw[i]) + "; expected below the vertex count " +
+                            std::to_string(vertex_count));
             }
         }
     } else {

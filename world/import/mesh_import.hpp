@@ -20,7 +20,7 @@ struct ImportedPrimitive {
     bool is_triangles = true;  // false for points and lines: the caller skips them
 };
 
-/// Reads primitive `primitive_index` of mesh `mesh_index`. Throws CompileError naming the mesh
+/// Reads primitive `primitive_index` of mesh `mesh_index`. Throws Error naming the mesh
 /// on malformed data, NaN or Inf.
 ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
                                    int primitive_index, const std::string& file);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "world/error.hpp"
 #include "world/package/format.hpp"
 #include "world/package/probe_section.hpp"
 #include "world/package/records.hpp"
@@ -23,48 +24,46 @@ T read_record(const std::vector<uint8_t>& bytes, size_t offset) {
     return value;
 }
 
-/// "" when every element of the array field `name` is finite and >= 0, else which one is not.
+/// Throws unless every element of the array field `name` is finite and >= 0; `at` names the
+/// record.
 template <size_t N>
-std::string not_finite_non_negative(const std::string& name, const float (&v)[N]) {
+void check_finite_non_negative(const std::string& at, const std::string& name,
+                               const float (&v)[N]) {
     for (size_t k = 0; k < N; ++k)
         if (!std::isfinite(v[k]) || v[k] < 0.0f)
-            return name + "[" + std::to_string(k) + "] = " + std::to_string(v[k]) +
-                   ": not finite or negative";
-    return "";
+            throw world::Error(at + name + "[" + std::to_string(k) + "] = " + std::to_string(v[k]) +
+                               ": not finite or negative");
 }
 
-/// What is wrong with a lightmap texel, "" when nothing.
-std::string check(const DiskLightmapTexel& d) {
-    if (std::string bad = not_finite_non_negative("irradiance", d.irradiance); !bad.empty())
-        return bad;
+/// Throws when a lightmap texel is not one a bake can write; `at` names the record.
+void check(const DiskLightmapTexel& d, const std::string& at) {
+    check_finite_non_negative(at, "irradiance", d.irradiance);
     const float length =
         std::sqrt(d.direction[0] * d.direction[0] + d.direction[1] * d.direction[1] +
                   d.direction[2] * d.direction[2]);
-    if (!(length <= 0.5f + 1e-4f)) return "direction length " + std::to_string(length) + " > 0.5";
+    if (!(length <= 0.5f + 1e-4f))
+        throw world::Error(at + "direction length " + std::to_string(length) + " > 0.5");
     if (!(d.normal_weight >= 0.5f - 1e-4f && d.normal_weight <= 1.0f + 1e-4f))
-        return "normal_weight " + std::to_string(d.normal_weight) + " outside [0.5, 1]";
+        throw world::Error(at + "normal_weight " + std::to_string(d.normal_weight) +
+                           " outside [0.5, 1]");
     if (d.flags & ~kAllLightmapTexelFlags)
-        return "flags " + std::to_string(d.flags) + " has unknown bits";
-    return "";
+        throw world::Error(at + "flags " + std::to_string(d.flags) + " has unknown bits");
 }
 
-/// What is wrong with a light grid cell of `level`, "" when nothing.
-std::string check(const DiskLightGridCell& d, const world::CompiledLevel& level) {
+/// Throws when a light grid cell is not one a bake of `level` can write; `at` names the record.
+void check(const DiskLightGridCell& d, const world::CompiledLevel& level, const std::string& at) {
     for (int f = 0; f < 6; ++f)
-        if (std::string bad = not_finite_non_negative("ambient_cube[" + std::to_string(f) + "]",
-                                                      d.ambient_cube[f]);
-            !bad.empty())
-            return bad;
+        check_finite_non_negative(at, "ambient_cube[" + std::to_string(f) + "]", d.ambient_cube[f]);
     if (d.dominant_primary != kNoIndex &&
         (d.dominant_primary >= level.lights.size() ||
          level.lights[d.dominant_primary].role != world::LightRole::primary))
-        return "dominant_primary " + std::to_string(d.dominant_primary) +
-               " is not a primary light of " + std::to_string(level.lights.size());
+        throw world::Error(at + "dominant_primary " + std::to_string(d.dominant_primary) +
+                           " is not a primary light of " + std::to_string(level.lights.size()));
     if (!(d.primary_visibility >= 0.0f && d.primary_visibility <= 1.0f))
-        return "primary_visibility " + std::to_string(d.primary_visibility) + " outside [0, 1]";
+        throw world::Error(at + "primary_visibility " + std::to_string(d.primary_visibility) +
+                           " outside [0, 1]");
     if (d.flags & ~kAllLightGridCellFlags)
-        return "flags " + std::to_string(d.flags) + " has unknown bits";
-    return "";
+        throw world::Error(at + "flags " + std::to_string(d.flags) + " has unknown bits");
 }
 
 std::string where(const std::string& name, const char* section, uint64_t record) {
@@ -98,9 +97,9 @@ std::vector<RawSection> encode_baked_sections(const world::BakedLighting& baked)
     return out;
 }
 
-BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
-                                      const world::CompiledLevel& level, const std::string& name) {
-    BakedReadResult result;
+BakedContents decode_baked_sections(std::span<const RawSection> sections,
+                                    const world::CompiledLevel& level, const std::string& name) {
+    BakedContents result;
     const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr;
     for (const RawSection& s : sections) {
         const RawSection** slot = s.id == section_lightmap_texels ? &texels
@@ -109,25 +108,23 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
                                                                   : nullptr;
         if (!slot) continue;
         if (*slot) {
-            result.error = name + ": section " + std::to_string(s.id) + " appears twice";
-            return result;
+            throw world::Error(name + ": section " + std::to_string(s.id) + " appears twice");
         }
         *slot = &s;
     }
     if (!texels && !masks && !grid) {
         for (const RawSection& s : sections)
             if (s.id == section_probes)
-                result.error = name +
-                               ": section probes present without baked lighting; expected "
-                               "sections lightmap_texels, shadow_masks and light_grid too";
-        return result;
+                throw world::Error(name +
+                                   ": section probes present without baked lighting; expected "
+                                   "sections lightmap_texels, shadow_masks and light_grid too");
+        return result;  // no baked lighting
     }
     if (!texels || !masks || !grid) {
-        result.error = name + ": baked lighting incomplete: sections lightmap_texels " +
-                       (texels ? "present" : "missing") + ", shadow_masks " +
-                       (masks ? "present" : "missing") + ", light_grid " +
-                       (grid ? "present" : "missing") + "; expected all three or none";
-        return result;
+        throw world::Error(name + ": baked lighting incomplete: sections lightmap_texels " +
+                           (texels ? "present" : "missing") + ", shadow_masks " +
+                           (masks ? "present" : "missing") + ", light_grid " +
+                           (grid ? "present" : "missing") + "; expected all three or none");
     }
     result.present = true;
     uint64_t expected_texels = 0;
@@ -137,91 +134,74 @@ BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
     if (texels->element_size != sizeof(DiskLightmapTexel) ||
         texels->bytes.size() != uint64_t(texels->count) * sizeof(DiskLightmapTexel) ||
         texels->count != expected_texels) {
-        result.error = name + ": section lightmap_texels: element size " +
-                       std::to_string(texels->element_size) + ", count " +
-                       std::to_string(texels->count) + ", " + std::to_string(texels->bytes.size()) +
-                       " bytes; expected element size " +
-                       std::to_string(sizeof(DiskLightmapTexel)) + " and count " +
-                       std::to_string(expected_texels) + " (the atlases' texels)";
-        return result;
+        throw world::Error(name + ": section lightmap_texels: element size " +
+                           std::to_string(texels->element_size) + ", count " +
+                           std::to_string(texels->count) + ", " +
+                           std::to_string(texels->bytes.size()) + " bytes; expected element size " +
+                           std::to_string(sizeof(DiskLightmapTexel)) + " and count " +
+                           std::to_string(expected_texels) + " (the atlases' texels)");
     }
     world::BakedLighting& baked = result.baked;
     baked.texels.resize(texels->count);
     for (uint32_t i = 0; i < texels->count; ++i) {
         const auto d =
             read_record<DiskLightmapTexel>(texels->bytes, size_t(i) * sizeof(DiskLightmapTexel));
-        if (const std::string bad = check(d); !bad.empty()) {
-            result.error = where(name, "lightmap_texels", i) + bad;
-            return result;
-        }
+        check(d, where(name, "lightmap_texels", i));
         baked.texels[i] = from_disk(d);
     }
 
     // Shadow masks.
     if (masks->element_size != 1 || masks->bytes.size() != masks->count ||
         masks->count != expected_texels) {
-        result.error = name + ": section shadow_masks: element size " +
-                       std::to_string(masks->element_size) + ", count " +
-                       std::to_string(masks->count) + "; expected element size 1 and count " +
-                       std::to_string(expected_texels);
-        return result;
+        throw world::Error(name + ": section shadow_masks: element size " +
+                           std::to_string(masks->element_size) + ", count " +
+                           std::to_string(masks->count) + "; expected element size 1 and count " +
+                           std::to_string(expected_texels));
     }
     baked.shadow_mask = masks->bytes;
 
     // Light grid.
     if (grid->element_size != 1 || grid->bytes.size() != grid->count ||
         grid->bytes.size() < sizeof(DiskLightGridHeader)) {
-        result.error = name + ": section light_grid: " + std::to_string(grid->bytes.size()) +
-                       " bytes; expected a header of " +
-                       std::to_string(sizeof(DiskLightGridHeader)) + " bytes and cells";
-        return result;
+        throw world::Error(name + ": section light_grid: " + std::to_string(grid->bytes.size()) +
+                           " bytes; expected a header of " +
+                           std::to_string(sizeof(DiskLightGridHeader)) + " bytes and cells");
     }
     const auto h = read_record<DiskLightGridHeader>(grid->bytes, 0);
     const uint64_t cells = uint64_t(h.dims[0]) * h.dims[1] * h.dims[2];
     const uint64_t expected_bytes =
         sizeof(DiskLightGridHeader) + uint64_t(h.cell_count) * sizeof(DiskLightGridCell);
     if (cells != h.cell_count || grid->bytes.size() != expected_bytes) {
-        result.error = name + ": section light_grid: dims " + std::to_string(h.dims[0]) + "x" +
-                       std::to_string(h.dims[1]) + "x" + std::to_string(h.dims[2]) +
-                       ", cell_count " + std::to_string(h.cell_count) + ", " +
-                       std::to_string(grid->bytes.size()) +
-                       " bytes; expected cell_count == " + std::to_string(cells) + " and " +
-                       std::to_string(expected_bytes) + " bytes";
-        return result;
+        throw world::Error(name + ": section light_grid: dims " + std::to_string(h.dims[0]) + "x" +
+                           std::to_string(h.dims[1]) + "x" + std::to_string(h.dims[2]) +
+                           ", cell_count " + std::to_string(h.cell_count) + ", " +
+                           std::to_string(grid->bytes.size()) +
+                           " bytes; expected cell_count == " + std::to_string(cells) + " and " +
+                           std::to_string(expected_bytes) + " bytes");
     }
     for (int c = 0; c < 3; ++c) {
         if (!std::isfinite(h.origin[c]) || !std::isfinite(h.cell_size[c]) ||
             !(h.cell_size[c] > 0.0f)) {
-            result.error = name + ": section light_grid: header origin/cell_size[" +
-                           std::to_string(c) + "] = " + std::to_string(h.origin[c]) + "/" +
-                           std::to_string(h.cell_size[c]) + "; expected finite, size > 0";
-            return result;
+            throw world::Error(name + ": section light_grid: header origin/cell_size[" +
+                               std::to_string(c) + "] = " + std::to_string(h.origin[c]) + "/" +
+                               std::to_string(h.cell_size[c]) + "; expected finite, size > 0");
         }
     }
     if (h.shard_count == 0 || h.shard_index >= h.shard_count) {
-        result.error = name + ": section light_grid: shard " + std::to_string(h.shard_index) + "/" +
-                       std::to_string(h.shard_count) + "; expected index < count";
-        return result;
+        throw world::Error(name + ": section light_grid: shard " + std::to_string(h.shard_index) +
+                           "/" + std::to_string(h.shard_count) + "; expected index < count");
     }
     from_disk_grid_header(h, baked);
     baked.grid.cells.resize(h.cell_count);
     for (uint32_t i = 0; i < h.cell_count; ++i) {
         const auto d = read_record<DiskLightGridCell>(
             grid->bytes, sizeof(DiskLightGridHeader) + size_t(i) * sizeof(DiskLightGridCell));
-        if (const std::string bad = check(d, level); !bad.empty()) {
-            result.error = where(name, "light_grid cells", i) + bad;
-            return result;
-        }
+        check(d, level, where(name, "light_grid cells", i));
         baked.grid.cells[i] = from_disk(d);
     }
 
     // Environment probes (optional: only levels with glossy materials have them).
-    ProbeReadResult probes = decode_probe_section(sections, level, name);
-    if (!probes.ok()) {
-        result.error = probes.error;
-        return result;
-    }
-    baked.probes = std::move(probes.probes);
+    baked.probes = decode_probe_section(sections, level, name).probes;
     return result;
 }
 

@@ -1,7 +1,7 @@
 // Writer and reader of the baked-lighting sections (32 lightmap texels, 33 shadow masks,
 // 34 light grid, 35 probes through probe_section.hpp; layouts in format.hpp). The reader
-// checks every size, count, index and value range against the compiled level and names the
-// section and the bad value.
+// checks every size, count, index and value range against the compiled level and throws
+// world::Error naming the section and the bad value.
 #pragma once
 
 #include <span>
@@ -17,17 +17,17 @@ namespace onelight::package {
 /// Sections 32, 33 and 34, in that order, then 35 when there are probes, for serialize_package.
 std::vector<RawSection> encode_baked_sections(const world::BakedLighting& baked);
 
-struct BakedReadResult {
+/// The baked lighting a package holds, if any.
+struct BakedContents {
     world::BakedLighting baked;
     bool present = false;  // the package holds baked lighting
-    std::string error;     // empty on success
-    bool ok() const { return error.empty(); }
 };
 
 /// Decodes sections 32..34 from the raw sections a package reader kept, and 35 when present.
 /// All of 32..34 or none must be present, and 35 only with them. `name` prefixes error messages
-/// (usually the file path).
-BakedReadResult decode_baked_sections(std::span<const RawSection> sections,
-                                      const world::CompiledLevel& level, const std::string& name);
+/// (usually the file path). Throws world::Error.
+[[nodiscard]] BakedContents decode_baked_sections(std::span<const RawSection> sections,
+                                                  const world::CompiledLevel& level,
+                                                  const std::string& name);
 
 }  // namespace onelight::package

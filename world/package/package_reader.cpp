@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "world/error.hpp"
 #include "world/package/crc32.hpp"
 #include "world/package/format.hpp"
 #include "world/package/records.hpp"
@@ -77,16 +78,11 @@ uint32_t expected_element_size(uint32_t id) {
     }
 }
 
-/// Signals a rejected package; caught in parse_package and turned into the error string.
-struct Rejected {
-    std::string message;
-};
-
 class Reader {
 public:
     Reader(std::span<const uint8_t> bytes, const std::string& name) : bytes_(bytes), name_(name) {}
 
-    void read(PackageReadResult& out) {
+    void read(PackageContents& out) {
         read_header_and_table(out);
         CompiledLevel& level = out.level;
         load_blobs();
@@ -113,14 +109,14 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& message) const {
-        throw Rejected{name_ + ": " + message};
+        throw world::Error(name_ + ": " + message);
     }
     [[noreturn]] void fail(uint32_t id, size_t record, const std::string& message) const {
         fail(std::string("section ") + section_name(id) + " record " + std::to_string(record) +
              ": " + message);
     }
 
-    void read_header_and_table(PackageReadResult& out) {
+    void read_header_and_table(PackageContents& out) {
         if (bytes_.size() < sizeof(FileHeader))
             fail("file is " + std::to_string(bytes_.size()) + " bytes; expected at least a " +
                  std::to_string(sizeof(FileHeader)) + "-byte header");
@@ -557,27 +553,19 @@ private:
 
 }  // namespace
 
-PackageReadResult parse_package(std::span<const uint8_t> bytes, const std::string& name) {
-    PackageReadResult result;
+PackageContents parse_package(std::span<const uint8_t> bytes, const std::string& name) {
+    PackageContents contents;
     try {
-        Reader(bytes, name).read(result);
-    } catch (const Rejected& rejected) {
-        result = PackageReadResult{};
-        result.error = rejected.message;
+        Reader(bytes, name).read(contents);
     } catch (const std::bad_alloc&) {
-        result = PackageReadResult{};
-        result.error = name + ": out of memory while reading";
+        throw world::Error(name + ": out of memory while reading");
     }
-    return result;
+    return contents;
 }
 
-PackageReadResult read_package_file(const std::string& path) {
+PackageContents read_package_file(const std::string& path) {
     std::ifstream file(path, std::ios::binary);
-    if (!file) {
-        PackageReadResult result;
-        result.error = path + ": cannot open; expected a readable .olpak file";
-        return result;
-    }
+    if (!file) throw world::Error(path + ": cannot open; expected a readable .olpak file");
     const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)),
                                      std::istreambuf_iterator<char>());
     return parse_package(bytes, path);

@@ -1,7 +1,7 @@
 // Reads an .olpak package. Validates the magic, version, header and table CRC, every section's
 // place, size, record size and CRC, then loads each section with its own loader that checks
-// every index and range. Anything wrong gives a one-line error naming the section, the record
-// and the bad value; nothing is read out of bounds.
+// every index and range. Anything wrong throws world::Error, one line naming the section, the
+// record and the bad value; nothing is read out of bounds.
 #pragma once
 
 #include <cstdint>
@@ -14,17 +14,18 @@
 
 namespace onelight::package {
 
-struct PackageReadResult {
+/// What a package holds: the compiled level and the sections this library does not interpret.
+struct PackageContents {
     world::CompiledLevel level;
     std::vector<RawSection> baked_sections;  // ids >= 32, kept as bytes
-    std::string error;                       // empty on success
-    bool ok() const { return error.empty(); }
 };
 
-/// `name` prefixes error messages (usually the file path).
-PackageReadResult parse_package(std::span<const uint8_t> bytes, const std::string& name);
+/// Parses a whole package; `name` prefixes error messages (usually the file path). Throws
+/// world::Error.
+[[nodiscard]] PackageContents parse_package(std::span<const uint8_t> bytes,
+                                            const std::string& name);
 
-/// Reads the whole file, then parse_package.
-PackageReadResult read_package_file(const std::string& path);
+/// Reads the whole file, then parse_package. Throws world::Error.
+[[nodiscard]] PackageContents read_package_file(const std::string& path);
 
 }  // namespace onelight::package

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "world/error.hpp"
 #include "world/package/crc32.hpp"
 #include "world/package/format.hpp"
 #include "world/package/records.hpp"
@@ -143,27 +144,26 @@ std::vector<uint8_t> serialize_package(const world::CompiledLevel& level,
     return out;
 }
 
-std::string write_file_atomically(const std::string& path, std::span<const uint8_t> bytes) {
+void write_file_atomically(const std::string& path, std::span<const uint8_t> bytes) {
     const std::string temporary = path + ".tmp";
     {
         std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) return path + ": cannot create " + temporary;
+        if (!file) throw world::Error(path + ": cannot create " + temporary);
         file.write(reinterpret_cast<const char*>(bytes.data()),
                    static_cast<std::streamsize>(bytes.size()));
         file.flush();
         if (!file) {
             std::error_code ignored;
             std::filesystem::remove(temporary, ignored);
-            return path + ": writing " + temporary + " failed (disk full?)";
+            throw world::Error(path + ": writing " + temporary + " failed (disk full?)");
         }
     }
     std::error_code ec;
     std::filesystem::rename(temporary, path, ec);
     if (ec) {
         std::filesystem::remove(temporary, ec);
-        return path + ": cannot rename " + temporary + " into place";
+        throw world::Error(path + ": cannot rename " + temporary + " into place");
     }
-    return "";
 }
 
 }  // namespace onelight::package

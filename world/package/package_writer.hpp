@@ -23,8 +23,8 @@ struct RawSection {
 std::vector<uint8_t> serialize_package(const world::CompiledLevel& level,
                                        std::span<const RawSection> baked_sections = {});
 
-/// Writes `bytes` to `path` through `path.tmp` and a rename. Returns "" on success, else a
-/// one-line error naming the file.
-std::string write_file_atomically(const std::string& path, std::span<const uint8_t> bytes);
+/// Writes `bytes` to `path` through `path.tmp` and a rename, so that `path` is never
+/// half-written. Throws world::Error naming the file.
+void write_file_atomically(const std::string& path, std::span<const uint8_t> bytes);
 
 }  // namespace onelight::package

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "world/error.hpp"
 #include "world/package/format.hpp"
 #include "world/package/records.hpp"
 
@@ -47,51 +48,50 @@ float clamp_channel(float c) {
     return c > 0.0f ? std::min(c, kSharedExpMax) : 0.0f;
 }
 
-/// "" when every element of the array field `name` is finite, else which one is not.
+/// Throws unless every element of the array field `name` is finite; `at` names the record.
 template <size_t N>
-std::string not_finite(const char* name, const float (&v)[N]) {
+void check_finite(const std::string& at, const char* name, const float (&v)[N]) {
     for (size_t k = 0; k < N; ++k)
         if (!std::isfinite(v[k]))
-            return std::string(name) + "[" + std::to_string(k) + "] = " + std::to_string(v[k]) +
-                   ": not finite";
-    return "";
+            throw world::Error(at + name + "[" + std::to_string(k) + "] = " + std::to_string(v[k]) +
+                               ": not finite");
 }
 
-/// What is wrong with a probe record whose texels should start at `next_texel` of the section's
-/// `texel_count`, "" when nothing.
-std::string check(const DiskProbe& d, uint64_t next_texel, uint32_t texel_count,
-                  const world::CompiledLevel& level) {
-    for (const std::string& bad :
-         {not_finite("position", d.position), not_finite("box_min", d.box_min),
-          not_finite("box_max", d.box_max)})
-        if (!bad.empty()) return bad;
-    if (!not_finite("irradiance_average", d.irradiance_average).empty() ||
-        !(std::min({d.irradiance_average[0], d.irradiance_average[1], d.irradiance_average[2]}) >
-          0.0f))
-        return "irradiance_average not finite or not > 0";
+/// Throws unless a probe record's texels start at `next_texel` of the section's `texel_count` and
+/// every field is in range; `at` names the record.
+void check(const DiskProbe& d, uint64_t next_texel, uint32_t texel_count,
+           const world::CompiledLevel& level, const std::string& at) {
+    check_finite(at, "position", d.position);
+    check_finite(at, "box_min", d.box_min);
+    check_finite(at, "box_max", d.box_max);
+    const float* e = d.irradiance_average;
+    if (!(std::isfinite(e[0]) && std::isfinite(e[1]) && std::isfinite(e[2])) ||
+        !(std::min({e[0], e[1], e[2]}) > 0.0f))
+        throw world::Error(at + "irradiance_average not finite or not > 0");
     const bool power_of_two = d.face_size != 0 && (d.face_size & (d.face_size - 1)) == 0;
     if (!power_of_two || d.face_size > kMaxFaceSize)
-        return "face_size " + std::to_string(d.face_size) +
-               " is not a power of two <= " + std::to_string(kMaxFaceSize);
+        throw world::Error(at + "face_size " + std::to_string(d.face_size) +
+                           " is not a power of two <= " + std::to_string(kMaxFaceSize));
     uint32_t mips = 0;
     for (uint32_t s = d.face_size; s > 0; s /= 2) ++mips;
     if (d.mip_count != mips)
-        return "mip_count " + std::to_string(d.mip_count) + "; expected " + std::to_string(mips) +
-               " for face_size " + std::to_string(d.face_size);
+        throw world::Error(at + "mip_count " + std::to_string(d.mip_count) + "; expected " +
+                           std::to_string(mips) + " for face_size " + std::to_string(d.face_size));
     if (d.texel_count != world::probe_texel_count(d.face_size))
-        return "texel_count " + std::to_string(d.texel_count) + "; expected " +
-               std::to_string(world::probe_texel_count(d.face_size)) + " for face_size " +
-               std::to_string(d.face_size);
+        throw world::Error(at + "texel_count " + std::to_string(d.texel_count) + "; expected " +
+                           std::to_string(world::probe_texel_count(d.face_size)) +
+                           " for face_size " + std::to_string(d.face_size));
     if (d.first_texel != next_texel || uint64_t(d.first_texel) + d.texel_count > texel_count)
-        return "texels [" + std::to_string(d.first_texel) + ", +" + std::to_string(d.texel_count) +
-               ") not at " + std::to_string(next_texel) + " or past texel_count " +
-               std::to_string(texel_count);
+        throw world::Error(at + "texels [" + std::to_string(d.first_texel) + ", +" +
+                           std::to_string(d.texel_count) + ") not at " +
+                           std::to_string(next_texel) + " or past texel_count " +
+                           std::to_string(texel_count));
     if (d.entity != kNoIndex && (d.entity >= level.entities.size() ||
                                  !(level.entities[d.entity].flags & world::entity_probe)))
-        return "entity " + std::to_string(d.entity) + " is not a probe entity of " +
-               std::to_string(level.entities.size());
-    if (d.reserved != 0) return "reserved " + std::to_string(d.reserved) + "; expected 0";
-    return "";
+        throw world::Error(at + "entity " + std::to_string(d.entity) +
+                           " is not a probe entity of " + std::to_string(level.entities.size()));
+    if (d.reserved != 0)
+        throw world::Error(at + "reserved " + std::to_string(d.reserved) + "; expected 0");
 }
 
 }  // namespace
@@ -150,15 +150,14 @@ RawSection encode_probe_section(const std::vector<world::EnvironmentProbe>& prob
     return out;
 }
 
-ProbeReadResult decode_probe_section(std::span<const RawSection> sections,
-                                     const world::CompiledLevel& level, const std::string& name) {
-    ProbeReadResult result;
+ProbeContents decode_probe_section(std::span<const RawSection> sections,
+                                   const world::CompiledLevel& level, const std::string& name) {
+    ProbeContents result;
     const RawSection* section = nullptr;
     for (const RawSection& s : sections) {
         if (s.id != section_probes) continue;
         if (section) {
-            result.error = name + ": section " + std::to_string(s.id) + " appears twice";
-            return result;
+            throw world::Error(name + ": section " + std::to_string(s.id) + " appears twice");
         }
         section = &s;
     }
@@ -167,29 +166,27 @@ ProbeReadResult decode_probe_section(std::span<const RawSection> sections,
     const std::vector<uint8_t>& bytes = section->bytes;
     if (section->element_size != 1 || bytes.size() != section->count ||
         bytes.size() < sizeof(DiskProbeHeader)) {
-        result.error = name + ": section probes: element size " +
-                       std::to_string(section->element_size) + ", count " +
-                       std::to_string(section->count) + ", " + std::to_string(bytes.size()) +
-                       " bytes; expected element size 1, count == bytes, and a header of " +
-                       std::to_string(sizeof(DiskProbeHeader)) + " bytes";
-        return result;
+        throw world::Error(name + ": section probes: element size " +
+                           std::to_string(section->element_size) + ", count " +
+                           std::to_string(section->count) + ", " + std::to_string(bytes.size()) +
+                           " bytes; expected element size 1, count == bytes, and a header of " +
+                           std::to_string(sizeof(DiskProbeHeader)) + " bytes");
     }
     const auto h = read_record<DiskProbeHeader>(bytes, 0);
     const uint64_t expected_bytes = sizeof(DiskProbeHeader) +
                                     uint64_t(h.probe_count) * sizeof(DiskProbe) +
                                     uint64_t(h.texel_count) * sizeof(uint32_t);
     if (bytes.size() != expected_bytes) {
-        result.error = name + ": section probes: probe_count " + std::to_string(h.probe_count) +
-                       ", texel_count " + std::to_string(h.texel_count) + ", " +
-                       std::to_string(bytes.size()) + " bytes; expected " +
-                       std::to_string(expected_bytes) + " bytes";
-        return result;
+        throw world::Error(name + ": section probes: probe_count " + std::to_string(h.probe_count) +
+                           ", texel_count " + std::to_string(h.texel_count) + ", " +
+                           std::to_string(bytes.size()) + " bytes; expected " +
+                           std::to_string(expected_bytes) + " bytes");
     }
     if (h.texel_format != probe_texel_rgb9e5 || h.reserved != 0) {
-        result.error = name + ": section probes: texel_format " + std::to_string(h.texel_format) +
-                       ", reserved " + std::to_string(h.reserved) + "; expected " +
-                       std::to_string(probe_texel_rgb9e5) + " (RGB9E5) and 0";
-        return result;
+        throw world::Error(name + ": section probes: texel_format " +
+                           std::to_string(h.texel_format) + ", reserved " +
+                           std::to_string(h.reserved) + "; expected " +
+                           std::to_string(probe_texel_rgb9e5) + " (RGB9E5) and 0");
     }
     const size_t texel_base = sizeof(DiskProbeHeader) + size_t(h.probe_count) * sizeof(DiskProbe);
     uint64_t next_texel = 0;
@@ -197,18 +194,14 @@ ProbeReadResult decode_probe_section(std::span<const RawSection> sections,
     for (uint32_t i = 0; i < h.probe_count; ++i) {
         const auto d =
             read_record<DiskProbe>(bytes, sizeof(DiskProbeHeader) + size_t(i) * sizeof(DiskProbe));
-        const std::string bad = check(d, next_texel, h.texel_count, level);
-        if (!bad.empty()) {
-            result.error = name + ": section probes, record " + std::to_string(i) + ": " + bad;
-            return result;
-        }
+        check(d, next_texel, h.texel_count, level,
+              name + ": section probes, record " + std::to_string(i) + ": ");
         result.probes[i] = from_disk(d, std::span(bytes).subspan(texel_base));
         next_texel += d.texel_count;
     }
     if (next_texel != h.texel_count) {
-        result.error = name + ": section probes: texel_count " + std::to_string(h.texel_count) +
-                       "; the probes own " + std::to_string(next_texel);
-        return result;
+        throw world::Error(name + ": section probes: texel_count " + std::to_string(h.texel_count) +
+                           "; the probes own " + std::to_string(next_texel));
     }
     return result;
 }

@@ -1,6 +1,6 @@
 // Writer and reader of the environment probes' section (35; layout in format.hpp), and the
 // RGB9E5 shared-exponent texel encoding it stores. The reader checks every size, count, index
-// and value range and names the section, the record and the bad value.
+// and value range and throws world::Error naming the section, the record and the bad value.
 #pragma once
 
 #include <cstdint>
@@ -32,16 +32,16 @@ glm::vec3 decode_rgb9e5(uint32_t packed);
 /// Section 35 for serialize_package.
 RawSection encode_probe_section(const std::vector<world::EnvironmentProbe>& probes);
 
-struct ProbeReadResult {
+/// The probes a package holds, if any.
+struct ProbeContents {
     std::vector<world::EnvironmentProbe> probes;
     bool present = false;  // the package holds section 35
-    std::string error;     // empty on success
-    bool ok() const { return error.empty(); }
 };
 
-/// Decodes section 35 from the raw sections a package reader kept (absent: no probes, ok).
-/// `name` prefixes error messages (usually the file path).
-ProbeReadResult decode_probe_section(std::span<const RawSection> sections,
-                                     const world::CompiledLevel& level, const std::string& name);
+/// Decodes section 35 from the raw sections a package reader kept (absent: no probes). `name`
+/// prefixes error messages (usually the file path). Throws world::Error.
+[[nodiscard]] ProbeContents decode_probe_section(std::span<const RawSection> sections,
+                                                 const world::CompiledLevel& level,
+                                                 const std::string& name);
 
 }  // namespace onelight::package
