@@ -92,7 +92,7 @@ struct GpuMaterial {
     uvec4 textures;  // x bit mask (1 << TEXTURE_*)
 };
 
-// A dynamic object's baked lighting: the light grid sampled at its lighting origin.
+// A dynamic object's baked lighting: the light grid sampled at its origin.
 struct GpuObjectLighting {
     vec4 ambientCube[6];  // rgb lux facing +x -x +y -y +z -z; [0].w baked visibility of the primary
 };

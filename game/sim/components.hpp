@@ -48,11 +48,11 @@ struct GunFlash {
     uint64_t serial = 0;  // order of firing; the oldest gives way first
 };
 
-// A dynamic object lit by one primary light, picked whenever it moves (world/dynamic_primary.hpp)
-// and handed to the renderer with its transform.
+// A dynamic object lit by one primary light, picked at its origin (Transform.position, where the
+// renderer also reads the light grid for it) whenever it moves (world/dynamic_primary.hpp), and
+// handed to the renderer with its transform.
 struct DynamicLighting {
-    glm::vec3 originOffset{0.0f};  // lighting origin relative to Transform.position
-    world::DynamicPrimary pick;    // pick.primary: into the level's lights, or kNoLight
+    world::DynamicPrimary pick;  // pick.primary: into the level's lights, or kNoLight
 };
 
 }  // namespace onelight::game

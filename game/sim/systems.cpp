@@ -116,8 +116,7 @@ void effectLightSystem(ecs::Registry& registry, const ecs::Tick& tick, const Inp
 void primarySelectionSystem(ecs::Registry& registry, std::span<const uint32_t> candidates,
                             const world::PrimaryScore& score) {
     for (auto [e, transform, lit] : registry.view<Transform, DynamicLighting>().each())
-        world::updateDynamicPrimary(lit.pick, transform.position + lit.originOffset, candidates,
-                                    score);
+        world::updateDynamicPrimary(lit.pick, transform.position, candidates, score);
 }
 
 }  // namespace onelight::game

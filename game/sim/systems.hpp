@@ -1,5 +1,5 @@
 // The demo game's systems: free functions over the registry, run once per fixed tick in the
-// order the Game's schedule gives (player, movers, effect lights, primary selection).
+// order stepSession calls them (player, movers, effect lights, primary selection).
 #pragma once
 
 #include <cstdint>

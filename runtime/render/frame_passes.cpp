@@ -41,11 +41,12 @@ void prepareForwardTargets(const RendererState& s, VkCommandBuffer cmd) {
         vk::imageBarrier(
             cmd, s.msaaColor,
             vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                              kColorStage, 0, kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
+                              kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kColorStage,
+                              VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
     vk::imageBarrier(
         cmd, s.depth,
         vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                          kDepthStages, 0, kDepthStages,
+                          kDepthStages, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, kDepthStages,
                           VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
 }

@@ -1,4 +1,5 @@
-// Descriptor sets. For now one set of storage buffers from a pool of its own.
+// Descriptor sets: pools, set allocation, a writer of buffer and image descriptors, and a set of
+// storage buffers with a pool of its own.
 #pragma once
 
 #include <vulkan/vulkan.h>

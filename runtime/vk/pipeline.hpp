@@ -1,4 +1,4 @@
-// Shader modules and pipelines. For now compute only; graphics pipelines will sit beside it.
+// Shader modules and compute pipelines (graphics pipelines: graphics_pipeline.hpp).
 #pragma once
 
 #include <vulkan/vulkan.h>

@@ -6,13 +6,21 @@
 
 namespace onelight::vk {
 
-bool timestampsSupported(const Context& ctx) {
+namespace {
+
+// How many low bits of a timestamp the queue writes (0: none).
+uint32_t validBits(const Context& ctx) {
     uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(ctx.physicalDevice, &count, nullptr);
     std::vector<VkQueueFamilyProperties> families(count);
     vkGetPhysicalDeviceQueueFamilyProperties(ctx.physicalDevice, &count, families.data());
-    return ctx.queueFamily < count && families[ctx.queueFamily].timestampValidBits > 0 &&
-           ctx.properties.limits.timestampPeriod > 0.0f;
+    return ctx.queueFamily < count ? families[ctx.queueFamily].timestampValidBits : 0;
+}
+
+}  // namespace
+
+bool timestampsSupported(const Context& ctx) {
+    return validBits(ctx) > 0 && ctx.properties.limits.timestampPeriod > 0.0f;
 }
 
 VkQueryPool createTimestampPool(const Context& ctx, uint32_t count) {
@@ -32,9 +40,15 @@ std::vector<double> readTimestampsMs(const Context& ctx, VkQueryPool pool, uint3
                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     const double msPerTick = double(ctx.properties.limits.timestampPeriod) * 1e-6;
     std::vector<double> ms(count);
-    // Later timestamps may read a tick or two below the first (stages finish out of order).
-    for (uint32_t i = 0; i < count; ++i)
-        ms[i] = double(std::max<int64_t>(int64_t(ticks[i] - ticks[0]), 0)) * msPerTick;
+    // Differences modulo the valid bits (the counter may wrap between two readings); a later
+    // timestamp a tick or two below the first (stages finish out of order) reads as 0.
+    const uint32_t bits = validBits(ctx);
+    const uint64_t mask = bits >= 64 ? ~uint64_t(0) : (uint64_t(1) << bits) - 1;
+    for (uint32_t i = 0; i < count; ++i) {
+        const uint64_t ahead = (ticks[i] - ticks[0]) & mask;
+        const bool behind = ahead > mask / 2;  // more than half the range: a small step back
+        ms[i] = behind ? 0.0 : double(ahead) * msPerTick;
+    }
     return ms;
 }
 

@@ -21,7 +21,7 @@ layout(set = 0, binding = BINDING_SHADOW_MAPS) uniform sampler2DArrayShadow shad
 layout(set = 0, binding = BINDING_LIGHTMAP) uniform sampler2DArray lightmap;
 // Layer atlas: r = the primary's baked visibility.
 layout(set = 0, binding = BINDING_SHADOW_MASK) uniform sampler2DArray shadowMask;
-// Dynamic objects: the light grid sampled at each object's lighting origin.
+// Dynamic objects: the light grid sampled at each object's origin.
 layout(set = 0, binding = BINDING_OBJECT_LIGHTING, std430) readonly buffer ObjectLighting {
     GpuObjectLighting objectLighting[];
 };

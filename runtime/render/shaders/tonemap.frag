@@ -2,10 +2,11 @@
 #extension GL_GOOGLE_include_directive : require
 // Tonemap: the pre-exposed HDR colour through the colour LUT (filmic curve + sRGB encoding,
 // built on the CPU from shaders/tonemap.glsl) indexed by its log2 shaper.
+#include "gpu_interface.glsl"
 #include "tonemap.glsl"
 
-layout(set = 0, binding = 0) uniform sampler2D hdr;  // resolved, pre-exposed, nearest
-layout(set = 0, binding = 1) uniform sampler3D lut;  // display-encoded colour, linear filter
+layout(set = 0, binding = BINDING_TONEMAP_HDR) uniform sampler2D hdr;  // resolved, pre-exposed
+layout(set = 0, binding = BINDING_TONEMAP_LUT) uniform sampler3D lut;  // display-encoded colour
 
 layout(location = 0) out vec4 outColor;
 
