@@ -34,7 +34,7 @@ inline constexpr uint32_t kAllLightGridCellFlags = light_grid_cell_inside_solid;
 
 struct LightGridCell {
     std::array<glm::vec3, 6> ambient_cube{};  // lux facing +x -x +y -y +z -z
-    uint32_t dominant_primary = kNone;        // into lights
+    uint32_t dominant_primary = kNoIndex;        // into lights
     float primary_visibility = 0.0f;          // [0, 1]
     uint32_t flags = 0;                       // LightGridCellFlags
 };
@@ -54,7 +54,7 @@ struct EnvironmentProbe {
     glm::vec3 box_min{0.0f}, box_max{0.0f};  // box projection when min < max on every axis
     glm::vec3 irradiance_average{1.0f};      // lux, RGB: E_avg (probeNormalize)
     uint32_t face_size = 0, mip_count = 0;   // mip 0 edge (a power of two); down to 1x1
-    uint32_t entity = kNone;                 // the probe entity, kNone when placed
+    uint32_t entity = kNoIndex;                 // the probe entity, kNoIndex when placed
     std::vector<uint32_t> texels;            // RGB9E5, 6 * sum_m (face_size >> m)^2
 };
 

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+
 #include <glm/gtc/quaternion.hpp>
+#include "world/no_index.hpp"
 
 namespace onelight::world {
-
-inline constexpr uint32_t kNone = 0xFFFFFFFFu;  // "no index" in every index field
 
 enum class LightType : uint8_t { directional = 0, point = 1, spot = 2 };
 enum class LightRole : uint8_t { primary = 0, baked = 1, effect = 2 };
@@ -56,11 +56,11 @@ struct Material {
     AlphaMode alpha_mode = AlphaMode::opaque;
     bool double_sided = false;
     MaterialClass material_class = MaterialClass::full;
-    uint32_t base_color_texture = kNone;          // index into textures
-    uint32_t metallic_roughness_texture = kNone;  // index into textures
-    uint32_t normal_texture = kNone;              // index into textures
-    uint32_t occlusion_texture = kNone;           // index into textures
-    uint32_t emissive_texture = kNone;            // index into textures
+    uint32_t base_color_texture = kNoIndex;          // index into textures
+    uint32_t metallic_roughness_texture = kNoIndex;  // index into textures
+    uint32_t normal_texture = kNoIndex;              // index into textures
+    uint32_t occlusion_texture = kNoIndex;           // index into textures
+    uint32_t emissive_texture = kNoIndex;            // index into textures
     float normal_scale = 1.0f;
     float occlusion_strength = 1.0f;
 };
@@ -74,7 +74,7 @@ struct Sampler {
 };
 
 struct Texture {
-    uint32_t image = kNone;  // index into images
+    uint32_t image = kNoIndex;  // index into images
     Sampler sampler;
 };
 
@@ -113,12 +113,13 @@ struct Vertex {
 /// A run of static triangles with one material, one primary light and one lightmap chart,
 /// inside one BSP leaf. Lightmap placement lives here (chart rectangle copied from charts).
 struct Surface {
-    uint32_t first_index = 0;        // into indices, multiple of 3
-    uint32_t index_count = 0;        // multiple of 3, > 0
-    uint32_t material = kNone;       // into materials
-    uint32_t primary_light = kNone;  // into lights (role primary); kNone when the level has none
-    uint32_t chart = kNone;          // into charts
-    uint32_t atlas = kNone;          // into atlases (== charts[chart].atlas)
+    uint32_t first_index = 0;      // into indices, multiple of 3
+    uint32_t index_count = 0;      // multiple of 3, > 0
+    uint32_t material = kNoIndex;  // into materials
+    uint32_t primary_light =
+        kNoIndex;               // into lights (role primary); kNoIndex when the level has none
+    uint32_t chart = kNoIndex;  // into charts
+    uint32_t atlas = kNoIndex;  // into atlases (== charts[chart].atlas)
     uint32_t lightmap_x = 0, lightmap_y = 0;           // texels, chart rectangle in the atlas
     uint32_t lightmap_width = 0, lightmap_height = 0;  // texels, padding included
     uint32_t first_given_up = 0;                       // into given_up_lights
@@ -164,7 +165,7 @@ struct BspLeaf {
 /// A dynamic mesh primitive in its own (node-local) space.
 struct DynamicMesh {
     std::string name;
-    uint32_t material = kNone;
+    uint32_t material = kNoIndex;
     uint32_t first_vertex = 0, vertex_count = 0;  // into dynamic_vertices
     uint32_t first_index = 0, index_count = 0;    // into dynamic_indices (relative to first_vertex)
 };

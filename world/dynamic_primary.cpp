@@ -9,16 +9,16 @@ bool updateDynamicPrimary(DynamicPrimary& pick, glm::vec3 origin,
     if (candidates.empty()) return false;
     if (glm::length(origin - pick.lastOrigin) < kPrimaryEvaluationDistance) return false;
     pick.lastOrigin = origin;
-    uint32_t best = kNone;
+    uint32_t best = kNoIndex;
     float bestScore = -1.0f, currentScore = 0.0f;
     for (uint32_t light : candidates) {
         const float s = score(light, origin);
         if (s > bestScore) best = light, bestScore = s;  // ties: the earlier light
         if (light == pick.primary) currentScore = s;
     }
-    if (pick.primary == kNone || best == pick.primary) {
+    if (pick.primary == kNoIndex || best == pick.primary) {
         pick.primary = best;
-        pick.challenger = kNone;
+        pick.challenger = kNoIndex;
         pick.challengerEvaluations = 0;
         return true;
     }
@@ -27,7 +27,7 @@ bool updateDynamicPrimary(DynamicPrimary& pick, glm::vec3 origin,
     if (bestScore > currentScore * kPrimarySwitchRatio ||
         pick.challengerEvaluations >= kPrimarySwitchEvaluations) {
         pick.primary = best;
-        pick.challenger = kNone;
+        pick.challenger = kNoIndex;
         pick.challengerEvaluations = 0;
     }
     return true;

@@ -26,8 +26,8 @@ inline constexpr float kPrimaryEvaluationDistance = 0.01f;
 
 /// A dynamic object's pick and its hysteresis state.
 struct DynamicPrimary {
-    uint32_t primary = kNone;       // into the level's lights; kNone before the first pick
-    uint32_t challenger = kNone;    // a light that currently beats the primary
+    uint32_t primary = kNoIndex;       // into the level's lights; kNoIndex before the first pick
+    uint32_t challenger = kNoIndex;    // a light that currently beats the primary
     int challengerEvaluations = 0;  // consecutive evaluations the challenger has led
     glm::vec3 lastOrigin{1e30f};    // where it was last evaluated
 };

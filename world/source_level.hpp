@@ -17,13 +17,13 @@ struct MeshInstance {
     std::string node_name;
     std::string mesh_name;
     uint32_t primitive = 0;     // index within the glTF mesh
-    uint32_t material = kNone;  // into SourceLevel::materials (a default is added if needed)
+    uint32_t material = kNoIndex;  // into SourceLevel::materials (a default is added if needed)
     glm::dmat4 world_from_local{1.0};
     std::vector<Vertex> vertices;   // local space
     std::vector<uint32_t> indices;  // triangles
     bool has_uv1 = false;           // TEXCOORD_1 was present
     bool dynamic = false;           // not part of the BSP, lit by the grid
-    uint32_t entity = kNone;        // into SourceLevel::entities when dynamic
+    uint32_t entity = kNoIndex;        // into SourceLevel::entities when dynamic
 };
 
 struct SourceLevel {

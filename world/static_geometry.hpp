@@ -24,10 +24,10 @@ struct CompileVertex {
 
 struct StaticTriangle {
     std::array<uint32_t, 3> v{};  // into StaticGeometry::vertices, counter-clockwise
-    uint32_t material = kNone;
-    uint32_t instance = kNone;  // the mesh instance it came from
-    uint32_t primary = kNone;   // primary index (into the level's primary list), regions stage
-    uint32_t chart = kNone;     // charts stage
+    uint32_t material = kNoIndex;
+    uint32_t instance = kNoIndex;  // the mesh instance it came from
+    uint32_t primary = kNoIndex;   // primary index (into the level's primary list), regions stage
+    uint32_t chart = kNoIndex;     // charts stage
 };
 
 struct StaticGeometry {

@@ -61,7 +61,7 @@ BakeScene::BakeScene(const EmbreeDevice& device, const world::CompiledLevel& lev
     positions_.reserve(level.vertices.size());
     for (const world::Vertex& v : level.vertices) positions_.push_back(v.position);
     indices_ = level.indices;
-    triangle_material_.assign(indices_.size() / 3, world::kNone);
+    triangle_material_.assign(indices_.size() / 3, world::kNoIndex);
     for (const world::Surface& s : level.surfaces)
         for (uint32_t i = s.first_index / 3; i < (s.first_index + s.index_count) / 3; ++i)
             triangle_material_[i] = s.material;

@@ -27,7 +27,7 @@ struct LightSizes {
 /// A light as the baker uses it.
 struct BakeLight {
     world::Light light;
-    uint32_t level_index = world::kNone;  // into CompiledLevel::lights
+    uint32_t level_index = world::kNoIndex;  // into CompiledLevel::lights
     float radius = 0.0f;                  // metres (point, spot) or radians (directional)
 };
 

@@ -80,7 +80,7 @@ bool triangle_overlaps_square(glm::dvec2 p, double h, glm::dvec2 a, glm::dvec2 b
 
 struct Candidate {
     double distance = std::numeric_limits<double>::infinity();  // texels
-    uint32_t surface = world::kNone;
+    uint32_t surface = world::kNoIndex;
     uint32_t triangle = 0;  // index triple in level.indices
     glm::dvec3 barycentrics{0.0};
 };
@@ -139,7 +139,7 @@ std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
             for (uint32_t x = 0; x < atlas.width; ++x) {
                 const uint64_t texel = base + uint64_t(y) * atlas.width + x;
                 const Candidate& c = best[texel];
-                if (c.surface == world::kNone) continue;
+                if (c.surface == world::kNoIndex) continue;
                 glm::dvec3 b = c.barycentrics;
                 const bool inside = c.distance < 1e-9;  // rounding of an interior point
                 if (!inside) b = b * (1.0 - kEdgeNudge) + glm::dvec3(kEdgeNudge / 3.0);

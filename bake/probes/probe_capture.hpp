@@ -23,7 +23,7 @@ namespace onelight::bake {
 struct ProbePlacement {
     glm::vec3 position{0.0f};              // metres, world: the capture point
     glm::vec3 boxMin{0.0f}, boxMax{0.0f};  // box projection when min < max on every axis
-    uint32_t entity = world::kNone;        // the probe entity, kNone when placed
+    uint32_t entity = world::kNoIndex;        // the probe entity, kNoIndex when placed
     bool insideSolid = false;  // authored inside solid geometry: its cube sees back faces, dark
 };
 

@@ -194,7 +194,7 @@ std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const
 
     // A root is its component's lowest index, so it comes before its other points: numbering
     // components as their roots come gives "lowest lattice index first".
-    std::vector<uint32_t> component(count, world::kNone);
+    std::vector<uint32_t> component(count, world::kNoIndex);
     std::vector<std::vector<uint32_t>> members;
     for (uint32_t i = 0; i < count; ++i) {
         if (tests[i].solid()) continue;

@@ -47,7 +47,7 @@ struct ProbePlacementStats {
 // Authored probes win: when any entity is flagged entity_probe, exactly those, in entity
 // order, each with its box when the box is non-empty, flagged insideSolid by the solid test
 // below (the bake warns: such a probe's reflections come out dark). Otherwise none
-// unless the level has specular materials (feature_probes). Then, with no box and entity kNone:
+// unless the level has specular materials (feature_probes). Then, with no box and entity kNoIndex:
 //
 // - Empty level (no static triangle): one probe at the centre of the bounds.
 // - Lattice: the spacing is level.settings.probe_spacing when the level sets it (> 0), else

@@ -10,8 +10,6 @@
 
 namespace onelight::game {
 
-inline constexpr uint32_t kNoLight = world::kNone;
-
 struct Name {
     std::string value;  // as in the level (node name), for replays and captures
 };
@@ -52,7 +50,7 @@ struct GunFlash {
 // renderer also reads the light grid for it) whenever it moves (world/dynamic_primary.hpp), and
 // handed to the renderer with its transform.
 struct DynamicLighting {
-    world::DynamicPrimary pick;  // pick.primary: into the level's lights, or kNoLight
+    world::DynamicPrimary pick;  // pick.primary: into the level's lights, or world::kNoIndex
 };
 
 }  // namespace onelight::game

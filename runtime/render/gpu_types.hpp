@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "glsl.hpp"
-#include "world/compiled_level.hpp"
+#include "world/no_index.hpp"
 
 namespace onelight::glsl {
 #include "gpu_interface.glsl"
@@ -22,9 +22,10 @@ using glsl::GpuObjectLighting;
 using glsl::GpuProbe;
 using glsl::GpuShadowView;
 
-inline constexpr uint32_t kNoIndex = glsl::NO_INDEX;
+using world::kNoIndex;
 inline constexpr uint32_t kMaxEffectOmnis = glsl::MAX_EFFECT_OMNIS;
-static_assert(kNoIndex == world::kNone, "one \"no index\" on both sides of the GPU interface");
+static_assert(glsl::NO_INDEX == world::kNoIndex,
+              "one \"no index\" on both sides of the GPU interface");
 
 static_assert(sizeof(GpuLight) == 80);
 static_assert(sizeof(FrameUniforms) == 144 + 80 * (kMaxEffectOmnis + 1));

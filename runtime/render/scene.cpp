@@ -211,7 +211,7 @@ void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
         uint32_t bits = 0;
         const TextureSlots slots = textureSlotsOf(m);
         for (uint32_t t = 0; t < slots.size(); ++t)
-            if (slots[t] != world::kNone) bits |= 1u << t;
+            if (slots[t] != world::kNoIndex) bits |= 1u << t;
         g.textures = glm::uvec4(bits, 0u, 0u, 0u);
         uint8_t cls = uint8_t(m.material_class);
         if (s.options.forceMaterialClass >= 0) cls = uint8_t(s.options.forceMaterialClass);
@@ -495,7 +495,7 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
         const TextureSlots slots = textureSlotsOf(m);
         MaterialTextures bound = placeholderTextures(s);
         for (uint32_t t = 0; t < slots.size(); ++t) {
-            if (slots[t] == world::kNone) continue;
+            if (slots[t] == world::kNoIndex) continue;
             const bool srgb =
                 int(t) == glsl::TEXTURE_BASE_COLOR || int(t) == glsl::TEXTURE_EMISSIVE;
             const uint32_t image = textureFor(s, loaded, slots[t], srgb);

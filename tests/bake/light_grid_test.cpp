@@ -26,7 +26,7 @@ TEST(LightGrid, CellsInsideSolidsAreMarked) {
         const world::LightGridCell& c = g.cells[i];
         if (x < 2) {
             EXPECT_EQ(c.flags, uint32_t(world::light_grid_cell_inside_solid)) << i;
-            EXPECT_EQ(c.dominant_primary, world::kNone);
+            EXPECT_EQ(c.dominant_primary, world::kNoIndex);
         } else {
             EXPECT_EQ(c.flags, 0u) << i;  // no flag
             EXPECT_EQ(c.dominant_primary, 0u);

@@ -52,7 +52,7 @@ std::vector<LevelTriangle> level_triangles(const world::CompiledLevel& level) {
     std::vector<LevelTriangle> out;
     for (uint32_t s = 0; s < level.surfaces.size(); ++s) {
         const world::Surface& surface = level.surfaces[s];
-        if (surface.chart == world::kNone) continue;
+        if (surface.chart == world::kNoIndex) continue;
         for (uint32_t i = surface.first_index; i < surface.first_index + surface.index_count;
              i += 3)
             out.push_back({s, i});

@@ -51,7 +51,7 @@ TEST(GamePrimaryPick, TheRendererDrawsThePickTheGameReports) {
             if (tick % 12 != 0) continue;
             render::drawFrame(renderer, game::frameInputsOf(session, transforms));
             const uint32_t picked = session.registry.get<game::DynamicLighting>(crate).pick.primary;
-            ASSERT_NE(picked, world::kNone) << "tick " << tick;
+            ASSERT_NE(picked, world::kNoIndex) << "tick " << tick;
             EXPECT_EQ(render::drawnPrimary(renderer, entity), picked)
                 << "tick " << tick << ": drawn with light "
                 << render::drawnPrimary(renderer, entity) << ", the game picked " << picked;

@@ -131,7 +131,7 @@ TEST(ProbePlacement, ClosedRoomsEachGetProbesAndTheWallBetweenNone) {
     // By component, lowest lattice index first: room A's 48, then room B's.
     for (size_t i = 0; i < probes.size(); ++i) {
         EXPECT_EQ(probes[i].position.x < 4.0f, i < 48) << i;
-        EXPECT_EQ(probes[i].entity, world::kNone);
+        EXPECT_EQ(probes[i].entity, world::kNoIndex);
         EXPECT_EQ(probes[i].boxMin, glm::vec3(0.0f));
         EXPECT_EQ(probes[i].boxMax, glm::vec3(0.0f));
     }
@@ -256,7 +256,7 @@ TEST(ProbePlacement, CamerasAddAProbeWhenFarFromOthersAndNotInSolid) {
     ASSERT_EQ(probes.size(), 9u);
     EXPECT_EQ(stats.cameraProbes, 1u);
     EXPECT_EQ(probes.back().position, glm::vec3(4.0f));
-    EXPECT_EQ(probes.back().entity, world::kNone);
+    EXPECT_EQ(probes.back().entity, world::kNoIndex);
 }
 
 // An authored probe inside a solid block is kept (the author asked for it) but flagged, so
@@ -333,7 +333,7 @@ TEST(ProbePlacement, AnEmptyLevelGetsOneProbeAtTheCentre) {
     const std::vector<ProbePlacement> probes = placeProbes(level, scene, {});
     ASSERT_EQ(probes.size(), 1u);
     EXPECT_EQ(probes[0].position, glm::vec3(1.0f));
-    EXPECT_EQ(probes[0].entity, world::kNone);
+    EXPECT_EQ(probes[0].entity, world::kNoIndex);
 }
 
 TEST(ProbePlacement, SameResultTwiceAndOnOneThread) {

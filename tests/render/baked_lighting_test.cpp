@@ -163,7 +163,7 @@ glm::vec3 lambertRadiance(const world::CompiledLevel& level, uint32_t material, 
     const glm::vec3 albedo = glsl::albedo_fromMetallic(glm::vec3(m.base_color), m.metallic);
     const glm::vec3 v = glm::normalize(eye - p);
     glm::vec3 radiance(0.0f);
-    if (primary != world::kNone) {
+    if (primary != world::kNoIndex) {
         const world::Light& l = level.lights.at(primary);
         const glsl::LightSample s = glsl::evaluatePunctualLight(
             int(l.type), l.color * l.intensity, 1.0f, l.range, l.position,
@@ -387,7 +387,7 @@ TEST(RenderBaked, SecondaryFollowsLightmap) {
         const glm::vec3 primaryOnly =
             lambertRadiance(level.level, surface.material, surface.primary_light, s.mask,
                             glm::vec3(0.0f), p, kUp, camera.position);
-        secondary[i] = lambertRadiance(level.level, surface.material, world::kNone, 0.0f,
+        secondary[i] = lambertRadiance(level.level, surface.material, world::kNoIndex, 0.0f,
                                        lightmapIrradiance(s, kUp), p, kUp, camera.position);
         measured[i] = pixel(gpu, px.x, px.y) - primaryOnly;
         std::printf(
@@ -456,7 +456,7 @@ TEST(RenderBaked, FarUmbraReadsBakedMaskNearUsesShadowMap) {
 // centres, cells inside solid skipped and the weights renormalised.
 struct GridAt {
     glm::vec3 up{0.0f};  // ambient cube, +y face (lux)
-    uint32_t dominant = world::kNone;
+    uint32_t dominant = world::kNoIndex;
     float visibility = 0.0f;  // of `dominant`, over the corners it dominates
     bool oneDominant = true;  // every used corner has the same dominant primary
 };
@@ -496,10 +496,10 @@ GridAt gridAt(const world::LightGrid& g, glm::vec3 p) {
 // grid's visibility (runtime-shadow radius 1 cm), as the C++ evaluation of the grid says.
 TEST(RenderBaked, DynamicObjectFollowsGrid) {
     const assets::LoadedLevel level = bake("baked_dynamic");
-    uint32_t entity = world::kNone;
+    uint32_t entity = world::kNoIndex;
     for (uint32_t e = 0; e < level.level.entities.size(); ++e)
         if (level.level.entities[e].flags & world::entity_dynamic) entity = e;
-    ASSERT_NE(entity, world::kNone);
+    ASSERT_NE(entity, world::kNoIndex);
     const render::Camera camera = testCamera();
     const glm::vec3 places[2] = {{4.3f, 0.5f, -3.6f}, {-3.4f, 0.5f, 1.6f}};
     glm::vec3 rendered[2], expected[2], secondary[2];
@@ -543,7 +543,7 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
             const uint32_t material = level.level.dynamic_meshes.at(0).material;
             expected[i] = lambertRadiance(level.level, material, g.dominant, g.visibility, g.up, p,
                                           kUp, camera.position);
-            secondary[i] = lambertRadiance(level.level, material, world::kNone, 0.0f, g.up, p, kUp,
+            secondary[i] = lambertRadiance(level.level, material, world::kNoIndex, 0.0f, g.up, p, kUp,
                                            camera.position);
             const size_t at = (size_t(px.y) * kWidth + px.x) * 4;
             rendered[i] = {frame.linearRgba[at], frame.linearRgba[at + 1],

@@ -148,7 +148,7 @@ TEST(RenderGolden, SunShadowsMaterialClassesAndDynamicObject) {
     world::updateDynamicPrimary(pick, place, candidates, [&](uint32_t light, glm::vec3 p) {
         return world::unshadowedIlluminance(level.level.lights[light], p);
     });
-    ASSERT_NE(pick.primary, world::kNone);
+    ASSERT_NE(pick.primary, world::kNoIndex);
     moved.primary = pick.primary;
     inputs.dynamicTransforms = {&moved, 1};
     const test::RenderedFrame r = test::renderOnce(level, smallFrame(), inputs);

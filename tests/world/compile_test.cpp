@@ -32,7 +32,7 @@ TEST(Compile, EmptyScene) {
 TEST(Compile, LevelWithoutLights) {
     const CompileResult result = compile_file(write_two_lamp_floor("dark", 4, 8.0, false));
     EXPECT_GT(result.level.surfaces.size(), 0u);
-    for (const Surface& s : result.level.surfaces) EXPECT_EQ(s.primary_light, kNone);
+    for (const Surface& s : result.level.surfaces) EXPECT_EQ(s.primary_light, kNoIndex);
     EXPECT_EQ(result.level.features.primary_count, 0u);
     expect_round_trip(result.level);
 }

@@ -324,8 +324,8 @@ TEST(ImportAssets, NormalTangentTest) {
     for (const world::MeshInstance& i : level.instances) triangles += i.indices.size() / 3;
     EXPECT_EQ(triangles, 7774u);
     ASSERT_EQ(level.materials.size(), 1u);
-    EXPECT_NE(level.materials[0].normal_texture, world::kNone);
-    EXPECT_NE(level.materials[0].base_color_texture, world::kNone);
+    EXPECT_NE(level.materials[0].normal_texture, world::kNoIndex);
+    EXPECT_NE(level.materials[0].base_color_texture, world::kNoIndex);
     ASSERT_EQ(level.images.size(), 3u);
     for (const world::Image& image : level.images)
         EXPECT_TRUE(std::filesystem::exists(image.uri)) << image.uri;

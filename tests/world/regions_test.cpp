@@ -119,7 +119,7 @@ TEST(Regions, NoPrimariesMeansNoAssignment) {
     const size_t count = geometry.triangles.size();
     assign_primary_regions(geometry, 0, make_unshadowed_primary_illuminance({}), {});
     ASSERT_EQ(geometry.triangles.size(), count);
-    for (const StaticTriangle& t : geometry.triangles) EXPECT_EQ(t.primary, kNone);
+    for (const StaticTriangle& t : geometry.triangles) EXPECT_EQ(t.primary, kNoIndex);
 }
 
 TEST(Regions, UnlitSurfacesStillGetAPrimary) {

@@ -51,7 +51,7 @@ void leaves_front_to_back(const BspView& bsp, const glm::dvec3& eye,
 struct RayHit {
     bool hit = false;
     double t = 0.0;             // distance along the unit direction, metres
-    uint32_t triangle = kNone;  // first index / 3
+    uint32_t triangle = kNoIndex;  // first index / 3
 };
 
 /// First triangle (either side) hit by origin + t * direction, 0 <= t <= t_max.
@@ -63,7 +63,7 @@ RayHit raycast_brute_force(const BspView& bsp, const glm::dvec3& origin,
 struct SweepHit {
     bool hit = false;
     double fraction = 1.0;  // of the segment travelled before contact, [0, 1]
-    uint32_t triangle = kNone;
+    uint32_t triangle = kNoIndex;
     glm::dvec3 normal{0.0};  // unit, from the contact point towards the sphere's centre
 };
 

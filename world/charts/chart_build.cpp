@@ -85,14 +85,14 @@ std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const Chart
     const double cos_limit = std::cos(options.max_normal_angle_degrees * 3.14159265358979 / 180.0);
 
     // Authored: one chart per instance that has TEXCOORD_1.
-    std::vector<uint32_t> authored_chart(geometry.instance_has_uv1.size(), kNone);
+    std::vector<uint32_t> authored_chart(geometry.instance_has_uv1.size(), kNoIndex);
     for (uint32_t t = 0; t < geometry.triangles.size(); ++t) {
         StaticTriangle& triangle = geometry.triangles[t];
         if (triangle.instance >= geometry.instance_has_uv1.size() ||
             !geometry.instance_has_uv1[triangle.instance])
             continue;
         uint32_t& chart = authored_chart[triangle.instance];
-        if (chart == kNone) {
+        if (chart == kNoIndex) {
             chart = static_cast<uint32_t>(shapes.size());
             ChartShape shape;
             shape.authored = true;
@@ -105,7 +105,7 @@ std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const Chart
 
     const std::vector<std::vector<uint32_t>> neighbours = edge_neighbours(geometry);
     for (uint32_t seed = 0; seed < geometry.triangles.size(); ++seed) {
-        if (geometry.triangles[seed].chart != kNone) continue;
+        if (geometry.triangles[seed].chart != kNoIndex) continue;
         ChartShape shape;
         shape.instance = geometry.triangles[seed].instance;
         shape.normal = unit_normal(geometry, geometry.triangles[seed]);
@@ -131,7 +131,7 @@ std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const Chart
             shape.triangles.push_back(t);
             for (uint32_t g : neighbours[t]) {
                 const StaticTriangle& other = geometry.triangles[g];
-                if (other.chart != kNone || other.primary != primary ||
+                if (other.chart != kNoIndex || other.primary != primary ||
                     other.instance != shape.instance)
                     continue;
                 if (glm::dot(unit_normal(geometry, other), shape.normal) < cos_limit) continue;

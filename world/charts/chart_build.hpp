@@ -21,7 +21,7 @@ struct ChartOptions {
 /// A generated chart before packing: its triangles and its planar projection.
 struct ChartShape {
     std::vector<uint32_t> triangles;  // into StaticGeometry::triangles
-    uint32_t instance = kNone;
+    uint32_t instance = kNoIndex;
     bool authored = false;
     glm::dvec3 normal{0.0}, axis_u{0.0}, axis_v{0.0};
     glm::dvec2 min_uv{0.0}, max_uv{0.0};  // metres along axis_u / axis_v

@@ -96,7 +96,7 @@ ChartLayout pack_charts(StaticGeometry& geometry, const std::vector<ChartShape>&
     }
 
     // Give each vertex one chart, then its lightmap coordinates.
-    std::vector<uint32_t> vertex_chart(geometry.vertices.size(), kNone);
+    std::vector<uint32_t> vertex_chart(geometry.vertices.size(), kNoIndex);
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> copies;
     double texel_area = 0.0;
     for (StaticTriangle& t : geometry.triangles) {
@@ -106,7 +106,7 @@ ChartLayout pack_charts(StaticGeometry& geometry, const std::vector<ChartShape>&
         glm::dvec2 texel[3];
         for (size_t k = 0; k < 3; ++k) {
             uint32_t& id = t.v[k];
-            if (vertex_chart[id] == kNone) {
+            if (vertex_chart[id] == kNoIndex) {
                 vertex_chart[id] = t.chart;
             } else if (vertex_chart[id] != t.chart) {
                 const auto [it, inserted] = copies.emplace(

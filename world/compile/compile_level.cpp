@@ -37,7 +37,7 @@ void build_surfaces(const StaticGeometry& geometry, const BspBuild& bsp,
                     const std::vector<uint32_t>& light_of_primary, uint32_t primary_count,
                     const PrimaryIlluminanceFn& illuminance, const ChartLayout& charts,
                     CompiledLevel& level) {
-    std::vector<uint32_t> new_index(geometry.vertices.size(), kNone);
+    std::vector<uint32_t> new_index(geometry.vertices.size(), kNoIndex);
     level.bsp_leaves = bsp.leaves;
     for (size_t leaf = 0; leaf < level.bsp_leaves.size(); ++leaf) {
         BspLeaf& l = level.bsp_leaves[leaf];
@@ -57,7 +57,7 @@ void build_surfaces(const StaticGeometry& geometry, const BspBuild& bsp,
             Surface s;
             s.first_index = static_cast<uint32_t>(level.indices.size());
             s.material = first.material;
-            s.primary_light = first.primary == kNone ? kNone : light_of_primary[first.primary];
+            s.primary_light = first.primary == kNoIndex ? kNoIndex : light_of_primary[first.primary];
             s.chart = first.chart;
             const Chart& c = charts.charts[first.chart];
             s.atlas = c.atlas;
@@ -76,7 +76,7 @@ void build_surfaces(const StaticGeometry& geometry, const BspBuild& bsp,
                     break;
                 members.push_back(t);
                 for (uint32_t id : t.v) {
-                    if (new_index[id] == kNone) {
+                    if (new_index[id] == kNoIndex) {
                         new_index[id] = static_cast<uint32_t>(level.vertices.size());
                         level.vertices.push_back(to_vertex(geometry.vertices[id]));
                     }
@@ -220,7 +220,7 @@ CompileResult compile_level(const SourceLevel& source, const CompileOptions& opt
     stats.bsp_splits = bsp.splits;
     std::vector<uint8_t> used(source.lights.size(), 0);
     for (const Surface& s : level.surfaces)
-        if (s.primary_light != kNone) used[s.primary_light] = 1;
+        if (s.primary_light != kNoIndex) used[s.primary_light] = 1;
     stats.primaries_used = static_cast<uint32_t>(std::count(used.begin(), used.end(), 1));
     stats.charts = charts.charts.size();
     stats.authored_charts = static_cast<uint64_t>(std::count_if(

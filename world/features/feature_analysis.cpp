@@ -17,10 +17,10 @@ Features analyse_features(const CompiledLevel& level, bool has_authored_grid,
         if (!material_used[i]) continue;
         const Material& m = level.materials[i];
         f.material_classes |= 1u << static_cast<uint32_t>(m.material_class);
-        if (m.normal_texture != kNone) f.flags |= feature_normal_maps;
+        if (m.normal_texture != kNoIndex) f.flags |= feature_normal_maps;
         if (m.alpha_mode == AlphaMode::mask) f.flags |= feature_alpha_mask;
         if (m.alpha_mode == AlphaMode::blend) f.flags |= feature_alpha_blend;
-        if (m.emissive != glm::vec3(0.0f) || m.emissive_texture != kNone)
+        if (m.emissive != glm::vec3(0.0f) || m.emissive_texture != kNoIndex)
             f.flags |= feature_emissive;
         if (m.double_sided) f.flags |= feature_double_sided;
         if (m.material_class != MaterialClass::lambert) f.flags |= feature_probes;

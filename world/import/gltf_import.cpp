@@ -78,10 +78,10 @@ struct Importer {
     std::string folder;
     SourceLevel level;
     UseOrder materials, textures, images;
-    uint32_t default_material = kNone;
+    uint32_t default_material = kNoIndex;
 
     uint32_t use_texture(int gltf_texture) {
-        if (gltf_texture < 0) return kNone;
+        if (gltf_texture < 0) return kNoIndex;
         if (static_cast<size_t>(gltf_texture) >= model.textures.size())
             throw Error(file + ": texture index " + std::to_string(gltf_texture) +
                         " is out of range");
@@ -90,7 +90,7 @@ struct Importer {
 
     uint32_t use_material(int gltf_material) {
         if (gltf_material < 0) {
-            if (default_material == kNone) default_material = materials.use(-1);
+            if (default_material == kNoIndex) default_material = materials.use(-1);
             return default_material;
         }
         if (static_cast<size_t>(gltf_material) >= model.materials.size())
@@ -190,7 +190,7 @@ struct Importer {
                 instance.vertices = std::move(imported.vertices);
                 instance.indices = std::move(imported.indices);
                 instance.has_uv1 = imported.has_uv1;
-                instance.dynamic = entity != kNone;
+                instance.dynamic = entity != kNoIndex;
                 instance.entity = entity;
                 level.instances.push_back(std::move(instance));
             }
@@ -288,7 +288,7 @@ SourceLevel import_gltf(const std::string& path) {
                     (error.empty() ? std::string("unknown error") : first_line(error)));
 
     Importer importer{model, path, std::filesystem::path(path).parent_path().string(), {}, {}, {},
-                      {},    kNone};
+                      {},    kNoIndex};
     importer.level.source_path = path;
     std::vector<int> roots;
     if (!model.scenes.empty()) {
@@ -307,7 +307,7 @@ SourceLevel import_gltf(const std::string& path) {
             if (!is_child[i]) roots.push_back(static_cast<int>(i));
     }
     std::vector<bool> seen(model.nodes.size(), false);
-    for (int root : roots) importer.visit(root, glm::dmat4(1.0), kNone, seen, 0);
+    for (int root : roots) importer.visit(root, glm::dmat4(1.0), kNoIndex, seen, 0);
     importer.resolve_materials_and_textures();
     return std::move(importer.level);
 }

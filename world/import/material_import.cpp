@@ -34,7 +34,7 @@ float gloss_from_roughness(float roughness) {
 }
 
 MaterialClass classify_material(const Material& material) {
-    const bool textured = material.metallic_roughness_texture != kNone;
+    const bool textured = material.metallic_roughness_texture != kNoIndex;
     if (!textured && material.metallic >= 1.0f) return MaterialClass::metal;
     if (material.metallic <= 0.0f) {
         if (!textured && material.roughness >= 1.0f) return MaterialClass::lambert;

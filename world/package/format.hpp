@@ -18,6 +18,8 @@
 #include <bit>
 #include <cstdint>
 
+#include "world/no_index.hpp"
+
 namespace onelight::package {
 
 static_assert(std::endian::native == std::endian::little,
@@ -26,7 +28,7 @@ static_assert(std::endian::native == std::endian::little,
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
 inline constexpr uint32_t kVersion = 2;          // 2: DiskLevel holds the sky
-inline constexpr uint32_t kNoIndex = 0xFFFFFFFFu;
+using world::kNoIndex;                           // world/no_index.hpp
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
 

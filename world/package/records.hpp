@@ -604,7 +604,7 @@ inline void from_disk_grid_header(const DiskLightGridHeader& d, world::BakedLigh
 inline DiskLightGridCell to_disk(const world::LightGridCell& c) {
     DiskLightGridCell d{};
     for (size_t f = 0; f < 6; ++f) put(d.ambient_cube[f], c.ambient_cube[f]);
-    d.dominant_primary = c.dominant_primary == world::kNone ? kNoIndex : c.dominant_primary;
+    d.dominant_primary = c.dominant_primary == world::kNoIndex ? kNoIndex : c.dominant_primary;
     d.primary_visibility = c.primary_visibility;
     d.flags = c.flags;
     return d;
@@ -614,7 +614,7 @@ inline DiskLightGridCell to_disk(const world::LightGridCell& c) {
 inline world::LightGridCell from_disk(const DiskLightGridCell& d) {
     world::LightGridCell c;
     for (size_t f = 0; f < 6; ++f) c.ambient_cube[f] = vec(d.ambient_cube[f]);
-    c.dominant_primary = d.dominant_primary == kNoIndex ? world::kNone : d.dominant_primary;
+    c.dominant_primary = d.dominant_primary == kNoIndex ? world::kNoIndex : d.dominant_primary;
     c.primary_visibility = d.primary_visibility;
     c.flags = d.flags;
     return c;
@@ -631,7 +631,7 @@ inline DiskProbe to_disk(const world::EnvironmentProbe& p, uint32_t first_texel)
     d.mip_count = p.mip_count;
     d.first_texel = first_texel;
     d.texel_count = static_cast<uint32_t>(p.texels.size());
-    d.entity = p.entity == world::kNone ? kNoIndex : p.entity;
+    d.entity = p.entity == world::kNoIndex ? kNoIndex : p.entity;
     return d;
 }
 
@@ -645,7 +645,7 @@ inline world::EnvironmentProbe from_disk(const DiskProbe& d, std::span<const uin
     p.irradiance_average = vec(d.irradiance_average);
     p.face_size = d.face_size;
     p.mip_count = d.mip_count;
-    p.entity = d.entity == kNoIndex ? world::kNone : d.entity;
+    p.entity = d.entity == kNoIndex ? world::kNoIndex : d.entity;
     const std::span<const uint8_t> bytes =
         slice(texel_bytes, uint64_t(d.first_texel) * 4, uint64_t(d.texel_count) * 4);
     p.texels.resize(bytes.size() / 4);

@@ -20,7 +20,7 @@ namespace onelight::world {
 using PrimaryIlluminanceFn = std::function<void(const glm::dvec3& position, const glm::vec3& normal,
                                                 std::span<double> illuminance)>;
 
-/// Index of the largest illuminance (lowest index on ties); kNone when every value is zero.
+/// Index of the largest illuminance (lowest index on ties); kNoIndex when every value is zero.
 uint32_t dominant_primary(std::span<const double> illuminance);
 
 /// Illuminance without visibility: directional E = I cos; point E = I cos / d^2 with the

@@ -20,7 +20,7 @@ struct RegionTraits : OpenMesh::DefaultTraits {
 using RegionMesh = OpenMesh::TriMesh_ArrayKernelT<RegionTraits>;
 
 constexpr uint32_t kBoundary = 0xFFFFFFFEu;  // vertex label: on a cut, belongs to both sides
-constexpr uint32_t kUnlit = kNone;           // no primary reaches the point
+constexpr uint32_t kUnlit = kNoIndex;           // no primary reaches the point
 
 /// Evaluates the dominant primary, reusing one scratch buffer.
 struct Dominance {
@@ -327,7 +327,7 @@ RegionStats assign_primary_regions(StaticGeometry& geometry, uint32_t primary_co
     RegionStats stats;
     const size_t before = geometry.triangles.size();
     if (primary_count == 0) {
-        for (StaticTriangle& t : geometry.triangles) t.primary = kNone;
+        for (StaticTriangle& t : geometry.triangles) t.primary = kNoIndex;
         return stats;
     }
     Dominance dominance{illuminance, std::vector<double>(primary_count, 0.0)};

@@ -28,7 +28,7 @@ struct RegionStats {
     uint32_t triangles_added = 0;     // triangles after minus triangles before
 };
 
-/// Sets StaticTriangle::primary on every triangle (kNone only when primary_count == 0),
+/// Sets StaticTriangle::primary on every triangle (kNoIndex only when primary_count == 0),
 /// splitting triangles as needed. Total area is preserved.
 RegionStats assign_primary_regions(StaticGeometry& geometry, uint32_t primary_count,
                                    const PrimaryIlluminanceFn& illuminance,

@@ -48,7 +48,7 @@ double illuminance_of(const Light& light, const glm::dvec3& position, const glm:
 }  // namespace
 
 uint32_t dominant_primary(std::span<const double> illuminance) {
-    uint32_t best = kNone;
+    uint32_t best = kNoIndex;
     double best_value = 0.0;
     for (size_t i = 0; i < illuminance.size(); ++i) {
         if (illuminance[i] > best_value) {
