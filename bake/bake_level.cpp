@@ -18,7 +18,7 @@
 namespace onelight::bake {
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
+double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -28,140 +28,140 @@ constexpr uint32_t kDominantShadowSamples = 8;
 
 }  // namespace
 
-const char* quality_name(BakeQuality quality) {
+const char* qualityName(BakeQuality quality) {
     switch (quality) {
-        case BakeQuality::draft:
+        case BakeQuality::kDraft:
             return "draft";
-        case BakeQuality::high:
+        case BakeQuality::kHigh:
             return "high";
         default:
             return "default";
     }
 }
 
-bool parse_quality(const std::string& text, BakeQuality& quality) {
+bool parseQuality(const std::string& text, BakeQuality& quality) {
     if (text == "draft")
-        quality = BakeQuality::draft;
+        quality = BakeQuality::kDraft;
     else if (text == "default")
-        quality = BakeQuality::normal;
+        quality = BakeQuality::kDefault;
     else if (text == "high")
-        quality = BakeQuality::high;
+        quality = BakeQuality::kHigh;
     else
         return false;
     return true;
 }
 
-LightmapSettings lightmap_settings(const BakeOptions& options) {
+LightmapSettings lightmapSettings(const BakeOptions& options) {
     LightmapSettings s;
     switch (options.quality) {
-        case BakeQuality::draft:
-            s.shadow_samples = 8;
-            s.indirect_samples = 128;
+        case BakeQuality::kDraft:
+            s.shadowSamples = 8;
+            s.indirectSamples = 128;
             break;
-        case BakeQuality::normal:
-            s.shadow_samples = 16;
-            s.indirect_samples = 512;
+        case BakeQuality::kDefault:
+            s.shadowSamples = 16;
+            s.indirectSamples = 512;
             break;
-        case BakeQuality::high:
-            s.shadow_samples = 32;
-            s.indirect_samples = 2048;
+        case BakeQuality::kHigh:
+            s.shadowSamples = 32;
+            s.indirectSamples = 2048;
             break;
     }
-    if (options.shadow_samples) s.shadow_samples = options.shadow_samples;
-    if (options.indirect_samples) s.indirect_samples = options.indirect_samples;
+    if (options.shadowSamples) s.shadowSamples = options.shadowSamples;
+    if (options.indirectSamples) s.indirectSamples = options.indirectSamples;
     return s;
 }
 
-GridSettings grid_settings(const BakeOptions& options) {
+GridSettings gridSettings(const BakeOptions& options) {
     GridSettings g;
-    const LightmapSettings l = lightmap_settings(options);
-    g.cell_size = options.grid_cell_size;
-    g.shadow_samples = l.shadow_samples;
-    g.samples = options.grid_samples ? options.grid_samples : l.indirect_samples;
+    const LightmapSettings l = lightmapSettings(options);
+    g.cellSize = options.gridCellSize;
+    g.shadowSamples = l.shadowSamples;
+    g.samples = options.gridSamples ? options.gridSamples : l.indirectSamples;
     return g;
 }
 
-ProbeCaptureSettings probe_settings(const BakeOptions& options) {
+ProbeCaptureSettings probeSettings(const BakeOptions& options) {
     ProbeCaptureSettings p;
     switch (options.quality) {
-        case BakeQuality::draft:
+        case BakeQuality::kDraft:
             p.faceSize = 32;
             p.samplesPerTexel = 16;
             break;
-        case BakeQuality::normal:
+        case BakeQuality::kDefault:
             p.faceSize = 64;
             p.samplesPerTexel = 64;
             break;
-        case BakeQuality::high:
+        case BakeQuality::kHigh:
             p.faceSize = 128;
             p.samplesPerTexel = 256;
             break;
     }
-    if (options.probe_face_size) p.faceSize = options.probe_face_size;
-    if (options.probe_samples) p.samplesPerTexel = options.probe_samples;
+    if (options.probeFaceSize) p.faceSize = options.probeFaceSize;
+    if (options.probeSamples) p.samplesPerTexel = options.probeSamples;
     return p;
 }
 
-ShardRange shard_range(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
-                       uint32_t count) {
+ShardRange shardRange(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
+                      uint32_t count) {
     ShardRange r;
-    r.probe_begin = probes * index / count;
-    r.probe_end = probes * (index + 1) / count;
-    r.texel_begin = texels * index / count;
-    r.texel_end = texels * (index + 1) / count;
-    r.cell_begin = cells * index / count;
-    r.cell_end = cells * (index + 1) / count;
+    r.probeBegin = probes * index / count;
+    r.probeEnd = probes * (index + 1) / count;
+    r.texelBegin = texels * index / count;
+    r.texelEnd = texels * (index + 1) / count;
+    r.cellBegin = cells * index / count;
+    r.cellEnd = cells * (index + 1) / count;
     return r;
 }
 
-BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& options) {
-    if (options.shard_count == 0 || options.shard_index >= options.shard_count)
-        throw std::runtime_error("shard " + std::to_string(options.shard_index) + "/" +
-                                 std::to_string(options.shard_count) + "; expected index < count");
+BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options) {
+    if (options.shardCount == 0 || options.shardIndex >= options.shardCount)
+        throw std::runtime_error("shard " + std::to_string(options.shardIndex) + "/" +
+                                 std::to_string(options.shardCount) + "; expected index < count");
     BakeResult result;
     BakeReport& report = result.report;
-    report.level = source.source_path;
-    report.quality = quality_name(options.quality);
+    report.level = source.sourcePath;
+    report.quality = qualityName(options.quality);
     report.threads = static_cast<uint32_t>(
         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-    report.shard_index = options.shard_index;
-    report.shard_count = options.shard_count;
+    report.shardIndex = options.shardIndex;
+    report.shardCount = options.shardCount;
 
     // 1. The Embree scene of the static world, shared by every stage.
     auto start = std::chrono::steady_clock::now();
     const EmbreeDevice device;
-    const world::SplitLevel split = world::split_static_dynamic(source);
-    const BakeScene scene(device, split.static_geometry, source.materials);
-    const BakeLights lights = make_bake_lights(source.lights, options.light_sizes,
-                                               options.sky_radiance.value_or(source.sky_radiance));
-    report.stages.push_back({"scene", seconds_since(start), {}, scene.triangle_count()});
-    report.triangles = scene.triangle_count();
+    const world::SplitLevel split = world::splitStaticDynamic(source);
+    const BakeScene scene(device, split.staticGeometry, source.materials);
+    const BakeLights lights = makeBakeLights(source.lights, options.lightSizes,
+                                             options.skyRadiance.value_or(source.skyRadiance));
+    report.stages.push_back({"scene", secondsSince(start), {}, scene.triangleCount()});
+    report.triangles = scene.triangleCount();
 
     // 2. World compile; its region splitter asks the shadowed dominant primary.
     start = std::chrono::steady_clock::now();
-    AtomicRayCount dominant_rays;
+    AtomicRayCount dominantRays;
     const world::PrimaryIlluminanceFn dominant =
-        make_shadowed_primary_illuminance(scene, lights, kDominantShadowSamples, &dominant_rays);
+        makeShadowedPrimaryIlluminance(scene, lights, kDominantShadowSamples, &dominantRays);
     {
-        Progress progress("compile", 1, options.show_progress);
-        world::CompileResult compiled = world::compile_level(source, options.compile, &dominant);
+        Progress progress("compile", 1, options.showProgress);
+        world::CompileResult compiled = world::compileLevel(source, options.compile, &dominant);
         result.level = std::move(compiled.level);
-        result.compile_stats = compiled.stats;
+        result.compileStats = compiled.stats;
         progress.advance(1);
     }
-    StageReport compile_stage{"compile", seconds_since(start), {}, result.level.surfaces.size()};
-    compile_stage.rays.shadow = dominant_rays.shadow.load();
-    report.stages.push_back(compile_stage);
+    StageReport compileStage{"compile", secondsSince(start), {}, result.level.surfaces.size()};
+    compileStage.rays.shadow = dominantRays.shadow.load();
+    report.stages.push_back(compileStage);
     const world::CompiledLevel& level = result.level;
 
     // 3. Lightmaps.
-    const LightmapSettings lm = lightmap_settings(options);
-    const std::vector<TexelSample> samples = place_texels(level);
-    const uint64_t texel_count = total_texels(level);
-    world::LightGrid grid = layout_light_grid(level, grid_settings(options));
-    const world::LightGrid grid_layout = grid;
+    const LightmapSettings lm = lightmapSettings(options);
+    const std::vector<TexelSample> samples = placeTexels(level);
+    const uint64_t texelCount = totalTexels(level);
+    world::LightGrid grid = layoutLightGrid(level, gridSettings(options));
+    const world::LightGrid gridLayout = grid;
     const std::vector<ProbePlacement> placements =
-        placeProbes(level, scene, ProbePlacementSettings{options.probe_spacing});
+        placeProbes(level, scene, ProbePlacementSettings{options.probeSpacing});
     for (const ProbePlacement& p : placements)
         if (p.insideSolid)
             report.warnings.push_back(
@@ -170,79 +170,77 @@ BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& optio
                 "' at (" + std::to_string(p.position.x) + ", " + std::to_string(p.position.y) +
                 ", " + std::to_string(p.position.z) +
                 ") is inside solid geometry: its reflections will be dark; move it into the open");
-    const ShardRange range = shard_range(texel_count, grid.cells.size(), placements.size(),
-                                         options.shard_index, options.shard_count);
+    const ShardRange range = shardRange(texelCount, grid.cells.size(), placements.size(),
+                                        options.shardIndex, options.shardCount);
     world::BakedLighting& baked = result.baked;
-    baked.texels.assign(texel_count, world::LightmapTexel{});
-    baked.shadow_mask.assign(texel_count, 0);
-    baked.shard_index = options.shard_index;
-    baked.shard_count = options.shard_count;
+    baked.texels.assign(texelCount, world::LightmapTexel{});
+    baked.shadowMask.assign(texelCount, 0);
+    baked.shardIndex = options.shardIndex;
+    baked.shardCount = options.shardCount;
     start = std::chrono::steady_clock::now();
     {
         uint64_t work = 0;
         for (const TexelSample& s : samples)
-            work += s.texel >= range.texel_begin && s.texel < range.texel_end;
-        Progress progress("lightmaps", work, options.show_progress);
-        const LightmapStats stats =
-            bake_lightmap_texels(scene, lights, level, samples, lm, range.texel_begin,
-                                 range.texel_end, baked, &progress);
+            work += s.texel >= range.texelBegin && s.texel < range.texelEnd;
+        Progress progress("lightmaps", work, options.showProgress);
+        const LightmapStats stats = bakeLightmapTexels(
+            scene, lights, level, samples, lm, range.texelBegin, range.texelEnd, baked, &progress);
         progress.finish();
-        report.stages.push_back(
-            {"lightmaps", seconds_since(start), stats.rays, stats.texels_baked});
-        report.texels_sampled = stats.texels_baked;
-        report.texels_moved = stats.texels_moved;
-        report.lightmap_mean_relative_noise = stats.mean_relative_noise;
+        report.stages.push_back({"lightmaps", secondsSince(start), stats.rays, stats.texelsBaked});
+        report.texelsSampled = stats.texelsBaked;
+        report.texelsMoved = stats.texelsMoved;
+        report.lightmapMeanRelativeNoise = stats.meanRelativeNoise;
     }
-    report.texels_total = texel_count;
-    report.shadow_samples_per_light = lm.shadow_samples;
-    report.indirect_samples_per_texel = lm.indirect_samples;
+    report.texelsTotal = texelCount;
+    report.shadowSamplesPerLight = lm.shadowSamples;
+    report.indirectSamplesPerTexel = lm.indirectSamples;
 
     // 4. Light grid.
     start = std::chrono::steady_clock::now();
     {
-        const GridSettings gs = grid_settings(options);
-        Progress progress("grid", range.cell_end - range.cell_begin, options.show_progress);
+        const GridSettings gs = gridSettings(options);
+        Progress progress("grid", range.cellEnd - range.cellBegin, options.showProgress);
         const GridStats stats =
-            bake_light_grid(scene, lights, gs, range.cell_begin, range.cell_end, grid, &progress);
+            bakeLightGrid(scene, lights, gs, range.cellBegin, range.cellEnd, grid, &progress);
         progress.finish();
-        report.stages.push_back({"grid", seconds_since(start), stats.rays, stats.cells_baked});
-        report.grid_cells = grid.cells.size();
-        report.grid_cells_inside = stats.cells_inside;
-        report.grid_samples_per_cell = gs.samples;
+        report.stages.push_back({"grid", secondsSince(start), stats.rays, stats.cellsBaked});
+        report.gridCells = grid.cells.size();
+        report.gridCellsInside = stats.cellsInside;
+        report.gridSamplesPerCell = gs.samples;
     }
     baked.grid = std::move(grid);
 
     // 5. Environment probes (only where the level has them: placeProbes decides).
     start = std::chrono::steady_clock::now();
     if (!placements.empty()) {
-        const ProbeCaptureSettings ps = probe_settings(options);
+        const ProbeCaptureSettings ps = probeSettings(options);
         RayCounts rays;
-        const std::vector<glm::vec3> average = probe_average_irradiance(
-            scene, lights, grid_settings(options), grid_layout, placements, rays);
-        baked.probes = bakeProbes(scene, lights, placements, average, ps, range.probe_begin,
-                                  range.probe_end, options.show_progress, rays);
-        report.stages.push_back({"probes", seconds_since(start), rays, baked.probes.size()});
-        report.probes_total = placements.size();
-        report.probes_baked = baked.probes.size();
-        report.probe_face_size = ps.faceSize;
-        report.probe_samples_per_texel = ps.samplesPerTexel;
+        const std::vector<glm::vec3> average = probeAverageIrradiance(
+            scene, lights, gridSettings(options), gridLayout, placements, rays);
+        baked.probes = bakeProbes(scene, lights, placements, average, ps, range.probeBegin,
+                                  range.probeEnd, options.showProgress, rays);
+        report.stages.push_back({"probes", secondsSince(start), rays, baked.probes.size()});
+        report.probesTotal = placements.size();
+        report.probesBaked = baked.probes.size();
+        report.probeFaceSize = ps.faceSize;
+        report.probeSamplesPerTexel = ps.samplesPerTexel;
         if (!baked.probes.empty())
-            report.probe_bytes = package::encode_probe_section(baked.probes).bytes.size();
+            report.probeBytes = package::encodeProbeSection(baked.probes).bytes.size();
     }
 
     // 6. Finish (a whole bake only; parts are finished by merge).
     start = std::chrono::steady_clock::now();
-    if (options.shard_count == 1) finish_baked_lighting(level, baked);
-    report.stages.push_back({"dilate", seconds_since(start), {}, texel_count});
-    report.peak_memory_bytes = peak_memory_bytes();
+    if (options.shardCount == 1) finishBakedLighting(level, baked);
+    report.stages.push_back({"dilate", secondsSince(start), {}, texelCount});
+    report.peakMemoryBytes = peakMemoryBytes();
     return result;
 }
 
-std::vector<glm::vec3> probe_average_irradiance(const BakeScene& scene, const BakeLights& lights,
-                                                const GridSettings& settings,
-                                                const world::LightGrid& layout,
-                                                const std::vector<ProbePlacement>& probes,
-                                                RayCounts& rays) {
+std::vector<glm::vec3> probeAverageIrradiance(const BakeScene& scene, const BakeLights& lights,
+                                              const GridSettings& settings,
+                                              const world::LightGrid& layout,
+                                              const std::vector<ProbePlacement>& probes,
+                                              RayCounts& rays) {
     std::vector<glm::vec3> average(probes.size(), glm::vec3(0.0f));
     if (layout.cells.empty()) return average;
     world::LightGrid scratch = layout;
@@ -252,7 +250,7 @@ std::vector<glm::vec3> probe_average_irradiance(const BakeScene& scene, const Ba
         for (size_t k = 0; k < corners.cells.size(); ++k) {
             const uint32_t c = corners.cells[k];
             if (corners.weights[k] <= 0.0f || baked[c]) continue;
-            rays += bake_light_grid(scene, lights, settings, c, c + 1, scratch, nullptr).rays;
+            rays += bakeLightGrid(scene, lights, settings, c, c + 1, scratch, nullptr).rays;
             baked[c] = 1;
         }
         average[i] =
@@ -261,57 +259,57 @@ std::vector<glm::vec3> probe_average_irradiance(const BakeScene& scene, const Ba
     return average;
 }
 
-void finish_baked_lighting(const world::CompiledLevel& level, world::BakedLighting& baked) {
-    dilate_lightmaps(level, baked);
-    baked.shard_index = 0;
-    baked.shard_count = 1;
+void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked) {
+    dilateLightmaps(level, baked);
+    baked.shardIndex = 0;
+    baked.shardCount = 1;
 }
 
-world::BakedLighting merge_baked_lighting(const world::CompiledLevel& level,
-                                          std::vector<world::BakedLighting> parts) {
+world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
+                                        std::vector<world::BakedLighting> parts) {
     if (parts.empty()) throw world::Error("merge: no parts given");
-    const uint32_t count = parts[0].shard_count;
+    const uint32_t count = parts[0].shardCount;
     if (parts.size() != count)
         throw world::Error("merge: " + std::to_string(parts.size()) +
                            " parts given; the first is a part of " + std::to_string(count));
-    std::vector<const world::BakedLighting*> by_index(count, nullptr);
-    const uint64_t texels = total_texels(level);
+    std::vector<const world::BakedLighting*> byIndex(count, nullptr);
+    const uint64_t texels = totalTexels(level);
     for (const world::BakedLighting& p : parts) {
-        if (p.shard_count != count || p.shard_index >= count)
-            throw world::Error("merge: a part is shard " + std::to_string(p.shard_index) + "/" +
-                               std::to_string(p.shard_count) + "; expected a part of " +
+        if (p.shardCount != count || p.shardIndex >= count)
+            throw world::Error("merge: a part is shard " + std::to_string(p.shardIndex) + "/" +
+                               std::to_string(p.shardCount) + "; expected a part of " +
                                std::to_string(count));
-        if (by_index[p.shard_index])
-            throw world::Error("merge: shard " + std::to_string(p.shard_index) + " given twice");
-        if (p.texels.size() != texels || p.shadow_mask.size() != texels ||
+        if (byIndex[p.shardIndex])
+            throw world::Error("merge: shard " + std::to_string(p.shardIndex) + " given twice");
+        if (p.texels.size() != texels || p.shadowMask.size() != texels ||
             p.grid.cells.size() != parts[0].grid.cells.size() || p.grid.dims != parts[0].grid.dims)
-            throw world::Error("merge: shard " + std::to_string(p.shard_index) +
+            throw world::Error("merge: shard " + std::to_string(p.shardIndex) +
                                " does not match the level (texel or grid cell counts differ)");
-        by_index[p.shard_index] = &p;
+        byIndex[p.shardIndex] = &p;
     }
     world::BakedLighting merged = parts[0];
     for (uint32_t i = 0; i < count; ++i) {
-        const world::BakedLighting& p = *by_index[i];
-        const ShardRange r = shard_range(texels, p.grid.cells.size(), 0, i, count);
-        for (uint64_t t = r.texel_begin; t < r.texel_end; ++t) {
+        const world::BakedLighting& p = *byIndex[i];
+        const ShardRange r = shardRange(texels, p.grid.cells.size(), 0, i, count);
+        for (uint64_t t = r.texelBegin; t < r.texelEnd; ++t) {
             merged.texels[t] = p.texels[t];
-            merged.shadow_mask[t] = p.shadow_mask[t];
+            merged.shadowMask[t] = p.shadowMask[t];
         }
-        for (uint64_t c = r.cell_begin; c < r.cell_end; ++c) merged.grid.cells[c] = p.grid.cells[c];
+        for (uint64_t c = r.cellBegin; c < r.cellEnd; ++c) merged.grid.cells[c] = p.grid.cells[c];
     }
     // Each part holds its contiguous range of the probes: in shard order they are the whole list.
     merged.probes.clear();
     for (uint32_t i = 0; i < count; ++i)
-        merged.probes.insert(merged.probes.end(), by_index[i]->probes.begin(),
-                             by_index[i]->probes.end());
-    finish_baked_lighting(level, merged);
+        merged.probes.insert(merged.probes.end(), byIndex[i]->probes.begin(),
+                             byIndex[i]->probes.end());
+    finishBakedLighting(level, merged);
     return merged;
 }
 
-std::vector<uint8_t> package_bytes(const world::CompiledLevel& level,
-                                   const world::BakedLighting& baked) {
-    const std::vector<package::RawSection> sections = package::encode_baked_sections(baked);
-    return package::serialize_package(level, sections);
+std::vector<uint8_t> packageBytes(const world::CompiledLevel& level,
+                                  const world::BakedLighting& baked) {
+    const std::vector<package::RawSection> sections = package::encodeBakedSections(baked);
+    return package::serializePackage(level, sections);
 }
 
 }  // namespace onelight::bake

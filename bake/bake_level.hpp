@@ -23,73 +23,73 @@
 
 namespace onelight::bake {
 
-enum class BakeQuality { draft, normal, high };
+enum class BakeQuality { kDraft, kDefault, kHigh };
 
 /// "draft", "default", "high".
-const char* quality_name(BakeQuality quality);
-bool parse_quality(const std::string& text, BakeQuality& quality);
+const char* qualityName(BakeQuality quality);
+bool parseQuality(const std::string& text, BakeQuality& quality);
 
 struct BakeOptions {
-    BakeQuality quality = BakeQuality::normal;
+    BakeQuality quality = BakeQuality::kDefault;
     world::CompileOptions compile;
-    LightSizes light_sizes;
-    std::optional<glm::vec3> sky_radiance;  // cd/m^2, uniform sky; unset: the level's
-    float grid_cell_size = 1.0f;            // metres
-    float probe_spacing = 8.0f;  // metres between automatic probes unless the level sets it
-    uint32_t shard_index = 0, shard_count = 1;
-    bool show_progress = true;
+    LightSizes lightSizes;
+    std::optional<glm::vec3> skyRadiance;  // cd/m^2, uniform sky; unset: the level's
+    float gridCellSize = 1.0f;             // metres
+    float probeSpacing = 8.0f;  // metres between automatic probes unless the level sets it
+    uint32_t shardIndex = 0, shardCount = 1;
+    bool showProgress = true;
     // Overrides of the quality preset; 0 keeps the preset.
-    uint32_t shadow_samples = 0, indirect_samples = 0, grid_samples = 0;
-    uint32_t probe_face_size = 0, probe_samples = 0;  // a power of two; paths per texel
+    uint32_t shadowSamples = 0, indirectSamples = 0, gridSamples = 0;
+    uint32_t probeFaceSize = 0, probeSamples = 0;  // a power of two; paths per texel
 };
 
 /// Sample counts of a quality preset, overrides applied.
-LightmapSettings lightmap_settings(const BakeOptions& options);
-GridSettings grid_settings(const BakeOptions& options);
+LightmapSettings lightmapSettings(const BakeOptions& options);
+GridSettings gridSettings(const BakeOptions& options);
 /// Environment probe capture of a quality preset: face size draft 32, default 64, high 128;
 /// paths per texel 16, 64, 256; overrides applied.
-ProbeCaptureSettings probe_settings(const BakeOptions& options);
+ProbeCaptureSettings probeSettings(const BakeOptions& options);
 
 struct BakeResult {
     world::CompiledLevel level;
-    world::CompileStats compile_stats;
-    world::BakedLighting baked;  // finished (dilated) when shard_count == 1
+    world::CompileStats compileStats;
+    world::BakedLighting baked;  // finished (dilated) when shardCount == 1
     BakeReport report;
 };
 
 /// Compiles and bakes `source` (or its shard). Throws world::Error on bad input and
 /// std::runtime_error on Embree failures.
-BakeResult bake_level(const world::SourceLevel& source, const BakeOptions& options);
+BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options);
 
 /// Texels, cells and probes [begin, end) that shard i of n owns: contiguous ranges.
 struct ShardRange {
-    uint64_t texel_begin = 0, texel_end = 0;
-    uint64_t cell_begin = 0, cell_end = 0;
-    uint64_t probe_begin = 0, probe_end = 0;
+    uint64_t texelBegin = 0, texelEnd = 0;
+    uint64_t cellBegin = 0, cellEnd = 0;
+    uint64_t probeBegin = 0, probeEnd = 0;
 };
-ShardRange shard_range(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
-                       uint32_t count);
+ShardRange shardRange(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
+                      uint32_t count);
 
 /// E_avg of each probe (probe_capture.hpp): ambientCubeAverage of the light grid sampled at the
 /// capture point exactly as world::sampleLightGrid samples the finished grid. Only the corner
 /// cells the sample weighs are baked, into a scratch copy of `layout` (seeded per cell, so they
 /// equal the grid stage's cells): a shard gets the whole grid's value without the whole grid.
-std::vector<glm::vec3> probe_average_irradiance(const BakeScene& scene, const BakeLights& lights,
-                                                const GridSettings& settings,
-                                                const world::LightGrid& layout,
-                                                const std::vector<ProbePlacement>& probes,
-                                                RayCounts& rays);
+std::vector<glm::vec3> probeAverageIrradiance(const BakeScene& scene, const BakeLights& lights,
+                                              const GridSettings& settings,
+                                              const world::LightGrid& layout,
+                                              const std::vector<ProbePlacement>& probes,
+                                              RayCounts& rays);
 
 /// The steps after every texel is baked: dilation. Makes a part complete (shard 0 of 1).
-void finish_baked_lighting(const world::CompiledLevel& level, world::BakedLighting& baked);
+void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked);
 
 /// Joins the parts of a sharded bake (any order) into the unfinished whole, then finishes it.
 /// Throws world::Error on a missing or repeated shard or mismatched sizes.
-[[nodiscard]] world::BakedLighting merge_baked_lighting(const world::CompiledLevel& level,
-                                                        std::vector<world::BakedLighting> parts);
+[[nodiscard]] world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
+                                                      std::vector<world::BakedLighting> parts);
 
 /// The package bytes of a bake result.
-std::vector<uint8_t> package_bytes(const world::CompiledLevel& level,
-                                   const world::BakedLighting& baked);
+std::vector<uint8_t> packageBytes(const world::CompiledLevel& level,
+                                  const world::BakedLighting& baked);
 
 }  // namespace onelight::bake

@@ -1,6 +1,7 @@
 # onelight_add_shaders(TARGET SOURCES...): compiles GLSL into SPIR-V at build time with
-# glslangValidator; each shader becomes a header <name>_<stage>.spv.h holding a uint32_t array
-# named <name>_<stage>_spv. A shader error fails the build. Includes resolve against shaders/.
+# glslangValidator; each shader becomes a header <name>.<stage>.spv.h holding a uint32_t array
+# named k<Name><Stage>Spirv (forward.frag: kForwardFragSpirv). A shader error fails the build.
+# Includes resolve against shaders/.
 function(onelight_add_shaders target)
   set(outdir ${CMAKE_CURRENT_BINARY_DIR}/spirv)
   file(MAKE_DIRECTORY ${outdir})
@@ -8,12 +9,20 @@ function(onelight_add_shaders target)
   foreach(src ${ARGN})
     get_filename_component(abs ${src} ABSOLUTE)
     get_filename_component(name ${src} NAME)
-    string(REPLACE "." "_" var ${name})
+    # forward.frag -> kForwardFragSpirv: a constant, named as every constant is (docs/style.md).
+    string(REGEX REPLACE "[._]" ";" parts ${name})
+    set(var "k")
+    foreach(part ${parts})
+      string(SUBSTRING ${part} 0 1 first)
+      string(TOUPPER ${first} first)
+      string(SUBSTRING ${part} 1 -1 rest)
+      string(APPEND var "${first}${rest}")
+    endforeach()
     set(out ${outdir}/${name}.spv.h)
     add_custom_command(
       OUTPUT ${out}
       COMMAND Vulkan::glslangValidator -V --target-env vulkan1.1 -I${PROJECT_SOURCE_DIR}/shaders
-              --vn ${var}_spv -o ${out} ${abs}
+              --vn ${var}Spirv -o ${out} ${abs}
       DEPENDS ${abs} ${ONELIGHT_SHARED_GLSL}
       COMMENT "glslang ${name}"
       VERBATIM)

@@ -41,9 +41,9 @@ render::Camera resolveCamera(const game::CommandLine& cl, const assets::LoadedLe
     const world::CompiledLevel& l = level.level;
     if (cl.camera.empty()) {
         if (!l.cameras.empty()) return render::cameraFromLevel(l.cameras.front());
-        const glm::vec3 centre = 0.5f * (l.settings.bounds_min + l.settings.bounds_max);
+        const glm::vec3 centre = 0.5f * (l.settings.boundsMin + l.settings.boundsMax);
         const float radius =
-            std::max(0.5f * glm::length(l.settings.bounds_max - l.settings.bounds_min), 0.5f);
+            std::max(0.5f * glm::length(l.settings.boundsMax - l.settings.boundsMin), 0.5f);
         return render::cameraFromYawPitch(centre + glm::vec3(0.0f, 0.35f, 1.2f) * radius, 0.0f,
                                           -16.26f);
     }

@@ -28,13 +28,13 @@ float secondaryIlluminance(const Session& s, glm::vec3 p, glm::vec3 n) {
 void startSession(Session& s, const assets::LoadedLevel& loaded) {
     s.level = &loaded;
     const world::CompiledLevel& level = loaded.level;
-    s.bsp = world::bsp_view(level);
+    s.bsp = world::bspView(level);
 
-    glm::vec3 feet = 0.5f * (level.settings.bounds_min + level.settings.bounds_max);
+    glm::vec3 feet = 0.5f * (level.settings.boundsMin + level.settings.boundsMax);
     glm::vec3 forward(0.0f, 0.0f, -1.0f);
     bool placed = false;
     for (const world::Entity& e : level.entities)
-        if (!placed && (e.flags & world::entity_spawn)) {
+        if (!placed && (e.flags & world::kEntitySpawn)) {
             feet = e.position;
             forward = glm::normalize(e.rotation) * glm::vec3(0.0f, 0.0f, -1.0f);
             placed = true;
@@ -52,18 +52,18 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
 
     for (uint32_t i = 0; i < level.entities.size(); ++i) {
         const world::Entity& e = level.entities[i];
-        if (!(e.flags & world::entity_dynamic)) continue;
+        if (!(e.flags & world::kEntityDynamic)) continue;
         ecs::Entity entity = s.registry.create();
         s.registry.emplace<Name>(entity, Name{e.name});
         s.registry.emplace<Transform>(entity, Transform{e.position, e.scale});
         s.registry.emplace<LevelEntity>(entity, LevelEntity{i});
         s.registry.emplace<DynamicLighting>(entity);
-        if (e.flags & world::entity_mover)
-            s.registry.emplace<Mover>(entity, Mover{e.position, e.mover_offset, e.mover_period});
+        if (e.flags & world::kEntityMover)
+            s.registry.emplace<Mover>(entity, Mover{e.position, e.moverOffset, e.moverPeriod});
     }
     for (uint32_t i = 0; i < level.lights.size(); ++i) {
         s.lightNames.push_back(level.lights[i].name);
-        if (level.lights[i].role == world::LightRole::primary) s.primaryCandidates.push_back(i);
+        if (level.lights[i].role == world::LightRole::kPrimary) s.primaryCandidates.push_back(i);
     }
 }
 
@@ -79,7 +79,7 @@ float primaryScore(const Session& s, uint32_t light, const glm::vec3& point) {
     float e = world::unshadowedIlluminance(l, point);
     if (!(e > 0.0f)) return 0.0f;
     // Visibility: a ray from the point towards the light (1 km towards the sun).
-    glm::dvec3 toLight = l.type == world::LightType::directional
+    glm::dvec3 toLight = l.type == world::LightType::kDirectional
                              ? -glm::dvec3(l.direction) * 1000.0
                              : glm::dvec3(l.position) - glm::dvec3(point);
     double distance = glm::length(toLight);

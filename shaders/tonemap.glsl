@@ -22,7 +22,7 @@ float filmic_ACES(float x) {
 }
 
 // IEC 61966-2-1 (sRGB) encoding of a linear value in [0, 1].
-float srgb_encode(float linear) {
+float srgbEncode(float linear) {
     float x = saturate(linear);
     if (x <= 0.0031308f) return 12.92f * x;
     return 1.055f * pow(x, 1.0f / 2.4f) - 0.055f;
@@ -41,6 +41,6 @@ float lutCoordinate_fromLinear(float x) {
 float linear_fromLutCoordinate(float u) { return exp2(LUT_LOG2_MIN + u * (LUT_LOG2_MAX - LUT_LOG2_MIN)); }
 
 // What one LUT texel stores for one channel: the display-encoded filmic value.
-float displayValue(float exposedLinear) { return srgb_encode(filmic_ACES(exposedLinear)); }
+float displayValue(float exposedLinear) { return srgbEncode(filmic_ACES(exposedLinear)); }
 
 #endif

@@ -13,35 +13,35 @@
 namespace onelight::world {
 
 enum LightmapTexelFlags : uint32_t {
-    lightmap_texel_sampled = 1u << 0,  // baked at a point of its own surface
-    lightmap_texel_dilated = 1u << 1,  // padding, copied from sampled neighbours
+    kLightmapTexelSampled = 1u << 0,  // baked at a point of its own surface
+    kLightmapTexelDilated = 1u << 1,  // padding, copied from sampled neighbours
 };
-inline constexpr uint32_t kAllLightmapTexelFlags = lightmap_texel_sampled | lightmap_texel_dilated;
+inline constexpr uint32_t kAllLightmapTexelFlags = kLightmapTexelSampled | kLightmapTexelDilated;
 
 /// One lightmap texel: directional secondary irradiance (see DiskLightmapTexel for the
-/// reconstruction E(n') = irradiance * max(0, 0.5 + n'.direction) / normal_weight).
+/// reconstruction E(n') = irradiance * max(0, 0.5 + n'.direction) / normalWeight).
 struct LightmapTexel {
     glm::vec3 irradiance{0.0f};  // lux at the surface normal, >= 0
     glm::vec3 direction{0.0f};   // |direction| <= 0.5
-    float normal_weight = 1.0f;  // 0.5 + dot(normal, direction)
+    float normalWeight = 1.0f;   // 0.5 + dot(normal, direction)
     uint32_t flags = 0;          // LightmapTexelFlags; 0 = outside every chart (all zero)
 };
 
 enum LightGridCellFlags : uint32_t {
-    light_grid_cell_inside_solid = 1u << 0,  // centre inside geometry: skip when interpolating
+    kLightGridCellInsideSolid = 1u << 0,  // centre inside geometry: skip when interpolating
 };
-inline constexpr uint32_t kAllLightGridCellFlags = light_grid_cell_inside_solid;
+inline constexpr uint32_t kAllLightGridCellFlags = kLightGridCellInsideSolid;
 
 struct LightGridCell {
-    std::array<glm::vec3, 6> ambient_cube{};  // lux facing +x -x +y -y +z -z
-    uint32_t dominant_primary = kNoIndex;        // into lights
-    float primary_visibility = 0.0f;          // [0, 1]
-    uint32_t flags = 0;                       // LightGridCellFlags
+    std::array<glm::vec3, 6> ambientCube{};  // lux facing +x -x +y -y +z -z
+    uint32_t dominantPrimary = kNoIndex;     // into lights
+    float primaryVisibility = 0.0f;          // [0, 1]
+    uint32_t flags = 0;                      // LightGridCellFlags
 };
 
 struct LightGrid {
-    glm::vec3 origin{0.0f};     // metres, minimum corner
-    glm::vec3 cell_size{1.0f};  // metres
+    glm::vec3 origin{0.0f};    // metres, minimum corner
+    glm::vec3 cellSize{1.0f};  // metres
     glm::uvec3 dims{0u};
     uint32_t samples = 0;
     std::vector<LightGridCell> cells;  // x fastest
@@ -50,24 +50,24 @@ struct LightGrid {
 /// One baked environment probe in memory (DiskProbe's twin): its prefiltered, normalised
 /// radiance as RGB9E5 texels, mips from the largest, each 6 faces of rows from the top.
 struct EnvironmentProbe {
-    glm::vec3 position{0.0f};                // metres, world: the capture point
-    glm::vec3 box_min{0.0f}, box_max{0.0f};  // box projection when min < max on every axis
-    glm::vec3 irradiance_average{1.0f};      // lux, RGB: E_avg (probeNormalize)
-    uint32_t face_size = 0, mip_count = 0;   // mip 0 edge (a power of two); down to 1x1
-    uint32_t entity = kNoIndex;                 // the probe entity, kNoIndex when placed
-    std::vector<uint32_t> texels;            // RGB9E5, 6 * sum_m (face_size >> m)^2
+    glm::vec3 position{0.0f};              // metres, world: the capture point
+    glm::vec3 boxMin{0.0f}, boxMax{0.0f};  // box projection when min < max on every axis
+    glm::vec3 irradianceAverage{1.0f};     // lux, RGB: E_avg (probeNormalize)
+    uint32_t faceSize = 0, mipCount = 0;   // mip 0 edge (a power of two); down to 1x1
+    uint32_t entity = kNoIndex;            // the probe entity, kNoIndex when placed
+    std::vector<uint32_t> texels;          // RGB9E5, 6 * sum_m (face_size >> m)^2
 };
 
 struct BakedLighting {
     std::vector<LightmapTexel> texels;  // every atlas in order, row-major
-    std::vector<uint8_t> shadow_mask;   // same order: own primary's visibility 0..255
+    std::vector<uint8_t> shadowMask;    // same order: own primary's visibility 0..255
     LightGrid grid;
-    std::vector<EnvironmentProbe> probes;       // section 35; a part holds its shard's range
-    uint32_t shard_index = 0, shard_count = 1;  // shard_count > 1: an unmerged part
+    std::vector<EnvironmentProbe> probes;     // section 35; a part holds its shard's range
+    uint32_t shardIndex = 0, shardCount = 1;  // shardCount > 1: an unmerged part
 };
 
 /// Offset of atlas `atlas`'s first texel in BakedLighting::texels.
-inline uint64_t atlas_texel_offset(const CompiledLevel& level, uint32_t atlas) {
+inline uint64_t atlasTexelOffset(const CompiledLevel& level, uint32_t atlas) {
     uint64_t offset = 0;
     for (uint32_t a = 0; a < atlas; ++a)
         offset += uint64_t(level.atlases[a].width) * level.atlases[a].height;
@@ -81,8 +81,8 @@ namespace onelight::world {
 /// A texel as the four linear coefficients per channel of shaders/lighting.glsl's
 /// irradianceLinear (E(n) = max(0, c0 + c.n)): (E / w) (0.5, d). Exact, not a fit: the texel's
 /// reconstruction E (0.5 + n.d) / w is linear in n.
-inline glm::vec4 linear_irradiance_coefficients(const LightmapTexel& t, int channel) {
-    const float scale = t.irradiance[channel] / t.normal_weight;
+inline glm::vec4 linearIrradianceCoefficients(const LightmapTexel& t, int channel) {
+    const float scale = t.irradiance[channel] / t.normalWeight;
     return glm::vec4(0.5f * scale, scale * t.direction);
 }
 

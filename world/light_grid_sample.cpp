@@ -9,7 +9,7 @@ LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p) {
     LightGridSample out;
     if (grid.cells.empty()) return out;
     // Continuous cell coordinate: cell (i, j, k) is centred at origin + (i + 0.5) size.
-    const glm::vec3 f = (p - grid.origin) / grid.cell_size - 0.5f;
+    const glm::vec3 f = (p - grid.origin) / grid.cellSize - 0.5f;
     glm::uvec3 lo{0u}, hi{0u};
     glm::vec3 t{0.0f};
     for (int a = 0; a < 3; ++a) {
@@ -28,7 +28,7 @@ LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p) {
         const uint32_t cell = c.x + grid.dims.x * (c.y + grid.dims.y * c.z);
         out.cells[corner] = cell;
         plain[corner] = w;
-        const bool solid = (grid.cells[cell].flags & light_grid_cell_inside_solid) != 0;
+        const bool solid = (grid.cells[cell].flags & kLightGridCellInsideSolid) != 0;
         out.weights[corner] = solid ? 0.0f : w;
         total += out.weights[corner];
     }
@@ -44,7 +44,7 @@ LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p) {
         out.weights[corner] /= total;
         const LightGridCell& cell = grid.cells[out.cells[corner]];
         for (size_t face = 0; face < 6; ++face)
-            out.ambientCube[face] += out.weights[corner] * cell.ambient_cube[face];
+            out.ambientCube[face] += out.weights[corner] * cell.ambientCube[face];
     }
     return out;
 }
@@ -53,8 +53,8 @@ float dominantVisibility(const LightGrid& grid, const LightGridSample& sample, u
     float sum = 0.0f;
     for (uint32_t corner = 0; corner < 8; ++corner) {
         const LightGridCell& cell = grid.cells[sample.cells[corner]];
-        if (sample.weights[corner] > 0.0f && cell.dominant_primary == light)
-            sum += sample.weights[corner] * cell.primary_visibility;
+        if (sample.weights[corner] > 0.0f && cell.dominantPrimary == light)
+            sum += sample.weights[corner] * cell.primaryVisibility;
     }
     return sum;
 }
@@ -63,9 +63,9 @@ float bakedVisibility(const LightGrid& grid, const LightGridSample& sample, uint
     float weight = 0.0f, sum = 0.0f;
     for (uint32_t corner = 0; corner < 8; ++corner) {
         const LightGridCell& cell = grid.cells[sample.cells[corner]];
-        if (sample.weights[corner] > 0.0f && cell.dominant_primary == light) {
+        if (sample.weights[corner] > 0.0f && cell.dominantPrimary == light) {
             weight += sample.weights[corner];
-            sum += sample.weights[corner] * cell.primary_visibility;
+            sum += sample.weights[corner] * cell.primaryVisibility;
         }
     }
     return weight > 0.0f ? sum / weight : 0.0f;

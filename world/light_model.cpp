@@ -10,7 +10,7 @@ LightAtPoint evaluateLight(const Light& light, glm::vec3 point) {
     // light.direction is unit (the importer normalises it), as the shader's GpuLight.
     const glsl::LightSample s = glsl::evaluatePunctualLight(
         int(light.type), light.color, light.intensity, light.range, light.position, light.direction,
-        std::cos(light.inner_cone), std::cos(light.outer_cone), point);
+        std::cos(light.innerCone), std::cos(light.outerCone), point);
     return {s.l, s.illuminance, s.distance};
 }
 

@@ -14,20 +14,20 @@ namespace onelight::world {
 
 /// One glTF mesh primitive placed by one node. Vertices stay in the node's space.
 struct MeshInstance {
-    std::string node_name;
-    std::string mesh_name;
-    uint32_t primitive = 0;     // index within the glTF mesh
+    std::string nodeName;
+    std::string meshName;
+    uint32_t primitive = 0;        // index within the glTF mesh
     uint32_t material = kNoIndex;  // into SourceLevel::materials (a default is added if needed)
-    glm::dmat4 world_from_local{1.0};
+    glm::dmat4 worldFromLocal{1.0};
     std::vector<Vertex> vertices;   // local space
     std::vector<uint32_t> indices;  // triangles
-    bool has_uv1 = false;           // TEXCOORD_1 was present
+    bool hasUv1 = false;            // TEXCOORD_1 was present
     bool dynamic = false;           // not part of the BSP, lit by the grid
-    uint32_t entity = kNoIndex;        // into SourceLevel::entities when dynamic
+    uint32_t entity = kNoIndex;     // into SourceLevel::entities when dynamic
 };
 
 struct SourceLevel {
-    std::string source_path;  // the .gltf, for messages
+    std::string sourcePath;  // the .gltf, for messages
     std::vector<Material> materials;
     std::vector<Texture> textures;
     std::vector<Image> images;  // uri relative to the glTF's folder
@@ -35,13 +35,13 @@ struct SourceLevel {
     std::vector<Camera> cameras;
     std::vector<MeshInstance> instances;
     std::vector<Entity> entities;  // dynamic-mesh ranges are filled at compile
-    float exposure_ev100 = 0.0f;
-    bool has_exposure = false;
-    float texels_per_metre = 0.0f;  // the level's lightmap density (extras), 0 when not given
-    float probe_spacing = 0.0f;     // metres between automatic probes (extras), 0 when not given
-    glm::vec3 sky_radiance{0.0f};   // cd/m^2, RGB: a uniform sky around the level (extras)
-    bool has_grid_bounds = false;
-    glm::vec3 grid_min{0.0f}, grid_max{0.0f};
+    float exposureEv100 = 0.0f;
+    bool hasExposure = false;
+    float texelsPerMetre = 0.0f;  // the level's lightmap density (extras), 0 when not given
+    float probeSpacing = 0.0f;    // metres between automatic probes (extras), 0 when not given
+    glm::vec3 skyRadiance{0.0f};  // cd/m^2, RGB: a uniform sky around the level (extras)
+    bool hasGridBounds = false;
+    glm::vec3 gridMin{0.0f}, gridMax{0.0f};
 };
 
 }  // namespace onelight::world

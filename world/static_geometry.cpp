@@ -11,30 +11,30 @@ CompileVertex interpolate(const CompileVertex& a, const CompileVertex& b, double
     out.uv0 = glm::mix(a.uv0, b.uv0, tf);
     out.uv1 = glm::mix(a.uv1, b.uv1, tf);
     const glm::vec3 n = glm::mix(a.normal, b.normal, tf);
-    const float n_length = glm::length(n);
-    out.normal = n_length > 1e-6f ? n / n_length : a.normal;
+    const float nLength = glm::length(n);
+    out.normal = nLength > 1e-6f ? n / nLength : a.normal;
     const glm::vec3 tangent = glm::mix(glm::vec3(a.tangent), glm::vec3(b.tangent), tf);
-    const float t_length = glm::length(tangent);
+    const float tLength = glm::length(tangent);
     out.tangent =
-        glm::vec4(t_length > 1e-6f ? tangent / t_length : glm::vec3(a.tangent), a.tangent.w);
+        glm::vec4(tLength > 1e-6f ? tangent / tLength : glm::vec3(a.tangent), a.tangent.w);
     return out;
 }
 
-glm::dvec3 area_vector(const StaticGeometry& geometry, const StaticTriangle& triangle) {
+glm::dvec3 areaVector(const StaticGeometry& geometry, const StaticTriangle& triangle) {
     const glm::dvec3& a = geometry.vertices[triangle.v[0]].position;
     const glm::dvec3& b = geometry.vertices[triangle.v[1]].position;
     const glm::dvec3& c = geometry.vertices[triangle.v[2]].position;
     return glm::cross(b - a, c - a);
 }
 
-double triangle_area(const StaticGeometry& geometry, const StaticTriangle& triangle) {
-    return 0.5 * glm::length(area_vector(geometry, triangle));
+double triangleArea(const StaticGeometry& geometry, const StaticTriangle& triangle) {
+    return 0.5 * glm::length(areaVector(geometry, triangle));
 }
 
-double total_area(const StaticGeometry& geometry) {
+double totalArea(const StaticGeometry& geometry) {
     double sum = 0.0, compensation = 0.0;
     for (const StaticTriangle& t : geometry.triangles) {
-        const double y = triangle_area(geometry, t) - compensation;
+        const double y = triangleArea(geometry, t) - compensation;
         const double s = sum + y;
         compensation = (s - sum) - y;
         sum = s;

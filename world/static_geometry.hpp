@@ -33,20 +33,20 @@ struct StaticTriangle {
 struct StaticGeometry {
     std::vector<CompileVertex> vertices;
     std::vector<StaticTriangle> triangles;
-    std::vector<uint8_t> instance_has_uv1;    // per source instance
-    std::vector<std::string> instance_names;  // per source instance, "node/mesh"
+    std::vector<uint8_t> instanceHasUv1;     // per source instance
+    std::vector<std::string> instanceNames;  // per source instance, "node/mesh"
 };
 
 /// Attribute-wise interpolation a + t (b - a), normal and tangent renormalised.
 CompileVertex interpolate(const CompileVertex& a, const CompileVertex& b, double t);
 
 /// Twice the area vector of the triangle (cross product of its edges), metres squared.
-glm::dvec3 area_vector(const StaticGeometry& geometry, const StaticTriangle& triangle);
+glm::dvec3 areaVector(const StaticGeometry& geometry, const StaticTriangle& triangle);
 
 /// Area of the triangle, metres squared.
-double triangle_area(const StaticGeometry& geometry, const StaticTriangle& triangle);
+double triangleArea(const StaticGeometry& geometry, const StaticTriangle& triangle);
 
 /// Sum of every triangle's area, metres squared (Kahan-summed).
-double total_area(const StaticGeometry& geometry);
+double totalArea(const StaticGeometry& geometry);
 
 }  // namespace onelight::world

@@ -9,8 +9,8 @@
 
 namespace onelight::bake {
 
-std::string format_usage(const std::string& synopsis, const std::string& summary,
-                         const std::vector<CliOption>& options) {
+std::string formatUsage(const std::string& synopsis, const std::string& summary,
+                        const std::vector<CliOption>& options) {
     size_t width = 0;
     for (const CliOption& o : options) width = std::max(width, o.flag.size());
     std::string text = "usage: " + synopsis + "\n  " + summary + "\n";
@@ -23,19 +23,19 @@ std::string format_usage(const std::string& synopsis, const std::string& summary
     return text;
 }
 
-std::string format_number(double value) {
+std::string formatNumber(double value) {
     char text[32];
     std::snprintf(text, sizeof(text), "%g", value);
     return text;
 }
 
-bool asks_for_help(const std::vector<std::string>& arguments) {
+bool asksForHelp(const std::vector<std::string>& arguments) {
     for (const std::string& a : arguments)
         if (a == "-h" || a == "--help") return true;
     return false;
 }
 
-bool parse_number(const std::string& text, double low, double high, double& out) {
+bool parseNumber(const std::string& text, double low, double high, double& out) {
     try {
         size_t used = 0;
         out = std::stod(text, &used);
@@ -45,7 +45,7 @@ bool parse_number(const std::string& text, double low, double high, double& out)
     }
 }
 
-int run_reporting_errors(const std::string& input, const std::function<int()>& command) {
+int runReportingErrors(const std::string& input, const std::function<int()>& command) {
     try {
         return command();
     } catch (const world::Error& e) {

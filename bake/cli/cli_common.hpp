@@ -18,21 +18,21 @@ inline const std::string kRequired = "required";
 
 /// A subcommand's help: the synopsis, what it does, then every option with its default, one a
 /// line, aligned.
-std::string format_usage(const std::string& synopsis, const std::string& summary,
-                         const std::vector<CliOption>& options);
+std::string formatUsage(const std::string& synopsis, const std::string& summary,
+                        const std::vector<CliOption>& options);
 
 /// `value` as the shortest text that reads it back ("%g").
-std::string format_number(double value);
+std::string formatNumber(double value);
 
 /// Whether `arguments` ask for help (-h or --help anywhere).
-bool asks_for_help(const std::vector<std::string>& arguments);
+bool asksForHelp(const std::vector<std::string>& arguments);
 
 /// The whole of `text` as a number in [low, high]; false otherwise (no partial parses).
-bool parse_number(const std::string& text, double low, double high, double& out);
+bool parseNumber(const std::string& text, double low, double high, double& out);
 
 /// Runs `command` and returns its exit code; an exception becomes "onelight-bake: error: ..."
 /// on stderr and exit code 1: a world::Error as its message (it names file and place),
 /// anything else prefixed with `input`, running out of memory as "out of memory".
-int run_reporting_errors(const std::string& input, const std::function<int()>& command);
+int runReportingErrors(const std::string& input, const std::function<int()>& command);
 
 }  // namespace onelight::bake

@@ -1,4 +1,4 @@
-// onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [OPTIONS] (compile_usage lists them).
+// onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [OPTIONS] (compileUsage lists them).
 // Imports, compiles without lighting, writes the package atomically and prints a summary.
 #include <cstdio>
 #include <exception>
@@ -16,7 +16,7 @@ namespace onelight::bake {
 namespace {
 
 /// Image file references become relative to the package's folder.
-void rebase_image_paths(world::CompiledLevel& level, const std::filesystem::path& package) {
+void rebaseImagePaths(world::CompiledLevel& level, const std::filesystem::path& package) {
     const std::filesystem::path folder = std::filesystem::absolute(package).parent_path();
     for (world::Image& image : level.images) {
         if (image.uri.empty()) continue;
@@ -27,55 +27,55 @@ void rebase_image_paths(world::CompiledLevel& level, const std::filesystem::path
     }
 }
 
-void print_summary(const std::string& output, const world::CompileStats& s, size_t bytes) {
+void printSummary(const std::string& output, const world::CompileStats& s, size_t bytes) {
     std::printf("compiled %s (%zu bytes)\n", output.c_str(), bytes);
     std::printf(
         "  triangles  %llu static (%llu imported, %llu degenerate and %llu duplicate removed), "
         "%llu dynamic\n",
         static_cast<unsigned long long>(s.triangles),
-        static_cast<unsigned long long>(s.source_triangles),
-        static_cast<unsigned long long>(s.degenerate_removed),
-        static_cast<unsigned long long>(s.duplicates_removed),
-        static_cast<unsigned long long>(s.dynamic_triangles));
+        static_cast<unsigned long long>(s.sourceTriangles),
+        static_cast<unsigned long long>(s.degenerateRemoved),
+        static_cast<unsigned long long>(s.duplicatesRemoved),
+        static_cast<unsigned long long>(s.dynamicTriangles));
     std::printf("  surfaces   %llu\n", static_cast<unsigned long long>(s.surfaces));
-    std::printf("  bsp        depth %u, %llu leaves, %llu nodes, %llu triangles cut\n", s.bsp_depth,
-                static_cast<unsigned long long>(s.bsp_leaves),
-                static_cast<unsigned long long>(s.bsp_nodes),
-                static_cast<unsigned long long>(s.bsp_splits));
-    std::printf("  primaries  %u candidates, %u owning surfaces\n", s.primary_candidates,
-                s.primaries_used);
+    std::printf("  bsp        depth %u, %llu leaves, %llu nodes, %llu triangles cut\n", s.bspDepth,
+                static_cast<unsigned long long>(s.bspLeaves),
+                static_cast<unsigned long long>(s.bspNodes),
+                static_cast<unsigned long long>(s.bspSplits));
+    std::printf("  primaries  %u candidates, %u owning surfaces\n", s.primaryCandidates,
+                s.primariesUsed);
     std::printf(
         "  splits     %u edges cut, %u triangles split at their centre, %u fragments merged, "
         "+%u triangles\n",
-        s.regions.edges_cut, s.regions.faces_centre_split, s.regions.fragments_merged,
-        s.regions.triangles_added);
+        s.regions.edgesCut, s.regions.facesCentreSplit, s.regions.fragmentsMerged,
+        s.regions.trianglesAdded);
     std::printf("  charts     %llu (%llu from TEXCOORD_1), %llu atlases, %llu texels, fill %.3f\n",
                 static_cast<unsigned long long>(s.charts),
-                static_cast<unsigned long long>(s.authored_charts),
+                static_cast<unsigned long long>(s.authoredCharts),
                 static_cast<unsigned long long>(s.atlases),
-                static_cast<unsigned long long>(s.texels), s.fill_ratio);
+                static_cast<unsigned long long>(s.texels), s.fillRatio);
     std::printf(
         "  time       split %.3f s, regions %.3f s, charts %.3f s, bsp %.3f s, surfaces %.3f s\n",
-        s.seconds_split, s.seconds_regions, s.seconds_charts, s.seconds_bsp, s.seconds_surfaces);
+        s.secondsSplit, s.secondsRegions, s.secondsCharts, s.secondsBsp, s.secondsSurfaces);
 }
 
 }  // namespace
 
-std::string compile_usage() {
+std::string compileUsage() {
     const world::ChartOptions d;
-    return format_usage(
+    return formatUsage(
         "onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [OPTIONS]",
         "compiles LEVEL without lighting (BSP, primaries, charts) and prints a summary",
         {{"-o PATH", "the package to write", "LEVEL with the extension .olpak"},
          {"--texels-per-metre N", "lightmap density, 0.01..1024",
-          "the level's, or " + format_number(d.texels_per_metre)},
-         {"--atlas-size N", "texels per side of an atlas, 64..16384", std::to_string(d.atlas_size)},
+          "the level's, or " + formatNumber(d.texelsPerMetre)},
+         {"--atlas-size N", "texels per side of an atlas, 64..16384", std::to_string(d.atlasSize)},
          {"-h, --help", "this help", ""}});
 }
 
-int run_compile_command(const std::vector<std::string>& arguments) {
-    if (asks_for_help(arguments)) {
-        std::printf("%s", compile_usage().c_str());
+int runCompileCommand(const std::vector<std::string>& arguments) {
+    if (asksForHelp(arguments)) {
+        std::printf("%s", compileUsage().c_str());
         return 0;
     }
     std::string input, output;
@@ -87,44 +87,44 @@ int run_compile_command(const std::vector<std::string>& arguments) {
         if (a == "-o" && has_value) {
             output = arguments[++i];
         } else if (a == "--texels-per-metre" && has_value) {
-            if (!parse_number(arguments[++i], 0.01, 1024.0, value)) {
+            if (!parseNumber(arguments[++i], 0.01, 1024.0, value)) {
                 std::fprintf(stderr,
                              "onelight-bake compile: --texels-per-metre '%s'; expected a number in "
                              "[0.01, 1024]\n",
                              arguments[i].c_str());
                 return 2;
             }
-            options.charts.texels_per_metre = value;
-            options.charts.density_from_command_line = true;
+            options.charts.texelsPerMetre = value;
+            options.charts.densityFromCommandLine = true;
         } else if (a == "--atlas-size" && has_value) {
-            if (!parse_number(arguments[++i], 64.0, 16384.0, value)) {
+            if (!parseNumber(arguments[++i], 64.0, 16384.0, value)) {
                 std::fprintf(stderr,
                              "onelight-bake compile: --atlas-size '%s'; expected an integer in "
                              "[64, 16384]\n",
                              arguments[i].c_str());
                 return 2;
             }
-            options.charts.atlas_size = static_cast<uint32_t>(value);
+            options.charts.atlasSize = static_cast<uint32_t>(value);
         } else if (!a.empty() && a[0] != '-' && input.empty()) {
             input = a;
         } else {
             std::fprintf(stderr, "onelight-bake compile: unexpected argument '%s'\n%s", a.c_str(),
-                         compile_usage().c_str());
+                         compileUsage().c_str());
             return 2;
         }
     }
     if (input.empty()) {
-        std::fprintf(stderr, "onelight-bake compile: no level given\n%s", compile_usage().c_str());
+        std::fprintf(stderr, "onelight-bake compile: no level given\n%s", compileUsage().c_str());
         return 2;
     }
     if (output.empty()) output = std::filesystem::path(input).replace_extension(".olpak").string();
-    return run_reporting_errors(input, [&] {
-        const world::SourceLevel source = world::import_gltf(input);
-        world::CompileResult result = world::compile_level(source, options);
-        rebase_image_paths(result.level, output);
-        const std::vector<uint8_t> bytes = package::serialize_package(result.level);
-        package::write_file_atomically(output, bytes);
-        print_summary(output, result.stats, bytes.size());
+    return runReportingErrors(input, [&] {
+        const world::SourceLevel source = world::importGltf(input);
+        world::CompileResult result = world::compileLevel(source, options);
+        rebaseImagePaths(result.level, output);
+        const std::vector<uint8_t> bytes = package::serializePackage(result.level);
+        package::writeFileAtomically(output, bytes);
+        printSummary(output, result.stats, bytes.size());
         return 0;
     });
 }

@@ -14,14 +14,14 @@ struct Subcommand {
 };
 
 constexpr Subcommand kSubcommands[] = {
-    {"compile", &onelight::bake::run_compile_command, &onelight::bake::compile_usage},
-    {"reference", &onelight::bake::run_reference_command, &onelight::bake::reference_usage},
-    {"merge", &onelight::bake::run_merge_command, &onelight::bake::merge_usage},
+    {"compile", &onelight::bake::runCompileCommand, &onelight::bake::compileUsage},
+    {"reference", &onelight::bake::runReferenceCommand, &onelight::bake::referenceUsage},
+    {"merge", &onelight::bake::runMergeCommand, &onelight::bake::mergeUsage},
 };
 
 // Every command's help: the bake, then each subcommand.
 std::string usage() {
-    std::string text = onelight::bake::bake_usage();
+    std::string text = onelight::bake::bakeUsage();
     for (const Subcommand& s : kSubcommands) {
         text += '\n';
         text += s.usage();
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv + 2, argv + argc);
     for (const Subcommand& s : kSubcommands)
         if (name == s.name) return s.run(arguments);
-    if (name[0] != '-') return onelight::bake::run_bake_command({argv + 1, argv + argc});
+    if (name[0] != '-') return onelight::bake::runBakeCommand({argv + 1, argv + argc});
     std::fprintf(stderr, "onelight-bake: unknown subcommand '%s'\n%s", name.c_str(),
                  usage().c_str());
     return 2;

@@ -12,16 +12,16 @@
 
 namespace onelight::bake {
 
-std::string merge_usage() {
-    return format_usage(
+std::string mergeUsage() {
+    return formatUsage(
         "onelight-bake merge -o LEVEL.olpak PART.olpak...",
         "joins the parts of a sharded bake (--shard i/N) into the whole package",
         {{"-o PATH", "the package to write", kRequired}, {"-h, --help", "this help", ""}});
 }
 
-int run_merge_command(const std::vector<std::string>& arguments) {
-    if (asks_for_help(arguments)) {
-        std::printf("%s", merge_usage().c_str());
+int runMergeCommand(const std::vector<std::string>& arguments) {
+    if (asksForHelp(arguments)) {
+        std::printf("%s", mergeUsage().c_str());
         return 0;
     }
     std::string output;
@@ -39,30 +39,30 @@ int run_merge_command(const std::vector<std::string>& arguments) {
     }
     if (output.empty() || inputs.empty()) {
         std::fprintf(stderr, "onelight-bake merge: -o and at least one part are required\n%s",
-                     merge_usage().c_str());
+                     mergeUsage().c_str());
         return 2;
     }
-    return run_reporting_errors(inputs[0], [&] {
+    return runReportingErrors(inputs[0], [&] {
         world::CompiledLevel level;
-        std::vector<uint8_t> first_core;
+        std::vector<uint8_t> firstCore;
         std::vector<world::BakedLighting> parts;
         for (const std::string& path : inputs) {
-            package::PackageContents read = package::read_package_file(path);
-            const std::vector<uint8_t> core = package::serialize_package(read.level);
-            if (first_core.empty()) {
-                first_core = core;
+            package::PackageContents read = package::readPackageFile(path);
+            const std::vector<uint8_t> core = package::serializePackage(read.level);
+            if (firstCore.empty()) {
+                firstCore = core;
                 level = read.level;
-            } else if (core != first_core) {
+            } else if (core != firstCore) {
                 throw world::Error(path + ": compiled level differs from " + inputs[0] + "'s");
             }
             package::BakedContents baked =
-                package::decode_baked_sections(read.baked_sections, read.level, path);
+                package::decodeBakedSections(read.bakedSections, read.level, path);
             if (!baked.present) throw world::Error(path + ": no baked lighting");
             parts.push_back(std::move(baked.baked));
         }
-        const world::BakedLighting merged = merge_baked_lighting(level, std::move(parts));
-        const std::vector<uint8_t> bytes = package_bytes(level, merged);
-        package::write_file_atomically(output, bytes);
+        const world::BakedLighting merged = mergeBakedLighting(level, std::move(parts));
+        const std::vector<uint8_t> bytes = packageBytes(level, merged);
+        package::writeFileAtomically(output, bytes);
         std::printf("merged %zu parts into %s (%zu bytes)\n", inputs.size(), output.c_str(),
                     bytes.size());
         return 0;

@@ -1,5 +1,5 @@
 // onelight-bake reference LEVEL.gltf --camera NAME --spp N -o out.exr [OPTIONS]
-// (reference_usage lists them with their defaults).
+// (referenceUsage lists them with their defaults).
 // The path-traced ground truth of a camera's view: linear radiance in cd/m^2, every light at
 // full strength, no exposure, no tonemap.
 #include <cmath>
@@ -18,8 +18,8 @@
 #include "world/import/gltf_import.hpp"
 
 namespace onelight::bake {
-std::string reference_usage() {
-    return format_usage(
+std::string referenceUsage() {
+    return formatUsage(
         "onelight-bake reference LEVEL.gltf --camera NAME --spp N -o OUT.exr [OPTIONS]",
         "path-traces the camera's view: linear radiance in cd/m^2, no exposure, no tonemap",
         {{"--camera NAME", "the level's camera to render", kRequired},
@@ -32,12 +32,12 @@ std::string reference_usage() {
          {"-h, --help", "this help", ""}});
 }
 
-int run_reference_command(const std::vector<std::string>& arguments) {
-    if (asks_for_help(arguments)) {
-        std::printf("%s", reference_usage().c_str());
+int runReferenceCommand(const std::vector<std::string>& arguments) {
+    if (asksForHelp(arguments)) {
+        std::printf("%s", referenceUsage().c_str());
         return 0;
     }
-    std::string input, output, camera_name;
+    std::string input, output, cameraName;
     uint32_t width = 0, height = 0, spp = 0;
     int threads = 0;
     float sky = -1.0f;  // < 0: the level's sky
@@ -48,7 +48,7 @@ int run_reference_command(const std::vector<std::string>& arguments) {
             if (a == "-o" && has_value) {
                 output = arguments[++i];
             } else if (a == "--camera" && has_value) {
-                camera_name = arguments[++i];
+                cameraName = arguments[++i];
             } else if (a == "--size" && has_value) {
                 const std::string s = arguments[++i];
                 const size_t x = s.find('x');
@@ -72,47 +72,47 @@ int run_reference_command(const std::vector<std::string>& arguments) {
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "onelight-bake reference: bad argument (%s)\n%s", e.what(),
-                     reference_usage().c_str());
+                     referenceUsage().c_str());
         return 2;
     }
-    if (input.empty() || output.empty() || camera_name.empty() || spp == 0) {
+    if (input.empty() || output.empty() || cameraName.empty() || spp == 0) {
         std::fprintf(stderr,
                      "onelight-bake reference: a level, --camera, --spp and -o are required\n%s",
-                     reference_usage().c_str());
+                     referenceUsage().c_str());
         return 2;
     }
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0)
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(threads));
-    return run_reporting_errors(input, [&] {
-        const world::SourceLevel source = world::import_gltf(input);
+    return runReportingErrors(input, [&] {
+        const world::SourceLevel source = world::importGltf(input);
         const world::Camera* camera = nullptr;
         for (const world::Camera& c : source.cameras)
-            if (c.name == camera_name) camera = &c;
+            if (c.name == cameraName) camera = &c;
         if (!camera) {
             std::string names;
             for (const world::Camera& c : source.cameras) names += " " + c.name;
-            throw world::Error(input + ": no camera named '" + camera_name + "' (cameras:" +
+            throw world::Error(input + ": no camera named '" + cameraName + "' (cameras:" +
                                (names.empty() ? std::string(" none") : names) + ")");
         }
         if (width == 0) {
             height = 720;
-            width = camera->aspect_ratio > 0.0f
-                        ? static_cast<uint32_t>(std::lround(720.0f * camera->aspect_ratio))
+            width = camera->aspectRatio > 0.0f
+                        ? static_cast<uint32_t>(std::lround(720.0f * camera->aspectRatio))
                         : 1280;
         }
         const EmbreeDevice device;
-        const world::SplitLevel split = world::split_static_dynamic(source);
-        const BakeScene scene(device, split.static_geometry, source.materials);
-        const BakeLights lights = make_bake_lights(
-            source.lights, LightSizes{}, sky >= 0.0f ? glm::vec3(sky) : source.sky_radiance);
+        const world::SplitLevel split = world::splitStaticDynamic(source);
+        const BakeScene scene(device, split.staticGeometry, source.materials);
+        const BakeLights lights = makeBakeLights(source.lights, LightSizes{},
+                                                 sky >= 0.0f ? glm::vec3(sky) : source.skyRadiance);
         RayCounts rays;
         Progress progress("reference", height, true);
         const ReferenceImage image =
-            render_reference(scene, lights, *camera, width, height, spp, {}, &progress, rays);
+            renderReference(scene, lights, *camera, width, height, spp, {}, &progress, rays);
         progress.finish();
-        write_exr(output, image);
+        writeExr(output, image);
         std::printf("reference %s: %ux%u, %u spp, %llu rays, %.2f Mrays/s\n", output.c_str(), width,
                     height, spp, static_cast<unsigned long long>(rays.total()),
                     double(rays.total()) / progress.seconds() * 1e-6);

@@ -7,15 +7,15 @@
 
 namespace onelight::bake {
 
-int run_compile_command(const std::vector<std::string>& arguments);
-int run_bake_command(const std::vector<std::string>& arguments);       // LEVEL.gltf -o ...
-int run_reference_command(const std::vector<std::string>& arguments);  // reference ...
-int run_merge_command(const std::vector<std::string>& arguments);      // merge ...
+int runCompileCommand(const std::vector<std::string>& arguments);
+int runBakeCommand(const std::vector<std::string>& arguments);       // LEVEL.gltf -o ...
+int runReferenceCommand(const std::vector<std::string>& arguments);  // reference ...
+int runMergeCommand(const std::vector<std::string>& arguments);      // merge ...
 
 // Each subcommand's help: synopsis, summary, every option with its default (-h or --help).
-std::string compile_usage();
-std::string bake_usage();
-std::string reference_usage();
-std::string merge_usage();
+std::string compileUsage();
+std::string bakeUsage();
+std::string referenceUsage();
+std::string mergeUsage();
 
 }  // namespace onelight::bake

@@ -9,23 +9,23 @@ namespace {
 constexpr uint32_t kDominantPass = 3;
 }  // namespace
 
-world::PrimaryIlluminanceFn make_shadowed_primary_illuminance(const BakeScene& scene,
-                                                              const BakeLights& lights,
-                                                              uint32_t shadow_samples,
-                                                              AtomicRayCount* rays) {
+world::PrimaryIlluminanceFn makeShadowedPrimaryIlluminance(const BakeScene& scene,
+                                                           const BakeLights& lights,
+                                                           uint32_t shadowSamples,
+                                                           AtomicRayCount* rays) {
     std::vector<const BakeLight*> primaries;
     for (const BakeLight& l : lights.lights)
-        if (l.light.role == world::LightRole::primary) primaries.push_back(&l);
-    return [&scene, primaries, shadow_samples, rays](
+        if (l.light.role == world::LightRole::kPrimary) primaries.push_back(&l);
+    return [&scene, primaries, shadowSamples, rays](
                const glm::dvec3& position, const glm::vec3& normal, std::span<double> illuminance) {
         const glm::vec3 p(position);
-        Rng rng{seed_from(std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y),
-                          std::bit_cast<uint32_t>(p.z), kDominantPass)};
+        Rng rng{seedFrom(std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y),
+                         std::bit_cast<uint32_t>(p.z), kDominantPass)};
         const bool oriented = normal != glm::vec3(0.0f);
-        const glm::vec3 origin = oriented ? p + glm::normalize(normal) * scene.ray_offset() : p;
+        const glm::vec3 origin = oriented ? p + glm::normalize(normal) * scene.rayOffset() : p;
         RayCounts local;
         for (size_t i = 0; i < primaries.size() && i < illuminance.size(); ++i) {
-            const LightIncidence incidence = light_incidence(*primaries[i], p);
+            const LightIncidence incidence = lightIncidence(*primaries[i], p);
             const float cosine =
                 oriented ? std::max(0.0f, glm::dot(glm::normalize(normal), incidence.direction))
                          : 1.0f;
@@ -34,8 +34,8 @@ world::PrimaryIlluminanceFn make_shadowed_primary_illuminance(const BakeScene& s
                 illuminance[i] = 0.0;
                 continue;
             }
-            const float v = light_visibility(scene, *primaries[i], incidence, origin,
-                                             shadow_samples, rng, local);
+            const float v =
+                lightVisibility(scene, *primaries[i], incidence, origin, shadowSamples, rng, local);
             illuminance[i] = double(e) * double(v);
         }
         if (rays) rays->shadow += local.shadow;

@@ -25,21 +25,21 @@ EmbreeDevice::EmbreeDevice() {
         throw std::runtime_error("Embree: rtcNewDevice failed (" +
                                  std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) +
                                  ")");
-    rtcSetDeviceErrorFunction(device_, &EmbreeDevice::on_error, this);
+    rtcSetDeviceErrorFunction(device_, &EmbreeDevice::onError, this);
 }
 
 EmbreeDevice::~EmbreeDevice() {
     rtcReleaseDevice(device_);
 }
 
-std::string EmbreeDevice::last_error() const {
-    return last_error_;
+std::string EmbreeDevice::lastError() const {
+    return lastError_;
 }
 
-void EmbreeDevice::on_error(void* user, RTCError code, const char* message) {
+void EmbreeDevice::onError(void* user, RTCError code, const char* message) {
     auto* self = static_cast<EmbreeDevice*>(user);
-    self->last_error_ = "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
-                        (message ? message : "(no message)");
+    self->lastError_ = "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
+                       (message ? message : "(no message)");
 }
 
 BakeScene::BakeScene(const EmbreeDevice& device, const world::StaticGeometry& geometry,
@@ -51,7 +51,7 @@ BakeScene::BakeScene(const EmbreeDevice& device, const world::StaticGeometry& ge
     indices_.reserve(geometry.triangles.size() * 3);
     for (const world::StaticTriangle& t : geometry.triangles) {
         indices_.insert(indices_.end(), t.v.begin(), t.v.end());
-        triangle_material_.push_back(t.material);
+        triangleMaterial_.push_back(t.material);
     }
     build(device);
 }
@@ -61,39 +61,39 @@ BakeScene::BakeScene(const EmbreeDevice& device, const world::CompiledLevel& lev
     positions_.reserve(level.vertices.size());
     for (const world::Vertex& v : level.vertices) positions_.push_back(v.position);
     indices_ = level.indices;
-    triangle_material_.assign(indices_.size() / 3, world::kNoIndex);
+    triangleMaterial_.assign(indices_.size() / 3, world::kNoIndex);
     for (const world::Surface& s : level.surfaces)
-        for (uint32_t i = s.first_index / 3; i < (s.first_index + s.index_count) / 3; ++i)
-            triangle_material_[i] = s.material;
+        for (uint32_t i = s.firstIndex / 3; i < (s.firstIndex + s.indexCount) / 3; ++i)
+            triangleMaterial_[i] = s.material;
     build(device);
 }
 
 void BakeScene::build(const EmbreeDevice& device) {
-    const size_t triangle_count = indices_.size() / 3;
-    triangle_normal_.resize(triangle_count);
-    bounds_min_ = glm::vec3(std::numeric_limits<float>::max());
-    bounds_max_ = glm::vec3(-std::numeric_limits<float>::max());
-    for (size_t t = 0; t < triangle_count; ++t) {
+    const size_t triangleCount = indices_.size() / 3;
+    triangleNormal_.resize(triangleCount);
+    boundsMin_ = glm::vec3(std::numeric_limits<float>::max());
+    boundsMax_ = glm::vec3(-std::numeric_limits<float>::max());
+    for (size_t t = 0; t < triangleCount; ++t) {
         const glm::vec3 a = positions_[indices_[3 * t]], b = positions_[indices_[3 * t + 1]],
                         c = positions_[indices_[3 * t + 2]];
         const glm::dvec3 n = glm::cross(glm::dvec3(b - a), glm::dvec3(c - a));
         const double length = glm::length(n);
-        triangle_normal_[t] = length > 0.0 ? glm::vec3(n / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+        triangleNormal_[t] = length > 0.0 ? glm::vec3(n / length) : glm::vec3(0.0f, 0.0f, 1.0f);
         for (const glm::vec3& p : {a, b, c}) {
-            bounds_min_ = glm::min(bounds_min_, p);
-            bounds_max_ = glm::max(bounds_max_, p);
+            boundsMin_ = glm::min(boundsMin_, p);
+            boundsMax_ = glm::max(boundsMax_, p);
         }
     }
-    if (triangle_count == 0) bounds_min_ = bounds_max_ = glm::vec3(0.0f);
+    if (triangleCount == 0) boundsMin_ = boundsMax_ = glm::vec3(0.0f);
     const float magnitude =
-        std::max(glm::length(glm::max(glm::abs(bounds_min_), glm::abs(bounds_max_))),
-                 glm::length(bounds_max_ - bounds_min_));
-    ray_offset_ = std::max(kMinimumRayOffset, kSelfIntersectionScale * magnitude);
-    diameter_ = std::max(1.0f, 2.0f * glm::length(bounds_max_ - bounds_min_));
+        std::max(glm::length(glm::max(glm::abs(boundsMin_), glm::abs(boundsMax_))),
+                 glm::length(boundsMax_ - boundsMin_));
+    rayOffset_ = std::max(kMinimumRayOffset, kSelfIntersectionScale * magnitude);
+    diameter_ = std::max(1.0f, 2.0f * glm::length(boundsMax_ - boundsMin_));
 
     scene_ = rtcNewScene(device.handle());
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-    if (triangle_count > 0) {
+    if (triangleCount > 0) {
         RTCGeometry mesh = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
         // Embree reads 16 bytes at the last vertex: the shared buffer gets one float of slack.
         auto* vertices = static_cast<float*>(
@@ -104,33 +104,32 @@ void BakeScene::build(const EmbreeDevice& device) {
             vertices[3 * i + 1] = positions_[i].y;
             vertices[3 * i + 2] = positions_[i].z;
         }
-        auto* triangles = static_cast<uint32_t*>(
-            rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                    3 * sizeof(uint32_t), triangle_count));
+        auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+            mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangleCount));
         std::copy(indices_.begin(), indices_.end(), triangles);
         rtcCommitGeometry(mesh);
         rtcAttachGeometry(scene_, mesh);
         rtcReleaseGeometry(mesh);
     }
     rtcCommitScene(scene_);
-    if (!device.last_error().empty()) throw std::runtime_error(device.last_error());
+    if (!device.lastError().empty()) throw std::runtime_error(device.lastError());
 }
 
 BakeScene::~BakeScene() {
     rtcReleaseScene(scene_);
 }
 
-const world::Material& BakeScene::material_of(uint32_t triangle) const {
-    const uint32_t m = triangle_material_[triangle];
-    return m < materials_.size() ? materials_[m] : default_material_;
+const world::Material& BakeScene::materialOf(uint32_t triangle) const {
+    const uint32_t m = triangleMaterial_[triangle];
+    return m < materials_.size() ? materials_[m] : defaultMaterial_;
 }
 
-size_t BakeScene::memory_bytes() const {
+size_t BakeScene::memoryBytes() const {
     return positions_.size() * sizeof(glm::vec3) + indices_.size() * sizeof(uint32_t) +
-           triangle_normal_.size() * sizeof(glm::vec3) + triangle_material_.size() * 4;
+           triangleNormal_.size() * sizeof(glm::vec3) + triangleMaterial_.size() * 4;
 }
 
-SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, float max_distance,
+SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, float maxDistance,
                                 uint64_t& counter) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -143,7 +142,7 @@ SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, f
     query.ray.dir_y = dir.y;
     query.ray.dir_z = dir.z;
     query.ray.time = 0.0f;
-    query.ray.tfar = max_distance;
+    query.ray.tfar = maxDistance;
     query.ray.mask = 0xFFFFFFFFu;
     query.ray.id = 0;
     query.ray.flags = 0;
@@ -154,24 +153,24 @@ SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, f
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &query);
     ++counter;
-    if (observer_) observer_(observer_user_, {origin, max_distance, dir, false});
+    if (observer_) observer_(observerUser_, {origin, maxDistance, dir, false});
     SurfaceHit hit;
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.found = true;
     hit.distance = query.ray.tfar;
     hit.triangle = query.hit.primID;
-    hit.normal = triangle_normal_[hit.triangle];
+    hit.normal = triangleNormal_[hit.triangle];
     // The hit point from the barycentrics (not origin + t dir): its error is relative to the
     // triangle's coordinates, not to the ray's length.
     const glm::vec3 a = positions_[indices_[3 * hit.triangle]];
     const glm::vec3 b = positions_[indices_[3 * hit.triangle + 1]];
     const glm::vec3 c = positions_[indices_[3 * hit.triangle + 2]];
     hit.position = a + query.hit.u * (b - a) + query.hit.v * (c - a);
-    hit.back_face = glm::dot(dir, hit.normal) > 0.0f;
+    hit.backFace = glm::dot(dir, hit.normal) > 0.0f;
     return hit;
 }
 
-bool BakeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float max_distance,
+bool BakeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float maxDistance,
                          uint64_t& counter) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -184,13 +183,13 @@ bool BakeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float ma
     ray.dir_y = dir.y;
     ray.dir_z = dir.z;
     ray.time = 0.0f;
-    ray.tfar = max_distance;
+    ray.tfar = maxDistance;
     ray.mask = 0xFFFFFFFFu;
     ray.id = 0;
     ray.flags = 0;
     rtcOccluded1(scene_, &context, &ray);
     ++counter;
-    if (observer_) observer_(observer_user_, {origin, max_distance, dir, true});
+    if (observer_) observer_(observerUser_, {origin, maxDistance, dir, true});
     return ray.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
 

@@ -27,12 +27,12 @@ public:
 
     RTCDevice handle() const { return device_; }  // owned
     /// The message of the last error Embree reported, "" when none.
-    std::string last_error() const;
+    std::string lastError() const;
 
 private:
-    static void on_error(void* user, RTCError code, const char* message);
+    static void onError(void* user, RTCError code, const char* message);
     RTCDevice device_ = nullptr;
-    std::string last_error_;
+    std::string lastError_;
 };
 
 /// Ray counts by kind, per thread, summed when a stage ends (integer sums: order-free).
@@ -56,16 +56,16 @@ struct SurfaceHit {
     uint32_t triangle = 0;     // into BakeScene triangles
     glm::vec3 position{0.0f};  // metres, world
     glm::vec3 normal{0.0f};    // unit geometric normal of the front face (winding order)
-    bool back_face = false;    // the ray arrived on the side opposite `normal`
+    bool backFace = false;     // the ray arrived on the side opposite `normal`
 };
 
 /// A ray as a BakeScene traced it, for tools that replay the baker's rays (the benchmark
 /// times them against raw rtcIntersect1 / rtcOccluded1).
 struct TracedRay {
     glm::vec3 origin{0.0f};
-    float max_distance = 0.0f;  // metres
-    glm::vec3 dir{0.0f};        // unit
-    bool occlusion = false;     // rtcOccluded1 (else rtcIntersect1)
+    float maxDistance = 0.0f;  // metres
+    glm::vec3 dir{0.0f};       // unit
+    bool occlusion = false;    // rtcOccluded1 (else rtcIntersect1)
 };
 /// Receives every ray a BakeScene traces, from any thread (the callee synchronises).
 using RayObserver = void (*)(void* user, const TracedRay& ray);
@@ -82,48 +82,48 @@ public:
     BakeScene(const BakeScene&) = delete;
     BakeScene& operator=(const BakeScene&) = delete;
 
-    /// Closest hit along origin + t dir, t in (0, max_distance]. `dir` is unit.
-    SurfaceHit intersect(const glm::vec3& origin, const glm::vec3& dir, float max_distance,
+    /// Closest hit along origin + t dir, t in (0, maxDistance]. `dir` is unit.
+    SurfaceHit intersect(const glm::vec3& origin, const glm::vec3& dir, float maxDistance,
                          uint64_t& counter) const;
-    /// True when anything lies along origin + t dir, t in (0, max_distance].
-    bool occluded(const glm::vec3& origin, const glm::vec3& dir, float max_distance,
+    /// True when anything lies along origin + t dir, t in (0, maxDistance].
+    bool occluded(const glm::vec3& origin, const glm::vec3& dir, float maxDistance,
                   uint64_t& counter) const;
 
     /// Self-intersection offset (metres): a ray leaving a surface starts this far along the
     /// surface normal. kSelfIntersectionScale times the scene's coordinate magnitude, i.e. a
     /// few hundred float ulps of the largest coordinate (see the .cpp for the derivation).
-    float ray_offset() const { return ray_offset_; }
+    float rayOffset() const { return rayOffset_; }
     /// Largest distance any ray needs to travel (the bounding box diagonal plus margin).
-    float scene_diameter() const { return diameter_; }
-    glm::vec3 bounds_min() const { return bounds_min_; }
-    glm::vec3 bounds_max() const { return bounds_max_; }
+    float sceneDiameter() const { return diameter_; }
+    glm::vec3 boundsMin() const { return boundsMin_; }
+    glm::vec3 boundsMax() const { return boundsMax_; }
 
     /// Calls `observer(user, ray)` for every ray traced from now on; null stops it.
-    void observe_rays(RayObserver observer, void* user) {
+    void observeRays(RayObserver observer, void* user) {
         observer_ = observer;
-        observer_user_ = user;
+        observerUser_ = user;
     }
-    RTCScene embree_scene() const { return scene_; }  // borrowed, committed
+    RTCScene embreeScene() const { return scene_; }  // borrowed, committed
 
-    const world::Material& material_of(uint32_t triangle) const;
-    uint32_t triangle_count() const { return static_cast<uint32_t>(triangle_material_.size()); }
-    size_t memory_bytes() const;
+    const world::Material& materialOf(uint32_t triangle) const;
+    uint32_t triangleCount() const { return static_cast<uint32_t>(triangleMaterial_.size()); }
+    size_t memoryBytes() const;
 
 private:
     void build(const EmbreeDevice& device);
 
     RTCScene scene_ = nullptr;  // owned
     std::vector<glm::vec3> positions_;
-    std::vector<uint32_t> indices_;            // 3 per triangle
-    std::vector<glm::vec3> triangle_normal_;   // unit, from the winding
-    std::vector<uint32_t> triangle_material_;  // into materials_
+    std::vector<uint32_t> indices_;           // 3 per triangle
+    std::vector<glm::vec3> triangleNormal_;   // unit, from the winding
+    std::vector<uint32_t> triangleMaterial_;  // into materials_
     std::vector<world::Material> materials_;
-    world::Material default_material_;
-    glm::vec3 bounds_min_{0.0f}, bounds_max_{0.0f};
-    float ray_offset_ = 1e-4f;
+    world::Material defaultMaterial_;
+    glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
+    float rayOffset_ = 1e-4f;
     float diameter_ = 1.0f;
     RayObserver observer_ = nullptr;
-    void* observer_user_ = nullptr;  // borrowed
+    void* observerUser_ = nullptr;  // borrowed
 };
 
 }  // namespace onelight::bake

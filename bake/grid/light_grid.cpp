@@ -13,76 +13,75 @@ constexpr uint32_t kGridPass = 2;
 
 const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
-world::LightGridCell bake_cell(const BakeScene& scene, const BakeLights& lights,
-                               const GridSettings& settings, const glm::vec3& centre,
-                               uint32_t cell_index, RayCounts& rays) {
+world::LightGridCell bakeCell(const BakeScene& scene, const BakeLights& lights,
+                              const GridSettings& settings, const glm::vec3& centre,
+                              uint32_t cellIndex, RayCounts& rays) {
     world::LightGridCell cell;
-    Rng rng{seed_from(cell_index, 0, 0, kGridPass)};
+    Rng rng{seedFrom(cellIndex, 0, 0, kGridPass)};
     const uint32_t count = std::max(1u, settings.samples);
     const float s0 = rng.next(), s1 = rng.next();
     std::array<glm::dvec3, 6> cube{};
-    uint32_t back_faces = 0;
+    uint32_t backFaces = 0;
     for (uint32_t i = 0; i < count; ++i) {
-        const glm::vec3 w = sample_uniform_sphere(rotated_hammersley(i, count, s0, s1));
+        const glm::vec3 w = sampleUniformSphere(rotatedHammersley(i, count, s0, s1));
         FirstHit first;
         const glm::vec3 l =
-            trace_radiance(scene, lights, settings.transport, centre, w, rng, rays, &first);
-        if (first.found && first.back_face) ++back_faces;
+            traceRadiance(scene, lights, settings.transport, centre, w, rng, rays, &first);
+        if (first.found && first.backFace) ++backFaces;
         for (size_t a = 0; a < 6; ++a)
             cube[a] += glm::dvec3(l) * double(std::max(0.0f, glm::dot(kAxes[a], w)));
     }
-    if (static_cast<float>(back_faces) > settings.inside_fraction * static_cast<float>(count)) {
-        cell.flags = world::light_grid_cell_inside_solid;
+    if (static_cast<float>(backFaces) > settings.insideFraction * static_cast<float>(count)) {
+        cell.flags = world::kLightGridCellInsideSolid;
         return cell;
     }
     // Dominant primary and every light's shadowed direct irradiance at the centre.
     std::vector<glm::vec3> direct(lights.lights.size(), glm::vec3(0.0f));
     std::vector<LightIncidence> incidence(lights.lights.size());
-    float best_score = 0.0f;
+    float bestScore = 0.0f;
     for (size_t l = 0; l < lights.lights.size(); ++l) {
         const BakeLight& light = lights.lights[l];
-        incidence[l] = light_incidence(light, centre);
+        incidence[l] = lightIncidence(light, centre);
         if (incidence[l].irradiance == glm::vec3(0.0f)) continue;
-        const float v = light_visibility(scene, light, incidence[l], centre,
-                                         settings.shadow_samples, rng, rays);
+        const float v =
+            lightVisibility(scene, light, incidence[l], centre, settings.shadowSamples, rng, rays);
         direct[l] = incidence[l].irradiance * v;
         const float score = luminance(direct[l]);
-        if (light.light.role == world::LightRole::primary && score > best_score) {
-            best_score = score;
-            cell.dominant_primary = light.level_index;
-            cell.primary_visibility = v;
+        if (light.light.role == world::LightRole::kPrimary && score > bestScore) {
+            bestScore = score;
+            cell.dominantPrimary = light.levelIndex;
+            cell.primaryVisibility = v;
         }
     }
     const double scale = 4.0 * 3.14159265358979323846 / count;
     for (size_t a = 0; a < 6; ++a) cube[a] *= scale;
     for (size_t l = 0; l < lights.lights.size(); ++l) {
-        if (lights.lights[l].level_index == cell.dominant_primary) continue;
+        if (lights.lights[l].levelIndex == cell.dominantPrimary) continue;
         for (size_t a = 0; a < 6; ++a)
             cube[a] += glm::dvec3(direct[l]) *
                        double(std::max(0.0f, glm::dot(kAxes[a], incidence[l].direction)));
     }
-    for (size_t a = 0; a < 6; ++a) cell.ambient_cube[a] = glm::max(glm::vec3(cube[a]), 0.0f);
+    for (size_t a = 0; a < 6; ++a) cell.ambientCube[a] = glm::max(glm::vec3(cube[a]), 0.0f);
     return cell;
 }
 
 }  // namespace
 
-world::LightGrid layout_light_grid(const world::CompiledLevel& level,
-                                   const GridSettings& settings) {
-    glm::vec3 lo = level.settings.bounds_min, hi = level.settings.bounds_max;
-    if (level.features.flags & world::feature_authored_grid) {
-        lo = level.features.grid_min;
-        hi = level.features.grid_max;
+world::LightGrid layoutLightGrid(const world::CompiledLevel& level, const GridSettings& settings) {
+    glm::vec3 lo = level.settings.boundsMin, hi = level.settings.boundsMax;
+    if (level.features.flags & world::kFeatureAuthoredGrid) {
+        lo = level.features.gridMin;
+        hi = level.features.gridMax;
     }
     world::LightGrid grid;
-    const float requested = std::max(settings.cell_size, 1e-3f);
+    const float requested = std::max(settings.cellSize, 1e-3f);
     for (int c = 0; c < 3; ++c) {
         const float extent = std::max(0.0f, hi[c] - lo[c]);
         uint32_t n = static_cast<uint32_t>(std::ceil(extent / requested));
-        n = std::clamp(n, 1u, std::max(1u, settings.max_cells_per_axis));
+        n = std::clamp(n, 1u, std::max(1u, settings.maxCellsPerAxis));
         const float size = extent > 0.0f ? extent / static_cast<float>(n) : requested;
         grid.dims[c] = n;
-        grid.cell_size[c] = size;
+        grid.cellSize[c] = size;
         grid.origin[c] = extent > 0.0f ? lo[c] : lo[c] - 0.5f * size;
     }
     grid.samples = settings.samples;
@@ -90,35 +89,35 @@ world::LightGrid layout_light_grid(const world::CompiledLevel& level,
     return grid;
 }
 
-GridStats bake_light_grid(const BakeScene& scene, const BakeLights& lights,
-                          const GridSettings& settings, uint64_t cell_begin, uint64_t cell_end,
-                          world::LightGrid& grid, Progress* progress) {
+GridStats bakeLightGrid(const BakeScene& scene, const BakeLights& lights,
+                        const GridSettings& settings, uint64_t cellBegin, uint64_t cellEnd,
+                        world::LightGrid& grid, Progress* progress) {
     tbb::enumerable_thread_specific<RayCounts> rays;
-    tbb::parallel_for(tbb::blocked_range<uint64_t>(cell_begin, cell_end, 4), [&](const auto& r) {
+    tbb::parallel_for(tbb::blocked_range<uint64_t>(cellBegin, cellEnd, 4), [&](const auto& r) {
         RayCounts& local = rays.local();
         for (uint64_t i = r.begin(); i != r.end(); ++i) {
             const uint32_t x = static_cast<uint32_t>(i % grid.dims.x);
             const uint32_t y = static_cast<uint32_t>((i / grid.dims.x) % grid.dims.y);
             const uint32_t z = static_cast<uint32_t>(i / (uint64_t(grid.dims.x) * grid.dims.y));
-            const glm::vec3 centre = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cell_size;
+            const glm::vec3 centre = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
             grid.cells[i] =
-                bake_cell(scene, lights, settings, centre, static_cast<uint32_t>(i), local);
+                bakeCell(scene, lights, settings, centre, static_cast<uint32_t>(i), local);
         }
         if (progress) progress->advance(r.size());
     });
     GridStats stats;
     for (const RayCounts& r : rays) stats.rays += r;
-    stats.cells_baked = cell_end - cell_begin;
-    for (uint64_t i = cell_begin; i < cell_end; ++i)
-        stats.cells_inside += (grid.cells[i].flags & world::light_grid_cell_inside_solid) != 0;
+    stats.cellsBaked = cellEnd - cellBegin;
+    for (uint64_t i = cellBegin; i < cellEnd; ++i)
+        stats.cellsInside += (grid.cells[i].flags & world::kLightGridCellInsideSolid) != 0;
     return stats;
 }
 
-glm::vec3 ambient_cube_irradiance(const world::LightGridCell& cell, const glm::vec3& n) {
+glm::vec3 ambientCubeIrradiance(const world::LightGridCell& cell, const glm::vec3& n) {
     const glm::vec3 n2 = n * n;
-    return n2.x * cell.ambient_cube[n.x >= 0.0f ? 0 : 1] +
-           n2.y * cell.ambient_cube[n.y >= 0.0f ? 2 : 3] +
-           n2.z * cell.ambient_cube[n.z >= 0.0f ? 4 : 5];
+    return n2.x * cell.ambientCube[n.x >= 0.0f ? 0 : 1] +
+           n2.y * cell.ambientCube[n.y >= 0.0f ? 2 : 3] +
+           n2.z * cell.ambientCube[n.z >= 0.0f ? 4 : 5];
 }
 
 }  // namespace onelight::bake

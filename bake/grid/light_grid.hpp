@@ -14,25 +14,25 @@
 namespace onelight::bake {
 
 struct GridSettings {
-    float cell_size = 1.0f;            // metres, requested
-    uint32_t max_cells_per_axis = 64;  // cells grow past cell_size to stay under this
-    uint32_t samples = 256;            // sphere directions per cell
-    uint32_t shadow_samples = 16;      // per light per cell
-    float inside_fraction = 0.5f;      // back-face hits above this fraction: inside solid
+    float cellSize = 1.0f;          // metres, requested
+    uint32_t maxCellsPerAxis = 64;  // cells grow past cellSize to stay under this
+    uint32_t samples = 256;         // sphere directions per cell
+    uint32_t shadowSamples = 16;    // per light per cell
+    float insideFraction = 0.5f;    // back-face hits above this fraction: inside solid
     TransportSettings transport;
 };
 
 /// Origin, cell size and dimensions (cells empty) over the authored grid bounds when the
 /// level has them, else over the static geometry's bounds.
-world::LightGrid layout_light_grid(const world::CompiledLevel& level, const GridSettings& settings);
+world::LightGrid layoutLightGrid(const world::CompiledLevel& level, const GridSettings& settings);
 
 struct GridStats {
     RayCounts rays;
-    uint64_t cells_baked = 0;
-    uint64_t cells_inside = 0;
+    uint64_t cellsBaked = 0;
+    uint64_t cellsInside = 0;
 };
 
-/// Bakes cells [cell_begin, cell_end) of `grid` (cells already sized). Each cell's random
+/// Bakes cells [cellBegin, cellEnd) of `grid` (cells already sized). Each cell's random
 /// sequence is seeded from its index.
 /*
    Ambient cube face a (unit axis):  E_a = int_{S^2} L(w) max(0, a . w) dw
@@ -46,11 +46,11 @@ struct GridStats {
    Dominant primary: argmax over primaries of Y(E_l) V_l (no cosine: an object's orientation
    is unknown), lowest index on ties.
 */
-GridStats bake_light_grid(const BakeScene& scene, const BakeLights& lights,
-                          const GridSettings& settings, uint64_t cell_begin, uint64_t cell_end,
-                          world::LightGrid& grid, Progress* progress);
+GridStats bakeLightGrid(const BakeScene& scene, const BakeLights& lights,
+                        const GridSettings& settings, uint64_t cellBegin, uint64_t cellEnd,
+                        world::LightGrid& grid, Progress* progress);
 
 /// Irradiance (lux) on a surface of normal n from an ambient cube: n.x^2 C[+-x] + ...
-glm::vec3 ambient_cube_irradiance(const world::LightGridCell& cell, const glm::vec3& n);
+glm::vec3 ambientCubeIrradiance(const world::LightGridCell& cell, const glm::vec3& n);
 
 }  // namespace onelight::bake

@@ -25,7 +25,7 @@ double sharedLobe(const SpecularModel& model, float gloss, const Reflection& r) 
 // The Blinn-Phong Lambda table the reference needs for this model and gloss (none otherwise).
 std::optional<reference::BlinnPhongLambda> lambdaTableFor(const SpecularModel& model,
                                                           double gloss) {
-    if (model.referenceNdf != reference::Ndf::BlinnPhong) return std::nullopt;
+    if (model.referenceNdf != reference::Ndf::kBlinnPhong) return std::nullopt;
     return reference::BlinnPhongLambda(reference::specPower(gloss));
 }
 

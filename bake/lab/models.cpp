@@ -10,11 +10,11 @@ using namespace onelight::glsl;
 
 const std::vector<SpecularModel>& specularModels() {
     static const std::vector<SpecularModel> models = {
-        {"bp_none", NDF_BLINN_PHONG, VIS_NONE, reference::Ndf::BlinnPhong},
-        {"bp_kelemen", NDF_BLINN_PHONG, VIS_KELEMEN, reference::Ndf::BlinnPhong},
-        {"bp_schlick", NDF_BLINN_PHONG, VIS_SCHLICK_SMITH, reference::Ndf::BlinnPhong},
-        {"beck_smith", NDF_BECKMANN, VIS_SMITH_CORRELATED, reference::Ndf::Beckmann},
-        {"ggx_smith", NDF_GGX, VIS_SMITH_CORRELATED, reference::Ndf::GGX},
+        {"bp_none", NDF_BLINN_PHONG, VIS_NONE, reference::Ndf::kBlinnPhong},
+        {"bp_kelemen", NDF_BLINN_PHONG, VIS_KELEMEN, reference::Ndf::kBlinnPhong},
+        {"bp_schlick", NDF_BLINN_PHONG, VIS_SCHLICK_SMITH, reference::Ndf::kBlinnPhong},
+        {"beck_smith", NDF_BECKMANN, VIS_SMITH_CORRELATED, reference::Ndf::kBeckmann},
+        {"ggx_smith", NDF_GGX, VIS_SMITH_CORRELATED, reference::Ndf::kGGX},
     };
     return models;
 }

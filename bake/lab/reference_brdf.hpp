@@ -106,7 +106,7 @@ private:
     std::vector<double> projected_;  // P at mu = i / 2048
 };
 
-enum class Ndf { BlinnPhong, Beckmann, GGX };
+enum class Ndf { kBlinnPhong, kBeckmann, kGGX };
 
 // The exact height-correlated Smith BRDF times the cosine, F = 1:
 // f NoL = D G2 / (4 NoV), G2 = 1 / (1 + Lambda(v) + Lambda(l)), each NDF with its own Lambda
@@ -115,12 +115,12 @@ inline double smithLobe(Ndf ndf, double gloss, double NoV, double NoL, double si
                         const BlinnPhongLambda* blinnPhongLambda = nullptr) {
     if (NoL <= 0.0 || NoV <= 0.0) return 0.0;
     double D, lv, ll;
-    if (ndf == Ndf::GGX) {
+    if (ndf == Ndf::kGGX) {
         double a = ggxAlpha(gloss);
         D = ndfGGX(sin2H, cosH, a);
         lv = lambdaGGX(NoV, a);
         ll = lambdaGGX(NoL, a);
-    } else if (ndf == Ndf::Beckmann) {
+    } else if (ndf == Ndf::kBeckmann) {
         double m = beckmannM(gloss);
         D = ndfBeckmann(sin2H, cosH, m);
         lv = lambdaBeckmann(NoV, m);

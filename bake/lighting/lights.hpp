@@ -20,25 +20,25 @@ namespace onelight::bake {
 /// Light sizes: glTF lights are punctual, shadows need a size. Until the level format carries
 /// one per light, these apply to every light.
 struct LightSizes {
-    float point_radius = 0.05f;           // metres: sphere radius of point and spot lights
-    float sun_angular_radius = 0.00465f;  // radians: the sun's (0.27 degrees)
+    float pointRadius = 0.05f;          // metres: sphere radius of point and spot lights
+    float sunAngularRadius = 0.00465f;  // radians: the sun's (0.27 degrees)
 };
 
 /// A light as the baker uses it.
 struct BakeLight {
     world::Light light;
-    uint32_t level_index = world::kNoIndex;  // into CompiledLevel::lights
-    float radius = 0.0f;                  // metres (point, spot) or radians (directional)
+    uint32_t levelIndex = world::kNoIndex;  // into CompiledLevel::lights
+    float radius = 0.0f;                    // metres (point, spot) or radians (directional)
 };
 
 /// The lights a bake uses (effect lights are runtime-only and left out), plus the sky.
 struct BakeLights {
     std::vector<BakeLight> lights;
-    glm::vec3 sky_radiance{0.0f};  // cd/m^2, uniform over every direction that escapes
+    glm::vec3 skyRadiance{0.0f};  // cd/m^2, uniform over every direction that escapes
 };
 
-BakeLights make_bake_lights(const std::vector<world::Light>& level_lights, const LightSizes& sizes,
-                            glm::vec3 sky_radiance);
+BakeLights makeBakeLights(const std::vector<world::Light>& levelLights, const LightSizes& sizes,
+                          glm::vec3 skyRadiance);
 
 /// A light seen from a point: where its centre is and how much it gives there.
 struct LightIncidence {
@@ -49,18 +49,18 @@ struct LightIncidence {
 
 /// The unshadowed light at `position`: E = I / d^2 x range window x spot cone for point and
 /// spot lights, E = I for directional, times the colour.
-LightIncidence light_incidence(const BakeLight& light, const glm::vec3& position);
+LightIncidence lightIncidence(const BakeLight& light, const glm::vec3& position);
 
 /// A direction towards a uniformly chosen point of the light's apparent disc and the length
 /// of the shadow ray that tests it (stops at the light's surface).
 struct LightDirection {
     glm::vec3 direction{0.0f, 0.0f, 1.0f};
-    float shadow_distance = 0.0f;  // metres
+    float shadowDistance = 0.0f;  // metres
 };
 // pdf = 1 / (2 pi (1 - cos theta_max)), uniform over the cone of directions the light covers
 // (sin theta_max = radius / distance for a sphere, the angular radius for the sun).
-LightDirection sample_light_direction(const BakeLight& light, const LightIncidence& incidence,
-                                      glm::vec2 u, float scene_diameter);
+LightDirection sampleLightDirection(const BakeLight& light, const LightIncidence& incidence,
+                                    glm::vec2 u, float sceneDiameter);
 
 /// Fraction of the light's apparent disc visible from `origin` (already offset off its
 /// surface), by `samples` shadow rays on a rotated Hammersley set seeded by `rng`.
@@ -71,8 +71,8 @@ LightDirection sample_light_direction(const BakeLight& light, const LightInciden
                                         | V = (1/N) sum_i vis(w_i)  |
                                         +---------------------------+
 */
-float light_visibility(const BakeScene& scene, const BakeLight& light,
-                       const LightIncidence& incidence, const glm::vec3& origin, uint32_t samples,
-                       Rng& rng, RayCounts& rays);
+float lightVisibility(const BakeScene& scene, const BakeLight& light,
+                      const LightIncidence& incidence, const glm::vec3& origin, uint32_t samples,
+                      Rng& rng, RayCounts& rays);
 
 }  // namespace onelight::bake

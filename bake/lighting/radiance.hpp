@@ -21,11 +21,11 @@ inline constexpr int kShadingVis = 3;      // VIS_SMITH_CORRELATED
 inline constexpr int kShadingFresnel = 1;  // FRESNEL_SCHLICK
 
 struct TransportSettings {
-    uint32_t max_depth = 64;      // surface hits per path; Russian roulette ends most far earlier
-    uint32_t roulette_depth = 2;  // hits after which Russian roulette starts
+    uint32_t maxDepth = 64;      // surface hits per path; Russian roulette ends most far earlier
+    uint32_t rouletteDepth = 2;  // hits after which Russian roulette starts
 };
 
-/// Radiance (cd/m^2, RGB) a surface point sends towards `to_viewer` by direct light: every
+/// Radiance (cd/m^2, RGB) a surface point sends towards `toViewer` by direct light: every
 /// light with one shadow ray towards a random point of it. `normal` faces the viewer side.
 /*
    Lo_direct(v) = sum_l int_{light l} f(v, w) L_l cos dw
@@ -36,15 +36,15 @@ struct TransportSettings {
                  | Lo_direct ~ sum_l (albedo NoL / pi + specularLobe) E_l vis(w_l) |
                  +----------------------------------------------------------------+
 */
-glm::vec3 direct_radiance(const BakeScene& scene, const BakeLights& lights,
-                          const world::Material& material, const glm::vec3& position,
-                          const glm::vec3& normal, const glm::vec3& to_viewer, Rng& rng,
-                          RayCounts& rays);
+glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
+                         const world::Material& material, const glm::vec3& position,
+                         const glm::vec3& normal, const glm::vec3& toViewer, Rng& rng,
+                         RayCounts& rays);
 
-/// What trace_radiance saw first (for inside-geometry tests).
+/// What traceRadiance saw first (for inside-geometry tests).
 struct FirstHit {
     bool found = false;
-    bool back_face = false;
+    bool backFace = false;
     float distance = 0.0f;
 };
 
@@ -54,7 +54,7 @@ struct FirstHit {
 /*
    L(x, -w) = Lo(y, -w),  y the first hit along w, or the sky radiance when there is none.
    Lo(y, v) = Lo_direct(y, v) + int f(v, w') L(y, -w') cos' dw'
-   Continuation: w' from the mixture density pdf(w') (sample_surface), so the path throughput
+   Continuation: w' from the mixture density pdf(w') (sampleSurface), so the path throughput
    multiplies by f cos' / pdf (albedo exactly for a Lambert-only surface), and by 1 / q when
    Russian roulette survives with probability q (unbiased).
      +------------------------------------------------------------------------------+
@@ -62,8 +62,8 @@ struct FirstHit {
      +------------------------------------------------------------------------------+
    Back faces of single-sided materials absorb (they are only seen from inside solids).
 */
-glm::vec3 trace_radiance(const BakeScene& scene, const BakeLights& lights,
-                         const TransportSettings& settings, glm::vec3 origin, glm::vec3 dir,
-                         Rng& rng, RayCounts& rays, FirstHit* first_hit = nullptr);
+glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
+                        const TransportSettings& settings, glm::vec3 origin, glm::vec3 dir,
+                        Rng& rng, RayCounts& rays, FirstHit* firstHit = nullptr);
 
 }  // namespace onelight::bake

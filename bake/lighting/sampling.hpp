@@ -16,15 +16,15 @@ inline constexpr float kPi = 3.14159265358979f;
 
 // Jarzynski and Olano 2020, "Hash Functions for GPU Rendering", JCGT 9(3), "pcg" (the PCG
 // output permutation applied to one LCG step of the input).
-inline uint32_t pcg_hash(uint32_t input) {
+inline uint32_t pcgHash(uint32_t input) {
     const uint32_t state = input * 747796405u + 2891336453u;
     const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
     return (word >> 22u) ^ word;
 }
 
 /// Seed from an identity of up to four words (e.g. atlas, x, y, pass); order matters.
-inline uint32_t seed_from(uint32_t a, uint32_t b = 0, uint32_t c = 0, uint32_t d = 0) {
-    return pcg_hash(d ^ pcg_hash(c ^ pcg_hash(b ^ pcg_hash(a))));
+inline uint32_t seedFrom(uint32_t a, uint32_t b = 0, uint32_t c = 0, uint32_t d = 0) {
+    return pcgHash(d ^ pcgHash(c ^ pcgHash(b ^ pcgHash(a))));
 }
 
 /// A stream of uniform numbers: the hash of (seed, counter). Counter-based, so a sample's
@@ -35,13 +35,13 @@ struct Rng {
 
     /// Uniform in [0, 1): the top 24 bits of the hash, exactly representable in float.
     float next() {
-        const uint32_t bits = pcg_hash(seed ^ pcg_hash(counter++));
+        const uint32_t bits = pcgHash(seed ^ pcgHash(counter++));
         return static_cast<float>(bits >> 8) * (1.0f / 16777216.0f);
     }
 };
 
 /// Van der Corput radical inverse in base 2 (bit reversal), in [0, 1).
-inline float radical_inverse2(uint32_t i) {
+inline float radicalInverse2(uint32_t i) {
     i = (i << 16u) | (i >> 16u);
     i = ((i & 0x00ff00ffu) << 8u) | ((i & 0xff00ff00u) >> 8u);
     i = ((i & 0x0f0f0f0fu) << 4u) | ((i & 0xf0f0f0f0u) >> 4u);
@@ -52,9 +52,9 @@ inline float radical_inverse2(uint32_t i) {
 
 /// Point i of an n-point Hammersley set shifted by (s0, s1) modulo 1 (Cranley-Patterson
 /// rotation): stratified within a texel, decorrelated between texels.
-inline glm::vec2 rotated_hammersley(uint32_t i, uint32_t n, float s0, float s1) {
+inline glm::vec2 rotatedHammersley(uint32_t i, uint32_t n, float s0, float s1) {
     float u = (static_cast<float>(i) + 0.5f) / static_cast<float>(n) + s0;
-    float v = radical_inverse2(i) + s1;
+    float v = radicalInverse2(i) + s1;
     u -= std::floor(u);
     v -= std::floor(v);
     return {u < 1.0f ? u : 0.0f, v < 1.0f ? v : 0.0f};
@@ -64,9 +64,9 @@ inline glm::vec2 rotated_hammersley(uint32_t i, uint32_t n, float s0, float s1) 
 /// Revisited", JCGT 6(1), listing 3: branchless, no singularity except exactly at the sign flip.
 struct Frame {
     glm::vec3 t, b, n;
-    glm::vec3 to_world(const glm::vec3& v) const { return t * v.x + b * v.y + n * v.z; }
+    glm::vec3 toWorld(const glm::vec3& v) const { return t * v.x + b * v.y + n * v.z; }
 };
-inline Frame frame_around(const glm::vec3& n) {
+inline Frame frameAround(const glm::vec3& n) {
     const float sign = std::copysign(1.0f, n.z);
     const float a = -1.0f / (sign + n.z);
     const float b = n.x * n.y * a;
@@ -77,7 +77,7 @@ inline Frame frame_around(const glm::vec3& n) {
 /// Cosine-weighted direction on the hemisphere around +z, by Malley's method (a uniform
 /// point on the unit disc lifted to the hemisphere).
 // pdf = cos(theta) / pi   (solid angle)
-inline glm::vec3 sample_cosine_hemisphere(glm::vec2 u) {
+inline glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
     const float r = std::sqrt(u.x);
     const float phi = 2.0f * kPi * u.y;
     return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
@@ -85,7 +85,7 @@ inline glm::vec3 sample_cosine_hemisphere(glm::vec2 u) {
 
 /// Uniform direction on the unit sphere (Archimedes: z uniform in [-1, 1]).
 // pdf = 1 / (4 pi)   (solid angle)
-inline glm::vec3 sample_uniform_sphere(glm::vec2 u) {
+inline glm::vec3 sampleUniformSphere(glm::vec2 u) {
     const float z = 1.0f - 2.0f * u.x;
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
     const float phi = 2.0f * kPi * u.y;
@@ -95,13 +95,13 @@ inline glm::vec3 sample_uniform_sphere(glm::vec2 u) {
 /// Uniform direction inside the cone of half-angle acos(cos_max) around +z. The cosine is
 /// written as 1 - u (1 - cos_max) with 1 - cos_max passed in directly, so cones of a few
 /// arc-minutes (the sun) keep their digits: Pharr et al., PBRT 3rd ed., sec. 13.6.4.
-// pdf = 1 / (2 pi one_minus_cos_max)   (solid angle)
-inline glm::vec3 sample_uniform_cone(glm::vec2 u, float one_minus_cos_max) {
-    const float one_minus_cos = u.x * one_minus_cos_max;
-    const float cos_theta = 1.0f - one_minus_cos;
-    const float sin_theta = std::sqrt(std::max(0.0f, one_minus_cos * (2.0f - one_minus_cos)));
+// pdf = 1 / (2 pi oneMinusCosMax)   (solid angle)
+inline glm::vec3 sampleUniformCone(glm::vec2 u, float oneMinusCosMax) {
+    const float oneMinusCos = u.x * oneMinusCosMax;
+    const float cosTheta = 1.0f - oneMinusCos;
+    const float sinTheta = std::sqrt(std::max(0.0f, oneMinusCos * (2.0f - oneMinusCos)));
     const float phi = 2.0f * kPi * u.y;
-    return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
 }
 
 /// Rec. 709 luminance of linear RGB (shaders/common.glsl).

@@ -8,10 +8,10 @@
 
 namespace onelight::bake {
 
-float specular_probability(const world::Material& material, float NoV) {
-    if (!(luminance(material.specular_color) > 0.0f)) return 0.0f;
+float specularProbability(const world::Material& material, float NoV) {
+    if (!(luminance(material.specularColor) > 0.0f)) return 0.0f;
     const float specular =
-        luminance(glsl::F_Schlick(material.specular_color, std::clamp(NoV, 0.0f, 1.0f)));
+        luminance(glsl::F_Schlick(material.specularColor, std::clamp(NoV, 0.0f, 1.0f)));
     const float diffuse = luminance(material.albedo);
     return specular / (specular + std::max(diffuse, 0.0f));
 }
@@ -19,9 +19,9 @@ float specular_probability(const world::Material& material, float NoV) {
 namespace {
 
 // The mixture density for a direction l above the surface (NoL = n.l > 0) whose dots with n and
-// v are `d`, drawn with specular probability p: shared by surface_pdf and sample_surface, which
+// v are `d`, drawn with specular probability p: shared by surfacePdf and sampleSurface, which
 // has p and the dots already.
-float mixture_pdf(float p, float gloss, const glsl::BrdfDots& d, float NoL) {
+float mixturePdf(float p, float gloss, const glsl::BrdfDots& d, float NoL) {
     float pdf = (1.0f - p) * NoL / kPi;
     if (p > 0.0f) {
         const float NoH = std::sqrt(std::max(0.0f, 1.0f - d.NxH2));
@@ -33,31 +33,31 @@ float mixture_pdf(float p, float gloss, const glsl::BrdfDots& d, float NoL) {
 
 }  // namespace
 
-float surface_pdf(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
-                  const glm::vec3& l) {
+float surfacePdf(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
+                 const glm::vec3& l) {
     const float NoL = glm::dot(n, l);
     if (NoL <= 0.0f) return 0.0f;
-    return mixture_pdf(specular_probability(material, glm::dot(n, v)), material.gloss,
-                       glsl::brdfDots(n, v, l), NoL);
+    return mixturePdf(specularProbability(material, glm::dot(n, v)), material.gloss,
+                      glsl::brdfDots(n, v, l), NoL);
 }
 
-SurfaceSample sample_surface(const world::Material& material, const glm::vec3& n,
-                             const glm::vec3& v, Rng& rng) {
-    const Frame frame = frame_around(n);
-    const float p = specular_probability(material, glm::dot(n, v));
+SurfaceSample sampleSurface(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
+                            Rng& rng) {
+    const Frame frame = frameAround(n);
+    const float p = specularProbability(material, glm::dot(n, v));
     SurfaceSample s;
     if (p > 0.0f && (p >= 1.0f || rng.next() < p)) {
         const float a = glsl::ggxAlpha_fromGloss(material.gloss);
         const float u1 = rng.next(), u2 = rng.next();
         const float cos2 = (1.0f - u1) / (1.0f + (a * a - 1.0f) * u1);
-        const float sin_h = std::sqrt(std::max(0.0f, 1.0f - cos2));
+        const float sinH = std::sqrt(std::max(0.0f, 1.0f - cos2));
         const float phi = 2.0f * kPi * u2;
-        const glm::vec3 h = frame.to_world(
-            {sin_h * std::cos(phi), sin_h * std::sin(phi), std::sqrt(std::max(0.0f, cos2))});
+        const glm::vec3 h = frame.toWorld(
+            {sinH * std::cos(phi), sinH * std::sin(phi), std::sqrt(std::max(0.0f, cos2))});
         s.direction = glm::normalize(2.0f * glm::dot(v, h) * h - v);
     } else {
         s.direction =
-            glm::normalize(frame.to_world(sample_cosine_hemisphere({rng.next(), rng.next()})));
+            glm::normalize(frame.toWorld(sampleCosineHemisphere({rng.next(), rng.next()})));
         if (p == 0.0f) {  // Lambert alone: f cos / pdf = (albedo NoL / pi) / (NoL / pi)
             s.weight = material.albedo;
             return s;
@@ -66,12 +66,12 @@ SurfaceSample sample_surface(const world::Material& material, const glm::vec3& n
     const float NoL = glm::dot(n, s.direction);
     if (NoL <= 1e-6f) return s;  // below the horizon: no contribution
     const glsl::BrdfDots d = glsl::brdfDots(n, v, s.direction);
-    const float pdf = mixture_pdf(p, material.gloss, d, NoL);
+    const float pdf = mixturePdf(p, material.gloss, d, NoL);
     if (!(pdf > 0.0f)) return s;
-    const glm::vec3 f_cos = material.albedo * (glsl::Fd_Lambert() * d.NoL) +
-                            glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
-                                               material.specular_color, material.gloss, d);
-    s.weight = f_cos / pdf;
+    const glm::vec3 fCos = material.albedo * (glsl::Fd_Lambert() * d.NoL) +
+                           glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
+                                              material.specularColor, material.gloss, d);
+    s.weight = fCos / pdf;
     return s;
 }
 

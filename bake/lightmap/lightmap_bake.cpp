@@ -14,29 +14,29 @@ namespace {
 /// The random stream of texel (atlas, x, y): `pass` separates streams of later passes.
 constexpr uint32_t kLightmapPass = 1;
 
-const BakeLight* own_primary(const BakeLights& lights, uint32_t level_index) {
+const BakeLight* ownPrimary(const BakeLights& lights, uint32_t levelIndex) {
     for (const BakeLight& l : lights.lights)
-        if (l.level_index == level_index) return &l;
+        if (l.levelIndex == levelIndex) return &l;
     return nullptr;
 }
 
 /// Moves a sample point out of geometry it lies in: short rays along the surface over the
 /// texel's footprint; a back face among them means the point is inside a solid (e.g. a floor
 /// texel under a wall standing on it), so the point moves just past that back face.
-glm::vec3 move_out_of_geometry(const BakeScene& scene, const glm::vec3& origin,
-                               const glm::vec3& normal, float texel_size, RayCounts& rays,
-                               bool& moved) {
-    const Frame frame = frame_around(normal);
-    const float reach = 0.7072f * texel_size + 2.0f * scene.ray_offset();
+glm::vec3 moveOutOfGeometry(const BakeScene& scene, const glm::vec3& origin,
+                            const glm::vec3& normal, float texelSize, RayCounts& rays,
+                            bool& moved) {
+    const Frame frame = frameAround(normal);
+    const float reach = 0.7072f * texelSize + 2.0f * scene.rayOffset();
     const glm::vec3 directions[4] = {frame.t, -frame.t, frame.b, -frame.b};
     float nearest = reach;
     glm::vec3 result = origin;
     moved = false;
     for (const glm::vec3& d : directions) {
         const SurfaceHit hit = scene.intersect(origin, d, reach, rays.probe);
-        if (hit.found && hit.back_face && hit.distance < nearest) {
+        if (hit.found && hit.backFace && hit.distance < nearest) {
             nearest = hit.distance;
-            result = origin + d * (hit.distance + 2.0f * scene.ray_offset());
+            result = origin + d * (hit.distance + 2.0f * scene.rayOffset());
             moved = true;
         }
     }
@@ -49,9 +49,9 @@ glm::vec3 move_out_of_geometry(const BakeScene& scene, const glm::vec3& origin,
    Direct part: E_l and w_l analytic (lights.hpp), V_l by stratified shadow rays.
    Indirect part: w_i cosine-distributed on a rotated Hammersley set (pdf (n . w) / pi), so
      int L (n . w) dw ~ (1/N) sum_i L(w_i) (n . w_i) / pdf(w_i) = (pi / N) sum_i L(w_i)
-   where L(w_i) = trace_radiance (every bounce of every light, and the sky on escape).
+   where L(w_i) = traceRadiance (every bounce of every light, and the sky on escape).
    The indirect part is then averaged with the texel's neighbours (the second pass of
-   bake_lightmap_texels: a tent whose radius, one of kIndirectFilterRadii, grows with the local
+   bakeLightmapTexels: a tent whose radius, one of kIndirectFilterRadii, grows with the local
    noise past the kIndirectFilterNoise thresholds).
    Direction: d = 1/2 sum (Y(E_k) w_k) / sum Y(E_k) over the same terms (luminance-weighted).
                   +--------------------------------------------------------------------+
@@ -61,74 +61,74 @@ glm::vec3 move_out_of_geometry(const BakeScene& scene, const glm::vec3& origin,
 */
 struct TexelEstimate {
     glm::vec3 origin{0.0f};  // where the rays started (moved out of geometry if needed)
-    glm::dvec3 direct{0.0}, indirect{0.0};                      // lux
-    glm::dvec3 direct_direction{0.0}, indirect_direction{0.0};  // sum Y(E) w
-    double direct_luminance = 0.0, indirect_luminance = 0.0;
+    glm::dvec3 direct{0.0}, indirect{0.0};                    // lux
+    glm::dvec3 directDirection{0.0}, indirectDirection{0.0};  // sum Y(E) w
+    double directLuminance = 0.0, indirectLuminance = 0.0;
     double noise = 0.0;  // luminance standard error of the indirect part
     uint8_t mask = 0;
     bool moved = false;
 };
 
-TexelEstimate estimate_texel(const BakeScene& scene, const BakeLights& lights,
-                             const world::CompiledLevel& level, const TexelSample& sample,
-                             const LightmapSettings& settings, RayCounts& rays) {
+TexelEstimate estimateTexel(const BakeScene& scene, const BakeLights& lights,
+                            const world::CompiledLevel& level, const TexelSample& sample,
+                            const LightmapSettings& settings, RayCounts& rays) {
     TexelEstimate out;
-    Rng rng{seed_from(sample.atlas, sample.x, sample.y, kLightmapPass)};
+    Rng rng{seedFrom(sample.atlas, sample.x, sample.y, kLightmapPass)};
     const glm::vec3 n = sample.normal;
-    glm::vec3 origin = sample.position + n * scene.ray_offset();
-    origin = move_out_of_geometry(scene, origin, n, sample.texel_size, rays, out.moved);
+    glm::vec3 origin = sample.position + n * scene.rayOffset();
+    origin = moveOutOfGeometry(scene, origin, n, sample.texelSize, rays, out.moved);
     out.origin = origin;
 
     // Visibility is sampled from `origin` (on the surface); the unshadowed light E_l (n.w_l)
     // at the texel centre, which lies past the triangle's edge for an edge texel: bilinear
     // filtering then reads the edge's own value at a chart border (texel_placement.hpp).
-    const glm::vec3 centre = out.moved ? origin : sample.centre + n * scene.ray_offset();
+    const glm::vec3 centre = out.moved ? origin : sample.centre + n * scene.rayOffset();
 
     const world::Surface& surface = level.surfaces[sample.surface];
-    const BakeLight* own = own_primary(lights, surface.primary_light);
+    const BakeLight* own = ownPrimary(lights, surface.primaryLight);
     if (own) {
-        const LightIncidence incidence = light_incidence(*own, origin);
+        const LightIncidence incidence = lightIncidence(*own, origin);
         const float v =
-            light_visibility(scene, *own, incidence, origin, settings.shadow_samples, rng, rays);
+            lightVisibility(scene, *own, incidence, origin, settings.shadowSamples, rng, rays);
         out.mask = static_cast<uint8_t>(std::lround(v * 255.0f));
     }
     for (const BakeLight& light : lights.lights) {
         if (&light == own) continue;
-        const LightIncidence incidence = light_incidence(light, origin);
-        const LightIncidence at_centre = light_incidence(light, centre);
-        const float cosine = glm::dot(n, at_centre.direction);
+        const LightIncidence incidence = lightIncidence(light, origin);
+        const LightIncidence atCentre = lightIncidence(light, centre);
+        const float cosine = glm::dot(n, atCentre.direction);
         if (glm::dot(n, incidence.direction) <= 0.0f || cosine <= 0.0f ||
-            at_centre.irradiance == glm::vec3(0.0f))
+            atCentre.irradiance == glm::vec3(0.0f))
             continue;
         const float v =
-            light_visibility(scene, light, incidence, origin, settings.shadow_samples, rng, rays);
-        const glm::vec3 e = at_centre.irradiance * (cosine * v);
+            lightVisibility(scene, light, incidence, origin, settings.shadowSamples, rng, rays);
+        const glm::vec3 e = atCentre.irradiance * (cosine * v);
         out.direct += glm::dvec3(e);
-        out.direct_direction += double(luminance(e)) * glm::dvec3(at_centre.direction);
-        out.direct_luminance += double(luminance(e));
+        out.directDirection += double(luminance(e)) * glm::dvec3(atCentre.direction);
+        out.directLuminance += double(luminance(e));
     }
-    const uint32_t count = settings.indirect_samples;
+    const uint32_t count = settings.indirectSamples;
     if (count > 0) {
-        const Frame frame = frame_around(n);
+        const Frame frame = frameAround(n);
         const float s0 = rng.next(), s1 = rng.next();
-        double sum_y2 = 0.0;
+        double sumY2 = 0.0;
         for (uint32_t i = 0; i < count; ++i) {
             const glm::vec3 w = glm::normalize(
-                frame.to_world(sample_cosine_hemisphere(rotated_hammersley(i, count, s0, s1))));
+                frame.toWorld(sampleCosineHemisphere(rotatedHammersley(i, count, s0, s1))));
             const glm::vec3 e =
-                kPi * trace_radiance(scene, lights, settings.transport, origin, w, rng, rays);
+                kPi * traceRadiance(scene, lights, settings.transport, origin, w, rng, rays);
             const double y = luminance(e);
             out.indirect += glm::dvec3(e);
-            out.indirect_direction += y * glm::dvec3(w);
-            out.indirect_luminance += y;
-            sum_y2 += y * y;
+            out.indirectDirection += y * glm::dvec3(w);
+            out.indirectLuminance += y;
+            sumY2 += y * y;
         }
         const double inv = 1.0 / count;
         out.indirect *= inv;
-        out.indirect_direction *= inv;
-        out.indirect_luminance *= inv;
-        const double mean = out.indirect_luminance;
-        out.noise = std::sqrt(std::max(0.0, sum_y2 * inv - mean * mean) * inv);
+        out.indirectDirection *= inv;
+        out.indirectLuminance *= inv;
+        const double mean = out.indirectLuminance;
+        out.noise = std::sqrt(std::max(0.0, sumY2 * inv - mean * mean) * inv);
     }
     return out;
 }
@@ -137,18 +137,18 @@ TexelEstimate estimate_texel(const BakeScene& scene, const BakeLights& lights,
 constexpr int kIndirectFilterRadii[3] = {1, 2, 3};
 constexpr double kIndirectFilterNoise[2] = {0.10, 0.25};
 
-uint32_t chart_of(const world::CompiledLevel& level, const TexelSample& s) {
+uint32_t chartOf(const world::CompiledLevel& level, const TexelSample& s) {
     return level.surfaces[s.surface].chart;
 }
 
 }  // namespace
 
-LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lights,
-                                   const world::CompiledLevel& level,
-                                   const std::vector<TexelSample>& samples,
-                                   const LightmapSettings& settings, uint64_t texel_begin,
-                                   uint64_t texel_end, world::BakedLighting& baked,
-                                   Progress* progress) {
+LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& lights,
+                                 const world::CompiledLevel& level,
+                                 const std::vector<TexelSample>& samples,
+                                 const LightmapSettings& settings, uint64_t texelBegin,
+                                 uint64_t texelEnd, world::BakedLighting& baked,
+                                 Progress* progress) {
     const auto lower = [&](uint64_t texel) {
         return static_cast<size_t>(
             std::lower_bound(samples.begin(), samples.end(), texel,
@@ -159,20 +159,19 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
     // that many atlas rows (and texels) around the owned range too (every texel's estimate
     // depends only on its identity, so a halo texel gets the same value in whichever shard
     // computes it).
-    const int max_radius = kIndirectFilterRadii[2];
+    const int maxRadius = kIndirectFilterRadii[2];
     uint64_t halo = 1;
     for (const world::Atlas& a : level.atlases)
-        halo = std::max<uint64_t>(halo, uint64_t(max_radius) * (a.width + 1ull));
-    const size_t owned_begin = lower(texel_begin), owned_end = lower(texel_end);
-    const size_t begin = lower(texel_begin > halo ? texel_begin - halo : 0);
-    const size_t end = lower(texel_end + halo);
+        halo = std::max<uint64_t>(halo, uint64_t(maxRadius) * (a.width + 1ull));
+    const size_t ownedBegin = lower(texelBegin), ownedEnd = lower(texelEnd);
+    const size_t begin = lower(texelBegin > halo ? texelBegin - halo : 0);
+    const size_t end = lower(texelEnd + halo);
     std::vector<TexelEstimate> estimates(end - begin);
     tbb::enumerable_thread_specific<RayCounts> rays;
     tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 16), [&](const auto& range) {
         RayCounts& local = rays.local();
         for (size_t i = range.begin(); i != range.end(); ++i)
-            estimates[i - begin] =
-                estimate_texel(scene, lights, level, samples[i], settings, local);
+            estimates[i - begin] = estimateTexel(scene, lights, level, samples[i], settings, local);
         if (progress) progress->advance(range.size());
     });
 
@@ -191,11 +190,11 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
                     uint64_t(nx));
     };
     // Relative noise of an estimate: its standard error over its whole (direct + indirect) value.
-    const auto relative_noise = [](const TexelEstimate& e) {
-        const double value = e.direct_luminance + e.indirect_luminance;
+    const auto relativeNoise = [](const TexelEstimate& e) {
+        const double value = e.directLuminance + e.indirectLuminance;
         return value > 0.0 ? e.noise / value : 0.0;
     };
-    tbb::parallel_for(tbb::blocked_range<size_t>(owned_begin, owned_end, 64), [&](const auto& r) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(ownedBegin, ownedEnd, 64), [&](const auto& r) {
         RayCounts& local = rays.local();
         for (size_t i = r.begin(); i != r.end(); ++i) {
             const TexelSample& s = samples[i];
@@ -209,19 +208,19 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
             // whose paths happened to miss a small bright source looks quiet, while its
             // neighbours' spikes show where the estimate is unreliable), so rare bright paths
             // (a sunlit yard seen through a doorway) are spread instead of left as speckles.
-            double local_noise = relative_noise(e);
+            double localNoise = relativeNoise(e);
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx)
                     if (long j = neighbour(s, dx, dy); j >= 0)
-                        local_noise = std::max(local_noise, relative_noise(estimates[size_t(j)]));
-            const int radius = local_noise > kIndirectFilterNoise[1]   ? kIndirectFilterRadii[2]
-                               : local_noise > kIndirectFilterNoise[0] ? kIndirectFilterRadii[1]
-                                                                       : kIndirectFilterRadii[0];
-            const double centre_weight = double(radius + 1) * double(radius + 1);
-            glm::dvec3 indirect = centre_weight * e.indirect;
-            glm::dvec3 indirect_direction = centre_weight * e.indirect_direction;
-            double indirect_luminance = centre_weight * e.indirect_luminance;
-            double weight = centre_weight;
+                        localNoise = std::max(localNoise, relativeNoise(estimates[size_t(j)]));
+            const int radius = localNoise > kIndirectFilterNoise[1]   ? kIndirectFilterRadii[2]
+                               : localNoise > kIndirectFilterNoise[0] ? kIndirectFilterRadii[1]
+                                                                      : kIndirectFilterRadii[0];
+            const double centreWeight = double(radius + 1) * double(radius + 1);
+            glm::dvec3 indirect = centreWeight * e.indirect;
+            glm::dvec3 indirectDirection = centreWeight * e.indirectDirection;
+            double indirectLuminance = centreWeight * e.indirectLuminance;
+            double weight = centreWeight;
             for (int dy = -radius; dy <= radius && !e.moved; ++dy) {
                 for (int dx = -radius; dx <= radius; ++dx) {
                     if (dx == 0 && dy == 0) continue;
@@ -229,7 +228,7 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
                     if (j < 0) continue;
                     const TexelSample& ns = samples[size_t(j) + begin];
                     const TexelEstimate& ne = estimates[size_t(j)];
-                    if (ne.moved || chart_of(level, ns) != chart_of(level, s)) continue;
+                    if (ne.moved || chartOf(level, ns) != chartOf(level, s)) continue;
                     const glm::vec3 to = ne.origin - e.origin;
                     const float distance = glm::length(to);
                     if (distance > 0.0f &&
@@ -238,56 +237,56 @@ LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lig
                     const double w =
                         double(radius + 1 - std::abs(dx)) * double(radius + 1 - std::abs(dy));
                     indirect += w * ne.indirect;
-                    indirect_direction += w * ne.indirect_direction;
-                    indirect_luminance += w * ne.indirect_luminance;
+                    indirectDirection += w * ne.indirectDirection;
+                    indirectLuminance += w * ne.indirectLuminance;
                     weight += w;
                 }
             }
             indirect /= weight;
-            indirect_direction /= weight;
-            indirect_luminance /= weight;
+            indirectDirection /= weight;
+            indirectLuminance /= weight;
 
             world::LightmapTexel t;
-            const double luminance_sum = e.direct_luminance + indirect_luminance;
+            const double luminanceSum = e.directLuminance + indirectLuminance;
             t.irradiance = glm::max(glm::vec3(e.direct + indirect), glm::vec3(0.0f));
             t.direction =
-                luminance_sum > 0.0
-                    ? glm::vec3(0.5 * (e.direct_direction + indirect_direction) / luminance_sum)
+                luminanceSum > 0.0
+                    ? glm::vec3(0.5 * (e.directDirection + indirectDirection) / luminanceSum)
                     : glm::vec3(0.0f);
             if (glm::length(t.direction) > 0.5f) t.direction *= 0.5f / glm::length(t.direction);
-            t.normal_weight = std::clamp(0.5f + glm::dot(s.normal, t.direction), 0.5f, 1.0f);
-            t.flags = world::lightmap_texel_sampled;
+            t.normalWeight = std::clamp(0.5f + glm::dot(s.normal, t.direction), 0.5f, 1.0f);
+            t.flags = world::kLightmapTexelSampled;
             if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z)) t = {};
             baked.texels[s.texel] = t;
-            baked.shadow_mask[s.texel] = e.mask;
+            baked.shadowMask[s.texel] = e.mask;
         }
     });
     LightmapStats stats;
     for (const RayCounts& r : rays) stats.rays += r;
-    stats.texels_baked = owned_end - owned_begin;
-    double noise_sum = 0.0, value_sum = 0.0;
-    for (size_t i = owned_begin; i < owned_end; ++i) {
+    stats.texelsBaked = ownedEnd - ownedBegin;
+    double noiseSum = 0.0, valueSum = 0.0;
+    for (size_t i = ownedBegin; i < ownedEnd; ++i) {
         const TexelEstimate& e = estimates[i - begin];
-        noise_sum += e.noise;
-        value_sum += e.direct_luminance + e.indirect_luminance;
-        stats.texels_moved += e.moved ? 1 : 0;
+        noiseSum += e.noise;
+        valueSum += e.directLuminance + e.indirectLuminance;
+        stats.texelsMoved += e.moved ? 1 : 0;
     }
     // Before the filter; a full tent window scales it by 0.375 (r = 1) to 0.18 (r = 3).
-    stats.mean_relative_noise = value_sum > 0.0 ? noise_sum / value_sum : 0.0;
+    stats.meanRelativeNoise = valueSum > 0.0 ? noiseSum / valueSum : 0.0;
     return stats;
 }
 
-void dilate_lightmaps(const world::CompiledLevel& level, world::BakedLighting& baked) {
+void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& baked) {
     for (const world::Chart& chart : level.charts) {
         const world::Atlas& atlas = level.atlases[chart.atlas];
-        const uint64_t base = world::atlas_texel_offset(level, chart.atlas);
+        const uint64_t base = world::atlasTexelOffset(level, chart.atlas);
         const auto index = [&](uint32_t x, uint32_t y) {
             return base + uint64_t(y) * atlas.width + x;
         };
         const uint32_t rings = chart.padding + 2;
         for (uint32_t ring = 0; ring < rings; ++ring) {
             std::vector<std::pair<uint64_t, world::LightmapTexel>> fills;
-            std::vector<uint8_t> fill_masks;
+            std::vector<uint8_t> fillMasks;
             for (uint32_t y = chart.y; y < chart.y + chart.height; ++y) {
                 for (uint32_t x = chart.x; x < chart.x + chart.width; ++x) {
                     if (baked.texels[index(x, y)].flags != 0) continue;
@@ -306,8 +305,8 @@ void dilate_lightmaps(const world::CompiledLevel& level, world::BakedLighting& b
                             if (t.flags == 0) continue;
                             irradiance += t.irradiance;
                             direction += t.direction;
-                            weight += t.normal_weight;
-                            mask += baked.shadow_mask[k];
+                            weight += t.normalWeight;
+                            mask += baked.shadowMask[k];
                             ++count;
                         }
                     }
@@ -316,31 +315,31 @@ void dilate_lightmaps(const world::CompiledLevel& level, world::BakedLighting& b
                     const float inv = 1.0f / static_cast<float>(count);
                     t.irradiance = irradiance * inv;
                     t.direction = direction * inv;
-                    t.normal_weight = std::clamp(weight * inv, 0.5f, 1.0f);
-                    t.flags = world::lightmap_texel_dilated;
+                    t.normalWeight = std::clamp(weight * inv, 0.5f, 1.0f);
+                    t.flags = world::kLightmapTexelDilated;
                     fills.emplace_back(index(x, y), t);
-                    fill_masks.push_back(static_cast<uint8_t>((mask + count / 2) / count));
+                    fillMasks.push_back(static_cast<uint8_t>((mask + count / 2) / count));
                 }
             }
             if (fills.empty()) break;
             for (size_t i = 0; i < fills.size(); ++i) {
                 baked.texels[fills[i].first] = fills[i].second;
-                baked.shadow_mask[fills[i].first] = fill_masks[i];
+                baked.shadowMask[fills[i].first] = fillMasks[i];
             }
         }
     }
 }
 
-glm::vec3 lightmap_total_irradiance(const BakeLights& lights, const world::CompiledLevel& level,
-                                    const world::BakedLighting& baked, const TexelSample& sample) {
+glm::vec3 lightmapTotalIrradiance(const BakeLights& lights, const world::CompiledLevel& level,
+                                  const world::BakedLighting& baked, const TexelSample& sample) {
     const world::LightmapTexel& t = baked.texels[sample.texel];
     glm::vec3 e = t.irradiance;
     const world::Surface& surface = level.surfaces[sample.surface];
-    if (const BakeLight* own = own_primary(lights, surface.primary_light)) {
-        const LightIncidence incidence = light_incidence(*own, sample.position);
+    if (const BakeLight* own = ownPrimary(lights, surface.primaryLight)) {
+        const LightIncidence incidence = lightIncidence(*own, sample.position);
         const float cosine = std::max(0.0f, glm::dot(sample.normal, incidence.direction));
         e += incidence.irradiance * cosine *
-             (static_cast<float>(baked.shadow_mask[sample.texel]) / 255.0f);
+             (static_cast<float>(baked.shadowMask[sample.texel]) / 255.0f);
     }
     return e;
 }

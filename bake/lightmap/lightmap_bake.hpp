@@ -15,36 +15,36 @@
 namespace onelight::bake {
 
 struct LightmapSettings {
-    uint32_t shadow_samples = 16;     // shadow rays per light per texel (stratified)
-    uint32_t indirect_samples = 256;  // cosine-distributed paths per texel
+    uint32_t shadowSamples = 16;     // shadow rays per light per texel (stratified)
+    uint32_t indirectSamples = 256;  // cosine-distributed paths per texel
     TransportSettings transport;
 };
 
 struct LightmapStats {
     RayCounts rays;
-    uint64_t texels_baked = 0;
-    uint64_t texels_moved = 0;         // sample points moved out of geometry
-    double mean_relative_noise = 0.0;  // estimated standard error / value, luminance-weighted
+    uint64_t texelsBaked = 0;
+    uint64_t texelsMoved = 0;        // sample points moved out of geometry
+    double meanRelativeNoise = 0.0;  // estimated standard error / value, luminance-weighted
 };
 
-/// Bakes the texels of `samples` whose global index is in [texel_begin, texel_end) into
-/// `baked` (already sized: texels and shadow_mask to total_texels). Each texel's random
+/// Bakes the texels of `samples` whose global index is in [texelBegin, texelEnd) into
+/// `baked` (already sized: texels and shadowMask to totalTexels). Each texel's random
 /// sequence is seeded from (atlas, x, y, pass), so the result does not depend on threads,
 /// order or sharding.
-LightmapStats bake_lightmap_texels(const BakeScene& scene, const BakeLights& lights,
-                                   const world::CompiledLevel& level,
-                                   const std::vector<TexelSample>& samples,
-                                   const LightmapSettings& settings, uint64_t texel_begin,
-                                   uint64_t texel_end, world::BakedLighting& baked,
-                                   Progress* progress);
+LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& lights,
+                                 const world::CompiledLevel& level,
+                                 const std::vector<TexelSample>& samples,
+                                 const LightmapSettings& settings, uint64_t texelBegin,
+                                 uint64_t texelEnd, world::BakedLighting& baked,
+                                 Progress* progress);
 
 /// Fills each chart's unsampled texels from their sampled neighbours, ring by ring, inside
 /// the chart's rectangle only (charts never bleed into each other).
-void dilate_lightmaps(const world::CompiledLevel& level, world::BakedLighting& baked);
+void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& baked);
 
 /// The total irradiance a static surface receives at a texel, as the runtime reconstructs it
 /// at the surface normal: own primary x shadow mask + secondary. For tests and the benchmark.
-glm::vec3 lightmap_total_irradiance(const BakeLights& lights, const world::CompiledLevel& level,
-                                    const world::BakedLighting& baked, const TexelSample& sample);
+glm::vec3 lightmapTotalIrradiance(const BakeLights& lights, const world::CompiledLevel& level,
+                                  const world::BakedLighting& baked, const TexelSample& sample);
 
 }  // namespace onelight::bake

@@ -17,7 +17,7 @@ constexpr double kEdgeNudge = 1e-3;
 
 /// Closest point of triangle abc to p, as barycentrics (Ericson 2005, "Real-Time Collision
 /// Detection", sec. 5.1.5), in 2D.
-glm::dvec3 closest_barycentrics(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+glm::dvec3 closestBarycentrics(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
     const glm::dvec2 ab = b - a, ac = c - a, ap = p - a;
     const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
     if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
@@ -49,7 +49,7 @@ glm::dvec3 closest_barycentrics(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::d
 
 /// Barycentrics of p in the plane of triangle abc (2D), negative outside it: the affine map
 /// that carries a lightmap point to the triangle's plane in world space.
-glm::dvec3 plane_barycentrics(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+glm::dvec3 planeBarycentrics(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
     const glm::dvec2 ab = b - a, ac = c - a, ap = p - a;
     const double det = ab.x * ac.y - ab.y * ac.x;
     if (det == 0.0) return {1.0, 0.0, 0.0};
@@ -61,7 +61,7 @@ glm::dvec3 plane_barycentrics(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b, glm::dve
 /// True when triangle abc overlaps the open square of half-size h around p (texel space).
 /// Separating axis test (Ericson 2005, "Real-Time Collision Detection", sec. 5.2.9) on the
 /// square's two axes and the triangle's three edge normals.
-bool triangle_overlaps_square(glm::dvec2 p, double h, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+bool triangleOverlapsSquare(glm::dvec2 p, double h, glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
     if (std::max({a.x, b.x, c.x}) <= p.x - h || std::min({a.x, b.x, c.x}) >= p.x + h ||
         std::max({a.y, b.y, c.y}) <= p.y - h || std::min({a.y, b.y, c.y}) >= p.y + h)
         return false;
@@ -69,10 +69,10 @@ bool triangle_overlaps_square(glm::dvec2 p, double h, glm::dvec2 a, glm::dvec2 b
     for (int e = 0; e < 3; ++e) {
         const glm::dvec2 edge = v[(e + 1) % 3] - v[e];
         const glm::dvec2 n(-edge.y, edge.x);
-        const double on_edge = glm::dot(n, v[e]), opposite = glm::dot(n, v[(e + 2) % 3]);
+        const double onEdge = glm::dot(n, v[e]), opposite = glm::dot(n, v[(e + 2) % 3]);
         const double centre = glm::dot(n, p), radius = h * (std::abs(n.x) + std::abs(n.y));
-        if (std::max(on_edge, opposite) <= centre - radius ||
-            std::min(on_edge, opposite) >= centre + radius)
+        if (std::max(onEdge, opposite) <= centre - radius ||
+            std::min(onEdge, opposite) >= centre + radius)
             return false;
     }
     return true;
@@ -87,43 +87,42 @@ struct Candidate {
 
 }  // namespace
 
-uint64_t total_texels(const world::CompiledLevel& level) {
-    return world::atlas_texel_offset(level, static_cast<uint32_t>(level.atlases.size()));
+uint64_t totalTexels(const world::CompiledLevel& level) {
+    return world::atlasTexelOffset(level, static_cast<uint32_t>(level.atlases.size()));
 }
 
-std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
-    std::vector<Candidate> best(total_texels(level));
+std::vector<TexelSample> placeTexels(const world::CompiledLevel& level) {
+    std::vector<Candidate> best(totalTexels(level));
     for (uint32_t s = 0; s < level.surfaces.size(); ++s) {
         const world::Surface& surface = level.surfaces[s];
         if (surface.atlas >= level.atlases.size()) continue;
         const world::Atlas& atlas = level.atlases[surface.atlas];
-        const uint64_t base = world::atlas_texel_offset(level, surface.atlas);
+        const uint64_t base = world::atlasTexelOffset(level, surface.atlas);
         const glm::dvec2 scale(atlas.width, atlas.height);
-        for (uint32_t i = surface.first_index; i < surface.first_index + surface.index_count;
-             i += 3) {
+        for (uint32_t i = surface.firstIndex; i < surface.firstIndex + surface.indexCount; i += 3) {
             glm::dvec2 q[3];
             for (int k = 0; k < 3; ++k)
                 q[k] = glm::dvec2(level.vertices[level.indices[i + k]].uv1) * scale;
             const glm::dvec2 lo = glm::min(q[0], glm::min(q[1], q[2])) - 1.0;
             const glm::dvec2 hi = glm::max(q[0], glm::max(q[1], q[2])) + 1.0;
-            const int x0 = std::max<int>(static_cast<int>(surface.lightmap_x),
+            const int x0 = std::max<int>(static_cast<int>(surface.lightmapX),
                                          static_cast<int>(std::floor(lo.x)));
-            const int y0 = std::max<int>(static_cast<int>(surface.lightmap_y),
+            const int y0 = std::max<int>(static_cast<int>(surface.lightmapY),
                                          static_cast<int>(std::floor(lo.y)));
             const int x1 =
-                std::min<int>(static_cast<int>(surface.lightmap_x + surface.lightmap_width) - 1,
+                std::min<int>(static_cast<int>(surface.lightmapX + surface.lightmapWidth) - 1,
                               static_cast<int>(std::floor(hi.x)));
             const int y1 =
-                std::min<int>(static_cast<int>(surface.lightmap_y + surface.lightmap_height) - 1,
+                std::min<int>(static_cast<int>(surface.lightmapY + surface.lightmapHeight) - 1,
                               static_cast<int>(std::floor(hi.y)));
             for (int y = y0; y <= y1; ++y) {
                 for (int x = x0; x <= x1; ++x) {
                     const glm::dvec2 centre(x + 0.5, y + 0.5);
-                    const glm::dvec3 b = closest_barycentrics(centre, q[0], q[1], q[2]);
+                    const glm::dvec3 b = closestBarycentrics(centre, q[0], q[1], q[2]);
                     const glm::dvec2 closest = b.x * q[0] + b.y * q[1] + b.z * q[2];
                     const double distance = glm::length(closest - centre);
                     if (distance > 0.0 &&
-                        !triangle_overlaps_square(centre, kBilinearReach, q[0], q[1], q[2]))
+                        !triangleOverlapsSquare(centre, kBilinearReach, q[0], q[1], q[2]))
                         continue;
                     Candidate& c = best[base + uint64_t(y) * atlas.width + uint64_t(x)];
                     if (distance < c.distance) c = {distance, s, i, b};
@@ -133,7 +132,7 @@ std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
     }
     std::vector<TexelSample> samples;
     for (uint32_t a = 0; a < level.atlases.size(); ++a) {
-        const uint64_t base = world::atlas_texel_offset(level, a);
+        const uint64_t base = world::atlasTexelOffset(level, a);
         const world::Atlas& atlas = level.atlases[a];
         for (uint32_t y = 0; y < atlas.height; ++y) {
             for (uint32_t x = 0; x < atlas.width; ++x) {
@@ -147,13 +146,13 @@ std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
                 for (int k = 0; k < 3; ++k) v[k] = &level.vertices[level.indices[c.triangle + k]];
                 const glm::dvec3 p0(v[0]->position), p1(v[1]->position), p2(v[2]->position);
                 const glm::dvec3 cross = glm::cross(p1 - p0, p2 - p0);
-                const double world_area = 0.5 * glm::length(cross);
+                const double worldArea = 0.5 * glm::length(cross);
                 const glm::dvec2 t0 = glm::dvec2(v[0]->uv1) * glm::dvec2(atlas.width, atlas.height);
                 const glm::dvec2 e1 =
                     glm::dvec2(v[1]->uv1) * glm::dvec2(atlas.width, atlas.height) - t0;
                 const glm::dvec2 e2 =
                     glm::dvec2(v[2]->uv1) * glm::dvec2(atlas.width, atlas.height) - t0;
-                const double texel_area = 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x);
+                const double texelArea = 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x);
                 TexelSample sample;
                 sample.texel = texel;
                 sample.atlas = a;
@@ -162,15 +161,14 @@ std::vector<TexelSample> place_texels(const world::CompiledLevel& level) {
                 sample.surface = c.surface;
                 sample.position = glm::vec3(b.x * p0 + b.y * p1 + b.z * p2);
                 const glm::dvec3 u =
-                    plane_barycentrics(glm::dvec2(x + 0.5, y + 0.5), t0, t0 + e1, t0 + e2);
+                    planeBarycentrics(glm::dvec2(x + 0.5, y + 0.5), t0, t0 + e1, t0 + e2);
                 sample.centre =
                     inside ? sample.position : glm::vec3(u.x * p0 + u.y * p1 + u.z * p2);
                 const double length = glm::length(cross);
                 sample.normal = length > 0.0 ? glm::vec3(cross / length) : v[0]->normal;
-                sample.texel_size = texel_area > 0.0
-                                        ? static_cast<float>(std::sqrt(world_area / texel_area))
-                                        : 0.0f;
-                sample.centre_inside = inside;
+                sample.texelSize =
+                    texelArea > 0.0 ? static_cast<float>(std::sqrt(worldArea / texelArea)) : 0.0f;
+                sample.centreInside = inside;
                 samples.push_back(sample);
             }
         }

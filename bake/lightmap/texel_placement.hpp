@@ -21,19 +21,19 @@ namespace onelight::bake {
 struct TexelSample {
     uint64_t texel = 0;  // global index (atlases in order, row-major)
     uint32_t atlas = 0, x = 0, y = 0;
-    uint32_t surface = 0;        // into CompiledLevel::surfaces
-    glm::vec3 position{0.0f};    // metres, world, on the surface
-    glm::vec3 centre{0.0f};      // metres, world: the texel centre on the triangle's plane
-                                 // (== position when centre_inside, else past the edge)
-    glm::vec3 normal{0.0f};      // unit geometric normal of the triangle (winding)
-    float texel_size = 0.0f;     // metres: edge of the texel's footprint on the surface
-    bool centre_inside = false;  // the texel centre lies inside the triangle
+    uint32_t surface = 0;       // into CompiledLevel::surfaces
+    glm::vec3 position{0.0f};   // metres, world, on the surface
+    glm::vec3 centre{0.0f};     // metres, world: the texel centre on the triangle's plane
+                                // (== position when centreInside, else past the edge)
+    glm::vec3 normal{0.0f};     // unit geometric normal of the triangle (winding)
+    float texelSize = 0.0f;     // metres: edge of the texel's footprint on the surface
+    bool centreInside = false;  // the texel centre lies inside the triangle
 };
 
 /// Samples in increasing texel order, one per touched texel.
-std::vector<TexelSample> place_texels(const world::CompiledLevel& level);
+std::vector<TexelSample> placeTexels(const world::CompiledLevel& level);
 
 /// Total texel count over every atlas.
-uint64_t total_texels(const world::CompiledLevel& level);
+uint64_t totalTexels(const world::CompiledLevel& level);
 
 }  // namespace onelight::bake

@@ -9,7 +9,7 @@
 namespace onelight::bake {
 namespace {
 
-constexpr uint32_t kProbePass = 6;  // seed_from's pass id (reference 4 and 5)
+constexpr uint32_t kProbePass = 6;  // seedFrom's pass id (reference 4 and 5)
 
 }  // namespace
 
@@ -32,19 +32,19 @@ Cubemap captureProbe(const BakeScene& scene, const BakeLights& lights, glm::vec3
         for (int row = rows.begin(); row != rows.end(); ++row) {
             const int face = row / size, y = row % size;
             for (int x = 0; x < size; ++x) {
-                Rng rng{seed_from(probeIndex, uint32_t(face), uint32_t(y * size + x), kProbePass)};
+                Rng rng{seedFrom(probeIndex, uint32_t(face), uint32_t(y * size + x), kProbePass)};
                 const float s0 = rng.next(), s1 = rng.next();
                 glm::dvec3 sum(0.0);
                 for (uint32_t i = 0; i < n; ++i) {
-                    const glm::vec2 jitter = rotated_hammersley(i, n, s0, s1);
+                    const glm::vec2 jitter = rotatedHammersley(i, n, s0, s1);
                     const glm::vec2 uv((float(x) + jitter.x) / float(size),
                                        (float(y) + jitter.y) / float(size));
                     const float px = 2.0f * uv.x - 1.0f, py = 2.0f * uv.y - 1.0f;
                     const float r2 = px * px + py * py + 1.0f;
                     const float weight = 1.0f / (r2 * std::sqrt(r2));  // pdf(w) = r^3 / A
                     const glm::vec3 dir = glsl::cubeDirection(face, uv);
-                    sum += glm::dvec3(trace_radiance(scene, lights, settings.transport, position,
-                                                     dir, rng, local)) *
+                    sum += glm::dvec3(traceRadiance(scene, lights, settings.transport, position,
+                                                    dir, rng, local)) *
                            double(weight);
                 }
                 cube.mips[0].at(face, x, y) = glm::vec3(
@@ -60,16 +60,16 @@ Cubemap captureProbe(const BakeScene& scene, const BakeLights& lights, glm::vec3
 std::vector<uint32_t> packProbeTexels(const Cubemap& cube) {
     std::vector<uint32_t> texels;
     for (const CubeMip& mip : cube.mips)
-        for (const glm::vec3& t : mip.texels) texels.push_back(package::encode_rgb9e5(t));
+        for (const glm::vec3& t : mip.texels) texels.push_back(package::encodeRgb9e5(t));
     return texels;
 }
 
 Cubemap unpackProbeTexels(const world::EnvironmentProbe& probe) {
-    Cubemap cube = makeCubemap(int(probe.face_size));
+    Cubemap cube = makeCubemap(int(probe.faceSize));
     size_t next = 0;
     for (CubeMip& mip : cube.mips)
         for (glm::vec3& t : mip.texels)
-            t = next < probe.texels.size() ? package::decode_rgb9e5(probe.texels[next++])
+            t = next < probe.texels.size() ? package::decodeRgb9e5(probe.texels[next++])
                                            : glm::vec3(0.0f);
     return cube;
 }
@@ -78,14 +78,14 @@ world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& plac
                                     glm::vec3 averageIrradiance, const PrefilterOptions& options) {
     world::EnvironmentProbe probe;
     probe.position = placement.position;
-    probe.box_min = placement.boxMin;
-    probe.box_max = placement.boxMax;
+    probe.boxMin = placement.boxMin;
+    probe.boxMax = placement.boxMax;
     probe.entity = placement.entity;
-    probe.irradiance_average = glm::max(averageIrradiance, glm::vec3(glsl::PROBE_MIN_IRRADIANCE));
+    probe.irradianceAverage = glm::max(averageIrradiance, glm::vec3(glsl::PROBE_MIN_IRRADIANCE));
     for (glm::vec3& t : radiance.mips[0].texels) t = glsl::probeNormalize(t, averageIrradiance);
     const Cubemap filtered = prefilterGGX(std::move(radiance), options);
-    probe.face_size = uint32_t(filtered.mips[0].size);
-    probe.mip_count = uint32_t(filtered.mipCount());
+    probe.faceSize = uint32_t(filtered.mips[0].size);
+    probe.mipCount = uint32_t(filtered.mipCount());
     probe.texels = packProbeTexels(filtered);
     return probe;
 }

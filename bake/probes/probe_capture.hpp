@@ -23,7 +23,7 @@ namespace onelight::bake {
 struct ProbePlacement {
     glm::vec3 position{0.0f};              // metres, world: the capture point
     glm::vec3 boxMin{0.0f}, boxMax{0.0f};  // box projection when min < max on every axis
-    uint32_t entity = world::kNoIndex;        // the probe entity, kNoIndex when placed
+    uint32_t entity = world::kNoIndex;     // the probe entity, kNoIndex when placed
     bool insideSolid = false;  // authored inside solid geometry: its cube sees back faces, dark
 };
 
@@ -38,7 +38,7 @@ struct ProbeCaptureSettings {
 
 // E_avg of an ambient cube (faces +x -x +y -y +z -z): the average over all unit normals n of
 // the irradiance the runtime reconstructs, E(n) = sum_i n_i^2 C[i, sign n_i]
-// (ambient_cube_irradiance, shaders/lighting.glsl irradianceAmbientCube). Derivation: over the
+// (ambientCubeIrradiance, shaders/lighting.glsl irradianceAmbientCube). Derivation: over the
 // sphere, n_i^2 restricted to n_i > 0 averages to half of n_i^2's mean 1/3 (by symmetry
 // n_x^2 + n_y^2 + n_z^2 = 1 gives mean(n_i^2) = 1/3, and the two signs of n_i share it equally),
 // so mean E = sum_i (1/6) C[i+] + (1/6) C[i-] = (1/3) sum_i (C[i+] + C[i-]) / 2: the mean of the
@@ -47,7 +47,7 @@ glm::vec3 ambientCubeAverage(const std::array<glm::vec3, 6>& ambientCube);
 
 // The radiance cube (cd/m^2, mip 0 filled, smaller mips allocated and black) seen from
 // `position`: each mip-0 texel is the mean radiance over its solid angle, estimated with
-// settings.samplesPerTexel paths through trace_radiance (bake/lighting/radiance.hpp, the
+// settings.samplesPerTexel paths through traceRadiance (bake/lighting/radiance.hpp, the
 // reference path tracer's routine). Texel (x, y) of `face` seeds its own stream from
 // (probeIndex, face, texel), so the cube does not depend on threads. Advances `progress` by one
 // per row of a face (6 * faceSize in all).
@@ -56,7 +56,7 @@ glm::vec3 ambientCubeAverage(const std::array<glm::vec3, 6>& ambientCube);
    on the face plane at distance 1, w = normalize(x, y, 1) with r = sqrt(x^2 + y^2 + 1):
    dw = dA / r^3, so pdf(w) = r^3 / A:
                     +------------------------------------------------------+
-                    | L_t ~ (A / (W_t N)) sum_i trace_radiance(w_i) / r_i^3 |
+                    | L_t ~ (A / (W_t N)) sum_i traceRadiance(w_i) / r_i^3 |
                     +------------------------------------------------------+
    with (u, v) on a rotated Hammersley set (stratified within the texel).
 */

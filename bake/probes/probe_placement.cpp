@@ -17,17 +17,17 @@ bool hasBox(glm::vec3 lo, glm::vec3 hi) {
     return lo.x < hi.x && lo.y < hi.y && lo.z < hi.z;
 }
 
-// The entities flagged entity_probe, each with its box when the box is non-empty.
+// The entities flagged kEntityProbe, each with its box when the box is non-empty.
 std::vector<ProbePlacement> authoredProbes(const world::CompiledLevel& level) {
     std::vector<ProbePlacement> probes;
     for (uint32_t i = 0; i < level.entities.size(); ++i) {
         const world::Entity& e = level.entities[i];
-        if (!(e.flags & world::entity_probe)) continue;
+        if (!(e.flags & world::kEntityProbe)) continue;
         ProbePlacement p;
         p.position = e.position;
-        if (hasBox(e.probe_box_min, e.probe_box_max)) {
-            p.boxMin = e.probe_box_min;
-            p.boxMax = e.probe_box_max;
+        if (hasBox(e.probeBoxMin, e.probeBoxMax)) {
+            p.boxMin = e.probeBoxMin;
+            p.boxMax = e.probeBoxMax;
         }
         p.entity = i;
         probes.push_back(p);
@@ -62,9 +62,9 @@ SolidTest testSolid(const BakeScene& scene, glm::vec3 point, RayCounts& rays) {
     SolidTest t;
     for (uint32_t i = 0; i < kProbeSolidRays; ++i) {
         const SurfaceHit hit = scene.intersect(point, fibonacciDirection(i, kProbeSolidRays),
-                                               scene.scene_diameter(), rays.probe);
+                                               scene.sceneDiameter(), rays.probe);
         t.hits += hit.found ? 1u : 0u;
-        t.backFaces += hit.found && hit.back_face ? 1u : 0u;
+        t.backFaces += hit.found && hit.backFace ? 1u : 0u;
     }
     return t;
 }
@@ -82,7 +82,7 @@ struct Lattice {
     glm::vec3 point(uint32_t i) const { return origin + glm::vec3(coords(i)) * step; }
 };
 
-// Cell centres over [lo, hi], as layout_light_grid sizes its cells; the cap grows the spacing.
+// Cell centres over [lo, hi], as layoutLightGrid sizes its cells; the cap grows the spacing.
 Lattice layLattice(glm::vec3 lo, glm::vec3 hi, float spacing) {
     const glm::vec3 extent = glm::max(hi - lo, glm::vec3(0.0f));
     double s = spacing;
@@ -136,22 +136,22 @@ std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const
 
     std::vector<ProbePlacement> probes = authoredProbes(level);
     for (ProbePlacement& p : probes) p.insideSolid = testSolid(scene, p.position, out.rays).solid();
-    if (!probes.empty() || !(level.features.flags & world::feature_probes)) return probes;
-    if (scene.triangle_count() == 0) {
+    if (!probes.empty() || !(level.features.flags & world::kFeatureProbes)) return probes;
+    if (scene.triangleCount() == 0) {
         ProbePlacement centre;
-        centre.position = 0.5f * (level.settings.bounds_min + level.settings.bounds_max);
+        centre.position = 0.5f * (level.settings.boundsMin + level.settings.boundsMax);
         return {centre};
     }
 
     float spacing =
-        level.settings.probe_spacing > 0.0f ? level.settings.probe_spacing : settings.spacing;
+        level.settings.probeSpacing > 0.0f ? level.settings.probeSpacing : settings.spacing;
     assert(std::isfinite(spacing) && spacing > 0.0f && "probe spacing must be metres > 0");
     // Without asserts, a bad spacing (0 would never let the cap's growth end) gets the default.
     if (!(std::isfinite(spacing) && spacing > 0.0f)) spacing = ProbePlacementSettings{}.spacing;
     // A flat level (a floor alone) would put its points on the floor, half their view in it.
-    glm::vec3 top = level.settings.bounds_max;
-    top.y = std::max(top.y, level.settings.bounds_min.y + kProbeMinLatticeHeight);
-    const Lattice lattice = layLattice(level.settings.bounds_min, top, spacing);
+    glm::vec3 top = level.settings.boundsMax;
+    top.y = std::max(top.y, level.settings.boundsMin.y + kProbeMinLatticeHeight);
+    const Lattice lattice = layLattice(level.settings.boundsMin, top, spacing);
     const uint32_t count = lattice.count();
     out.spacing = lattice.spacing;
     out.lattice = lattice.dims;

@@ -44,23 +44,23 @@ struct ProbePlacementStats {
 
 // The probes of a level whose static world is `scene` (built from the same level).
 //
-// Authored probes win: when any entity is flagged entity_probe, exactly those, in entity
+// Authored probes win: when any entity is flagged kEntityProbe, exactly those, in entity
 // order, each with its box when the box is non-empty, flagged insideSolid by the solid test
 // below (the bake warns: such a probe's reflections come out dark). Otherwise none
-// unless the level has specular materials (feature_probes). Then, with no box and entity kNoIndex:
+// unless the level has specular materials (kFeatureProbes). Then, with no box and entity kNoIndex:
 //
 // - Empty level (no static triangle): one probe at the centre of the bounds.
 // - Lattice: the spacing is level.settings.probe_spacing when the level sets it (> 0), else
-//   settings.spacing. Over the static bounds (level.settings.bounds_min/max), per axis
+//   settings.spacing. Over the static bounds (level.settings.boundsMin/max), per axis
 //   n = max(1, ceil(extent / spacing)) cells of extent / n metres (<= spacing), a point at each
-//   cell centre (at bounds_min on an axis of zero extent), as the light grid lays its cells;
-//   the top is raised to at least bounds_min.y + kProbeMinLatticeHeight.
+//   cell centre (at boundsMin on an axis of zero extent), as the light grid lays its cells;
+//   the top is raised to at least boundsMin.y + kProbeMinLatticeHeight.
 //   Over kMaxProbeLatticePoints points in all, the spacing grows by
 //   max(1.01, cbrt(points / kMaxProbeLatticePoints)) until it fits.
 // - Open: a point is inside solid when, of kProbeSolidRays fixed directions (a Fibonacci sphere
 //   set, the same for every point), more than kProbeSolidFraction of the rays that hit
 //   something hit a back face. This mirrors the light grid's inside-solid rule (bake/grid,
-//   back-face first hits over GridSettings::inside_fraction = 0.5, not exposed as a function)
+//   back-face first hits over GridSettings::insideFraction = 0.5, not exposed as a function)
 //   with one difference: the grid divides by all its rays, this by the rays that hit. In a
 //   closed room every ray hits and the two agree; in the void outside a level's closed shell
 //   rays escape or hit the outside (back) of walls, which the grid's rule can call open and

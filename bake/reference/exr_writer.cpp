@@ -9,7 +9,7 @@
 
 namespace onelight::bake {
 
-void write_exr(const std::string& path, const ReferenceImage& image) {
+void writeExr(const std::string& path, const ReferenceImage& image) {
     const std::string temporary = path + ".tmp";
     const char* error = nullptr;
     const int status = SaveEXR(image.rgb.data(), static_cast<int>(image.width),

@@ -14,23 +14,23 @@ constexpr uint32_t kReferencePass = 4;
 constexpr uint32_t kReferenceIrradiancePass = 5;
 }  // namespace
 
-ReferenceImage render_reference(const BakeScene& scene, const BakeLights& lights,
-                                const world::Camera& camera, uint32_t width, uint32_t height,
-                                uint32_t spp, const TransportSettings& transport,
-                                Progress* progress, RayCounts& rays) {
+ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
+                               const world::Camera& camera, uint32_t width, uint32_t height,
+                               uint32_t spp, const TransportSettings& transport, Progress* progress,
+                               RayCounts& rays) {
     ReferenceImage image;
     image.width = width;
     image.height = height;
     image.rgb.assign(size_t(width) * height * 3, 0.0f);
     const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
     const float aspect = float(width) / float(height);
-    const float tan_half = std::tan(0.5f * camera.yfov);
+    const float tanHalf = std::tan(0.5f * camera.yfov);
     tbb::enumerable_thread_specific<RayCounts> counts;
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, height), [&](const auto& rows) {
         RayCounts& local = counts.local();
         for (uint32_t y = rows.begin(); y != rows.end(); ++y) {
             for (uint32_t x = 0; x < width; ++x) {
-                Rng rng{seed_from(x, y, 0, kReferencePass)};
+                Rng rng{seedFrom(x, y, 0, kReferencePass)};
                 glm::dvec3 sum(0.0);
                 for (uint32_t s = 0; s < spp; ++s) {
                     const float sx = (float(x) + rng.next()) / float(width) * 2.0f - 1.0f;
@@ -40,11 +40,11 @@ ReferenceImage render_reference(const BakeScene& scene, const BakeLights& lights
                         origin += rotation * glm::vec3(sx * camera.xmag, sy * camera.ymag, 0.0f);
                         dir = rotation * glm::vec3(0.0f, 0.0f, -1.0f);
                     } else {
-                        dir = glm::normalize(
-                            rotation * glm::vec3(sx * tan_half * aspect, sy * tan_half, -1.0f));
+                        dir = glm::normalize(rotation *
+                                             glm::vec3(sx * tanHalf * aspect, sy * tanHalf, -1.0f));
                     }
                     sum += glm::dvec3(
-                        trace_radiance(scene, lights, transport, origin, dir, rng, local));
+                        traceRadiance(scene, lights, transport, origin, dir, rng, local));
                 }
                 const glm::vec3 l = glm::vec3(sum / double(std::max(1u, spp)));
                 float* out = &image.rgb[(size_t(y) * width + x) * 3];
@@ -59,26 +59,26 @@ ReferenceImage render_reference(const BakeScene& scene, const BakeLights& lights
     return image;
 }
 
-glm::vec3 reference_irradiance(const BakeScene& scene, const BakeLights& lights,
-                               const glm::vec3& position, const glm::vec3& normal, uint32_t samples,
-                               uint32_t seed, const TransportSettings& transport, RayCounts& rays) {
-    Rng rng{seed_from(seed, 0, 0, kReferenceIrradiancePass)};
-    const glm::vec3 origin = position + normal * scene.ray_offset();
+glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
+                              const glm::vec3& position, const glm::vec3& normal, uint32_t samples,
+                              uint32_t seed, const TransportSettings& transport, RayCounts& rays) {
+    Rng rng{seedFrom(seed, 0, 0, kReferenceIrradiancePass)};
+    const glm::vec3 origin = position + normal * scene.rayOffset();
     glm::dvec3 e(0.0);
     for (const BakeLight& light : lights.lights) {
-        const LightIncidence incidence = light_incidence(light, origin);
+        const LightIncidence incidence = lightIncidence(light, origin);
         const float cosine = glm::dot(normal, incidence.direction);
         if (cosine <= 0.0f || incidence.irradiance == glm::vec3(0.0f)) continue;
-        const float v = light_visibility(scene, light, incidence, origin, samples, rng, rays);
+        const float v = lightVisibility(scene, light, incidence, origin, samples, rng, rays);
         e += glm::dvec3(incidence.irradiance) * double(cosine * v);
     }
-    const Frame frame = frame_around(normal);
+    const Frame frame = frameAround(normal);
     glm::dvec3 indirect(0.0);
     for (uint32_t i = 0; i < samples; ++i) {
         // uniform hemisphere: the upper half of a uniform sphere direction
-        glm::vec3 local = sample_uniform_sphere({rng.next() * 0.5f, rng.next()});
-        const glm::vec3 w = glm::normalize(frame.to_world(local));
-        indirect += glm::dvec3(trace_radiance(scene, lights, transport, origin, w, rng, rays)) *
+        glm::vec3 local = sampleUniformSphere({rng.next() * 0.5f, rng.next()});
+        const glm::vec3 w = glm::normalize(frame.toWorld(local));
+        indirect += glm::dvec3(traceRadiance(scene, lights, transport, origin, w, rng, rays)) *
                     double(local.z);
     }
     e += indirect * (2.0 * 3.14159265358979323846 / double(std::max(1u, samples)));

@@ -27,13 +27,13 @@ struct ReferenceImage {
 /*
    L(pixel) = (1 / A) int_pixel L(camera, w(s)) ds,  s uniform in the pixel (pdf 1 / A):
                       +---------------------------------------------+
-                      | L(pixel) ~ (1 / N) sum_i trace_radiance(w_i) |
+                      | L(pixel) ~ (1 / N) sum_i traceRadiance(w_i) |
                       +---------------------------------------------+
 */
-ReferenceImage render_reference(const BakeScene& scene, const BakeLights& lights,
-                                const world::Camera& camera, uint32_t width, uint32_t height,
-                                uint32_t spp, const TransportSettings& transport,
-                                Progress* progress, RayCounts& rays);
+ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
+                               const world::Camera& camera, uint32_t width, uint32_t height,
+                               uint32_t spp, const TransportSettings& transport, Progress* progress,
+                               RayCounts& rays);
 
 /// Irradiance (lux, RGB) at a surface point with every light at full strength: the reference
 /// the lightmaps are checked against. An estimator independent of the lightmap's: uniform
@@ -44,11 +44,11 @@ ReferenceImage render_reference(const BakeScene& scene, const BakeLights& lights
               | E ~ sum_l E_l (n.w_l)+ V_l + (2 pi / N) sum_i L(w_i) (n.w_i)       |
               +------------------------------------------------------------------+
 */
-glm::vec3 reference_irradiance(const BakeScene& scene, const BakeLights& lights,
-                               const glm::vec3& position, const glm::vec3& normal, uint32_t samples,
-                               uint32_t seed, const TransportSettings& transport, RayCounts& rays);
+glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
+                              const glm::vec3& position, const glm::vec3& normal, uint32_t samples,
+                              uint32_t seed, const TransportSettings& transport, RayCounts& rays);
 
 /// Writes linear RGB float32 EXR through `path.tmp` and a rename. Throws world::Error.
-void write_exr(const std::string& path, const ReferenceImage& image);
+void writeExr(const std::string& path, const ReferenceImage& image);
 
 }  // namespace onelight::bake

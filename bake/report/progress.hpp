@@ -18,20 +18,20 @@ public:
     Progress(const Progress&) = delete;
     Progress& operator=(const Progress&) = delete;
 
-    void advance(uint64_t done_items);
+    void advance(uint64_t doneItems);
     /// Draws 100% and the stage's time, then a newline.
     void finish();
     double seconds() const;
 
 private:
-    void draw(uint64_t done, bool final_line);
+    void draw(uint64_t done, bool finalLine);
     std::string stage_;
     uint64_t total_;
     bool enabled_;
     bool finished_ = false;
     std::atomic<uint64_t> done_{0};
-    std::mutex draw_mutex_;
-    std::chrono::steady_clock::time_point start_, last_draw_;
+    std::mutex drawMutex_;
+    std::chrono::steady_clock::time_point start_, lastDraw_;
 };
 
 }  // namespace onelight::bake

@@ -11,18 +11,18 @@
 
 namespace onelight::bake {
 
-uint64_t peak_memory_bytes() {
+uint64_t peakMemoryBytes() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<uint64_t>(usage.ru_maxrss) * 1024u;  // Linux reports kilobytes
 }
 
-std::string report_json(const BakeReport& r) {
+std::string reportJson(const BakeReport& r) {
     nlohmann::ordered_json j;
     j["level"] = r.level;
     j["quality"] = r.quality;
     j["threads"] = r.threads;
-    j["shard"] = {{"index", r.shard_index}, {"count", r.shard_count}};
+    j["shard"] = {{"index", r.shardIndex}, {"count", r.shardCount}};
     double seconds = 0.0;
     RayCounts all;
     nlohmann::ordered_json stages = nlohmann::ordered_json::array();
@@ -47,34 +47,34 @@ std::string report_json(const BakeReport& r) {
                  {"probe", all.probe},
                  {"total", all.total()}};
     j["rays_per_second"] = seconds > 0.0 ? double(all.total()) / seconds : 0.0;
-    j["peak_memory_bytes"] = r.peak_memory_bytes;
-    j["package_bytes"] = r.package_bytes;
+    j["peak_memory_bytes"] = r.peakMemoryBytes;
+    j["package_bytes"] = r.packageBytes;
     j["triangles"] = r.triangles;
-    j["lightmap"] = {{"texels_total", r.texels_total},
-                     {"texels_sampled", r.texels_sampled},
-                     {"texels_moved_out_of_geometry", r.texels_moved},
-                     {"shadow_samples_per_light", r.shadow_samples_per_light},
-                     {"indirect_samples_per_texel", r.indirect_samples_per_texel},
-                     {"estimated_relative_noise", r.lightmap_mean_relative_noise}};
-    j["light_grid"] = {{"cells", r.grid_cells},
-                       {"cells_inside_solid", r.grid_cells_inside},
-                       {"samples_per_cell", r.grid_samples_per_cell}};
-    j["probes"] = {{"placed", r.probes_total},
-                   {"baked", r.probes_baked},
-                   {"face_size", r.probe_face_size},
-                   {"paths_per_texel", r.probe_samples_per_texel},
-                   {"bytes", r.probe_bytes}};
+    j["lightmap"] = {{"texels_total", r.texelsTotal},
+                     {"texels_sampled", r.texelsSampled},
+                     {"texels_moved_out_of_geometry", r.texelsMoved},
+                     {"shadow_samples_per_light", r.shadowSamplesPerLight},
+                     {"indirect_samples_per_texel", r.indirectSamplesPerTexel},
+                     {"estimated_relative_noise", r.lightmapMeanRelativeNoise}};
+    j["light_grid"] = {{"cells", r.gridCells},
+                       {"cells_inside_solid", r.gridCellsInside},
+                       {"samples_per_cell", r.gridSamplesPerCell}};
+    j["probes"] = {{"placed", r.probesTotal},
+                   {"baked", r.probesBaked},
+                   {"face_size", r.probeFaceSize},
+                   {"paths_per_texel", r.probeSamplesPerTexel},
+                   {"bytes", r.probeBytes}};
     j["warnings"] = r.warnings;
     return j.dump(2) + "\n";
 }
 
-void write_report(const std::string& path, const BakeReport& report) {
-    const std::string json = report_json(report);
-    package::write_file_atomically(
+void writeReport(const std::string& path, const BakeReport& report) {
+    const std::string json = reportJson(report);
+    package::writeFileAtomically(
         path, std::span(reinterpret_cast<const uint8_t*>(json.data()), json.size()));
 }
 
-std::string report_summary(const BakeReport& r) {
+std::string reportSummary(const BakeReport& r) {
     std::string s;
     char line[256];
     double seconds = 0.0;
@@ -91,23 +91,22 @@ std::string report_summary(const BakeReport& r) {
                   "  total      %8.2f s  %12llu rays  %7.2f Mrays/s, peak memory %.1f MiB\n",
                   seconds, static_cast<unsigned long long>(all.total()),
                   seconds > 0.0 ? double(all.total()) / seconds * 1e-6 : 0.0,
-                  double(r.peak_memory_bytes) / (1024.0 * 1024.0));
+                  double(r.peakMemoryBytes) / (1024.0 * 1024.0));
     s += line;
     std::snprintf(line, sizeof line,
                   "  lightmaps  %llu texels sampled of %llu, %u paths/texel, estimated noise "
                   "%.2f%%; grid %llu cells (%llu inside solid)\n",
-                  static_cast<unsigned long long>(r.texels_sampled),
-                  static_cast<unsigned long long>(r.texels_total), r.indirect_samples_per_texel,
-                  100.0 * r.lightmap_mean_relative_noise,
-                  static_cast<unsigned long long>(r.grid_cells),
-                  static_cast<unsigned long long>(r.grid_cells_inside));
+                  static_cast<unsigned long long>(r.texelsSampled),
+                  static_cast<unsigned long long>(r.texelsTotal), r.indirectSamplesPerTexel,
+                  100.0 * r.lightmapMeanRelativeNoise, static_cast<unsigned long long>(r.gridCells),
+                  static_cast<unsigned long long>(r.gridCellsInside));
     s += line;
-    if (r.probes_total) {
+    if (r.probesTotal) {
         std::snprintf(line, sizeof line,
                       "  probes     %llu of %llu baked, face %u, %u paths/texel, %.1f KiB\n",
-                      static_cast<unsigned long long>(r.probes_baked),
-                      static_cast<unsigned long long>(r.probes_total), r.probe_face_size,
-                      r.probe_samples_per_texel, double(r.probe_bytes) / 1024.0);
+                      static_cast<unsigned long long>(r.probesBaked),
+                      static_cast<unsigned long long>(r.probesTotal), r.probeFaceSize,
+                      r.probeSamplesPerTexel, double(r.probeBytes) / 1024.0);
         s += line;
     }
     return s;

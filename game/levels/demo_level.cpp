@@ -30,7 +30,7 @@ namespace onelight::game {
 namespace {
 
 using nlohmann::json;
-using world::box_mesh;
+using world::boxMesh;
 using world::GltfBuilder;
 using world::MeshData;
 
@@ -65,9 +65,9 @@ struct Level {
 
     // A static box from lo to hi with material m.
     void box(const char* name, glm::vec3 lo, glm::vec3 hi, int m) {
-        MeshData mesh = box_mesh(name, lo, hi, 1, false);
+        MeshData mesh = boxMesh(name, lo, hi, 1, false);
         mesh.material = m;
-        gltf.add_node({{"name", name}, {"mesh", gltf.add_mesh(mesh)}});
+        gltf.addNode({{"name", name}, {"mesh", gltf.addMesh(mesh)}});
     }
     void light(const char* name, json light, glm::vec3 position, glm::vec3 direction,
                const char* role = nullptr) {
@@ -76,23 +76,23 @@ struct Level {
         json node = {{"name", name},
                      {"translation", vec(position)},
                      {"rotation", lookRotation(yp.x, yp.y)},
-                     {"extensions", {{"KHR_lights_punctual", {{"light", gltf.add_light(light)}}}}}};
+                     {"extensions", {{"KHR_lights_punctual", {{"light", gltf.addLight(light)}}}}}};
         if (role) node["extras"] = {{"onelight", {{"role", role}}}};
-        gltf.add_node(node);
+        gltf.addNode(node);
     }
     void camera(const char* name, glm::vec3 position, float yaw, float pitch, float ev100) {
-        int c = gltf.add_camera({{"name", name},
-                                 {"type", "perspective"},
-                                 {"perspective",
-                                  {{"yfov", 1.0f},
-                                   {"znear", 0.05f},
-                                   {"zfar", 200.0f},
-                                   {"aspectRatio", 16.0f / 9.0f}}}});
-        gltf.add_node({{"name", name},
-                       {"translation", vec(position)},
-                       {"rotation", lookRotation(yaw, pitch)},
-                       {"camera", c},
-                       {"extras", {{"onelight", {{"exposure", ev100}}}}}});
+        int c = gltf.addCamera({{"name", name},
+                                {"type", "perspective"},
+                                {"perspective",
+                                 {{"yfov", 1.0f},
+                                  {"znear", 0.05f},
+                                  {"zfar", 200.0f},
+                                  {"aspectRatio", 16.0f / 9.0f}}}});
+        gltf.addNode({{"name", name},
+                      {"translation", vec(position)},
+                      {"rotation", lookRotation(yaw, pitch)},
+                      {"camera", c},
+                      {"extras", {{"onelight", {{"exposure", ev100}}}}}});
     }
 };
 
@@ -101,17 +101,17 @@ struct Level {
 std::string writeDemoLevel(const std::string& folder) {
     Level l;
     GltfBuilder& g = l.gltf;
-    int stone = g.add_material(material("stone", {0.35f, 0.33f, 0.30f}, 0.0f, 0.85f));
-    int plaster = g.add_material(material("plaster", {0.60f, 0.58f, 0.55f}, 0.0f, 0.9f));
-    int tiles = g.add_material(material("glossy_tiles", {0.10f, 0.10f, 0.11f}, 0.0f, 0.12f));
-    int gold = g.add_material(material("gold", {1.0f, 0.78f, 0.34f}, 1.0f, 0.30f));
-    int chrome = g.add_material(material("chrome", {0.55f, 0.56f, 0.55f}, 1.0f, 0.08f));
-    int wood = g.add_material(material("crate_wood", {0.45f, 0.30f, 0.18f}, 0.0f, 0.7f));
+    int stone = g.addMaterial(material("stone", {0.35f, 0.33f, 0.30f}, 0.0f, 0.85f));
+    int plaster = g.addMaterial(material("plaster", {0.60f, 0.58f, 0.55f}, 0.0f, 0.9f));
+    int tiles = g.addMaterial(material("glossy_tiles", {0.10f, 0.10f, 0.11f}, 0.0f, 0.12f));
+    int gold = g.addMaterial(material("gold", {1.0f, 0.78f, 0.34f}, 1.0f, 0.30f));
+    int chrome = g.addMaterial(material("chrome", {0.55f, 0.56f, 0.55f}, 1.0f, 0.08f));
+    int wood = g.addMaterial(material("crate_wood", {0.45f, 0.30f, 0.18f}, 0.0f, 0.7f));
 
     // Courtyard: ground and walls on the north, south and west; the building closes the east.
-    MeshData ground = world::grid_mesh("courtyard_ground", 10, 20.0, 0.0, -2.0, 0.0);
+    MeshData ground = world::gridMesh("courtyard_ground", 10, 20.0, 0.0, -2.0, 0.0);
     ground.material = stone;
-    g.add_node({{"name", "courtyard_ground"}, {"mesh", g.add_mesh(ground)}});
+    g.addNode({{"name", "courtyard_ground"}, {"mesh", g.addMesh(ground)}});
     l.box("yard_wall_north", {-12.4f, 0, -10.4f}, {8.3f, 5, -10}, plaster);
     l.box("yard_wall_south", {-12.4f, 0, 10}, {8.3f, 5, 10.4f}, plaster);
     l.box("yard_wall_west", {-12.4f, 0, -10}, {-12, 5, 10}, plaster);
@@ -140,11 +140,11 @@ std::string writeDemoLevel(const std::string& folder) {
     l.box("corridor_roof", {18, 2.5f, -1.8f}, {30.3f, 2.8f, 1.8f}, plaster);
 
     // The crate: dynamic, from the courtyard into the room and back every 8 s.
-    MeshData crate = box_mesh("crate_1", {-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, 1, false);
+    MeshData crate = boxMesh("crate_1", {-0.5f, -0.5f, -0.5f}, {0.5f, 0.5f, 0.5f}, 1, false);
     crate.material = wood;
-    g.add_node(
+    g.addNode(
         {{"name", "crate_1"},
-         {"mesh", g.add_mesh(crate)},
+         {"mesh", g.addMesh(crate)},
          {"translation", vec({1.0f, 0.5f, 0.0f})},
          {"extras",
           {{"onelight",
@@ -172,28 +172,28 @@ std::string writeDemoLevel(const std::string& folder) {
     // Level settings: lightmap density (17 cm texels keep the bake to seconds at draft quality),
     // the default exposure and a clear sky (luminance 4,900 cd/m^2, bluish: about 15 klx on the
     // courtyard floor beside the sun's 60 klx).
-    g.add_node({{"name", "level_settings"},
-                {"extras",
-                 {{"onelight",
-                   {{"texels_per_metre", 6.0f},
-                    {"exposure", 13.0f},
-                    {"sky", vec({4000.0f, 5000.0f, 6500.0f})}}}}}});
+    g.addNode({{"name", "level_settings"},
+               {"extras",
+                {{"onelight",
+                  {{"texels_per_metre", 6.0f},
+                   {"exposure", 13.0f},
+                   {"sky", vec({4000.0f, 5000.0f, 6500.0f})}}}}}});
 
     // Cameras (with their exposure) and the player's spawn.
     l.camera("courtyard", {-10, 1.7f, 6}, -115, -4, 14.5f);
     l.camera("doorway", {3, 1.7f, 3}, -70, -6, 12.0f);
     l.camera("interior", {10, 2.0f, -3.5f}, -125, -12, 8.0f);
     l.camera("corridor", {19, 1.7f, 0}, -90, -3, 6.0f);
-    g.add_node({{"name", "spawn"},
-                {"translation", vec({-6, 0, 0})},
-                {"rotation", lookRotation(-90, 0)},
-                {"extras", {{"onelight", {{"spawn", true}}}}}});
+    g.addNode({{"name", "spawn"},
+               {"translation", vec({-6, 0, 0})},
+               {"rotation", lookRotation(-90, 0)},
+               {"extras", {{"onelight", {{"spawn", true}}}}}});
 
     // Probes: one for the yard, a box-projected one for the room.
-    g.add_node({{"name", "probe_yard"},
-                {"translation", vec({-2, 2, 0})},
-                {"extras", {{"onelight", {{"probe", true}}}}}});
-    g.add_node(
+    g.addNode({{"name", "probe_yard"},
+               {"translation", vec({-2, 2, 0})},
+               {"extras", {{"onelight", {{"probe", true}}}}}});
+    g.addNode(
         {{"name", "probe_room"},
          {"translation", vec({13, 2, 0})},
          {"extras",

@@ -20,8 +20,8 @@ ecs::Entity findNamed(ecs::Registry& registry, const std::string& name) {
 }
 
 bool actsBeforeSystems(CommandKind k) {
-    return k == CommandKind::Spawn || k == CommandKind::Key || k == CommandKind::Look ||
-           k == CommandKind::Fire || k == CommandKind::Flashlight;
+    return k == CommandKind::kSpawn || k == CommandKind::kKey || k == CommandKind::kLook ||
+           k == CommandKind::kFire || k == CommandKind::kFlashlight;
 }
 
 }  // namespace
@@ -30,7 +30,7 @@ ReplayRunner makeReplayRunner(replay::Script script, std::vector<std::string> li
                               ecs::Registry& registry) {
     ReplayRunner r{std::move(script), std::move(lightNames)};
     for (const Command& c : r.script.commands) {
-        if (c.kind != CommandKind::ExpectPrimary) continue;
+        if (c.kind != CommandKind::kExpectPrimary) continue;
         ecs::Entity e = findNamed(registry, c.name);
         if (e == ecs::kNullEntity)
             throw ReplayFailure(place(r, c) + "unknown entity '" + c.name + "'");
@@ -49,7 +49,7 @@ void applyReplayInput(ReplayRunner& r, uint64_t tick, InputState& input, ecs::Re
     for (; r.next < commands.size() && commands[r.next].tick <= tick; ++r.next) {
         const Command& c = commands[r.next];
         switch (c.kind) {
-            case CommandKind::Key:
+            case CommandKind::kKey:
                 if (c.on) {
                     input.keysDown.insert(c.name);
                 } else {
@@ -57,18 +57,18 @@ void applyReplayInput(ReplayRunner& r, uint64_t tick, InputState& input, ecs::Re
                 }
                 if (c.name == "F" && c.on) input.toggleFlashlight = true;
                 break;
-            case CommandKind::Look:
+            case CommandKind::kLook:
                 input.lookYawDegrees += c.values[0];
                 input.lookPitchDegrees += c.values[1];
                 break;
-            case CommandKind::Fire:
+            case CommandKind::kFire:
                 input.fire = true;
                 break;
-            case CommandKind::Flashlight:
+            case CommandKind::kFlashlight:
                 input.setFlashlight = true;
                 input.flashlightValue = c.on;
                 break;
-            case CommandKind::Spawn: {
+            case CommandKind::kSpawn: {
                 // The script gives the eye; the player's Transform is at the feet.
                 registry.get<Transform>(player).position =
                     glm::vec3(c.values[0], c.values[1] - tuning.eyeHeight, c.values[2]);
@@ -91,13 +91,13 @@ ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, ecs::Registry& 
         const Command& c = commands[r.nextCheck];
         if (actsBeforeSystems(c.kind)) continue;
         switch (c.kind) {
-            case CommandKind::Capture:
+            case CommandKind::kCapture:
                 after.captures.push_back(c.name);
                 break;
-            case CommandKind::Quit:
+            case CommandKind::kQuit:
                 after.quit = true;
                 break;
-            case CommandKind::ExpectEffectLights: {
+            case CommandKind::kExpectEffectLights: {
                 size_t flashes = registry.pool<GunFlash>().size();
                 size_t spots = 0;
                 for (auto [e, f] : registry.view<Flashlight>().each()) spots += f.on;
@@ -109,7 +109,7 @@ ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, ecs::Registry& 
                                         std::to_string(spots) + " flashlight)");
                 break;
             }
-            case CommandKind::ExpectPrimary: {
+            case CommandKind::kExpectPrimary: {
                 const DynamicLighting& lit =
                     registry.get<DynamicLighting>(findNamed(registry, c.name));
                 std::string actual = lit.pick.primary < r.lightNames.size()

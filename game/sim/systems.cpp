@@ -19,7 +19,7 @@ glm::vec3 moveAndSlide(const world::BspView* bsp, glm::vec3 center, glm::vec3 de
         float length = glm::length(delta);
         if (length < 1e-6f) break;
         world::SweepHit hit =
-            world::sweep_sphere(*bsp, glm::dvec3(center), glm::dvec3(center + delta), radius);
+            world::sweepSphere(*bsp, glm::dvec3(center), glm::dvec3(center + delta), radius);
         if (!hit.hit) return center + delta;
         glm::vec3 n = glm::vec3(hit.normal);
         if (n.y > floorCos) floor = true;

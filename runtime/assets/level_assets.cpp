@@ -38,15 +38,15 @@ DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& w
 }
 
 LoadedLevel loadLevel(const std::string& path) {
-    package::PackageContents read = package::read_package_file(path);
+    package::PackageContents read = package::readPackageFile(path);
     LoadedLevel out;
     out.path = path;
     out.level = std::move(read.level);
     package::BakedContents baked =
-        package::decode_baked_sections(read.baked_sections, out.level, path);
-    if (baked.present && baked.baked.shard_count > 1)
-        throw world::Error(path + ": holds part " + std::to_string(baked.baked.shard_index + 1) +
-                           " of " + std::to_string(baked.baked.shard_count) +
+        package::decodeBakedSections(read.bakedSections, out.level, path);
+    if (baked.present && baked.baked.shardCount > 1)
+        throw world::Error(path + ": holds part " + std::to_string(baked.baked.shardIndex + 1) +
+                           " of " + std::to_string(baked.baked.shardCount) +
                            " of a sharded bake; expected a complete package (join the parts "
                            "with `onelight-bake merge`)");
     out.hasBakedLighting = baked.present;
@@ -56,9 +56,9 @@ LoadedLevel loadLevel(const std::string& path) {
     for (size_t i = 0; i < out.level.images.size(); ++i) {
         const world::Image& image = out.level.images[i];
         const std::string where = path + ": image " + std::to_string(i) + " '" + image.name + "'";
-        if (!image.encoded_bytes.empty()) {
+        if (!image.encodedBytes.empty()) {
             out.images.push_back(
-                decodeImage(image.encoded_bytes.data(), image.encoded_bytes.size(), where));
+                decodeImage(image.encodedBytes.data(), image.encodedBytes.size(), where));
             continue;
         }
         const std::filesystem::path file = folder / image.uri;

@@ -19,8 +19,8 @@ Camera cameraFromLevel(const world::Camera& camera) {
     c.yfov = camera.orthographic ? 1.0f : camera.yfov;
     c.znear = camera.znear > 0.0f ? camera.znear : 0.05f;
     c.zfar = camera.zfar;
-    c.hasExposure = camera.has_exposure;
-    c.ev100 = camera.exposure_ev100;
+    c.hasExposure = camera.hasExposure;
+    c.ev100 = camera.exposureEv100;
     return c;
 }
 

@@ -54,7 +54,7 @@ void prepareForwardTargets(const RendererState& s, VkCommandBuffer cmd) {
 // Dynamic rendering into the HDR target (through the MSAA target when multisampled) over a clear
 // to the level's sky (pre-exposed radiance, as the pass writes), with depth.
 void beginForwardRendering(const RendererState& s, VkCommandBuffer cmd, float exposure) {
-    const glm::vec3 sky = glm::min(s.settings.sky_radiance * exposure, glm::vec3(glsl::HDR_MAX));
+    const glm::vec3 sky = glm::min(s.settings.skyRadiance * exposure, glm::vec3(glsl::HDR_MAX));
     const VkClearColorValue clear{{sky.r, sky.g, sky.b, 1.0f}};
     const VkRenderingAttachmentInfo color =
         s.samples != VK_SAMPLE_COUNT_1_BIT

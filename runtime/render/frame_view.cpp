@@ -40,7 +40,7 @@ GpuLight gpuLightOf(const world::Light& l, uint32_t firstShadowView) {
     g.positionRange = glm::vec4(l.position, l.range);
     g.direction = glm::vec4(glm::normalize(l.direction), 0.0f);
     g.color = glm::vec4(l.color * l.intensity, 0.0f);
-    g.cones = glm::vec4(std::cos(l.inner_cone), std::cos(l.outer_cone), 0.0f, 0.0f);
+    g.cones = glm::vec4(std::cos(l.innerCone), std::cos(l.outerCone), 0.0f, 0.0f);
     g.info = glm::uvec4(uint32_t(l.type), firstShadowView, 0u, 0u);
     return g;
 }
@@ -51,7 +51,7 @@ GpuLight gpuLightOf(const EffectOmni& omni) {
     g.direction = glm::vec4(0.0f, 0.0f, -1.0f, 0.0f);
     g.color = glm::vec4(omni.color * omni.intensity, 0.0f);
     g.cones = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
-    g.info = glm::uvec4(uint32_t(world::LightType::point), kNoIndex, 0u, 0u);
+    g.info = glm::uvec4(uint32_t(world::LightType::kPoint), kNoIndex, 0u, 0u);
     return g;
 }
 
@@ -61,7 +61,7 @@ GpuLight gpuLightOf(const EffectSpot& spot) {
     g.direction = glm::vec4(glm::normalize(spot.direction), 0.0f);
     g.color = glm::vec4(spot.color * spot.intensity, 0.0f);
     g.cones = glm::vec4(std::cos(spot.innerCone), std::cos(spot.outerCone), 0.0f, 0.0f);
-    g.info = glm::uvec4(uint32_t(world::LightType::spot), kNoIndex, 0u, 0u);
+    g.info = glm::uvec4(uint32_t(world::LightType::kSpot), kNoIndex, 0u, 0u);
     return g;
 }
 
@@ -75,9 +75,9 @@ FrameView frameViewOf(const RendererState& s, const FrameInputs& inputs) {
             : glm::length(v.camera.position - 0.5f * (s.boundsMin + s.boundsMax)) + diagonal;
     v.viewProj =
         projectionMatrix(v.camera, float(s.width) / float(s.height), zfar) * viewMatrix(v.camera);
-    v.ev100 = v.camera.hasExposure      ? v.camera.ev100
-              : s.settings.has_exposure ? s.settings.exposure_ev100
-                                        : s.info.autoEv100;
+    v.ev100 = v.camera.hasExposure     ? v.camera.ev100
+              : s.settings.hasExposure ? s.settings.exposureEv100
+                                       : s.info.autoEv100;
     v.exposure = glsl::exposure_fromEV100(v.ev100);
 
     v.entityTransforms.resize(s.entities.size());

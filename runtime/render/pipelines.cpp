@@ -102,9 +102,9 @@ void createForwardPipelines(RendererState& s) {
         const int materialClass = int(key & 3u);
         const bool doubleSided = (key & 4u) != 0, alphaMask = (key & 8u) != 0;
         forward.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-        forward.stages = {{VK_SHADER_STAGE_VERTEX_BIT, forward_vert_spv, {}},
+        forward.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}},
                           {VK_SHADER_STAGE_FRAGMENT_BIT,
-                           forward_frag_spv,
+                           kForwardFragSpirv,
                            {{glsl::SPEC_MATERIAL_CLASS, materialClass},
                             {glsl::SPEC_ALPHA_MASK, alphaMask ? 1 : 0},
                             {glsl::SPEC_FLAT_SHADING, 0},
@@ -117,8 +117,8 @@ void createForwardPipelines(RendererState& s) {
     if (s.options.flatShading) {
         forward.cullMode = VK_CULL_MODE_BACK_BIT;
         forward.stages = {
-            {VK_SHADER_STAGE_VERTEX_BIT, forward_vert_spv, {}},
-            {VK_SHADER_STAGE_FRAGMENT_BIT, forward_frag_spv, {{glsl::SPEC_FLAT_SHADING, 1}}}};
+            {VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}},
+            {VK_SHADER_STAGE_FRAGMENT_BIT, kForwardFragSpirv, {{glsl::SPEC_FLAT_SHADING, 1}}}};
         s.flatPipeline = vk::createGraphicsPipeline(ctx, s.forwardLayout, forward);
         s.info.permutations = {"flat"};
     }
@@ -127,7 +127,7 @@ void createForwardPipelines(RendererState& s) {
 void createShadowAndTonemapPipelines(RendererState& s) {
     const vk::Context& ctx = *s.ctx;
     vk::GraphicsPipelineDesc shadow;
-    shadow.stages = {{VK_SHADER_STAGE_VERTEX_BIT, shadow_vert_spv, {}}};
+    shadow.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kShadowVertSpirv, {}}};
     shadow.vertexBindings = {{0, sizeof(world::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     shadow.vertexAttributes = vertexAttributes(true);
     shadow.cullMode = VK_CULL_MODE_NONE;
@@ -136,8 +136,8 @@ void createShadowAndTonemapPipelines(RendererState& s) {
     s.shadowPipeline = vk::createGraphicsPipeline(ctx, s.shadowLayout, shadow);
 
     vk::GraphicsPipelineDesc tonemap;
-    tonemap.stages = {{VK_SHADER_STAGE_VERTEX_BIT, fullscreen_vert_spv, {}},
-                      {VK_SHADER_STAGE_FRAGMENT_BIT, tonemap_frag_spv, {}}};
+    tonemap.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kFullscreenVertSpirv, {}},
+                      {VK_SHADER_STAGE_FRAGMENT_BIT, kTonemapFragSpirv, {}}};
     tonemap.cullMode = VK_CULL_MODE_NONE;
     tonemap.depthTest = tonemap.depthWrite = false;
     tonemap.colorFormats = {kDisplayFormat};

@@ -7,7 +7,7 @@ namespace onelight::render {
 namespace {
 
 bool hasBox(const world::EnvironmentProbe& p) {
-    return p.box_min.x < p.box_max.x && p.box_min.y < p.box_max.y && p.box_min.z < p.box_max.z;
+    return p.boxMin.x < p.boxMax.x && p.boxMin.y < p.boxMax.y && p.boxMin.z < p.boxMax.z;
 }
 
 }  // namespace
@@ -23,8 +23,8 @@ ProbeRecords makeProbeRecords(const std::vector<world::EnvironmentProbe>& probes
         glm::vec3 lo, hi;
         float band;
         if (hasBox(p)) {
-            lo = p.box_min;
-            hi = p.box_max;
+            lo = p.boxMin;
+            hi = p.boxMax;
             const glm::vec3 extent = hi - lo;
             band = std::min(kMaxProbeBand, 0.1f * std::min({extent.x, extent.y, extent.z}));
             g.boxMin = glm::vec4(lo, 1.0f);

@@ -24,11 +24,11 @@ namespace glsl = onelight::glsl;
 using TextureSlots = std::array<uint32_t, size_t(glsl::TEXTURE_SLOT_COUNT)>;
 TextureSlots textureSlotsOf(const world::Material& m) {
     TextureSlots slots{};
-    slots[glsl::TEXTURE_BASE_COLOR] = m.base_color_texture;
-    slots[glsl::TEXTURE_METALLIC_ROUGHNESS] = m.metallic_roughness_texture;
-    slots[glsl::TEXTURE_NORMAL] = m.normal_texture;
-    slots[glsl::TEXTURE_OCCLUSION] = m.occlusion_texture;
-    slots[glsl::TEXTURE_EMISSIVE] = m.emissive_texture;
+    slots[glsl::TEXTURE_BASE_COLOR] = m.baseColorTexture;
+    slots[glsl::TEXTURE_METALLIC_ROUGHNESS] = m.metallicRoughnessTexture;
+    slots[glsl::TEXTURE_NORMAL] = m.normalTexture;
+    slots[glsl::TEXTURE_OCCLUSION] = m.occlusionTexture;
+    slots[glsl::TEXTURE_EMISSIVE] = m.emissiveTexture;
     return slots;
 }
 
@@ -75,8 +75,8 @@ VkSamplerAddressMode addressMode(uint16_t wrap) {
 // glTF/GL filter enums: 9728 NEAREST, 9729 LINEAR, 9984..9987 the mipmap variants.
 vk::SamplerDesc samplerDesc(const world::Sampler& sampler) {
     vk::SamplerDesc d;
-    d.magFilter = sampler.mag_filter == 9728 ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
-    switch (sampler.min_filter) {
+    d.magFilter = sampler.magFilter == 9728 ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+    switch (sampler.minFilter) {
         case 9728:  // NEAREST: no mips
             d.minFilter = VK_FILTER_NEAREST;
             d.maxLod = 0.0f;
@@ -97,8 +97,8 @@ vk::SamplerDesc samplerDesc(const world::Sampler& sampler) {
         default:  // 9987 LINEAR_MIPMAP_LINEAR, or unspecified
             break;
     }
-    d.addressU = addressMode(sampler.wrap_s);
-    d.addressV = addressMode(sampler.wrap_t);
+    d.addressU = addressMode(sampler.wrapS);
+    d.addressV = addressMode(sampler.wrapT);
     return d;
 }
 
@@ -108,9 +108,9 @@ float referenceIlluminance(const RendererState& s) {
     const glm::vec3 centre = 0.5f * (s.boundsMin + s.boundsMax);
     float best = 0.0f;
     for (const world::Light& light : s.lights) {
-        if (light.role != world::LightRole::primary) continue;
+        if (light.role != world::LightRole::kPrimary) continue;
         float e = light.intensity * glsl::luminance(light.color);
-        if (light.type != world::LightType::directional) {
+        if (light.type != world::LightType::kDirectional) {
             const glm::vec3 d = centre - light.position;
             e /= std::max(glm::dot(d, d), 1.0f);
         }
@@ -143,8 +143,8 @@ uint32_t textureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_
 }
 
 VkSampler samplerFor(RendererState& s, const world::Sampler& sampler) {
-    const uint64_t key = uint64_t(sampler.mag_filter) | uint64_t(sampler.min_filter) << 16 |
-                         uint64_t(sampler.wrap_s) << 32 | uint64_t(sampler.wrap_t) << 48;
+    const uint64_t key = uint64_t(sampler.magFilter) | uint64_t(sampler.minFilter) << 16 |
+                         uint64_t(sampler.wrapS) << 32 | uint64_t(sampler.wrapT) << 48;
     auto found = s.samplers.find(key);
     if (found != s.samplers.end()) return found->second;
     VkSampler created = vk::createSampler(*s.ctx, samplerDesc(sampler));
@@ -155,41 +155,41 @@ VkSampler samplerFor(RendererState& s, const world::Sampler& sampler) {
 void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
     // Static vertices, then dynamic ones; static indices, then dynamic ones.
     std::vector<world::Vertex> vertices = level.vertices;
-    vertices.insert(vertices.end(), level.dynamic_vertices.begin(), level.dynamic_vertices.end());
+    vertices.insert(vertices.end(), level.dynamicVertices.begin(), level.dynamicVertices.end());
     std::vector<uint32_t> indices = level.indices;
-    indices.insert(indices.end(), level.dynamic_indices.begin(), level.dynamic_indices.end());
+    indices.insert(indices.end(), level.dynamicIndices.begin(), level.dynamicIndices.end());
     createRecordBuffer(*s.ctx, s.vertices, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     createRecordBuffer(*s.ctx, s.indices, indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
     for (const world::Surface& surface : level.surfaces) {
         DrawSurface d;
-        d.firstIndex = surface.first_index;
-        d.indexCount = surface.index_count;
+        d.firstIndex = surface.firstIndex;
+        d.indexCount = surface.indexCount;
         d.material = surface.material;
-        d.primaryLight = surface.primary_light;
+        d.primaryLight = surface.primaryLight;
         d.atlas = surface.atlas;
-        d.boundsMin = surface.bounds_min;
-        d.boundsMax = surface.bounds_max;
+        d.boundsMin = surface.boundsMin;
+        d.boundsMax = surface.boundsMax;
         s.surfaces.push_back(d);
     }
     const uint32_t staticVertices = uint32_t(level.vertices.size());
     const uint32_t staticIndices = uint32_t(level.indices.size());
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         const world::Entity& entity = level.entities[e];
-        if (!(entity.flags & world::entity_dynamic)) continue;
-        for (uint32_t k = 0; k < entity.dynamic_mesh_count; ++k) {
-            const world::DynamicMesh& mesh = level.dynamic_meshes.at(entity.first_dynamic_mesh + k);
-            if (mesh.index_count == 0) continue;
+        if (!(entity.flags & world::kEntityDynamic)) continue;
+        for (uint32_t k = 0; k < entity.dynamicMeshCount; ++k) {
+            const world::DynamicMesh& mesh = level.dynamicMeshes.at(entity.firstDynamicMesh + k);
+            if (mesh.indexCount == 0) continue;
             DrawDynamicMesh d;
             d.entity = e;
-            d.firstIndex = staticIndices + mesh.first_index;
-            d.indexCount = mesh.index_count;
-            d.vertexOffset = int32_t(staticVertices + mesh.first_vertex);
+            d.firstIndex = staticIndices + mesh.firstIndex;
+            d.indexCount = mesh.indexCount;
+            d.vertexOffset = int32_t(staticVertices + mesh.firstVertex);
             d.material = mesh.material;
             d.boundsMin = glm::vec3(1e30f);
             d.boundsMax = glm::vec3(-1e30f);
-            for (uint32_t v = 0; v < mesh.vertex_count; ++v) {
-                const glm::vec3 p = level.dynamic_vertices[mesh.first_vertex + v].position;
+            for (uint32_t v = 0; v < mesh.vertexCount; ++v) {
+                const glm::vec3 p = level.dynamicVertices[mesh.firstVertex + v].position;
                 d.boundsMin = glm::min(d.boundsMin, p);
                 d.boundsMax = glm::max(d.boundsMax, p);
             }
@@ -204,20 +204,20 @@ void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
     for (size_t i = 0; i < level.materials.size(); ++i) {
         const world::Material& m = level.materials[i];
         GpuMaterial& g = gpu[i];
-        g.baseColor = m.base_color;
-        g.f0Gloss = glm::vec4(m.specular_color, m.gloss);
-        g.emissive = glm::vec4(m.emissive, m.alpha_cutoff);
-        g.params = glm::vec4(m.metallic, m.roughness, m.normal_scale, m.occlusion_strength);
+        g.baseColor = m.baseColor;
+        g.f0Gloss = glm::vec4(m.specularColor, m.gloss);
+        g.emissive = glm::vec4(m.emissive, m.alphaCutoff);
+        g.params = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
         uint32_t bits = 0;
         const TextureSlots slots = textureSlotsOf(m);
         for (uint32_t t = 0; t < slots.size(); ++t)
             if (slots[t] != world::kNoIndex) bits |= 1u << t;
         g.textures = glm::uvec4(bits, 0u, 0u, 0u);
-        uint8_t cls = uint8_t(m.material_class);
+        uint8_t cls = uint8_t(m.materialClass);
         if (s.options.forceMaterialClass >= 0) cls = uint8_t(s.options.forceMaterialClass);
         s.materialClasses.push_back(cls);
-        s.materialDoubleSided.push_back(m.double_sided ? 1 : 0);
-        s.materialAlphaMask.push_back(m.alpha_mode == world::AlphaMode::mask ? 1 : 0);
+        s.materialDoubleSided.push_back(m.doubleSided ? 1 : 0);
+        s.materialAlphaMask.push_back(m.alphaMode == world::AlphaMode::kMask ? 1 : 0);
     }
     if (level.materials.empty()) {
         gpu[0].baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
@@ -244,7 +244,7 @@ float lightmapStorageScale(const world::BakedLighting& baked) {
     float largest = 0.0f;  // c0 = E / (2 w) bounds |c0| and |c.xyz| (|d| <= 0.5)
     for (const world::LightmapTexel& t : baked.texels)
         for (int c = 0; c < 3; ++c)
-            largest = std::max(largest, world::linear_irradiance_coefficients(t, c).x);
+            largest = std::max(largest, world::linearIrradianceCoefficients(t, c).x);
     float scale = 1.0f;
     while (largest * scale > kLightmapStoredMax) scale *= 0.5f;
     return scale;
@@ -253,7 +253,7 @@ float lightmapStorageScale(const world::BakedLighting& baked) {
 // Lightmaps and shadow masks of a baked level: every atlas a layer range of one 2D array as large
 // as the largest atlas (a smaller atlas sits at the top-left; atlasUvScale maps its uv1). The
 // lightmap holds, per atlas and colour channel, the four linear coefficients of
-// world::linear_irradiance_coefficients in RGBA16F times a power-of-two storage scale; the shadow
+// world::linearIrradianceCoefficients in RGBA16F times a power-of-two storage scale; the shadow
 // mask its byte per texel in the red channel of RGBA8 (linear filtering is guaranteed for both).
 void uploadLightmaps(RendererState& s, const assets::LoadedLevel& loaded) {
     const world::CompiledLevel& level = loaded.level;
@@ -274,19 +274,19 @@ void uploadLightmaps(RendererState& s, const assets::LoadedLevel& loaded) {
         const world::Atlas& atlas = level.atlases[a];
         s.atlasUvScale.push_back(
             glm::vec2(float(atlas.width) / float(width), float(atlas.height) / float(height)));
-        const uint64_t first = world::atlas_texel_offset(level, a);
+        const uint64_t first = world::atlasTexelOffset(level, a);
         for (uint32_t y = 0; y < atlas.height; ++y)
             for (uint32_t x = 0; x < atlas.width; ++x) {
                 const uint64_t texel = first + uint64_t(y) * atlas.width + x;
                 const size_t at = size_t(y) * width + x;
                 for (int c = 0; c < 3; ++c) {
                     const glm::vec4 k =
-                        world::linear_irradiance_coefficients(baked.texels[texel], c) * scale;
+                        world::linearIrradianceCoefficients(baked.texels[texel], c) * scale;
                     uint16_t* out = &coefficients[((size_t(a) * 3 + c) * layerTexels + at) * 4];
                     for (int i = 0; i < 4; ++i) out[i] = glm::packHalf1x16(k[i]);
                 }
                 uint8_t* m = &mask[(size_t(a) * layerTexels + at) * 4];
-                m[0] = m[1] = m[2] = baked.shadow_mask[texel];
+                m[0] = m[1] = m[2] = baked.shadowMask[texel];
                 m[3] = 255;
             }
     }
@@ -321,15 +321,15 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     std::vector<GpuProbe> records;
     if (s.bakedLighting && s.options.probes && !probes.empty()) {
-        const uint32_t size = probes[0].face_size;
+        const uint32_t size = probes[0].faceSize;
         for (size_t i = 0; i < probes.size(); ++i) {
-            if (probes[i].face_size != size || probes[i].mip_count != probes[0].mip_count)
+            if (probes[i].faceSize != size || probes[i].mipCount != probes[0].mipCount)
                 throw std::runtime_error("probe " + std::to_string(i) + " has face size " +
-                                         std::to_string(probes[i].face_size) + "; expected " +
+                                         std::to_string(probes[i].faceSize) + "; expected " +
                                          std::to_string(size) + " like probe 0 (one cube array)");
-            const uint32_t mips = probes[i].mip_count;
+            const uint32_t mips = probes[i].mipCount;
             const bool chain = size != 0 && mips >= 1 && mips <= 32 && (size >> (mips - 1)) == 1;
-            if (!chain || probes[i].texels.size() != world::probe_texel_count(size))
+            if (!chain || probes[i].texels.size() != world::probeTexelCount(size))
                 throw std::runtime_error("probe " + std::to_string(i) + " holds " +
                                          std::to_string(probes[i].texels.size()) +
                                          " texels; expected every mip of a " +
@@ -345,7 +345,7 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
         records = ordered.records;
         desc.format = VK_FORMAT_E5B9G9R9_UFLOAT_PACK32;
         desc.width = desc.height = size;
-        desc.mipLevels = probes[0].mip_count;
+        desc.mipLevels = probes[0].mipCount;
         desc.layers = 6 * uint32_t(probes.size());
         std::vector<uint32_t> texels;
         texels.reserve(probes.size() * probes[0].texels.size());
@@ -460,8 +460,8 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
     s.settings = level.settings;
     s.lights = level.lights;
     s.entities = level.entities;
-    s.boundsMin = level.settings.bounds_min;
-    s.boundsMax = level.settings.bounds_max;
+    s.boundsMin = level.settings.boundsMin;
+    s.boundsMax = level.settings.boundsMax;
     for (const world::Entity& e : level.entities) {  // dynamic objects widen the bounds
         s.boundsMin = glm::min(s.boundsMin, e.position);
         s.boundsMax = glm::max(s.boundsMax, e.position);

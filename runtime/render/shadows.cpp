@@ -20,7 +20,7 @@ constexpr float kSunExtentScale = 1.25f;    // the sun map's half size over the 
 constexpr float kSunCellsPerExtent = 4.0f;  // the camera may move extent / 4 before a refit
 
 uint32_t layersFor(world::LightType type) {
-    return type == world::LightType::point ? 6u : 1u;
+    return type == world::LightType::kPoint ? 6u : 1u;
 }
 
 float levelDiagonal(const RendererState& s) {
@@ -60,9 +60,9 @@ void fitSpotOrOmni(RendererState& s, ShadowSlot& slot) {
     const float zfar = light.range > 0.0f ? light.range : levelDiagonal(s) * 2.0f;
     const float znear = std::clamp(zfar * 1e-4f, 0.01f, 0.1f);
     const float size = float(s.options.shadowMapSize);
-    if (light.type == world::LightType::spot) {
+    if (light.type == world::LightType::kSpot) {
         const glm::vec3 dir = glm::normalize(light.direction);
-        const float fov = std::min(2.0f * light.outer_cone + 0.1f, glm::radians(170.0f));
+        const float fov = std::min(2.0f * light.outerCone + 0.1f, glm::radians(170.0f));
         const glm::mat4 view =
             glm::lookAtRH(light.position, light.position + dir, anyPerpendicular(dir));
         ShadowView& v = s.views[slot.firstView];
@@ -127,7 +127,7 @@ void createShadows(RendererState& s) {
     s.lightSlot.assign(s.lights.size(), kNoIndex);
     uint32_t layers = 0;
     for (uint32_t i = 0; i < s.lights.size(); ++i) {
-        if (s.lights[i].role != world::LightRole::primary || s.options.flatShading) continue;
+        if (s.lights[i].role != world::LightRole::kPrimary || s.options.flatShading) continue;
         const uint32_t need = layersFor(s.lights[i].type);
         if (layers + need > s.options.maxShadowLayers) continue;
         ShadowSlot slot;
@@ -206,7 +206,7 @@ void updateShadowViews(RendererState& s, const Camera& camera,
     for (uint32_t light : visibleLights) {
         if (s.lightSlot[light] == kNoIndex) continue;
         ShadowSlot& slot = s.slots[s.lightSlot[light]];
-        if (s.lights[light].type == world::LightType::directional)
+        if (s.lights[light].type == world::LightType::kDirectional)
             fitSun(s, slot, camera);
         else if (!slot.staticValid)
             fitSpotOrOmni(s, slot);

@@ -133,7 +133,7 @@ Script parseScript(std::string_view text, const std::string& path) {
         c.time = cursor;
         c.tick = uint64_t(std::llround(cursor * script.tickRate));
         if (head == "spawn") {
-            c.kind = CommandKind::Spawn;
+            c.kind = CommandKind::kSpawn;
             c.name = std::string(p.word("'player'"));
             if (c.name != "player") p.fail("expected 'player', found '" + c.name + "'");
             for (int i = 0; i < 3; ++i) c.values[i] = float(p.number("a coordinate in metres"));
@@ -142,35 +142,35 @@ Script parseScript(std::string_view text, const std::string& path) {
             p.keyword("pitch");
             c.values[4] = float(p.number("a pitch in degrees"));
         } else if (head == "key") {
-            c.kind = CommandKind::Key;
+            c.kind = CommandKind::kKey;
             c.name = std::string(p.word("a key name"));
             if (!knownKeys().count(c.name))
                 p.fail("expected a key (W A S D SPACE SHIFT CTRL F E Q R 0-9), found '" + c.name +
                        "'");
             c.on = p.choice("down", "up");
         } else if (head == "look") {
-            c.kind = CommandKind::Look;
+            c.kind = CommandKind::kLook;
             c.values[0] = float(p.number("a yaw change in degrees"));
             c.values[1] = float(p.number("a pitch change in degrees"));
         } else if (head == "flashlight") {
-            c.kind = CommandKind::Flashlight;
+            c.kind = CommandKind::kFlashlight;
             c.on = p.choice("on", "off");
         } else if (head == "fire") {
-            c.kind = CommandKind::Fire;
+            c.kind = CommandKind::kFire;
         } else if (head == "capture") {
-            c.kind = CommandKind::Capture;
+            c.kind = CommandKind::kCapture;
             c.name = std::string(p.word("a capture name"));
             if (c.name.find('/') != std::string::npos || c.name.find("..") != std::string::npos)
                 p.fail("expected a capture name without '/' or '..', found '" + c.name + "'");
         } else if (head == "expect") {
             std::string_view what = p.word("'primary' or 'effect-lights'");
             if (what == "primary") {
-                c.kind = CommandKind::ExpectPrimary;
+                c.kind = CommandKind::kExpectPrimary;
                 c.name = std::string(p.word("an entity name"));
                 p.keyword("==");
                 c.light = std::string(p.word("a light name"));
             } else if (what == "effect-lights") {
-                c.kind = CommandKind::ExpectEffectLights;
+                c.kind = CommandKind::kExpectEffectLights;
                 double n = p.number("a count of effect lights");
                 if (n < 0 || n > 5 || n != std::floor(n))
                     p.fail("expected a whole count from 0 to 5");
@@ -180,7 +180,7 @@ Script parseScript(std::string_view text, const std::string& path) {
                        std::string(what) + "'");
             }
         } else if (head == "quit") {
-            c.kind = CommandKind::Quit;
+            c.kind = CommandKind::kQuit;
         } else {
             p.fail("unknown command '" + std::string(head) +
                    "' (expected level, tick, spawn, at, wait, key, look, flashlight, fire, "

@@ -29,15 +29,15 @@
 namespace onelight::replay {
 
 enum class CommandKind {
-    Spawn,
-    Key,
-    Look,
-    Flashlight,
-    Fire,
-    Capture,
-    ExpectPrimary,
-    ExpectEffectLights,
-    Quit
+    kSpawn,
+    kKey,
+    kLook,
+    kFlashlight,
+    kFire,
+    kCapture,
+    kExpectPrimary,
+    kExpectEffectLights,
+    kQuit
 };
 
 struct Command {

@@ -4,27 +4,27 @@
 
 namespace onelight::bake::test {
 
-uint32_t add_lambert_material(world::SourceLevel& level, float albedo) {
+uint32_t addLambertMaterial(world::SourceLevel& level, float albedo) {
     world::Material m;
     m.name = "lambert" + std::to_string(level.materials.size());
-    m.base_color = glm::vec4(albedo, albedo, albedo, 1.0f);
+    m.baseColor = glm::vec4(albedo, albedo, albedo, 1.0f);
     m.metallic = 0.0f;
     m.roughness = 1.0f;
     m.albedo = glm::vec3(albedo);
-    m.specular_color = glm::vec3(0.0f);
+    m.specularColor = glm::vec3(0.0f);
     m.gloss = 0.0f;
-    m.material_class = world::MaterialClass::lambert;
+    m.materialClass = world::MaterialClass::kLambert;
     level.materials.push_back(m);
     return static_cast<uint32_t>(level.materials.size() - 1);
 }
 
 namespace {
 
-void add_triangles(world::SourceLevel& level, std::vector<glm::vec3> positions,
-                   std::vector<uint32_t> indices, uint32_t material, const std::string& name) {
+void addTriangles(world::SourceLevel& level, std::vector<glm::vec3> positions,
+                  std::vector<uint32_t> indices, uint32_t material, const std::string& name) {
     world::MeshInstance instance;
-    instance.node_name = name;
-    instance.mesh_name = name;
+    instance.nodeName = name;
+    instance.meshName = name;
     instance.material = material;
     for (const glm::vec3& p : positions) {
         world::Vertex v;
@@ -44,13 +44,13 @@ void add_triangles(world::SourceLevel& level, std::vector<glm::vec3> positions,
 
 }  // namespace
 
-void add_quad(world::SourceLevel& level, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3,
-              uint32_t material, const std::string& name) {
-    add_triangles(level, {p0, p1, p2, p3}, {0, 1, 2, 0, 2, 3}, material, name);
+void addQuad(world::SourceLevel& level, glm::vec3 p0, glm::vec3 p1, glm::vec3 p2, glm::vec3 p3,
+             uint32_t material, const std::string& name) {
+    addTriangles(level, {p0, p1, p2, p3}, {0, 1, 2, 0, 2, 3}, material, name);
 }
 
-void add_box(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t material, bool inward,
-             const std::string& name) {
+void addBox(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t material, bool inward,
+            const std::string& name) {
     const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z},
                             {lo.x, hi.y, lo.z}, {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z},
                             {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
@@ -60,16 +60,16 @@ void add_box(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t mat
     for (int f = 0; f < 6; ++f) {
         const int* q = faces[f];
         if (inward)
-            add_quad(level, c[q[3]], c[q[2]], c[q[1]], c[q[0]], material,
-                     name + "_" + std::to_string(f));
+            addQuad(level, c[q[3]], c[q[2]], c[q[1]], c[q[0]], material,
+                    name + "_" + std::to_string(f));
         else
-            add_quad(level, c[q[0]], c[q[1]], c[q[2]], c[q[3]], material,
-                     name + "_" + std::to_string(f));
+            addQuad(level, c[q[0]], c[q[1]], c[q[2]], c[q[3]], material,
+                    name + "_" + std::to_string(f));
     }
 }
 
-void add_inward_sphere(world::SourceLevel& level, glm::vec3 centre, float radius, uint32_t rings,
-                       uint32_t segments, uint32_t material) {
+void addInwardSphere(world::SourceLevel& level, glm::vec3 centre, float radius, uint32_t rings,
+                     uint32_t segments, uint32_t material) {
     std::vector<glm::vec3> positions;
     std::vector<uint32_t> indices;
     const float pi = 3.14159265358979f;
@@ -92,8 +92,8 @@ void add_inward_sphere(world::SourceLevel& level, glm::vec3 centre, float radius
         }
     }
     world::MeshInstance instance;
-    instance.node_name = "sphere";
-    instance.mesh_name = "sphere";
+    instance.nodeName = "sphere";
+    instance.meshName = "sphere";
     instance.material = material;
     for (const glm::vec3& p : positions) {
         world::Vertex v;
@@ -105,107 +105,107 @@ void add_inward_sphere(world::SourceLevel& level, glm::vec3 centre, float radius
     level.instances.push_back(std::move(instance));
 }
 
-world::Light point_light(glm::vec3 position, float candela, world::LightRole role) {
+world::Light pointLight(glm::vec3 position, float candela, world::LightRole role) {
     world::Light l;
     l.name = "point";
-    l.type = world::LightType::point;
+    l.type = world::LightType::kPoint;
     l.role = role;
     l.intensity = candela;
     l.position = position;
     return l;
 }
 
-world::Light spot_light(glm::vec3 position, glm::vec3 direction, float candela, float inner,
-                        float outer, world::LightRole role) {
-    world::Light l = point_light(position, candela, role);
+world::Light spotLight(glm::vec3 position, glm::vec3 direction, float candela, float inner,
+                       float outer, world::LightRole role) {
+    world::Light l = pointLight(position, candela, role);
     l.name = "spot";
-    l.type = world::LightType::spot;
+    l.type = world::LightType::kSpot;
     l.direction = glm::normalize(direction);
-    l.inner_cone = inner;
-    l.outer_cone = outer;
+    l.innerCone = inner;
+    l.outerCone = outer;
     return l;
 }
 
-world::SourceLevel agreement_room() {
+world::SourceLevel agreementRoom() {
     world::SourceLevel level;
-    const uint32_t walls = add_lambert_material(level, 0.6f);
-    const uint32_t block = add_lambert_material(level, 0.3f);
-    add_box(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
-    add_box(level, {-0.4f, -0.4f, 0.0f}, {0.4f, 0.4f, 0.8f}, block, false, "block");
-    level.lights.push_back(point_light({-1.0f, 0.5f, 2.0f}, 60.0f, world::LightRole::primary));
-    level.lights.push_back(spot_light({1.5f, -1.0f, 2.2f}, {-0.5f, 0.4f, -1.0f}, 150.0f, 0.4f, 0.7f,
-                                      world::LightRole::baked));
+    const uint32_t walls = addLambertMaterial(level, 0.6f);
+    const uint32_t block = addLambertMaterial(level, 0.3f);
+    addBox(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
+    addBox(level, {-0.4f, -0.4f, 0.0f}, {0.4f, 0.4f, 0.8f}, block, false, "block");
+    level.lights.push_back(pointLight({-1.0f, 0.5f, 2.0f}, 60.0f, world::LightRole::kPrimary));
+    level.lights.push_back(spotLight({1.5f, -1.0f, 2.2f}, {-0.5f, 0.4f, -1.0f}, 150.0f, 0.4f, 0.7f,
+                                     world::LightRole::kBaked));
     return level;
 }
 
-BakeOptions test_options(float texels_per_metre, BakeQuality quality) {
+BakeOptions testOptions(float texelsPerMetre, BakeQuality quality) {
     BakeOptions o;
     o.quality = quality;
-    o.show_progress = false;
-    o.compile.charts.texels_per_metre = texels_per_metre;
-    o.compile.charts.atlas_size = 512;
-    o.grid_cell_size = 1.0f;
+    o.showProgress = false;
+    o.compile.charts.texelsPerMetre = texelsPerMetre;
+    o.compile.charts.atlasSize = 512;
+    o.gridCellSize = 1.0f;
     return o;
 }
 
-bool all_finite_non_negative(const world::BakedLighting& baked) {
+bool allFiniteNonNegative(const world::BakedLighting& baked) {
     const auto good = [](const glm::vec3& v) {
         return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && v.x >= 0.0f &&
                v.y >= 0.0f && v.z >= 0.0f;
     };
     for (const world::LightmapTexel& t : baked.texels)
-        if (!good(t.irradiance) || !std::isfinite(t.normal_weight) ||
+        if (!good(t.irradiance) || !std::isfinite(t.normalWeight) ||
             !std::isfinite(glm::length(t.direction)))
             return false;
     for (const world::LightGridCell& c : baked.grid.cells)
-        for (const glm::vec3& f : c.ambient_cube)
-            if (!good(f) || !std::isfinite(c.primary_visibility)) return false;
+        for (const glm::vec3& f : c.ambientCube)
+            if (!good(f) || !std::isfinite(c.primaryVisibility)) return false;
     return true;
 }
 
-world::SourceLevel small_room() {
+world::SourceLevel smallRoom() {
     world::SourceLevel level;
-    const uint32_t m = add_lambert_material(level, 0.6f);
-    add_box(level, {-1.5f, -1.0f, 0.0f}, {1.5f, 1.0f, 2.0f}, m, true, "room");
-    add_box(level, {-0.3f, -0.3f, 0.0f}, {0.3f, 0.3f, 0.5f}, m, false, "block");
-    level.lights.push_back(point_light({-0.8f, 0.2f, 1.6f}, 40.0f, world::LightRole::primary));
-    level.lights.push_back(point_light({0.9f, -0.3f, 1.5f}, 30.0f, world::LightRole::primary));
+    const uint32_t m = addLambertMaterial(level, 0.6f);
+    addBox(level, {-1.5f, -1.0f, 0.0f}, {1.5f, 1.0f, 2.0f}, m, true, "room");
+    addBox(level, {-0.3f, -0.3f, 0.0f}, {0.3f, 0.3f, 0.5f}, m, false, "block");
+    level.lights.push_back(pointLight({-0.8f, 0.2f, 1.6f}, 40.0f, world::LightRole::kPrimary));
+    level.lights.push_back(pointLight({0.9f, -0.3f, 1.5f}, 30.0f, world::LightRole::kPrimary));
     return level;
 }
 
-world::SourceLevel small_room_with_probes() {
-    world::SourceLevel level = small_room();
+world::SourceLevel smallRoomWithProbes() {
+    world::SourceLevel level = smallRoom();
     world::Material glossy = level.materials[0];
     glossy.name = "glossy";
-    glossy.material_class = world::MaterialClass::dielectric;
-    glossy.specular_color = glm::vec3(0.04f);
+    glossy.materialClass = world::MaterialClass::kDielectric;
+    glossy.specularColor = glm::vec3(0.04f);
     glossy.gloss = 0.8f;
     level.materials.push_back(glossy);
     for (world::MeshInstance& m : level.instances)
-        if (m.node_name == "block") m.material = 1;
+        if (m.nodeName == "block") m.material = 1;
     for (const glm::vec3 p :
          {glm::vec3(-1.0f, 0.0f, 1.0f), glm::vec3(0.0f, 0.5f, 1.2f), glm::vec3(1.0f, 0.0f, 0.8f)}) {
         world::Entity e;
         e.name = "probe" + std::to_string(level.entities.size());
-        e.flags = world::entity_probe;
+        e.flags = world::kEntityProbe;
         e.position = p;
         if (level.entities.empty()) {
-            e.probe_box_min = {-1.5f, -1.0f, 0.0f};
-            e.probe_box_max = {1.5f, 1.0f, 2.0f};
+            e.probeBoxMin = {-1.5f, -1.0f, 0.0f};
+            e.probeBoxMax = {1.5f, 1.0f, 2.0f};
         }
         level.entities.push_back(e);
     }
     return level;
 }
 
-BakeOptions fast_bake_options() {
-    BakeOptions o = test_options(4.0f);
-    o.indirect_samples = 16;
-    o.shadow_samples = 4;
-    o.grid_samples = 16;
-    o.grid_cell_size = 0.75f;
-    o.probe_face_size = 8;
-    o.probe_samples = 4;
+BakeOptions fastBakeOptions() {
+    BakeOptions o = testOptions(4.0f);
+    o.indirectSamples = 16;
+    o.shadowSamples = 4;
+    o.gridSamples = 16;
+    o.gridCellSize = 0.75f;
+    o.probeFaceSize = 8;
+    o.probeSamples = 4;
     return o;
 }
 

@@ -12,45 +12,43 @@ namespace onelight::bake {
 namespace {
 
 TEST(BakedSections, RoundTripAndErrorsNameTheSection) {
-    const BakeResult r = bake_level(test::small_room_with_probes(), test::fast_bake_options());
-    std::vector<package::RawSection> sections = package::encode_baked_sections(r.baked);
+    const BakeResult r = bakeLevel(test::smallRoomWithProbes(), test::fastBakeOptions());
+    std::vector<package::RawSection> sections = package::encodeBakedSections(r.baked);
     ASSERT_EQ(sections.size(), 4u);  // 32..34 and the probes
-    const package::BakedContents back =
-        package::decode_baked_sections(sections, r.level, "x.olpak");
+    const package::BakedContents back = package::decodeBakedSections(sections, r.level, "x.olpak");
     EXPECT_TRUE(back.present);
     EXPECT_EQ(back.baked.texels.size(), r.baked.texels.size());
     EXPECT_EQ(back.baked.grid.cells.size(), r.baked.grid.cells.size());
     ASSERT_EQ(back.baked.probes.size(), 3u);
     EXPECT_EQ(back.baked.probes[2].texels, r.baked.probes[2].texels);
-    EXPECT_EQ(back.baked.probes[0].box_max, glm::vec3(1.5f, 1.0f, 2.0f));
+    EXPECT_EQ(back.baked.probes[0].boxMax, glm::vec3(1.5f, 1.0f, 2.0f));
 
     // What decoding `broken` throws ("" when nothing).
     auto errorOf = [&](const std::vector<package::RawSection>& broken) {
         return onelight::test::errorMessage(
-            [&] { (void)package::decode_baked_sections(broken, r.level, "x.olpak"); });
+            [&] { (void)package::decodeBakedSections(broken, r.level, "x.olpak"); });
     };
-    const std::vector<package::RawSection> probes_alone(sections.begin() + 3, sections.end());
-    EXPECT_NE(errorOf(probes_alone).find("x.olpak: section probes present without baked lighting"),
+    const std::vector<package::RawSection> probesAlone(sections.begin() + 3, sections.end());
+    EXPECT_NE(errorOf(probesAlone).find("x.olpak: section probes present without baked lighting"),
               std::string::npos)
-        << errorOf(probes_alone);
-    std::vector<package::RawSection> bad_probe = sections;
-    bad_probe[3].bytes[16 + 12 * 4] = 3;  // probe 0's face_size 8 -> 3: not a power of two
-    EXPECT_NE(errorOf(bad_probe).find("record 0: face_size 3"), std::string::npos)
-        << errorOf(bad_probe);
+        << errorOf(probesAlone);
+    std::vector<package::RawSection> badProbe = sections;
+    badProbe[3].bytes[16 + 12 * 4] = 3;  // probe 0's face_size 8 -> 3: not a power of two
+    EXPECT_NE(errorOf(badProbe).find("record 0: faceSize 3"), std::string::npos)
+        << errorOf(badProbe);
 
     std::vector<package::RawSection> truncated = sections;
     truncated[0].bytes.resize(truncated[0].bytes.size() - 32);
     truncated[0].count -= 1;
     EXPECT_NE(errorOf(truncated).find("lightmap_texels"), std::string::npos) << errorOf(truncated);
 
-    std::vector<package::RawSection> bad_light = sections;
+    std::vector<package::RawSection> badLight = sections;
     const uint32_t bogus = 77;  // not a light of the level
-    std::memcpy(bad_light[2].bytes.data() + 56 + 72, &bogus, 4);
-    EXPECT_NE(errorOf(bad_light).find("dominant_primary 77"), std::string::npos)
-        << errorOf(bad_light);
+    std::memcpy(badLight[2].bytes.data() + 56 + 72, &bogus, 4);
+    EXPECT_NE(errorOf(badLight).find("dominantPrimary 77"), std::string::npos) << errorOf(badLight);
 
-    std::vector<package::RawSection> only_two(sections.begin(), sections.begin() + 2);
-    EXPECT_NE(errorOf(only_two).find("light_grid missing"), std::string::npos) << errorOf(only_two);
+    std::vector<package::RawSection> onlyTwo(sections.begin(), sections.begin() + 2);
+    EXPECT_NE(errorOf(onlyTwo).find("light_grid missing"), std::string::npos) << errorOf(onlyTwo);
 }
 
 }  // namespace

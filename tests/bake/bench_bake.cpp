@@ -1,13 +1,13 @@
 // onelight-bench-bake: issue 5's benchmark (not a test). In one run:
 //  1. Ray throughput. The rays the lightmap stage traces on a generated level (tests/world's
-//     level generator, ~250k triangles) are recorded through BakeScene::observe_rays, then
+//     level generator, ~250k triangles) are recorded through BakeScene::observeRays, then
 //     replayed, same scene, same thread count, same grain: (a) through the baker's own per-ray
 //     path (BakeScene::occluded / intersect) and (b) through raw rtcOccluded1 / rtcIntersect1.
 //     The whole lightmap stage (shading, sampling, filter) is also timed on the same texels: its
 //     rays/s against raw Embree on its own rays is the baker's ratio (issue goal >= 0.85).
 //  2. Speed against error: the lightmap-vs-reference agreement test's room baked at draft,
 //     default and high; wall time and RMS relative error of texel irradiance against
-//     reference_irradiance at the same points (computed once, in two independent halves so its
+//     referenceIrradiance at the same points (computed once, in two independent halves so its
 //     own noise is measured too). Also written as CSV with --csv.
 //  3. Scaling: the same room at 1x, 2x and 4x texels (texels_per_metre x1, x sqrt 2, x2).
 //  4. Peak memory per bake: ru_maxrss after resetting the high-water mark (/proc/self/clear_refs).
@@ -45,23 +45,23 @@ namespace onelight::bake {
 namespace {
 
 struct BenchOptions {
-    uint64_t triangles = 250000;            // generated level for the ray throughput
-    uint64_t texels = 6000;                 // lightmap texels whose rays are recorded and replayed
-    uint32_t reference_spp = 65536;         // reference_irradiance samples per point (two halves)
-    uint32_t stride = 11;                   // every stride-th texel sample is an error point
-    float room_texels_per_metre = 6.0f;     // speed-against-error room (the agreement test's)
-    float scaling_texels_per_metre = 8.0f;  // 1x of the scaling bakes
-    uint32_t repeats = 3;                   // replays per path; the fastest counts
-    uint32_t threads = 0;                   // 0: every core
-    bool throughput_only = false;           // part 1 only (for profiling)
+    uint64_t triangles = 250000;         // generated level for the ray throughput
+    uint64_t texels = 6000;              // lightmap texels whose rays are recorded and replayed
+    uint32_t referenceSpp = 65536;       // referenceIrradiance samples per point (two halves)
+    uint32_t stride = 11;                // every stride-th texel sample is an error point
+    float roomTexelsPerMetre = 6.0f;     // speed-against-error room (the agreement test's)
+    float scalingTexelsPerMetre = 8.0f;  // 1x of the scaling bakes
+    uint32_t repeats = 3;                // replays per path; the fastest counts
+    uint32_t threads = 0;                // 0: every core
+    bool throughputOnly = false;         // part 1 only (for profiling)
     std::string csv;
 };
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
+double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string load_average() {
+std::string loadAverage() {
     std::ifstream in("/proc/loadavg");
     std::string line;
     std::getline(in, line);
@@ -70,7 +70,7 @@ std::string load_average() {
 
 /// Resets the process's peak resident set ("5" to /proc/self/clear_refs, Linux >= 4.0), so the
 /// next ru_maxrss is the peak of what runs after it. False when the kernel refuses.
-bool reset_peak_memory() {
+bool resetPeakMemory() {
     std::ofstream out("/proc/self/clear_refs");
     out << "5";
     out.flush();
@@ -78,7 +78,7 @@ bool reset_peak_memory() {
 }
 
 /// Resident memory now (/proc/self/statm, second field, in pages).
-uint64_t resident_bytes() {
+uint64_t residentBytes() {
     std::ifstream in("/proc/self/statm");
     uint64_t size = 0, resident = 0;
     in >> size >> resident;
@@ -94,9 +94,9 @@ double mib(uint64_t bytes) {
 
 /// Every ray of a stage, per thread in trace order (so a replay keeps the baker's coherence).
 struct RayLog {
-    tbb::enumerable_thread_specific<std::vector<TracedRay>> per_thread;
+    tbb::enumerable_thread_specific<std::vector<TracedRay>> perThread;
     static void record(void* user, const TracedRay& ray) {
-        static_cast<RayLog*>(user)->per_thread.local().push_back(ray);
+        static_cast<RayLog*>(user)->perThread.local().push_back(ray);
     }
 };
 
@@ -110,13 +110,13 @@ constexpr size_t kReplayGrain = 256;
 /// threads spent, so a ratio of CPU times holds when other processes share the cores.
 struct Timing {
     double wall = 1e30, cpu = 1e30;
-    void keep_fastest(const Timing& t) {
+    void keepFastest(const Timing& t) {
         wall = std::min(wall, t.wall);
         cpu = std::min(cpu, t.cpu);
     }
 };
 
-double process_cpu_seconds() {
+double processCpuSeconds() {
     timespec t{};
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
@@ -124,15 +124,15 @@ double process_cpu_seconds() {
 
 template <typename Run>
 Timing measure(const Run& run) {
-    const double cpu = process_cpu_seconds();
+    const double cpu = processCpuSeconds();
     const auto start = std::chrono::steady_clock::now();
     run();
-    return {seconds_since(start), process_cpu_seconds() - cpu};
+    return {secondsSince(start), processCpuSeconds() - cpu};
 }
 
 /// Runs body(begin, end) over [0, n) in parallel.
 template <typename Body>
-Timing time_parallel(size_t n, const Body& body) {
+Timing timeParallel(size_t n, const Body& body) {
     return measure([&] {
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kReplayGrain),
                           [&](const tbb::blocked_range<size_t>& r) { body(r.begin(), r.end()); });
@@ -140,16 +140,16 @@ Timing time_parallel(size_t n, const Body& body) {
 }
 
 /// The baker's per-ray path: BakeScene::occluded / intersect (context, ray set-up, hit data).
-Timing replay_baker(const BakeScene& scene, const std::vector<TracedRay>& rays, bool occlusion,
-                    std::atomic<uint64_t>& hits) {
-    return time_parallel(rays.size(), [&](size_t begin, size_t end) {
+Timing replayBaker(const BakeScene& scene, const std::vector<TracedRay>& rays, bool occlusion,
+                   std::atomic<uint64_t>& hits) {
+    return timeParallel(rays.size(), [&](size_t begin, size_t end) {
         uint64_t counter = 0, found = 0;
         for (size_t i = begin; i < end; ++i) {
             const TracedRay& r = rays[i];
             if (occlusion)
-                found += scene.occluded(r.origin, r.dir, r.max_distance, counter);
+                found += scene.occluded(r.origin, r.dir, r.maxDistance, counter);
             else
-                found += scene.intersect(r.origin, r.dir, r.max_distance, counter).found;
+                found += scene.intersect(r.origin, r.dir, r.maxDistance, counter).found;
         }
         hits += found;
     });
@@ -157,9 +157,9 @@ Timing replay_baker(const BakeScene& scene, const std::vector<TracedRay>& rays, 
 
 /// Raw Embree on the same rays: one context per task, the ray filled from the record, nothing
 /// read back but the hit flag.
-Timing replay_raw(RTCScene scene, const std::vector<TracedRay>& rays, bool occlusion,
-                  std::atomic<uint64_t>& hits) {
-    return time_parallel(rays.size(), [&](size_t begin, size_t end) {
+Timing replayRaw(RTCScene scene, const std::vector<TracedRay>& rays, bool occlusion,
+                 std::atomic<uint64_t>& hits) {
+    return timeParallel(rays.size(), [&](size_t begin, size_t end) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         uint64_t found = 0;
@@ -174,7 +174,7 @@ Timing replay_raw(RTCScene scene, const std::vector<TracedRay>& rays, bool occlu
             q.ray.dir_y = r.dir.y;
             q.ray.dir_z = r.dir.z;
             q.ray.time = 0.0f;
-            q.ray.tfar = r.max_distance;
+            q.ray.tfar = r.maxDistance;
             q.ray.mask = 0xFFFFFFFFu;
             q.ray.id = 0;
             q.ray.flags = 0;
@@ -198,8 +198,8 @@ double mrays(uint64_t rays, double seconds) {
 
 /// `parts` texel ranges [begin, end) of about count / parts sampled texels each, spread evenly
 /// over the level's samples (the cost of a texel depends on where it is: spread them).
-std::vector<std::pair<uint64_t, uint64_t>> spread_texels(const std::vector<TexelSample>& samples,
-                                                         uint64_t count, uint32_t parts) {
+std::vector<std::pair<uint64_t, uint64_t>> spreadTexels(const std::vector<TexelSample>& samples,
+                                                        uint64_t count, uint32_t parts) {
     std::vector<std::pair<uint64_t, uint64_t>> ranges;
     const size_t n = samples.size(), each = std::max<size_t>(1, count / parts);
     for (uint32_t k = 0; k < parts; ++k) {
@@ -214,85 +214,84 @@ std::vector<std::pair<uint64_t, uint64_t>> spread_texels(const std::vector<Texel
 }
 
 /// The lightmap stage over every range (each with its filter halo, as a shard bakes).
-LightmapStats bake_ranges(const BakeScene& scene, const BakeLights& lights,
-                          const world::CompiledLevel& level,
-                          const std::vector<TexelSample>& samples, const LightmapSettings& settings,
-                          const std::vector<std::pair<uint64_t, uint64_t>>& ranges,
-                          world::BakedLighting& baked) {
+LightmapStats bakeRanges(const BakeScene& scene, const BakeLights& lights,
+                         const world::CompiledLevel& level, const std::vector<TexelSample>& samples,
+                         const LightmapSettings& settings,
+                         const std::vector<std::pair<uint64_t, uint64_t>>& ranges,
+                         world::BakedLighting& baked) {
     LightmapStats all;
     for (const auto& [begin, end] : ranges) {
-        const LightmapStats s = bake_lightmap_texels(scene, lights, level, samples, settings, begin,
-                                                     end, baked, nullptr);
+        const LightmapStats s =
+            bakeLightmapTexels(scene, lights, level, samples, settings, begin, end, baked, nullptr);
         all.rays += s.rays;
-        all.texels_baked += s.texels_baked;
+        all.texelsBaked += s.texelsBaked;
     }
     return all;
 }
 
-bool ray_throughput(const BenchOptions& o) {
+bool rayThroughput(const BenchOptions& o) {
     std::printf("\n== 1. Ray throughput: lightmap rays of a generated level ==\n");
     const auto start = std::chrono::steady_clock::now();
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / "onelight-bench-bake";
     std::filesystem::create_directories(folder);
     const onelight::test::GeneratedLevelOptions generated =
-        onelight::test::options_for_triangles(o.triangles);
-    const std::string path =
-        onelight::test::write_generated_level(folder, "bench_level", generated);
-    const world::SourceLevel source = world::import_gltf(path);
+        onelight::test::optionsForTriangles(o.triangles);
+    const std::string path = onelight::test::writeGeneratedLevel(folder, "bench_level", generated);
+    const world::SourceLevel source = world::importGltf(path);
     world::CompileOptions compile;
-    compile.charts.texels_per_metre = 4.0;
-    const world::CompiledLevel level = world::compile_level(source, compile).level;
+    compile.charts.texelsPerMetre = 4.0;
+    const world::CompiledLevel level = world::compileLevel(source, compile).level;
     const EmbreeDevice device;
     BakeScene scene(device, level);
-    const BakeLights lights = make_bake_lights(level.lights, {}, glm::vec3(0.0f));
-    const std::vector<TexelSample> samples = place_texels(level);
+    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    const std::vector<TexelSample> samples = placeTexels(level);
     if (samples.empty()) {
         std::printf("the generated level has no lightmap texels\n");
         return false;
     }
     const std::vector<std::pair<uint64_t, uint64_t>> ranges =
-        spread_texels(samples, o.texels, kTexelRanges);
+        spreadTexels(samples, o.texels, kTexelRanges);
     BakeOptions draft;
-    draft.quality = BakeQuality::draft;
-    const LightmapSettings settings = lightmap_settings(draft);
+    draft.quality = BakeQuality::kDraft;
+    const LightmapSettings settings = lightmapSettings(draft);
     world::BakedLighting baked;
-    baked.texels.assign(total_texels(level), world::LightmapTexel{});
-    baked.shadow_mask.assign(total_texels(level), 0);
+    baked.texels.assign(totalTexels(level), world::LightmapTexel{});
+    baked.shadowMask.assign(totalTexels(level), 0);
     std::printf(
         "level      %u triangles, %zu lights, %zu texel samples (4 texels/m); setup %.1f s\n",
-        scene.triangle_count(), lights.lights.size(), samples.size(), seconds_since(start));
+        scene.triangleCount(), lights.lights.size(), samples.size(), secondsSince(start));
 
     // Record the rays of a draft lightmap bake of the chosen texels.
     RayLog log;
-    scene.observe_rays(&RayLog::record, &log);
+    scene.observeRays(&RayLog::record, &log);
     const LightmapStats recorded =
-        bake_ranges(scene, lights, level, samples, settings, ranges, baked);
-    scene.observe_rays(nullptr, nullptr);
+        bakeRanges(scene, lights, level, samples, settings, ranges, baked);
+    scene.observeRays(nullptr, nullptr);
     std::vector<TracedRay> occlusion, closest;
-    for (const std::vector<TracedRay>& rays : log.per_thread)
+    for (const std::vector<TracedRay>& rays : log.perThread)
         for (const TracedRay& r : rays) (r.occlusion ? occlusion : closest).push_back(r);
-    log.per_thread.clear();
+    log.perThread.clear();
 
     // The whole stage again, unobserved, and the replays, interleaved so that changes in the
     // machine's load hit every path alike; the fastest of the repeats counts.
-    Timing stage, occlusion_baker, occlusion_raw, closest_baker, closest_raw;
+    Timing stage, occlusionBaker, occlusionRaw, closestBaker, closestRaw;
     LightmapStats stats;
     std::atomic<uint64_t> hits[4] = {0, 0, 0, 0};
     for (uint32_t i = 0; i < o.repeats; ++i) {
-        stage.keep_fastest(measure(
-            [&] { stats = bake_ranges(scene, lights, level, samples, settings, ranges, baked); }));
-        occlusion_baker.keep_fastest(replay_baker(scene, occlusion, true, hits[0]));
-        occlusion_raw.keep_fastest(replay_raw(scene.embree_scene(), occlusion, true, hits[1]));
-        closest_baker.keep_fastest(replay_baker(scene, closest, false, hits[2]));
-        closest_raw.keep_fastest(replay_raw(scene.embree_scene(), closest, false, hits[3]));
+        stage.keepFastest(measure(
+            [&] { stats = bakeRanges(scene, lights, level, samples, settings, ranges, baked); }));
+        occlusionBaker.keepFastest(replayBaker(scene, occlusion, true, hits[0]));
+        occlusionRaw.keepFastest(replayRaw(scene.embreeScene(), occlusion, true, hits[1]));
+        closestBaker.keepFastest(replayBaker(scene, closest, false, hits[2]));
+        closestRaw.keepFastest(replayRaw(scene.embreeScene(), closest, false, hits[3]));
     }
     const uint64_t total = occlusion.size() + closest.size();
     std::printf(
         "texels     %llu owned in %zu places of the level, each with its filter halo of "
         "one atlas row (draft: %u shadow rays per light, %u paths per texel)\n",
-        static_cast<unsigned long long>(stats.texels_baked), ranges.size(), settings.shadow_samples,
-        settings.indirect_samples);
+        static_cast<unsigned long long>(stats.texelsBaked), ranges.size(), settings.shadowSamples,
+        settings.indirectSamples);
     std::printf(
         "rays       %llu recorded = %llu counted by the stage (shadow %llu, bounce %llu, "
         "probe %llu)\n",
@@ -303,28 +302,28 @@ bool ray_throughput(const BenchOptions& o) {
         static_cast<unsigned long long>(recorded.rays.probe));
     if (hits[0] != hits[1] || hits[2] != hits[3])
         std::printf("WARNING: the baker's and raw replays disagree on hits\n");
-    const Timing raw{occlusion_raw.wall + closest_raw.wall, occlusion_raw.cpu + closest_raw.cpu};
-    const Timing baker_path{occlusion_baker.wall + closest_baker.wall,
-                            occlusion_baker.cpu + closest_baker.cpu};
+    const Timing raw{occlusionRaw.wall + closestRaw.wall, occlusionRaw.cpu + closestRaw.cpu};
+    const Timing bakerPath{occlusionBaker.wall + closestBaker.wall,
+                           occlusionBaker.cpu + closestBaker.cpu};
     std::printf("\n%-44s %9s %11s %9s %13s %11s\n", "same rays, same scene, same threads", "count",
                 "baker Mr/s", "raw Mr/s", "ratio (wall)", "ratio (CPU)");
-    const auto row = [](const char* name, uint64_t count, const Timing& baker, const Timing& raw_t,
+    const auto row = [](const char* name, uint64_t count, const Timing& baker, const Timing& rawT,
                         const char* note) {
         std::printf("%-44s %9llu %11.2f %9.2f %13.3f %11.3f%s\n", name,
                     static_cast<unsigned long long>(count), mrays(count, baker.wall),
-                    mrays(count, raw_t.wall), raw_t.wall / baker.wall, raw_t.cpu / baker.cpu, note);
+                    mrays(count, rawT.wall), rawT.wall / baker.wall, rawT.cpu / baker.cpu, note);
     };
-    row("occlusion: shadow (+ filter visibility)", occlusion.size(), occlusion_baker, occlusion_raw,
+    row("occlusion: shadow (+ filter visibility)", occlusion.size(), occlusionBaker, occlusionRaw,
         "");
-    row("closest hit: bounce (+ inside probes)", closest.size(), closest_baker, closest_raw, "");
-    row("all, baker's per-ray path", total, baker_path, raw, "");
+    row("closest hit: bounce (+ inside probes)", closest.size(), closestBaker, closestRaw, "");
+    row("all, baker's per-ray path", total, bakerPath, raw, "");
     row("all, whole lightmap stage (shading incl.)", stats.rays.total(), stage, raw,
         "   <- issue goal >= 0.85");
     std::printf(
         "wall s: stage %.3f, raw Embree on its rays %.3f (occlusion %.3f + closest hit "
         "%.3f); CPU s: stage %.3f, raw %.3f; peak memory so far %.1f MiB\n",
-        stage.wall, raw.wall, occlusion_raw.wall, closest_raw.wall, stage.cpu, raw.cpu,
-        mib(peak_memory_bytes()));
+        stage.wall, raw.wall, occlusionRaw.wall, closestRaw.wall, stage.cpu, raw.cpu,
+        mib(peakMemoryBytes()));
     std::filesystem::remove_all(folder);
     return true;
 }
@@ -335,29 +334,29 @@ bool ray_throughput(const BenchOptions& o) {
 struct Bake {
     BakeResult result;
     double seconds = 0.0;
-    uint64_t peak_bytes = 0;       // ru_maxrss after the bake
-    uint64_t resident_before = 0;  // what the process held before it (the floor of the peak)
-    bool peak_is_per_bake = false;
+    uint64_t peakBytes = 0;       // ru_maxrss after the bake
+    uint64_t residentBefore = 0;  // what the process held before it (the floor of the peak)
+    bool peakIsPerBake = false;
 };
 
-Bake timed_bake(const world::SourceLevel& level, const BakeOptions& options) {
+Bake timedBake(const world::SourceLevel& level, const BakeOptions& options) {
     Bake b;
-    b.resident_before = resident_bytes();
-    b.peak_is_per_bake = reset_peak_memory();
+    b.residentBefore = residentBytes();
+    b.peakIsPerBake = resetPeakMemory();
     const auto start = std::chrono::steady_clock::now();
-    b.result = bake_level(level, options);
-    b.seconds = seconds_since(start);
-    b.peak_bytes = peak_memory_bytes();
+    b.result = bakeLevel(level, options);
+    b.seconds = secondsSince(start);
+    b.peakBytes = peakMemoryBytes();
     return b;
 }
 
-double stage_seconds(const BakeReport& report, const std::string& name) {
+double stageSeconds(const BakeReport& report, const std::string& name) {
     for (const StageReport& s : report.stages)
         if (s.name == name) return s.seconds;
     return 0.0;
 }
 
-RayCounts stage_rays(const BakeReport& report) {
+RayCounts stageRays(const BakeReport& report) {
     RayCounts all;
     for (const StageReport& s : report.stages) all += s.rays;
     return all;
@@ -369,21 +368,22 @@ struct ErrorPoint {
     float reference = 0.0f;  // luminance, lux
 };
 
-bool speed_against_error(const BenchOptions& o) {
+bool speedAgainstError(const BenchOptions& o) {
     std::printf("\n== 2. Speed against error: the agreement test's room (%.0f texels/m) ==\n",
-                double(o.room_texels_per_metre));
-    const world::SourceLevel level = test::agreement_room();
-    const BakeQuality qualities[3] = {BakeQuality::draft, BakeQuality::normal, BakeQuality::high};
+                double(o.roomTexelsPerMetre));
+    const world::SourceLevel level = test::agreementRoom();
+    const BakeQuality qualities[3] = {BakeQuality::kDraft, BakeQuality::kDefault,
+                                      BakeQuality::kHigh};
     std::vector<Bake> bakes;
     std::vector<TexelSample> samples;
     std::vector<ErrorPoint> points;
-    double reference_noise = 0.0, reference_seconds = 0.0;
+    double referenceNoise = 0.0, referenceSeconds = 0.0;
     for (const BakeQuality q : qualities) {
-        bakes.push_back(timed_bake(level, test::test_options(o.room_texels_per_metre, q)));
+        bakes.push_back(timedBake(level, test::testOptions(o.roomTexelsPerMetre, q)));
         const BakeResult& r = bakes.back().result;
         if (!points.empty()) {
-            if (place_texels(r.level).size() != samples.size()) {
-                std::printf("the room compiled differently at %s\n", quality_name(q));
+            if (placeTexels(r.level).size() != samples.size()) {
+                std::printf("the room compiled differently at %s\n", qualityName(q));
                 return false;
             }
             continue;
@@ -391,39 +391,39 @@ bool speed_against_error(const BenchOptions& o) {
         // The reference at the first bake's points, once: two halves with independent seeds;
         // their difference measures its own noise.
         const auto start = std::chrono::steady_clock::now();
-        samples = place_texels(r.level);
+        samples = placeTexels(r.level);
         const EmbreeDevice device;
         const BakeScene scene(device, r.level);
-        const BakeLights lights = make_bake_lights(level.lights, {}, glm::vec3(0.0f));
+        const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
         std::vector<size_t> chosen;
         for (size_t i = 0; i < samples.size(); i += o.stride)
-            if (samples[i].centre_inside) chosen.push_back(i);
+            if (samples[i].centreInside) chosen.push_back(i);
         std::vector<float> first(chosen.size()), second(chosen.size());
         tbb::parallel_for(size_t(0), chosen.size(), [&](size_t k) {
             RayCounts rays;
             const TexelSample& s = samples[chosen[k]];
-            const uint32_t half = std::max(1u, o.reference_spp / 2);
-            first[k] = luminance(reference_irradiance(scene, lights, s.position, s.normal, half,
-                                                      uint32_t(2 * chosen[k]), {}, rays));
-            second[k] = luminance(reference_irradiance(scene, lights, s.position, s.normal, half,
-                                                       uint32_t(2 * chosen[k] + 1), {}, rays));
+            const uint32_t half = std::max(1u, o.referenceSpp / 2);
+            first[k] = luminance(referenceIrradiance(scene, lights, s.position, s.normal, half,
+                                                     uint32_t(2 * chosen[k]), {}, rays));
+            second[k] = luminance(referenceIrradiance(scene, lights, s.position, s.normal, half,
+                                                      uint32_t(2 * chosen[k] + 1), {}, rays));
         });
-        double noise_sq = 0.0;
+        double noiseSq = 0.0;
         for (size_t k = 0; k < chosen.size(); ++k) {
             const float want = 0.5f * (first[k] + second[k]);
             if (want < 1.0f) continue;  // relative error of near-black points is noise
             points.push_back({chosen[k], want});
-            const double half_difference = 0.5 * double(first[k] - second[k]) / double(want);
-            noise_sq += half_difference * half_difference;
+            const double halfDifference = 0.5 * double(first[k] - second[k]) / double(want);
+            noiseSq += halfDifference * halfDifference;
         }
-        reference_noise = std::sqrt(noise_sq / double(std::max<size_t>(1, points.size())));
-        reference_seconds = seconds_since(start);
+        referenceNoise = std::sqrt(noiseSq / double(std::max<size_t>(1, points.size())));
+        referenceSeconds = secondsSince(start);
     }
-    const BakeLights lights = make_bake_lights(level.lights, {}, glm::vec3(0.0f));
+    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
     std::printf(
         "reference  %zu points (every %u-th texel centre, >= 1 lux), %u samples each, "
         "%.1f s; its own RMS noise %.3f%%\n",
-        points.size(), o.stride, o.reference_spp, reference_seconds, 100.0 * reference_noise);
+        points.size(), o.stride, o.referenceSpp, referenceSeconds, 100.0 * referenceNoise);
     std::printf("\n%-8s %7s %7s %9s %9s %11s %8s %10s %11s %10s %10s\n", "quality", "shadow",
                 "paths", "bake s", "lightmap s", "rays", "Mrays/s", "est.noise", "RMS error",
                 "peak MiB", "before MiB");
@@ -435,27 +435,27 @@ bool speed_against_error(const BenchOptions& o) {
                      "rms_relative_error,reference_noise,peak_memory_mib\n");
     for (const Bake& b : bakes) {
         const BakeResult& r = b.result;
-        double sum_sq = 0.0;
+        double sumSq = 0.0;
         for (const ErrorPoint& p : points) {
             const float got =
-                luminance(lightmap_total_irradiance(lights, r.level, r.baked, samples[p.sample]));
+                luminance(lightmapTotalIrradiance(lights, r.level, r.baked, samples[p.sample]));
             const double rel = (double(got) - double(p.reference)) / double(p.reference);
-            sum_sq += rel * rel;
+            sumSq += rel * rel;
         }
-        const double rms = std::sqrt(sum_sq / double(std::max<size_t>(1, points.size())));
-        const uint64_t rays = stage_rays(r.report).total();
+        const double rms = std::sqrt(sumSq / double(std::max<size_t>(1, points.size())));
+        const uint64_t rays = stageRays(r.report).total();
         std::printf("%-8s %7u %7u %9.2f %10.2f %11llu %8.2f %9.2f%% %10.3f%% %10.1f %10.1f\n",
-                    r.report.quality.c_str(), r.report.shadow_samples_per_light,
-                    r.report.indirect_samples_per_texel, b.seconds,
-                    stage_seconds(r.report, "lightmaps"), static_cast<unsigned long long>(rays),
-                    mrays(rays, b.seconds), 100.0 * r.report.lightmap_mean_relative_noise,
-                    100.0 * rms, mib(b.peak_bytes), mib(b.resident_before));
+                    r.report.quality.c_str(), r.report.shadowSamplesPerLight,
+                    r.report.indirectSamplesPerTexel, b.seconds,
+                    stageSeconds(r.report, "lightmaps"), static_cast<unsigned long long>(rays),
+                    mrays(rays, b.seconds), 100.0 * r.report.lightmapMeanRelativeNoise, 100.0 * rms,
+                    mib(b.peakBytes), mib(b.residentBefore));
         if (csv)
             std::fprintf(csv, "%s,%u,%u,%.4f,%.4f,%llu,%.6f,%.6f,%.1f\n", r.report.quality.c_str(),
-                         r.report.shadow_samples_per_light, r.report.indirect_samples_per_texel,
-                         b.seconds, stage_seconds(r.report, "lightmaps"),
-                         static_cast<unsigned long long>(rays), rms, reference_noise,
-                         mib(b.peak_bytes));
+                         r.report.shadowSamplesPerLight, r.report.indirectSamplesPerTexel,
+                         b.seconds, stageSeconds(r.report, "lightmaps"),
+                         static_cast<unsigned long long>(rays), rms, referenceNoise,
+                         mib(b.peakBytes));
     }
     if (csv) {
         std::fclose(csv);
@@ -464,34 +464,34 @@ bool speed_against_error(const BenchOptions& o) {
     std::printf(
         "(the RMS error includes the reference's own noise: sqrt(err^2 - %.3f%%^2) is the "
         "bake's)\n",
-        100.0 * reference_noise);
+        100.0 * referenceNoise);
     std::printf("peak memory: %s; 'before' is what the process already held\n",
-                bakes.front().peak_is_per_bake ? "per bake (high-water mark reset before each)"
-                                               : "process peak so far (reset refused)");
+                bakes.front().peakIsPerBake ? "per bake (high-water mark reset before each)"
+                                            : "process peak so far (reset refused)");
     return true;
 }
 
 void scaling(const BenchOptions& o) {
     std::printf("\n== 3. Scaling: the room at default quality, 1x 2x 4x texels ==\n");
-    const world::SourceLevel level = test::agreement_room();
+    const world::SourceLevel level = test::agreementRoom();
     const float factors[3] = {1.0f, std::sqrt(2.0f), 2.0f};
     std::printf("%-6s %10s %9s %9s %10s %13s %12s %10s %10s\n", "texels", "texels/m", "sampled",
                 "bake s", "lightmap s", "us per texel", "vs linear", "peak MiB", "before MiB");
-    double first_per_texel = 0.0;
+    double firstPerTexel = 0.0;
     for (int i = 0; i < 3; ++i) {
-        const float tpm = o.scaling_texels_per_metre * factors[i];
-        const Bake b = timed_bake(level, test::test_options(tpm, BakeQuality::normal));
+        const float tpm = o.scalingTexelsPerMetre * factors[i];
+        const Bake b = timedBake(level, test::testOptions(tpm, BakeQuality::kDefault));
         const BakeReport& r = b.result.report;
-        const double lightmap = stage_seconds(r, "lightmaps");
-        const double per_texel = lightmap / double(std::max<uint64_t>(1, r.texels_sampled));
-        if (i == 0) first_per_texel = per_texel;
+        const double lightmap = stageSeconds(r, "lightmaps");
+        const double perTexel = lightmap / double(std::max<uint64_t>(1, r.texelsSampled));
+        if (i == 0) firstPerTexel = perTexel;
         std::printf("%-6s %10.2f %9llu %9.2f %10.2f %13.1f %12.3f %10.1f %10.1f\n",
                     i == 0   ? "1x"
                     : i == 1 ? "2x"
                              : "4x",
-                    double(tpm), static_cast<unsigned long long>(r.texels_sampled), b.seconds,
-                    lightmap, per_texel * 1e6, per_texel / first_per_texel, mib(b.peak_bytes),
-                    mib(b.resident_before));
+                    double(tpm), static_cast<unsigned long long>(r.texelsSampled), b.seconds,
+                    lightmap, perTexel * 1e6, perTexel / firstPerTexel, mib(b.peakBytes),
+                    mib(b.residentBefore));
     }
     std::printf(
         "(vs linear: lightmap seconds per sampled texel over the 1x bake's; 1.0 is "
@@ -507,24 +507,23 @@ bool parse(int argc, char** argv, BenchOptions& o) {
         else if (a == "--texels" && has_value)
             o.texels = std::strtoull(argv[++i], nullptr, 10);
         else if (a == "--reference-spp" && has_value)
-            o.reference_spp = uint32_t(std::strtoul(argv[++i], nullptr, 10));
+            o.referenceSpp = uint32_t(std::strtoul(argv[++i], nullptr, 10));
         else if (a == "--stride" && has_value)
             o.stride = std::max(1u, uint32_t(std::strtoul(argv[++i], nullptr, 10)));
         else if (a == "--scaling-texels-per-metre" && has_value)
-            o.scaling_texels_per_metre = std::strtof(argv[++i], nullptr);
+            o.scalingTexelsPerMetre = std::strtof(argv[++i], nullptr);
         else if (a == "--repeats" && has_value)
             o.repeats = std::max(1u, uint32_t(std::strtoul(argv[++i], nullptr, 10)));
         else if (a == "--threads" && has_value)
             o.threads = uint32_t(std::strtoul(argv[++i], nullptr, 10));
         else if (a == "--throughput-only")
-            o.throughput_only = true;
+            o.throughputOnly = true;
         else if (a == "--csv" && has_value)
             o.csv = argv[++i];
         else
             return false;
     }
-    return o.triangles > 0 && o.texels > 0 && o.reference_spp > 1 &&
-           o.scaling_texels_per_metre > 0.0f;
+    return o.triangles > 0 && o.texels > 0 && o.referenceSpp > 1 && o.scalingTexelsPerMetre > 0.0f;
 }
 
 }  // namespace
@@ -544,19 +543,19 @@ int main(int argc, char** argv) {
         o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     std::printf("onelight-bench-bake: %u threads, Embree %s; load average at start: %s\n", threads,
-                RTC_VERSION_STRING, load_average().c_str());
+                RTC_VERSION_STRING, loadAverage().c_str());
     const auto start = std::chrono::steady_clock::now();
     try {
-        if (!ray_throughput(o)) return 1;
-        if (!o.throughput_only) {
-            if (!speed_against_error(o)) return 1;
+        if (!rayThroughput(o)) return 1;
+        if (!o.throughputOnly) {
+            if (!speedAgainstError(o)) return 1;
             scaling(o);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "onelight-bench-bake: %s\n", e.what());
         return 1;
     }
-    std::printf("\ntotal %.1f s; load average at end: %s\n", seconds_since(start),
-                load_average().c_str());
+    std::printf("\ntotal %.1f s; load average at end: %s\n", secondsSince(start),
+                loadAverage().c_str());
     return 0;
 }

@@ -14,57 +14,57 @@ namespace onelight::bake {
 namespace {
 
 TEST(BakeDeterminism, OneAndTwoThreadsGiveIdenticalBytes) {
-    const world::SourceLevel level = test::small_room_with_probes();
+    const world::SourceLevel level = test::smallRoomWithProbes();
     std::vector<uint8_t> one, two;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        const BakeResult r = bake_level(level, test::fast_bake_options());
-        one = package_bytes(r.level, r.baked);
+        const BakeResult r = bakeLevel(level, test::fastBakeOptions());
+        one = packageBytes(r.level, r.baked);
     }
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        const BakeResult r = bake_level(level, test::fast_bake_options());
-        two = package_bytes(r.level, r.baked);
+        const BakeResult r = bakeLevel(level, test::fastBakeOptions());
+        two = packageBytes(r.level, r.baked);
     }
     ASSERT_EQ(one.size(), two.size());
     EXPECT_TRUE(one == two);
 }
 
 TEST(BakeDeterminism, ShardsMergedEqualAWholeBake) {
-    const world::SourceLevel level = test::small_room_with_probes();
-    const BakeResult whole = bake_level(level, test::fast_bake_options());
+    const world::SourceLevel level = test::smallRoomWithProbes();
+    const BakeResult whole = bakeLevel(level, test::fastBakeOptions());
     ASSERT_EQ(whole.baked.probes.size(), 3u);
     // Each probe's E_avg is exactly what the runtime reads from the finished grid there.
     for (const world::EnvironmentProbe& p : whole.baked.probes) {
         const glm::vec3 runtime = glm::max(
             ambientCubeAverage(world::sampleLightGrid(whole.baked.grid, p.position).ambientCube),
             glm::vec3(onelight::glsl::PROBE_MIN_IRRADIANCE));
-        EXPECT_EQ(p.irradiance_average, runtime);
-        EXPECT_GT(p.irradiance_average.x, 0.1f);  // lit room: far above the floor
+        EXPECT_EQ(p.irradianceAverage, runtime);
+        EXPECT_GT(p.irradianceAverage.x, 0.1f);  // lit room: far above the floor
     }
     std::vector<world::BakedLighting> parts;
     world::CompiledLevel compiled;
     for (uint32_t i : {1u, 0u}) {  // any order
-        BakeOptions o = test::fast_bake_options();
-        o.shard_index = i;
-        o.shard_count = 2;
-        BakeResult part = bake_level(level, o);
+        BakeOptions o = test::fastBakeOptions();
+        o.shardIndex = i;
+        o.shardCount = 2;
+        BakeResult part = bakeLevel(level, o);
         // Through the package, as `merge` reads it.
-        const std::vector<uint8_t> bytes = package_bytes(part.level, part.baked);
-        const package::PackageContents read = package::parse_package(bytes, "part");
+        const std::vector<uint8_t> bytes = packageBytes(part.level, part.baked);
+        const package::PackageContents read = package::parsePackage(bytes, "part");
         const package::BakedContents baked =
-            package::decode_baked_sections(read.baked_sections, read.level, "part");
-        EXPECT_EQ(baked.baked.shard_count, 2u);
+            package::decodeBakedSections(read.bakedSections, read.level, "part");
+        EXPECT_EQ(baked.baked.shardCount, 2u);
         parts.push_back(baked.baked);
         compiled = read.level;
     }
-    const world::BakedLighting merged = merge_baked_lighting(compiled, parts);
-    EXPECT_TRUE(package_bytes(compiled, merged) == package_bytes(whole.level, whole.baked));
-    EXPECT_TRUE(test::all_finite_non_negative(merged));
+    const world::BakedLighting merged = mergeBakedLighting(compiled, parts);
+    EXPECT_TRUE(packageBytes(compiled, merged) == packageBytes(whole.level, whole.baked));
+    EXPECT_TRUE(test::allFiniteNonNegative(merged));
 
     parts.pop_back();
     const std::string error =
-        onelight::test::errorMessage([&] { (void)merge_baked_lighting(compiled, parts); });
+        onelight::test::errorMessage([&] { (void)mergeBakedLighting(compiled, parts); });
     EXPECT_NE(error.find("1 parts given"), std::string::npos) << error;
 }
 

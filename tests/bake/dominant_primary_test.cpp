@@ -15,25 +15,25 @@ using world::LightRole;
 // visibility it would win, with visibility the other one does.
 TEST(DominantPrimary, VisibilityDecidesTheDominantLight) {
     world::SourceLevel level;
-    const uint32_t m = test::add_lambert_material(level, 0.5f);
-    test::add_box(level, {0.5f, -2.0f, -1.0f}, {0.6f, 2.0f, 3.0f}, m, false, "wall");
-    level.lights.push_back(test::point_light({1.0f, 0.0f, 1.0f}, 100.0f, LightRole::primary));
-    level.lights.push_back(test::point_light({-3.0f, 0.0f, 1.0f}, 100.0f, LightRole::primary));
+    const uint32_t m = test::addLambertMaterial(level, 0.5f);
+    test::addBox(level, {0.5f, -2.0f, -1.0f}, {0.6f, 2.0f, 3.0f}, m, false, "wall");
+    level.lights.push_back(test::pointLight({1.0f, 0.0f, 1.0f}, 100.0f, LightRole::kPrimary));
+    level.lights.push_back(test::pointLight({-3.0f, 0.0f, 1.0f}, 100.0f, LightRole::kPrimary));
     const EmbreeDevice device;
-    const world::SplitLevel split = world::split_static_dynamic(level);
-    const BakeScene scene(device, split.static_geometry, level.materials);
-    const BakeLights lights = make_bake_lights(level.lights, {}, glm::vec3(0.0f));
+    const world::SplitLevel split = world::splitStaticDynamic(level);
+    const BakeScene scene(device, split.staticGeometry, level.materials);
+    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
     AtomicRayCount rays;
     const world::PrimaryIlluminanceFn shadowed =
-        make_shadowed_primary_illuminance(scene, lights, 16, &rays);
+        makeShadowedPrimaryIlluminance(scene, lights, 16, &rays);
     const world::PrimaryIlluminanceFn unshadowed =
-        world::make_unshadowed_primary_illuminance(level.lights);
+        world::makeUnshadowedPrimaryIlluminance(level.lights);
     double e[2];
     unshadowed(glm::dvec3(0, 0, 1), glm::vec3(0.0f), e);
-    EXPECT_EQ(world::dominant_primary(e), 0u);
+    EXPECT_EQ(world::dominantPrimary(e), 0u);
     shadowed(glm::dvec3(0, 0, 1), glm::vec3(0.0f), e);
     EXPECT_EQ(e[0], 0.0);
-    EXPECT_EQ(world::dominant_primary(e), 1u);
+    EXPECT_EQ(world::dominantPrimary(e), 1u);
     EXPECT_GT(rays.shadow.load(), 0u);
 }
 

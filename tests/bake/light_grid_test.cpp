@@ -12,25 +12,25 @@ using world::LightRole;
 // the primary and hold it as dominant with full visibility.
 TEST(LightGrid, CellsInsideSolidsAreMarked) {
     world::SourceLevel level;
-    const uint32_t m = test::add_lambert_material(level, 0.5f);
-    test::add_box(level, {0.0f, 0.0f, 0.0f}, {4.0f, 4.0f, 4.0f}, m, true, "room");
-    test::add_box(level, {0.0f, 0.0f, 0.0f}, {2.0f, 4.0f, 4.0f}, m, false, "solid");
-    level.lights.push_back(test::point_light({3.0f, 2.0f, 2.0f}, 50.0f, LightRole::primary));
-    BakeOptions o = test::fast_bake_options();
-    o.grid_cell_size = 1.0f;
-    const BakeResult r = bake_level(level, o);
+    const uint32_t m = test::addLambertMaterial(level, 0.5f);
+    test::addBox(level, {0.0f, 0.0f, 0.0f}, {4.0f, 4.0f, 4.0f}, m, true, "room");
+    test::addBox(level, {0.0f, 0.0f, 0.0f}, {2.0f, 4.0f, 4.0f}, m, false, "solid");
+    level.lights.push_back(test::pointLight({3.0f, 2.0f, 2.0f}, 50.0f, LightRole::kPrimary));
+    BakeOptions o = test::fastBakeOptions();
+    o.gridCellSize = 1.0f;
+    const BakeResult r = bakeLevel(level, o);
     const world::LightGrid& g = r.baked.grid;
     ASSERT_EQ(g.dims, glm::uvec3(4, 4, 4));
     for (uint32_t i = 0; i < g.cells.size(); ++i) {
         const uint32_t x = i % 4;
         const world::LightGridCell& c = g.cells[i];
         if (x < 2) {
-            EXPECT_EQ(c.flags, uint32_t(world::light_grid_cell_inside_solid)) << i;
-            EXPECT_EQ(c.dominant_primary, world::kNoIndex);
+            EXPECT_EQ(c.flags, uint32_t(world::kLightGridCellInsideSolid)) << i;
+            EXPECT_EQ(c.dominantPrimary, world::kNoIndex);
         } else {
             EXPECT_EQ(c.flags, 0u) << i;  // no flag
-            EXPECT_EQ(c.dominant_primary, 0u);
-            EXPECT_EQ(c.primary_visibility, 1.0f);
+            EXPECT_EQ(c.dominantPrimary, 0u);
+            EXPECT_EQ(c.primaryVisibility, 1.0f);
         }
     }
 }

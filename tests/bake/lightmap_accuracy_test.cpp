@@ -22,19 +22,19 @@ struct Baked {
 };
 
 Baked bake(const world::SourceLevel& source, const BakeOptions& options) {
-    Baked b{bake_level(source, options),
-            make_bake_lights(source.lights, options.light_sizes,
-                             options.sky_radiance.value_or(source.sky_radiance)),
+    Baked b{bakeLevel(source, options),
+            makeBakeLights(source.lights, options.lightSizes,
+                           options.skyRadiance.value_or(source.skyRadiance)),
             {}};
-    b.samples = place_texels(b.result.level);
+    b.samples = placeTexels(b.result.level);
     return b;
 }
 
-world::SourceLevel plane_level(float half_size) {
+world::SourceLevel planeLevel(float halfSize) {
     world::SourceLevel level;
-    const uint32_t m = test::add_lambert_material(level, 0.5f);
-    test::add_quad(level, {-half_size, -half_size, 0}, {half_size, -half_size, 0},
-                   {half_size, half_size, 0}, {-half_size, half_size, 0}, m, "floor");
+    const uint32_t m = test::addLambertMaterial(level, 0.5f);
+    test::addQuad(level, {-halfSize, -halfSize, 0}, {halfSize, -halfSize, 0},
+                  {halfSize, halfSize, 0}, {-halfSize, halfSize, 0}, m, "floor");
     return level;
 }
 
@@ -44,39 +44,39 @@ world::SourceLevel plane_level(float half_size) {
 // error left is float rounding and the light's finite radius (0.05 m at d = 2 m changes the
 // irradiance of a sphere light by 0 for points that see all of it). Tolerance 1% as issued.
 TEST(LightmapAccuracy, PointLightOverPlaneFollowsInverseSquareCosine) {
-    world::SourceLevel level = plane_level(3.0f);
+    world::SourceLevel level = planeLevel(3.0f);
     const float intensity = 100.0f, height = 2.0f;
-    level.lights.push_back(test::point_light({0, 0, height}, intensity, LightRole::baked));
-    const Baked b = bake(level, test::test_options(4.0f));
+    level.lights.push_back(test::pointLight({0, 0, height}, intensity, LightRole::kBaked));
+    const Baked b = bake(level, test::testOptions(4.0f));
     size_t checked = 0;
     for (const TexelSample& s : b.samples) {
-        if (!s.centre_inside) continue;
-        const glm::vec3 to_light = glm::vec3(0, 0, height) - s.position;
-        const float d2 = glm::dot(to_light, to_light);
-        const float expected = intensity * (to_light.z / std::sqrt(d2)) / d2;
+        if (!s.centreInside) continue;
+        const glm::vec3 toLight = glm::vec3(0, 0, height) - s.position;
+        const float d2 = glm::dot(toLight, toLight);
+        const float expected = intensity * (toLight.z / std::sqrt(d2)) / d2;
         const float got = b.result.baked.texels[s.texel].irradiance.x;
         ASSERT_NEAR(got, expected, 0.01f * expected)
             << "at " << s.position.x << ", " << s.position.y;
         ++checked;
     }
     EXPECT_GT(checked, 300u);
-    EXPECT_TRUE(test::all_finite_non_negative(b.result.baked));
+    EXPECT_TRUE(test::allFiniteNonNegative(b.result.baked));
 }
 
 // A spot pointing straight down from height h with outer cone angle a: its light ends at the
 // circle of radius h tan(a) on the floor. Texels (one texel = 1/16 m) more than 1.5 texels
 // inside the edge are lit, those more than 1.5 texels outside are dark.
 TEST(LightmapAccuracy, SpotConeEdgeFallsWhereTheGltfAnglesPutIt) {
-    world::SourceLevel level = plane_level(3.0f);
+    world::SourceLevel level = planeLevel(3.0f);
     const float height = 2.0f, inner = 0.3f, outer = 0.5f;
     level.lights.push_back(
-        test::spot_light({0, 0, height}, {0, 0, -1}, 500.0f, inner, outer, LightRole::baked));
-    const Baked b = bake(level, test::test_options(16.0f));
+        test::spotLight({0, 0, height}, {0, 0, -1}, 500.0f, inner, outer, LightRole::kBaked));
+    const Baked b = bake(level, test::testOptions(16.0f));
     const float edge = height * std::tan(outer);
     const float margin = 1.5f / 16.0f;
     size_t lit = 0, dark = 0;
     for (const TexelSample& s : b.samples) {
-        if (!s.centre_inside) continue;
+        if (!s.centreInside) continue;
         const float r = glm::length(glm::vec2(s.position));
         const float e = b.result.baked.texels[s.texel].irradiance.x;
         if (r < edge - margin) {
@@ -94,9 +94,9 @@ TEST(LightmapAccuracy, SpotConeEdgeFallsWhereTheGltfAnglesPutIt) {
 // An open plane under a uniform sky of radiance L: E = pi L. Every cosine-distributed ray
 // escapes, so the estimate has zero variance: only float rounding remains (1e-4).
 TEST(LightmapAccuracy, OpenPlaneUnderUniformSkyGetsPiL) {
-    world::SourceLevel level = plane_level(2.0f);
-    BakeOptions options = test::test_options(4.0f);
-    options.sky_radiance = glm::vec3(1000.0f);
+    world::SourceLevel level = planeLevel(2.0f);
+    BakeOptions options = test::testOptions(4.0f);
+    options.skyRadiance = glm::vec3(1000.0f);
     const Baked b = bake(level, options);
     for (const TexelSample& s : b.samples) {
         const float e = b.result.baked.texels[s.texel].irradiance.y;
@@ -114,41 +114,41 @@ TEST(LightmapAccuracy, OpenPlaneUnderUniformSkyGetsPiL) {
 TEST(LightmapAccuracy, IntegratingSphereReachesDirectOverOneMinusAlbedo) {
     world::SourceLevel level;
     const float rho = 0.5f, radius = 1.0f, intensity = 10.0f;
-    const uint32_t m = test::add_lambert_material(level, rho);
-    test::add_inward_sphere(level, {0, 0, 0}, radius, 48, 96, m);
-    level.lights.push_back(test::point_light({0, 0, 0}, intensity, LightRole::primary));
-    const Baked b = bake(level, test::test_options(8.0f, BakeQuality::normal));
+    const uint32_t m = test::addLambertMaterial(level, rho);
+    test::addInwardSphere(level, {0, 0, 0}, radius, 48, 96, m);
+    level.lights.push_back(test::pointLight({0, 0, 0}, intensity, LightRole::kPrimary));
+    const Baked b = bake(level, test::testOptions(8.0f, BakeQuality::kDefault));
     const float expected = intensity / (radius * radius) / (1.0f - rho);
     double sum = 0.0;
     size_t count = 0;
     for (const TexelSample& s : b.samples) {
-        if (!s.centre_inside) continue;
-        sum += double(lightmap_total_irradiance(b.lights, b.result.level, b.result.baked, s).x);
+        if (!s.centreInside) continue;
+        sum += double(lightmapTotalIrradiance(b.lights, b.result.level, b.result.baked, s).x);
         ++count;
     }
     ASSERT_GT(count, 500u);
     const double mean = sum / double(count);
     EXPECT_NEAR(mean, double(expected), 0.02 * double(expected));
-    EXPECT_TRUE(test::all_finite_non_negative(b.result.baked));
+    EXPECT_TRUE(test::allFiniteNonNegative(b.result.baked));
 }
 
 // A square plate between a primary point light and the floor: under the plate's centre the
 // floor sees none of the light (umbra: mask exactly 0); far outside every shadow ray reaches
 // it (mask exactly 255). Deterministic: no tolerance.
 TEST(LightmapAccuracy, ShadowMasksAreZeroInUmbraAndOneInFullLight) {
-    world::SourceLevel level = plane_level(4.0f);
-    const uint32_t m = test::add_lambert_material(level, 0.5f);
-    test::add_quad(level, {-0.5f, -0.5f, 1.0f}, {-0.5f, 0.5f, 1.0f}, {0.5f, 0.5f, 1.0f},
-                   {0.5f, -0.5f, 1.0f}, m, "plate_bottom");  // faces down
-    test::add_quad(level, {-0.5f, -0.5f, 1.0f}, {0.5f, -0.5f, 1.0f}, {0.5f, 0.5f, 1.0f},
-                   {-0.5f, 0.5f, 1.0f}, m, "plate_top");  // faces up
-    level.lights.push_back(test::point_light({0, 0, 2}, 100.0f, LightRole::primary));
-    const Baked b = bake(level, test::test_options(8.0f));
+    world::SourceLevel level = planeLevel(4.0f);
+    const uint32_t m = test::addLambertMaterial(level, 0.5f);
+    test::addQuad(level, {-0.5f, -0.5f, 1.0f}, {-0.5f, 0.5f, 1.0f}, {0.5f, 0.5f, 1.0f},
+                  {0.5f, -0.5f, 1.0f}, m, "plate_bottom");  // faces down
+    test::addQuad(level, {-0.5f, -0.5f, 1.0f}, {0.5f, -0.5f, 1.0f}, {0.5f, 0.5f, 1.0f},
+                  {-0.5f, 0.5f, 1.0f}, m, "plate_top");  // faces up
+    level.lights.push_back(test::pointLight({0, 0, 2}, 100.0f, LightRole::kPrimary));
+    const Baked b = bake(level, test::testOptions(8.0f));
     size_t umbra = 0, lit = 0;
     for (const TexelSample& s : b.samples) {
-        if (!s.centre_inside || std::abs(s.position.z) > 1e-3f) continue;  // floor only
+        if (!s.centreInside || std::abs(s.position.z) > 1e-3f) continue;  // floor only
         const float r = std::max(std::abs(s.position.x), std::abs(s.position.y));
-        const uint8_t mask = b.result.baked.shadow_mask[s.texel];
+        const uint8_t mask = b.result.baked.shadowMask[s.texel];
         if (r < 0.6f) {  // the umbra reaches |x| < 0.95 on the floor
             ASSERT_EQ(mask, 0) << s.position.x << ", " << s.position.y;
             ++umbra;
@@ -166,29 +166,29 @@ TEST(LightmapAccuracy, ShadowMasksAreZeroInUmbraAndOneInFullLight) {
 // it; the right room's mean irradiance must stay below 0.1% of the left room's.
 TEST(LightmapAccuracy, OneCentimetreWallLeaksLessThanATenthOfAPercent) {
     world::SourceLevel level;
-    const uint32_t m = test::add_lambert_material(level, 0.7f);
-    test::add_box(level, {-2.0f, -1.0f, 0.0f}, {2.01f, 1.0f, 2.0f}, m, true, "shell");
-    test::add_box(level, {0.0f, -1.05f, -0.05f}, {0.01f, 1.05f, 2.05f}, m, false, "wall");
-    level.lights.push_back(test::point_light({-1.0f, 0.0f, 1.5f}, 100.0f, LightRole::primary));
-    const Baked b = bake(level, test::test_options(8.0f));
+    const uint32_t m = test::addLambertMaterial(level, 0.7f);
+    test::addBox(level, {-2.0f, -1.0f, 0.0f}, {2.01f, 1.0f, 2.0f}, m, true, "shell");
+    test::addBox(level, {0.0f, -1.05f, -0.05f}, {0.01f, 1.05f, 2.05f}, m, false, "wall");
+    level.lights.push_back(test::pointLight({-1.0f, 0.0f, 1.5f}, 100.0f, LightRole::kPrimary));
+    const Baked b = bake(level, test::testOptions(8.0f));
     double lit = 0.0, dark = 0.0;
-    size_t lit_count = 0, dark_count = 0;
+    size_t litCount = 0, darkCount = 0;
     for (const TexelSample& s : b.samples) {
-        const float e = lightmap_total_irradiance(b.lights, b.result.level, b.result.baked, s).x;
+        const float e = lightmapTotalIrradiance(b.lights, b.result.level, b.result.baked, s).x;
         if (s.position.x < 0.0f) {
             lit += double(e);
-            ++lit_count;
+            ++litCount;
         } else if (s.position.x > 0.01f) {
             dark += double(e);
-            ++dark_count;
+            ++darkCount;
         }
     }
-    ASSERT_GT(lit_count, 100u);
-    ASSERT_GT(dark_count, 100u);
-    const double ratio = (dark / double(dark_count)) / (lit / double(lit_count));
-    EXPECT_LT(ratio, 1e-3) << "dark " << dark / double(dark_count) << " lit "
-                           << lit / double(lit_count);
-    EXPECT_TRUE(test::all_finite_non_negative(b.result.baked));
+    ASSERT_GT(litCount, 100u);
+    ASSERT_GT(darkCount, 100u);
+    const double ratio = (dark / double(darkCount)) / (lit / double(litCount));
+    EXPECT_LT(ratio, 1e-3) << "dark " << dark / double(darkCount) << " lit "
+                           << lit / double(litCount);
+    EXPECT_TRUE(test::allFiniteNonNegative(b.result.baked));
 }
 
 // Lightmap irradiance at texel centres against the reference path tracer's irradiance at the
@@ -198,25 +198,25 @@ TEST(LightmapAccuracy, OneCentimetreWallLeaksLessThanATenthOfAPercent) {
 // Issue tolerance: 2% RMS.
 TEST(LightmapAccuracy, LightmapAgreesWithReferencePathTracer) {
     constexpr uint32_t kReferenceSamples = 32768;
-    const world::SourceLevel level = test::agreement_room();
-    BakeOptions options = test::test_options(6.0f, BakeQuality::normal);
+    const world::SourceLevel level = test::agreementRoom();
+    BakeOptions options = test::testOptions(6.0f, BakeQuality::kDefault);
     if (const char* n = std::getenv("ONELIGHT_PATHS"))
-        options.indirect_samples = uint32_t(std::atoi(n));
+        options.indirectSamples = uint32_t(std::atoi(n));
     const Baked b = bake(level, options);
-    std::printf("estimated noise %.4f\n", b.result.report.lightmap_mean_relative_noise);
+    std::printf("estimated noise %.4f\n", b.result.report.lightmapMeanRelativeNoise);
     const EmbreeDevice device;
     const BakeScene scene(device, b.result.level);
-    double sum_sq = 0.0;
+    double sumSq = 0.0;
     size_t count = 0;
     RayCounts rays;
     for (size_t i = 0; i < b.samples.size(); i += 23) {
         const TexelSample& s = b.samples[i];
-        if (!s.centre_inside) continue;
+        if (!s.centreInside) continue;
         const float got =
-            luminance(lightmap_total_irradiance(b.lights, b.result.level, b.result.baked, s));
+            luminance(lightmapTotalIrradiance(b.lights, b.result.level, b.result.baked, s));
         const float want =
-            luminance(reference_irradiance(scene, b.lights, s.position, s.normal, kReferenceSamples,
-                                           static_cast<uint32_t>(i), {}, rays));
+            luminance(referenceIrradiance(scene, b.lights, s.position, s.normal, kReferenceSamples,
+                                          static_cast<uint32_t>(i), {}, rays));
         if (want < 1.0f) continue;  // relative error of near-black points is noise
         const double rel = (double(got) - double(want)) / double(want);
         if (std::getenv("ONELIGHT_VERBOSE"))
@@ -224,11 +224,11 @@ TEST(LightmapAccuracy, LightmapAgreesWithReferencePathTracer) {
                         double(s.position.x), double(s.position.y), double(s.position.z),
                         double(s.normal.x), double(s.normal.y), double(s.normal.z), double(got),
                         double(want), rel);
-        sum_sq += rel * rel;
+        sumSq += rel * rel;
         ++count;
     }
     ASSERT_GT(count, 30u);
-    const double rms = std::sqrt(sum_sq / double(count));
+    const double rms = std::sqrt(sumSq / double(count));
     std::printf("lightmap vs reference: %zu points, RMS relative error %.4f\n", count, rms);
     EXPECT_LT(rms, 0.02);
 }

@@ -24,37 +24,36 @@ constexpr float kTexelsPerMetre = 8.0f;
 
 /// The floor: an L of three coplanar quads (three meshes), plus a wall of two coplanar pieces
 /// at its back and a block standing across the first border.
-world::SourceLevel seam_level() {
+world::SourceLevel seamLevel() {
     world::SourceLevel level;
-    const uint32_t floor = test::add_lambert_material(level, 0.6f);
-    const uint32_t block = test::add_lambert_material(level, 0.4f);
-    test::add_quad(level, {-2, 0, 0}, {0, 0, 0}, {0, 2, 0}, {-2, 2, 0}, floor, "floor_a");
-    test::add_quad(level, {0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, floor, "floor_b");
-    test::add_quad(level, {-2, -2, 0}, {0, -2, 0}, {0, 0, 0}, {-2, 0, 0}, floor, "floor_c");
+    const uint32_t floor = test::addLambertMaterial(level, 0.6f);
+    const uint32_t block = test::addLambertMaterial(level, 0.4f);
+    test::addQuad(level, {-2, 0, 0}, {0, 0, 0}, {0, 2, 0}, {-2, 2, 0}, floor, "floor_a");
+    test::addQuad(level, {0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, floor, "floor_b");
+    test::addQuad(level, {-2, -2, 0}, {0, -2, 0}, {0, 0, 0}, {-2, 0, 0}, floor, "floor_c");
     // Wall at y = 2 facing -y, in two pieces split at x = 0.
-    test::add_quad(level, {-2, 2, 0}, {0, 2, 0}, {0, 2, 1.5f}, {-2, 2, 1.5f}, floor, "wall_a");
-    test::add_quad(level, {0, 2, 0}, {2, 2, 0}, {2, 2, 1.5f}, {0, 2, 1.5f}, floor, "wall_b");
-    test::add_box(level, {-0.25f, 0.9f, 0.0f}, {0.25f, 1.3f, 0.4f}, block, false, "block");
-    level.lights.push_back(test::point_light({-1.2f, 1.0f, 1.6f}, 40.0f, LightRole::primary));
-    level.lights.push_back(test::point_light({1.3f, 0.6f, 1.4f}, 30.0f, LightRole::primary));
-    level.lights.push_back(test::spot_light({0.5f, -1.5f, 1.8f}, {-0.3f, 0.5f, -1.0f}, 60.0f, 0.3f,
-                                            0.8f, LightRole::baked));
+    test::addQuad(level, {-2, 2, 0}, {0, 2, 0}, {0, 2, 1.5f}, {-2, 2, 1.5f}, floor, "wall_a");
+    test::addQuad(level, {0, 2, 0}, {2, 2, 0}, {2, 2, 1.5f}, {0, 2, 1.5f}, floor, "wall_b");
+    test::addBox(level, {-0.25f, 0.9f, 0.0f}, {0.25f, 1.3f, 0.4f}, block, false, "block");
+    level.lights.push_back(test::pointLight({-1.2f, 1.0f, 1.6f}, 40.0f, LightRole::kPrimary));
+    level.lights.push_back(test::pointLight({1.3f, 0.6f, 1.4f}, 30.0f, LightRole::kPrimary));
+    level.lights.push_back(test::spotLight({0.5f, -1.5f, 1.8f}, {-0.3f, 0.5f, -1.0f}, 60.0f, 0.3f,
+                                           0.8f, LightRole::kBaked));
     return level;
 }
 
 /// A triangle of the compiled level with the surface it belongs to.
 struct LevelTriangle {
     uint32_t surface = 0;
-    uint32_t first_index = 0;  // into level.indices
+    uint32_t firstIndex = 0;  // into level.indices
 };
 
-std::vector<LevelTriangle> level_triangles(const world::CompiledLevel& level) {
+std::vector<LevelTriangle> levelTriangles(const world::CompiledLevel& level) {
     std::vector<LevelTriangle> out;
     for (uint32_t s = 0; s < level.surfaces.size(); ++s) {
         const world::Surface& surface = level.surfaces[s];
         if (surface.chart == world::kNoIndex) continue;
-        for (uint32_t i = surface.first_index; i < surface.first_index + surface.index_count;
-             i += 3)
+        for (uint32_t i = surface.firstIndex; i < surface.firstIndex + surface.indexCount; i += 3)
             out.push_back({s, i});
     }
     return out;
@@ -62,11 +61,11 @@ std::vector<LevelTriangle> level_triangles(const world::CompiledLevel& level) {
 
 /// Barycentrics of p in the triangle when p lies on it (within `tolerance` metres of its plane
 /// and of its edges); Ericson 2005, "Real-Time Collision Detection", sec. 3.4.
-std::optional<glm::dvec3> barycentrics_on(const world::CompiledLevel& level, const LevelTriangle& t,
-                                          const glm::dvec3& p, double tolerance) {
-    const glm::dvec3 a(level.vertices[level.indices[t.first_index]].position);
-    const glm::dvec3 b(level.vertices[level.indices[t.first_index + 1]].position);
-    const glm::dvec3 c(level.vertices[level.indices[t.first_index + 2]].position);
+std::optional<glm::dvec3> barycentricsOn(const world::CompiledLevel& level, const LevelTriangle& t,
+                                         const glm::dvec3& p, double tolerance) {
+    const glm::dvec3 a(level.vertices[level.indices[t.firstIndex]].position);
+    const glm::dvec3 b(level.vertices[level.indices[t.firstIndex + 1]].position);
+    const glm::dvec3 c(level.vertices[level.indices[t.firstIndex + 2]].position);
     const glm::dvec3 n = glm::cross(b - a, c - a);
     const double area2 = glm::length(n);
     if (area2 <= 0.0) return std::nullopt;
@@ -81,10 +80,10 @@ std::optional<glm::dvec3> barycentrics_on(const world::CompiledLevel& level, con
     return glm::dvec3(u, v, w);
 }
 
-glm::vec3 triangle_normal(const world::CompiledLevel& level, const LevelTriangle& t) {
-    const glm::vec3 a = level.vertices[level.indices[t.first_index]].position;
-    const glm::vec3 b = level.vertices[level.indices[t.first_index + 1]].position;
-    const glm::vec3 c = level.vertices[level.indices[t.first_index + 2]].position;
+glm::vec3 triangleNormal(const world::CompiledLevel& level, const LevelTriangle& t) {
+    const glm::vec3 a = level.vertices[level.indices[t.firstIndex]].position;
+    const glm::vec3 b = level.vertices[level.indices[t.firstIndex + 1]].position;
+    const glm::vec3 c = level.vertices[level.indices[t.firstIndex + 2]].position;
     return glm::normalize(glm::cross(b - a, c - a));
 }
 
@@ -92,8 +91,8 @@ glm::vec3 triangle_normal(const world::CompiledLevel& level, const LevelTriangle
 /// and the shadow mask read with bilinear filtering (texel centres at (x + 0.5) / width, as a
 /// GPU samples) at the point's uv1, the own primary evaluated per pixel.
 struct Reconstructed {
-    float total = 0.0f;              // luminance, lux
-    float texel_neighbour_step = 0;  // largest luminance difference between the 4 texels read
+    float total = 0.0f;            // luminance, lux
+    float texelNeighbourStep = 0;  // largest luminance difference between the 4 texels read
 };
 
 Reconstructed reconstruct(const world::CompiledLevel& level, const world::BakedLighting& baked,
@@ -103,20 +102,20 @@ Reconstructed reconstruct(const world::CompiledLevel& level, const world::BakedL
     const world::Atlas& atlas = level.atlases[surface.atlas];
     glm::dvec2 uv(0.0);
     for (int k = 0; k < 3; ++k)
-        uv += barycentrics[k] * glm::dvec2(level.vertices[level.indices[t.first_index + k]].uv1);
+        uv += barycentrics[k] * glm::dvec2(level.vertices[level.indices[t.firstIndex + k]].uv1);
     const glm::dvec2 texel = uv * glm::dvec2(atlas.width, atlas.height) - 0.5;
     const int x0 = static_cast<int>(std::floor(texel.x)),
               y0 = static_cast<int>(std::floor(texel.y));
     const float fx = static_cast<float>(texel.x - x0), fy = static_cast<float>(texel.y - y0);
-    const uint64_t base = world::atlas_texel_offset(level, surface.atlas);
-    const glm::vec3 normal = triangle_normal(level, t);
+    const uint64_t base = world::atlasTexelOffset(level, surface.atlas);
+    const glm::vec3 normal = triangleNormal(level, t);
     const BakeLight* own = nullptr;
     for (const BakeLight& l : lights.lights)
-        if (l.level_index == surface.primary_light) own = &l;
-    glm::vec3 own_direct(0.0f);
+        if (l.levelIndex == surface.primaryLight) own = &l;
+    glm::vec3 ownDirect(0.0f);
     if (own) {
-        const LightIncidence incidence = light_incidence(*own, position);
-        own_direct = incidence.irradiance * std::max(0.0f, glm::dot(normal, incidence.direction));
+        const LightIncidence incidence = lightIncidence(*own, position);
+        ownDirect = incidence.irradiance * std::max(0.0f, glm::dot(normal, incidence.direction));
     }
     glm::vec3 secondary(0.0f);
     float mask = 0.0f, lowest = INFINITY, highest = -INFINITY;
@@ -126,50 +125,49 @@ Reconstructed reconstruct(const world::CompiledLevel& level, const world::BakedL
             const int y = std::clamp(y0 + dy, 0, int(atlas.height) - 1);
             const uint64_t i = base + uint64_t(y) * atlas.width + uint64_t(x);
             const float w = (dx ? fx : 1.0f - fx) * (dy ? fy : 1.0f - fy);
-            const float m = static_cast<float>(baked.shadow_mask[i]) / 255.0f;
+            const float m = static_cast<float>(baked.shadowMask[i]) / 255.0f;
             secondary += w * baked.texels[i].irradiance;
             mask += w * m;
-            const float texel_total = luminance(baked.texels[i].irradiance + own_direct * m);
-            lowest = std::min(lowest, texel_total);
-            highest = std::max(highest, texel_total);
+            const float texelTotal = luminance(baked.texels[i].irradiance + ownDirect * m);
+            lowest = std::min(lowest, texelTotal);
+            highest = std::max(highest, texelTotal);
         }
     }
-    return {luminance(secondary + own_direct * mask), highest - lowest};
+    return {luminance(secondary + ownDirect * mask), highest - lowest};
 }
 
 /// A point on a border between two charts, reconstructed from each side.
 struct SeamPoint {
     glm::vec3 position{0.0f};
-    Reconstructed side_a, side_b;
+    Reconstructed sideA, sideB;
 };
 
 /// Points along every triangle edge that lie on a coplanar triangle of another chart.
-std::vector<SeamPoint> seam_points(const world::CompiledLevel& level,
-                                   const world::BakedLighting& baked, const BakeLights& lights) {
-    const std::vector<LevelTriangle> triangles = level_triangles(level);
+std::vector<SeamPoint> seamPoints(const world::CompiledLevel& level,
+                                  const world::BakedLighting& baked, const BakeLights& lights) {
+    const std::vector<LevelTriangle> triangles = levelTriangles(level);
     constexpr int kPointsPerEdge = 24;
     constexpr double kOnTriangle = 1e-5;  // metres
     std::vector<SeamPoint> out;
     for (const LevelTriangle& t : triangles) {
         const uint32_t chart = level.surfaces[t.surface].chart;
-        const glm::vec3 normal = triangle_normal(level, t);
+        const glm::vec3 normal = triangleNormal(level, t);
         for (int e = 0; e < 3; ++e) {
-            const glm::dvec3 p0(level.vertices[level.indices[t.first_index + e]].position);
-            const glm::dvec3 p1(
-                level.vertices[level.indices[t.first_index + (e + 1) % 3]].position);
+            const glm::dvec3 p0(level.vertices[level.indices[t.firstIndex + e]].position);
+            const glm::dvec3 p1(level.vertices[level.indices[t.firstIndex + (e + 1) % 3]].position);
             for (int k = 0; k < kPointsPerEdge; ++k) {
                 const double s = (k + 0.5) / kPointsPerEdge;
                 const glm::dvec3 p = glm::mix(p0, p1, s);
                 for (const LevelTriangle& o : triangles) {
                     if (level.surfaces[o.surface].chart == chart) continue;
-                    if (glm::dot(triangle_normal(level, o), normal) < 0.999f) continue;
-                    const std::optional<glm::dvec3> bo = barycentrics_on(level, o, p, kOnTriangle);
+                    if (glm::dot(triangleNormal(level, o), normal) < 0.999f) continue;
+                    const std::optional<glm::dvec3> bo = barycentricsOn(level, o, p, kOnTriangle);
                     if (!bo) continue;
-                    const std::optional<glm::dvec3> bt = barycentrics_on(level, t, p, kOnTriangle);
+                    const std::optional<glm::dvec3> bt = barycentricsOn(level, t, p, kOnTriangle);
                     SeamPoint point;
                     point.position = glm::vec3(p);
-                    point.side_a = reconstruct(level, baked, lights, t, *bt, point.position);
-                    point.side_b = reconstruct(level, baked, lights, o, *bo, point.position);
+                    point.sideA = reconstruct(level, baked, lights, t, *bt, point.position);
+                    point.sideB = reconstruct(level, baked, lights, o, *bo, point.position);
                     out.push_back(point);
                     break;
                 }
@@ -180,7 +178,7 @@ std::vector<SeamPoint> seam_points(const world::CompiledLevel& level,
 }
 
 /// The floor under the block is never seen (the block's base covers it).
-bool under_block(const glm::vec3& p) {
+bool underBlock(const glm::vec3& p) {
     return p.z < 1e-3f && std::abs(p.x) <= 0.25f && p.y >= 0.9f && p.y <= 1.3f;
 }
 
@@ -202,39 +200,38 @@ constexpr float kSmoothStep = 0.01f;
 constexpr float kStepOverTexelStep = 0.5f;
 
 TEST(LightmapSeams, ChartBordersShowNoVisibleStep) {
-    const world::SourceLevel source = seam_level();
-    BakeOptions options = test::test_options(kTexelsPerMetre, BakeQuality::normal);
-    options.indirect_samples = 4096;
-    options.shadow_samples = 64;
-    const BakeResult r = bake_level(source, options);
-    const BakeLights lights = make_bake_lights(source.lights, options.light_sizes,
-                                               options.sky_radiance.value_or(source.sky_radiance));
-    const std::vector<SeamPoint> points = seam_points(r.level, r.baked, lights);
+    const world::SourceLevel source = seamLevel();
+    BakeOptions options = test::testOptions(kTexelsPerMetre, BakeQuality::kDefault);
+    options.indirectSamples = 4096;
+    options.shadowSamples = 64;
+    const BakeResult r = bakeLevel(source, options);
+    const BakeLights lights = makeBakeLights(source.lights, options.lightSizes,
+                                             options.skyRadiance.value_or(source.skyRadiance));
+    const std::vector<SeamPoint> points = seamPoints(r.level, r.baked, lights);
     const bool verbose = std::getenv("ONELIGHT_VERBOSE") != nullptr;
-    double sum_sq = 0.0, worst_smooth = 0.0, worst_ratio = 0.0;
+    double sumSq = 0.0, worstSmooth = 0.0, worstRatio = 0.0;
     size_t smooth = 0, shadowed = 0;
     for (const SeamPoint& p : points) {
-        if (under_block(p.position)) continue;
-        const float a = p.side_a.total, b = p.side_b.total;
+        if (underBlock(p.position)) continue;
+        const float a = p.sideA.total, b = p.sideB.total;
         const float mean = 0.5f * (a + b);
         ASSERT_GT(mean, 1.0f) << "every seam point is lit";
         const float step = std::abs(a - b);
-        const float grid_step =
-            std::max(p.side_a.texel_neighbour_step, p.side_b.texel_neighbour_step);
+        const float gridStep = std::max(p.sideA.texelNeighbourStep, p.sideB.texelNeighbourStep);
         if (verbose)
             std::printf("%6.3f %6.3f %6.3f  a %8.3f b %8.3f step %.4f (%.2f%%) texels %.4f\n",
                         double(p.position.x), double(p.position.y), double(p.position.z), double(a),
-                        double(b), double(step), 100.0 * double(step / mean), double(grid_step));
-        worst_ratio = std::max(worst_ratio, double(step / grid_step));
-        EXPECT_LE(step, kStepOverTexelStep * grid_step)
+                        double(b), double(step), 100.0 * double(step / mean), double(gridStep));
+        worstRatio = std::max(worstRatio, double(step / gridStep));
+        EXPECT_LE(step, kStepOverTexelStep * gridStep)
             << "at " << p.position.x << ", " << p.position.y << ", " << p.position.z << ": " << a
             << " vs " << b;
-        if (grid_step < kSmoothNeighbourFraction * mean) {
+        if (gridStep < kSmoothNeighbourFraction * mean) {
             const double rel = step / mean;
             EXPECT_LT(rel, kSmoothStep) << "at " << p.position.x << ", " << p.position.y << ", "
                                         << p.position.z << ": " << a << " vs " << b;
-            sum_sq += rel * rel;
-            worst_smooth = std::max(worst_smooth, rel);
+            sumSq += rel * rel;
+            worstSmooth = std::max(worstSmooth, rel);
             ++smooth;
         } else {
             ++shadowed;
@@ -244,8 +241,8 @@ TEST(LightmapSeams, ChartBordersShowNoVisibleStep) {
         "seams: %zu points where the light is smooth (RMS step %.3f%%, worst %.3f%%), "
         "%zu near shadow edges; worst step / texel step %.2f; estimated texel noise "
         "%.2f%%\n",
-        smooth, 100.0 * std::sqrt(sum_sq / double(std::max<size_t>(smooth, 1))),
-        100.0 * worst_smooth, shadowed, worst_ratio, 100.0 * r.report.lightmap_mean_relative_noise);
+        smooth, 100.0 * std::sqrt(sumSq / double(std::max<size_t>(smooth, 1))), 100.0 * worstSmooth,
+        shadowed, worstRatio, 100.0 * r.report.lightmapMeanRelativeNoise);
     EXPECT_GT(smooth, 100u);
     EXPECT_GT(shadowed, 5u);
 }

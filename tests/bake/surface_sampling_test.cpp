@@ -20,7 +20,7 @@ namespace {
 world::Material material(float albedo, float f0, float gloss) {
     world::Material m;
     m.albedo = glm::vec3(albedo);
-    m.specular_color = glm::vec3(f0);
+    m.specularColor = glm::vec3(f0);
     m.gloss = gloss;
     return m;
 }
@@ -36,7 +36,7 @@ struct Moments {
 // Mean and variance of the green weight over `n` draws from one seeded stream.
 template <class Draw>
 Moments moments(uint32_t n, Draw draw) {
-    Rng rng{seed_from(7, n)};
+    Rng rng{seedFrom(7, n)};
     double sum = 0.0, sum2 = 0.0;
     for (uint32_t i = 0; i < n; ++i) {
         const double w = double(draw(rng));
@@ -63,7 +63,7 @@ TEST(SurfaceSampling, MeanWeightIsTheDirectionalAlbedo) {
                     const world::Material m = material(albedo, f0, gloss);
                     const glm::vec3 v = viewAt(mu);
                     const Moments w = moments(
-                        kDraws, [&](Rng& rng) { return sample_surface(m, n, v, rng).weight.y; });
+                        kDraws, [&](Rng& rng) { return sampleSurface(m, n, v, rng).weight.y; });
                     const double expected =
                         double(albedo) +
                         (f0 > 0.0f ? lab::specularAlbedo(ggx, mu, gloss).albedo(f0) : 0.0);
@@ -92,14 +92,14 @@ TEST(SurfaceSampling, DensityIntegratesToTheProbabilityAboveTheHorizon) {
                     const float s = std::sqrt(1.0f - c * c);
                     const float phi = 2.0f * kPi * (float(j) + 0.5f) / kPhi;
                     integral +=
-                        double(surface_pdf(m, n, v, {s * std::cos(phi), s * std::sin(phi), c}));
+                        double(surfacePdf(m, n, v, {s * std::cos(phi), s * std::sin(phi), c}));
                 }
             integral *= (1.0 / kCos) * (2.0 * M_PI / kPhi);
-            Rng rng{seed_from(3)};
+            Rng rng{seedFrom(3)};
             uint32_t above = 0;
             constexpr uint32_t kDraws = 200000;
             for (uint32_t i = 0; i < kDraws; ++i)
-                above += glm::dot(n, sample_surface(m, n, v, rng).direction) > 1e-6f;
+                above += glm::dot(n, sampleSurface(m, n, v, rng).direction) > 1e-6f;
             const double fraction = double(above) / kDraws;
             EXPECT_NEAR(integral, fraction,
                         5.0 * std::sqrt(fraction * (1 - fraction) / kDraws) + 2e-3)
@@ -114,14 +114,14 @@ TEST(SurfaceSampling, MixtureTamesGlossyVariance) {
     const world::Material m = material(0.2f, 0.04f, 0.8f);
     const glm::vec3 v = viewAt(0.7f);
     const Moments mixture =
-        moments(200000, [&](Rng& rng) { return sample_surface(m, n, v, rng).weight.y; });
+        moments(200000, [&](Rng& rng) { return sampleSurface(m, n, v, rng).weight.y; });
     const Moments cosine = moments(200000, [&](Rng& rng) {
-        const glm::vec3 l = sample_cosine_hemisphere({rng.next(), rng.next()});
+        const glm::vec3 l = sampleCosineHemisphere({rng.next(), rng.next()});
         const glsl::BrdfDots d = glsl::brdfDots(n, v, l);
         return m.albedo.y + (l.z > 1e-6f
                                  ? kPi / l.z *
                                        glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
-                                                          m.specular_color, m.gloss, d)
+                                                          m.specularColor, m.gloss, d)
                                            .y
                                  : 0.0f);
     });

@@ -14,7 +14,7 @@ namespace {
 
 world::MeshInstance quad(const char* name, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
     world::MeshInstance m;
-    m.node_name = m.mesh_name = name;
+    m.nodeName = m.meshName = name;
     m.material = 0;
     glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
     for (glm::vec3 p : {a, b, c, d}) {
@@ -30,17 +30,17 @@ world::MeshInstance quad(const char* name, glm::vec3 a, glm::vec3 b, glm::vec3 c
 // Floor y = 0 over x, z in [-10, 10]; a wall in the plane z = -5 facing +z, 3 m high.
 world::CompiledLevel floorAndWall() {
     world::SourceLevel source;
-    source.source_path = "memory";
+    source.sourcePath = "memory";
     source.materials.push_back(world::Material{});
     source.instances.push_back(
         quad("floor", {-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}));
     source.instances.push_back(quad("wall", {-10, 0, -5}, {10, 0, -5}, {10, 3, -5}, {-10, 3, -5}));
-    return world::compile_level(source, world::CompileOptions{}).level;
+    return world::compileLevel(source, world::CompileOptions{}).level;
 }
 
 struct Sim {
     world::CompiledLevel level = floorAndWall();
-    world::BspView bsp = world::bsp_view(level);
+    world::BspView bsp = world::bspView(level);
     ecs::Registry registry;
     ecs::Entity player = registry.create();
     Tuning tuning;

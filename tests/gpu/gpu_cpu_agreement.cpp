@@ -170,7 +170,7 @@ void runOnGpu(AgreementRun& run) {
         vk::storageBufferBinding(0, VK_SHADER_STAGE_COMPUTE_BIT),
         vk::storageBufferBinding(1, VK_SHADER_STAGE_COMPUTE_BIT)};
     vk::ComputePipeline pipeline;
-    vk::createComputePipeline(ctx, pipeline, brdf_pieces_comp_spv, bindings, sizeof(uint32_t));
+    vk::createComputePipeline(ctx, pipeline, kBrdfPiecesCompSpirv, bindings, sizeof(uint32_t));
 
     const vk::Buffer* const setBuffers[] = {&input, &output};
     vk::DescriptorSet set;

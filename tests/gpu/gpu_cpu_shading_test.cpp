@@ -38,19 +38,19 @@ glm::vec3 cpuRadiance(const world::CompiledLevel& level, const render::Camera& c
     const glm::vec3 v = glm::normalize(camera.position - p);
 
     const world::Material& m = level.materials.at(0);
-    const glm::vec3 base(m.base_color);
+    const glm::vec3 base(m.baseColor);
     const glm::vec3 albedo = glsl::albedo_fromMetallic(base, m.metallic);
-    const glm::vec3 f0 = m.material_class == world::MaterialClass::dielectric
-                             ? glm::vec3(m.specular_color.x)
+    const glm::vec3 f0 = m.materialClass == world::MaterialClass::kDielectric
+                             ? glm::vec3(m.specularColor.x)
                              : glsl::specularColor_fromMetallic(base, m.metallic);
     const float gloss = glsl::gloss_fromRoughness(m.roughness);
     const world::Light& l = level.lights.at(0);
     const glsl::LightSample s = glsl::evaluatePunctualLight(
         int(l.type), l.color * l.intensity, 1.0f, l.range, l.position, glm::normalize(l.direction),
-        std::cos(l.inner_cone), std::cos(l.outer_cone), p);
+        std::cos(l.innerCone), std::cos(l.outerCone), p);
     const glsl::BrdfDots d = glsl::brdfDots(n, v, s.l);
     if (glm::dot(n, s.l) <= 0.0f || d.NoL <= 0.0f) return glm::vec3(0.0f);
-    return glsl::surfaceReflectance(int(m.material_class), albedo, f0, gloss, d) * s.illuminance;
+    return glsl::surfaceReflectance(int(m.materialClass), albedo, f0, gloss, d) * s.illuminance;
 }
 
 struct Comparison {

@@ -17,16 +17,16 @@ using namespace onelight::bake;
 
 int main(int argc, char** argv) {
     BakeOptions options;
-    if (argc > 1 && !parse_quality(argv[1], options.quality)) {
+    if (argc > 1 && !parseQuality(argv[1], options.quality)) {
         std::fprintf(stderr, "usage: onelight-bench-probes [draft|default|high]\n");
         return 2;
     }
-    const ProbeCaptureSettings settings = probe_settings(options);
-    const world::SourceLevel source = test::agreement_room();
+    const ProbeCaptureSettings settings = probeSettings(options);
+    const world::SourceLevel source = test::agreementRoom();
     const EmbreeDevice device;
-    const world::SplitLevel split = world::split_static_dynamic(source);
-    const BakeScene scene(device, split.static_geometry, source.materials);
-    const BakeLights lights = make_bake_lights(source.lights, LightSizes{}, glm::vec3(0.0f));
+    const world::SplitLevel split = world::splitStaticDynamic(source);
+    const BakeScene scene(device, split.staticGeometry, source.materials);
+    const BakeLights lights = makeBakeLights(source.lights, LightSizes{}, glm::vec3(0.0f));
     const glm::vec3 position(0.0f, 0.0f, 1.5f);
 
     using clock = std::chrono::steady_clock;
@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
     const size_t threads =
         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
     std::printf("quality %s: face %u, %u paths/texel, %u mips, %zu threads\n",
-                quality_name(options.quality), settings.faceSize, settings.samplesPerTexel,
-                probe.mip_count, threads);
+                qualityName(options.quality), settings.faceSize, settings.samplesPerTexel,
+                probe.mipCount, threads);
     std::printf("capture   %.3f s (%.2f Mrays, %.2f Mrays/s)\n", capture,
                 double(rays.total()) * 1e-6, double(rays.total()) * 1e-6 / capture);
     std::printf("prefilter %.3f s (normalise, GGX mips, RGB9E5 pack)\n", prefilter);

@@ -8,10 +8,10 @@ namespace {
 
 // A probe authored inside the solid block is baked but warned about, by name.
 TEST(BakeProbes, AProbeInsideSolidGeometryIsWarnedAbout) {
-    world::SourceLevel level = test::small_room_with_probes();
-    EXPECT_TRUE(bake_level(level, test::fast_bake_options()).report.warnings.empty());
+    world::SourceLevel level = test::smallRoomWithProbes();
+    EXPECT_TRUE(bakeLevel(level, test::fastBakeOptions()).report.warnings.empty());
     level.entities[1].position = glm::vec3(0.0f, 0.0f, 0.25f);  // inside the block
-    const BakeResult r = bake_level(level, test::fast_bake_options());
+    const BakeResult r = bakeLevel(level, test::fastBakeOptions());
     ASSERT_EQ(r.report.warnings.size(), 1u);
     EXPECT_NE(r.report.warnings[0].find("probe 'probe1'"), std::string::npos)
         << r.report.warnings[0];

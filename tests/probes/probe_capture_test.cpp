@@ -1,5 +1,5 @@
 // Probe capture against the reference path tracer: a closed box room lit by one point light,
-// captured through trace_radiance; the cube's solid-angle-weighted mean radiance (whole sphere
+// captured through traceRadiance; the cube's solid-angle-weighted mean radiance (whole sphere
 // and per face) against independent uniform-sphere paths of the same routine; determinism.
 #include <gtest/gtest.h>
 
@@ -23,19 +23,19 @@ namespace {
 // A closed 4 x 3 x 2.5 m room (albedo 0.6) with one primary point light of 60 cd.
 world::SourceLevel boxRoom() {
     world::SourceLevel level;
-    const uint32_t walls = test::add_lambert_material(level, 0.6f);
-    test::add_box(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
+    const uint32_t walls = test::addLambertMaterial(level, 0.6f);
+    test::addBox(level, {-2.0f, -1.5f, 0.0f}, {2.0f, 1.5f, 2.5f}, walls, true, "room");
     level.lights.push_back(
-        test::point_light({-1.0f, 0.5f, 2.0f}, 60.0f, world::LightRole::primary));
+        test::pointLight({-1.0f, 0.5f, 2.0f}, 60.0f, world::LightRole::kPrimary));
     return level;
 }
 
 struct Room {
     world::SourceLevel source = boxRoom();
     EmbreeDevice device;
-    world::SplitLevel split = world::split_static_dynamic(source);
-    BakeScene scene{device, split.static_geometry, source.materials};
-    BakeLights lights = make_bake_lights(source.lights, LightSizes{}, glm::vec3(0.0f));
+    world::SplitLevel split = world::splitStaticDynamic(source);
+    BakeScene scene{device, split.staticGeometry, source.materials};
+    BakeLights lights = makeBakeLights(source.lights, LightSizes{}, glm::vec3(0.0f));
 };
 
 const glm::vec3 kCapturePoint(0.3f, -0.2f, 1.2f);
@@ -54,8 +54,8 @@ TEST(ProbeCapture, BoxRoomMatchesThePathTracerWithinItsNoise) {
 
     // The cube's mean radiance per face and over the sphere (solid-angle weighted), and the
     // sum of squared weights for its noise.
-    double face_mean[6] = {}, face_weight2[6] = {}, sphere = 0.0, sphere_weight2 = 0.0;
-    const double face_angle = 4.0 * M_PI / 6.0;
+    double faceMean[6] = {}, faceWeight2[6] = {}, sphere = 0.0, sphereWeight2 = 0.0;
+    const double faceAngle = 4.0 * M_PI / 6.0;
     for (int f = 0; f < 6; ++f)
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) {
@@ -63,10 +63,10 @@ TEST(ProbeCapture, BoxRoomMatchesThePathTracerWithinItsNoise) {
                 ASSERT_TRUE(std::isfinite(l.x) && std::isfinite(l.y) && std::isfinite(l.z));
                 ASSERT_GE(std::min(l.x, std::min(l.y, l.z)), 0.0f);
                 const double w = texelSolidAngle(x, y, size);
-                face_mean[f] += w / face_angle * double(luminance(l));
-                face_weight2[f] += (w / face_angle) * (w / face_angle);
+                faceMean[f] += w / faceAngle * double(luminance(l));
+                faceWeight2[f] += (w / faceAngle) * (w / faceAngle);
                 sphere += w / (4.0 * M_PI) * double(luminance(l));
-                sphere_weight2 += (w / (4.0 * M_PI)) * (w / (4.0 * M_PI));
+                sphereWeight2 += (w / (4.0 * M_PI)) * (w / (4.0 * M_PI));
             }
 
     // The reference: uniform sphere directions (pdf 1 / (4 pi)) from the same point, binned by
@@ -81,11 +81,11 @@ TEST(ProbeCapture, BoxRoomMatchesThePathTracerWithinItsNoise) {
     std::vector<Sums> chunks(kChunks);
     tbb::parallel_for(0u, kChunks, [&](uint32_t c) {
         Sums& out = chunks[c];
-        Rng rng{seed_from(77, c, 0, 99)};
+        Rng rng{seedFrom(77, c, 0, 99)};
         for (uint32_t i = 0; i < kPathsPerChunk; ++i) {
-            const glm::vec3 w = sample_uniform_sphere({rng.next(), rng.next()});
-            const double l = luminance(trace_radiance(room.scene, room.lights, settings.transport,
-                                                      kCapturePoint, w, rng, out.rays));
+            const glm::vec3 w = sampleUniformSphere({rng.next(), rng.next()});
+            const double l = luminance(traceRadiance(room.scene, room.lights, settings.transport,
+                                                     kCapturePoint, w, rng, out.rays));
             const int f = glsl::cubeFace(w);
             out.sum[f] += l;
             out.sum2[f] += l * l;
@@ -105,23 +105,23 @@ TEST(ProbeCapture, BoxRoomMatchesThePathTracerWithinItsNoise) {
     // Tolerance: 4 standard errors of the difference. The reference's from its sample
     // variance; the cube's from the same per-path variance over samplesPerTexel paths per
     // texel, weighted by the texels' solid angles.
-    const auto check = [&](const char* what, double cube_mean, double weight2, double s, double s2,
+    const auto check = [&](const char* what, double cubeMean, double weight2, double s, double s2,
                            uint32_t n) {
         const double mean = s / n;
         const double var = std::max(0.0, s2 / n - mean * mean);
-        const double se_ref = std::sqrt(var / n);
-        const double se_cube = std::sqrt(var * weight2 / settings.samplesPerTexel);
-        const double tolerance = 4.0 * std::sqrt(se_ref * se_ref + se_cube * se_cube);
+        const double seRef = std::sqrt(var / n);
+        const double seCube = std::sqrt(var * weight2 / settings.samplesPerTexel);
+        const double tolerance = 4.0 * std::sqrt(seRef * seRef + seCube * seCube);
         std::printf("%-7s cube %.4f reference %.4f cd/m^2, difference %+.2f%%, tolerance %.2f%%\n",
-                    what, cube_mean, mean, 100.0 * (cube_mean - mean) / mean,
+                    what, cubeMean, mean, 100.0 * (cubeMean - mean) / mean,
                     100.0 * tolerance / mean);
-        EXPECT_NEAR(cube_mean, mean, tolerance) << what;
+        EXPECT_NEAR(cubeMean, mean, tolerance) << what;
         EXPECT_LT(tolerance / mean, 0.04) << what << ": the test is too noisy to mean anything";
     };
-    check("sphere", sphere, sphere_weight2, all, all2, kPaths);
+    check("sphere", sphere, sphereWeight2, all, all2, kPaths);
     const char* names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
     for (int f = 0; f < 6; ++f)
-        check(names[f], face_mean[f], face_weight2[f], sum[f], sum2[f], count[f]);
+        check(names[f], faceMean[f], faceWeight2[f], sum[f], sum2[f], count[f]);
 }
 
 TEST(ProbeCapture, IsDeterministicAndPacksToTheSameBytes) {
@@ -137,9 +137,9 @@ TEST(ProbeCapture, IsDeterministicAndPacksToTheSameBytes) {
             captureProbe(room.scene, room.lights, kCapturePoint, 3, settings, nullptr, rays);
         const world::EnvironmentProbe probe =
             finishProbe(cube, ProbePlacement{kCapturePoint}, average, settings.prefilter);
-        EXPECT_EQ(probe.texels.size(), world::probe_texel_count(16));
-        EXPECT_EQ(probe.mip_count, 5u);
-        out = package::encode_probe_section({probe}).bytes;
+        EXPECT_EQ(probe.texels.size(), world::probeTexelCount(16));
+        EXPECT_EQ(probe.mipCount, 5u);
+        out = package::encodeProbeSection({probe}).bytes;
     }
     EXPECT_EQ(bytes[0], bytes[1]);
     // The whole stage gives probe 3 of a list the same bytes, and so does a shard's range.
@@ -149,11 +149,11 @@ TEST(ProbeCapture, IsDeterministicAndPacksToTheSameBytes) {
     const std::vector<world::EnvironmentProbe> probes =
         bakeProbes(room.scene, room.lights, placements, averages, settings, 0, 4, false, rays);
     ASSERT_EQ(probes.size(), 4u);
-    EXPECT_EQ(package::encode_probe_section({probes[3]}).bytes, bytes[0]);
+    EXPECT_EQ(package::encodeProbeSection({probes[3]}).bytes, bytes[0]);
     const std::vector<world::EnvironmentProbe> tail =
         bakeProbes(room.scene, room.lights, placements, averages, settings, 3, 4, false, rays);
     ASSERT_EQ(tail.size(), 1u);
-    EXPECT_EQ(package::encode_probe_section(tail).bytes, bytes[0]);
+    EXPECT_EQ(package::encodeProbeSection(tail).bytes, bytes[0]);
 }
 
 TEST(ProbeCapture, StoredMipZeroIsTheCapturedRadianceOverEAvg) {
@@ -167,7 +167,7 @@ TEST(ProbeCapture, StoredMipZeroIsTheCapturedRadianceOverEAvg) {
     const glm::vec3 average(0.5f, 2.0f, 8.0f);
     const world::EnvironmentProbe probe =
         finishProbe(cube, ProbePlacement{kCapturePoint}, average, settings.prefilter);
-    EXPECT_EQ(probe.irradiance_average, average);
+    EXPECT_EQ(probe.irradianceAverage, average);
     const Cubemap stored = unpackProbeTexels(probe);
     for (size_t i = 0; i < cube.mips[0].texels.size(); ++i) {
         const glm::vec3 back = glsl::probeDenormalize(stored.mips[0].texels[i], average);

@@ -30,9 +30,9 @@ void face(world::SourceLevel& level, int axis, float at, glm::vec2 lo, glm::vec2
     const glm::vec3 a = corner(lo.x, lo.y), b = corner(hi.x, lo.y), c = corner(hi.x, hi.y),
                     d = corner(lo.x, hi.y);
     if (sign > 0.0f)
-        test::add_quad(level, a, b, c, d, 0, "face");
+        test::addQuad(level, a, b, c, d, 0, "face");
     else
-        test::add_quad(level, d, c, b, a, 0, "face");
+        test::addQuad(level, d, c, b, a, 0, "face");
 }
 
 // The doorway of the two-room levels: y in [1, 3], z in [0, 2].
@@ -64,7 +64,7 @@ void room(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, bool doorMinusX
 // between them (x in (4, 5)). With a door, a tunnel through that wall joins their doorways.
 world::SourceLevel twoRooms(bool door) {
     world::SourceLevel level;
-    test::add_lambert_material(level, 0.5f);
+    test::addLambertMaterial(level, 0.5f);
     room(level, {0.0f, 0.0f, 0.0f}, {4.0f, 4.0f, 3.0f}, false, door);
     room(level, {5.0f, 0.0f, 0.0f}, {9.0f, 4.0f, 3.0f}, door, false);
     if (door) {
@@ -77,14 +77,14 @@ world::SourceLevel twoRooms(bool door) {
 }
 
 // The static world of `source` in Embree, and a compiled level with its bounds, specular
-// materials (feature_probes) and cameras: what placeProbes reads.
+// materials (kFeatureProbes) and cameras: what placeProbes reads.
 struct Built {
     explicit Built(const world::SourceLevel& source)
-        : split(world::split_static_dynamic(source)),
-          scene(device, split.static_geometry, source.materials) {
-        level.settings.bounds_min = scene.bounds_min();
-        level.settings.bounds_max = scene.bounds_max();
-        level.features.flags = world::feature_probes;
+        : split(world::splitStaticDynamic(source)),
+          scene(device, split.staticGeometry, source.materials) {
+        level.settings.boundsMin = scene.boundsMin();
+        level.settings.boundsMax = scene.boundsMax();
+        level.features.flags = world::kFeatureProbes;
         level.cameras = source.cameras;
     }
     EmbreeDevice device;
@@ -155,8 +155,8 @@ TEST(ProbePlacement, AThinPartitionSplitsARoomUnlessItHasADoor) {
     // occlusion of the segment between them tells the halves apart.
     for (bool door : {false, true}) {
         world::SourceLevel source;
-        const uint32_t m = test::add_lambert_material(source, 0.5f);
-        test::add_box(source, glm::vec3(0.0f), {8.0f, 4.0f, 3.0f}, m, true, "room");
+        const uint32_t m = test::addLambertMaterial(source, 0.5f);
+        test::addBox(source, glm::vec3(0.0f), {8.0f, 4.0f, 3.0f}, m, true, "room");
         for (float sign : {-1.0f, 1.0f}) {
             if (!door) {
                 face(source, 0, 4.0f, glm::vec2(0.0f), {4.0f, 3.0f}, sign);
@@ -175,9 +175,9 @@ TEST(ProbePlacement, AThinPartitionSplitsARoomUnlessItHasADoor) {
 
 TEST(ProbePlacement, NoProbeInsideASolidBlock) {
     world::SourceLevel source;
-    const uint32_t m = test::add_lambert_material(source, 0.5f);
-    test::add_box(source, glm::vec3(0.0f), glm::vec3(8.0f), m, true, "room");
-    test::add_box(source, glm::vec3(2.0f), glm::vec3(6.0f), m, false, "block");
+    const uint32_t m = test::addLambertMaterial(source, 0.5f);
+    test::addBox(source, glm::vec3(0.0f), glm::vec3(8.0f), m, true, "room");
+    test::addBox(source, glm::vec3(2.0f), glm::vec3(6.0f), m, false, "block");
     const Built built(source);
     ProbePlacementStats stats;
     const std::vector<ProbePlacement> probes = place(built, 2.0f, &stats);
@@ -188,8 +188,8 @@ TEST(ProbePlacement, NoProbeInsideASolidBlock) {
 
 TEST(ProbePlacement, HalvingTheSpacingGivesEightTimesTheProbes) {
     world::SourceLevel source;
-    test::add_box(source, glm::vec3(0.0f), glm::vec3(8.0f),
-                  test::add_lambert_material(source, 0.5f), true, "room");
+    test::addBox(source, glm::vec3(0.0f), glm::vec3(8.0f), test::addLambertMaterial(source, 0.5f),
+                 true, "room");
     const Built built(source);
     ProbePlacementStats coarse, fine;
     EXPECT_EQ(place(built, 4.0f, &coarse).size(), 8u);
@@ -201,17 +201,17 @@ TEST(ProbePlacement, HalvingTheSpacingGivesEightTimesTheProbes) {
 
 TEST(ProbePlacement, TheLevelsSpacingWinsOverTheBakeDefault) {
     world::SourceLevel source;
-    test::add_box(source, glm::vec3(0.0f), glm::vec3(8.0f),
-                  test::add_lambert_material(source, 0.5f), true, "room");
+    test::addBox(source, glm::vec3(0.0f), glm::vec3(8.0f), test::addLambertMaterial(source, 0.5f),
+                 true, "room");
     Built built(source);
-    built.level.settings.probe_spacing = 2.0f;
+    built.level.settings.probeSpacing = 2.0f;
     EXPECT_EQ(place(built, 1.0f).size(), 64u);
 }
 
 TEST(ProbePlacement, TheLatticeIsCappedByGrowingTheSpacing) {
     world::SourceLevel source;
-    test::add_box(source, glm::vec3(0.0f), glm::vec3(8.0f),
-                  test::add_lambert_material(source, 0.5f), true, "room");
+    test::addBox(source, glm::vec3(0.0f), glm::vec3(8.0f), test::addLambertMaterial(source, 0.5f),
+                 true, "room");
     const Built built(source);
     ProbePlacementStats stats;
     const std::vector<ProbePlacement> probes = place(built, 0.1f, &stats);  // 80^3 requested
@@ -225,7 +225,7 @@ TEST(ProbePlacement, TheVoidOutsideClosedRoomsGetsNoProbe) {
     // An L of three closed rooms with 1 m walls; the bounds' corner [5,9] x [5,9] is outside
     // them all, where rays escape or hit the outside of walls.
     world::SourceLevel source;
-    test::add_lambert_material(source, 0.5f);
+    test::addLambertMaterial(source, 0.5f);
     room(source, {0.0f, 0.0f, 0.0f}, {4.0f, 4.0f, 3.0f});
     room(source, {5.0f, 0.0f, 0.0f}, {9.0f, 4.0f, 3.0f});
     room(source, {0.0f, 5.0f, 0.0f}, {4.0f, 9.0f, 3.0f});
@@ -239,9 +239,9 @@ TEST(ProbePlacement, TheVoidOutsideClosedRoomsGetsNoProbe) {
 
 TEST(ProbePlacement, CamerasAddAProbeWhenFarFromOthersAndNotInSolid) {
     world::SourceLevel source;
-    const uint32_t m = test::add_lambert_material(source, 0.5f);
-    test::add_box(source, glm::vec3(0.0f), glm::vec3(8.0f), m, true, "room");
-    test::add_box(source, {3.5f, 3.5f, 0.2f}, {4.5f, 4.5f, 1.0f}, m, false, "block");
+    const uint32_t m = test::addLambertMaterial(source, 0.5f);
+    test::addBox(source, glm::vec3(0.0f), glm::vec3(8.0f), m, true, "room");
+    test::addBox(source, {3.5f, 3.5f, 0.2f}, {4.5f, 4.5f, 1.0f}, m, false, "block");
     world::Camera camera;
     for (glm::vec3 at : {glm::vec3(4.0f, 4.0f, 4.0f),     // 3.5 m from the lattice: kept
                          glm::vec3(2.5f, 2.0f, 2.0f),     // 0.5 m from (2, 2, 2): dropped
@@ -263,12 +263,12 @@ TEST(ProbePlacement, CamerasAddAProbeWhenFarFromOthersAndNotInSolid) {
 // that the bake can warn; one in the open is not.
 TEST(ProbePlacement, AuthoredProbesInsideSolidAreFlagged) {
     world::SourceLevel source;
-    const uint32_t m = test::add_lambert_material(source, 0.5f);
-    test::add_box(source, glm::vec3(0.0f), glm::vec3(8.0f), m, true, "room");
-    test::add_box(source, glm::vec3(2.0f), glm::vec3(4.0f), m, false, "block");
+    const uint32_t m = test::addLambertMaterial(source, 0.5f);
+    test::addBox(source, glm::vec3(0.0f), glm::vec3(8.0f), m, true, "room");
+    test::addBox(source, glm::vec3(2.0f), glm::vec3(4.0f), m, false, "block");
     Built built(source);
     world::Entity e;
-    e.flags = world::entity_probe;
+    e.flags = world::kEntityProbe;
     e.position = glm::vec3(3.0f);  // in the block
     built.level.entities.push_back(e);
     e.position = glm::vec3(6.0f);  // in the open
@@ -282,15 +282,15 @@ TEST(ProbePlacement, AuthoredProbesInsideSolidAreFlagged) {
 TEST(ProbePlacement, AuthoredProbesWin) {
     Built built(twoRooms(true));
     world::Entity e;
-    e.flags = world::entity_dynamic;
+    e.flags = world::kEntityDynamic;
     built.level.entities.push_back(e);
-    e.flags = world::entity_probe;
+    e.flags = world::kEntityProbe;
     e.position = glm::vec3(2.0f, 2.0f, 1.5f);
-    e.probe_box_min = glm::vec3(0.0f);
-    e.probe_box_max = glm::vec3(4.0f, 4.0f, 3.0f);
+    e.probeBoxMin = glm::vec3(0.0f);
+    e.probeBoxMax = glm::vec3(4.0f, 4.0f, 3.0f);
     built.level.entities.push_back(e);
     e.position = glm::vec3(7.0f, 2.0f, 1.5f);
-    e.probe_box_min = e.probe_box_max = glm::vec3(0.0f);  // empty: no box
+    e.probeBoxMin = e.probeBoxMax = glm::vec3(0.0f);  // empty: no box
     built.level.entities.push_back(e);
     const std::vector<ProbePlacement> probes = place(built, 1.0f);
     ASSERT_EQ(probes.size(), 2u);
@@ -311,8 +311,8 @@ TEST(ProbePlacement, NoneWithoutSpecularMaterials) {
 // it above the floor (they would otherwise lie in the floor, half their view black).
 TEST(ProbePlacement, AFlatLevelsProbesFloatAboveIt) {
     world::SourceLevel source;
-    test::add_quad(source, {-4.0f, 0.0f, -4.0f}, {-4.0f, 0.0f, 4.0f}, {4.0f, 0.0f, 4.0f},
-                   {4.0f, 0.0f, -4.0f}, test::add_lambert_material(source, 0.5f), "floor");
+    test::addQuad(source, {-4.0f, 0.0f, -4.0f}, {-4.0f, 0.0f, 4.0f}, {4.0f, 0.0f, 4.0f},
+                  {4.0f, 0.0f, -4.0f}, test::addLambertMaterial(source, 0.5f), "floor");
     const Built built(source);
     const std::vector<ProbePlacement> probes = place(built, 4.0f);
     ASSERT_EQ(probes.size(), 4u);  // 2 x 1 x 2
@@ -324,9 +324,9 @@ TEST(ProbePlacement, AnEmptyLevelGetsOneProbeAtTheCentre) {
     EmbreeDevice device;
     const BakeScene scene(device, world::StaticGeometry{}, {});
     world::CompiledLevel level;
-    level.settings.bounds_min = glm::vec3(-2.0f);
-    level.settings.bounds_max = glm::vec3(4.0f);
-    level.features.flags = world::feature_probes;
+    level.settings.boundsMin = glm::vec3(-2.0f);
+    level.settings.boundsMax = glm::vec3(4.0f);
+    level.features.flags = world::kFeatureProbes;
     world::Camera camera;
     camera.position = glm::vec3(3.0f);
     level.cameras.push_back(camera);

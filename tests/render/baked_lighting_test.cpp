@@ -109,8 +109,7 @@ LightmapSample sampleLightmap(const assets::LoadedLevel& loaded, glm::vec3 p, gl
     LightmapSample out;
     for (uint32_t si = 0; si < level.surfaces.size() && !out.found; ++si) {
         const world::Surface& surface = level.surfaces[si];
-        for (uint32_t i = surface.first_index; i < surface.first_index + surface.index_count;
-             i += 3) {
+        for (uint32_t i = surface.firstIndex; i < surface.firstIndex + surface.indexCount; i += 3) {
             const world::Vertex& a = level.vertices[level.indices[i]];
             const world::Vertex& b = level.vertices[level.indices[i + 1]];
             const world::Vertex& c = level.vertices[level.indices[i + 2]];
@@ -124,7 +123,7 @@ LightmapSample sampleLightmap(const assets::LoadedLevel& loaded, glm::vec3 p, gl
             if (wa < -1e-5f || wb < -1e-5f || wc < -1e-5f) continue;
             const glm::vec2 uv = wa * a.uv1 + wb * b.uv1 + wc * c.uv1;
             const world::Atlas& atlas = level.atlases.at(surface.atlas);
-            const uint64_t first = world::atlas_texel_offset(level, surface.atlas);
+            const uint64_t first = world::atlasTexelOffset(level, surface.atlas);
             const glm::vec2 t = uv * glm::vec2(atlas.width, atlas.height) - 0.5f;
             const glm::vec2 f = glm::floor(t), frac = t - f;
             for (auto& k : out.coefficients) k = glm::vec4(0.0f);
@@ -137,9 +136,9 @@ LightmapSample sampleLightmap(const assets::LoadedLevel& loaded, glm::vec3 p, gl
                     const float w = (dx ? frac.x : 1.0f - frac.x) * (dy ? frac.y : 1.0f - frac.y);
                     const uint64_t texel = first + uint64_t(y) * atlas.width + uint64_t(x);
                     for (int ch = 0; ch < 3; ++ch)
-                        out.coefficients[ch] += w * world::linear_irradiance_coefficients(
-                                                        loaded.baked.texels[texel], ch);
-                    const float m = float(loaded.baked.shadow_mask[texel]) / 255.0f;
+                        out.coefficients[ch] +=
+                            w * world::linearIrradianceCoefficients(loaded.baked.texels[texel], ch);
+                    const float m = float(loaded.baked.shadowMask[texel]) / 255.0f;
                     out.mask += w * m;
                     lowest = std::min(lowest, m);
                     highest = std::max(highest, m);
@@ -159,15 +158,15 @@ glm::vec3 lambertRadiance(const world::CompiledLevel& level, uint32_t material, 
                           float shadow, glm::vec3 secondary, glm::vec3 p, glm::vec3 n,
                           glm::vec3 eye) {
     const world::Material& m = level.materials.at(material);
-    EXPECT_EQ(m.material_class, world::MaterialClass::lambert);
-    const glm::vec3 albedo = glsl::albedo_fromMetallic(glm::vec3(m.base_color), m.metallic);
+    EXPECT_EQ(m.materialClass, world::MaterialClass::kLambert);
+    const glm::vec3 albedo = glsl::albedo_fromMetallic(glm::vec3(m.baseColor), m.metallic);
     const glm::vec3 v = glm::normalize(eye - p);
     glm::vec3 radiance(0.0f);
     if (primary != world::kNoIndex) {
         const world::Light& l = level.lights.at(primary);
         const glsl::LightSample s = glsl::evaluatePunctualLight(
             int(l.type), l.color * l.intensity, 1.0f, l.range, l.position,
-            glm::normalize(l.direction), std::cos(l.inner_cone), std::cos(l.outer_cone), p);
+            glm::normalize(l.direction), std::cos(l.innerCone), std::cos(l.outerCone), p);
         const glsl::BrdfDots d = glsl::brdfDots(n, v, s.l);
         if (glm::dot(n, s.l) > 0.0f && d.NoL > 0.0f)
             radiance +=
@@ -315,10 +314,10 @@ TEST(RenderBaked, FloorPixelsMatchPackageEvaluation) {
             ASSERT_TRUE(s.found) << "no floor triangle at " << p.x << " " << p.z;
             const world::Surface& surface = level.level.surfaces[s.surface];
             cpu[y * kWidth + x] =
-                lambertRadiance(level.level, surface.material, surface.primary_light, s.mask,
+                lambertRadiance(level.level, surface.material, surface.primaryLight, s.mask,
                                 lightmapIrradiance(s, kUp), p, kUp, camera.position);
             const glm::vec3 unshadowed =
-                lambertRadiance(level.level, surface.material, surface.primary_light, 1.0f,
+                lambertRadiance(level.level, surface.material, surface.primaryLight, 1.0f,
                                 glm::vec3(0.0f), p, kUp, camera.position);
             penumbra[y * kWidth + x] = s.maskSpread / 256.0f * glm::max(unshadowed.x, unshadowed.y);
             for (int c = 0; c < 3; ++c) peak = std::max(peak, double(cpu[y * kWidth + x][c]));
@@ -385,7 +384,7 @@ TEST(RenderBaked, SecondaryFollowsLightmap) {
         ASSERT_TRUE(s.found);
         const world::Surface& surface = level.level.surfaces[s.surface];
         const glm::vec3 primaryOnly =
-            lambertRadiance(level.level, surface.material, surface.primary_light, s.mask,
+            lambertRadiance(level.level, surface.material, surface.primaryLight, s.mask,
                             glm::vec3(0.0f), p, kUp, camera.position);
         secondary[i] = lambertRadiance(level.level, surface.material, world::kNoIndex, 0.0f,
                                        lightmapIrradiance(s, kUp), p, kUp, camera.position);
@@ -415,7 +414,7 @@ namespace {
 TEST(RenderBaked, FarUmbraReadsBakedMaskNearUsesShadowMap) {
     const assets::LoadedLevel level = bake("baked_umbra");
     assets::LoadedLevel cleared = level;
-    std::fill(cleared.baked.shadow_mask.begin(), cleared.baked.shadow_mask.end(), uint8_t(255));
+    std::fill(cleared.baked.shadowMask.begin(), cleared.baked.shadowMask.end(), uint8_t(255));
     const render::Camera camera = testCamera();
     render::FrameInputs inputs;
     inputs.camera = camera;
@@ -427,7 +426,7 @@ TEST(RenderBaked, FarUmbraReadsBakedMaskNearUsesShadowMap) {
     ASSERT_TRUE(s.found);
     ASSERT_LT(s.mask, 0.01f) << "expected the primary's baked umbra";
     const world::Surface& surface = level.level.surfaces[s.surface];
-    ASSERT_EQ(surface.primary_light, 0u);
+    ASSERT_EQ(surface.primaryLight, 0u);
     const glm::vec3 secondary = lightmapIrradiance(s, kUp);
     const glm::vec3 dark = lambertRadiance(level.level, surface.material, 0, s.mask, secondary, p,
                                            kUp, camera.position);
@@ -463,7 +462,7 @@ struct GridAt {
 
 GridAt gridAt(const world::LightGrid& g, glm::vec3 p) {
     const glm::vec3 f =
-        glm::clamp((p - g.origin) / g.cell_size - 0.5f, glm::vec3(0.0f), glm::vec3(g.dims) - 1.0f);
+        glm::clamp((p - g.origin) / g.cellSize - 0.5f, glm::vec3(0.0f), glm::vec3(g.dims) - 1.0f);
     const glm::ivec3 lo(glm::floor(f));
     const glm::vec3 t = f - glm::vec3(lo);
     GridAt out;
@@ -479,12 +478,12 @@ GridAt gridAt(const world::LightGrid& g, glm::vec3 p) {
                     size_t(g.dims.x) * (size_t(c.y) + size_t(g.dims.y) * size_t(c.z))];
         if (w <= 0.0f || (cell.flags & 1u)) continue;
         total += w;
-        out.up += w * cell.ambient_cube[2];
-        if (first) out.dominant = cell.dominant_primary;
+        out.up += w * cell.ambientCube[2];
+        if (first) out.dominant = cell.dominantPrimary;
         first = false;
-        if (cell.dominant_primary != out.dominant) out.oneDominant = false;
+        if (cell.dominantPrimary != out.dominant) out.oneDominant = false;
         dominantWeight += w;
-        out.visibility += w * cell.primary_visibility;
+        out.visibility += w * cell.primaryVisibility;
     }
     out.up /= total;
     out.visibility /= dominantWeight;
@@ -498,7 +497,7 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
     const assets::LoadedLevel level = bake("baked_dynamic");
     uint32_t entity = world::kNoIndex;
     for (uint32_t e = 0; e < level.level.entities.size(); ++e)
-        if (level.level.entities[e].flags & world::entity_dynamic) entity = e;
+        if (level.level.entities[e].flags & world::kEntityDynamic) entity = e;
     ASSERT_NE(entity, world::kNoIndex);
     const render::Camera camera = testCamera();
     const glm::vec3 places[2] = {{4.3f, 0.5f, -3.6f}, {-3.4f, 0.5f, 1.6f}};
@@ -512,7 +511,7 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
         render::createRenderer(renderer, ctx, level, options(0.01f, 0.005f));
         std::vector<uint32_t> candidates;
         for (uint32_t l = 0; l < level.level.lights.size(); ++l)
-            if (level.level.lights[l].role == world::LightRole::primary) candidates.push_back(l);
+            if (level.level.lights[l].role == world::LightRole::kPrimary) candidates.push_back(l);
         for (int i = 0; i < 2; ++i) {
             // The game's pick, by the grid's score, handed over with the transform.
             world::DynamicPrimary pick;
@@ -540,11 +539,11 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
             ASSERT_TRUE(g.oneDominant);
             EXPECT_EQ(pick.primary, g.dominant);
             EXPECT_EQ(render::drawnPrimary(renderer, entity), pick.primary);
-            const uint32_t material = level.level.dynamic_meshes.at(0).material;
+            const uint32_t material = level.level.dynamicMeshes.at(0).material;
             expected[i] = lambertRadiance(level.level, material, g.dominant, g.visibility, g.up, p,
                                           kUp, camera.position);
-            secondary[i] = lambertRadiance(level.level, material, world::kNoIndex, 0.0f, g.up, p, kUp,
-                                           camera.position);
+            secondary[i] = lambertRadiance(level.level, material, world::kNoIndex, 0.0f, g.up, p,
+                                           kUp, camera.position);
             const size_t at = (size_t(px.y) * kWidth + px.x) * 4;
             rendered[i] = {frame.linearRgba[at], frame.linearRgba[at + 1],
                            frame.linearRgba[at + 2]};
@@ -591,7 +590,7 @@ TEST(RenderBaked, FloorUnderAUniformSkyIsAlbedoTimesSky) {
     const assets::LoadedLevel level =
         test::bakeAndLoad(gltf, test::outputDir() + "/sky_floor.olpak");
     ASSERT_TRUE(level.hasBakedLighting);
-    EXPECT_EQ(level.level.settings.sky_radiance, scene.sky);
+    EXPECT_EQ(level.level.settings.skyRadiance, scene.sky);
 
     render::FrameInputs inputs;
     inputs.camera = render::cameraFromYawPitch({0.0f, 2.0f, 6.0f}, 0.0f, -10.0f);
@@ -636,15 +635,15 @@ TEST(RenderBaked, GlossyFloorReadsTheProbeMipOfItsGlossTimesItsIrradiance) {
         {glsl::INV_PI, 0.0f, 0.0f}, {0.0f, glsl::INV_PI, 0.0f}, {0.0f, 0.0f, glsl::INV_PI}};
     world::EnvironmentProbe coloured, grey;
     coloured.position = glm::vec3(0.0f, 1.0f, 0.0f);
-    coloured.box_min = glm::vec3(-20.0f, -1.0f, -20.0f);
-    coloured.box_max = glm::vec3(20.0f, 10.0f, 20.0f);
+    coloured.boxMin = glm::vec3(-20.0f, -1.0f, -20.0f);
+    coloured.boxMax = glm::vec3(20.0f, 10.0f, 20.0f);
     grey.position = glm::vec3(30.0f, 1.0f, 0.0f);
     for (world::EnvironmentProbe* probe : {&coloured, &grey}) {
-        probe->face_size = 4;
-        probe->mip_count = 3;
+        probe->faceSize = 4;
+        probe->mipCount = 3;
         for (uint32_t m = 0; m < 3; ++m)
             for (uint32_t t = 0; t < 6 * (4u >> m) * (4u >> m); ++t)
-                probe->texels.push_back(package::encode_rgb9e5(
+                probe->texels.push_back(package::encodeRgb9e5(
                     probe == &coloured ? mipColour[m] : glm::vec3(0.5f * glsl::INV_PI)));
     }
     level.baked.probes = {grey, coloured};

@@ -160,8 +160,8 @@ int main(int argc, char** argv) {
         // the machine hits each configuration alike: the level's permutations, everything full
         // PBR, everything Lambert-only, and a flat-shaded floor (same geometry and MSAA).
         std::vector<render::RendererOptions> configs(4);  // 1280x720, MSAA 2x requested
-        configs[1].forceMaterialClass = int(world::MaterialClass::full);
-        configs[2].forceMaterialClass = int(world::MaterialClass::lambert);
+        configs[1].forceMaterialClass = int(world::MaterialClass::kFull);
+        configs[2].forceMaterialClass = int(world::MaterialClass::kLambert);
         configs[3].flatShading = true;
         std::vector<render::Renderer> renderers(configs.size());
         std::string rssOne;

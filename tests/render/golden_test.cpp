@@ -133,7 +133,7 @@ TEST(RenderGolden, SunShadowsMaterialClassesAndDynamicObject) {
     render::DynamicTransform moved;
     uint32_t dynamicEntities = 0;
     for (uint32_t e = 0; e < level.level.entities.size(); ++e)
-        if (level.level.entities[e].flags & world::entity_dynamic) {
+        if (level.level.entities[e].flags & world::kEntityDynamic) {
             moved.entity = e;
             ++dynamicEntities;
         }
@@ -143,7 +143,7 @@ TEST(RenderGolden, SunShadowsMaterialClassesAndDynamicObject) {
     // The game's pick for a level without a grid: the brightest primary, unshadowed.
     std::vector<uint32_t> candidates;
     for (uint32_t l = 0; l < level.level.lights.size(); ++l)
-        if (level.level.lights[l].role == world::LightRole::primary) candidates.push_back(l);
+        if (level.level.lights[l].role == world::LightRole::kPrimary) candidates.push_back(l);
     world::DynamicPrimary pick;
     world::updateDynamicPrimary(pick, place, candidates, [&](uint32_t light, glm::vec3 p) {
         return world::unshadowedIlluminance(level.level.lights[light], p);

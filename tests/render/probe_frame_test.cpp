@@ -68,60 +68,60 @@ world::MeshData insideOut(world::MeshData m) {
 
 std::string writeRoom(const std::string& folder) {
     world::GltfBuilder g;
-    const int plaster = g.add_material(material("plaster", {0.7f, 0.7f, 0.68f}, 0.9f));
-    const int red = g.add_material(material("red", {0.7f, 0.08f, 0.05f}, 0.9f));
-    const int blue = g.add_material(material("blue", {0.05f, 0.12f, 0.7f}, 0.9f));
+    const int plaster = g.addMaterial(material("plaster", {0.7f, 0.7f, 0.68f}, 0.9f));
+    const int red = g.addMaterial(material("red", {0.7f, 0.08f, 0.05f}, 0.9f));
+    const int blue = g.addMaterial(material("blue", {0.05f, 0.12f, 0.7f}, 0.9f));
     int strips[3];
     for (int i = 0; i < 3; ++i)
-        strips[i] = g.add_material(material(("floor" + std::to_string(i)).c_str(),
-                                            {0.03f, 0.03f, 0.03f}, kStripRoughness[i]));
+        strips[i] = g.addMaterial(material(("floor" + std::to_string(i)).c_str(),
+                                           {0.03f, 0.03f, 0.03f}, kStripRoughness[i]));
     auto node = [&](const world::MeshData& mesh) {
-        g.add_node({{"name", mesh.name}, {"mesh", g.add_mesh(mesh)}});
+        g.addNode({{"name", mesh.name}, {"mesh", g.addMesh(mesh)}});
     };
     const glm::vec3 lo(-kRoomHalf, 0.0f, -kRoomHalf), hi(kRoomHalf, kRoomHeight, kRoomHalf);
-    world::MeshData room = insideOut(world::box_mesh("room", lo, hi, 1, true));
+    world::MeshData room = insideOut(world::boxMesh("room", lo, hi, 1, true));
     room.material = plaster;
     node(room);
     for (int i = 0; i < 3; ++i)
         node(floorRect("strip" + std::to_string(i), -3.0f + 2.0f * float(i),
                        -1.0f + 2.0f * float(i), -kRoomHalf, kRoomHalf, strips[i]));
     world::MeshData panel =
-        world::box_mesh("red_panel", {-2.0f, 0.6f, -3.0f}, {0.5f, 2.4f, -2.9f}, 1, false);
+        world::boxMesh("red_panel", {-2.0f, 0.6f, -3.0f}, {0.5f, 2.4f, -2.9f}, 1, false);
     panel.material = red;
     node(panel);
     world::MeshData side =
-        world::box_mesh("blue_panel", {2.9f, 0.4f, -2.5f}, {3.0f, 2.2f, 0.5f}, 1, false);
+        world::boxMesh("blue_panel", {2.9f, 0.4f, -2.5f}, {3.0f, 2.2f, 0.5f}, 1, false);
     side.material = blue;
     node(side);
 
     const int primary =
-        g.add_light({{"type", "point"}, {"intensity", 300.0f}, {"color", {1.0f, 1.0f, 1.0f}}});
-    g.add_node({{"name", "primary"},
-                {"translation", vec({0.0f, 1.9f, 0.5f})},
-                {"extensions", {{"KHR_lights_punctual", {{"light", primary}}}}}});
+        g.addLight({{"type", "point"}, {"intensity", 300.0f}, {"color", {1.0f, 1.0f, 1.0f}}});
+    g.addNode({{"name", "primary"},
+               {"translation", vec({0.0f, 1.9f, 0.5f})},
+               {"extensions", {{"KHR_lights_punctual", {{"light", primary}}}}}});
     const int fill =
-        g.add_light({{"type", "point"}, {"intensity", 200.0f}, {"color", {1.0f, 0.8f, 0.6f}}});
-    g.add_node({{"name", "fill"},
-                {"translation", vec({-2.5f, 2.5f, -2.5f})},
-                {"extensions", {{"KHR_lights_punctual", {{"light", fill}}}}},
-                {"extras", {{"onelight", {{"role", "baked"}}}}}});
-    g.add_node(
+        g.addLight({{"type", "point"}, {"intensity", 200.0f}, {"color", {1.0f, 0.8f, 0.6f}}});
+    g.addNode({{"name", "fill"},
+               {"translation", vec({-2.5f, 2.5f, -2.5f})},
+               {"extensions", {{"KHR_lights_punctual", {{"light", fill}}}}},
+               {"extras", {{"onelight", {{"role", "baked"}}}}}});
+    g.addNode(
         {{"name", "probe_room"},
          {"translation", vec({0.0f, 1.5f, 0.0f})},
          {"extras", {{"onelight", {{"probe", {{"box_min", vec(lo)}, {"box_max", vec(hi)}}}}}}}});
-    const int camera = g.add_camera({{"name", "view"},
-                                     {"type", "perspective"},
-                                     {"perspective",
-                                      {{"yfov", 0.9f},
-                                       {"znear", 0.05f},
-                                       {"zfar", 100.0f},
-                                       {"aspectRatio", float(kWidth) / float(kHeight)}}}});
+    const int camera = g.addCamera({{"name", "view"},
+                                    {"type", "perspective"},
+                                    {"perspective",
+                                     {{"yfov", 0.9f},
+                                      {"znear", 0.05f},
+                                      {"zfar", 100.0f},
+                                      {"aspectRatio", float(kWidth) / float(kHeight)}}}});
     const glm::quat look = glm::angleAxis(glm::radians(-28.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-    g.add_node({{"name", "view"},
-                {"translation", vec({0.0f, 1.4f, 2.7f})},
-                {"rotation", {look.x, look.y, look.z, look.w}},
-                {"camera", camera},
-                {"extras", {{"onelight", {{"exposure", 3.0f}}}}}});
+    g.addNode({{"name", "view"},
+               {"translation", vec({0.0f, 1.4f, 2.7f})},
+               {"rotation", {look.x, look.y, look.z, look.w}},
+               {"camera", camera},
+               {"extras", {{"onelight", {{"exposure", 3.0f}}}}}});
     return g.write(folder, "probe_room");
 }
 

@@ -15,8 +15,8 @@ world::EnvironmentProbe probeAt(glm::vec3 p, glm::vec3 boxMin = glm::vec3(0.0f),
                                 glm::vec3 boxMax = glm::vec3(0.0f)) {
     world::EnvironmentProbe e;
     e.position = p;
-    e.box_min = boxMin;
-    e.box_max = boxMax;
+    e.boxMin = boxMin;
+    e.boxMax = boxMax;
     return e;
 }
 

@@ -34,7 +34,7 @@ at 4.0  quit
     EXPECT_EQ(s.level, "demo");
     ASSERT_EQ(s.commands.size(), 9u);
     const Command& spawn = s.commands[0];
-    EXPECT_EQ(spawn.kind, CommandKind::Spawn);
+    EXPECT_EQ(spawn.kind, CommandKind::kSpawn);
     EXPECT_EQ(spawn.tick, 0u);
     EXPECT_FLOAT_EQ(spawn.values[1], 1.7f);
     EXPECT_FLOAT_EQ(spawn.values[3], 90.0f);
@@ -42,12 +42,12 @@ at 4.0  quit
     EXPECT_FALSE(s.commands[2].on);
     EXPECT_FLOAT_EQ(s.commands[3].values[0], 30.0f);
     EXPECT_FLOAT_EQ(s.commands[3].values[1], -5.0f);
-    EXPECT_EQ(s.commands[6].kind, CommandKind::Capture);
+    EXPECT_EQ(s.commands[6].kind, CommandKind::kCapture);
     EXPECT_EQ(s.commands[6].name, "courtyard");
     EXPECT_EQ(s.commands[7].name, "crate_1");
     EXPECT_EQ(s.commands[7].light, "sun");
     EXPECT_EQ(s.commands[7].line, 9);
-    EXPECT_EQ(s.commands[8].kind, CommandKind::Quit);
+    EXPECT_EQ(s.commands[8].kind, CommandKind::kQuit);
     EXPECT_EQ(s.commands[8].tick, 240u);
 }
 

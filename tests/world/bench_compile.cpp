@@ -20,7 +20,7 @@ double seconds(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double peak_rss_mib() {
+double peakRssMib() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
@@ -43,43 +43,42 @@ int main(int argc, char** argv) {
         }
     }
     using namespace onelight;
-    const test::GeneratedLevelOptions options = test::options_for_triangles(triangles);
+    const test::GeneratedLevelOptions options = test::optionsForTriangles(triangles);
     const std::filesystem::path folder =
-        keep.empty() ? test::fresh_folder("bench") : std::filesystem::path(keep);
+        keep.empty() ? test::freshFolder("bench") : std::filesystem::path(keep);
     std::filesystem::create_directories(folder);
-    const std::string path = test::write_generated_level(folder, "bench_level", options);
-    const double rss_after_generate = peak_rss_mib();
+    const std::string path = test::writeGeneratedLevel(folder, "bench_level", options);
+    const double rssAfterGenerate = peakRssMib();
     try {
         auto start = std::chrono::steady_clock::now();
-        const world::SourceLevel source = world::import_gltf(path);
-        const double import_s = seconds(start);
+        const world::SourceLevel source = world::importGltf(path);
+        const double importS = seconds(start);
         start = std::chrono::steady_clock::now();
-        const world::CompileResult result = world::compile_level(source, world::CompileOptions{});
-        const double compile_s = seconds(start);
+        const world::CompileResult result = world::compileLevel(source, world::CompileOptions{});
+        const double compileS = seconds(start);
         start = std::chrono::steady_clock::now();
-        const std::vector<uint8_t> bytes = package::serialize_package(result.level);
-        package::write_file_atomically((folder / "bench_level.olpak").string(), bytes);
-        const double write_s = seconds(start);
+        const std::vector<uint8_t> bytes = package::serializePackage(result.level);
+        package::writeFileAtomically((folder / "bench_level.olpak").string(), bytes);
+        const double writeS = seconds(start);
         const world::CompileStats& s = result.stats;
         std::printf("level      %s (%llu static triangles generated)\n", path.c_str(),
-                    static_cast<unsigned long long>(test::generated_triangle_count(options)));
+                    static_cast<unsigned long long>(test::generatedTriangleCount(options)));
         std::printf(
             "result     %llu triangles, %llu surfaces, bsp depth %u / %llu leaves, %llu charts in "
             "%llu atlases, "
             "%zu bytes\n",
             static_cast<unsigned long long>(s.triangles),
-            static_cast<unsigned long long>(s.surfaces), s.bsp_depth,
-            static_cast<unsigned long long>(s.bsp_leaves),
-            static_cast<unsigned long long>(s.charts), static_cast<unsigned long long>(s.atlases),
-            bytes.size());
+            static_cast<unsigned long long>(s.surfaces), s.bspDepth,
+            static_cast<unsigned long long>(s.bspLeaves), static_cast<unsigned long long>(s.charts),
+            static_cast<unsigned long long>(s.atlases), bytes.size());
         std::printf(
             "time       import %.3f s, compile %.3f s (split %.3f, regions %.3f, charts %.3f, bsp "
             "%.3f, "
             "surfaces %.3f), write %.3f s, total %.3f s\n",
-            import_s, compile_s, s.seconds_split, s.seconds_regions, s.seconds_charts,
-            s.seconds_bsp, s.seconds_surfaces, write_s, import_s + compile_s + write_s);
+            importS, compileS, s.secondsSplit, s.secondsRegions, s.secondsCharts, s.secondsBsp,
+            s.secondsSurfaces, writeS, importS + compileS + writeS);
         std::printf("memory     peak RSS %.1f MiB (%.1f MiB after generating the level)\n",
-                    peak_rss_mib(), rss_after_generate);
+                    peakRssMib(), rssAfterGenerate);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "onelight-bench-compile: %s\n", e.what());
         return 1;

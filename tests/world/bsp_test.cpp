@@ -14,13 +14,13 @@ namespace {
 using namespace onelight::world;
 
 /// A level made of one static mesh instance holding the given triangle corners.
-SourceLevel soup_level(const std::vector<glm::vec3>& corners) {
+SourceLevel soupLevel(const std::vector<glm::vec3>& corners) {
     SourceLevel level;
-    level.source_path = "soup";
+    level.sourcePath = "soup";
     level.materials.push_back(Material{});
     MeshInstance instance;
-    instance.node_name = "soup";
-    instance.mesh_name = "soup";
+    instance.nodeName = "soup";
+    instance.meshName = "soup";
     instance.material = 0;
     for (size_t i = 0; i < corners.size(); ++i) {
         Vertex v;
@@ -41,8 +41,8 @@ SourceLevel soup_level(const std::vector<glm::vec3>& corners) {
 
 /// Random triangles of about `size` metres in a cube of `extent` metres around `centre`, plus the
 /// hard cases: coplanar grids, duplicated faces, slivers and T-junctions.
-std::vector<glm::vec3> hard_soup(uint32_t seed, int count, float extent, float size,
-                                 glm::vec3 centre) {
+std::vector<glm::vec3> hardSoup(uint32_t seed, int count, float extent, float size,
+                                glm::vec3 centre) {
     std::mt19937 random(seed);
     std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
     std::vector<glm::vec3> c;
@@ -77,15 +77,15 @@ std::vector<glm::vec3> hard_soup(uint32_t seed, int count, float extent, float s
 }
 
 /// For each leaf, the planes on its path and the side taken (+1 front, -1 back).
-std::vector<std::vector<std::pair<uint32_t, int>>> leaf_paths(const CompiledLevel& level) {
-    std::vector<std::vector<std::pair<uint32_t, int>>> paths(level.bsp_leaves.size());
+std::vector<std::vector<std::pair<uint32_t, int>>> leafPaths(const CompiledLevel& level) {
+    std::vector<std::vector<std::pair<uint32_t, int>>> paths(level.bspLeaves.size());
     std::function<void(int32_t, std::vector<std::pair<uint32_t, int>>&)> walk =
         [&](int32_t child, std::vector<std::pair<uint32_t, int>>& path) {
             if (child < 0) {
                 paths[static_cast<size_t>(-child - 1)] = path;
                 return;
             }
-            const BspNode& n = level.bsp_nodes[static_cast<size_t>(child)];
+            const BspNode& n = level.bspNodes[static_cast<size_t>(child)];
             path.push_back({n.plane, 1});
             walk(n.front, path);
             path.back().second = -1;
@@ -93,12 +93,12 @@ std::vector<std::vector<std::pair<uint32_t, int>>> leaf_paths(const CompiledLeve
             path.pop_back();
         };
     std::vector<std::pair<uint32_t, int>> path;
-    if (!level.bsp_nodes.empty()) walk(0, path);
+    if (!level.bspNodes.empty()) walk(0, path);
     return paths;
 }
 
-double signed_distance(const CompiledLevel& level, uint32_t plane, const glm::dvec3& p) {
-    return glm::dot(level.bsp_planes[plane].normal, p) - level.bsp_planes[plane].distance;
+double signedDistance(const CompiledLevel& level, uint32_t plane, const glm::dvec3& p) {
+    return glm::dot(level.bspPlanes[plane].normal, p) - level.bspPlanes[plane].distance;
 }
 
 struct BspCase {
@@ -112,13 +112,13 @@ protected:
     void SetUp() override {
         const BspCase& c = GetParam();
         CompileOptions options;
-        options.bsp.max_leaf_triangles = 8;
+        options.bsp.maxLeafTriangles = 8;
         level_ =
-            compile_level(soup_level(hard_soup(7, 600, c.extent, c.extent / 5, c.centre)), options)
+            compileLevel(soupLevel(hardSoup(7, 600, c.extent, c.extent / 5, c.centre)), options)
                 .level;
-        view_ = bsp_view(level_);
+        view_ = bspView(level_);
     }
-    glm::dvec3 random_point(std::mt19937& random) const {
+    glm::dvec3 randomPoint(std::mt19937& random) const {
         std::uniform_real_distribution<double> unit(-1.3, 1.3);
         return glm::dvec3(GetParam().centre) +
                double(GetParam().extent) * glm::dvec3(unit(random), unit(random), unit(random));
@@ -129,39 +129,39 @@ protected:
 
 TEST_P(BspInvariants, EveryTriangleLiesInExactlyOneLeaf) {
     const size_t triangles = level_.indices.size() / 3;
-    ASSERT_GT(level_.bsp_nodes.size(), 10u);
+    ASSERT_GT(level_.bspNodes.size(), 10u);
     std::vector<int> owners(triangles, 0);
-    for (const BspLeaf& leaf : level_.bsp_leaves)
-        for (uint32_t t = leaf.first_triangle; t < leaf.first_triangle + leaf.triangle_count; ++t)
+    for (const BspLeaf& leaf : level_.bspLeaves)
+        for (uint32_t t = leaf.firstTriangle; t < leaf.firstTriangle + leaf.triangleCount; ++t)
             ++owners[t];
     for (size_t t = 0; t < triangles; ++t) ASSERT_EQ(owners[t], 1) << "triangle " << t;
-    const auto paths = leaf_paths(level_);
-    for (size_t l = 0; l < level_.bsp_leaves.size(); ++l) {
-        const BspLeaf& leaf = level_.bsp_leaves[l];
-        for (uint32_t i = 3 * leaf.first_triangle;
-             i < 3 * (leaf.first_triangle + leaf.triangle_count); ++i) {
+    const auto paths = leafPaths(level_);
+    for (size_t l = 0; l < level_.bspLeaves.size(); ++l) {
+        const BspLeaf& leaf = level_.bspLeaves[l];
+        for (uint32_t i = 3 * leaf.firstTriangle; i < 3 * (leaf.firstTriangle + leaf.triangleCount);
+             ++i) {
             const glm::dvec3 p(level_.vertices[level_.indices[i]].position);
             for (const auto& [plane, side] : paths[l])
-                ASSERT_GE(side * signed_distance(level_, plane, p), -view_.epsilon)
+                ASSERT_GE(side * signedDistance(level_, plane, p), -view_.epsilon)
                     << "leaf " << l << " index " << i << " is outside its leaf";
         }
     }
 }
 
 TEST_P(BspInvariants, PointLocationAgreesWithBruteForce) {
-    const auto paths = leaf_paths(level_);
+    const auto paths = leafPaths(level_);
     std::mt19937 random(11);
     for (int i = 0; i < 2000; ++i) {
-        const glm::dvec3 p = random_point(random);
+        const glm::dvec3 p = randomPoint(random);
         std::vector<uint32_t> containing;
         for (size_t l = 0; l < paths.size(); ++l) {
             bool inside = true;
             for (const auto& [plane, side] : paths[l])
-                inside &= (signed_distance(level_, plane, p) >= 0.0) == (side > 0);
+                inside &= (signedDistance(level_, plane, p) >= 0.0) == (side > 0);
             if (inside) containing.push_back(static_cast<uint32_t>(l));
         }
         ASSERT_EQ(containing.size(), 1u);
-        ASSERT_EQ(find_leaf(view_, p), containing[0]);
+        ASSERT_EQ(findLeaf(view_, p), containing[0]);
     }
 }
 
@@ -169,11 +169,11 @@ TEST_P(BspInvariants, RayQueriesAgreeWithBruteForce) {
     std::mt19937 random(13);
     int hits = 0;
     for (int i = 0; i < 1500; ++i) {
-        const glm::dvec3 origin = random_point(random);
-        const glm::dvec3 direction = glm::normalize(random_point(random) - origin);
-        const double t_max = 3.0 * double(GetParam().extent);
-        const RayHit fast = raycast(view_, origin, direction, t_max);
-        const RayHit slow = raycast_brute_force(view_, origin, direction, t_max);
+        const glm::dvec3 origin = randomPoint(random);
+        const glm::dvec3 direction = glm::normalize(randomPoint(random) - origin);
+        const double tMax = 3.0 * double(GetParam().extent);
+        const RayHit fast = raycast(view_, origin, direction, tMax);
+        const RayHit slow = raycastBruteForce(view_, origin, direction, tMax);
         ASSERT_EQ(fast.hit, slow.hit) << "ray " << i;
         if (fast.hit) {
             ++hits;
@@ -187,11 +187,11 @@ TEST_P(BspInvariants, SweptSphereAgreesWithBruteForce) {
     std::mt19937 random(17);
     int hits = 0;
     for (int i = 0; i < 300; ++i) {
-        const glm::dvec3 start = random_point(random);
-        const glm::dvec3 end = start + (random_point(random) - glm::dvec3(GetParam().centre)) * 0.5;
+        const glm::dvec3 start = randomPoint(random);
+        const glm::dvec3 end = start + (randomPoint(random) - glm::dvec3(GetParam().centre)) * 0.5;
         const double radius = 0.02 * double(GetParam().extent);
-        const SweepHit fast = sweep_sphere(view_, start, end, radius);
-        const SweepHit slow = sweep_sphere_brute_force(view_, start, end, radius);
+        const SweepHit fast = sweepSphere(view_, start, end, radius);
+        const SweepHit slow = sweepSphereBruteForce(view_, start, end, radius);
         ASSERT_EQ(fast.hit, slow.hit) << "sweep " << i;
         if (fast.hit) {
             ++hits;
@@ -205,25 +205,25 @@ TEST_P(BspInvariants, SweptSphereAgreesWithBruteForce) {
 TEST_P(BspInvariants, FrontToBackVisitsEveryLeafOnceNearSideFirst) {
     std::mt19937 random(19);
     for (int i = 0; i < 20; ++i) {
-        const glm::dvec3 eye = random_point(random);
-        std::vector<int> rank(level_.bsp_leaves.size(), -1);
+        const glm::dvec3 eye = randomPoint(random);
+        std::vector<int> rank(level_.bspLeaves.size(), -1);
         int next = 0;
-        leaves_front_to_back(view_, eye, [&](uint32_t leaf) {
+        leavesFrontToBack(view_, eye, [&](uint32_t leaf) {
             ASSERT_EQ(rank[leaf], -1);
             rank[leaf] = next++;
         });
-        ASSERT_EQ(static_cast<size_t>(next), level_.bsp_leaves.size());
-        ASSERT_EQ(rank[find_leaf(view_, eye)], 0);
+        ASSERT_EQ(static_cast<size_t>(next), level_.bspLeaves.size());
+        ASSERT_EQ(rank[findLeaf(view_, eye)], 0);
         // For every node, each leaf on the eye's side comes before each leaf on the other.
         std::function<std::pair<int, int>(int32_t)> span =
             [&](int32_t child) -> std::pair<int, int> {
             if (child < 0)
                 return {rank[static_cast<size_t>(-child - 1)],
                         rank[static_cast<size_t>(-child - 1)]};
-            const BspNode& n = level_.bsp_nodes[static_cast<size_t>(child)];
+            const BspNode& n = level_.bspNodes[static_cast<size_t>(child)];
             const auto f = span(n.front), b = span(n.back);
-            const bool front_near = signed_distance(level_, n.plane, eye) >= 0.0;
-            EXPECT_LT(front_near ? f.second : b.second, front_near ? b.first : f.first);
+            const bool frontNear = signedDistance(level_, n.plane, eye) >= 0.0;
+            EXPECT_LT(frontNear ? f.second : b.second, frontNear ? b.first : f.first);
             return {std::min(f.first, b.first), std::max(f.second, b.second)};
         };
         span(0);
@@ -234,14 +234,14 @@ INSTANTIATE_TEST_SUITE_P(
     Scales, BspInvariants,
     ::testing::Values(BspCase{"metres", 10.0f, glm::vec3(0.0f)},
                       BspCase{"far_from_origin", 50.0f, glm::vec3(1e5f, -1e5f, 1e5f)}),
-    [](const ::testing::TestParamInfo<BspCase>& param_info) { return param_info.param.name; });
+    [](const ::testing::TestParamInfo<BspCase>& paramInfo) { return paramInfo.param.name; });
 
 TEST(Bsp, SplittingKeepsAreaAndCountsSplits) {
-    SourceLevel source = soup_level(hard_soup(3, 400, 10.0f, 2.0f, glm::vec3(0.0f)));
+    SourceLevel source = soupLevel(hardSoup(3, 400, 10.0f, 2.0f, glm::vec3(0.0f)));
     CompileOptions options;
-    options.bsp.max_leaf_triangles = 4;
-    const CompileResult result = compile_level(source, options);
-    EXPECT_GT(result.stats.bsp_splits, 0u);
+    options.bsp.maxLeafTriangles = 4;
+    const CompileResult result = compileLevel(source, options);
+    EXPECT_GT(result.stats.bspSplits, 0u);
     double before = 0.0, after = 0.0;
     const MeshInstance& instance = source.instances[0];
     for (size_t t = 0; t < instance.indices.size(); t += 3) {
@@ -264,26 +264,25 @@ TEST(Bsp, SplittingKeepsAreaAndCountsSplits) {
 }
 
 TEST(Bsp, EmptyLevelHasOneEmptyLeafAndQueriesWork) {
-    const CompiledLevel level = compile_level(soup_level({}), {}).level;
-    ASSERT_EQ(level.bsp_leaves.size(), 1u);
-    EXPECT_TRUE(level.bsp_nodes.empty());
-    const BspView view = bsp_view(level);
-    EXPECT_EQ(find_leaf(view, glm::dvec3(1, 2, 3)), 0u);
+    const CompiledLevel level = compileLevel(soupLevel({}), {}).level;
+    ASSERT_EQ(level.bspLeaves.size(), 1u);
+    EXPECT_TRUE(level.bspNodes.empty());
+    const BspView view = bspView(level);
+    EXPECT_EQ(findLeaf(view, glm::dvec3(1, 2, 3)), 0u);
     EXPECT_FALSE(raycast(view, glm::dvec3(0), glm::dvec3(0, 0, 1), 10.0).hit);
-    EXPECT_FALSE(sweep_sphere(view, glm::dvec3(0), glm::dvec3(0, 0, 1), 0.5).hit);
+    EXPECT_FALSE(sweepSphere(view, glm::dvec3(0), glm::dvec3(0, 0, 1), 0.5).hit);
     int visited = 0;
-    leaves_front_to_back(view, glm::dvec3(0), [&](uint32_t) { ++visited; });
+    leavesFrontToBack(view, glm::dvec3(0), [&](uint32_t) { ++visited; });
     EXPECT_EQ(visited, 1);
 }
 
 TEST(Bsp, SphereStopsAgainstAFloor) {
     const CompiledLevel level =
-        compile_level(
-            soup_level({{-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {-5, 0, -5}, {5, 0, 5}, {5, 0, -5}}),
-            {})
+        compileLevel(
+            soupLevel({{-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {-5, 0, -5}, {5, 0, 5}, {5, 0, -5}}), {})
             .level;
     const SweepHit hit =
-        sweep_sphere(bsp_view(level), glm::dvec3(0, 2, 0), glm::dvec3(0, -2, 0), 0.5);
+        sweepSphere(bspView(level), glm::dvec3(0, 2, 0), glm::dvec3(0, -2, 0), 0.5);
     ASSERT_TRUE(hit.hit);
     EXPECT_NEAR(hit.fraction, 1.5 / 4.0, 1e-12);
     EXPECT_NEAR(hit.normal.y, 1.0, 1e-12);

@@ -14,9 +14,9 @@ namespace onelight::test {
 namespace {
 
 using world::Error;
-using world::import_gltf;
+using world::importGltf;
 
-MeshData one_triangle(const std::string& name) {
+MeshData oneTriangle(const std::string& name) {
     MeshData mesh;
     mesh.name = name;
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
@@ -27,25 +27,24 @@ MeshData one_triangle(const std::string& name) {
 
 TEST(Import, HierarchyComposesTransforms) {
     GltfBuilder gltf;
-    const int mesh = gltf.add_mesh(one_triangle("tri"));
+    const int mesh = gltf.addMesh(oneTriangle("tri"));
     const int child =
-        gltf.add_node({{"name", "child"}, {"mesh", mesh}, {"translation", {0.0, 0.0, 5.0}}}, false);
-    gltf.add_node({{"name", "parent"},
-                   {"translation", {10.0, 0.0, 0.0}},
-                   {"scale", {2.0, 2.0, 2.0}},
-                   {"children", {child}}});
-    const world::SourceLevel level =
-        import_gltf(gltf.write(fresh_folder("hierarchy"), "hierarchy"));
+        gltf.addNode({{"name", "child"}, {"mesh", mesh}, {"translation", {0.0, 0.0, 5.0}}}, false);
+    gltf.addNode({{"name", "parent"},
+                  {"translation", {10.0, 0.0, 0.0}},
+                  {"scale", {2.0, 2.0, 2.0}},
+                  {"children", {child}}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("hierarchy"), "hierarchy"));
     ASSERT_EQ(level.instances.size(), 1u);
-    const glm::dvec4 p = level.instances[0].world_from_local * glm::dvec4(1.0, 0.0, 0.0, 1.0);
+    const glm::dvec4 p = level.instances[0].worldFromLocal * glm::dvec4(1.0, 0.0, 0.0, 1.0);
     EXPECT_NEAR(p.x, 10.0 + 2.0, 1e-12);
     EXPECT_NEAR(p.z, 10.0, 1e-12);
 }
 
 TEST(Import, GeneratesUnitTangentsOrthogonalToNormals) {
     GltfBuilder gltf;
-    gltf.add_node({{"name", "floor"}, {"mesh", gltf.add_mesh(grid_mesh("floor", 2, 2.0, 0.0))}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("tangents"), "tangents"));
+    gltf.addNode({{"name", "floor"}, {"mesh", gltf.addMesh(gridMesh("floor", 2, 2.0, 0.0))}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("tangents"), "tangents"));
     ASSERT_EQ(level.instances.size(), 1u);
     for (const world::Vertex& v : level.instances[0].vertices) {
         EXPECT_NEAR(glm::length(glm::vec3(v.tangent)), 1.0f, 1e-5f);
@@ -57,12 +56,12 @@ TEST(Import, GeneratesUnitTangentsOrthogonalToNormals) {
 
 TEST(Import, FlatNormalsWhenMissingAndTexcoord1Kept) {
     GltfBuilder gltf;
-    MeshData mesh = one_triangle("tri");
+    MeshData mesh = oneTriangle("tri");
     mesh.uv1 = {{0.1f, 0.1f}, {0.9f, 0.1f}, {0.1f, 0.9f}};
-    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("flat"), "flat"));
+    gltf.addNode({{"name", "n"}, {"mesh", gltf.addMesh(mesh)}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("flat"), "flat"));
     ASSERT_EQ(level.instances.size(), 1u);
-    EXPECT_TRUE(level.instances[0].has_uv1);
+    EXPECT_TRUE(level.instances[0].hasUv1);
     for (const world::Vertex& v : level.instances[0].vertices)
         EXPECT_EQ(v.normal, glm::vec3(0, 0, 1));
     EXPECT_FLOAT_EQ(level.instances[0].vertices[1].uv1.x, 0.9f);
@@ -70,125 +69,125 @@ TEST(Import, FlatNormalsWhenMissingAndTexcoord1Kept) {
 
 TEST(Import, GlossFormulaInvertsTheEngineGgxAlpha) {
     for (float r = 0.1f; r <= 1.0f; r += 0.01f) {
-        const float gloss = world::gloss_from_roughness(r);
+        const float gloss = world::glossFromRoughness(r);
         ASSERT_GE(gloss, 0.0f);
         ASSERT_LE(gloss, 1.0f);
         EXPECT_NEAR(glsl::ggxAlpha_fromGloss(gloss), r * r, 2e-4f * std::max(1.0f, 1.0f / (r * r)))
             << r;
     }
-    EXPECT_EQ(world::gloss_from_roughness(1.0f), 0.0f);
-    EXPECT_EQ(world::gloss_from_roughness(0.0f), 1.0f);
+    EXPECT_EQ(world::glossFromRoughness(1.0f), 0.0f);
+    EXPECT_EQ(world::glossFromRoughness(0.0f), 1.0f);
 }
 
 TEST(Import, MetallicRoughnessBecomesAlbedoSpecularGloss) {
     GltfBuilder gltf;
-    MeshData mesh = one_triangle("tri");
-    mesh.material = gltf.add_material({{"name", "gold"},
-                                       {"pbrMetallicRoughness",
-                                        {{"baseColorFactor", {1.0, 0.8, 0.4, 1.0}},
-                                         {"metallicFactor", 0.25},
-                                         {"roughnessFactor", 0.5}}}});
-    gltf.add_material({{"name", "unused"}});
-    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("material"), "material"));
+    MeshData mesh = oneTriangle("tri");
+    mesh.material = gltf.addMaterial({{"name", "gold"},
+                                      {"pbrMetallicRoughness",
+                                       {{"baseColorFactor", {1.0, 0.8, 0.4, 1.0}},
+                                        {"metallicFactor", 0.25},
+                                        {"roughnessFactor", 0.5}}}});
+    gltf.addMaterial({{"name", "unused"}});
+    gltf.addNode({{"name", "n"}, {"mesh", gltf.addMesh(mesh)}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("material"), "material"));
     ASSERT_EQ(level.materials.size(), 1u) << "unused materials are dropped";
     const world::Material& m = level.materials[0];
     EXPECT_EQ(m.name, "gold");
     EXPECT_NEAR(m.albedo.g, 0.8f * 0.75f, 1e-6f);
-    EXPECT_NEAR(m.specular_color.r, 0.04f * 0.75f + 1.0f * 0.25f, 1e-6f);
+    EXPECT_NEAR(m.specularColor.r, 0.04f * 0.75f + 1.0f * 0.25f, 1e-6f);
     EXPECT_NEAR(m.gloss, std::log2(2.0 / std::pow(0.5, 4.0) - 1.0) / 18.0, 1e-6);
-    EXPECT_EQ(m.material_class, world::MaterialClass::full);
+    EXPECT_EQ(m.materialClass, world::MaterialClass::kFull);
 }
 
 TEST(Import, LightsKeepUnitsRolesAndDirections) {
     GltfBuilder gltf;
-    const int sun = gltf.add_light({{"type", "directional"}, {"intensity", 100000.0}});
-    const int spot = gltf.add_light({{"type", "spot"},
-                                     {"intensity", 400.0},
-                                     {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}});
-    const int lamp = gltf.add_light({{"type", "point"}, {"intensity", 50.0}, {"range", 9.0}});
-    gltf.add_node({{"name", "sun"},
-                   {"rotation", {-0.7071068, 0.0, 0.0, 0.7071068}},
-                   {"extensions", {{"KHR_lights_punctual", {{"light", sun}}}}}});
-    gltf.add_node({{"name", "torch"},
-                   {"translation", {1.0, 2.0, 3.0}},
-                   {"extensions", {{"KHR_lights_punctual", {{"light", spot}}}}},
-                   {"extras", {{"onelight", {{"role", "effect"}}}}}});
-    gltf.add_node({{"name", "lamp"},
-                   {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
-                   {"extras", {{"onelight", {{"role", "baked"}}}}}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("lights"), "lights"));
+    const int sun = gltf.addLight({{"type", "directional"}, {"intensity", 100000.0}});
+    const int spot = gltf.addLight({{"type", "spot"},
+                                    {"intensity", 400.0},
+                                    {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}});
+    const int lamp = gltf.addLight({{"type", "point"}, {"intensity", 50.0}, {"range", 9.0}});
+    gltf.addNode({{"name", "sun"},
+                  {"rotation", {-0.7071068, 0.0, 0.0, 0.7071068}},
+                  {"extensions", {{"KHR_lights_punctual", {{"light", sun}}}}}});
+    gltf.addNode({{"name", "torch"},
+                  {"translation", {1.0, 2.0, 3.0}},
+                  {"extensions", {{"KHR_lights_punctual", {{"light", spot}}}}},
+                  {"extras", {{"onelight", {{"role", "effect"}}}}}});
+    gltf.addNode({{"name", "lamp"},
+                  {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
+                  {"extras", {{"onelight", {{"role", "baked"}}}}}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("lights"), "lights"));
     ASSERT_EQ(level.lights.size(), 3u);
-    EXPECT_EQ(level.lights[0].type, world::LightType::directional);
-    EXPECT_EQ(level.lights[0].role, world::LightRole::primary);
+    EXPECT_EQ(level.lights[0].type, world::LightType::kDirectional);
+    EXPECT_EQ(level.lights[0].role, world::LightRole::kPrimary);
     EXPECT_FLOAT_EQ(level.lights[0].intensity, 100000.0f);  // lux
     EXPECT_NEAR(level.lights[0].direction.y, -1.0f, 1e-6f);
-    EXPECT_EQ(level.lights[1].role, world::LightRole::effect);
+    EXPECT_EQ(level.lights[1].role, world::LightRole::kEffect);
     EXPECT_EQ(level.lights[1].name, "torch");
-    EXPECT_FLOAT_EQ(level.lights[1].outer_cone, 0.5f);
+    EXPECT_FLOAT_EQ(level.lights[1].outerCone, 0.5f);
     EXPECT_EQ(level.lights[1].position, glm::vec3(1, 2, 3));
-    EXPECT_EQ(level.lights[2].role, world::LightRole::baked);
+    EXPECT_EQ(level.lights[2].role, world::LightRole::kBaked);
     EXPECT_FLOAT_EQ(level.lights[2].range, 9.0f);
 }
 
 TEST(Import, CamerasAreNamedByTheirNode) {
     GltfBuilder gltf;
-    const int camera = gltf.add_camera(
-        {{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}}}});
-    gltf.add_node({{"name", "courtyard"},
-                   {"camera", camera},
-                   {"translation", {0.0, 2.0, 0.0}},
-                   {"extras", {{"onelight", {{"exposure", 9.5}}}}}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("camera"), "camera"));
+    const int camera =
+        gltf.addCamera({{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.1}}}});
+    gltf.addNode({{"name", "courtyard"},
+                  {"camera", camera},
+                  {"translation", {0.0, 2.0, 0.0}},
+                  {"extras", {{"onelight", {{"exposure", 9.5}}}}}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("camera"), "camera"));
     ASSERT_EQ(level.cameras.size(), 1u);
     EXPECT_EQ(level.cameras[0].name, "courtyard");
     EXPECT_FLOAT_EQ(level.cameras[0].yfov, 0.9f);
-    EXPECT_TRUE(level.cameras[0].has_exposure);
-    EXPECT_FLOAT_EQ(level.cameras[0].exposure_ev100, 9.5f);
-    EXPECT_FALSE(level.has_exposure) << "a camera's exposure is its own";
+    EXPECT_TRUE(level.cameras[0].hasExposure);
+    EXPECT_FLOAT_EQ(level.cameras[0].exposureEv100, 9.5f);
+    EXPECT_FALSE(level.hasExposure) << "a camera's exposure is its own";
 }
 
 TEST(Import, ExtrasMarkDynamicMoversSpawnsProbesGrid) {
     GltfBuilder gltf;
-    const int mesh = gltf.add_mesh(one_triangle("tri"));
-    gltf.add_node(
+    const int mesh = gltf.addMesh(oneTriangle("tri"));
+    gltf.addNode(
         {{"name", "door"},
          {"mesh", mesh},
          {"extras", {{"onelight", {{"mover", {{"offset", {0.0, 3.0, 0.0}}, {"period", 4.0}}}}}}}});
-    gltf.add_node({{"name", "start"}, {"extras", {{"onelight", {{"spawn", true}}}}}});
-    gltf.add_node({{"name", "probe"}, {"extras", {{"onelight", {{"probe", true}}}}}});
-    gltf.add_node({{"name", "settings"},
-                   {"extras",
-                    {{"onelight",
-                      {{"grid", {{"min", {-1, -1, -1}}, {"max", {1, 1, 1}}}},
-                       {"exposure", 10.0},
-                       {"texels_per_metre", 6.0}}}}}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("extras"), "extras"));
+    gltf.addNode({{"name", "start"}, {"extras", {{"onelight", {{"spawn", true}}}}}});
+    gltf.addNode({{"name", "probe"}, {"extras", {{"onelight", {{"probe", true}}}}}});
+    gltf.addNode({{"name", "settings"},
+                  {"extras",
+                   {{"onelight",
+                     {{"grid", {{"min", {-1, -1, -1}}, {"max", {1, 1, 1}}}},
+                      {"exposure", 10.0},
+                      {"texels_per_metre", 6.0}}}}}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("extras"), "extras"));
     ASSERT_EQ(level.entities.size(), 3u);
-    EXPECT_EQ(level.entities[0].flags, world::entity_dynamic | world::entity_mover);
-    EXPECT_FLOAT_EQ(level.entities[0].mover_period, 4.0f);
+    EXPECT_EQ(level.entities[0].flags, world::kEntityDynamic | world::kEntityMover);
+    EXPECT_FLOAT_EQ(level.entities[0].moverPeriod, 4.0f);
     EXPECT_TRUE(level.instances[0].dynamic);
-    EXPECT_EQ(level.entities[1].flags, world::entity_spawn);
-    EXPECT_EQ(level.entities[2].flags, world::entity_probe);
-    EXPECT_TRUE(level.has_grid_bounds);
-    EXPECT_EQ(level.grid_max, glm::vec3(1.0f));
-    EXPECT_TRUE(level.has_exposure);
-    EXPECT_FLOAT_EQ(level.texels_per_metre, 6.0f);
+    EXPECT_EQ(level.entities[1].flags, world::kEntitySpawn);
+    EXPECT_EQ(level.entities[2].flags, world::kEntityProbe);
+    EXPECT_TRUE(level.hasGridBounds);
+    EXPECT_EQ(level.gridMax, glm::vec3(1.0f));
+    EXPECT_TRUE(level.hasExposure);
+    EXPECT_FLOAT_EQ(level.texelsPerMetre, 6.0f);
     // The level's density drives the charts unless the command line gave one.
     world::CompileOptions options;
-    EXPECT_FLOAT_EQ(world::compile_level(level, options).level.settings.texels_per_metre, 6.0f);
-    options.charts.density_from_command_line = true;
-    EXPECT_FLOAT_EQ(world::compile_level(level, options).level.settings.texels_per_metre, 16.0f);
+    EXPECT_FLOAT_EQ(world::compileLevel(level, options).level.settings.texelsPerMetre, 6.0f);
+    options.charts.densityFromCommandLine = true;
+    EXPECT_FLOAT_EQ(world::compileLevel(level, options).level.settings.texelsPerMetre, 16.0f);
 }
 
 TEST(Import, ProbeSpacingIsTheLevels) {
     GltfBuilder gltf;
-    gltf.add_node({{"name", "tri"}, {"mesh", gltf.add_mesh(one_triangle("tri"))}});
-    gltf.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"probe_spacing", 3.5}}}}}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("spacing_ok"), "spacing"));
-    EXPECT_FLOAT_EQ(level.probe_spacing, 3.5f);
+    gltf.addNode({{"name", "tri"}, {"mesh", gltf.addMesh(oneTriangle("tri"))}});
+    gltf.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"probe_spacing", 3.5}}}}}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("spacing_ok"), "spacing"));
+    EXPECT_FLOAT_EQ(level.probeSpacing, 3.5f);
     world::CompileOptions options;
-    EXPECT_FLOAT_EQ(world::compile_level(level, options).level.settings.probe_spacing, 3.5f);
+    EXPECT_FLOAT_EQ(world::compileLevel(level, options).level.settings.probeSpacing, 3.5f);
 }
 
 // The level's sky: one number (grey) or [r, g, b], cd/m^2, through the compile.
@@ -197,43 +196,43 @@ TEST(Import, SkyIsTheLevels) {
                                         std::pair{nlohmann::json::array({4000.0, 5000.0, 6500.0}),
                                                   glm::vec3(4000, 5000, 6500)}}) {
         GltfBuilder gltf;
-        gltf.add_node({{"name", "tri"}, {"mesh", gltf.add_mesh(one_triangle("tri"))}});
-        gltf.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"sky", sky}}}}}});
-        const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("sky_ok"), "sky"));
-        EXPECT_EQ(level.sky_radiance, expected);
+        gltf.addNode({{"name", "tri"}, {"mesh", gltf.addMesh(oneTriangle("tri"))}});
+        gltf.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"sky", sky}}}}}});
+        const world::SourceLevel level = importGltf(gltf.write(freshFolder("sky_ok"), "sky"));
+        EXPECT_EQ(level.skyRadiance, expected);
         world::CompileOptions options;
-        EXPECT_EQ(world::compile_level(level, options).level.settings.sky_radiance, expected);
+        EXPECT_EQ(world::compileLevel(level, options).level.settings.skyRadiance, expected);
     }
 }
 
 TEST(Import, ImagesAreFileReferencesOrEncodedBytes) {
     GltfBuilder gltf;
-    MeshData mesh = one_triangle("tri");
+    MeshData mesh = oneTriangle("tri");
     mesh.material =
-        gltf.add_material({{"name", "painted"},
-                           {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
-                           {"normalTexture", {{"index", 1}}}});
+        gltf.addMaterial({{"name", "painted"},
+                          {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}},
+                          {"normalTexture", {{"index", 1}}}});
     gltf.document()["textures"] = {{{"source", 0}, {"sampler", 0}}, {{"source", 1}}};
     gltf.document()["samplers"] = {{{"wrapS", 33071}, {"wrapT", 33648}, {"magFilter", 9728}}};
     // "AQID" is base64 for bytes 1 2 3: never decoded as pixels, kept as they are.
     gltf.document()["images"] = {{{"uri", "data:image/png;base64,AQID"}}, {{"uri", "normal.png"}}};
-    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
-    const world::SourceLevel level = import_gltf(gltf.write(fresh_folder("images"), "images"));
+    gltf.addNode({{"name", "n"}, {"mesh", gltf.addMesh(mesh)}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("images"), "images"));
     ASSERT_EQ(level.textures.size(), 2u);
-    EXPECT_EQ(level.textures[0].sampler.wrap_s, 33071);
-    EXPECT_EQ(level.textures[0].sampler.wrap_t, 33648);
-    EXPECT_EQ(level.textures[0].sampler.mag_filter, 9728);
+    EXPECT_EQ(level.textures[0].sampler.wrapS, 33071);
+    EXPECT_EQ(level.textures[0].sampler.wrapT, 33648);
+    EXPECT_EQ(level.textures[0].sampler.magFilter, 9728);
     ASSERT_EQ(level.images.size(), 2u);
-    EXPECT_EQ(level.images[0].encoded_bytes, (std::vector<uint8_t>{1, 2, 3}));
+    EXPECT_EQ(level.images[0].encodedBytes, (std::vector<uint8_t>{1, 2, 3}));
     EXPECT_TRUE(level.images[0].uri.empty());
     EXPECT_NE(level.images[1].uri.find("normal.png"), std::string::npos);
-    EXPECT_TRUE(level.images[1].encoded_bytes.empty());
+    EXPECT_TRUE(level.images[1].encodedBytes.empty());
 }
 
 /// Expects import to throw a Error whose message contains every fragment.
-void expect_error(const std::string& path, std::initializer_list<const char*> fragments) {
+void expectError(const std::string& path, std::initializer_list<const char*> fragments) {
     try {
-        import_gltf(path);
+        importGltf(path);
         FAIL() << "expected a Error for " << path;
     } catch (const Error& e) {
         const std::string message = e.what();
@@ -244,88 +243,88 @@ void expect_error(const std::string& path, std::initializer_list<const char*> fr
 
 TEST(ImportErrors, NanPositionNamesTheMesh) {
     GltfBuilder gltf;
-    MeshData mesh = one_triangle("broken_wall");
+    MeshData mesh = oneTriangle("broken_wall");
     mesh.positions[1].y = std::nanf("");
-    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
-    expect_error(gltf.write(fresh_folder("nan"), "nan"),
-                 {"nan.gltf", "broken_wall", "POSITION", "NaN or Inf"});
+    gltf.addNode({{"name", "n"}, {"mesh", gltf.addMesh(mesh)}});
+    expectError(gltf.write(freshFolder("nan"), "nan"),
+                {"nan.gltf", "broken_wall", "POSITION", "NaN or Inf"});
 }
 
 TEST(ImportErrors, InfPositionNamesTheMesh) {
     GltfBuilder gltf;
-    MeshData mesh = one_triangle("sky");
+    MeshData mesh = oneTriangle("sky");
     mesh.positions[2].x = INFINITY;
-    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
-    expect_error(gltf.write(fresh_folder("inf"), "inf"), {"sky", "NaN or Inf"});
+    gltf.addNode({{"name", "n"}, {"mesh", gltf.addMesh(mesh)}});
+    expectError(gltf.write(freshFolder("inf"), "inf"), {"sky", "NaN or Inf"});
 }
 
 TEST(ImportErrors, IndexOutOfRange) {
     GltfBuilder gltf;
-    MeshData mesh = one_triangle("tri");
+    MeshData mesh = oneTriangle("tri");
     mesh.indices = {0, 1, 7};
-    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(mesh)}});
-    expect_error(gltf.write(fresh_folder("index"), "index"), {"tri", "index 2 is 7"});
+    gltf.addNode({{"name", "n"}, {"mesh", gltf.addMesh(mesh)}});
+    expectError(gltf.write(freshFolder("index"), "index"), {"tri", "index 2 is 7"});
 }
 
 TEST(ImportErrors, AccessorPastItsBuffer) {
     GltfBuilder gltf;
-    gltf.add_node({{"name", "n"}, {"mesh", gltf.add_mesh(one_triangle("tri"))}});
+    gltf.addNode({{"name", "n"}, {"mesh", gltf.addMesh(oneTriangle("tri"))}});
     gltf.document()["accessors"][0]["count"] = 1000;
-    expect_error(gltf.write(fresh_folder("accessor"), "accessor"), {"tri", "POSITION"});
+    expectError(gltf.write(freshFolder("accessor"), "accessor"), {"tri", "POSITION"});
 }
 
 TEST(ImportErrors, BadTexelDensity) {
     GltfBuilder gltf;
-    gltf.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"texels_per_metre", -2.0}}}}}});
-    expect_error(gltf.write(fresh_folder("density"), "density"), {"settings", "texels_per_metre"});
+    gltf.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"texels_per_metre", -2.0}}}}}});
+    expectError(gltf.write(freshFolder("density"), "density"), {"settings", "texels_per_metre"});
 }
 
 TEST(ImportErrors, BadProbeSpacing) {
     for (double spacing : {0.0, -2.0}) {
         GltfBuilder gltf;
-        gltf.add_node(
+        gltf.addNode(
             {{"name", "settings"}, {"extras", {{"onelight", {{"probe_spacing", spacing}}}}}});
-        expect_error(gltf.write(fresh_folder("spacing"), "spacing"),
-                     {"settings", "probe_spacing", "expected metres > 0"});
+        expectError(gltf.write(freshFolder("spacing"), "spacing"),
+                    {"settings", "probe_spacing", "expected metres > 0"});
     }
 }
 
 TEST(ImportErrors, BadSky) {
     GltfBuilder gltf;
-    gltf.add_node({{"name", "settings"},
-                   {"extras", {{"onelight", {{"sky", nlohmann::json::array({1.0, -2.0, 3.0})}}}}}});
-    expect_error(gltf.write(fresh_folder("sky"), "sky"), {"settings", "sky", "cd/m^2 >= 0"});
+    gltf.addNode({{"name", "settings"},
+                  {"extras", {{"onelight", {{"sky", nlohmann::json::array({1.0, -2.0, 3.0})}}}}}});
+    expectError(gltf.write(freshFolder("sky"), "sky"), {"settings", "sky", "cd/m^2 >= 0"});
     GltfBuilder words;
-    words.add_node({{"name", "settings"}, {"extras", {{"onelight", {{"sky", "blue"}}}}}});
-    expect_error(words.write(fresh_folder("sky_words"), "sky"), {"settings", "sky"});
+    words.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"sky", "blue"}}}}}});
+    expectError(words.write(freshFolder("sky_words"), "sky"), {"settings", "sky"});
 }
 
 TEST(ImportErrors, UnknownRole) {
     GltfBuilder gltf;
-    const int lamp = gltf.add_light({{"type", "point"}});
-    gltf.add_node({{"name", "lamp"},
-                   {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
-                   {"extras", {{"onelight", {{"role", "sometimes"}}}}}});
-    expect_error(gltf.write(fresh_folder("role"), "role"), {"lamp", "role", "\"baked\""});
+    const int lamp = gltf.addLight({{"type", "point"}});
+    gltf.addNode({{"name", "lamp"},
+                  {"extensions", {{"KHR_lights_punctual", {{"light", lamp}}}}},
+                  {"extras", {{"onelight", {{"role", "sometimes"}}}}}});
+    expectError(gltf.write(freshFolder("role"), "role"), {"lamp", "role", "\"baked\""});
 }
 
 TEST(ImportErrors, MissingFileAndNotJson) {
-    expect_error("/nonexistent/level.gltf", {"/nonexistent/level.gltf", "cannot open"});
-    const auto folder = fresh_folder("garbage");
+    expectError("/nonexistent/level.gltf", {"/nonexistent/level.gltf", "cannot open"});
+    const auto folder = freshFolder("garbage");
     std::ofstream(folder / "garbage.gltf") << "{ this is not json";
-    expect_error((folder / "garbage.gltf").string(), {"garbage.gltf", "not a valid glTF"});
+    expectError((folder / "garbage.gltf").string(), {"garbage.gltf", "not a valid glTF"});
 }
 
 TEST(ImportAssets, NormalTangentTest) {
-    const std::string path = shared_asset("NormalTangentTest/glTF/NormalTangentTest.gltf");
+    const std::string path = sharedAsset("NormalTangentTest/glTF/NormalTangentTest.gltf");
     if (path.empty()) GTEST_SKIP() << "shared assets absent";
-    const world::SourceLevel level = import_gltf(path);
+    const world::SourceLevel level = importGltf(path);
     size_t triangles = 0;
     for (const world::MeshInstance& i : level.instances) triangles += i.indices.size() / 3;
     EXPECT_EQ(triangles, 7774u);
     ASSERT_EQ(level.materials.size(), 1u);
-    EXPECT_NE(level.materials[0].normal_texture, world::kNoIndex);
-    EXPECT_NE(level.materials[0].base_color_texture, world::kNoIndex);
+    EXPECT_NE(level.materials[0].normalTexture, world::kNoIndex);
+    EXPECT_NE(level.materials[0].baseColorTexture, world::kNoIndex);
     ASSERT_EQ(level.images.size(), 3u);
     for (const world::Image& image : level.images)
         EXPECT_TRUE(std::filesystem::exists(image.uri)) << image.uri;
@@ -334,14 +333,14 @@ TEST(ImportAssets, NormalTangentTest) {
 }
 
 TEST(ImportAssets, TextureSettingsTestSamplers) {
-    const std::string path = shared_asset("TextureSettingsTest/glTF/TextureSettingsTest.gltf");
+    const std::string path = sharedAsset("TextureSettingsTest/glTF/TextureSettingsTest.gltf");
     if (path.empty()) GTEST_SKIP() << "shared assets absent";
-    const world::SourceLevel level = import_gltf(path);
+    const world::SourceLevel level = importGltf(path);
     EXPECT_EQ(level.materials.size(), 10u);
     bool clamp = false, mirror = false;
     for (const world::Texture& t : level.textures) {
-        clamp |= t.sampler.wrap_t == 33071 || t.sampler.wrap_s == 33071;
-        mirror |= t.sampler.wrap_t == 33648 || t.sampler.wrap_s == 33648;
+        clamp |= t.sampler.wrapT == 33071 || t.sampler.wrapS == 33071;
+        mirror |= t.sampler.wrapT == 33648 || t.sampler.wrapS == 33648;
     }
     EXPECT_TRUE(clamp);
     EXPECT_TRUE(mirror);

@@ -10,22 +10,22 @@
 namespace onelight::test {
 
 struct GeneratedLevelOptions {
-    int ground_cells = 160;  // ground is ground_cells^2 quads
+    int groundCells = 160;  // ground is groundCells^2 quads
     int buildings = 80;
-    int building_cells = 16;  // quads per side of each building face (5 faces, open bottom)
-    int dynamic_crates = 8;
+    int buildingCells = 16;  // quads per side of each building face (5 faces, open bottom)
+    int dynamicCrates = 8;
     bool lights = true;
     uint32_t seed = 1;
 };
 
 /// Options whose static triangle count is close to `triangles` (about 80% buildings).
-GeneratedLevelOptions options_for_triangles(uint64_t triangles);
+GeneratedLevelOptions optionsForTriangles(uint64_t triangles);
 
 /// Static triangles the options produce (before the compile's splits).
-uint64_t generated_triangle_count(const GeneratedLevelOptions& options);
+uint64_t generatedTriangleCount(const GeneratedLevelOptions& options);
 
 /// Writes NAME.gltf and NAME.bin into `folder`; returns the .gltf path.
-std::string write_generated_level(const std::filesystem::path& folder, const std::string& name,
-                                  const GeneratedLevelOptions& options);
+std::string writeGeneratedLevel(const std::filesystem::path& folder, const std::string& name,
+                                const GeneratedLevelOptions& options);
 
 }  // namespace onelight::test

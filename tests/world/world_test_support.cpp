@@ -8,31 +8,30 @@
 
 namespace onelight::test {
 
-world::CompileResult compile_file(const std::string& path, const world::CompileOptions& options) {
-    return world::compile_level(world::import_gltf(path), options);
+world::CompileResult compileFile(const std::string& path, const world::CompileOptions& options) {
+    return world::compileLevel(world::importGltf(path), options);
 }
 
-std::string shared_asset(const std::string& relative) {
+std::string sharedAsset(const std::string& relative) {
     const std::filesystem::path path = std::filesystem::path(ONELIGHT_SHARED_ASSETS) / relative;
     return std::filesystem::exists(path) ? path.string() : std::string();
 }
 
-std::string write_two_lamp_floor(const std::string& label, int cells, double size, bool lights) {
+std::string writeTwoLampFloor(const std::string& label, int cells, double size, bool lights) {
     GltfBuilder gltf;
-    gltf.add_node(
-        {{"name", "floor"}, {"mesh", gltf.add_mesh(grid_mesh("floor", cells, size, 0.0))}});
+    gltf.addNode({{"name", "floor"}, {"mesh", gltf.addMesh(gridMesh("floor", cells, size, 0.0))}});
     if (lights) {
         for (int i = 0; i < 2; ++i) {
-            const int light = gltf.add_light({{"type", "point"}, {"intensity", 100.0}});
-            gltf.add_node({{"name", i == 0 ? "west" : "east"},
-                           {"translation", {(i == 0 ? -0.25 : 0.25) * size, 2.0, 0.0}},
-                           {"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
+            const int light = gltf.addLight({{"type", "point"}, {"intensity", 100.0}});
+            gltf.addNode({{"name", i == 0 ? "west" : "east"},
+                          {"translation", {(i == 0 ? -0.25 : 0.25) * size, 2.0, 0.0}},
+                          {"extensions", {{"KHR_lights_punctual", {{"light", light}}}}}});
         }
     }
-    return gltf.write(fresh_folder(label), label);
+    return gltf.write(freshFolder(label), label);
 }
 
-std::filesystem::path fresh_folder(const std::string& label) {
+std::filesystem::path freshFolder(const std::string& label) {
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() /
         ("onelight-world-" + label + "-" + std::to_string(getpid()));

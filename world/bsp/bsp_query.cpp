@@ -9,19 +9,19 @@ namespace {
 
 using Triangle = std::array<glm::dvec3, 3>;
 
-Triangle triangle_at(const BspView& bsp, uint32_t triangle) {
+Triangle triangleAt(const BspView& bsp, uint32_t triangle) {
     return {glm::dvec3(bsp.vertices[bsp.indices[3 * triangle]].position),
             glm::dvec3(bsp.vertices[bsp.indices[3 * triangle + 1]].position),
             glm::dvec3(bsp.vertices[bsp.indices[3 * triangle + 2]].position)};
 }
 
-double plane_distance(const BspPlane& plane, const glm::dvec3& p) {
+double planeDistance(const BspPlane& plane, const glm::dvec3& p) {
     return glm::dot(plane.normal, p) - plane.distance;
 }
 
 /// Moeller and Trumbore 1997, "Fast, Minimum Storage Ray/Triangle Intersection"; both sides.
-bool ray_triangle(const glm::dvec3& origin, const glm::dvec3& direction, const Triangle& tri,
-                  double& t) {
+bool rayTriangle(const glm::dvec3& origin, const glm::dvec3& direction, const Triangle& tri,
+                 double& t) {
     const glm::dvec3 e1 = tri[1] - tri[0], e2 = tri[2] - tri[0];
     const glm::dvec3 p = glm::cross(direction, e2);
     const double det = glm::dot(e1, p);
@@ -38,7 +38,7 @@ bool ray_triangle(const glm::dvec3& origin, const glm::dvec3& direction, const T
 }
 
 /// Ericson 2005, "Real-Time Collision Detection", 5.1.5 ClosestPtPointTriangle.
-glm::dvec3 closest_point_on_triangle(const glm::dvec3& p, const Triangle& tri) {
+glm::dvec3 closestPointOnTriangle(const glm::dvec3& p, const Triangle& tri) {
     const glm::dvec3 &a = tri[0], &b = tri[1], &c = tri[2];
     const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
     const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
@@ -61,8 +61,8 @@ glm::dvec3 closest_point_on_triangle(const glm::dvec3& p, const Triangle& tri) {
 }
 
 /// Smallest t in [0, 1] with |start + t d - centre| = r, for a start outside the sphere.
-bool segment_sphere(const glm::dvec3& start, const glm::dvec3& d, const glm::dvec3& centre,
-                    double r, double& t) {
+bool segmentSphere(const glm::dvec3& start, const glm::dvec3& d, const glm::dvec3& centre, double r,
+                   double& t) {
     const glm::dvec3 m = start - centre;
     const double a = glm::dot(d, d), b = glm::dot(m, d), c = glm::dot(m, m) - r * r;
     if (a == 0.0) return false;
@@ -74,45 +74,45 @@ bool segment_sphere(const glm::dvec3& start, const glm::dvec3& d, const glm::dve
 
 /// Smallest t in [0, 1] where the moving point is at distance r from segment [p, q]'s
 /// interior (infinite cylinder, clamped to the segment).
-bool segment_cylinder(const glm::dvec3& start, const glm::dvec3& d, const glm::dvec3& p,
-                      const glm::dvec3& q, double r, double& t) {
+bool segmentCylinder(const glm::dvec3& start, const glm::dvec3& d, const glm::dvec3& p,
+                     const glm::dvec3& q, double r, double& t) {
     const glm::dvec3 axis = q - p;
-    const double axis_length2 = glm::dot(axis, axis);
-    if (axis_length2 == 0.0) return false;
+    const double axisLength2 = glm::dot(axis, axis);
+    if (axisLength2 == 0.0) return false;
     const glm::dvec3 m = start - p;
     // Components perpendicular to the axis.
-    const glm::dvec3 dp = d - axis * (glm::dot(d, axis) / axis_length2);
-    const glm::dvec3 mp = m - axis * (glm::dot(m, axis) / axis_length2);
+    const glm::dvec3 dp = d - axis * (glm::dot(d, axis) / axisLength2);
+    const glm::dvec3 mp = m - axis * (glm::dot(m, axis) / axisLength2);
     const double a = glm::dot(dp, dp), b = glm::dot(mp, dp), c = glm::dot(mp, mp) - r * r;
     if (a == 0.0) return false;
     const double disc = b * b - a * c;
     if (disc < 0.0) return false;
     t = (-b - std::sqrt(disc)) / a;
     if (t < 0.0 || t > 1.0) return false;
-    const double s = glm::dot(m + d * t, axis) / axis_length2;
+    const double s = glm::dot(m + d * t, axis) / axisLength2;
     return s >= 0.0 && s <= 1.0;
 }
 
 /// First contact of a sphere moving start -> start + d with a triangle; t in [0, 1].
-bool sweep_sphere_triangle(const glm::dvec3& start, const glm::dvec3& d, double r,
-                           const Triangle& tri, double& t) {
-    if (glm::length(start - closest_point_on_triangle(start, tri)) < r) {
+bool sweepSphereTriangle(const glm::dvec3& start, const glm::dvec3& d, double r,
+                         const Triangle& tri, double& t) {
+    if (glm::length(start - closestPointOnTriangle(start, tri)) < r) {
         t = 0.0;
         return true;
     }
     double best = std::numeric_limits<double>::infinity();
     // Face: the centre reaches distance r from the plane inside the triangle.
-    const glm::dvec3 n_raw = glm::cross(tri[1] - tri[0], tri[2] - tri[0]);
-    const double n_length = glm::length(n_raw);
-    if (n_length > 0.0) {
-        const glm::dvec3 n = n_raw / n_length;
+    const glm::dvec3 nRaw = glm::cross(tri[1] - tri[0], tri[2] - tri[0]);
+    const double nLength = glm::length(nRaw);
+    if (nLength > 0.0) {
+        const glm::dvec3 n = nRaw / nLength;
         const double s0 = glm::dot(n, start - tri[0]), speed = glm::dot(n, d);
         if (speed != 0.0) {
             const double side = s0 >= 0.0 ? 1.0 : -1.0;
             const double tf = (side * r - s0) / speed;
             if (tf >= 0.0 && tf <= 1.0) {
                 const glm::dvec3 contact = start + d * tf - n * (side * r);
-                const glm::dvec3 closest = closest_point_on_triangle(contact, tri);
+                const glm::dvec3 closest = closestPointOnTriangle(contact, tri);
                 if (glm::length(contact - closest) <= 1e-9 * (1.0 + glm::length(contact)))
                     best = tf;
             }
@@ -120,17 +120,17 @@ bool sweep_sphere_triangle(const glm::dvec3& start, const glm::dvec3& d, double 
     }
     double te;
     for (int k = 0; k < 3; ++k) {
-        if (segment_cylinder(start, d, tri[static_cast<size_t>(k)],
-                             tri[static_cast<size_t>((k + 1) % 3)], r, te))
+        if (segmentCylinder(start, d, tri[static_cast<size_t>(k)],
+                            tri[static_cast<size_t>((k + 1) % 3)], r, te))
             best = std::min(best, te);
-        if (segment_sphere(start, d, tri[static_cast<size_t>(k)], r, te)) best = std::min(best, te);
+        if (segmentSphere(start, d, tri[static_cast<size_t>(k)], r, te)) best = std::min(best, te);
     }
     if (!std::isfinite(best)) return false;
     t = best;
     return true;
 }
 
-bool box_outside(const Frustum& frustum, const glm::vec3& lo, const glm::vec3& hi) {
+bool boxOutside(const Frustum& frustum, const glm::vec3& lo, const glm::vec3& hi) {
     for (const glm::dvec4& p : frustum.planes) {
         const glm::dvec3 corner(p.x >= 0.0 ? hi.x : lo.x, p.y >= 0.0 ? hi.y : lo.y,
                                 p.z >= 0.0 ? hi.z : lo.z);
@@ -142,16 +142,16 @@ bool box_outside(const Frustum& frustum, const glm::vec3& lo, const glm::vec3& h
 struct RayWalk {
     const BspView& bsp;
     glm::dvec3 origin, direction;
-    double t_max;
+    double tMax;
     RayHit best;
 
     void leaf(uint32_t index) {
         const BspLeaf& l = bsp.leaves[index];
-        for (uint32_t i = 0; i < l.triangle_count; ++i) {
+        for (uint32_t i = 0; i < l.triangleCount; ++i) {
             double t;
-            const uint32_t tri = l.first_triangle + i;
-            if (ray_triangle(origin, direction, triangle_at(bsp, tri), t) && t >= 0.0 &&
-                t <= t_max && (!best.hit || t < best.t || (t == best.t && tri < best.triangle))) {
+            const uint32_t tri = l.firstTriangle + i;
+            if (rayTriangle(origin, direction, triangleAt(bsp, tri), t) && t >= 0.0 && t <= tMax &&
+                (!best.hit || t < best.t || (t == best.t && tri < best.triangle))) {
                 best = {true, t, tri};
             }
         }
@@ -161,23 +161,23 @@ struct RayWalk {
         if (child < 0) return leaf(static_cast<uint32_t>(-child - 1));
         const BspNode& node = bsp.nodes[static_cast<size_t>(child)];
         const BspPlane& plane = bsp.planes[node.plane];
-        const double d0 = plane_distance(plane, origin + direction * t0);
-        const double d1 = plane_distance(plane, origin + direction * t1);
+        const double d0 = planeDistance(plane, origin + direction * t0);
+        const double d1 = planeDistance(plane, origin + direction * t1);
         const double e = bsp.epsilon;
         if (d0 >= e && d1 >= e) return walk(node.front, t0, t1);
         if (d0 <= -e && d1 <= -e) return walk(node.back, t0, t1);
-        const bool front_first = d0 >= 0.0;
-        const int32_t near_child = front_first ? node.front : node.back;
-        const int32_t far_child = front_first ? node.back : node.front;
+        const bool frontFirst = d0 >= 0.0;
+        const int32_t nearChild = frontFirst ? node.front : node.back;
+        const int32_t farChild = frontFirst ? node.back : node.front;
         // Where the ray enters the far side's slab (|d| within e counts as both sides).
-        const double toward_far = front_first ? d0 - d1 : d1 - d0;  // > 0 when heading there
-        double t_far = t0;
-        if (toward_far > 0.0) {
-            const double start = front_first ? d0 - e : -d0 - e;  // distance to the far slab
-            t_far = t0 + std::clamp(start / toward_far, 0.0, 1.0) * (t1 - t0);
+        const double towardFar = frontFirst ? d0 - d1 : d1 - d0;  // > 0 when heading there
+        double tFar = t0;
+        if (towardFar > 0.0) {
+            const double start = frontFirst ? d0 - e : -d0 - e;  // distance to the far slab
+            tFar = t0 + std::clamp(start / towardFar, 0.0, 1.0) * (t1 - t0);
         }
-        walk(near_child, t0, t1);
-        if (!best.hit || best.t >= t_far) walk(far_child, t_far, t1);
+        walk(nearChild, t0, t1);
+        if (!best.hit || best.t >= tFar) walk(farChild, tFar, t1);
     }
 };
 
@@ -189,10 +189,10 @@ struct SphereWalk {
 
     void leaf(uint32_t index) {
         const BspLeaf& l = bsp.leaves[index];
-        for (uint32_t i = 0; i < l.triangle_count; ++i) {
-            const uint32_t tri = l.first_triangle + i;
+        for (uint32_t i = 0; i < l.triangleCount; ++i) {
+            const uint32_t tri = l.firstTriangle + i;
             double t;
-            if (!sweep_sphere_triangle(start, delta, radius, triangle_at(bsp, tri), t)) continue;
+            if (!sweepSphereTriangle(start, delta, radius, triangleAt(bsp, tri), t)) continue;
             if (!best.hit || t < best.fraction || (t == best.fraction && tri < best.triangle)) {
                 best.hit = true;
                 best.fraction = t;
@@ -205,7 +205,7 @@ struct SphereWalk {
         if (child < 0) return leaf(static_cast<uint32_t>(-child - 1));
         const BspNode& node = bsp.nodes[static_cast<size_t>(child)];
         const BspPlane& plane = bsp.planes[node.plane];
-        const double d0 = plane_distance(plane, start), d1 = plane_distance(plane, start + delta);
+        const double d0 = planeDistance(plane, start), d1 = planeDistance(plane, start + delta);
         const double reach = radius + bsp.epsilon;
         if (d0 >= reach && d1 >= reach) return walk(node.front);
         if (d0 <= -reach && d1 <= -reach) return walk(node.back);
@@ -218,13 +218,13 @@ SweepHit finish(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& d
                 SweepHit hit) {
     if (!hit.hit) return hit;
     const glm::dvec3 centre = start + delta * hit.fraction;
-    const glm::dvec3 contact = closest_point_on_triangle(centre, triangle_at(bsp, hit.triangle));
+    const glm::dvec3 contact = closestPointOnTriangle(centre, triangleAt(bsp, hit.triangle));
     const glm::dvec3 away = centre - contact;
     const double length = glm::length(away);
     if (length > 0.0) {
         hit.normal = away / length;
     } else {
-        const Triangle tri = triangle_at(bsp, hit.triangle);
+        const Triangle tri = triangleAt(bsp, hit.triangle);
         const glm::dvec3 n = glm::cross(tri[1] - tri[0], tri[2] - tri[0]);
         hit.normal = glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0.0, 0.0, 1.0);
     }
@@ -233,44 +233,44 @@ SweepHit finish(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& d
 
 }  // namespace
 
-BspView bsp_view(const CompiledLevel& level) {
+BspView bspView(const CompiledLevel& level) {
     BspView view;
-    view.planes = level.bsp_planes;
-    view.nodes = level.bsp_nodes;
-    view.leaves = level.bsp_leaves;
+    view.planes = level.bspPlanes;
+    view.nodes = level.bspNodes;
+    view.leaves = level.bspLeaves;
     view.vertices = level.vertices;
     view.indices = level.indices;
-    double max_abs = 0.0;
+    double maxAbs = 0.0;
     for (const Vertex& v : level.vertices)
-        max_abs = std::max({max_abs, double(std::abs(v.position.x)), double(std::abs(v.position.y)),
-                            double(std::abs(v.position.z))});
-    view.epsilon = bsp_query_epsilon(max_abs);
+        maxAbs = std::max({maxAbs, double(std::abs(v.position.x)), double(std::abs(v.position.y)),
+                           double(std::abs(v.position.z))});
+    view.epsilon = bspQueryEpsilon(maxAbs);
     return view;
 }
 
-double bsp_build_epsilon(double max_abs_coordinate) {
-    return std::max(1e-5, 4.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) *
-                              max_abs_coordinate);
+double bspBuildEpsilon(double maxAbsCoordinate) {
+    return std::max(
+        1e-5, 4.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * maxAbsCoordinate);
 }
 
-double bsp_query_epsilon(double max_abs_coordinate) {
+double bspQueryEpsilon(double maxAbsCoordinate) {
     // The build's tolerance plus the rounding of the vertices to float.
-    return bsp_build_epsilon(max_abs_coordinate) +
-           4.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * max_abs_coordinate;
+    return bspBuildEpsilon(maxAbsCoordinate) +
+           4.0 * static_cast<double>(std::numeric_limits<float>::epsilon()) * maxAbsCoordinate;
 }
 
-uint32_t find_leaf(const BspView& bsp, const glm::dvec3& point) {
+uint32_t findLeaf(const BspView& bsp, const glm::dvec3& point) {
     if (bsp.nodes.empty()) return 0;
     int32_t child = 0;
     while (child >= 0) {
         const BspNode& node = bsp.nodes[static_cast<size_t>(child)];
-        child = plane_distance(bsp.planes[node.plane], point) >= 0.0 ? node.front : node.back;
+        child = planeDistance(bsp.planes[node.plane], point) >= 0.0 ? node.front : node.back;
     }
     return static_cast<uint32_t>(-child - 1);
 }
 
-void leaves_front_to_back(const BspView& bsp, const glm::dvec3& eye,
-                          const std::function<void(uint32_t leaf)>& visit, const Frustum* frustum) {
+void leavesFrontToBack(const BspView& bsp, const glm::dvec3& eye,
+                       const std::function<void(uint32_t leaf)>& visit, const Frustum* frustum) {
     if (bsp.nodes.empty()) {
         if (!bsp.leaves.empty()) visit(0);
         return;
@@ -282,46 +282,45 @@ void leaves_front_to_back(const BspView& bsp, const glm::dvec3& eye,
         if (child < 0) {
             const uint32_t leaf = static_cast<uint32_t>(-child - 1);
             const BspLeaf& l = bsp.leaves[leaf];
-            if (frustum && l.triangle_count > 0 &&
-                box_outside(*frustum, l.bounds_min, l.bounds_max))
+            if (frustum && l.triangleCount > 0 && boxOutside(*frustum, l.boundsMin, l.boundsMax))
                 continue;
             visit(leaf);
             continue;
         }
         const BspNode& node = bsp.nodes[static_cast<size_t>(child)];
-        if (frustum && box_outside(*frustum, node.bounds_min, node.bounds_max)) continue;
-        const bool eye_in_front = plane_distance(bsp.planes[node.plane], eye) >= 0.0;
+        if (frustum && boxOutside(*frustum, node.boundsMin, node.boundsMax)) continue;
+        const bool eyeInFront = planeDistance(bsp.planes[node.plane], eye) >= 0.0;
         // Far side pushed first so the near side pops first.
-        stack.push_back(eye_in_front ? node.back : node.front);
-        stack.push_back(eye_in_front ? node.front : node.back);
+        stack.push_back(eyeInFront ? node.back : node.front);
+        stack.push_back(eyeInFront ? node.front : node.back);
     }
 }
 
 RayHit raycast(const BspView& bsp, const glm::dvec3& origin, const glm::dvec3& direction,
-               double t_max) {
-    RayWalk walk{bsp, origin, direction, t_max, {}};
+               double tMax) {
+    RayWalk walk{bsp, origin, direction, tMax, {}};
     if (bsp.nodes.empty()) {
         if (!bsp.leaves.empty()) walk.leaf(0);
     } else {
-        walk.walk(0, 0.0, t_max);
+        walk.walk(0, 0.0, tMax);
     }
     return walk.best;
 }
 
-RayHit raycast_brute_force(const BspView& bsp, const glm::dvec3& origin,
-                           const glm::dvec3& direction, double t_max) {
+RayHit raycastBruteForce(const BspView& bsp, const glm::dvec3& origin, const glm::dvec3& direction,
+                         double tMax) {
     RayHit best;
     for (uint32_t tri = 0; tri < bsp.indices.size() / 3; ++tri) {
         double t;
-        if (ray_triangle(origin, direction, triangle_at(bsp, tri), t) && t >= 0.0 && t <= t_max &&
+        if (rayTriangle(origin, direction, triangleAt(bsp, tri), t) && t >= 0.0 && t <= tMax &&
             (!best.hit || t < best.t))
             best = {true, t, tri};
     }
     return best;
 }
 
-SweepHit sweep_sphere(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& end,
-                      double radius) {
+SweepHit sweepSphere(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& end,
+                     double radius) {
     SphereWalk walk{bsp, start, end - start, radius, {}};
     if (bsp.nodes.empty()) {
         if (!bsp.leaves.empty()) walk.leaf(0);
@@ -331,12 +330,12 @@ SweepHit sweep_sphere(const BspView& bsp, const glm::dvec3& start, const glm::dv
     return finish(bsp, start, end - start, walk.best);
 }
 
-SweepHit sweep_sphere_brute_force(const BspView& bsp, const glm::dvec3& start,
-                                  const glm::dvec3& end, double radius) {
+SweepHit sweepSphereBruteForce(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& end,
+                               double radius) {
     SweepHit best;
     for (uint32_t tri = 0; tri < bsp.indices.size() / 3; ++tri) {
         double t;
-        if (!sweep_sphere_triangle(start, end - start, radius, triangle_at(bsp, tri), t)) continue;
+        if (!sweepSphereTriangle(start, end - start, radius, triangleAt(bsp, tri), t)) continue;
         if (!best.hit || t < best.fraction) {
             best.hit = true;
             best.fraction = t;

@@ -25,17 +25,17 @@ struct BspView {
     double epsilon = 1e-5;              // metres; plane-side slack of the traversal
 };
 
-BspView bsp_view(const CompiledLevel& level);
+BspView bspView(const CompiledLevel& level);
 
-/// The build's plane-side tolerance for a level whose coordinates reach `max_abs_coordinate`
+/// The build's plane-side tolerance for a level whose coordinates reach `maxAbsCoordinate`
 /// metres: a few float ulps there (authored data is float), never below 1e-5 m.
-double bsp_build_epsilon(double max_abs_coordinate);
+double bspBuildEpsilon(double maxAbsCoordinate);
 
 /// The queries' slack: the build's tolerance plus the rounding of vertices to float.
-double bsp_query_epsilon(double max_abs_coordinate);
+double bspQueryEpsilon(double maxAbsCoordinate);
 
 /// The leaf whose region holds `point` (points on a plane go to the front).
-uint32_t find_leaf(const BspView& bsp, const glm::dvec3& point);
+uint32_t findLeaf(const BspView& bsp, const glm::dvec3& point);
 
 /// A frustum as six planes (xyz normal pointing inside, w offset): inside when dot >= -w.
 struct Frustum {
@@ -44,21 +44,21 @@ struct Frustum {
 
 /// Calls `visit(leaf)` for every leaf, nearest the eye first; with a frustum, subtrees whose
 /// bounds are outside are skipped.
-void leaves_front_to_back(const BspView& bsp, const glm::dvec3& eye,
-                          const std::function<void(uint32_t leaf)>& visit,
-                          const Frustum* frustum = nullptr);
+void leavesFrontToBack(const BspView& bsp, const glm::dvec3& eye,
+                       const std::function<void(uint32_t leaf)>& visit,
+                       const Frustum* frustum = nullptr);
 
 struct RayHit {
     bool hit = false;
-    double t = 0.0;             // distance along the unit direction, metres
+    double t = 0.0;                // distance along the unit direction, metres
     uint32_t triangle = kNoIndex;  // first index / 3
 };
 
-/// First triangle (either side) hit by origin + t * direction, 0 <= t <= t_max.
+/// First triangle (either side) hit by origin + t * direction, 0 <= t <= tMax.
 RayHit raycast(const BspView& bsp, const glm::dvec3& origin, const glm::dvec3& direction,
-               double t_max);
-RayHit raycast_brute_force(const BspView& bsp, const glm::dvec3& origin,
-                           const glm::dvec3& direction, double t_max);
+               double tMax);
+RayHit raycastBruteForce(const BspView& bsp, const glm::dvec3& origin, const glm::dvec3& direction,
+                         double tMax);
 
 struct SweepHit {
     bool hit = false;
@@ -68,9 +68,9 @@ struct SweepHit {
 };
 
 /// First contact of a sphere of `radius` whose centre moves from start to end.
-SweepHit sweep_sphere(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& end,
-                      double radius);
-SweepHit sweep_sphere_brute_force(const BspView& bsp, const glm::dvec3& start,
-                                  const glm::dvec3& end, double radius);
+SweepHit sweepSphere(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& end,
+                     double radius);
+SweepHit sweepSphereBruteForce(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& end,
+                               double radius);
 
 }  // namespace onelight::world

@@ -9,7 +9,7 @@ namespace onelight::world {
 namespace {
 
 /// Welded vertex ids: vertices at the same exact position share one id.
-std::vector<uint32_t> weld_positions(const StaticGeometry& geometry) {
+std::vector<uint32_t> weldPositions(const StaticGeometry& geometry) {
     std::vector<uint32_t> order(geometry.vertices.size());
     std::iota(order.begin(), order.end(), 0u);
     const auto key = [&](uint32_t i) {
@@ -29,8 +29,8 @@ std::vector<uint32_t> weld_positions(const StaticGeometry& geometry) {
 }
 
 /// For each triangle, the triangles across each of its edges (by welded position).
-std::vector<std::vector<uint32_t>> edge_neighbours(const StaticGeometry& geometry) {
-    const std::vector<uint32_t> welded = weld_positions(geometry);
+std::vector<std::vector<uint32_t>> edgeNeighbours(const StaticGeometry& geometry) {
+    const std::vector<uint32_t> welded = weldPositions(geometry);
     struct EdgeUse {
         uint32_t a, b, triangle;
     };
@@ -60,14 +60,14 @@ std::vector<std::vector<uint32_t>> edge_neighbours(const StaticGeometry& geometr
     return neighbours;
 }
 
-glm::dvec3 unit_normal(const StaticGeometry& geometry, const StaticTriangle& t) {
-    const glm::dvec3 n = area_vector(geometry, t);
+glm::dvec3 unitNormal(const StaticGeometry& geometry, const StaticTriangle& t) {
+    const glm::dvec3 n = areaVector(geometry, t);
     const double length = glm::length(n);
     return length > 0.0 ? n / length : glm::dvec3(0.0, 0.0, 1.0);
 }
 
 /// A deterministic tangent frame for a plane normal.
-void plane_axes(const glm::dvec3& n, glm::dvec3& u, glm::dvec3& v) {
+void planeAxes(const glm::dvec3& n, glm::dvec3& u, glm::dvec3& v) {
     const glm::dvec3 a = std::abs(n.x) < 0.57   ? glm::dvec3(1, 0, 0)
                          : std::abs(n.y) < 0.57 ? glm::dvec3(0, 1, 0)
                                                 : glm::dvec3(0, 0, 1);
@@ -77,21 +77,21 @@ void plane_axes(const glm::dvec3& n, glm::dvec3& u, glm::dvec3& v) {
 
 }  // namespace
 
-std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const ChartOptions& options) {
+std::vector<ChartShape> buildChartShapes(StaticGeometry& geometry, const ChartOptions& options) {
     std::vector<ChartShape> shapes;
-    const double max_extent_texels =
-        static_cast<double>(options.atlas_size) - 2.0 * options.padding - 1.0;
-    const double max_extent_metres = max_extent_texels / options.texels_per_metre;
-    const double cos_limit = std::cos(options.max_normal_angle_degrees * 3.14159265358979 / 180.0);
+    const double maxExtentTexels =
+        static_cast<double>(options.atlasSize) - 2.0 * options.padding - 1.0;
+    const double maxExtentMetres = maxExtentTexels / options.texelsPerMetre;
+    const double cosLimit = std::cos(options.maxNormalAngleDegrees * 3.14159265358979 / 180.0);
 
     // Authored: one chart per instance that has TEXCOORD_1.
-    std::vector<uint32_t> authored_chart(geometry.instance_has_uv1.size(), kNoIndex);
+    std::vector<uint32_t> authoredChart(geometry.instanceHasUv1.size(), kNoIndex);
     for (uint32_t t = 0; t < geometry.triangles.size(); ++t) {
         StaticTriangle& triangle = geometry.triangles[t];
-        if (triangle.instance >= geometry.instance_has_uv1.size() ||
-            !geometry.instance_has_uv1[triangle.instance])
+        if (triangle.instance >= geometry.instanceHasUv1.size() ||
+            !geometry.instanceHasUv1[triangle.instance])
             continue;
-        uint32_t& chart = authored_chart[triangle.instance];
+        uint32_t& chart = authoredChart[triangle.instance];
         if (chart == kNoIndex) {
             chart = static_cast<uint32_t>(shapes.size());
             ChartShape shape;
@@ -103,13 +103,13 @@ std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const Chart
         triangle.chart = chart;
     }
 
-    const std::vector<std::vector<uint32_t>> neighbours = edge_neighbours(geometry);
+    const std::vector<std::vector<uint32_t>> neighbours = edgeNeighbours(geometry);
     for (uint32_t seed = 0; seed < geometry.triangles.size(); ++seed) {
         if (geometry.triangles[seed].chart != kNoIndex) continue;
         ChartShape shape;
         shape.instance = geometry.triangles[seed].instance;
-        shape.normal = unit_normal(geometry, geometry.triangles[seed]);
-        plane_axes(shape.normal, shape.axis_u, shape.axis_v);
+        shape.normal = unitNormal(geometry, geometry.triangles[seed]);
+        planeAxes(shape.normal, shape.axisU, shape.axisV);
         const uint32_t chart = static_cast<uint32_t>(shapes.size());
         glm::dvec2 lo(INFINITY), hi(-INFINITY);
         const auto project = [&](uint32_t t, glm::dvec2& tlo, glm::dvec2& thi) {
@@ -117,7 +117,7 @@ std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const Chart
             thi = hi;
             for (uint32_t id : geometry.triangles[t].v) {
                 const glm::dvec3& p = geometry.vertices[id].position;
-                const glm::dvec2 q(glm::dot(p, shape.axis_u), glm::dot(p, shape.axis_v));
+                const glm::dvec2 q(glm::dot(p, shape.axisU), glm::dot(p, shape.axisV));
                 tlo = glm::min(tlo, q);
                 thi = glm::max(thi, q);
             }
@@ -134,27 +134,26 @@ std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const Chart
                 if (other.chart != kNoIndex || other.primary != primary ||
                     other.instance != shape.instance)
                     continue;
-                if (glm::dot(unit_normal(geometry, other), shape.normal) < cos_limit) continue;
+                if (glm::dot(unitNormal(geometry, other), shape.normal) < cosLimit) continue;
                 glm::dvec2 glo, ghi;
                 project(g, glo, ghi);
-                if (ghi.x - glo.x > max_extent_metres || ghi.y - glo.y > max_extent_metres)
-                    continue;
+                if (ghi.x - glo.x > maxExtentMetres || ghi.y - glo.y > maxExtentMetres) continue;
                 lo = glo;
                 hi = ghi;
                 geometry.triangles[g].chart = chart;
                 queue.push_back(g);
             }
         }
-        shape.min_uv = lo;
-        shape.max_uv = hi;
+        shape.minUv = lo;
+        shape.maxUv = hi;
         // A single triangle larger than an atlas lowers its chart's density.
         const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
-        shape.texels_per_metre =
-            std::min(options.texels_per_metre,
-                     extent > 0.0 ? max_extent_texels / extent : options.texels_per_metre);
-        shape.width = static_cast<uint32_t>(std::ceil((hi.x - lo.x) * shape.texels_per_metre)) +
+        shape.texelsPerMetre =
+            std::min(options.texelsPerMetre,
+                     extent > 0.0 ? maxExtentTexels / extent : options.texelsPerMetre);
+        shape.width = static_cast<uint32_t>(std::ceil((hi.x - lo.x) * shape.texelsPerMetre)) +
                       2 * options.padding;
-        shape.height = static_cast<uint32_t>(std::ceil((hi.y - lo.y) * shape.texels_per_metre)) +
+        shape.height = static_cast<uint32_t>(std::ceil((hi.y - lo.y) * shape.texelsPerMetre)) +
                        2 * options.padding;
         shape.width = std::max(shape.width, 2 * options.padding + 1);
         shape.height = std::max(shape.height, 2 * options.padding + 1);

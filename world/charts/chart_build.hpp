@@ -11,11 +11,11 @@
 namespace onelight::world {
 
 struct ChartOptions {
-    double texels_per_metre = 16.0;  // requested density; a chart too big for an atlas gets less
-    bool density_from_command_line = false;  // when false, a level's own density wins
-    uint32_t atlas_size = 1024;              // texels per side of a generated atlas
-    uint32_t padding = 2;                    // texels kept free on each side of a chart, >= 2
-    double max_normal_angle_degrees = 40.0;  // between a triangle and its chart's normal
+    double texelsPerMetre = 16.0;  // requested density; a chart too big for an atlas gets less
+    bool densityFromCommandLine = false;  // when false, a level's own density wins
+    uint32_t atlasSize = 1024;            // texels per side of a generated atlas
+    uint32_t padding = 2;                 // texels kept free on each side of a chart, >= 2
+    double maxNormalAngleDegrees = 40.0;  // between a triangle and its chart's normal
 };
 
 /// A generated chart before packing: its triangles and its planar projection.
@@ -23,13 +23,13 @@ struct ChartShape {
     std::vector<uint32_t> triangles;  // into StaticGeometry::triangles
     uint32_t instance = kNoIndex;
     bool authored = false;
-    glm::dvec3 normal{0.0}, axis_u{0.0}, axis_v{0.0};
-    glm::dvec2 min_uv{0.0}, max_uv{0.0};  // metres along axis_u / axis_v
-    double texels_per_metre = 0.0;
+    glm::dvec3 normal{0.0}, axisU{0.0}, axisV{0.0};
+    glm::dvec2 minUv{0.0}, maxUv{0.0};  // metres along axisU / axisV
+    double texelsPerMetre = 0.0;
     uint32_t width = 0, height = 0;  // texels, padding included
 };
 
 /// Groups the triangles into chart shapes and sets StaticTriangle::chart to the shape index.
-std::vector<ChartShape> build_chart_shapes(StaticGeometry& geometry, const ChartOptions& options);
+std::vector<ChartShape> buildChartShapes(StaticGeometry& geometry, const ChartOptions& options);
 
 }  // namespace onelight::world

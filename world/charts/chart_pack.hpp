@@ -12,16 +12,16 @@ namespace onelight::world {
 struct ChartLayout {
     std::vector<Chart> charts;  // one per shape, same order
     std::vector<Atlas> atlases;
-    uint64_t texel_count = 0;  // sum of atlas areas
-    double fill_ratio = 0.0;   // triangle area in texels / texel_count
+    uint64_t texelCount = 0;  // sum of atlas areas
+    double fillRatio = 0.0;   // triangle area in texels / texelCount
 };
 
 /// Places the shapes, then rewrites geometry so each vertex belongs to one chart and carries
 /// uv1 normalised over its atlas.
-ChartLayout pack_charts(StaticGeometry& geometry, const std::vector<ChartShape>& shapes,
-                        const ChartOptions& options);
+ChartLayout packCharts(StaticGeometry& geometry, const std::vector<ChartShape>& shapes,
+                       const ChartOptions& options);
 
-/// build_chart_shapes followed by pack_charts.
-ChartLayout build_lightmap_charts(StaticGeometry& geometry, const ChartOptions& options);
+/// buildChartShapes followed by packCharts.
+ChartLayout buildLightmapCharts(StaticGeometry& geometry, const ChartOptions& options);
 
 }  // namespace onelight::world

@@ -12,16 +12,16 @@
 namespace onelight::world {
 
 struct SplitLevel {
-    StaticGeometry static_geometry;
-    std::vector<Vertex> dynamic_vertices;
-    std::vector<uint32_t> dynamic_indices;
-    std::vector<DynamicMesh> dynamic_meshes;  // grouped by entity
-    std::vector<Entity> entities;             // with their dynamic-mesh ranges filled
-    uint32_t degenerate_removed = 0;          // zero-area triangles dropped
-    uint32_t duplicates_removed = 0;          // exact duplicates (same corners, same winding)
+    StaticGeometry staticGeometry;
+    std::vector<Vertex> dynamicVertices;
+    std::vector<uint32_t> dynamicIndices;
+    std::vector<DynamicMesh> dynamicMeshes;  // grouped by entity
+    std::vector<Entity> entities;            // with their dynamic-mesh ranges filled
+    uint32_t degenerateRemoved = 0;          // zero-area triangles dropped
+    uint32_t duplicatesRemoved = 0;          // exact duplicates (same corners, same winding)
 };
 
 /// Throws Error when a world transform turns a position into NaN or Inf.
-SplitLevel split_static_dynamic(const SourceLevel& level);
+SplitLevel splitStaticDynamic(const SourceLevel& level);
 
 }  // namespace onelight::world

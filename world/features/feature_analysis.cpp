@@ -4,67 +4,67 @@
 
 namespace onelight::world {
 
-Features analyse_features(const CompiledLevel& level, bool has_authored_grid,
-                          const glm::vec3& authored_grid_min, const glm::vec3& authored_grid_max,
-                          float grid_margin) {
+Features analyseFeatures(const CompiledLevel& level, bool hasAuthoredGrid,
+                         const glm::vec3& authoredGridMin, const glm::vec3& authoredGridMax,
+                         float gridMargin) {
     Features f;
-    std::vector<uint8_t> material_used(level.materials.size(), 0);
+    std::vector<uint8_t> materialUsed(level.materials.size(), 0);
     for (const Surface& s : level.surfaces)
-        if (s.material < material_used.size()) material_used[s.material] = 1;
-    for (const DynamicMesh& m : level.dynamic_meshes)
-        if (m.material < material_used.size()) material_used[m.material] = 1;
+        if (s.material < materialUsed.size()) materialUsed[s.material] = 1;
+    for (const DynamicMesh& m : level.dynamicMeshes)
+        if (m.material < materialUsed.size()) materialUsed[m.material] = 1;
     for (size_t i = 0; i < level.materials.size(); ++i) {
-        if (!material_used[i]) continue;
+        if (!materialUsed[i]) continue;
         const Material& m = level.materials[i];
-        f.material_classes |= 1u << static_cast<uint32_t>(m.material_class);
-        if (m.normal_texture != kNoIndex) f.flags |= feature_normal_maps;
-        if (m.alpha_mode == AlphaMode::mask) f.flags |= feature_alpha_mask;
-        if (m.alpha_mode == AlphaMode::blend) f.flags |= feature_alpha_blend;
-        if (m.emissive != glm::vec3(0.0f) || m.emissive_texture != kNoIndex)
-            f.flags |= feature_emissive;
-        if (m.double_sided) f.flags |= feature_double_sided;
-        if (m.material_class != MaterialClass::lambert) f.flags |= feature_probes;
+        f.materialClasses |= 1u << static_cast<uint32_t>(m.materialClass);
+        if (m.normalTexture != kNoIndex) f.flags |= kFeatureNormalMaps;
+        if (m.alphaMode == AlphaMode::kMask) f.flags |= kFeatureAlphaMask;
+        if (m.alphaMode == AlphaMode::kBlend) f.flags |= kFeatureAlphaBlend;
+        if (m.emissive != glm::vec3(0.0f) || m.emissiveTexture != kNoIndex)
+            f.flags |= kFeatureEmissive;
+        if (m.doubleSided) f.flags |= kFeatureDoubleSided;
+        if (m.materialClass != MaterialClass::kLambert) f.flags |= kFeatureProbes;
     }
-    std::vector<uint8_t> primary_used(level.lights.size(), 0);
+    std::vector<uint8_t> primaryUsed(level.lights.size(), 0);
     for (const Surface& s : level.surfaces)
-        if (s.primary_light < primary_used.size()) primary_used[s.primary_light] = 1;
+        if (s.primaryLight < primaryUsed.size()) primaryUsed[s.primaryLight] = 1;
     for (size_t i = 0; i < level.lights.size(); ++i) {
         const Light& light = level.lights[i];
-        const uint32_t type_bit = 1u << static_cast<uint32_t>(light.type);
+        const uint32_t typeBit = 1u << static_cast<uint32_t>(light.type);
         switch (light.role) {
-            case LightRole::primary:
+            case LightRole::kPrimary:
                 // An unused primary still lights dynamic objects, which pick theirs at runtime.
-                if (primary_used[i] || !level.dynamic_meshes.empty()) {
-                    f.primary_light_types |= type_bit;
-                    ++f.primary_count;
+                if (primaryUsed[i] || !level.dynamicMeshes.empty()) {
+                    f.primaryLightTypes |= typeBit;
+                    ++f.primaryCount;
                 }
                 break;
-            case LightRole::baked:
-                f.baked_light_types |= type_bit;
-                ++f.baked_light_count;
+            case LightRole::kBaked:
+                f.bakedLightTypes |= typeBit;
+                ++f.bakedLightCount;
                 break;
-            case LightRole::effect:
-                if (light.type == LightType::spot)
-                    ++f.effect_spot_count;
+            case LightRole::kEffect:
+                if (light.type == LightType::kSpot)
+                    ++f.effectSpotCount;
                 else
-                    ++f.effect_omni_count;
+                    ++f.effectOmniCount;
                 break;
         }
     }
-    if (f.effect_omni_count > 0) f.flags |= feature_effect_omni;
-    if (f.effect_spot_count > 0) f.flags |= feature_effect_spot;
-    if (!level.surfaces.empty()) f.flags |= feature_lightmaps;
-    if (!level.dynamic_meshes.empty()) f.flags |= feature_light_grid;
+    if (f.effectOmniCount > 0) f.flags |= kFeatureEffectOmni;
+    if (f.effectSpotCount > 0) f.flags |= kFeatureEffectSpot;
+    if (!level.surfaces.empty()) f.flags |= kFeatureLightmaps;
+    if (!level.dynamicMeshes.empty()) f.flags |= kFeatureLightGrid;
     for (const Entity& e : level.entities)
-        if (e.flags & entity_probe) ++f.probe_count;
-    if ((f.flags & feature_probes) && f.probe_count == 0) f.flags |= feature_auto_probes;
-    if (has_authored_grid) {
-        f.flags |= feature_authored_grid;
-        f.grid_min = authored_grid_min;
-        f.grid_max = authored_grid_max;
+        if (e.flags & kEntityProbe) ++f.probeCount;
+    if ((f.flags & kFeatureProbes) && f.probeCount == 0) f.flags |= kFeatureAutoProbes;
+    if (hasAuthoredGrid) {
+        f.flags |= kFeatureAuthoredGrid;
+        f.gridMin = authoredGridMin;
+        f.gridMax = authoredGridMax;
     } else if (!level.surfaces.empty()) {
-        f.grid_min = level.settings.bounds_min - glm::vec3(grid_margin);
-        f.grid_max = level.settings.bounds_max + glm::vec3(grid_margin);
+        f.gridMin = level.settings.boundsMin - glm::vec3(gridMargin);
+        f.gridMax = level.settings.boundsMax + glm::vec3(gridMargin);
     }
     return f;
 }

@@ -7,10 +7,10 @@
 namespace onelight::world {
 
 /// Reads everything but `level.features` and returns what to put there. The grid covers the
-/// authored bounds when given (`authored_grid`), else the static bounds grown by `grid_margin`
+/// authored bounds when given (`authored_grid`), else the static bounds grown by `gridMargin`
 /// metres on each side.
-Features analyse_features(const CompiledLevel& level, bool has_authored_grid,
-                          const glm::vec3& authored_grid_min, const glm::vec3& authored_grid_max,
-                          float grid_margin = 1.0f);
+Features analyseFeatures(const CompiledLevel& level, bool hasAuthoredGrid,
+                         const glm::vec3& authoredGridMin, const glm::vec3& authoredGridMax,
+                         float gridMargin = 1.0f);
 
 }  // namespace onelight::world

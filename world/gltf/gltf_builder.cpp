@@ -9,7 +9,7 @@ namespace onelight::world {
 namespace {
 
 // Writes through a temporary file and a rename, so a reader never sees half a file.
-void write_atomically(const std::filesystem::path& path, const std::string& bytes) {
+void writeAtomically(const std::filesystem::path& path, const std::string& bytes) {
     const std::filesystem::path tmp = path.string() + ".tmp";
     {
         std::ofstream out(tmp, std::ios::binary);
@@ -32,9 +32,9 @@ GltfBuilder::GltfBuilder() {
                  {"materials", nlohmann::json::array()}};
 }
 
-int GltfBuilder::add_accessor(const void* data, size_t bytes, size_t count, int component_type,
-                              const char* type, bool with_bounds,
-                              const std::vector<glm::vec3>* bounds_of) {
+int GltfBuilder::addAccessor(const void* data, size_t bytes, size_t count, int componentType,
+                             const char* type, bool withBounds,
+                             const std::vector<glm::vec3>* boundsOf) {
     while (buffer_.size() % 4 != 0) buffer_.push_back(0);
     const size_t offset = buffer_.size();
     buffer_.resize(offset + bytes);
@@ -42,12 +42,12 @@ int GltfBuilder::add_accessor(const void* data, size_t bytes, size_t count, int 
     document_["bufferViews"].push_back(
         {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}});
     nlohmann::json accessor = {{"bufferView", document_["bufferViews"].size() - 1},
-                               {"componentType", component_type},
+                               {"componentType", componentType},
                                {"count", count},
                                {"type", type}};
-    if (with_bounds && bounds_of && !bounds_of->empty()) {
-        glm::vec3 lo = bounds_of->front(), hi = bounds_of->front();
-        for (const glm::vec3& p : *bounds_of) {
+    if (withBounds && boundsOf && !boundsOf->empty()) {
+        glm::vec3 lo = boundsOf->front(), hi = boundsOf->front();
+        for (const glm::vec3& p : *boundsOf) {
             lo = glm::min(lo, p);
             hi = glm::max(hi, p);
         }
@@ -58,35 +58,35 @@ int GltfBuilder::add_accessor(const void* data, size_t bytes, size_t count, int 
     return static_cast<int>(document_["accessors"].size() - 1);
 }
 
-int GltfBuilder::add_mesh(const MeshData& mesh) {
+int GltfBuilder::addMesh(const MeshData& mesh) {
     nlohmann::json attributes;
     attributes["POSITION"] =
-        add_accessor(mesh.positions.data(), mesh.positions.size() * 12, mesh.positions.size(), 5126,
-                     "VEC3", true, &mesh.positions);
+        addAccessor(mesh.positions.data(), mesh.positions.size() * 12, mesh.positions.size(), 5126,
+                    "VEC3", true, &mesh.positions);
     if (!mesh.normals.empty())
-        attributes["NORMAL"] = add_accessor(mesh.normals.data(), mesh.normals.size() * 12,
-                                            mesh.normals.size(), 5126, "VEC3", false, nullptr);
+        attributes["NORMAL"] = addAccessor(mesh.normals.data(), mesh.normals.size() * 12,
+                                           mesh.normals.size(), 5126, "VEC3", false, nullptr);
     if (!mesh.uv0.empty())
-        attributes["TEXCOORD_0"] = add_accessor(mesh.uv0.data(), mesh.uv0.size() * 8,
-                                                mesh.uv0.size(), 5126, "VEC2", false, nullptr);
+        attributes["TEXCOORD_0"] = addAccessor(mesh.uv0.data(), mesh.uv0.size() * 8,
+                                               mesh.uv0.size(), 5126, "VEC2", false, nullptr);
     if (!mesh.uv1.empty())
-        attributes["TEXCOORD_1"] = add_accessor(mesh.uv1.data(), mesh.uv1.size() * 8,
-                                                mesh.uv1.size(), 5126, "VEC2", false, nullptr);
+        attributes["TEXCOORD_1"] = addAccessor(mesh.uv1.data(), mesh.uv1.size() * 8,
+                                               mesh.uv1.size(), 5126, "VEC2", false, nullptr);
     nlohmann::json primitive = {{"attributes", attributes}, {"mode", 4}};
-    primitive["indices"] = add_accessor(mesh.indices.data(), mesh.indices.size() * 4,
-                                        mesh.indices.size(), 5125, "SCALAR", false, nullptr);
+    primitive["indices"] = addAccessor(mesh.indices.data(), mesh.indices.size() * 4,
+                                       mesh.indices.size(), 5125, "SCALAR", false, nullptr);
     if (mesh.material >= 0) primitive["material"] = mesh.material;
     document_["meshes"].push_back(
         {{"name", mesh.name}, {"primitives", nlohmann::json::array({primitive})}});
     return static_cast<int>(document_["meshes"].size() - 1);
 }
 
-int GltfBuilder::add_material(const nlohmann::json& material) {
+int GltfBuilder::addMaterial(const nlohmann::json& material) {
     document_["materials"].push_back(material);
     return static_cast<int>(document_["materials"].size() - 1);
 }
 
-int GltfBuilder::add_light(const nlohmann::json& light) {
+int GltfBuilder::addLight(const nlohmann::json& light) {
     nlohmann::json& lights = document_["extensions"]["KHR_lights_punctual"]["lights"];
     if (lights.is_null()) lights = nlohmann::json::array();
     lights.push_back(light);
@@ -94,13 +94,13 @@ int GltfBuilder::add_light(const nlohmann::json& light) {
     return static_cast<int>(lights.size() - 1);
 }
 
-int GltfBuilder::add_camera(const nlohmann::json& camera) {
+int GltfBuilder::addCamera(const nlohmann::json& camera) {
     if (!document_.contains("cameras")) document_["cameras"] = nlohmann::json::array();
     document_["cameras"].push_back(camera);
     return static_cast<int>(document_["cameras"].size() - 1);
 }
 
-int GltfBuilder::add_node(const nlohmann::json& node, bool root) {
+int GltfBuilder::addNode(const nlohmann::json& node, bool root) {
     document_["nodes"].push_back(node);
     const int index = static_cast<int>(document_["nodes"].size() - 1);
     if (root) document_["scenes"][0]["nodes"].push_back(index);
@@ -116,21 +116,21 @@ std::string GltfBuilder::write(const std::filesystem::path& folder, const std::s
     if (document["bufferViews"].empty()) document.erase("bufferViews");
     if (buffer_.empty()) document.erase("buffers");
     const std::string bytes(reinterpret_cast<const char*>(buffer_.data()), buffer_.size());
-    write_atomically(folder / (name + ".bin"), bytes);
+    writeAtomically(folder / (name + ".bin"), bytes);
     const std::filesystem::path path = folder / (name + ".gltf");
-    write_atomically(path, document.dump(1));
+    writeAtomically(path, document.dump(1));
     return path.string();
 }
 
-MeshData grid_mesh(const std::string& name, int cells, double size, double height, double centre_x,
-                   double centre_z) {
+MeshData gridMesh(const std::string& name, int cells, double size, double height, double centreX,
+                  double centreZ) {
     MeshData mesh;
     mesh.name = name;
     const double step = size / cells;
     for (int j = 0; j <= cells; ++j) {
         for (int i = 0; i <= cells; ++i) {
-            mesh.positions.emplace_back(centre_x - size / 2 + i * step, height,
-                                        centre_z - size / 2 + j * step);
+            mesh.positions.emplace_back(centreX - size / 2 + i * step, height,
+                                        centreZ - size / 2 + j * step);
             mesh.normals.emplace_back(0.0f, 1.0f, 0.0f);
             mesh.uv0.emplace_back(static_cast<float>(i) / cells, static_cast<float>(j) / cells);
         }
@@ -146,8 +146,8 @@ MeshData grid_mesh(const std::string& name, int cells, double size, double heigh
     return mesh;
 }
 
-MeshData box_mesh(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int cells,
-                  bool open_bottom) {
+MeshData boxMesh(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int cells,
+                 bool openBottom) {
     MeshData mesh;
     mesh.name = name;
     const glm::vec3 centre = (lo + hi) * 0.5f, half = (hi - lo) * 0.5f;
@@ -157,7 +157,7 @@ MeshData box_mesh(const std::string& name, const glm::vec3& lo, const glm::vec3&
         {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
         {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}}};
     for (int f = 0; f < 6; ++f) {
-        if (open_bottom && f == 3) continue;
+        if (openBottom && f == 3) continue;
         const glm::vec3 n = faces[f][0], u = faces[f][1], v = faces[f][2];
         const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
         for (int j = 0; j <= cells; ++j) {

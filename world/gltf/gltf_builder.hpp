@@ -26,12 +26,12 @@ class GltfBuilder {
 public:
     GltfBuilder();
 
-    int add_mesh(const MeshData& mesh);  // returns the glTF mesh index
-    int add_material(const nlohmann::json& material);
-    int add_light(const nlohmann::json& light);  // KHR_lights_punctual entry
-    int add_camera(const nlohmann::json& camera);
+    int addMesh(const MeshData& mesh);  // returns the glTF mesh index
+    int addMaterial(const nlohmann::json& material);
+    int addLight(const nlohmann::json& light);  // KHR_lights_punctual entry
+    int addCamera(const nlohmann::json& camera);
     /// Adds a node; when `root`, it is listed in the scene.
-    int add_node(const nlohmann::json& node, bool root = true);
+    int addNode(const nlohmann::json& node, bool root = true);
 
     nlohmann::json& document() { return document_; }
 
@@ -40,21 +40,21 @@ public:
     std::string write(const std::filesystem::path& folder, const std::string& name) const;
 
 private:
-    int add_accessor(const void* data, size_t bytes, size_t count, int component_type,
-                     const char* type, bool with_bounds, const std::vector<glm::vec3>* bounds_of);
+    int addAccessor(const void* data, size_t bytes, size_t count, int componentType,
+                    const char* type, bool withBounds, const std::vector<glm::vec3>* boundsOf);
 
     nlohmann::json document_;
     std::vector<uint8_t> buffer_;
 };
 
 /// A flat square grid in the plane y = height: cells x cells quads, `size` metres wide,
-/// centred on (centre_x, centre_z), facing +y.
-MeshData grid_mesh(const std::string& name, int cells, double size, double height,
-                   double centre_x = 0.0, double centre_z = 0.0);
+/// centred on (centreX, centreZ), facing +y.
+MeshData gridMesh(const std::string& name, int cells, double size, double height,
+                  double centreX = 0.0, double centreZ = 0.0);
 
 /// An axis-aligned box with `cells` x `cells` quads per face, outward normals, no bottom face
-/// when `open_bottom`.
-MeshData box_mesh(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int cells,
-                  bool open_bottom);
+/// when `openBottom`.
+MeshData boxMesh(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int cells,
+                 bool openBottom);
 
 }  // namespace onelight::world

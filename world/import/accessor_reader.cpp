@@ -9,8 +9,8 @@
 namespace onelight::world {
 namespace {
 
-size_t component_size(int component_type) {
-    switch (component_type) {
+size_t componentSize(int componentType) {
+    switch (componentType) {
         case TINYGLTF_COMPONENT_TYPE_BYTE:
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
             return 1;
@@ -26,7 +26,7 @@ size_t component_size(int component_type) {
     }
 }
 
-int component_count(int type) {
+int componentCount(int type) {
     switch (type) {
         case TINYGLTF_TYPE_SCALAR:
             return 1;
@@ -46,32 +46,32 @@ struct AccessorBytes {
     const unsigned char* data = nullptr;
     size_t count = 0;
     size_t stride = 0;
-    int component_type = 0;
+    int componentType = 0;
     int components = 0;
     bool normalized = false;
 };
 
-const tinygltf::Accessor& checked_accessor(const tinygltf::Model& model, int accessor_index,
-                                           const std::string& where) {
-    if (accessor_index < 0 || static_cast<size_t>(accessor_index) >= model.accessors.size()) {
-        throw Error(where + ": accessor index " + std::to_string(accessor_index) +
+const tinygltf::Accessor& checkedAccessor(const tinygltf::Model& model, int accessorIndex,
+                                          const std::string& where) {
+    if (accessorIndex < 0 || static_cast<size_t>(accessorIndex) >= model.accessors.size()) {
+        throw Error(where + ": accessor index " + std::to_string(accessorIndex) +
                     " is out of range (the file has " + std::to_string(model.accessors.size()) +
                     " accessors)");
     }
-    return model.accessors[static_cast<size_t>(accessor_index)];
+    return model.accessors[static_cast<size_t>(accessorIndex)];
 }
 
-AccessorBytes checked_bytes(const tinygltf::Model& model, int accessor_index,
-                            const std::string& where) {
-    const tinygltf::Accessor& accessor = checked_accessor(model, accessor_index, where);
-    const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
+AccessorBytes checkedBytes(const tinygltf::Model& model, int accessorIndex,
+                           const std::string& where) {
+    const tinygltf::Accessor& accessor = checkedAccessor(model, accessorIndex, where);
+    const std::string place = where + " (accessor " + std::to_string(accessorIndex) + ")";
     if (accessor.sparse.isSparse) throw Error(place + ": sparse accessors are not supported");
     AccessorBytes bytes;
     bytes.count = accessor.count;
-    bytes.component_type = accessor.componentType;
-    bytes.components = component_count(accessor.type);
+    bytes.componentType = accessor.componentType;
+    bytes.components = componentCount(accessor.type);
     bytes.normalized = accessor.normalized;
-    const size_t size = component_size(accessor.componentType);
+    const size_t size = componentSize(accessor.componentType);
     if (size == 0 || bytes.components == 0) {
         throw Error(place + ": unsupported component type " +
                     std::to_string(accessor.componentType) + " or type " +
@@ -88,15 +88,15 @@ AccessorBytes checked_bytes(const tinygltf::Model& model, int accessor_index,
         throw Error(place + ": buffer " + std::to_string(view.buffer) + " is out of range");
     }
     const tinygltf::Buffer& buffer = model.buffers[static_cast<size_t>(view.buffer)];
-    const uint64_t element_size = size * static_cast<uint64_t>(bytes.components);
-    const uint64_t stride = view.byteStride != 0 ? view.byteStride : element_size;
-    if (stride < element_size) {
+    const uint64_t elementSize = size * static_cast<uint64_t>(bytes.components);
+    const uint64_t stride = view.byteStride != 0 ? view.byteStride : elementSize;
+    if (stride < elementSize) {
         throw Error(place + ": byteStride " + std::to_string(stride) +
-                    " is smaller than the element size " + std::to_string(element_size));
+                    " is smaller than the element size " + std::to_string(elementSize));
     }
-    const uint64_t view_end = static_cast<uint64_t>(view.byteOffset) + view.byteLength;
-    if (view_end > buffer.data.size()) {
-        throw Error(place + ": bufferView ends at byte " + std::to_string(view_end) +
+    const uint64_t viewEnd = static_cast<uint64_t>(view.byteOffset) + view.byteLength;
+    if (viewEnd > buffer.data.size()) {
+        throw Error(place + ": bufferView ends at byte " + std::to_string(viewEnd) +
                     " but the buffer has " + std::to_string(buffer.data.size()) + " bytes");
     }
     if (accessor.count > view.byteLength) {
@@ -104,7 +104,7 @@ AccessorBytes checked_bytes(const tinygltf::Model& model, int accessor_index,
                     " does not fit in the bufferView");
     }
     const uint64_t needed =
-        static_cast<uint64_t>(accessor.byteOffset) + stride * (accessor.count - 1) + element_size;
+        static_cast<uint64_t>(accessor.byteOffset) + stride * (accessor.count - 1) + elementSize;
     if (needed > view.byteLength) {
         throw Error(place + ": needs " + std::to_string(needed) + " bytes but the bufferView has " +
                     std::to_string(view.byteLength));
@@ -121,8 +121,8 @@ T load(const unsigned char* p) {
     return value;
 }
 
-float component_as_float(const unsigned char* p, int component_type) {
-    switch (component_type) {
+float componentAsFloat(const unsigned char* p, int componentType) {
+    switch (componentType) {
         case TINYGLTF_COMPONENT_TYPE_FLOAT:
             return load<float>(p);
         case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
@@ -144,43 +144,43 @@ float component_as_float(const unsigned char* p, int component_type) {
 
 }  // namespace
 
-size_t accessor_count(const tinygltf::Model& model, int accessor_index, const std::string& where) {
-    return checked_accessor(model, accessor_index, where).count;
+size_t accessorCount(const tinygltf::Model& model, int accessorIndex, const std::string& where) {
+    return checkedAccessor(model, accessorIndex, where).count;
 }
 
-std::vector<float> read_float_accessor(const tinygltf::Model& model, int accessor_index,
-                                       int components, const std::string& where) {
-    const AccessorBytes bytes = checked_bytes(model, accessor_index, where);
-    const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
+std::vector<float> readFloatAccessor(const tinygltf::Model& model, int accessorIndex,
+                                     int components, const std::string& where) {
+    const AccessorBytes bytes = checkedBytes(model, accessorIndex, where);
+    const std::string place = where + " (accessor " + std::to_string(accessorIndex) + ")";
     if (bytes.components != components) {
         throw Error(place + ": expected " + std::to_string(components) +
                     " components per element, found " + std::to_string(bytes.components));
     }
-    if (bytes.component_type != TINYGLTF_COMPONENT_TYPE_FLOAT && !bytes.normalized) {
+    if (bytes.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !bytes.normalized) {
         throw Error(place + ": expected FLOAT or a normalized integer type, found type " +
-                    std::to_string(bytes.component_type));
+                    std::to_string(bytes.componentType));
     }
-    const size_t size = component_size(bytes.component_type);
+    const size_t size = componentSize(bytes.componentType);
     std::vector<float> values(bytes.count * static_cast<size_t>(components));
     for (size_t i = 0; i < bytes.count; ++i) {
         const unsigned char* element = bytes.data + i * bytes.stride;
         for (int c = 0; c < components; ++c) {
             values[i * static_cast<size_t>(components) + static_cast<size_t>(c)] =
-                component_as_float(element + static_cast<size_t>(c) * size, bytes.component_type);
+                componentAsFloat(element + static_cast<size_t>(c) * size, bytes.componentType);
         }
     }
     return values;
 }
 
-std::vector<uint32_t> read_index_accessor(const tinygltf::Model& model, int accessor_index,
-                                          const std::string& where) {
-    const AccessorBytes bytes = checked_bytes(model, accessor_index, where);
-    const std::string place = where + " (accessor " + std::to_string(accessor_index) + ")";
+std::vector<uint32_t> readIndexAccessor(const tinygltf::Model& model, int accessorIndex,
+                                        const std::string& where) {
+    const AccessorBytes bytes = checkedBytes(model, accessorIndex, where);
+    const std::string place = where + " (accessor " + std::to_string(accessorIndex) + ")";
     if (bytes.components != 1) throw Error(place + ": indices must be SCALAR");
     std::vector<uint32_t> values(bytes.count);
     for (size_t i = 0; i < bytes.count; ++i) {
         const unsigned char* element = bytes.data + i * bytes.stride;
-        switch (bytes.component_type) {
+        switch (bytes.componentType) {
             case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
                 values[i] = element[0];
                 break;
@@ -194,7 +194,7 @@ std::vector<uint32_t> read_index_accessor(const tinygltf::Model& model, int acce
                 throw Error(place +
                             ": indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or "
                             "UNSIGNED_INT, found type " +
-                            std::to_string(bytes.component_type));
+                            std::to_string(bytes.componentType));
         }
     }
     return values;

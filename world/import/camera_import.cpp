@@ -8,8 +8,8 @@
 
 namespace onelight::world {
 
-glm::quat rotation_of(const glm::dmat4& world_from_local) {
-    glm::dmat3 basis(world_from_local);
+glm::quat rotationOf(const glm::dmat4& worldFromLocal) {
+    glm::dmat3 basis(worldFromLocal);
     for (int c = 0; c < 3; ++c) {
         const double length = glm::length(basis[c]);
         basis[c] = length > 0.0 && std::isfinite(length) ? basis[c] / length
@@ -23,8 +23,8 @@ glm::quat rotation_of(const glm::dmat4& world_from_local) {
     return glm::normalize(glm::quat(glm::quat_cast(basis)));
 }
 
-Camera import_camera(const tinygltf::Camera& source, const glm::dmat4& world_from_local,
-                     const std::string& name, const std::string& where) {
+Camera importCamera(const tinygltf::Camera& source, const glm::dmat4& worldFromLocal,
+                    const std::string& name, const std::string& where) {
     Camera camera;
     camera.name = name;
     const auto finite = [&](double v, const char* field) {
@@ -39,7 +39,7 @@ Camera import_camera(const tinygltf::Camera& source, const glm::dmat4& world_fro
         camera.zfar = finite(source.orthographic.zfar, "zfar");
     } else if (source.type == "perspective") {
         camera.yfov = finite(source.perspective.yfov, "yfov");
-        camera.aspect_ratio = finite(source.perspective.aspectRatio, "aspectRatio");
+        camera.aspectRatio = finite(source.perspective.aspectRatio, "aspectRatio");
         camera.znear = finite(source.perspective.znear, "znear");
         camera.zfar = finite(source.perspective.zfar, "zfar");
         if (!(camera.yfov > 0.0f && camera.yfov < 3.14159f))
@@ -52,8 +52,8 @@ Camera import_camera(const tinygltf::Camera& source, const glm::dmat4& world_fro
         throw Error(where + ": camera type \"" + source.type +
                     "\"; expected \"perspective\" or \"orthographic\"");
     }
-    camera.position = glm::vec3(glm::dvec3(world_from_local[3]));
-    camera.rotation = rotation_of(world_from_local);
+    camera.position = glm::vec3(glm::dvec3(worldFromLocal[3]));
+    camera.rotation = rotationOf(worldFromLocal);
     return camera;
 }
 

@@ -13,10 +13,10 @@ struct Camera;
 
 namespace onelight::world {
 
-Camera import_camera(const tinygltf::Camera& source, const glm::dmat4& world_from_local,
-                     const std::string& name, const std::string& where);
+Camera importCamera(const tinygltf::Camera& source, const glm::dmat4& worldFromLocal,
+                    const std::string& name, const std::string& where);
 
 /// Rotation part of a world transform, scale and shear removed (unit quaternion).
-glm::quat rotation_of(const glm::dmat4& world_from_local);
+glm::quat rotationOf(const glm::dmat4& worldFromLocal);
 
 }  // namespace onelight::world

@@ -10,39 +10,39 @@
 namespace onelight::world {
 namespace {
 
-bool read_bool(const tinygltf::Value& v, const std::string& place) {
+bool readBool(const tinygltf::Value& v, const std::string& place) {
     if (!v.IsBool()) throw Error(place + " must be true or false");
     return v.Get<bool>();
 }
 
-float read_number(const tinygltf::Value& v, const std::string& place) {
+float readNumber(const tinygltf::Value& v, const std::string& place) {
     if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
         throw Error(place + " must be a finite number");
     return static_cast<float>(v.GetNumberAsDouble());
 }
 
-glm::vec3 read_vec3(const tinygltf::Value& v, const std::string& place) {
+glm::vec3 readVec3(const tinygltf::Value& v, const std::string& place) {
     if (!v.IsArray() || v.ArrayLen() != 3) throw Error(place + " must be an array of 3 numbers");
     glm::vec3 out;
     for (int i = 0; i < 3; ++i)
-        out[i] = read_number(v.Get(i), place + "[" + std::to_string(i) + "]");
+        out[i] = readNumber(v.Get(i), place + "[" + std::to_string(i) + "]");
     return out;
 }
 
-void read_box(const tinygltf::Value& v, const char* min_key, const char* max_key,
-              const std::string& place, glm::vec3& lo, glm::vec3& hi) {
-    if (!v.IsObject() || !v.Has(min_key) || !v.Has(max_key))
-        throw Error(place + std::string(" must be an object with \"") + min_key + "\" and \"" +
-                    max_key + "\"");
-    lo = read_vec3(v.Get(min_key), place + "." + min_key);
-    hi = read_vec3(v.Get(max_key), place + "." + max_key);
+void readBox(const tinygltf::Value& v, const char* minKey, const char* maxKey,
+             const std::string& place, glm::vec3& lo, glm::vec3& hi) {
+    if (!v.IsObject() || !v.Has(minKey) || !v.Has(maxKey))
+        throw Error(place + std::string(" must be an object with \"") + minKey + "\" and \"" +
+                    maxKey + "\"");
+    lo = readVec3(v.Get(minKey), place + "." + minKey);
+    hi = readVec3(v.Get(maxKey), place + "." + maxKey);
     if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-        throw Error(place + ": expected " + min_key + " < " + max_key + " on every axis");
+        throw Error(place + ": expected " + minKey + " < " + maxKey + " on every axis");
 }
 
 }  // namespace
 
-NodeExtras parse_node_extras(const tinygltf::Value& extras, const std::string& where) {
+NodeExtras parseNodeExtras(const tinygltf::Value& extras, const std::string& where) {
     NodeExtras out;
     if (!extras.IsObject() || !extras.Has("onelight")) return out;
     const tinygltf::Value& o = extras.Get("onelight");
@@ -51,28 +51,27 @@ NodeExtras parse_node_extras(const tinygltf::Value& extras, const std::string& w
     if (o.Has("role")) {
         const tinygltf::Value& role = o.Get("role");
         const std::string value = role.IsString() ? role.Get<std::string>() : std::string();
-        out.has_role = true;
+        out.hasRole = true;
         if (value == "primary")
-            out.role = LightRole::primary;
+            out.role = LightRole::kPrimary;
         else if (value == "baked")
-            out.role = LightRole::baked;
+            out.role = LightRole::kBaked;
         else if (value == "effect")
-            out.role = LightRole::effect;
+            out.role = LightRole::kEffect;
         else
             throw Error(base + ".role is \"" + value +
                         "\"; expected \"primary\", \"baked\" or \"effect\"");
     }
-    if (o.Has("dynamic")) out.dynamic = read_bool(o.Get("dynamic"), base + ".dynamic");
-    if (o.Has("spawn")) out.spawn = read_bool(o.Get("spawn"), base + ".spawn");
+    if (o.Has("dynamic")) out.dynamic = readBool(o.Get("dynamic"), base + ".dynamic");
+    if (o.Has("spawn")) out.spawn = readBool(o.Get("spawn"), base + ".spawn");
     if (o.Has("probe")) {
         const tinygltf::Value& probe = o.Get("probe");
         if (probe.IsBool()) {
             out.probe = probe.Get<bool>();
         } else {
             out.probe = true;
-            out.has_probe_box = true;
-            read_box(probe, "box_min", "box_max", base + ".probe", out.probe_box_min,
-                     out.probe_box_max);
+            out.hasProbeBox = true;
+            readBox(probe, "box_min", "box_max", base + ".probe", out.probeBoxMin, out.probeBoxMax);
         }
     }
     if (o.Has("mover")) {
@@ -82,41 +81,41 @@ NodeExtras parse_node_extras(const tinygltf::Value& extras, const std::string& w
             throw Error(place + " must be an object with \"offset\" and \"period\"");
         out.mover = true;
         out.dynamic = true;
-        out.mover_offset = read_vec3(mover.Get("offset"), place + ".offset");
-        out.mover_period = read_number(mover.Get("period"), place + ".period");
-        if (!(out.mover_period > 0.0f))
-            throw Error(place + ".period is " + std::to_string(out.mover_period) +
+        out.moverOffset = readVec3(mover.Get("offset"), place + ".offset");
+        out.moverPeriod = readNumber(mover.Get("period"), place + ".period");
+        if (!(out.moverPeriod > 0.0f))
+            throw Error(place + ".period is " + std::to_string(out.moverPeriod) +
                         "; expected seconds > 0");
     }
     if (o.Has("grid")) {
-        out.has_grid = true;
-        read_box(o.Get("grid"), "min", "max", base + ".grid", out.grid_min, out.grid_max);
+        out.hasGrid = true;
+        readBox(o.Get("grid"), "min", "max", base + ".grid", out.gridMin, out.gridMax);
     }
     if (o.Has("texels_per_metre")) {
-        out.texels_per_metre = read_number(o.Get("texels_per_metre"), base + ".texels_per_metre");
-        if (!(out.texels_per_metre > 0.0f && out.texels_per_metre <= 1024.0f))
-            throw Error(base + ".texels_per_metre is " + std::to_string(out.texels_per_metre) +
+        out.texelsPerMetre = readNumber(o.Get("texels_per_metre"), base + ".texels_per_metre");
+        if (!(out.texelsPerMetre > 0.0f && out.texelsPerMetre <= 1024.0f))
+            throw Error(base + ".texels_per_metre is " + std::to_string(out.texelsPerMetre) +
                         "; expected a density in (0, 1024] texels per metre");
     }
     if (o.Has("probe_spacing")) {
-        out.probe_spacing = read_number(o.Get("probe_spacing"), base + ".probe_spacing");
-        if (!(out.probe_spacing > 0.0f))
-            throw Error(base + ".probe_spacing is " + std::to_string(out.probe_spacing) +
+        out.probeSpacing = readNumber(o.Get("probe_spacing"), base + ".probe_spacing");
+        if (!(out.probeSpacing > 0.0f))
+            throw Error(base + ".probe_spacing is " + std::to_string(out.probeSpacing) +
                         "; expected metres > 0 between automatic probes");
     }
     if (o.Has("sky")) {
         const tinygltf::Value& sky = o.Get("sky");
-        out.has_sky = true;
-        out.sky_radiance = sky.IsArray() ? read_vec3(sky, base + ".sky")
-                                         : glm::vec3(read_number(sky, base + ".sky"));
-        if (!(std::min({out.sky_radiance.x, out.sky_radiance.y, out.sky_radiance.z}) >= 0.0f))
+        out.hasSky = true;
+        out.skyRadiance = sky.IsArray() ? readVec3(sky, base + ".sky")
+                                        : glm::vec3(readNumber(sky, base + ".sky"));
+        if (!(std::min({out.skyRadiance.x, out.skyRadiance.y, out.skyRadiance.z}) >= 0.0f))
             throw Error(base +
                         ".sky is negative; expected a radiance in cd/m^2 >= 0 "
                         "(one number, or [r, g, b])");
     }
     if (o.Has("exposure")) {
-        out.has_exposure = true;
-        out.exposure_ev100 = read_number(o.Get("exposure"), base + ".exposure");
+        out.hasExposure = true;
+        out.exposureEv100 = readNumber(o.Get("exposure"), base + ".exposure");
     }
     return out;
 }

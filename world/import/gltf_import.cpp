@@ -19,32 +19,32 @@ namespace {
 
 /// Image loader for tinygltf: pixels are not decoded at compile; embedded images keep their
 /// encoded bytes, file references keep only their uri.
-bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                        const unsigned char* bytes, int size, void*) {
+bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
     // Images in a bufferView are copied later, after their range is checked (tinygltf does not).
     if (image->uri.empty() && image->bufferView < 0 && bytes != nullptr && size > 0)
         image->image.assign(bytes, bytes + size);
     return true;
 }
 
-std::string first_line(const std::string& text) {
+std::string firstLine(const std::string& text) {
     const size_t end = text.find('\n');
     return end == std::string::npos ? text : text.substr(0, end);
 }
 
 /// Maps the indices of one glTF array to the level's array, in order of first use.
 struct UseOrder {
-    std::map<int, uint32_t> level_index;
+    std::map<int, uint32_t> levelIndex;
     std::vector<int> used;  // glTF index of each level entry
-    uint32_t use(int gltf_index) {
+    uint32_t use(int gltfIndex) {
         const auto [it, inserted] =
-            level_index.emplace(gltf_index, static_cast<uint32_t>(used.size()));
-        if (inserted) used.push_back(gltf_index);
+            levelIndex.emplace(gltfIndex, static_cast<uint32_t>(used.size()));
+        if (inserted) used.push_back(gltfIndex);
         return it->second;
     }
 };
 
-glm::dmat4 local_transform(const tinygltf::Node& node, const std::string& where) {
+glm::dmat4 localTransform(const tinygltf::Node& node, const std::string& where) {
     glm::dmat4 m(1.0);
     if (node.matrix.size() == 16) {
         for (int c = 0; c < 4; ++c)
@@ -78,85 +78,85 @@ struct Importer {
     std::string folder;
     SourceLevel level;
     UseOrder materials, textures, images;
-    uint32_t default_material = kNoIndex;
+    uint32_t defaultMaterial = kNoIndex;
 
-    uint32_t use_texture(int gltf_texture) {
-        if (gltf_texture < 0) return kNoIndex;
-        if (static_cast<size_t>(gltf_texture) >= model.textures.size())
-            throw Error(file + ": texture index " + std::to_string(gltf_texture) +
+    uint32_t useTexture(int gltfTexture) {
+        if (gltfTexture < 0) return kNoIndex;
+        if (static_cast<size_t>(gltfTexture) >= model.textures.size())
+            throw Error(file + ": texture index " + std::to_string(gltfTexture) +
                         " is out of range");
-        return textures.use(gltf_texture);
+        return textures.use(gltfTexture);
     }
 
-    uint32_t use_material(int gltf_material) {
-        if (gltf_material < 0) {
-            if (default_material == kNoIndex) default_material = materials.use(-1);
-            return default_material;
+    uint32_t useMaterial(int gltfMaterial) {
+        if (gltfMaterial < 0) {
+            if (defaultMaterial == kNoIndex) defaultMaterial = materials.use(-1);
+            return defaultMaterial;
         }
-        if (static_cast<size_t>(gltf_material) >= model.materials.size())
-            throw Error(file + ": material index " + std::to_string(gltf_material) +
+        if (static_cast<size_t>(gltfMaterial) >= model.materials.size())
+            throw Error(file + ": material index " + std::to_string(gltfMaterial) +
                         " is out of range");
-        return materials.use(gltf_material);
+        return materials.use(gltfMaterial);
     }
 
-    void visit(int node_index, const glm::dmat4& parent, uint32_t entity, std::vector<bool>& seen,
+    void visit(int nodeIndex, const glm::dmat4& parent, uint32_t entity, std::vector<bool>& seen,
                int depth) {
-        if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size())
-            throw Error(file + ": node index " + std::to_string(node_index) + " is out of range");
-        if (seen[static_cast<size_t>(node_index)])
-            throw Error(file + ": node " + std::to_string(node_index) +
+        if (nodeIndex < 0 || static_cast<size_t>(nodeIndex) >= model.nodes.size())
+            throw Error(file + ": node index " + std::to_string(nodeIndex) + " is out of range");
+        if (seen[static_cast<size_t>(nodeIndex)])
+            throw Error(file + ": node " + std::to_string(nodeIndex) +
                         " appears twice in the hierarchy; expected a tree");
         if (depth > 1024) throw Error(file + ": node hierarchy deeper than 1024");
-        seen[static_cast<size_t>(node_index)] = true;
-        const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
+        seen[static_cast<size_t>(nodeIndex)] = true;
+        const tinygltf::Node& node = model.nodes[static_cast<size_t>(nodeIndex)];
         const std::string name =
-            node.name.empty() ? "node_" + std::to_string(node_index) : node.name;
+            node.name.empty() ? "node_" + std::to_string(nodeIndex) : node.name;
         const std::string where = file + ": node '" + name + "'";
-        const glm::dmat4 world = parent * local_transform(node, where);
-        const NodeExtras extras = parse_node_extras(node.extras, where);
+        const glm::dmat4 world = parent * localTransform(node, where);
+        const NodeExtras extras = parseNodeExtras(node.extras, where);
 
-        if (extras.has_grid && !level.has_grid_bounds) {
-            level.has_grid_bounds = true;
-            level.grid_min = extras.grid_min;
-            level.grid_max = extras.grid_max;
+        if (extras.hasGrid && !level.hasGridBounds) {
+            level.hasGridBounds = true;
+            level.gridMin = extras.gridMin;
+            level.gridMax = extras.gridMax;
         }
-        if (extras.texels_per_metre > 0.0f) level.texels_per_metre = extras.texels_per_metre;
-        if (extras.probe_spacing > 0.0f) level.probe_spacing = extras.probe_spacing;
-        if (extras.has_sky) level.sky_radiance = extras.sky_radiance;
-        if (extras.has_exposure && node.camera < 0 && !level.has_exposure) {
-            level.has_exposure = true;
-            level.exposure_ev100 = extras.exposure_ev100;
+        if (extras.texelsPerMetre > 0.0f) level.texelsPerMetre = extras.texelsPerMetre;
+        if (extras.probeSpacing > 0.0f) level.probeSpacing = extras.probeSpacing;
+        if (extras.hasSky) level.skyRadiance = extras.skyRadiance;
+        if (extras.hasExposure && node.camera < 0 && !level.hasExposure) {
+            level.hasExposure = true;
+            level.exposureEv100 = extras.exposureEv100;
         }
         if (extras.dynamic || extras.spawn || extras.probe) {
             Entity e;
             e.name = name;
-            e.flags = (extras.dynamic ? entity_dynamic : 0u) | (extras.mover ? entity_mover : 0u) |
-                      (extras.spawn ? entity_spawn : 0u) | (extras.probe ? entity_probe : 0u);
+            e.flags = (extras.dynamic ? kEntityDynamic : 0u) | (extras.mover ? kEntityMover : 0u) |
+                      (extras.spawn ? kEntitySpawn : 0u) | (extras.probe ? kEntityProbe : 0u);
             e.position = glm::vec3(glm::dvec3(world[3]));
-            e.rotation = rotation_of(world);
+            e.rotation = rotationOf(world);
             e.scale =
                 glm::vec3(glm::length(glm::dvec3(world[0])), glm::length(glm::dvec3(world[1])),
                           glm::length(glm::dvec3(world[2])));
-            e.mover_offset = extras.mover_offset;
-            e.mover_period = extras.mover_period;
-            if (extras.has_probe_box) {
-                e.probe_box_min = extras.probe_box_min;
-                e.probe_box_max = extras.probe_box_max;
+            e.moverOffset = extras.moverOffset;
+            e.moverPeriod = extras.moverPeriod;
+            if (extras.hasProbeBox) {
+                e.probeBoxMin = extras.probeBoxMin;
+                e.probeBoxMax = extras.probeBoxMax;
             }
             level.entities.push_back(e);
             if (extras.dynamic) entity = static_cast<uint32_t>(level.entities.size() - 1);
         }
 
-        const auto light_extension = node.extensions.find("KHR_lights_punctual");
-        if (light_extension != node.extensions.end() && light_extension->second.Has("light")) {
-            const tinygltf::Value& index_value = light_extension->second.Get("light");
-            const int light_index = index_value.IsInt() ? index_value.Get<int>() : -1;
-            if (light_index < 0 || static_cast<size_t>(light_index) >= model.lights.size())
+        const auto lightExtension = node.extensions.find("KHR_lights_punctual");
+        if (lightExtension != node.extensions.end() && lightExtension->second.Has("light")) {
+            const tinygltf::Value& indexValue = lightExtension->second.Get("light");
+            const int lightIndex = indexValue.IsInt() ? indexValue.Get<int>() : -1;
+            if (lightIndex < 0 || static_cast<size_t>(lightIndex) >= model.lights.size())
                 throw Error(where + ": KHR_lights_punctual light index " +
-                            std::to_string(light_index) + " is out of range");
-            level.lights.push_back(import_light(model.lights[static_cast<size_t>(light_index)],
-                                                world, name, extras.role, where));
-        } else if (extras.has_role) {
+                            std::to_string(lightIndex) + " is out of range");
+            level.lights.push_back(importLight(model.lights[static_cast<size_t>(lightIndex)], world,
+                                               name, extras.role, where));
+        } else if (extras.hasRole) {
             throw Error(where + ": extras.onelight.role is set but the node has no light");
         }
 
@@ -165,9 +165,9 @@ struct Importer {
                 throw Error(where + ": camera index " + std::to_string(node.camera) +
                             " is out of range");
             Camera camera =
-                import_camera(model.cameras[static_cast<size_t>(node.camera)], world, name, where);
-            camera.has_exposure = extras.has_exposure;
-            camera.exposure_ev100 = extras.exposure_ev100;
+                importCamera(model.cameras[static_cast<size_t>(node.camera)], world, name, where);
+            camera.hasExposure = extras.hasExposure;
+            camera.exposureEv100 = extras.exposureEv100;
             level.cameras.push_back(camera);
         }
 
@@ -178,18 +178,18 @@ struct Importer {
             const tinygltf::Mesh& mesh = model.meshes[static_cast<size_t>(node.mesh)];
             for (size_t p = 0; p < mesh.primitives.size(); ++p) {
                 ImportedPrimitive imported =
-                    import_primitive(model, node.mesh, static_cast<int>(p), file);
-                if (!imported.is_triangles || imported.indices.empty()) continue;
+                    importPrimitive(model, node.mesh, static_cast<int>(p), file);
+                if (!imported.isTriangles || imported.indices.empty()) continue;
                 MeshInstance instance;
-                instance.node_name = name;
-                instance.mesh_name =
+                instance.nodeName = name;
+                instance.meshName =
                     mesh.name.empty() ? "mesh_" + std::to_string(node.mesh) : mesh.name;
                 instance.primitive = static_cast<uint32_t>(p);
-                instance.material = use_material(mesh.primitives[p].material);
-                instance.world_from_local = world;
+                instance.material = useMaterial(mesh.primitives[p].material);
+                instance.worldFromLocal = world;
                 instance.vertices = std::move(imported.vertices);
                 instance.indices = std::move(imported.indices);
-                instance.has_uv1 = imported.has_uv1;
+                instance.hasUv1 = imported.hasUv1;
                 instance.dynamic = entity != kNoIndex;
                 instance.entity = entity;
                 level.instances.push_back(std::move(instance));
@@ -198,11 +198,11 @@ struct Importer {
         for (int child : node.children) visit(child, world, entity, seen, depth + 1);
     }
 
-    std::vector<unsigned char> buffer_view_bytes(int view_index, int image_index) const {
-        const std::string where = file + ": image " + std::to_string(image_index);
-        if (static_cast<size_t>(view_index) >= model.bufferViews.size())
-            throw Error(where + ": bufferView " + std::to_string(view_index) + " is out of range");
-        const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(view_index)];
+    std::vector<unsigned char> bufferViewBytes(int viewIndex, int imageIndex) const {
+        const std::string where = file + ": image " + std::to_string(imageIndex);
+        if (static_cast<size_t>(viewIndex) >= model.bufferViews.size())
+            throw Error(where + ": bufferView " + std::to_string(viewIndex) + " is out of range");
+        const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(viewIndex)];
         if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
             throw Error(where + ": buffer " + std::to_string(view.buffer) + " is out of range");
         const std::vector<unsigned char>& data =
@@ -215,55 +215,55 @@ struct Importer {
             data.begin() + static_cast<std::ptrdiff_t>(view.byteOffset + view.byteLength));
     }
 
-    void resolve_materials_and_textures() {
+    void resolveMaterialsAndTextures() {
         std::vector<Material> converted;
         for (size_t i = 0; i < materials.used.size(); ++i) {
             const int source = materials.used[i];
             if (source < 0) {
-                converted.push_back(world::default_material());
+                converted.push_back(world::defaultMaterial());
                 continue;
             }
-            Material m = convert_material(model.materials[static_cast<size_t>(source)],
-                                          [this](int t) { return use_texture(t); });
+            Material m = convertMaterial(model.materials[static_cast<size_t>(source)],
+                                         [this](int t) { return useTexture(t); });
             if (m.name.empty()) m.name = "material_" + std::to_string(source);
             converted.push_back(m);
         }
         level.materials = std::move(converted);
-        for (int source_index : textures.used) {
-            const tinygltf::Texture& source = model.textures[static_cast<size_t>(source_index)];
+        for (int sourceIndex : textures.used) {
+            const tinygltf::Texture& source = model.textures[static_cast<size_t>(sourceIndex)];
             Texture texture;
             if (source.source >= 0) {
                 if (static_cast<size_t>(source.source) >= model.images.size())
-                    throw Error(file + ": texture " + std::to_string(source_index) + " image " +
+                    throw Error(file + ": texture " + std::to_string(sourceIndex) + " image " +
                                 std::to_string(source.source) + " is out of range");
                 texture.image = images.use(source.source);
             }
             if (source.sampler >= 0) {
                 if (static_cast<size_t>(source.sampler) >= model.samplers.size())
-                    throw Error(file + ": texture " + std::to_string(source_index) + " sampler " +
+                    throw Error(file + ": texture " + std::to_string(sourceIndex) + " sampler " +
                                 std::to_string(source.sampler) + " is out of range");
                 const tinygltf::Sampler& s = model.samplers[static_cast<size_t>(source.sampler)];
-                texture.sampler.mag_filter =
+                texture.sampler.magFilter =
                     static_cast<uint16_t>(s.magFilter < 0 ? 0 : s.magFilter);
-                texture.sampler.min_filter =
+                texture.sampler.minFilter =
                     static_cast<uint16_t>(s.minFilter < 0 ? 0 : s.minFilter);
-                texture.sampler.wrap_s = static_cast<uint16_t>(s.wrapS);
-                texture.sampler.wrap_t = static_cast<uint16_t>(s.wrapT);
+                texture.sampler.wrapS = static_cast<uint16_t>(s.wrapS);
+                texture.sampler.wrapT = static_cast<uint16_t>(s.wrapT);
             }
             level.textures.push_back(texture);
         }
-        for (int source_index : images.used) {
-            const tinygltf::Image& source = model.images[static_cast<size_t>(source_index)];
+        for (int sourceIndex : images.used) {
+            const tinygltf::Image& source = model.images[static_cast<size_t>(sourceIndex)];
             Image image;
             image.name = source.name;
-            image.mime_type = source.mimeType;
+            image.mimeType = source.mimeType;
             if (!source.uri.empty()) {
                 image.uri =
                     (std::filesystem::path(folder) / source.uri).lexically_normal().string();
             } else if (source.bufferView >= 0) {
-                image.encoded_bytes = buffer_view_bytes(source.bufferView, source_index);
+                image.encodedBytes = bufferViewBytes(source.bufferView, sourceIndex);
             } else {
-                image.encoded_bytes = source.image;
+                image.encodedBytes = source.image;
             }
             level.images.push_back(std::move(image));
         }
@@ -272,43 +272,43 @@ struct Importer {
 
 }  // namespace
 
-SourceLevel import_gltf(const std::string& path) {
+SourceLevel importGltf(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         throw Error(path + ": cannot open; expected a readable .gltf or .glb file");
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&keep_encoded_image, nullptr);
+    loader.SetImageLoader(&keepEncodedImage, nullptr);
     std::string error, warning;
     const bool binary = std::filesystem::path(path).extension() == ".glb";
     const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
                                : loader.LoadASCIIFromFile(&model, &error, &warning, path);
     if (!loaded)
         throw Error(path + ": not a valid glTF 2.0 file: " +
-                    (error.empty() ? std::string("unknown error") : first_line(error)));
+                    (error.empty() ? std::string("unknown error") : firstLine(error)));
 
-    Importer importer{model, path, std::filesystem::path(path).parent_path().string(), {}, {}, {},
-                      {},    kNoIndex};
-    importer.level.source_path = path;
+    Importer importer{
+        model, path, std::filesystem::path(path).parent_path().string(), {}, {}, {}, {}, kNoIndex};
+    importer.level.sourcePath = path;
     std::vector<int> roots;
     if (!model.scenes.empty()) {
-        const int scene_index =
+        const int sceneIndex =
             model.defaultScene >= 0 && static_cast<size_t>(model.defaultScene) < model.scenes.size()
                 ? model.defaultScene
                 : 0;
-        roots = model.scenes[static_cast<size_t>(scene_index)].nodes;
+        roots = model.scenes[static_cast<size_t>(sceneIndex)].nodes;
     } else {
-        std::vector<bool> is_child(model.nodes.size(), false);
+        std::vector<bool> isChild(model.nodes.size(), false);
         for (const tinygltf::Node& node : model.nodes)
             for (int child : node.children)
                 if (child >= 0 && static_cast<size_t>(child) < model.nodes.size())
-                    is_child[static_cast<size_t>(child)] = true;
+                    isChild[static_cast<size_t>(child)] = true;
         for (size_t i = 0; i < model.nodes.size(); ++i)
-            if (!is_child[i]) roots.push_back(static_cast<int>(i));
+            if (!isChild[i]) roots.push_back(static_cast<int>(i));
     }
     std::vector<bool> seen(model.nodes.size(), false);
     for (int root : roots) importer.visit(root, glm::dmat4(1.0), kNoIndex, seen, 0);
-    importer.resolve_materials_and_textures();
+    importer.resolveMaterialsAndTextures();
     return std::move(importer.level);
 }
 

@@ -8,17 +8,17 @@
 
 namespace onelight::world {
 
-Light import_light(const tinygltf::Light& source, const glm::dmat4& world_from_local,
-                   const std::string& name, LightRole role, const std::string& where) {
+Light importLight(const tinygltf::Light& source, const glm::dmat4& worldFromLocal,
+                  const std::string& name, LightRole role, const std::string& where) {
     Light light;
     light.name = name;
     light.role = role;
     if (source.type == "directional")
-        light.type = LightType::directional;
+        light.type = LightType::kDirectional;
     else if (source.type == "point")
-        light.type = LightType::point;
+        light.type = LightType::kPoint;
     else if (source.type == "spot")
-        light.type = LightType::spot;
+        light.type = LightType::kSpot;
     else
         throw Error(where + ": light type \"" + source.type +
                     "\"; expected \"directional\", \"point\" or \"spot\"");
@@ -35,16 +35,16 @@ Light import_light(const tinygltf::Light& source, const glm::dmat4& world_from_l
     if (!std::isfinite(source.range) || source.range < 0.0)
         throw Error(where + ": light range; expected a finite value >= 0");
     light.range = static_cast<float>(source.range);
-    if (light.type == LightType::spot) {
+    if (light.type == LightType::kSpot) {
         const double inner = source.spot.innerConeAngle, outer = source.spot.outerConeAngle;
         if (!(inner >= 0.0 && inner < outer && outer <= 1.5707963267948966 + 1e-6))
             throw Error(where + ": spot cone angles inner " + std::to_string(inner) + ", outer " +
                         std::to_string(outer) + "; expected 0 <= inner < outer <= pi/2");
-        light.inner_cone = static_cast<float>(inner);
-        light.outer_cone = static_cast<float>(outer);
+        light.innerCone = static_cast<float>(inner);
+        light.outerCone = static_cast<float>(outer);
     }
-    const glm::dvec3 position(world_from_local[3]);
-    const glm::dvec3 direction = glm::dvec3(world_from_local * glm::dvec4(0.0, 0.0, -1.0, 0.0));
+    const glm::dvec3 position(worldFromLocal[3]);
+    const glm::dvec3 direction = glm::dvec3(worldFromLocal * glm::dvec4(0.0, 0.0, -1.0, 0.0));
     const double length = glm::length(direction);
     if (!std::isfinite(length) || !(length > 0.0))
         throw Error(where + ": the light's node transform is degenerate");

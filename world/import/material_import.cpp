@@ -8,7 +8,7 @@
 namespace onelight::world {
 namespace {
 
-float finite_or(double value, float fallback) {
+float finiteOr(double value, float fallback) {
     return std::isfinite(value) ? static_cast<float>(value) : fallback;
 }
 
@@ -16,64 +16,64 @@ float clamp01(float value) {
     return std::clamp(value, 0.0f, 1.0f);
 }
 
-void derive_engine_parameters(Material& m) {
-    const glm::vec3 base(m.base_color);
+void deriveEngineParameters(Material& m) {
+    const glm::vec3 base(m.baseColor);
     m.albedo = base * (1.0f - m.metallic);
-    m.specular_color = glm::mix(glm::vec3(0.04f), base, m.metallic);
-    m.gloss = gloss_from_roughness(m.roughness);
-    m.material_class = classify_material(m);
+    m.specularColor = glm::mix(glm::vec3(0.04f), base, m.metallic);
+    m.gloss = glossFromRoughness(m.roughness);
+    m.materialClass = classifyMaterial(m);
 }
 
 }  // namespace
 
-float gloss_from_roughness(float roughness) {
+float glossFromRoughness(float roughness) {
     const double r = std::clamp(static_cast<double>(roughness), 1e-3, 1.0);
     const double r4 = (r * r) * (r * r);
     const double g = std::log2(std::max(2.0 / r4 - 1.0, 1.0)) / 18.0;
     return static_cast<float>(std::clamp(g, 0.0, 1.0));
 }
 
-MaterialClass classify_material(const Material& material) {
-    const bool textured = material.metallic_roughness_texture != kNoIndex;
-    if (!textured && material.metallic >= 1.0f) return MaterialClass::metal;
+MaterialClass classifyMaterial(const Material& material) {
+    const bool textured = material.metallicRoughnessTexture != kNoIndex;
+    if (!textured && material.metallic >= 1.0f) return MaterialClass::kMetal;
     if (material.metallic <= 0.0f) {
-        if (!textured && material.roughness >= 1.0f) return MaterialClass::lambert;
-        return MaterialClass::dielectric;
+        if (!textured && material.roughness >= 1.0f) return MaterialClass::kLambert;
+        return MaterialClass::kDielectric;
     }
-    return MaterialClass::full;
+    return MaterialClass::kFull;
 }
 
-Material default_material() {
+Material defaultMaterial() {
     Material m;
     m.name = "default";
-    derive_engine_parameters(m);
+    deriveEngineParameters(m);
     return m;
 }
 
-Material convert_material(const tinygltf::Material& source,
-                          const std::function<uint32_t(int)>& use_texture) {
+Material convertMaterial(const tinygltf::Material& source,
+                         const std::function<uint32_t(int)>& useTexture) {
     Material m;
     m.name = source.name;
     const tinygltf::PbrMetallicRoughness& pbr = source.pbrMetallicRoughness;
     for (size_t i = 0; i < 4 && i < pbr.baseColorFactor.size(); ++i)
-        m.base_color[static_cast<int>(i)] = clamp01(finite_or(pbr.baseColorFactor[i], 1.0f));
-    m.metallic = clamp01(finite_or(pbr.metallicFactor, 1.0f));
-    m.roughness = clamp01(finite_or(pbr.roughnessFactor, 1.0f));
+        m.baseColor[static_cast<int>(i)] = clamp01(finiteOr(pbr.baseColorFactor[i], 1.0f));
+    m.metallic = clamp01(finiteOr(pbr.metallicFactor, 1.0f));
+    m.roughness = clamp01(finiteOr(pbr.roughnessFactor, 1.0f));
     for (size_t i = 0; i < 3 && i < source.emissiveFactor.size(); ++i)
-        m.emissive[static_cast<int>(i)] = std::max(0.0f, finite_or(source.emissiveFactor[i], 0.0f));
-    m.alpha_cutoff = clamp01(finite_or(source.alphaCutoff, 0.5f));
-    m.alpha_mode = source.alphaMode == "MASK"    ? AlphaMode::mask
-                   : source.alphaMode == "BLEND" ? AlphaMode::blend
-                                                 : AlphaMode::opaque;
-    m.double_sided = source.doubleSided;
-    m.base_color_texture = use_texture(pbr.baseColorTexture.index);
-    m.metallic_roughness_texture = use_texture(pbr.metallicRoughnessTexture.index);
-    m.normal_texture = use_texture(source.normalTexture.index);
-    m.occlusion_texture = use_texture(source.occlusionTexture.index);
-    m.emissive_texture = use_texture(source.emissiveTexture.index);
-    m.normal_scale = finite_or(source.normalTexture.scale, 1.0f);
-    m.occlusion_strength = clamp01(finite_or(source.occlusionTexture.strength, 1.0f));
-    derive_engine_parameters(m);
+        m.emissive[static_cast<int>(i)] = std::max(0.0f, finiteOr(source.emissiveFactor[i], 0.0f));
+    m.alphaCutoff = clamp01(finiteOr(source.alphaCutoff, 0.5f));
+    m.alphaMode = source.alphaMode == "MASK"    ? AlphaMode::kMask
+                  : source.alphaMode == "BLEND" ? AlphaMode::kBlend
+                                                : AlphaMode::kOpaque;
+    m.doubleSided = source.doubleSided;
+    m.baseColorTexture = useTexture(pbr.baseColorTexture.index);
+    m.metallicRoughnessTexture = useTexture(pbr.metallicRoughnessTexture.index);
+    m.normalTexture = useTexture(source.normalTexture.index);
+    m.occlusionTexture = useTexture(source.occlusionTexture.index);
+    m.emissiveTexture = useTexture(source.emissiveTexture.index);
+    m.normalScale = finiteOr(source.normalTexture.scale, 1.0f);
+    m.occlusionStrength = clamp01(finiteOr(source.occlusionTexture.strength, 1.0f));
+    deriveEngineParameters(m);
     return m;
 }
 

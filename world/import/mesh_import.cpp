@@ -11,7 +11,7 @@
 namespace onelight::world {
 namespace {
 
-std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& raw, int mode) {
+std::vector<uint32_t> triangleList(const std::vector<uint32_t>& raw, int mode) {
     std::vector<uint32_t> list;
     if (mode == TINYGLTF_MODE_TRIANGLES) {
         list.assign(raw.begin(), raw.begin() + static_cast<std::ptrdiff_t>(raw.size() / 3 * 3));
@@ -32,13 +32,13 @@ std::vector<uint32_t> triangle_list(const std::vector<uint32_t>& raw, int mode) 
     return list;
 }
 
-bool all_finite(const std::vector<float>& values) {
+bool allFinite(const std::vector<float>& values) {
     for (float v : values)
         if (!std::isfinite(v)) return false;
     return true;
 }
 
-size_t first_non_finite(const std::vector<float>& values, int components) {
+size_t firstNonFinite(const std::vector<float>& values, int components) {
     for (size_t i = 0; i < values.size(); ++i)
         if (!std::isfinite(values[i])) return i / static_cast<size_t>(components);
     return 0;
@@ -46,7 +46,7 @@ size_t first_non_finite(const std::vector<float>& values, int components) {
 
 /// glTF: "When normals are not specified, client implementations MUST calculate flat normals."
 /// Unwelds the mesh so each triangle has its own three vertices.
-void make_flat_normals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indices) {
+void makeFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& indices) {
     std::vector<Vertex> flat;
     flat.reserve(indices.size());
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
@@ -68,59 +68,57 @@ void make_flat_normals(std::vector<Vertex>& vertices, std::vector<uint32_t>& ind
 
 }  // namespace
 
-ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
-                                   int primitive_index, const std::string& file) {
-    const tinygltf::Mesh& mesh = model.meshes[static_cast<size_t>(mesh_index)];
-    const tinygltf::Primitive& primitive = mesh.primitives[static_cast<size_t>(primitive_index)];
+ImportedPrimitive importPrimitive(const tinygltf::Model& model, int meshIndex, int primitiveIndex,
+                                  const std::string& file) {
+    const tinygltf::Mesh& mesh = model.meshes[static_cast<size_t>(meshIndex)];
+    const tinygltf::Primitive& primitive = mesh.primitives[static_cast<size_t>(primitiveIndex)];
     const std::string where = file + ": mesh '" +
-                              (mesh.name.empty() ? std::to_string(mesh_index) : mesh.name) +
-                              "' primitive " + std::to_string(primitive_index);
+                              (mesh.name.empty() ? std::to_string(meshIndex) : mesh.name) +
+                              "' primitive " + std::to_string(primitiveIndex);
     ImportedPrimitive out;
     const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
     if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
         mode != TINYGLTF_MODE_TRIANGLE_FAN) {
-        out.is_triangles = false;
+        out.isTriangles = false;
         return out;
     }
     const auto attribute = [&](const char* name) {
         const auto it = primitive.attributes.find(name);
         return it == primitive.attributes.end() ? -1 : it->second;
     };
-    const int position_accessor = attribute("POSITION");
-    if (position_accessor < 0) throw Error(where + ": POSITION attribute is missing");
+    const int positionAccessor = attribute("POSITION");
+    if (positionAccessor < 0) throw Error(where + ": POSITION attribute is missing");
     const std::vector<float> positions =
-        read_float_accessor(model, position_accessor, 3, where + " POSITION");
-    if (!all_finite(positions)) {
-        throw Error(where + ": POSITION of vertex " +
-                    std::to_string(first_non_finite(positions, 3)) +
+        readFloatAccessor(model, positionAccessor, 3, where + " POSITION");
+    if (!allFinite(positions)) {
+        throw Error(where + ": POSITION of vertex " + std::to_string(firstNonFinite(positions, 3)) +
                     " is NaN or Inf; expected finite coordinates");
     }
-    const size_t vertex_count = positions.size() / 3;
-    const auto read_optional = [&](const char* name, int components) {
+    const size_t vertexCount = positions.size() / 3;
+    const auto readOptional = [&](const char* name, int components) {
         const int accessor = attribute(name);
         if (accessor < 0) return std::vector<float>();
         const std::string place = where + " " + name;
-        std::vector<float> values = read_float_accessor(model, accessor, components, place);
-        if (values.size() != vertex_count * static_cast<size_t>(components)) {
+        std::vector<float> values = readFloatAccessor(model, accessor, components, place);
+        if (values.size() != vertexCount * static_cast<size_t>(components)) {
             throw Error(place + ": has " +
                         std::to_string(values.size() / static_cast<size_t>(components)) +
-                        " elements; expected " + std::to_string(vertex_count) + " like POSITION");
+                        " elements; expected " + std::to_string(vertexCount) + " like POSITION");
         }
-        if (!all_finite(values)) {
-            throw Error(place + ": element " +
-                        std::to_string(first_non_finite(values, components)) +
+        if (!allFinite(values)) {
+            throw Error(place + ": element " + std::to_string(firstNonFinite(values, components)) +
                         " is NaN or Inf; expected finite values");
         }
         return values;
     };
-    const std::vector<float> normals = read_optional("NORMAL", 3);
-    const std::vector<float> tangents = read_optional("TANGENT", 4);
-    const std::vector<float> uv0 = read_optional("TEXCOORD_0", 2);
-    const std::vector<float> uv1 = read_optional("TEXCOORD_1", 2);
-    out.has_uv1 = !uv1.empty();
+    const std::vector<float> normals = readOptional("NORMAL", 3);
+    const std::vector<float> tangents = readOptional("TANGENT", 4);
+    const std::vector<float> uv0 = readOptional("TEXCOORD_0", 2);
+    const std::vector<float> uv1 = readOptional("TEXCOORD_1", 2);
+    out.hasUv1 = !uv1.empty();
 
-    out.vertices.resize(vertex_count);
-    for (size_t i = 0; i < vertex_count; ++i) {
+    out.vertices.resize(vertexCount);
+    for (size_t i = 0; i < vertexCount; ++i) {
         Vertex& v = out.vertices[i];
         v.position = glm::vec3(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
         if (!normals.empty()) {
@@ -141,21 +139,21 @@ ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
 
     std::vector<uint32_t> raw;
     if (primitive.indices >= 0) {
-        raw = read_index_accessor(model, primitive.indices, where + " indices");
+        raw = readIndexAccessor(model, primitive.indices, where + " indices");
         for (size_t i = 0; i < raw.size(); ++i) {
-            if (raw[i] >= vertex_count) {
+            if (raw[i] >= vertexCount) {
                 throw Error(where + ": index " + std::to_string(i) + " is " +
                             std::to_string(raw[i]) + "; expected below the vertex count " +
-                            std::to_string(vertex_count));
+                            std::to_string(vertexCount));
             }
         }
     } else {
-        raw.resize(vertex_count);
-        for (size_t i = 0; i < vertex_count; ++i) raw[i] = static_cast<uint32_t>(i);
+        raw.resize(vertexCount);
+        for (size_t i = 0; i < vertexCount; ++i) raw[i] = static_cast<uint32_t>(i);
     }
-    out.indices = triangle_list(raw, mode);
+    out.indices = triangleList(raw, mode);
 
-    if (normals.empty()) make_flat_normals(out.vertices, out.indices);
+    if (normals.empty()) makeFlatNormals(out.vertices, out.indices);
     // Zero-length authored normals fall back to the normal of a triangle that uses the vertex.
     for (size_t t = 0; t + 2 < out.indices.size(); t += 3) {
         const glm::dvec3 a(out.vertices[out.indices[t]].position);
@@ -172,10 +170,10 @@ ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
     for (Vertex& v : out.vertices)
         if (v.normal == glm::vec3(0.0f)) v.normal = glm::vec3(0, 0, 1);
 
-    bool tangents_usable = !tangents.empty();
+    bool tangentsUsable = !tangents.empty();
     for (const Vertex& v : out.vertices)
-        if (v.tangent == glm::vec4(0.0f)) tangents_usable = false;
-    if (!tangents_usable) generate_tangents(out.vertices, out.indices);
+        if (v.tangent == glm::vec4(0.0f)) tangentsUsable = false;
+    if (!tangentsUsable) generateTangents(out.vertices, out.indices);
     return out;
 }
 

@@ -16,13 +16,13 @@ namespace onelight::world {
 struct ImportedPrimitive {
     std::vector<Vertex> vertices;
     std::vector<uint32_t> indices;  // triangle list
-    bool has_uv1 = false;
-    bool is_triangles = true;  // false for points and lines: the caller skips them
+    bool hasUv1 = false;
+    bool isTriangles = true;  // false for points and lines: the caller skips them
 };
 
-/// Reads primitive `primitive_index` of mesh `mesh_index`. Throws Error naming the mesh
+/// Reads primitive `primitiveIndex` of mesh `meshIndex`. Throws Error naming the mesh
 /// on malformed data, NaN or Inf.
-ImportedPrimitive import_primitive(const tinygltf::Model& model, int mesh_index,
-                                   int primitive_index, const std::string& file);
+ImportedPrimitive importPrimitive(const tinygltf::Model& model, int meshIndex, int primitiveIndex,
+                                  const std::string& file);
 
 }  // namespace onelight::world

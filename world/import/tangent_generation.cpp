@@ -4,7 +4,7 @@
 
 namespace onelight::world {
 
-glm::vec3 any_perpendicular(const glm::vec3& n) {
+glm::vec3 anyPerpendicular(const glm::vec3& n) {
     // Duff et al. 2017, "Building an Orthonormal Basis, Revisited", listing 3
     const float sign = std::copysign(1.0f, n.z);
     const float a = -1.0f / (sign + n.z);
@@ -12,12 +12,12 @@ glm::vec3 any_perpendicular(const glm::vec3& n) {
     return glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
 }
 
-void generate_tangents(std::vector<Vertex>& vertices, const std::vector<uint32_t>& indices) {
+void generateTangents(std::vector<Vertex>& vertices, const std::vector<uint32_t>& indices) {
     // Lengyel 2001: for a triangle with edges e1, e2 and UV deltas (s1,t1), (s2,t2),
     //   T = (t2 e1 - t1 e2) / det,  B = (s1 e2 - s2 e1) / det,  det = s1 t2 - s2 t1.
     // Accumulated unnormalised (area weighted), then Gram-Schmidt against the normal.
-    std::vector<glm::dvec3> tangent_sum(vertices.size(), glm::dvec3(0.0));
-    std::vector<glm::dvec3> bitangent_sum(vertices.size(), glm::dvec3(0.0));
+    std::vector<glm::dvec3> tangentSum(vertices.size(), glm::dvec3(0.0));
+    std::vector<glm::dvec3> bitangentSum(vertices.size(), glm::dvec3(0.0));
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
         const Vertex& a = vertices[indices[t]];
         const Vertex& b = vertices[indices[t + 1]];
@@ -35,21 +35,21 @@ void generate_tangents(std::vector<Vertex>& vertices, const std::vector<uint32_t
             !std::isfinite(glm::dot(bitangent, bitangent)))
             continue;
         for (int k = 0; k < 3; ++k) {
-            tangent_sum[indices[t + static_cast<size_t>(k)]] += tangent;
-            bitangent_sum[indices[t + static_cast<size_t>(k)]] += bitangent;
+            tangentSum[indices[t + static_cast<size_t>(k)]] += tangent;
+            bitangentSum[indices[t + static_cast<size_t>(k)]] += bitangent;
         }
     }
     for (size_t i = 0; i < vertices.size(); ++i) {
         const glm::dvec3 n = glm::dvec3(vertices[i].normal);
-        glm::dvec3 t = tangent_sum[i] - n * glm::dot(n, tangent_sum[i]);
+        glm::dvec3 t = tangentSum[i] - n * glm::dot(n, tangentSum[i]);
         const double length = glm::length(t);
         if (!(length > 1e-12) || !std::isfinite(length)) {
-            vertices[i].tangent = glm::vec4(any_perpendicular(vertices[i].normal), 1.0f);
+            vertices[i].tangent = glm::vec4(anyPerpendicular(vertices[i].normal), 1.0f);
             continue;
         }
         t /= length;
         // glTF: bitangent = cross(normal, tangent.xyz) * w
-        const double handedness = glm::dot(glm::cross(n, t), bitangent_sum[i]) < 0.0 ? -1.0 : 1.0;
+        const double handedness = glm::dot(glm::cross(n, t), bitangentSum[i]) < 0.0 ? -1.0 : 1.0;
         vertices[i].tangent = glm::vec4(glm::vec3(t), static_cast<float>(handedness));
     }
 }

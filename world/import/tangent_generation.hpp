@@ -12,10 +12,10 @@ namespace onelight::world {
 
 /// Fills vertices[i].tangent for every vertex. Vertices without usable UVs get any unit vector
 /// perpendicular to their normal with w = +1. Never produces NaN.
-void generate_tangents(std::vector<Vertex>& vertices, const std::vector<uint32_t>& indices);
+void generateTangents(std::vector<Vertex>& vertices, const std::vector<uint32_t>& indices);
 
 /// A unit vector perpendicular to the unit vector n (Duff et al. 2017, "Building an
 /// Orthonormal Basis, Revisited").
-glm::vec3 any_perpendicular(const glm::vec3& n);
+glm::vec3 anyPerpendicular(const glm::vec3& n);
 
 }  // namespace onelight::world

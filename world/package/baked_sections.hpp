@@ -14,8 +14,8 @@
 
 namespace onelight::package {
 
-/// Sections 32, 33 and 34, in that order, then 35 when there are probes, for serialize_package.
-std::vector<RawSection> encode_baked_sections(const world::BakedLighting& baked);
+/// Sections 32, 33 and 34, in that order, then 35 when there are probes, for serializePackage.
+std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked);
 
 /// The baked lighting a package holds, if any.
 struct BakedContents {
@@ -26,8 +26,8 @@ struct BakedContents {
 /// Decodes sections 32..34 from the raw sections a package reader kept, and 35 when present.
 /// All of 32..34 or none must be present, and 35 only with them. `name` prefixes error messages
 /// (usually the file path). Throws world::Error.
-[[nodiscard]] BakedContents decode_baked_sections(std::span<const RawSection> sections,
-                                                  const world::CompiledLevel& level,
-                                                  const std::string& name);
+[[nodiscard]] BakedContents decodeBakedSections(std::span<const RawSection> sections,
+                                                const world::CompiledLevel& level,
+                                                const std::string& name);
 
 }  // namespace onelight::package

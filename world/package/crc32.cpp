@@ -5,7 +5,7 @@
 namespace onelight::package {
 namespace {
 
-constexpr std::array<uint32_t, 256> make_table() {
+constexpr std::array<uint32_t, 256> makeTable() {
     std::array<uint32_t, 256> table{};
     for (uint32_t i = 0; i < 256; ++i) {
         uint32_t c = i;
@@ -15,7 +15,7 @@ constexpr std::array<uint32_t, 256> make_table() {
     return table;
 }
 
-constexpr std::array<uint32_t, 256> kTable = make_table();
+constexpr std::array<uint32_t, 256> kTable = makeTable();
 
 }  // namespace
 

@@ -2,7 +2,7 @@
 //
 // Layout, little-endian throughout:
 //   FileHeader                        at offset 0
-//   SectionEntry[section_count]       right after the header
+//   SectionEntry[sectionCount]       right after the header
 //   section payloads                  each at an offset that is a multiple of 8, zero-padded
 //
 // A section is an array of one record type (or bytes). Records refer to each other by index
@@ -33,55 +33,55 @@ inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
 
 enum SectionId : uint32_t {
-    section_strings = 0,            // char[]: UTF-8 bytes of every string, no terminators
-    section_level = 1,              // DiskLevel[1]
-    section_materials = 2,          // DiskMaterial[]
-    section_textures = 3,           // DiskTexture[]
-    section_images = 4,             // DiskImage[]
-    section_image_bytes = 5,        // uint8_t[]: encoded (PNG/JPEG) bytes of embedded images
-    section_lights = 6,             // DiskLight[]
-    section_cameras = 7,            // DiskCamera[]
-    section_vertices = 8,           // DiskVertex[]: static, world space
-    section_indices = 9,            // uint32_t[]: static triangles, grouped by leaf then surface
-    section_surfaces = 10,          // DiskSurface[]
-    section_given_up_lights = 11,   // uint32_t[]: light indices, ranges owned by surfaces
-    section_charts = 12,            // DiskChart[]
-    section_atlases = 13,           // DiskAtlas[]
-    section_bsp_planes = 14,        // DiskBspPlane[]
-    section_bsp_nodes = 15,         // DiskBspNode[]: node 0 is the root when any exists
-    section_bsp_leaves = 16,        // DiskBspLeaf[]: >= 1
-    section_dynamic_vertices = 17,  // DiskVertex[]: in their mesh's space
-    section_dynamic_indices = 18,   // uint32_t[]: relative to the mesh's first_vertex
-    section_dynamic_meshes = 19,    // DiskDynamicMesh[]
-    section_entities = 20,          // DiskEntity[]
-    section_features = 21,          // DiskFeatures[1]
-    core_section_count = 22,        // ids below this are required, exactly once each
+    kSectionStrings = 0,           // char[]: UTF-8 bytes of every string, no terminators
+    kSectionLevel = 1,             // DiskLevel[1]
+    kSectionMaterials = 2,         // DiskMaterial[]
+    kSectionTextures = 3,          // DiskTexture[]
+    kSectionImages = 4,            // DiskImage[]
+    kSectionImageBytes = 5,        // uint8_t[]: encoded (PNG/JPEG) bytes of embedded images
+    kSectionLights = 6,            // DiskLight[]
+    kSectionCameras = 7,           // DiskCamera[]
+    kSectionVertices = 8,          // DiskVertex[]: static, world space
+    kSectionIndices = 9,           // uint32_t[]: static triangles, grouped by leaf then surface
+    kSectionSurfaces = 10,         // DiskSurface[]
+    kSectionGivenUpLights = 11,    // uint32_t[]: light indices, ranges owned by surfaces
+    kSectionCharts = 12,           // DiskChart[]
+    kSectionAtlases = 13,          // DiskAtlas[]
+    kSectionBspPlanes = 14,        // DiskBspPlane[]
+    kSectionBspNodes = 15,         // DiskBspNode[]: node 0 is the root when any exists
+    kSectionBspLeaves = 16,        // DiskBspLeaf[]: >= 1
+    kSectionDynamicVertices = 17,  // DiskVertex[]: in their mesh's space
+    kSectionDynamicIndices = 18,   // uint32_t[]: relative to the mesh's firstVertex
+    kSectionDynamicMeshes = 19,    // DiskDynamicMesh[]
+    kSectionEntities = 20,         // DiskEntity[]
+    kSectionFeatures = 21,         // DiskFeatures[1]
+    kCoreSectionCount = 22,        // ids below this are required, exactly once each
     // Baked lighting, added by the baker; unknown to `compile`, kept raw by the reader.
-    section_lightmap_texels = 32,  // directional secondary irradiance per atlas
-    section_shadow_masks = 33,     // baked primary shadow masks per atlas
-    section_light_grid = 34,       // dynamic objects' secondary lighting and dominant primary
-    section_probes = 35,           // prefiltered, normalised environment probes
-    section_id_limit = 48,         // ids at or above this are invalid
+    kSectionLightmapTexels = 32,  // directional secondary irradiance per atlas
+    kSectionShadowMasks = 33,     // baked primary shadow masks per atlas
+    kSectionLightGrid = 34,       // dynamic objects' secondary lighting and dominant primary
+    kSectionProbes = 35,          // prefiltered, normalised environment probes
+    kSectionIdLimit = 48,         // ids at or above this are invalid
 };
 
 struct FileHeader {
-    uint32_t magic;          // kMagic
-    uint32_t version;        // kVersion
-    uint32_t header_size;    // sizeof(FileHeader)
-    uint32_t section_count;  // entries in the section table, core_section_count..kMaxSections
-    uint64_t file_size;      // bytes, the whole file
-    uint32_t table_crc32;    // CRC32 of this header (with this field 0) and the section table
-    uint32_t reserved;       // 0
+    uint32_t magic;         // kMagic
+    uint32_t version;       // kVersion
+    uint32_t headerSize;    // sizeof(FileHeader)
+    uint32_t sectionCount;  // entries in the section table, kCoreSectionCount..kMaxSections
+    uint64_t fileSize;      // bytes, the whole file
+    uint32_t tableCrc32;    // CRC32 of this header (with this field 0) and the section table
+    uint32_t reserved;      // 0
 };
 static_assert(sizeof(FileHeader) == 32);
 
 struct SectionEntry {
-    uint32_t id;            // SectionId, each at most once
-    uint32_t element_size;  // bytes per record; the record's sizeof for core sections
-    uint64_t offset;        // bytes from the start of the file, multiple of 8, after the table
-    uint64_t size;          // bytes, == count * element_size, offset + size <= file_size
-    uint32_t count;         // records
-    uint32_t crc32;         // CRC32 of the section's size bytes
+    uint32_t id;           // SectionId, each at most once
+    uint32_t elementSize;  // bytes per record; the record's sizeof for core sections
+    uint64_t offset;       // bytes from the start of the file, multiple of 8, after the table
+    uint64_t size;         // bytes, == count * elementSize, offset + size <= fileSize
+    uint32_t count;        // records
+    uint32_t crc32;        // CRC32 of the section's size bytes
 };
 static_assert(sizeof(SectionEntry) == 32);
 
@@ -92,56 +92,56 @@ struct StringRef {
 static_assert(sizeof(StringRef) == 8);
 
 struct DiskLevel {
-    float exposure_ev100;    // default exposure, EV100; valid when has_exposure
-    uint32_t has_exposure;   // 0 or 1
-    float texels_per_metre;  // requested lightmap density, > 0
-    float bounds_min[3];     // metres, static geometry (0 when there is none)
-    float bounds_max[3];     // metres, >= bounds_min
-    float probe_spacing;     // metres between automatic probes, >= 0; 0 = the baker's default
-    float sky_radiance[3];   // cd/m^2, RGB, finite, >= 0: the uniform sky (0 = none)
-    uint32_t reserved;       // 0
+    float exposureEv100;   // default exposure, EV100; valid when hasExposure
+    uint32_t hasExposure;  // 0 or 1
+    float texelsPerMetre;  // requested lightmap density, > 0
+    float boundsMin[3];    // metres, static geometry (0 when there is none)
+    float boundsMax[3];    // metres, >= boundsMin
+    float probeSpacing;    // metres between automatic probes, >= 0; 0 = the baker's default
+    float skyRadiance[3];  // cd/m^2, RGB, finite, >= 0: the uniform sky (0 = none)
+    uint32_t reserved;     // 0
 };
 static_assert(sizeof(DiskLevel) == 56);
 
 struct DiskMaterial {
     StringRef name;
-    float base_color[4];                  // linear RGBA factor, [0,1]
-    float metallic;                       // [0,1]
-    float roughness;                      // perceptual, [0,1]
-    float albedo[3];                      // base_color * (1 - metallic)
-    float specular_color[3];              // mix(0.04, base_color, metallic)
-    float gloss;                          // [0,1], log2(2 / roughness^4 - 1) / 18
-    float emissive[3];                    // linear, >= 0
-    float alpha_cutoff;                   // [0,1]
-    float normal_scale;                   // glTF normalTexture.scale
-    float occlusion_strength;             // [0,1]
-    uint32_t base_color_texture;          // into textures or kNoIndex
-    uint32_t metallic_roughness_texture;  // into textures or kNoIndex
-    uint32_t normal_texture;              // into textures or kNoIndex
-    uint32_t occlusion_texture;           // into textures or kNoIndex
-    uint32_t emissive_texture;            // into textures or kNoIndex
-    uint8_t alpha_mode;                   // 0 opaque, 1 mask, 2 blend
-    uint8_t double_sided;                 // 0 or 1
-    uint8_t material_class;               // 0 metal, 1 dielectric, 2 full, 3 lambert
-    uint8_t reserved;                     // 0
+    float baseColor[4];                 // linear RGBA factor, [0,1]
+    float metallic;                     // [0,1]
+    float roughness;                    // perceptual, [0,1]
+    float albedo[3];                    // baseColor * (1 - metallic)
+    float specularColor[3];             // mix(0.04, baseColor, metallic)
+    float gloss;                        // [0,1], log2(2 / roughness^4 - 1) / 18
+    float emissive[3];                  // linear, >= 0
+    float alphaCutoff;                  // [0,1]
+    float normalScale;                  // glTF normalTexture.scale
+    float occlusionStrength;            // [0,1]
+    uint32_t baseColorTexture;          // into textures or kNoIndex
+    uint32_t metallicRoughnessTexture;  // into textures or kNoIndex
+    uint32_t normalTexture;             // into textures or kNoIndex
+    uint32_t occlusionTexture;          // into textures or kNoIndex
+    uint32_t emissiveTexture;           // into textures or kNoIndex
+    uint8_t alphaMode;                  // 0 opaque, 1 mask, 2 blend
+    uint8_t doubleSided;                // 0 or 1
+    uint8_t materialClass;              // 0 metal, 1 dielectric, 2 full, 3 lambert
+    uint8_t reserved;                   // 0
 };
 static_assert(sizeof(DiskMaterial) == 108);
 
 struct DiskTexture {
-    uint32_t image;       // into images or kNoIndex
-    uint16_t mag_filter;  // glTF/GL enum, 0 = unspecified
-    uint16_t min_filter;  // glTF/GL enum, 0 = unspecified
-    uint16_t wrap_s;      // 33071 clamp, 33648 mirrored, 10497 repeat
-    uint16_t wrap_t;      // as wrap_s
+    uint32_t image;      // into images or kNoIndex
+    uint16_t magFilter;  // glTF/GL enum, 0 = unspecified
+    uint16_t minFilter;  // glTF/GL enum, 0 = unspecified
+    uint16_t wrapS;      // 33071 clamp, 33648 mirrored, 10497 repeat
+    uint16_t wrapT;      // as wrapS
 };
 static_assert(sizeof(DiskTexture) == 12);
 
 struct DiskImage {
     StringRef name;
-    StringRef uri;        // file reference relative to the package's folder; empty if embedded
-    StringRef mime_type;  // may be empty for file references
-    uint32_t first_byte;  // into image_bytes
-    uint32_t byte_count;  // 0 for file references
+    StringRef uri;       // file reference relative to the package's folder; empty if embedded
+    StringRef mimeType;  // may be empty for file references
+    uint32_t firstByte;  // into image_bytes
+    uint32_t byteCount;  // 0 for file references
 };
 static_assert(sizeof(DiskImage) == 32);
 
@@ -153,8 +153,8 @@ struct DiskLight {
     float color[3];       // linear RGB, >= 0
     float intensity;      // lux (directional) or candela (point, spot), >= 0
     float range;          // metres, 0 = unlimited
-    float inner_cone;     // radians, spot: 0 <= inner < outer
-    float outer_cone;     // radians, spot: <= pi/2
+    float innerCone;      // radians, spot: 0 <= inner < outer
+    float outerCone;      // radians, spot: <= pi/2
     float position[3];    // metres, world
     float direction[3];   // unit, world, the way light travels
 };
@@ -164,14 +164,14 @@ struct DiskCamera {
     StringRef name;         // node name, what --camera NAME matches
     uint32_t orthographic;  // 0 or 1
     float yfov;             // radians (perspective)
-    float aspect_ratio;     // 0 = the window's
+    float aspectRatio;      // 0 = the window's
     float znear;            // metres, > 0 for perspective
     float zfar;             // metres, 0 = infinite
     float xmag, ymag;       // metres (orthographic)
     float position[3];      // metres, world
     float rotation[4];      // unit quaternion x, y, z, w: world from camera (looks down -Z)
-    float exposure_ev100;   // valid when has_exposure
-    uint32_t has_exposure;  // 0 or 1
+    float exposureEv100;    // valid when hasExposure
+    uint32_t hasExposure;   // 0 or 1
 };
 static_assert(sizeof(DiskCamera) == 72);
 
@@ -185,21 +185,21 @@ struct DiskVertex {
 static_assert(sizeof(DiskVertex) == 56);
 
 struct DiskSurface {
-    uint32_t first_index;      // into indices, multiple of 3
-    uint32_t index_count;      // > 0, multiple of 3
-    uint32_t material;         // into materials
-    uint32_t primary_light;    // into lights (role primary) or kNoIndex when the level has none
-    uint32_t chart;            // into charts
-    uint32_t atlas;            // into atlases, == charts[chart].atlas
-    uint32_t lightmap_x;       // texels, == charts[chart].x
-    uint32_t lightmap_y;       // texels
-    uint32_t lightmap_width;   // texels, padding included
-    uint32_t lightmap_height;  // texels
-    uint32_t first_given_up;   // into given_up_lights
-    uint32_t given_up_count;   // primaries reaching the surface it bakes as secondary
-    uint32_t leaf;             // into bsp_leaves; the leaf's surface range holds this surface
-    float bounds_min[3];       // metres, world
-    float bounds_max[3];       // metres, world
+    uint32_t firstIndex;      // into indices, multiple of 3
+    uint32_t indexCount;      // > 0, multiple of 3
+    uint32_t material;        // into materials
+    uint32_t primaryLight;    // into lights (role primary) or kNoIndex when the level has none
+    uint32_t chart;           // into charts
+    uint32_t atlas;           // into atlases, == charts[chart].atlas
+    uint32_t lightmapX;       // texels, == charts[chart].x
+    uint32_t lightmapY;       // texels
+    uint32_t lightmapWidth;   // texels, padding included
+    uint32_t lightmapHeight;  // texels
+    uint32_t firstGivenUp;    // into given_up_lights
+    uint32_t givenUpCount;    // primaries reaching the surface it bakes as secondary
+    uint32_t leaf;            // into bsp_leaves; the leaf's surface range holds this surface
+    float boundsMin[3];       // metres, world
+    float boundsMax[3];       // metres, world
 };
 static_assert(sizeof(DiskSurface) == 76);
 
@@ -208,11 +208,11 @@ struct DiskChart {
     uint32_t x, y;           // texels, top-left of the rectangle
     uint32_t width, height;  // texels, padding included; x + width <= atlas width
     uint32_t padding;        // texels kept free inside the rectangle on each side
-    float texels_per_metre;  // density used, > 0 for generated charts
+    float texelsPerMetre;    // density used, > 0 for generated charts
     uint32_t authored;       // 1 when coordinates came from TEXCOORD_1
     float origin[3];         // world point of texel (x + padding, y + padding)
-    float axis_u[3];         // unit, world direction of +x texels
-    float axis_v[3];         // unit, world direction of +y texels
+    float axisU[3];          // unit, world direction of +x texels
+    float axisV[3];          // unit, world direction of +y texels
 };
 static_assert(sizeof(DiskChart) == 68);
 
@@ -229,157 +229,157 @@ struct DiskBspPlane {
 static_assert(sizeof(DiskBspPlane) == 32);
 
 struct DiskBspNode {
-    uint32_t plane;       // into bsp_planes
-    int32_t front;        // >= 0: node index greater than this node's; < 0: leaf -(front + 1)
-    int32_t back;         // as front
-    float bounds_min[3];  // metres, of every triangle below
-    float bounds_max[3];
+    uint32_t plane;      // into bsp_planes
+    int32_t front;       // >= 0: node index greater than this node's; < 0: leaf -(front + 1)
+    int32_t back;        // as front
+    float boundsMin[3];  // metres, of every triangle below
+    float boundsMax[3];
 };
 static_assert(sizeof(DiskBspNode) == 36);
 
 struct DiskBspLeaf {
-    uint32_t first_triangle;  // index triples: indices[3 * first_triangle ...]
-    uint32_t triangle_count;
-    uint32_t first_surface;  // into surfaces
-    uint32_t surface_count;
-    float bounds_min[3];  // metres
-    float bounds_max[3];
+    uint32_t firstTriangle;  // index triples: indices[3 * firstTriangle ...]
+    uint32_t triangleCount;
+    uint32_t firstSurface;  // into surfaces
+    uint32_t surfaceCount;
+    float boundsMin[3];  // metres
+    float boundsMax[3];
 };
 static_assert(sizeof(DiskBspLeaf) == 40);
 
 struct DiskDynamicMesh {
-    StringRef name;         // "node/mesh"
-    uint32_t material;      // into materials
-    uint32_t first_vertex;  // into dynamic_vertices
-    uint32_t vertex_count;
-    uint32_t first_index;  // into dynamic_indices, multiple of 3
-    uint32_t index_count;  // multiple of 3; each index < vertex_count
+    StringRef name;        // "node/mesh"
+    uint32_t material;     // into materials
+    uint32_t firstVertex;  // into dynamic_vertices
+    uint32_t vertexCount;
+    uint32_t firstIndex;  // into dynamic_indices, multiple of 3
+    uint32_t indexCount;  // multiple of 3; each index < vertexCount
 };
 static_assert(sizeof(DiskDynamicMesh) == 28);
 
 struct DiskEntity {
-    StringRef name;               // node name
-    uint32_t flags;               // bit 0 dynamic, 1 mover, 2 spawn, 3 probe; no other bit
-    uint32_t first_dynamic_mesh;  // into dynamic_meshes
-    uint32_t dynamic_mesh_count;
-    float mover_period;  // seconds, > 0 for movers
-    float position[3];   // metres, world
-    float rotation[4];   // unit quaternion x, y, z, w
+    StringRef name;             // node name
+    uint32_t flags;             // bit 0 dynamic, 1 mover, 2 spawn, 3 probe; no other bit
+    uint32_t firstDynamicMesh;  // into dynamic_meshes
+    uint32_t dynamicMeshCount;
+    float moverPeriod;  // seconds, > 0 for movers
+    float position[3];  // metres, world
+    float rotation[4];  // unit quaternion x, y, z, w
     float scale[3];
-    float mover_offset[3];   // metres, world
-    float probe_box_min[3];  // metres, world; empty box = no box projection
-    float probe_box_max[3];
+    float moverOffset[3];  // metres, world
+    float probeBoxMin[3];  // metres, world; empty box = no box projection
+    float probeBoxMax[3];
 };
 static_assert(sizeof(DiskEntity) == 100);
 
 struct DiskFeatures {
-    uint32_t flags;                // world::FeatureFlags
-    uint32_t material_classes;     // bit (1 << class)
-    uint32_t primary_light_types;  // bit (1 << type)
-    uint32_t baked_light_types;    // bit (1 << type)
-    uint32_t primary_count;
-    uint32_t baked_light_count;
-    uint32_t effect_omni_count;
-    uint32_t effect_spot_count;
-    uint32_t probe_count;  // authored probes
-    float grid_min[3];     // metres, light grid extent
-    float grid_max[3];
+    uint32_t flags;              // world::FeatureFlags
+    uint32_t materialClasses;    // bit (1 << class)
+    uint32_t primaryLightTypes;  // bit (1 << type)
+    uint32_t bakedLightTypes;    // bit (1 << type)
+    uint32_t primaryCount;
+    uint32_t bakedLightCount;
+    uint32_t effectOmniCount;
+    uint32_t effectSpotCount;
+    uint32_t probeCount;  // authored probes
+    float gridMin[3];     // metres, light grid extent
+    float gridMax[3];
 };
 static_assert(sizeof(DiskFeatures) == 60);
 
 // ---------------------------------------------------------------------------------------------
 // Baked lighting (ids 32..34), written by `onelight-bake`.
 //
-// section_lightmap_texels: DiskLightmapTexel[], every atlas in order, each row-major
+// kSectionLightmapTexels: DiskLightmapTexel[], every atlas in order, each row-major
 //   (texel (x, y) of atlas a at sum_{b<a} width_b height_b + y width_a + x); count == the sum
 //   of the atlases' areas. Secondary diffuse irradiance (docs/lighting.md): direct
 //   light of every light but the surface's own primary, plus every bounce of every light. A
 //   per-pixel normal n' reconstructs it as
-//       E(n') = irradiance * max(0, 0.5 + dot(n', direction)) / normal_weight
+//       E(n') = irradiance * max(0, 0.5 + dot(n', direction)) / normalWeight
 //   which returns `irradiance` exactly at the surface normal (a rebalanced half-Lambert
 //   directional lightmap).
-// section_shadow_masks: uint8_t[], same texel order and count: the baked visibility of the
+// kSectionShadowMasks: uint8_t[], same texel order and count: the baked visibility of the
 //   surface's own primary, 0 (umbra) .. 255 (fully lit), softened by the light's size.
-// section_light_grid: uint8_t[]: one DiskLightGridHeader, then DiskLightGridCell[cell_count]
+// kSectionLightGrid: uint8_t[]: one DiskLightGridHeader, then DiskLightGridCell[cellCount]
 //   in x-fastest order (cell (i, j, k) at i + dims[0] (j + dims[1] k)).
 
 enum LightmapTexelFlags : uint32_t {
-    lightmap_texel_sampled = 1u << 0,  // baked at a point of its own surface
-    lightmap_texel_dilated = 1u << 1,  // padding, copied from sampled neighbours
+    kLightmapTexelSampled = 1u << 0,  // baked at a point of its own surface
+    kLightmapTexelDilated = 1u << 1,  // padding, copied from sampled neighbours
 };
-inline constexpr uint32_t kAllLightmapTexelFlags = lightmap_texel_sampled | lightmap_texel_dilated;
+inline constexpr uint32_t kAllLightmapTexelFlags = kLightmapTexelSampled | kLightmapTexelDilated;
 
 struct DiskLightmapTexel {
     float irradiance[3];  // lux, RGB, at the surface normal; finite, >= 0
     float direction[3];   // world; half the irradiance-weighted mean incident direction, |d| <= 0.5
-    float normal_weight;  // 0.5 + dot(surface normal, direction), in [0.5, 1]; 1 for empty texels
+    float normalWeight;   // 0.5 + dot(surface normal, direction), in [0.5, 1]; 1 for empty texels
     uint32_t flags;       // LightmapTexelFlags; 0 = outside every chart (all zero)
 };
 static_assert(sizeof(DiskLightmapTexel) == 32);
 
 enum LightGridCellFlags : uint32_t {
-    light_grid_cell_inside_solid = 1u << 0,  // centre inside geometry: skip when interpolating
+    kLightGridCellInsideSolid = 1u << 0,  // centre inside geometry: skip when interpolating
 };
-inline constexpr uint32_t kAllLightGridCellFlags = light_grid_cell_inside_solid;
+inline constexpr uint32_t kAllLightGridCellFlags = kLightGridCellInsideSolid;
 
 struct DiskLightGridHeader {
-    float origin[3];       // metres, world: the grid's minimum corner
-    float cell_size[3];    // metres, > 0; cell (i, j, k) is centred at origin + (i + 0.5) size
-    uint32_t dims[3];      // cells per axis, >= 1 each
-    uint32_t cell_count;   // dims[0] dims[1] dims[2]
-    uint32_t shard_index;  // < shard_count: which part of a sharded bake this package holds
-    uint32_t shard_count;  // 1 for a complete bake; > 1: an unmerged part (see `merge`)
-    uint32_t samples;      // sample directions per cell
-    uint32_t reserved;     // 0
+    float origin[3];      // metres, world: the grid's minimum corner
+    float cellSize[3];    // metres, > 0; cell (i, j, k) is centred at origin + (i + 0.5) size
+    uint32_t dims[3];     // cells per axis, >= 1 each
+    uint32_t cellCount;   // dims[0] dims[1] dims[2]
+    uint32_t shardIndex;  // < shardCount: which part of a sharded bake this package holds
+    uint32_t shardCount;  // 1 for a complete bake; > 1: an unmerged part (see `merge`)
+    uint32_t samples;     // sample directions per cell
+    uint32_t reserved;    // 0
 };
 static_assert(sizeof(DiskLightGridHeader) == 56);
 
 struct DiskLightGridCell {
-    float ambient_cube[6][3];   // lux, RGB irradiance on surfaces facing +x -x +y -y +z -z; >= 0
-                                // (secondary: everything but dominant_primary's direct light)
-    uint32_t dominant_primary;  // into lights (role primary) or kNoIndex when none reaches
-    float primary_visibility;   // [0, 1]: fraction of dominant_primary seen from the centre
-    uint32_t flags;             // LightGridCellFlags
+    float ambientCube[6][3];   // lux, RGB irradiance on surfaces facing +x -x +y -y +z -z; >= 0
+                               // (secondary: everything but dominant_primary's direct light)
+    uint32_t dominantPrimary;  // into lights (role primary) or kNoIndex when none reaches
+    float primaryVisibility;   // [0, 1]: fraction of dominant_primary seen from the centre
+    uint32_t flags;            // LightGridCellFlags
 };
 static_assert(sizeof(DiskLightGridCell) == 84);
 
 // ---------------------------------------------------------------------------------------------
 // Environment probes (id 35), written by `onelight-bake` (bake/probes/probe_capture.hpp).
 //
-// section_probes: uint8_t[]: one DiskProbeHeader, then DiskProbe[probe_count], then
-//   uint32_t[texel_count] texels in RGB9E5 (encode_rgb9e5 in package/probe_section.hpp; red in
+// kSectionProbes: uint8_t[]: one DiskProbeHeader, then DiskProbe[probeCount], then
+//   uint32_t[texelCount] texels in RGB9E5 (encodeRgb9e5 in package/probe_section.hpp; red in
 //   bits 0..8, green 9..17, blue 18..26, exponent 27..31, as Vulkan's
-//   VK_FORMAT_E5B9G9R9_UFLOAT_PACK32). Probe p owns texels [first_texel, first_texel +
-//   texel_count), the probes' ranges contiguous and in order: its mips from the largest, each
+//   VK_FORMAT_E5B9G9R9_UFLOAT_PACK32). Probe p owns texels [firstTexel, firstTexel +
+//   texelCount), the probes' ranges contiguous and in order: its mips from the largest, each
 //   6 faces (+X -X +Y -Y +Z -Z, shaders/probe.glsl) of face_size >> mip squared texels, rows
 //   from the top. Texels hold the GGX-prefiltered radiance (mip m for the gloss
-//   probeGlossOfMip(m)) divided per channel by irradiance_average (probeNormalize); the shader
+//   probeGlossOfMip(m)) divided per channel by irradianceAverage (probeNormalize); the shader
 //   multiplies by the pixel's secondary irradiance (probeDenormalize). Bytes per probe:
 //   sizeof(DiskProbe) + 4 * 6 * sum_m (face_size >> m)^2, about 72 + 32 face_size^2.
 
 enum ProbeTexelFormat : uint32_t {
-    probe_texel_rgb9e5 = 1,  // uint32_t per texel, shared exponent
+    kProbeTexelRgb9e5 = 1,  // uint32_t per texel, shared exponent
 };
 
 struct DiskProbeHeader {
-    uint32_t probe_count;   // DiskProbe records that follow
-    uint32_t texel_count;   // texels after the records; == the sum of the probes' counts
-    uint32_t texel_format;  // ProbeTexelFormat
-    uint32_t reserved;      // 0
+    uint32_t probeCount;   // DiskProbe records that follow
+    uint32_t texelCount;   // texels after the records; == the sum of the probes' counts
+    uint32_t texelFormat;  // ProbeTexelFormat
+    uint32_t reserved;     // 0
 };
 static_assert(sizeof(DiskProbeHeader) == 16);
 
 struct DiskProbe {
-    float position[3];            // metres, world: the capture point
-    float box_min[3];             // metres, world: box projection when min < max on every
-    float box_max[3];             //   axis; all zero = no box projection
-    float irradiance_average[3];  // lux, RGB: E_avg, finite, > 0 (floored by the baker)
-    uint32_t face_size;           // texels per face edge of mip 0, a power of two <= 4096
-    uint32_t mip_count;           // log2(face_size) + 1: down to 1x1
-    uint32_t first_texel;         // into the section's texels
-    uint32_t texel_count;         // 6 * sum_m (face_size >> m)^2
-    uint32_t entity;              // the probe entity it came from, kNoIndex when placed
-    uint32_t reserved;            // 0
+    float position[3];           // metres, world: the capture point
+    float boxMin[3];             // metres, world: box projection when min < max on every
+    float boxMax[3];             //   axis; all zero = no box projection
+    float irradianceAverage[3];  // lux, RGB: E_avg, finite, > 0 (floored by the baker)
+    uint32_t faceSize;           // texels per face edge of mip 0, a power of two <= 4096
+    uint32_t mipCount;           // log2(face_size) + 1: down to 1x1
+    uint32_t firstTexel;         // into the section's texels
+    uint32_t texelCount;         // 6 * sum_m (face_size >> m)^2
+    uint32_t entity;             // the probe entity it came from, kNoIndex when placed
+    uint32_t reserved;           // 0
 };
 static_assert(sizeof(DiskProbe) == 72);
 

@@ -17,15 +17,14 @@ namespace onelight::package {
 /// What a package holds: the compiled level and the sections this library does not interpret.
 struct PackageContents {
     world::CompiledLevel level;
-    std::vector<RawSection> baked_sections;  // ids >= 32, kept as bytes
+    std::vector<RawSection> bakedSections;  // ids >= 32, kept as bytes
 };
 
 /// Parses a whole package; `name` prefixes error messages (usually the file path). Throws
 /// world::Error.
-[[nodiscard]] PackageContents parse_package(std::span<const uint8_t> bytes,
-                                            const std::string& name);
+[[nodiscard]] PackageContents parsePackage(std::span<const uint8_t> bytes, const std::string& name);
 
-/// Reads the whole file, then parse_package. Throws world::Error.
-[[nodiscard]] PackageContents read_package_file(const std::string& path);
+/// Reads the whole file, then parsePackage. Throws world::Error.
+[[nodiscard]] PackageContents readPackageFile(const std::string& path);
 
 }  // namespace onelight::package

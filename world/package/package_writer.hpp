@@ -14,17 +14,17 @@ namespace onelight::package {
 /// A section the package library does not interpret (the baker's lighting sections).
 struct RawSection {
     uint32_t id = 0;             // SectionId >= 32
-    uint32_t element_size = 1;   // bytes per record
+    uint32_t elementSize = 1;    // bytes per record
     uint32_t count = 0;          // records
-    std::vector<uint8_t> bytes;  // count * element_size
+    std::vector<uint8_t> bytes;  // count * elementSize
 };
 
 /// The package's bytes: every core section, then `baked_sections` in the order given.
-std::vector<uint8_t> serialize_package(const world::CompiledLevel& level,
-                                       std::span<const RawSection> baked_sections = {});
+std::vector<uint8_t> serializePackage(const world::CompiledLevel& level,
+                                      std::span<const RawSection> bakedSections = {});
 
 /// Writes `bytes` to `path` through `path.tmp` and a rename, so that `path` is never
 /// half-written. Throws world::Error naming the file.
-void write_file_atomically(const std::string& path, std::span<const uint8_t> bytes);
+void writeFileAtomically(const std::string& path, std::span<const uint8_t> bytes);
 
 }  // namespace onelight::package

@@ -17,7 +17,7 @@
 namespace onelight::world {
 
 /// Texels of a cube of edge `face_size` with every mip down to 1x1: 6 * sum_m (size >> m)^2.
-uint64_t probe_texel_count(uint32_t face_size);
+uint64_t probeTexelCount(uint32_t faceSize);
 
 }  // namespace onelight::world
 
@@ -26,11 +26,11 @@ namespace onelight::package {
 /// RGB9E5 (EXT_texture_shared_exponent, "Encoding": 9-bit mantissas, 5-bit exponent, bias
 /// 15): channels clamped to [0, 65408], NaN to 0. Each channel's error is at most half a step,
 /// max(r, g, b) / 512 (plus 2^-25 where the largest channel is below 2^-15).
-uint32_t encode_rgb9e5(glm::vec3 rgb);
-glm::vec3 decode_rgb9e5(uint32_t packed);
+uint32_t encodeRgb9e5(glm::vec3 rgb);
+glm::vec3 decodeRgb9e5(uint32_t packed);
 
-/// Section 35 for serialize_package.
-RawSection encode_probe_section(const std::vector<world::EnvironmentProbe>& probes);
+/// Section 35 for serializePackage.
+RawSection encodeProbeSection(const std::vector<world::EnvironmentProbe>& probes);
 
 /// The probes a package holds, if any.
 struct ProbeContents {
@@ -40,8 +40,8 @@ struct ProbeContents {
 
 /// Decodes section 35 from the raw sections a package reader kept (absent: no probes). `name`
 /// prefixes error messages (usually the file path). Throws world::Error.
-[[nodiscard]] ProbeContents decode_probe_section(std::span<const RawSection> sections,
-                                                 const world::CompiledLevel& level,
-                                                 const std::string& name);
+[[nodiscard]] ProbeContents decodeProbeSection(std::span<const RawSection> sections,
+                                               const world::CompiledLevel& level,
+                                               const std::string& name);
 
 }  // namespace onelight::package

@@ -13,32 +13,32 @@
 namespace onelight::world {
 
 struct RegionOptions {
-    double min_fragment_area = 0.05;   // m^2: smaller same-primary fragments are merged
-    double boundary_tolerance = 1e-3;  // metres: bisection stops below this; edges shorter
-                                       // than twice this are not cut
-    double sample_spacing = 1.0;       // metres between interior samples of a big triangle whose
-                                       // corners agree (finds a region inside it)
-    uint32_t max_samples_per_edge = 16;
+    double minFragmentArea = 0.05;    // m^2: smaller same-primary fragments are merged
+    double boundaryTolerance = 1e-3;  // metres: bisection stops below this; edges shorter
+                                      // than twice this are not cut
+    double sampleSpacing = 1.0;       // metres between interior samples of a big triangle whose
+                                      // corners agree (finds a region inside it)
+    uint32_t maxSamplesPerEdge = 16;
 };
 
 struct RegionStats {
-    uint32_t edges_cut = 0;           // edges split where the primary changes
-    uint32_t faces_centre_split = 0;  // triangles split at their centre (a region inside one)
-    uint32_t fragments_merged = 0;    // fragments relabelled into a neighbour
-    uint32_t triangles_added = 0;     // triangles after minus triangles before
+    uint32_t edgesCut = 0;          // edges split where the primary changes
+    uint32_t facesCentreSplit = 0;  // triangles split at their centre (a region inside one)
+    uint32_t fragmentsMerged = 0;   // fragments relabelled into a neighbour
+    uint32_t trianglesAdded = 0;    // triangles after minus triangles before
 };
 
-/// Sets StaticTriangle::primary on every triangle (kNoIndex only when primary_count == 0),
+/// Sets StaticTriangle::primary on every triangle (kNoIndex only when primaryCount == 0),
 /// splitting triangles as needed. Total area is preserved.
-RegionStats assign_primary_regions(StaticGeometry& geometry, uint32_t primary_count,
-                                   const PrimaryIlluminanceFn& illuminance,
-                                   const RegionOptions& options);
+RegionStats assignPrimaryRegions(StaticGeometry& geometry, uint32_t primaryCount,
+                                 const PrimaryIlluminanceFn& illuminance,
+                                 const RegionOptions& options);
 
 /// Primaries other than `own` with non-zero illuminance at any corner of the given triangles:
 /// the lights this surface gives up, baked as secondary. Sorted ascending.
-std::vector<uint32_t> given_up_primaries(const StaticGeometry& geometry,
-                                         std::span<const StaticTriangle> triangles, uint32_t own,
-                                         uint32_t primary_count,
-                                         const PrimaryIlluminanceFn& illuminance);
+std::vector<uint32_t> givenUpPrimaries(const StaticGeometry& geometry,
+                                       std::span<const StaticTriangle> triangles, uint32_t own,
+                                       uint32_t primaryCount,
+                                       const PrimaryIlluminanceFn& illuminance);
 
 }  // namespace onelight::world
