@@ -146,10 +146,11 @@ render::Camera playerCamera(const Session& s) {
     return camera;
 }
 
-render::FrameInputs frameInputsOf(Session& s, std::vector<render::DynamicTransform>& transforms) {
+render::FrameInputs frameInputsOf(const Session& s,
+                                  std::vector<render::DynamicTransform>& transforms) {
     render::FrameInputs in;
     in.camera = playerCamera(s);
-    ecs::Registry& r = s.registry;
+    const ecs::Registry& r = s.registry;
 
     for (auto [e, transform, flash] : r.view<Transform, GunFlash>().each()) {
         if (in.effects.omniCount >= render::kMaxEffectOmnis) break;

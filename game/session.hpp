@@ -58,7 +58,7 @@ float meteredEv100(const Session& session, float fallback);
 
 // The renderer's inputs for the current state; `transforms` holds what frame.dynamicTransforms
 // points to.
-render::FrameInputs frameInputsOf(Session& session,
+render::FrameInputs frameInputsOf(const Session& session,
                                   std::vector<render::DynamicTransform>& transforms);
 
 // The shadowed contribution of primary `light` at `point`: its illuminance (luminance, lux) by

@@ -13,7 +13,7 @@ std::string place(const ReplayRunner& r, const Command& c) {
     return r.script.path + ":" + std::to_string(c.line) + ": ";
 }
 
-ecs::Entity findNamed(ecs::Registry& registry, const std::string& name) {
+ecs::Entity findNamed(const ecs::Registry& registry, const std::string& name) {
     for (auto [e, n] : registry.view<Name>().each())
         if (n.value == name) return e;
     return ecs::kNullEntity;
@@ -27,7 +27,7 @@ bool actsBeforeSystems(CommandKind k) {
 }  // namespace
 
 ReplayRunner makeReplayRunner(replay::Script script, std::vector<std::string> lightNames,
-                              ecs::Registry& registry) {
+                              const ecs::Registry& registry) {
     ReplayRunner r{std::move(script), std::move(lightNames)};
     for (const Command& c : r.script.commands) {
         if (c.kind != CommandKind::kExpectPrimary) continue;
@@ -84,7 +84,7 @@ void applyReplayInput(ReplayRunner& r, uint64_t tick, InputState& input, ecs::Re
     }
 }
 
-ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, ecs::Registry& registry) {
+ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, const ecs::Registry& registry) {
     ReplayAfterTick after;
     const auto& commands = r.script.commands;
     for (; r.nextCheck < commands.size() && commands[r.nextCheck].tick <= tick; ++r.nextCheck) {
@@ -98,7 +98,8 @@ ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, ecs::Registry& 
                 after.quit = true;
                 break;
             case CommandKind::kExpectEffectLights: {
-                size_t flashes = registry.pool<GunFlash>().size();
+                const auto* pool = registry.findPool<GunFlash>();
+                size_t flashes = pool ? pool->size() : 0;
                 size_t spots = 0;
                 for (auto [e, f] : registry.view<Flashlight>().each()) spots += f.on;
                 size_t live = flashes + spots;
