@@ -1,6 +1,7 @@
 #include "bake/bake_level.hpp"
 
 #include <chrono>
+#include <iterator>
 #include <stdexcept>
 
 #include <tbb/global_control.h>
@@ -26,49 +27,38 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 /// runs at many points, so fewer than the lightmaps.
 constexpr uint32_t kDominantShadowSamples = 8;
 
+/// What a quality preset bakes with, in BakeQuality's order.
+struct QualityPreset {
+    const char* name;          // as the command line says it
+    uint32_t shadowSamples;    // per light and lightmap texel or grid cell
+    uint32_t indirectSamples;  // paths per lightmap texel (and grid cell)
+    uint32_t probeFaceSize;    // texels per probe cube face
+    uint32_t probeSamples;     // paths per probe texel
+};
+constexpr QualityPreset kQualityPresets[] = {
+    {"draft", 8, 128, 32, 16}, {"default", 16, 512, 64, 64}, {"high", 32, 2048, 128, 256}};
+static_assert(size_t(BakeQuality::kHigh) + 1 == std::size(kQualityPresets));
+
 }  // namespace
 
 const char* qualityName(BakeQuality quality) {
-    switch (quality) {
-        case BakeQuality::kDraft:
-            return "draft";
-        case BakeQuality::kHigh:
-            return "high";
-        default:
-            return "default";
-    }
+    return kQualityPresets[size_t(quality)].name;
 }
 
 bool parseQuality(const std::string& text, BakeQuality& quality) {
-    if (text == "draft")
-        quality = BakeQuality::kDraft;
-    else if (text == "default")
-        quality = BakeQuality::kDefault;
-    else if (text == "high")
-        quality = BakeQuality::kHigh;
-    else
-        return false;
-    return true;
+    for (size_t i = 0; i < std::size(kQualityPresets); ++i)
+        if (text == kQualityPresets[i].name) {
+            quality = BakeQuality(i);
+            return true;
+        }
+    return false;
 }
 
 LightmapSettings lightmapSettings(const BakeOptions& options) {
+    const QualityPreset& preset = kQualityPresets[size_t(options.quality)];
     LightmapSettings s;
-    switch (options.quality) {
-        case BakeQuality::kDraft:
-            s.shadowSamples = 8;
-            s.indirectSamples = 128;
-            break;
-        case BakeQuality::kDefault:
-            s.shadowSamples = 16;
-            s.indirectSamples = 512;
-            break;
-        case BakeQuality::kHigh:
-            s.shadowSamples = 32;
-            s.indirectSamples = 2048;
-            break;
-    }
-    if (options.shadowSamples) s.shadowSamples = options.shadowSamples;
-    if (options.indirectSamples) s.indirectSamples = options.indirectSamples;
+    s.shadowSamples = options.shadowSamples ? options.shadowSamples : preset.shadowSamples;
+    s.indirectSamples = options.indirectSamples ? options.indirectSamples : preset.indirectSamples;
     return s;
 }
 
@@ -82,23 +72,10 @@ GridSettings gridSettings(const BakeOptions& options) {
 }
 
 ProbeCaptureSettings probeSettings(const BakeOptions& options) {
+    const QualityPreset& preset = kQualityPresets[size_t(options.quality)];
     ProbeCaptureSettings p;
-    switch (options.quality) {
-        case BakeQuality::kDraft:
-            p.faceSize = 32;
-            p.samplesPerTexel = 16;
-            break;
-        case BakeQuality::kDefault:
-            p.faceSize = 64;
-            p.samplesPerTexel = 64;
-            break;
-        case BakeQuality::kHigh:
-            p.faceSize = 128;
-            p.samplesPerTexel = 256;
-            break;
-    }
-    if (options.probeFaceSize) p.faceSize = options.probeFaceSize;
-    if (options.probeSamples) p.samplesPerTexel = options.probeSamples;
+    p.faceSize = options.probeFaceSize ? options.probeFaceSize : preset.probeFaceSize;
+    p.samplesPerTexel = options.probeSamples ? options.probeSamples : preset.probeSamples;
     return p;
 }
 

@@ -46,30 +46,27 @@ std::string bakeUsage() {
 }
 
 int runBakeCommand(const std::vector<std::string>& arguments) {
-    if (asksForHelp(arguments)) {
-        std::printf("%s", bakeUsage().c_str());
-        return 0;
-    }
+    if (printedHelp(arguments, bakeUsage())) return 0;
     std::string input, output, reportPath;
     BakeOptions options;
     int threads = 0;
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& a = arguments[i];
-        const bool has_value = i + 1 < arguments.size();
+        const bool hasValue = i + 1 < arguments.size();
         double v = 0.0;
-        if (a == "-o" && has_value) {
+        if (a == "-o" && hasValue) {
             output = arguments[++i];
-        } else if (a == "--quality" && has_value) {
+        } else if (a == "--quality" && hasValue) {
             if (!parseQuality(arguments[++i], options.quality))
                 return badArgument("--quality '" + arguments[i] +
                                    "'; expected draft, default or high");
-        } else if (a == "--threads" && has_value) {
+        } else if (a == "--threads" && hasValue) {
             if (!parseNumber(arguments[++i], 1, 1024, v))
                 return badArgument("--threads '" + arguments[i] + "'; expected 1..1024");
             threads = static_cast<int>(v);
-        } else if (a == "--report" && has_value) {
+        } else if (a == "--report" && hasValue) {
             reportPath = arguments[++i];
-        } else if (a == "--shard" && has_value) {
+        } else if (a == "--shard" && hasValue) {
             const std::string s = arguments[++i];
             const size_t slash = s.find('/');
             double index = 0, count = 0;
@@ -78,15 +75,15 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
                 return badArgument("--shard '" + s + "'; expected i/N with 0 <= i < N");
             options.shardIndex = static_cast<uint32_t>(index);
             options.shardCount = static_cast<uint32_t>(count);
-        } else if (a == "--sky" && has_value) {
+        } else if (a == "--sky" && hasValue) {
             if (!parseNumber(arguments[++i], 0, 1e9, v))
                 return badArgument("--sky '" + arguments[i] + "'; expected cd/m^2 >= 0");
             options.skyRadiance = glm::vec3(static_cast<float>(v));
-        } else if (a == "--grid-cell" && has_value) {
+        } else if (a == "--grid-cell" && hasValue) {
             if (!parseNumber(arguments[++i], 0.05, 1000, v))
                 return badArgument("--grid-cell '" + arguments[i] + "'; expected metres");
             options.gridCellSize = static_cast<float>(v);
-        } else if (a == "--texels-per-metre" && has_value) {
+        } else if (a == "--texels-per-metre" && hasValue) {
             if (!parseNumber(arguments[++i], 0.01, 1024, v))
                 return badArgument("--texels-per-metre '" + arguments[i] +
                                    "'; expected a number in [0.01, 1024]");

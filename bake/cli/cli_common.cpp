@@ -29,9 +29,12 @@ std::string formatNumber(double value) {
     return text;
 }
 
-bool asksForHelp(const std::vector<std::string>& arguments) {
+bool printedHelp(const std::vector<std::string>& arguments, const std::string& usage) {
     for (const std::string& a : arguments)
-        if (a == "-h" || a == "--help") return true;
+        if (a == "-h" || a == "--help") {
+            std::printf("%s", usage.c_str());
+            return true;
+        }
     return false;
 }
 

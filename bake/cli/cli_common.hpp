@@ -24,8 +24,9 @@ std::string formatUsage(const std::string& synopsis, const std::string& summary,
 /// `value` as the shortest text that reads it back ("%g").
 std::string formatNumber(double value);
 
-/// Whether `arguments` ask for help (-h or --help anywhere).
-bool asksForHelp(const std::vector<std::string>& arguments);
+/// When `arguments` ask for help (-h or --help anywhere), prints `usage` on stdout and returns
+/// true: the command then exits 0.
+bool printedHelp(const std::vector<std::string>& arguments, const std::string& usage);
 
 /// The whole of `text` as a number in [low, high]; false otherwise (no partial parses).
 bool parseNumber(const std::string& text, double low, double high, double& out);

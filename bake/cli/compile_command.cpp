@@ -74,19 +74,16 @@ std::string compileUsage() {
 }
 
 int runCompileCommand(const std::vector<std::string>& arguments) {
-    if (asksForHelp(arguments)) {
-        std::printf("%s", compileUsage().c_str());
-        return 0;
-    }
+    if (printedHelp(arguments, compileUsage())) return 0;
     std::string input, output;
     world::CompileOptions options;
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& a = arguments[i];
-        const bool has_value = i + 1 < arguments.size();
+        const bool hasValue = i + 1 < arguments.size();
         double value = 0.0;
-        if (a == "-o" && has_value) {
+        if (a == "-o" && hasValue) {
             output = arguments[++i];
-        } else if (a == "--texels-per-metre" && has_value) {
+        } else if (a == "--texels-per-metre" && hasValue) {
             if (!parseNumber(arguments[++i], 0.01, 1024.0, value)) {
                 std::fprintf(stderr,
                              "onelight-bake compile: --texels-per-metre '%s'; expected a number in "
@@ -96,7 +93,7 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
             }
             options.charts.texelsPerMetre = value;
             options.charts.densityFromCommandLine = true;
-        } else if (a == "--atlas-size" && has_value) {
+        } else if (a == "--atlas-size" && hasValue) {
             if (!parseNumber(arguments[++i], 64.0, 16384.0, value)) {
                 std::fprintf(stderr,
                              "onelight-bake compile: --atlas-size '%s'; expected an integer in "

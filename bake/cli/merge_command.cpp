@@ -20,10 +20,7 @@ std::string mergeUsage() {
 }
 
 int runMergeCommand(const std::vector<std::string>& arguments) {
-    if (asksForHelp(arguments)) {
-        std::printf("%s", mergeUsage().c_str());
-        return 0;
-    }
+    if (printedHelp(arguments, mergeUsage())) return 0;
     std::string output;
     std::vector<std::string> inputs;
     for (size_t i = 0; i < arguments.size(); ++i) {

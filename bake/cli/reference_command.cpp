@@ -33,10 +33,7 @@ std::string referenceUsage() {
 }
 
 int runReferenceCommand(const std::vector<std::string>& arguments) {
-    if (asksForHelp(arguments)) {
-        std::printf("%s", referenceUsage().c_str());
-        return 0;
-    }
+    if (printedHelp(arguments, referenceUsage())) return 0;
     std::string input, output, cameraName;
     uint32_t width = 0, height = 0, spp = 0;
     int threads = 0;
@@ -44,12 +41,12 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
     try {
         for (size_t i = 0; i < arguments.size(); ++i) {
             const std::string& a = arguments[i];
-            const bool has_value = i + 1 < arguments.size();
-            if (a == "-o" && has_value) {
+            const bool hasValue = i + 1 < arguments.size();
+            if (a == "-o" && hasValue) {
                 output = arguments[++i];
-            } else if (a == "--camera" && has_value) {
+            } else if (a == "--camera" && hasValue) {
                 cameraName = arguments[++i];
-            } else if (a == "--size" && has_value) {
+            } else if (a == "--size" && hasValue) {
                 const std::string s = arguments[++i];
                 const size_t x = s.find('x');
                 if (x == std::string::npos) throw std::invalid_argument("--size " + s);
@@ -57,11 +54,11 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
                 height = static_cast<uint32_t>(std::stoul(s.substr(x + 1)));
                 if (width == 0 || height == 0 || width > 16384 || height > 16384)
                     throw std::invalid_argument("--size " + s);
-            } else if (a == "--spp" && has_value) {
+            } else if (a == "--spp" && hasValue) {
                 spp = static_cast<uint32_t>(std::stoul(arguments[++i]));
-            } else if (a == "--threads" && has_value) {
+            } else if (a == "--threads" && hasValue) {
                 threads = std::stoi(arguments[++i]);
-            } else if (a == "--sky" && has_value) {
+            } else if (a == "--sky" && hasValue) {
                 sky = std::stof(arguments[++i]);
                 if (!(sky >= 0.0f) || !std::isfinite(sky)) throw std::invalid_argument("--sky");
             } else if (!a.empty() && a[0] != '-' && input.empty()) {

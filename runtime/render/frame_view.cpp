@@ -97,22 +97,27 @@ DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats
     const Frustum frustum = frustumOf(view.viewProj);
     const glm::vec3 eye = view.camera.position;
     const uint32_t materialCount = uint32_t(s.materialClasses.size());
+    // A draw of `material`, its bounds [lo, hi] for the front-to-back order, and its primary
+    // counted as visible.
+    auto add = [&](Draw d, uint32_t material, glm::vec3 lo, glm::vec3 hi) {
+        d.material = std::min(material, materialCount - 1);
+        d.key = pipelineKeyOf(s, d.material);
+        const glm::vec3 toCentre = 0.5f * (lo + hi) - eye;
+        d.distance2 = glm::dot(toCentre, toCentre);
+        list.draws.push_back(d);
+        if (d.primaryLight != kNoIndex) list.visibleLights.push_back(d.primaryLight);
+    };
     for (const DrawSurface& surface : s.surfaces) {
         if (!intersects(frustum, surface.boundsMin, surface.boundsMax)) {
             ++stats.surfacesCulled;
             continue;
         }
         Draw d;
-        d.material = std::min(surface.material, materialCount - 1);
-        d.key = pipelineKeyOf(s, d.material);
         d.firstIndex = surface.firstIndex;
         d.indexCount = surface.indexCount;
         d.primaryLight = surface.primaryLight;
         d.atlas = surface.atlas;
-        const glm::vec3 toCentre = 0.5f * (surface.boundsMin + surface.boundsMax) - eye;
-        d.distance2 = glm::dot(toCentre, toCentre);
-        list.draws.push_back(d);
-        if (surface.primaryLight != kNoIndex) list.visibleLights.push_back(surface.primaryLight);
+        add(d, surface.material, surface.boundsMin, surface.boundsMax);
         ++stats.surfacesDrawn;
     }
     list.entityVisible.assign(s.entities.size(), 0);
@@ -122,17 +127,12 @@ DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats
         if (!intersects(frustum, lo, hi)) continue;
         list.entityVisible[mesh.entity] = 1;
         Draw d;
-        d.material = std::min(mesh.material, materialCount - 1);
-        d.key = pipelineKeyOf(s, d.material);
         d.firstIndex = mesh.firstIndex;
         d.indexCount = mesh.indexCount;
         d.vertexOffset = mesh.vertexOffset;
         d.primaryLight = view.entityPrimary[mesh.entity];
         d.entity = mesh.entity;
-        const glm::vec3 toCentre = 0.5f * (lo + hi) - eye;
-        d.distance2 = glm::dot(toCentre, toCentre);
-        list.draws.push_back(d);
-        if (d.primaryLight != kNoIndex) list.visibleLights.push_back(d.primaryLight);
+        add(d, mesh.material, lo, hi);
         ++stats.dynamicMeshesDrawn;
     }
     std::sort(list.visibleLights.begin(), list.visibleLights.end());
