@@ -26,8 +26,8 @@ namespace onelight::bake {
 enum class BakeQuality { kDraft, kDefault, kHigh };
 
 /// "draft", "default", "high".
-const char* qualityName(BakeQuality quality);
-bool parseQuality(const std::string& text, BakeQuality& quality);
+[[nodiscard]] const char* qualityName(BakeQuality quality);
+[[nodiscard]] bool parseQuality(const std::string& text, BakeQuality& quality);
 
 struct BakeOptions {
     BakeQuality quality = BakeQuality::kDefault;
@@ -44,11 +44,11 @@ struct BakeOptions {
 };
 
 /// Sample counts of a quality preset, overrides applied.
-LightmapSettings lightmapSettings(const BakeOptions& options);
-GridSettings gridSettings(const BakeOptions& options);
+[[nodiscard]] LightmapSettings lightmapSettings(const BakeOptions& options);
+[[nodiscard]] GridSettings gridSettings(const BakeOptions& options);
 /// Environment probe capture of a quality preset: face size draft 32, default 64, high 128;
 /// paths per texel 16, 64, 256; overrides applied.
-ProbeCaptureSettings probeSettings(const BakeOptions& options);
+[[nodiscard]] ProbeCaptureSettings probeSettings(const BakeOptions& options);
 
 struct BakeResult {
     world::CompiledLevel level;
@@ -59,7 +59,7 @@ struct BakeResult {
 
 /// Compiles and bakes `source` (or its shard). Throws world::Error on bad input and
 /// std::runtime_error on Embree failures.
-BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options);
+[[nodiscard]] BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options);
 
 /// Texels, cells and probes [begin, end) that shard i of n owns: contiguous ranges.
 struct ShardRange {
@@ -67,18 +67,16 @@ struct ShardRange {
     uint64_t cellBegin = 0, cellEnd = 0;
     uint64_t probeBegin = 0, probeEnd = 0;
 };
-ShardRange shardRange(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
-                      uint32_t count);
+[[nodiscard]] ShardRange shardRange(uint64_t texels, uint64_t cells, uint64_t probes,
+                                    uint32_t index, uint32_t count);
 
 /// E_avg of each probe (probe_capture.hpp): ambientCubeAverage of the light grid sampled at the
 /// capture point exactly as world::sampleLightGrid samples the finished grid. Only the corner
 /// cells the sample weighs are baked, into a scratch copy of `layout` (seeded per cell, so they
 /// equal the grid stage's cells): a shard gets the whole grid's value without the whole grid.
-std::vector<glm::vec3> probeAverageIrradiance(const BakeScene& scene, const BakeLights& lights,
-                                              const GridSettings& settings,
-                                              const world::LightGrid& layout,
-                                              const std::vector<ProbePlacement>& probes,
-                                              RayCounts& rays);
+[[nodiscard]] std::vector<glm::vec3> probeAverageIrradiance(
+    const BakeScene& scene, const BakeLights& lights, const GridSettings& settings,
+    const world::LightGrid& layout, const std::vector<ProbePlacement>& probes, RayCounts& rays);
 
 /// The steps after every texel is baked: dilation. Makes a part complete (shard 0 of 1).
 void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked);
@@ -89,7 +87,7 @@ void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting
                                                       std::vector<world::BakedLighting> parts);
 
 /// The package bytes of a bake result.
-std::vector<uint8_t> packageBytes(const world::CompiledLevel& level,
-                                  const world::BakedLighting& baked);
+[[nodiscard]] std::vector<uint8_t> packageBytes(const world::CompiledLevel& level,
+                                                const world::BakedLighting& baked);
 
 }  // namespace onelight::bake

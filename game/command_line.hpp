@@ -25,6 +25,6 @@ struct CommandLine {
 [[nodiscard]] CommandLine parseCommandLine(int argc, char** argv);
 
 /// The help: synopsis, what the modes are, every option with its default.
-std::string usage();
+[[nodiscard]] std::string usage();
 
 }  // namespace onelight::game

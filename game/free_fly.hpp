@@ -18,12 +18,12 @@ struct FreeFly {
 };
 
 /// Starts from a camera's position and look direction.
-FreeFly freeFlyFrom(const render::Camera& camera);
+[[nodiscard]] FreeFly freeFlyFrom(const render::Camera& camera);
 
 /// Applies the keys held and the mouse motion over `seconds`.
 void updateFreeFly(FreeFly& fly, GLFWwindow* window, float seconds);
 
 /// The camera it gives, keeping the lens of `lens`.
-render::Camera cameraOf(const FreeFly& fly, const render::Camera& lens);
+[[nodiscard]] render::Camera cameraOf(const FreeFly& fly, const render::Camera& lens);
 
 }  // namespace onelight::game

@@ -9,6 +9,6 @@
 namespace onelight::game {
 
 // Returns the process exit code.
-int runPlay(const CommandLine& commandLine, const assets::LoadedLevel& level);
+[[nodiscard]] int runPlay(const CommandLine& commandLine, const assets::LoadedLevel& level);
 
 }  // namespace onelight::game

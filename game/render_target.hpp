@@ -31,7 +31,7 @@ render::FrameStats drawToTarget(RenderTarget& target, const render::FrameInputs&
                                 bool readback, bool readbackSwapchain = false);
 
 // Whether the window was asked to close (Esc or the close button); false headless.
-bool targetWantsToClose(RenderTarget& target);
+[[nodiscard]] bool targetWantsToClose(RenderTarget& target);
 
 // Destroys in reverse creation order; returns the Vulkan validation errors counted meanwhile.
 uint32_t closeRenderTarget(RenderTarget& target);

@@ -10,6 +10,6 @@
 namespace onelight::game {
 
 // Returns the process exit code: 0, or 1 after printing the failed line (`file:line: ...`).
-int runReplay(const CommandLine& commandLine, const assets::LoadedLevel& level);
+[[nodiscard]] int runReplay(const CommandLine& commandLine, const assets::LoadedLevel& level);
 
 }  // namespace onelight::game

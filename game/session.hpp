@@ -45,7 +45,7 @@ void startSession(Session& session, const assets::LoadedLevel& level);
 void stepSession(Session& session);
 
 // The player's eye as a camera, with the adapted exposure.
-render::Camera playerCamera(const Session& session);
+[[nodiscard]] render::Camera playerCamera(const Session& session);
 
 // The exposure a reflected-light meter in the player's view asks for: 15 rays across the view
 // find the surfaces it sees; each surface's luminance is the shadowed illuminance of every
@@ -54,21 +54,22 @@ render::Camera playerCamera(const Session& session);
 // Lambertian surface; EV100 = log2(L * S / K) of their geometric
 // mean, S = 100, K = 12.5 (ISO 2720; Lagarde and de Rousiers 2014, sec. 5.1). Keeps `fallback`
 // when the view sees no surface.
-float meteredEv100(const Session& session, float fallback);
+[[nodiscard]] float meteredEv100(const Session& session, float fallback);
 
 // The renderer's inputs for the current state; `transforms` holds what frame.dynamicTransforms
 // points to.
-render::FrameInputs frameInputsOf(const Session& session,
-                                  std::vector<render::DynamicTransform>& transforms);
+[[nodiscard]] render::FrameInputs frameInputsOf(const Session& session,
+                                                std::vector<render::DynamicTransform>& transforms);
 
 // The shadowed contribution of primary `light` at `point`: its illuminance (luminance, lux) by
 // the shared light model times its visibility along a ray through the BSP.
-float primaryScore(const Session& session, uint32_t light, const glm::vec3& point);
+[[nodiscard]] float primaryScore(const Session& session, uint32_t light, const glm::vec3& point);
 
 // What a dynamic object's primary is picked by (and handed to the renderer with): with a light
 // grid, the grid's answer — the light's illuminance times its baked visibility where it is the
 // dominant primary of the surrounding cells, as the renderer scores it; without one,
 // primaryScore.
-float primaryPickScore(const Session& session, uint32_t light, const glm::vec3& point);
+[[nodiscard]] float primaryPickScore(const Session& session, uint32_t light,
+                                     const glm::vec3& point);
 
 }  // namespace onelight::game

@@ -19,73 +19,73 @@ using glm::vec3;
 using glm::vec4;
 using uint = unsigned int;
 
-inline float abs(float x) {
+[[nodiscard]] inline float abs(float x) {
     return std::fabs(x);
 }
-inline float min(float a, float b) {
+[[nodiscard]] inline float min(float a, float b) {
     return b < a ? b : a;
 }
-inline float max(float a, float b) {
+[[nodiscard]] inline float max(float a, float b) {
     return a < b ? b : a;
 }
-inline int min(int a, int b) {
+[[nodiscard]] inline int min(int a, int b) {
     return b < a ? b : a;
 }
-inline int max(int a, int b) {
+[[nodiscard]] inline int max(int a, int b) {
     return a < b ? b : a;
 }
-inline float clamp(float x, float lo, float hi) {
+[[nodiscard]] inline float clamp(float x, float lo, float hi) {
     return min(max(x, lo), hi);
 }
-inline int clamp(int x, int lo, int hi) {
+[[nodiscard]] inline int clamp(int x, int lo, int hi) {
     return min(max(x, lo), hi);
 }
-inline float mix(float a, float b, float t) {
+[[nodiscard]] inline float mix(float a, float b, float t) {
     return a * (1.0f - t) + b * t;
 }
-inline float sqrt(float x) {
+[[nodiscard]] inline float sqrt(float x) {
     return std::sqrt(x);
 }
-inline float inversesqrt(float x) {
+[[nodiscard]] inline float inversesqrt(float x) {
     return 1.0f / std::sqrt(x);
 }
-inline float exp(float x) {
+[[nodiscard]] inline float exp(float x) {
     return std::exp(x);
 }
-inline float exp2(float x) {
+[[nodiscard]] inline float exp2(float x) {
     return std::exp2(x);
 }
-inline float log(float x) {
+[[nodiscard]] inline float log(float x) {
     return std::log(x);
 }
-inline float log2(float x) {
+[[nodiscard]] inline float log2(float x) {
     return std::log2(x);
 }
-inline float pow(float x, float y) {
+[[nodiscard]] inline float pow(float x, float y) {
     return std::pow(x, y);
 }
-inline float floor(float x) {
+[[nodiscard]] inline float floor(float x) {
     return std::floor(x);
 }
-inline float atan(float y, float x) {
+[[nodiscard]] inline float atan(float y, float x) {
     return std::atan2(y, x);
 }
-inline float atan(float x) {
+[[nodiscard]] inline float atan(float x) {
     return std::atan(x);
 }
-inline float fract(float x) {
+[[nodiscard]] inline float fract(float x) {
     return x - std::floor(x);
 }
-inline float step(float edge, float x) {
+[[nodiscard]] inline float step(float edge, float x) {
     return x < edge ? 0.0f : 1.0f;
 }
-inline float sign(float x) {
+[[nodiscard]] inline float sign(float x) {
     return float(x > 0.0f) - float(x < 0.0f);
 }
-inline bool isnan(float x) {
+[[nodiscard]] inline bool isnan(float x) {
     return std::isnan(x);
 }
-inline bool isinf(float x) {
+[[nodiscard]] inline bool isinf(float x) {
     return std::isinf(x);
 }
 

@@ -67,7 +67,7 @@ struct BakedLighting {
 };
 
 /// Offset of atlas `atlas`'s first texel in BakedLighting::texels.
-inline uint64_t atlasTexelOffset(const CompiledLevel& level, uint32_t atlas) {
+[[nodiscard]] inline uint64_t atlasTexelOffset(const CompiledLevel& level, uint32_t atlas) {
     uint64_t offset = 0;
     for (uint32_t a = 0; a < atlas; ++a)
         offset += uint64_t(level.atlases[a].width) * level.atlases[a].height;
@@ -81,7 +81,7 @@ namespace onelight::world {
 /// A texel as the four linear coefficients per channel of shaders/lighting.glsl's
 /// irradianceLinear (E(n) = max(0, c0 + c.n)): (E / w) (0.5, d). Exact, not a fit: the texel's
 /// reconstruction E (0.5 + n.d) / w is linear in n.
-inline glm::vec4 linearIrradianceCoefficients(const LightmapTexel& t, int channel) {
+[[nodiscard]] inline glm::vec4 linearIrradianceCoefficients(const LightmapTexel& t, int channel) {
     const float scale = t.irradiance[channel] / t.normalWeight;
     return glm::vec4(0.5f * scale, scale * t.direction);
 }

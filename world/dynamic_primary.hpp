@@ -26,10 +26,10 @@ inline constexpr float kPrimaryEvaluationDistance = 0.01f;
 
 /// A dynamic object's pick and its hysteresis state.
 struct DynamicPrimary {
-    uint32_t primary = kNoIndex;       // into the level's lights; kNoIndex before the first pick
-    uint32_t challenger = kNoIndex;    // a light that currently beats the primary
-    int challengerEvaluations = 0;  // consecutive evaluations the challenger has led
-    glm::vec3 lastOrigin{1e30f};    // where it was last evaluated
+    uint32_t primary = kNoIndex;     // into the level's lights; kNoIndex before the first pick
+    uint32_t challenger = kNoIndex;  // a light that currently beats the primary
+    int challengerEvaluations = 0;   // consecutive evaluations the challenger has led
+    glm::vec3 lastOrigin{1e30f};     // where it was last evaluated
 };
 
 /// How bright light `light` is at `point`, shadowing included (larger wins).

@@ -24,14 +24,16 @@ struct LightGridSample {
 };
 
 /// Samples `grid` at world point p. The grid must have cells (dims >= 1 each).
-LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p);
+[[nodiscard]] LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p);
 
 /// Sum of weight * primaryVisibility over the corners whose dominant primary is `light`: the
 /// baked score of that light at the sample, before its illuminance (0 when it dominates none).
-float dominantVisibility(const LightGrid& grid, const LightGridSample& sample, uint32_t light);
+[[nodiscard]] float dominantVisibility(const LightGrid& grid, const LightGridSample& sample,
+                                       uint32_t light);
 
 /// The baked visibility of `light` at the sample: primaryVisibility averaged (by weight) over
 /// the corners where it is the dominant primary; 0 when it dominates none of them.
-float bakedVisibility(const LightGrid& grid, const LightGridSample& sample, uint32_t light);
+[[nodiscard]] float bakedVisibility(const LightGrid& grid, const LightGridSample& sample,
+                                    uint32_t light);
 
 }  // namespace onelight::world

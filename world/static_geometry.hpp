@@ -38,15 +38,15 @@ struct StaticGeometry {
 };
 
 /// Attribute-wise interpolation a + t (b - a), normal and tangent renormalised.
-CompileVertex interpolate(const CompileVertex& a, const CompileVertex& b, double t);
+[[nodiscard]] CompileVertex interpolate(const CompileVertex& a, const CompileVertex& b, double t);
 
 /// Twice the area vector of the triangle (cross product of its edges), metres squared.
-glm::dvec3 areaVector(const StaticGeometry& geometry, const StaticTriangle& triangle);
+[[nodiscard]] glm::dvec3 areaVector(const StaticGeometry& geometry, const StaticTriangle& triangle);
 
 /// Area of the triangle, metres squared.
-double triangleArea(const StaticGeometry& geometry, const StaticTriangle& triangle);
+[[nodiscard]] double triangleArea(const StaticGeometry& geometry, const StaticTriangle& triangle);
 
 /// Sum of every triangle's area, metres squared (Kahan-summed).
-double totalArea(const StaticGeometry& geometry);
+[[nodiscard]] double totalArea(const StaticGeometry& geometry);
 
 }  // namespace onelight::world

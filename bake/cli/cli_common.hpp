@@ -18,22 +18,22 @@ inline const std::string kRequired = "required";
 
 /// A subcommand's help: the synopsis, what it does, then every option with its default, one a
 /// line, aligned.
-std::string formatUsage(const std::string& synopsis, const std::string& summary,
-                        const std::vector<CliOption>& options);
+[[nodiscard]] std::string formatUsage(const std::string& synopsis, const std::string& summary,
+                                      const std::vector<CliOption>& options);
 
 /// `value` as the shortest text that reads it back ("%g").
-std::string formatNumber(double value);
+[[nodiscard]] std::string formatNumber(double value);
 
 /// When `arguments` ask for help (-h or --help anywhere), prints `usage` on stdout and returns
 /// true: the command then exits 0.
-bool printedHelp(const std::vector<std::string>& arguments, const std::string& usage);
+[[nodiscard]] bool printedHelp(const std::vector<std::string>& arguments, const std::string& usage);
 
 /// The whole of `text` as a number in [low, high]; false otherwise (no partial parses).
-bool parseNumber(const std::string& text, double low, double high, double& out);
+[[nodiscard]] bool parseNumber(const std::string& text, double low, double high, double& out);
 
 /// Runs `command` and returns its exit code; an exception becomes "onelight-bake: error: ..."
 /// on stderr and exit code 1: a world::Error as its message (it names file and place),
 /// anything else prefixed with `input`, running out of memory as "out of memory".
-int runReportingErrors(const std::string& input, const std::function<int()>& command);
+[[nodiscard]] int runReportingErrors(const std::string& input, const std::function<int()>& command);
 
 }  // namespace onelight::bake

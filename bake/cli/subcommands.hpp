@@ -7,15 +7,15 @@
 
 namespace onelight::bake {
 
-int runCompileCommand(const std::vector<std::string>& arguments);
-int runBakeCommand(const std::vector<std::string>& arguments);       // LEVEL.gltf -o ...
-int runReferenceCommand(const std::vector<std::string>& arguments);  // reference ...
-int runMergeCommand(const std::vector<std::string>& arguments);      // merge ...
+[[nodiscard]] int runCompileCommand(const std::vector<std::string>& arguments);
+[[nodiscard]] int runBakeCommand(const std::vector<std::string>& arguments);  // LEVEL.gltf -o ...
+[[nodiscard]] int runReferenceCommand(const std::vector<std::string>& arguments);  // reference ...
+[[nodiscard]] int runMergeCommand(const std::vector<std::string>& arguments);      // merge ...
 
 // Each subcommand's help: synopsis, summary, every option with its default (-h or --help).
-std::string compileUsage();
-std::string bakeUsage();
-std::string referenceUsage();
-std::string mergeUsage();
+[[nodiscard]] std::string compileUsage();
+[[nodiscard]] std::string bakeUsage();
+[[nodiscard]] std::string referenceUsage();
+[[nodiscard]] std::string mergeUsage();
 
 }  // namespace onelight::bake

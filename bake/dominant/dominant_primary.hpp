@@ -28,9 +28,9 @@ struct AtomicRayCount {
                             +--------------------------------------+
    The scene and lights are borrowed and must outlive the function.
 */
-world::PrimaryIlluminanceFn makeShadowedPrimaryIlluminance(const BakeScene& scene,
-                                                           const BakeLights& lights,
-                                                           uint32_t shadowSamples,
-                                                           AtomicRayCount* rays);
+[[nodiscard]] world::PrimaryIlluminanceFn makeShadowedPrimaryIlluminance(const BakeScene& scene,
+                                                                         const BakeLights& lights,
+                                                                         uint32_t shadowSamples,
+                                                                         AtomicRayCount* rays);
 
 }  // namespace onelight::bake

@@ -24,7 +24,8 @@ struct GridSettings {
 
 /// Origin, cell size and dimensions (cells empty) over the authored grid bounds when the
 /// level has them, else over the static geometry's bounds.
-world::LightGrid layoutLightGrid(const world::CompiledLevel& level, const GridSettings& settings);
+[[nodiscard]] world::LightGrid layoutLightGrid(const world::CompiledLevel& level,
+                                               const GridSettings& settings);
 
 struct GridStats {
     RayCounts rays;
@@ -46,11 +47,11 @@ struct GridStats {
    Dominant primary: argmax over primaries of Y(E_l) V_l (no cosine: an object's orientation
    is unknown), lowest index on ties.
 */
-GridStats bakeLightGrid(const BakeScene& scene, const BakeLights& lights,
-                        const GridSettings& settings, uint64_t cellBegin, uint64_t cellEnd,
-                        world::LightGrid& grid, Progress* progress);
+[[nodiscard]] GridStats bakeLightGrid(const BakeScene& scene, const BakeLights& lights,
+                                      const GridSettings& settings, uint64_t cellBegin,
+                                      uint64_t cellEnd, world::LightGrid& grid, Progress* progress);
 
 /// Irradiance (lux) on a surface of normal n from an ambient cube: n.x^2 C[+-x] + ...
-glm::vec3 ambientCubeIrradiance(const world::LightGridCell& cell, const glm::vec3& n);
+[[nodiscard]] glm::vec3 ambientCubeIrradiance(const world::LightGridCell& cell, const glm::vec3& n);
 
 }  // namespace onelight::bake

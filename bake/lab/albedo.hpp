@@ -34,7 +34,8 @@ struct HalfVectorTolerance {
 
 // int g(reflection) dh over the half vectors with NoL > 0 (g returns Vec<N>).
 template <int N, class G>
-Vec<N> integrateHalfVectors(double mu, double width, const G& g, HalfVectorTolerance tol = {}) {
+[[nodiscard]] Vec<N> integrateHalfVectors(double mu, double width, const G& g,
+                                          HalfVectorTolerance tol = {}) {
     constexpr double kPi = std::numbers::pi;
     double sinV = std::sqrt(std::max(0.0, 1.0 - mu * mu));
     auto outer = [&](double u) -> Vec<N> {
@@ -72,13 +73,13 @@ struct ScaleBias {
 };
 
 // Through the shared float BRDF of shaders/brdf.glsl. mu in (0, 1], gloss in [0, 1].
-ScaleBias specularAlbedo(const SpecularModel& model, double mu, double gloss);
+[[nodiscard]] ScaleBias specularAlbedo(const SpecularModel& model, double mu, double gloss);
 
 // The double-precision exact-Smith reference of the model's NDF (reference_brdf.hpp).
-ScaleBias referenceAlbedo(const SpecularModel& model, double mu, double gloss);
+[[nodiscard]] ScaleBias referenceAlbedo(const SpecularModel& model, double mu, double gloss);
 
 // Relative L1 error of the model's lobe f NoL (F = 1) against its exact-Smith reference:
 // int |f - f_ref| NoL dl / int f_ref NoL dl.
-double lobeError(const SpecularModel& model, double mu, double gloss);
+[[nodiscard]] double lobeError(const SpecularModel& model, double mu, double gloss);
 
 }  // namespace onelight::lab

@@ -9,10 +9,10 @@
 namespace onelight::lab {
 
 // Comma-separated numbers, each within [lo, hi] (lo excluded when loOpen).
-std::vector<double> parseNumberList(std::string_view option, std::string_view text, double lo,
-                                    double hi, bool loOpen);
+[[nodiscard]] std::vector<double> parseNumberList(std::string_view option, std::string_view text,
+                                                  double lo, double hi, bool loOpen);
 
 // Comma-separated words.
-std::vector<std::string> parseWordList(std::string_view text);
+[[nodiscard]] std::vector<std::string> parseWordList(std::string_view text);
 
 }  // namespace onelight::lab

@@ -6,10 +6,10 @@
 namespace onelight::lab {
 
 // brdf-report: writes DIR/README.md, CSVs and PNG plots (report.cpp). `quick` uses coarse grids.
-int brdfReport(const std::string& dir, bool quick);
+[[nodiscard]] int brdfReport(const std::string& dir, bool quick);
 
 // env-fit: fits the environment "Fresnel" (env_brdf.hpp) and writes it as GLSL to `path`
 // (default: stdout) (env_fit_command.cpp).
-int envFit(const std::string& path);
+[[nodiscard]] int envFit(const std::string& path);
 
 }  // namespace onelight::lab

@@ -16,8 +16,9 @@ struct EnvSample {
 };
 
 // The model's albedo at every (mu, gloss) of the grid, computed in parallel, deterministic.
-std::vector<EnvSample> envTruth(const SpecularModel& model, const std::vector<double>& mus,
-                                const std::vector<double>& glosses);
+[[nodiscard]] std::vector<EnvSample> envTruth(const SpecularModel& model,
+                                              const std::vector<double>& mus,
+                                              const std::vector<double>& glosses);
 
 // A resolution x resolution table with texel centres at ((i + 0.5) / res, (j + 0.5) / res),
 // sampled bilinearly with clamp-to-edge as a GPU sampler does (float texels).
@@ -26,7 +27,7 @@ struct SplitSumTable {
     std::vector<float> scale, bias;  // row-major, row = gloss, column = mu
     ScaleBias sample(double mu, double gloss) const;
 };
-SplitSumTable buildSplitSumTable(const SpecularModel& model, int resolution);
+[[nodiscard]] SplitSumTable buildSplitSumTable(const SpecularModel& model, int resolution);
 
 // The lab's own fit: scale and bias each a linear combination of 27 basis functions
 //   P_i(2x - 1) P_j(2y - 1) * {1, 1 - w, k},  i, j <= 2,  x = sqrt(NoV), y = sqrt(alpha),
@@ -43,12 +44,12 @@ struct EnvFit {
 };
 
 // The basis functions at (mu, gloss), in coefficient order.
-std::vector<double> envFitBasis(double mu, double gloss);
+[[nodiscard]] std::vector<double> envFitBasis(double mu, double gloss);
 
 // Least-squares fit to the samples.
-EnvFit fitEnv(const std::vector<EnvSample>& samples);
+[[nodiscard]] EnvFit fitEnv(const std::vector<EnvSample>& samples);
 
 // The fit as shaders/env_brdf_fit.glsl source; `provenance` goes into its header comment.
-std::string envFitGlsl(const EnvFit& fit, const std::string& provenance);
+[[nodiscard]] std::string envFitGlsl(const EnvFit& fit, const std::string& provenance);
 
 }  // namespace onelight::lab

@@ -17,30 +17,30 @@ namespace onelight::lab {
 constexpr std::string_view kRuntimeModel = "ggx_smith";
 
 // n values spread over (0, 1], denser near 0 (grazing), ending at 1.
-inline std::vector<double> muGrid(int n) {
+[[nodiscard]] inline std::vector<double> muGrid(int n) {
     std::vector<double> v;
     for (int i = 1; i <= n; ++i) v.push_back(std::pow(double(i) / n, 1.5));
     return v;
 }
 // n + 1 values over [0, 1].
-inline std::vector<double> glossGrid(int n) {
+[[nodiscard]] inline std::vector<double> glossGrid(int n) {
     std::vector<double> v;
     for (int i = 0; i <= n; ++i) v.push_back(double(i) / n);
     return v;
 }
-inline std::vector<double> fitGridMu() {
+[[nodiscard]] inline std::vector<double> fitGridMu() {
     return muGrid(32);
 }
-inline std::vector<double> fitGridGloss() {
+[[nodiscard]] inline std::vector<double> fitGridGloss() {
     return glossGrid(32);
 }
 // Off the fit grid and off table texel centres: the check is not fooled by interpolation.
-inline std::vector<double> checkGridMu() {
+[[nodiscard]] inline std::vector<double> checkGridMu() {
     std::vector<double> v;
     for (int i = 0; i < 47; ++i) v.push_back(0.005 + 0.995 * (i + 0.37) / 47.0);
     return v;
 }
-inline std::vector<double> checkGridGloss() {
+[[nodiscard]] inline std::vector<double> checkGridGloss() {
     std::vector<double> v;
     for (int i = 0; i < 41; ++i) v.push_back((i + 0.29) / 41.0);
     return v;
@@ -51,8 +51,8 @@ inline std::vector<double> checkGridGloss() {
 struct EnvError {
     double max = 0.0, rms = 0.0;
 };
-inline EnvError envError(const std::vector<EnvSample>& samples,
-                         const std::function<ScaleBias(double, double)>& candidate) {
+[[nodiscard]] inline EnvError envError(const std::vector<EnvSample>& samples,
+                                       const std::function<ScaleBias(double, double)>& candidate) {
     EnvError e;
     double sum = 0.0;
     int count = 0;

@@ -8,7 +8,7 @@ namespace onelight::lab {
 
 // Minimizes |A x - b| for A with `rows` rows and `cols` columns, row-major, rows >= cols.
 // Throws std::runtime_error when A is rank deficient.
-std::vector<double> solveLeastSquares(std::vector<double> A, std::vector<double> b, int rows,
-                                      int cols);
+[[nodiscard]] std::vector<double> solveLeastSquares(std::vector<double> A, std::vector<double> b,
+                                                    int rows, int cols);
 
 }  // namespace onelight::lab

@@ -18,12 +18,12 @@ struct SpecularModel {
 };
 
 // bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith, in that order.
-const std::vector<SpecularModel>& specularModels();
+[[nodiscard]] const std::vector<SpecularModel>& specularModels();
 
 // The model called `name`; throws std::invalid_argument naming the known ones.
-const SpecularModel& findModel(std::string_view name);
+[[nodiscard]] const SpecularModel& findModel(std::string_view name);
 
 // Angular width of the model's NDF lobe at `gloss` (GGX alpha or Beckmann m), for quadrature.
-double lobeWidth(const SpecularModel& model, double gloss);
+[[nodiscard]] double lobeWidth(const SpecularModel& model, double gloss);
 
 }  // namespace onelight::lab

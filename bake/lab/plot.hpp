@@ -29,6 +29,6 @@ struct Plot {
 void writePlotPng(const std::string& path, const Plot& plot);
 
 // A distinct colour for series i.
-std::array<uint8_t, 3> seriesColor(int i);
+[[nodiscard]] std::array<uint8_t, 3> seriesColor(int i);
 
 }  // namespace onelight::lab

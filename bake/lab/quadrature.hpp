@@ -44,7 +44,7 @@ struct Interval {
 };
 
 template <int N, class F>
-Interval<N> gaussKronrod(const F& f, double a, double b) {
+[[nodiscard]] Interval<N> gaussKronrod(const F& f, double a, double b) {
     double center = 0.5 * (a + b), half = 0.5 * (b - a);
     Vec<N> kronrod{}, gauss{};
     for (int i = 0; i < 8; ++i) {
@@ -71,7 +71,7 @@ Interval<N> gaussKronrod(const F& f, double a, double b) {
 // Integral of f over [a, b]; f maps double -> Vec<N>. Bisects the interval of largest error
 // until the summed error is within max(absolute, relative * |integral|) (max over components).
 template <int N, class F>
-Vec<N> integrate(const F& f, double a, double b, QuadratureTolerance tol = {}) {
+[[nodiscard]] Vec<N> integrate(const F& f, double a, double b, QuadratureTolerance tol = {}) {
     using detail::Interval;
     std::vector<Interval<N>> intervals{detail::gaussKronrod<N>(f, a, b)};
     auto worse = [](const Interval<N>& x, const Interval<N>& y) { return x.error < y.error; };

@@ -14,38 +14,38 @@ namespace onelight::lab::reference {
 
 constexpr double kPi = std::numbers::pi;
 
-inline double specPower(double gloss) {
+[[nodiscard]] inline double specPower(double gloss) {
     return std::pow(8192.0, gloss);
 }
-inline double beckmannM(double gloss) {
+[[nodiscard]] inline double beckmannM(double gloss) {
     return std::sqrt(2.0 / (specPower(gloss) + 2.0));
 }
-inline double ggxAlpha(double gloss) {
+[[nodiscard]] inline double ggxAlpha(double gloss) {
     return std::sqrt(2.0 / (1.0 + std::pow(2.0, 18.0 * gloss)));
 }
 
 // NDFs of the half-vector angle, given sin^2 and cos of theta_h.
-inline double ndfBlinnPhong(double sin2, double cosH, double n) {
+[[nodiscard]] inline double ndfBlinnPhong(double sin2, double cosH, double n) {
     (void)sin2;
     return (n + 2.0) / (2.0 * kPi) * std::pow(cosH, n);
 }
-inline double ndfBeckmann(double sin2, double cosH, double m) {
+[[nodiscard]] inline double ndfBeckmann(double sin2, double cosH, double m) {
     double cos2 = cosH * cosH;
     return std::exp(-sin2 / (cos2 * m * m)) / (kPi * m * m * cos2 * cos2);
 }
-inline double ndfGGX(double sin2, double cosH, double alpha) {
+[[nodiscard]] inline double ndfGGX(double sin2, double cosH, double alpha) {
     double cos2 = cosH * cosH, a2 = alpha * alpha;
     double t = cos2 * a2 + sin2;
     return a2 / (kPi * t * t);
 }
 
 // Smith Lambda for a direction at cosine mu (Walter et al. 2007, eqs. 25 and 35).
-inline double lambdaBeckmann(double mu, double m) {
+[[nodiscard]] inline double lambdaBeckmann(double mu, double m) {
     if (mu >= 1.0) return 0.0;
     double a = mu / (m * std::sqrt(1.0 - mu * mu));
     return 0.5 * (std::exp(-a * a) / (a * std::sqrt(kPi)) - std::erfc(a));
 }
-inline double lambdaGGX(double mu, double alpha) {
+[[nodiscard]] inline double lambdaGGX(double mu, double alpha) {
     double tan2 = (1.0 - mu * mu) / (mu * mu);
     return 0.5 * (std::sqrt(1.0 + alpha * alpha * tan2) - 1.0);
 }
@@ -59,7 +59,7 @@ inline double lambdaGGX(double mu, double alpha) {
 // once per exponent at 2049 values of mu and interpolates linearly (error < 1e-8).
 // ndf(sin2, cos) of any isotropic NDF; w its lobe width (for the theta mapping).
 template <class Ndf>
-double projectedArea(double mu, double w, const Ndf& ndf) {
+[[nodiscard]] double projectedArea(double mu, double w, const Ndf& ndf) {
     double sinO = std::sqrt(std::max(0.0, 1.0 - mu * mu));
     auto f = [&](double u) {
         double t = std::tan(0.5 * kPi * u), theta = std::atan(w * t);
@@ -82,7 +82,7 @@ double projectedArea(double mu, double w, const Ndf& ndf) {
     return integrate<1>(f, 0.0, uKink, tol)[0] + integrate<1>(f, uKink, 1.0, tol)[0];
 }
 
-inline double projectedAreaBlinnPhong(double mu, double n) {
+[[nodiscard]] inline double projectedAreaBlinnPhong(double mu, double n) {
     return projectedArea(mu, std::sqrt(2.0 / (n + 2.0)),
                          [n](double s2, double c) { return ndfBlinnPhong(s2, c, n); });
 }
@@ -111,8 +111,9 @@ enum class Ndf { kBlinnPhong, kBeckmann, kGGX };
 // The exact height-correlated Smith BRDF times the cosine, F = 1:
 // f NoL = D G2 / (4 NoV), G2 = 1 / (1 + Lambda(v) + Lambda(l)), each NDF with its own Lambda
 // (Blinn-Phong's from `blinnPhongLambda`, which must be built for specPower(gloss)).
-inline double smithLobe(Ndf ndf, double gloss, double NoV, double NoL, double sin2H, double cosH,
-                        const BlinnPhongLambda* blinnPhongLambda = nullptr) {
+[[nodiscard]] inline double smithLobe(Ndf ndf, double gloss, double NoV, double NoL, double sin2H,
+                                      double cosH,
+                                      const BlinnPhongLambda* blinnPhongLambda = nullptr) {
     if (NoL <= 0.0 || NoV <= 0.0) return 0.0;
     double D, lv, ll;
     if (ndf == Ndf::kGGX) {

@@ -37,8 +37,8 @@ struct BakeLights {
     glm::vec3 skyRadiance{0.0f};  // cd/m^2, uniform over every direction that escapes
 };
 
-BakeLights makeBakeLights(const std::vector<world::Light>& levelLights, const LightSizes& sizes,
-                          glm::vec3 skyRadiance);
+[[nodiscard]] BakeLights makeBakeLights(const std::vector<world::Light>& levelLights,
+                                        const LightSizes& sizes, glm::vec3 skyRadiance);
 
 /// A light seen from a point: where its centre is and how much it gives there.
 struct LightIncidence {
@@ -49,7 +49,7 @@ struct LightIncidence {
 
 /// The unshadowed light at `position`: E = I / d^2 x range window x spot cone for point and
 /// spot lights, E = I for directional, times the colour.
-LightIncidence lightIncidence(const BakeLight& light, const glm::vec3& position);
+[[nodiscard]] LightIncidence lightIncidence(const BakeLight& light, const glm::vec3& position);
 
 /// A direction towards a uniformly chosen point of the light's apparent disc and the length
 /// of the shadow ray that tests it (stops at the light's surface).
@@ -59,8 +59,9 @@ struct LightDirection {
 };
 // pdf = 1 / (2 pi (1 - cos theta_max)), uniform over the cone of directions the light covers
 // (sin theta_max = radius / distance for a sphere, the angular radius for the sun).
-LightDirection sampleLightDirection(const BakeLight& light, const LightIncidence& incidence,
-                                    glm::vec2 u, float sceneDiameter);
+[[nodiscard]] LightDirection sampleLightDirection(const BakeLight& light,
+                                                  const LightIncidence& incidence, glm::vec2 u,
+                                                  float sceneDiameter);
 
 /// Fraction of the light's apparent disc visible from `origin` (already offset off its
 /// surface), by `samples` shadow rays on a rotated Hammersley set seeded by `rng`.
@@ -71,8 +72,8 @@ LightDirection sampleLightDirection(const BakeLight& light, const LightIncidence
                                         | V = (1/N) sum_i vis(w_i)  |
                                         +---------------------------+
 */
-float lightVisibility(const BakeScene& scene, const BakeLight& light,
-                      const LightIncidence& incidence, const glm::vec3& origin, uint32_t samples,
-                      Rng& rng, RayCounts& rays);
+[[nodiscard]] float lightVisibility(const BakeScene& scene, const BakeLight& light,
+                                    const LightIncidence& incidence, const glm::vec3& origin,
+                                    uint32_t samples, Rng& rng, RayCounts& rays);
 
 }  // namespace onelight::bake

@@ -36,10 +36,10 @@ struct TransportSettings {
                  | Lo_direct ~ sum_l (albedo NoL / pi + specularLobe) E_l vis(w_l) |
                  +----------------------------------------------------------------+
 */
-glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
-                         const world::Material& material, const glm::vec3& position,
-                         const glm::vec3& normal, const glm::vec3& toViewer, Rng& rng,
-                         RayCounts& rays);
+[[nodiscard]] glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
+                                       const world::Material& material, const glm::vec3& position,
+                                       const glm::vec3& normal, const glm::vec3& toViewer, Rng& rng,
+                                       RayCounts& rays);
 
 /// What traceRadiance saw first (for inside-geometry tests).
 struct FirstHit {
@@ -62,8 +62,9 @@ struct FirstHit {
      +------------------------------------------------------------------------------+
    Back faces of single-sided materials absorb (they are only seen from inside solids).
 */
-glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
-                        const TransportSettings& settings, glm::vec3 origin, glm::vec3 dir,
-                        Rng& rng, RayCounts& rays, FirstHit* firstHit = nullptr);
+[[nodiscard]] glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
+                                      const TransportSettings& settings, glm::vec3 origin,
+                                      glm::vec3 dir, Rng& rng, RayCounts& rays,
+                                      FirstHit* firstHit = nullptr);
 
 }  // namespace onelight::bake

@@ -16,14 +16,14 @@ inline constexpr float kPi = 3.14159265358979f;
 
 // Jarzynski and Olano 2020, "Hash Functions for GPU Rendering", JCGT 9(3), "pcg" (the PCG
 // output permutation applied to one LCG step of the input).
-inline uint32_t pcgHash(uint32_t input) {
+[[nodiscard]] inline uint32_t pcgHash(uint32_t input) {
     const uint32_t state = input * 747796405u + 2891336453u;
     const uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
     return (word >> 22u) ^ word;
 }
 
 /// Seed from an identity of up to four words (e.g. atlas, x, y, pass); order matters.
-inline uint32_t seedFrom(uint32_t a, uint32_t b = 0, uint32_t c = 0, uint32_t d = 0) {
+[[nodiscard]] inline uint32_t seedFrom(uint32_t a, uint32_t b = 0, uint32_t c = 0, uint32_t d = 0) {
     return pcgHash(d ^ pcgHash(c ^ pcgHash(b ^ pcgHash(a))));
 }
 
@@ -41,7 +41,7 @@ struct Rng {
 };
 
 /// Van der Corput radical inverse in base 2 (bit reversal), in [0, 1).
-inline float radicalInverse2(uint32_t i) {
+[[nodiscard]] inline float radicalInverse2(uint32_t i) {
     i = (i << 16u) | (i >> 16u);
     i = ((i & 0x00ff00ffu) << 8u) | ((i & 0xff00ff00u) >> 8u);
     i = ((i & 0x0f0f0f0fu) << 4u) | ((i & 0xf0f0f0f0u) >> 4u);
@@ -52,7 +52,7 @@ inline float radicalInverse2(uint32_t i) {
 
 /// Point i of an n-point Hammersley set shifted by (s0, s1) modulo 1 (Cranley-Patterson
 /// rotation): stratified within a texel, decorrelated between texels.
-inline glm::vec2 rotatedHammersley(uint32_t i, uint32_t n, float s0, float s1) {
+[[nodiscard]] inline glm::vec2 rotatedHammersley(uint32_t i, uint32_t n, float s0, float s1) {
     float u = (static_cast<float>(i) + 0.5f) / static_cast<float>(n) + s0;
     float v = radicalInverse2(i) + s1;
     u -= std::floor(u);
@@ -66,7 +66,7 @@ struct Frame {
     glm::vec3 t, b, n;
     glm::vec3 toWorld(const glm::vec3& v) const { return t * v.x + b * v.y + n * v.z; }
 };
-inline Frame frameAround(const glm::vec3& n) {
+[[nodiscard]] inline Frame frameAround(const glm::vec3& n) {
     const float sign = std::copysign(1.0f, n.z);
     const float a = -1.0f / (sign + n.z);
     const float b = n.x * n.y * a;
@@ -77,7 +77,7 @@ inline Frame frameAround(const glm::vec3& n) {
 /// Cosine-weighted direction on the hemisphere around +z, by Malley's method (a uniform
 /// point on the unit disc lifted to the hemisphere).
 // pdf = cos(theta) / pi   (solid angle)
-inline glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
+[[nodiscard]] inline glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
     const float r = std::sqrt(u.x);
     const float phi = 2.0f * kPi * u.y;
     return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
@@ -85,7 +85,7 @@ inline glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
 
 /// Uniform direction on the unit sphere (Archimedes: z uniform in [-1, 1]).
 // pdf = 1 / (4 pi)   (solid angle)
-inline glm::vec3 sampleUniformSphere(glm::vec2 u) {
+[[nodiscard]] inline glm::vec3 sampleUniformSphere(glm::vec2 u) {
     const float z = 1.0f - 2.0f * u.x;
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
     const float phi = 2.0f * kPi * u.y;
@@ -96,7 +96,7 @@ inline glm::vec3 sampleUniformSphere(glm::vec2 u) {
 /// written as 1 - u (1 - cos_max) with 1 - cos_max passed in directly, so cones of a few
 /// arc-minutes (the sun) keep their digits: Pharr et al., PBRT 3rd ed., sec. 13.6.4.
 // pdf = 1 / (2 pi oneMinusCosMax)   (solid angle)
-inline glm::vec3 sampleUniformCone(glm::vec2 u, float oneMinusCosMax) {
+[[nodiscard]] inline glm::vec3 sampleUniformCone(glm::vec2 u, float oneMinusCosMax) {
     const float oneMinusCos = u.x * oneMinusCosMax;
     const float cosTheta = 1.0f - oneMinusCos;
     const float sinTheta = std::sqrt(std::max(0.0f, oneMinusCos * (2.0f - oneMinusCos)));

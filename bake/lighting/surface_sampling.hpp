@@ -20,14 +20,14 @@ struct SurfaceSample {
 /// Probability of drawing from the specular lobe at view cosine NoV: the luminance of its
 /// Schlick reflectance at normal view, F(NoV) = f0 + (1 - f0)(1 - NoV)^5, over that plus the
 /// diffuse albedo's. 0 for a surface without specular colour, 1 without albedo.
-float specularProbability(const world::Material& material, float NoV);
+[[nodiscard]] float specularProbability(const world::Material& material, float NoV);
 
 /// Density (per steradian) of sampleSurface drawing l at (n, v): the mixture
 ///   pdf(l) = (1 - p) NoL / pi + p D(h) NoH / (4 VoH),   h = normalize(v + l), p as above
 /// (Walter et al. 2007, eq. 14 and 38: a half vector drawn with density D NoH reflects to l
 /// with density D NoH / (4 VoH)).
-float surfacePdf(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
-                 const glm::vec3& l);
+[[nodiscard]] float surfacePdf(const world::Material& material, const glm::vec3& n,
+                               const glm::vec3& v, const glm::vec3& l);
 
 /// Draws the continuation at a hit with unit normal n (facing v) seen from unit v: with
 /// probability p a GGX half vector about n (cos^2 theta_h = (1 - u) / (1 + (a^2 - 1) u),
@@ -38,7 +38,7 @@ float surfacePdf(const world::Material& material, const glm::vec3& n, const glm:
 ///            | weight = (albedo NoL / pi + specularLobe(v, l)) / pdf(l)             |
 ///            +---------------------------------------------------------------------+
 /// A surface without specular colour draws exactly as before (two random numbers, cosine).
-SurfaceSample sampleSurface(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
-                            Rng& rng);
+[[nodiscard]] SurfaceSample sampleSurface(const world::Material& material, const glm::vec3& n,
+                                          const glm::vec3& v, Rng& rng);
 
 }  // namespace onelight::bake

@@ -31,12 +31,12 @@ struct LightmapStats {
 /// `baked` (already sized: texels and shadowMask to totalTexels). Each texel's random
 /// sequence is seeded from (atlas, x, y, pass), so the result does not depend on threads,
 /// order or sharding.
-LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& lights,
-                                 const world::CompiledLevel& level,
-                                 const std::vector<TexelSample>& samples,
-                                 const LightmapSettings& settings, uint64_t texelBegin,
-                                 uint64_t texelEnd, world::BakedLighting& baked,
-                                 Progress* progress);
+[[nodiscard]] LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& lights,
+                                               const world::CompiledLevel& level,
+                                               const std::vector<TexelSample>& samples,
+                                               const LightmapSettings& settings,
+                                               uint64_t texelBegin, uint64_t texelEnd,
+                                               world::BakedLighting& baked, Progress* progress);
 
 /// Fills each chart's unsampled texels from their sampled neighbours, ring by ring, inside
 /// the chart's rectangle only (charts never bleed into each other).
@@ -44,7 +44,9 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
 
 /// The total irradiance a static surface receives at a texel, as the runtime reconstructs it
 /// at the surface normal: own primary x shadow mask + secondary. For tests and the benchmark.
-glm::vec3 lightmapTotalIrradiance(const BakeLights& lights, const world::CompiledLevel& level,
-                                  const world::BakedLighting& baked, const TexelSample& sample);
+[[nodiscard]] glm::vec3 lightmapTotalIrradiance(const BakeLights& lights,
+                                                const world::CompiledLevel& level,
+                                                const world::BakedLighting& baked,
+                                                const TexelSample& sample);
 
 }  // namespace onelight::bake

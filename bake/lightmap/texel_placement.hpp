@@ -31,9 +31,9 @@ struct TexelSample {
 };
 
 /// Samples in increasing texel order, one per touched texel.
-std::vector<TexelSample> placeTexels(const world::CompiledLevel& level);
+[[nodiscard]] std::vector<TexelSample> placeTexels(const world::CompiledLevel& level);
 
 /// Total texel count over every atlas.
-uint64_t totalTexels(const world::CompiledLevel& level);
+[[nodiscard]] uint64_t totalTexels(const world::CompiledLevel& level);
 
 }  // namespace onelight::bake

@@ -24,13 +24,13 @@ struct Cubemap {
 };
 
 // A cube of `size` (a power of two) with every mip down to 1x1 allocated and black.
-Cubemap makeCubemap(int size);
+[[nodiscard]] Cubemap makeCubemap(int size);
 
 // The unit direction through the centre of texel (x, y) of `face` at mip size `size`.
-glm::vec3 texelDirection(int face, int x, int y, int size);
+[[nodiscard]] glm::vec3 texelDirection(int face, int x, int y, int size);
 
 // Solid angle of texel (x, y) of any face at mip size `size`, steradians (sums to 4 pi).
-float texelSolidAngle(int x, int y, int size);
+[[nodiscard]] float texelSolidAngle(int x, int y, int size);
 
 struct TexelRef {
     int face, x, y;
@@ -38,14 +38,14 @@ struct TexelRef {
 
 // Texel (x, y) of `face` where x or y may step one past the face (-1 or size): past an edge
 // it continues on the neighbouring face, found through the direction of its centre.
-TexelRef neighbourTexel(int face, int x, int y, int size);
+[[nodiscard]] TexelRef neighbourTexel(int face, int x, int y, int size);
 
 // Bilinear radiance in direction d, seamless across faces: taps past a face's edge are found on
 // the neighbouring face through their direction (no clamping, so no seams).
-glm::vec3 sampleBilinear(const CubeMip& mip, glm::vec3 d);
+[[nodiscard]] glm::vec3 sampleBilinear(const CubeMip& mip, glm::vec3 d);
 
 // Trilinear between mips at fractional `lod` (clamped to the chain).
-glm::vec3 sampleTrilinear(const Cubemap& cube, glm::vec3 d, float lod);
+[[nodiscard]] glm::vec3 sampleTrilinear(const Cubemap& cube, glm::vec3 d, float lod);
 
 // Fills mips 1.. of `cube` from mip 0 by averaging 2x2 texels weighted by solid angle.
 void downsampleMips(Cubemap& cube);

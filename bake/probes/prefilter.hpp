@@ -18,7 +18,8 @@ struct PrefilterOptions {
 
 // The samples per texel that prefilterGGX uses for a lobe of `alpha` over a source of face
 // size `sourceSize`.
-int prefilterSampleCount(float alpha, int sourceSize, const PrefilterOptions& options);
+[[nodiscard]] int prefilterSampleCount(float alpha, int sourceSize,
+                                       const PrefilterOptions& options);
 
 // Karis 2013 ("Real Shading in Unreal Engine 4", split-sum prefilter) with the n = v = r
 // assumption: for a texel of direction r and lobe alpha,
@@ -35,11 +36,12 @@ int prefilterSampleCount(float alpha, int sourceSize, const PrefilterOptions& op
 // evaluations (Lazarov 2011 used CubeMapGen's angular-extent filtering, which sums texels).
 // `radiance` needs mip 0 filled; its mips are rebuilt. The result has the same mip count;
 // mip 0 (gloss 1, alpha 0.0028) is a copy, its lobe being narrower than a texel.
-Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options = {});
+[[nodiscard]] Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options = {});
 
 // The reference for tests: the same integral by brute-force quadrature over the whole sphere,
 // of `radiance`'s mip 0 read bilinearly as the prefilter reads it, at `subdivisions`^2 points
 // per source texel (choose them finer than alpha). Slow.
-glm::vec3 prefilteredReference(const Cubemap& radiance, glm::vec3 r, float alpha, int subdivisions);
+[[nodiscard]] glm::vec3 prefilteredReference(const Cubemap& radiance, glm::vec3 r, float alpha,
+                                             int subdivisions);
 
 }  // namespace onelight::bake

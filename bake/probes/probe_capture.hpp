@@ -43,7 +43,7 @@ struct ProbeCaptureSettings {
 // n_x^2 + n_y^2 + n_z^2 = 1 gives mean(n_i^2) = 1/3, and the two signs of n_i share it equally),
 // so mean E = sum_i (1/6) C[i+] + (1/6) C[i-] = (1/3) sum_i (C[i+] + C[i-]) / 2: the mean of the
 // six faces. Linear in the cube, so it commutes with the grid's trilinear interpolation.
-glm::vec3 ambientCubeAverage(const std::array<glm::vec3, 6>& ambientCube);
+[[nodiscard]] glm::vec3 ambientCubeAverage(const std::array<glm::vec3, 6>& ambientCube);
 
 // The radiance cube (cd/m^2, mip 0 filled, smaller mips allocated and black) seen from
 // `position`: each mip-0 texel is the mean radiance over its solid angle, estimated with
@@ -60,29 +60,30 @@ glm::vec3 ambientCubeAverage(const std::array<glm::vec3, 6>& ambientCube);
                     +------------------------------------------------------+
    with (u, v) on a rotated Hammersley set (stratified within the texel).
 */
-Cubemap captureProbe(const BakeScene& scene, const BakeLights& lights, glm::vec3 position,
-                     uint32_t probeIndex, const ProbeCaptureSettings& settings, Progress* progress,
-                     RayCounts& rays);
+[[nodiscard]] Cubemap captureProbe(const BakeScene& scene, const BakeLights& lights,
+                                   glm::vec3 position, uint32_t probeIndex,
+                                   const ProbeCaptureSettings& settings, Progress* progress,
+                                   RayCounts& rays);
 
 // RGB9E5 texels of every mip of `cube`, mips from the largest, faces in order, rows from the
 // top (section 35's order), and back.
-std::vector<uint32_t> packProbeTexels(const Cubemap& cube);
-Cubemap unpackProbeTexels(const world::EnvironmentProbe& probe);
+[[nodiscard]] std::vector<uint32_t> packProbeTexels(const Cubemap& cube);
+[[nodiscard]] Cubemap unpackProbeTexels(const world::EnvironmentProbe& probe);
 
 // The stored probe: `radiance` (mip 0 as captureProbe leaves it) divided per channel by
 // `averageIrradiance` (probeNormalize, shaders/probe.glsl), prefiltered with prefilterGGX,
 // packed.
-world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& placement,
-                                    glm::vec3 averageIrradiance, const PrefilterOptions& options);
+[[nodiscard]] world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& placement,
+                                                  glm::vec3 averageIrradiance,
+                                                  const PrefilterOptions& options);
 
 // Probes [begin, end) of `placements`, in order: captured (probe i seeds with i, so a shard
 // of the range gives the same probes as the whole), normalised by averageIrradiance[i]
 // (ambientCubeAverage of the light grid as the runtime samples it at the capture point),
 // prefiltered, packed. One progress bar, "probes", over every probe's rows.
-std::vector<world::EnvironmentProbe> bakeProbes(const BakeScene& scene, const BakeLights& lights,
-                                                const std::vector<ProbePlacement>& placements,
-                                                const std::vector<glm::vec3>& averageIrradiance,
-                                                const ProbeCaptureSettings& settings, size_t begin,
-                                                size_t end, bool showProgress, RayCounts& rays);
+[[nodiscard]] std::vector<world::EnvironmentProbe> bakeProbes(
+    const BakeScene& scene, const BakeLights& lights, const std::vector<ProbePlacement>& placements,
+    const std::vector<glm::vec3>& averageIrradiance, const ProbeCaptureSettings& settings,
+    size_t begin, size_t end, bool showProgress, RayCounts& rays);
 
 }  // namespace onelight::bake

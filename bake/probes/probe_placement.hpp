@@ -80,8 +80,9 @@ struct ProbePlacementStats {
 //   specular materials always has a probe; stats->fallback says so.
 //
 // The same level and scene give the same probes in the same order on any thread count.
-std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const BakeScene& scene,
-                                        const ProbePlacementSettings& settings,
-                                        ProbePlacementStats* stats = nullptr);
+[[nodiscard]] std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level,
+                                                      const BakeScene& scene,
+                                                      const ProbePlacementSettings& settings,
+                                                      ProbePlacementStats* stats = nullptr);
 
 }  // namespace onelight::bake

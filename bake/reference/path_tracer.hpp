@@ -30,10 +30,11 @@ struct ReferenceImage {
                       | L(pixel) ~ (1 / N) sum_i traceRadiance(w_i) |
                       +---------------------------------------------+
 */
-ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
-                               const world::Camera& camera, uint32_t width, uint32_t height,
-                               uint32_t spp, const TransportSettings& transport, Progress* progress,
-                               RayCounts& rays);
+[[nodiscard]] ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
+                                             const world::Camera& camera, uint32_t width,
+                                             uint32_t height, uint32_t spp,
+                                             const TransportSettings& transport, Progress* progress,
+                                             RayCounts& rays);
 
 /// Irradiance (lux, RGB) at a surface point with every light at full strength: the reference
 /// the lightmaps are checked against. An estimator independent of the lightmap's: uniform
@@ -44,9 +45,10 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
               | E ~ sum_l E_l (n.w_l)+ V_l + (2 pi / N) sum_i L(w_i) (n.w_i)       |
               +------------------------------------------------------------------+
 */
-glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
-                              const glm::vec3& position, const glm::vec3& normal, uint32_t samples,
-                              uint32_t seed, const TransportSettings& transport, RayCounts& rays);
+[[nodiscard]] glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
+                                            const glm::vec3& position, const glm::vec3& normal,
+                                            uint32_t samples, uint32_t seed,
+                                            const TransportSettings& transport, RayCounts& rays);
 
 /// Writes linear RGB float32 EXR through `path.tmp` and a rename. Throws world::Error.
 void writeExr(const std::string& path, const ReferenceImage& image);

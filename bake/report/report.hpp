@@ -39,12 +39,12 @@ struct BakeReport {
 };
 
 /// Peak resident memory of this process so far (getrusage), bytes.
-uint64_t peakMemoryBytes();
+[[nodiscard]] uint64_t peakMemoryBytes();
 
-std::string reportJson(const BakeReport& report);
+[[nodiscard]] std::string reportJson(const BakeReport& report);
 /// Writes the JSON to `path` (atomically). Throws world::Error.
 void writeReport(const std::string& path, const BakeReport& report);
 /// A few lines for stdout at the end of a run.
-std::string reportSummary(const BakeReport& report);
+[[nodiscard]] std::string reportSummary(const BakeReport& report);
 
 }  // namespace onelight::bake

@@ -6,6 +6,6 @@
 namespace onelight::game {
 
 // Writes demo.gltf and demo.bin into `folder` (created if needed); returns the .gltf path.
-std::string writeDemoLevel(const std::string& folder);
+[[nodiscard]] std::string writeDemoLevel(const std::string& folder);
 
 }  // namespace onelight::game

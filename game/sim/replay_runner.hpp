@@ -31,8 +31,9 @@ struct ReplayRunner {
 
 // Checks that every entity and light the script names exists (entities by their Name
 // component); throws ReplayFailure naming the first that does not.
-ReplayRunner makeReplayRunner(replay::Script script, std::vector<std::string> lightNames,
-                              const ecs::Registry& registry);
+[[nodiscard]] ReplayRunner makeReplayRunner(replay::Script script,
+                                            std::vector<std::string> lightNames,
+                                            const ecs::Registry& registry);
 
 // Applies the commands due at `tick` that act before the systems.
 void applyReplayInput(ReplayRunner& runner, uint64_t tick, InputState& input,
@@ -45,10 +46,10 @@ struct ReplayAfterTick {
 
 // Checks the expectations due at `tick` (throws ReplayFailure with the line and both values)
 // and returns the captures and whether to quit.
-ReplayAfterTick finishReplayTick(ReplayRunner& runner, uint64_t tick,
-                                 const ecs::Registry& registry);
+[[nodiscard]] ReplayAfterTick finishReplayTick(ReplayRunner& runner, uint64_t tick,
+                                               const ecs::Registry& registry);
 
 // Whether every command has run.
-bool replayFinished(const ReplayRunner& runner);
+[[nodiscard]] bool replayFinished(const ReplayRunner& runner);
 
 }  // namespace onelight::game

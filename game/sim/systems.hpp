@@ -16,13 +16,13 @@
 namespace onelight::game {
 
 // Unit view direction for yaw/pitch in radians (yaw 0 looks down -z, positive turns left).
-glm::vec3 viewDirection(float yaw, float pitch);
+[[nodiscard]] glm::vec3 viewDirection(float yaw, float pitch);
 
 // Moves a sphere of `radius` from `center` by `delta`, sliding along what it touches (at most
 // four contacts a move). Returns the new centre; `floor` tells whether it stood on a surface
 // whose normal.y exceeds `floorCos`. Without a BSP (an empty level) it moves freely.
-glm::vec3 moveAndSlide(const world::BspView* bsp, glm::vec3 center, glm::vec3 delta, float radius,
-                       float skin, float floorCos, bool& floor);
+[[nodiscard]] glm::vec3 moveAndSlide(const world::BspView* bsp, glm::vec3 center, glm::vec3 delta,
+                                     float radius, float skin, float floorCos, bool& floor);
 
 // WASD relative to the view, mouse look, gravity, jumping, collision against the BSP.
 void playerSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputState& input,

@@ -13,13 +13,13 @@ inline constexpr uint32_t kIndexMask = (1u << kIndexBits) - 1u;
 inline constexpr uint32_t kGenerationMask = (1u << (32 - kIndexBits)) - 1u;  // wraps at 1024
 inline constexpr Entity kNullEntity = Entity{0xFFFFFFFFu};
 
-constexpr uint32_t indexOf(Entity e) {
+[[nodiscard]] constexpr uint32_t indexOf(Entity e) {
     return uint32_t(e) & kIndexMask;
 }
-constexpr uint32_t generationOf(Entity e) {
+[[nodiscard]] constexpr uint32_t generationOf(Entity e) {
     return uint32_t(e) >> kIndexBits;
 }
-constexpr Entity makeEntity(uint32_t index, uint32_t generation) {
+[[nodiscard]] constexpr Entity makeEntity(uint32_t index, uint32_t generation) {
     return Entity{(generation & kGenerationMask) << kIndexBits | (index & kIndexMask)};
 }
 

@@ -23,26 +23,26 @@ struct Camera {
 
 /// A camera at `position` turned by yaw (degrees about +Y; 0 looks down -Z, 90 down -X) and
 /// pitch (degrees, up positive).
-Camera cameraFromYawPitch(glm::vec3 position, float yawDegrees, float pitchDegrees);
+[[nodiscard]] Camera cameraFromYawPitch(glm::vec3 position, float yawDegrees, float pitchDegrees);
 
 /// The level's camera, as the package stores it (orthographic cameras become perspective).
-Camera cameraFromLevel(const world::Camera& camera);
+[[nodiscard]] Camera cameraFromLevel(const world::Camera& camera);
 
 /// Unit vector the camera looks along.
-glm::vec3 forwardOf(const Camera& camera);
+[[nodiscard]] glm::vec3 forwardOf(const Camera& camera);
 
-glm::mat4 viewMatrix(const Camera& camera);
+[[nodiscard]] glm::mat4 viewMatrix(const Camera& camera);
 
 /// Perspective projection with Y flipped for Vulkan and depth in [0, 1].
-glm::mat4 projectionMatrix(const Camera& camera, float aspect, float zfar);
+[[nodiscard]] glm::mat4 projectionMatrix(const Camera& camera, float aspect, float zfar);
 
 /// Six inward planes (xyz normal, w offset) of a clip-from-world matrix.
 struct Frustum {
     glm::vec4 planes[6];
 };
-Frustum frustumOf(const glm::mat4& clipFromWorld);
+[[nodiscard]] Frustum frustumOf(const glm::mat4& clipFromWorld);
 
 /// False when the box lies entirely outside one plane.
-bool intersects(const Frustum& frustum, glm::vec3 boxMin, glm::vec3 boxMax);
+[[nodiscard]] bool intersects(const Frustum& frustum, glm::vec3 boxMin, glm::vec3 boxMax);
 
 }  // namespace onelight::render

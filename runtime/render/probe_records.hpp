@@ -28,10 +28,10 @@ struct ProbeRecords {
 };
 
 /// Records of `probes` in blending order (influence volume ascending, index on ties).
-ProbeRecords makeProbeRecords(const std::vector<world::EnvironmentProbe>& probes,
-                              glm::vec3 levelMin, glm::vec3 levelMax);
+[[nodiscard]] ProbeRecords makeProbeRecords(const std::vector<world::EnvironmentProbe>& probes,
+                                            glm::vec3 levelMin, glm::vec3 levelMax);
 
 /// One record that influences everything, for the neutral placeholder cube.
-GpuProbe placeholderProbeRecord();
+[[nodiscard]] GpuProbe placeholderProbeRecord();
 
 }  // namespace onelight::render

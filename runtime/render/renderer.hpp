@@ -154,8 +154,8 @@ struct RenderDeviceFeatures {
 
 /// Context options for the renderer: Vulkan 1.3 with dynamic rendering, plus the instance
 /// extensions a window needs (pass glfwGetRequiredInstanceExtensions) and the swapchain.
-vk::ContextOptions renderContextOptions(RenderDeviceFeatures& features,
-                                        const std::vector<const char*>& windowExtensions);
+[[nodiscard]] vk::ContextOptions renderContextOptions(
+    RenderDeviceFeatures& features, const std::vector<const char*>& windowExtensions);
 
 /// Uploads the level and builds the pipelines it needs. Throws std::runtime_error.
 void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLevel& level,
@@ -164,7 +164,7 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
 /// Waits for the device and destroys everything, in reverse order. Safe on an empty Renderer.
 void destroyRenderer(Renderer& renderer);
 
-const RendererInfo& rendererInfo(const Renderer& renderer);
+[[nodiscard]] const RendererInfo& rendererInfo(const Renderer& renderer);
 
 /// Records and submits one frame (shadow passes, forward pass, tonemap, outputs). It first waits
 /// for the frame kFramesInFlight before (whose resources it reuses), and afterwards for this
@@ -175,11 +175,11 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
 void waitForFrames(Renderer& renderer);
 
 /// The frame of the last drawFrame with output.readback.
-const CapturedFrame& capturedFrame(const Renderer& renderer);
+[[nodiscard]] const CapturedFrame& capturedFrame(const Renderer& renderer);
 
 /// The primary light (into level.lights) the last frame drew dynamic entity `entity` with;
 /// kNoIndex when it drew the entity with none, or did not draw it (culled, or not dynamic).
-uint32_t drawnPrimary(const Renderer& renderer, uint32_t entity);
+[[nodiscard]] uint32_t drawnPrimary(const Renderer& renderer, uint32_t entity);
 
 /// Changes the size of the offscreen targets (a resized window).
 void resizeRenderer(Renderer& renderer, uint32_t width, uint32_t height);

@@ -148,7 +148,8 @@ struct RendererState {
 };
 
 /// Pipeline key of a forward permutation: material class, double-sided, alpha mask.
-inline uint32_t permutationKey(uint32_t materialClass, bool doubleSided, bool alphaMask) {
+[[nodiscard]] inline uint32_t permutationKey(uint32_t materialClass, bool doubleSided,
+                                             bool alphaMask) {
     return materialClass | (doubleSided ? 4u : 0u) | (alphaMask ? 8u : 0u);
 }
 
@@ -160,7 +161,7 @@ void destroyScene(RendererState& s);
 
 // targets.cpp
 /// The supported sample count nearest to `requested` (in powers of two; ties go up).
-VkSampleCountFlagBits pickSamples(const vk::Context& ctx, uint32_t requested);
+[[nodiscard]] VkSampleCountFlagBits pickSamples(const vk::Context& ctx, uint32_t requested);
 void createTargets(RendererState& s);
 void destroyTargets(RendererState& s);
 
@@ -181,16 +182,16 @@ void updateShadowViews(RendererState& s, const Camera& camera,
 /// Copies the shadow views fitted for this frame into `out` (GpuShadowView per view).
 void writeShadowViews(const RendererState& s, GpuShadowView* out);
 /// Records the shadow passes; returns how many static views were redrawn.
-uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
-                            const std::vector<uint32_t>& visibleLights,
-                            const std::vector<glm::mat4>& entityTransforms);
+[[nodiscard]] uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
+                                          const std::vector<uint32_t>& visibleLights,
+                                          const std::vector<glm::mat4>& entityTransforms);
 
 // frame_view.cpp: what a frame sees and draws, on the CPU.
 /// Light records (gpu_interface.glsl GpuLight): a level light with its first shadow view, and
 /// the effect lights (no shadow).
-GpuLight gpuLightOf(const world::Light& light, uint32_t firstShadowView);
-GpuLight gpuLightOf(const EffectOmni& omni);
-GpuLight gpuLightOf(const EffectSpot& spot);
+[[nodiscard]] GpuLight gpuLightOf(const world::Light& light, uint32_t firstShadowView);
+[[nodiscard]] GpuLight gpuLightOf(const EffectOmni& omni);
+[[nodiscard]] GpuLight gpuLightOf(const EffectSpot& spot);
 
 /// One draw of the forward pass.
 struct Draw {
@@ -211,7 +212,7 @@ struct FrameView {
     std::vector<glm::mat4> entityTransforms;  // per entity: given, else its placement
     std::vector<uint32_t> entityPrimary;      // per entity: the game's pick, or kNoIndex
 };
-FrameView frameViewOf(const RendererState& s, const FrameInputs& inputs);
+[[nodiscard]] FrameView frameViewOf(const RendererState& s, const FrameInputs& inputs);
 
 /// The frame's draws, sorted by pipeline then front to back, and the primaries they use.
 struct DrawList {
@@ -220,15 +221,16 @@ struct DrawList {
     std::vector<uint8_t> entityVisible;   // per entity
 };
 /// Culls static surfaces and dynamic meshes against the view; counts them in `stats`.
-DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats& stats);
+[[nodiscard]] DrawList buildDrawList(const RendererState& s, const FrameView& view,
+                                     FrameStats& stats);
 
 /// The grid's lighting of every visible dynamic object, into `out` (one record per entity).
 void writeObjectLighting(const RendererState& s, const FrameView& view, const DrawList& list,
                          GpuObjectLighting* out);
 
 /// The frame's uniforms: camera, exposure, shadow and baked parameters, effect lights.
-FrameUniforms frameUniformsOf(const RendererState& s, const FrameView& view,
-                              const EffectLights& effects);
+[[nodiscard]] FrameUniforms frameUniformsOf(const RendererState& s, const FrameView& view,
+                                            const EffectLights& effects);
 
 // frame_passes.cpp: recording the frame after the shadow passes.
 /// The forward pass into the HDR target (resolved from MSAA); counts triangles in `stats`.

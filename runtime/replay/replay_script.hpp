@@ -65,9 +65,9 @@ struct ScriptError : std::runtime_error {
 };
 
 // Parses a script; throws ScriptError at the first problem.
-Script parseScript(std::string_view text, const std::string& path);
+[[nodiscard]] Script parseScript(std::string_view text, const std::string& path);
 
 // Reads and parses the file at path; a missing file is a ScriptError too.
-Script loadScript(const std::string& path);
+[[nodiscard]] Script loadScript(const std::string& path);
 
 }  // namespace onelight::replay

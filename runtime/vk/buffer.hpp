@@ -26,7 +26,8 @@ struct Buffer {
 };
 
 // The index of a memory type allowed by typeBits that has all of `flags`, or -1.
-int findMemoryType(const Context& ctx, uint32_t typeBits, VkMemoryPropertyFlags flags);
+[[nodiscard]] int findMemoryType(const Context& ctx, uint32_t typeBits,
+                                 VkMemoryPropertyFlags flags);
 
 // A host-visible, host-coherent buffer of `size` bytes, mapped for its whole life (host-cached
 // memory is preferred, for fast readback). Host writes before a submit need no flush; host reads
@@ -42,7 +43,7 @@ void createDeviceBuffer(const Context& ctx, Buffer& buffer, std::span<const uint
 
 // The bytes of a contiguous array of plain records, for createDeviceBuffer.
 template <class T>
-std::span<const uint8_t> bytesOf(std::span<const T> records) {
+[[nodiscard]] std::span<const uint8_t> bytesOf(std::span<const T> records) {
     return {reinterpret_cast<const uint8_t*>(records.data()), records.size_bytes()};
 }
 

@@ -13,13 +13,13 @@
 namespace onelight::vk {
 
 // A primary command buffer from ctx.commandPool (freed with the pool, or by vkFreeCommandBuffers).
-VkCommandBuffer allocateCommandBuffer(const Context& ctx);
+[[nodiscard]] VkCommandBuffer allocateCommandBuffer(const Context& ctx);
 
 // A fence, signalled from the start when `signalled`. The caller destroys it with vkDestroyFence.
-VkFence createFence(const Context& ctx, bool signalled = false);
+[[nodiscard]] VkFence createFence(const Context& ctx, bool signalled = false);
 
 // A binary semaphore. The caller destroys it with vkDestroySemaphore.
-VkSemaphore createSemaphore(const Context& ctx);
+[[nodiscard]] VkSemaphore createSemaphore(const Context& ctx);
 
 // Resets `cmd` and begins recording it for one submit.
 void beginOneTimeCommands(VkCommandBuffer cmd);

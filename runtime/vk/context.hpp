@@ -18,7 +18,7 @@ struct ValidationCounts {
 };
 
 // True when the environment variable ONELIGHT_VALIDATION is "1".
-bool validationRequested();
+[[nodiscard]] bool validationRequested();
 
 // How to create a Context. Extension lists are for later users (a window adds the surface and
 // swapchain extensions); headless compute needs none.

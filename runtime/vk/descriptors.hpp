@@ -32,12 +32,12 @@ void destroyDescriptorSet(const Context& ctx, DescriptorSet& set);
 
 // A descriptor pool for `maxSets` sets holding at most `sizes` descriptors. The caller destroys
 // it with vkDestroyDescriptorPool, which frees its sets.
-VkDescriptorPool createDescriptorPool(const Context& ctx, uint32_t maxSets,
-                                      std::span<const VkDescriptorPoolSize> sizes);
+[[nodiscard]] VkDescriptorPool createDescriptorPool(const Context& ctx, uint32_t maxSets,
+                                                    std::span<const VkDescriptorPoolSize> sizes);
 
 // One set of `layout` from `pool` (borrowed by the caller from the pool).
-VkDescriptorSet allocateDescriptorSet(const Context& ctx, VkDescriptorPool pool,
-                                      VkDescriptorSetLayout layout);
+[[nodiscard]] VkDescriptorSet allocateDescriptorSet(const Context& ctx, VkDescriptorPool pool,
+                                                    VkDescriptorSetLayout layout);
 
 // Collects descriptor writes to one set and applies them with update(). Buffer and image infos
 // are stored inside, so the writer must live until update().

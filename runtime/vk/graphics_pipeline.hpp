@@ -22,8 +22,9 @@ struct PipelineLayout {
 };
 
 // Create-info helper: binding `binding` holds `count` descriptors of `type` seen by `stages`.
-VkDescriptorSetLayoutBinding layoutBinding(uint32_t binding, VkDescriptorType type,
-                                           VkShaderStageFlags stages, uint32_t count = 1);
+[[nodiscard]] VkDescriptorSetLayoutBinding layoutBinding(uint32_t binding, VkDescriptorType type,
+                                                         VkShaderStageFlags stages,
+                                                         uint32_t count = 1);
 
 // One descriptor-set layout per entry of `sets`, and push constants of `pushBytes` bytes
 // (0 for none) seen by `pushStages`.
@@ -56,7 +57,7 @@ struct GraphicsPipelineDesc {
 };
 
 // Creates a pipeline for vkCmdBeginRendering with dynamic viewport and scissor.
-VkPipeline createGraphicsPipeline(const Context& ctx, const PipelineLayout& layout,
-                                  const GraphicsPipelineDesc& desc);
+[[nodiscard]] VkPipeline createGraphicsPipeline(const Context& ctx, const PipelineLayout& layout,
+                                                const GraphicsPipelineDesc& desc);
 
 }  // namespace onelight::vk

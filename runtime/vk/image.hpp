@@ -36,7 +36,7 @@ struct Image {
 };
 
 // The aspect of a format: DEPTH for depth formats, COLOR otherwise.
-VkImageAspectFlags aspectOf(VkFormat format);
+[[nodiscard]] VkImageAspectFlags aspectOf(VkFormat format);
 
 // Creates the image, its memory (device-local preferred) and its view. Throws on failure, leaving
 // `image` destroyed.
@@ -44,8 +44,8 @@ void createImage(const Context& ctx, Image& image, const ImageDesc& desc);
 
 // A view of one layer range of an image (e.g. one shadow-map layer as a depth attachment). The
 // caller destroys it with vkDestroyImageView before the image.
-VkImageView createLayerView(const Context& ctx, const Image& image, uint32_t firstLayer,
-                            uint32_t layerCount);
+[[nodiscard]] VkImageView createLayerView(const Context& ctx, const Image& image,
+                                          uint32_t firstLayer, uint32_t layerCount);
 
 // Destroys view, image and memory. Safe on an empty Image.
 void destroyImage(const Context& ctx, Image& image);
@@ -64,9 +64,11 @@ struct ImageBarrier {
 };
 
 // A layout transition over every mip and layer.
-inline ImageBarrier layoutBarrier(VkImageLayout from, VkImageLayout to,
-                                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
-                                  VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+[[nodiscard]] inline ImageBarrier layoutBarrier(VkImageLayout from, VkImageLayout to,
+                                                VkPipelineStageFlags srcStage,
+                                                VkAccessFlags srcAccess,
+                                                VkPipelineStageFlags dstStage,
+                                                VkAccessFlags dstAccess) {
     ImageBarrier b;
     b.oldLayout = from;
     b.newLayout = to;
@@ -78,10 +80,11 @@ inline ImageBarrier layoutBarrier(VkImageLayout from, VkImageLayout to,
 }
 
 // The same over layers [first, first + count) only.
-inline ImageBarrier layersBarrier(uint32_t first, uint32_t count, VkImageLayout from,
-                                  VkImageLayout to, VkPipelineStageFlags srcStage,
-                                  VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                                  VkAccessFlags dstAccess) {
+[[nodiscard]] inline ImageBarrier layersBarrier(uint32_t first, uint32_t count, VkImageLayout from,
+                                                VkImageLayout to, VkPipelineStageFlags srcStage,
+                                                VkAccessFlags srcAccess,
+                                                VkPipelineStageFlags dstStage,
+                                                VkAccessFlags dstAccess) {
     ImageBarrier b = layoutBarrier(from, to, srcStage, srcAccess, dstStage, dstAccess);
     b.baseLayer = first;
     b.layerCount = count;
@@ -114,6 +117,6 @@ struct SamplerDesc {
     bool compare = false;  // a depth-compare (shadow) sampler, LESS_OR_EQUAL
     float maxLod = VK_LOD_CLAMP_NONE;
 };
-VkSampler createSampler(const Context& ctx, const SamplerDesc& desc);
+[[nodiscard]] VkSampler createSampler(const Context& ctx, const SamplerDesc& desc);
 
 }  // namespace onelight::vk

@@ -23,10 +23,12 @@ struct ComputePipeline {
 
 // A shader module from SPIR-V words (e.g. a header made by onelight_add_shaders). The caller
 // owns it and destroys it with vkDestroyShaderModule once its pipelines exist.
-VkShaderModule createShaderModule(const Context& ctx, std::span<const uint32_t> spirv);
+[[nodiscard]] VkShaderModule createShaderModule(const Context& ctx,
+                                                std::span<const uint32_t> spirv);
 
 // Create-info helper: binding `binding` of a set is one storage buffer seen by `stages`.
-VkDescriptorSetLayoutBinding storageBufferBinding(uint32_t binding, VkShaderStageFlags stages);
+[[nodiscard]] VkDescriptorSetLayoutBinding storageBufferBinding(uint32_t binding,
+                                                                VkShaderStageFlags stages);
 
 // A compute pipeline running entry point "main" of `spirv`, set 0 laid out by `bindings`, and
 // `pushConstantBytes` (0 for none) of push constants at offset 0.

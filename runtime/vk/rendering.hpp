@@ -7,17 +7,20 @@
 namespace onelight::vk {
 
 // A colour attachment in COLOR_ATTACHMENT_OPTIMAL, cleared to `clear` when load is CLEAR.
-VkRenderingAttachmentInfo colorAttachment(VkImageView view, VkAttachmentLoadOp load,
-                                          VkAttachmentStoreOp store, VkClearColorValue clear = {});
+[[nodiscard]] VkRenderingAttachmentInfo colorAttachment(VkImageView view, VkAttachmentLoadOp load,
+                                                        VkAttachmentStoreOp store,
+                                                        VkClearColorValue clear = {});
 
 // The same, multisampled, averaged into `resolve` (COLOR_ATTACHMENT_OPTIMAL) at the end.
-VkRenderingAttachmentInfo resolvedColorAttachment(VkImageView multisampled, VkImageView resolve,
-                                                  VkAttachmentLoadOp load,
-                                                  VkClearColorValue clear = {});
+[[nodiscard]] VkRenderingAttachmentInfo resolvedColorAttachment(VkImageView multisampled,
+                                                                VkImageView resolve,
+                                                                VkAttachmentLoadOp load,
+                                                                VkClearColorValue clear = {});
 
 // A depth attachment in DEPTH_ATTACHMENT_OPTIMAL, cleared to `clearDepth` when load is CLEAR.
-VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load,
-                                          VkAttachmentStoreOp store, float clearDepth = 1.0f);
+[[nodiscard]] VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load,
+                                                        VkAttachmentStoreOp store,
+                                                        float clearDepth = 1.0f);
 
 // Begins rendering one layer of `extent` into `color` and/or `depth` (either may be null), with
 // the viewport (depth 0..1) and the scissor set to the whole extent.

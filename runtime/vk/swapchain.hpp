@@ -42,10 +42,10 @@ void destroySwapchain(const Context& ctx, Swapchain& swapchain);
 
 // The index of the next image, signalling swapchain.imageAcquired[index]; -1 when the swapchain is
 // out of date and must be recreated.
-int acquireNextImage(const Context& ctx, Swapchain& swapchain);
+[[nodiscard]] int acquireNextImage(const Context& ctx, Swapchain& swapchain);
 
 // Presents image `index` after swapchain.frameCopied[index]. False when out of date or
 // suboptimal.
-bool presentImage(const Context& ctx, Swapchain& swapchain, uint32_t index);
+[[nodiscard]] bool presentImage(const Context& ctx, Swapchain& swapchain, uint32_t index);
 
 }  // namespace onelight::vk

@@ -11,12 +11,13 @@
 namespace onelight::vk {
 
 // Whether ctx's queue writes timestamps (valid bits and a positive period).
-bool timestampsSupported(const Context& ctx);
+[[nodiscard]] bool timestampsSupported(const Context& ctx);
 
 // A pool of `count` timestamp queries. The caller destroys it with vkDestroyQueryPool.
-VkQueryPool createTimestampPool(const Context& ctx, uint32_t count);
+[[nodiscard]] VkQueryPool createTimestampPool(const Context& ctx, uint32_t count);
 
 // The `count` timestamps of `pool` (written and finished), as milliseconds since the first.
-std::vector<double> readTimestampsMs(const Context& ctx, VkQueryPool pool, uint32_t count);
+[[nodiscard]] std::vector<double> readTimestampsMs(const Context& ctx, VkQueryPool pool,
+                                                   uint32_t count);
 
 }  // namespace onelight::vk

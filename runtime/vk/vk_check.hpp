@@ -6,7 +6,7 @@
 namespace onelight::vk {
 
 // The name of a VkResult ("VK_ERROR_DEVICE_LOST"), or nullptr for a code not listed here.
-const char* resultName(VkResult result);
+[[nodiscard]] const char* resultName(VkResult result);
 
 // Throws std::runtime_error "CALL failed with RESULT at FILE:LINE" unless result is VK_SUCCESS.
 // Positive success codes (VK_TIMEOUT, VK_INCOMPLETE, VK_SUBOPTIMAL_KHR) throw too: a caller

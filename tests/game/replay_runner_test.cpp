@@ -118,7 +118,7 @@ TEST(ReplayRunner, UnknownNamesFailBeforeAnythingRuns) {
     EXPECT_THROW(
         {
             try {
-                makeReplayRunner(
+                (void)makeReplayRunner(
                     replay::parseScript("at 1 expect primary crate_9 == sun\n", "t.replay"),
                     g.lights, g.registry);
             } catch (const ReplayFailure& e) {

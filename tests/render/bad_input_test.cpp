@@ -50,6 +50,8 @@ TEST(RenderBadInput, MissingGltf) {
 TEST(RenderBadInput, TruncatedGltf) {
     const std::string source =
         std::string(ONELIGHT_SHARED_ASSETS) + "/TextureSettingsTest/glTF/TextureSettingsTest.gltf";
+    if (!std::filesystem::exists(source))
+        GTEST_SKIP() << "the shared assets are absent: " << source;
     std::ifstream in(source, std::ios::binary);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     ASSERT_GT(text.size(), 1000u);

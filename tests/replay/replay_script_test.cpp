@@ -9,7 +9,7 @@ namespace {
 // The message of the ScriptError that parsing `text` throws ("" when it parses).
 std::string errorOf(const std::string& text) {
     try {
-        parseScript(text, "s.replay");
+        (void)parseScript(text, "s.replay");
     } catch (const ScriptError& e) {
         return e.what();
     }
@@ -93,7 +93,7 @@ TEST(ReplayScript, BadInputNamesFileLineAndExpectation) {
 
 TEST(ReplayScript, MissingFileIsAClearError) {
     try {
-        loadScript("/nonexistent/x.replay");
+        (void)loadScript("/nonexistent/x.replay");
         FAIL() << "no error";
     } catch (const ScriptError& e) {
         EXPECT_STREQ(e.what(), "/nonexistent/x.replay:0: cannot open the replay script");

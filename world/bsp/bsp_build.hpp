@@ -32,6 +32,6 @@ struct BspBuild {
 };
 
 /// Builds the tree and reorders geometry.triangles leaf by leaf.
-BspBuild buildBsp(StaticGeometry& geometry, const BspOptions& options);
+[[nodiscard]] BspBuild buildBsp(StaticGeometry& geometry, const BspOptions& options);
 
 }  // namespace onelight::world

@@ -25,17 +25,17 @@ struct BspView {
     double epsilon = 1e-5;              // metres; plane-side slack of the traversal
 };
 
-BspView bspView(const CompiledLevel& level);
+[[nodiscard]] BspView bspView(const CompiledLevel& level);
 
 /// The build's plane-side tolerance for a level whose coordinates reach `maxAbsCoordinate`
 /// metres: a few float ulps there (authored data is float), never below 1e-5 m.
-double bspBuildEpsilon(double maxAbsCoordinate);
+[[nodiscard]] double bspBuildEpsilon(double maxAbsCoordinate);
 
 /// The queries' slack: the build's tolerance plus the rounding of vertices to float.
-double bspQueryEpsilon(double maxAbsCoordinate);
+[[nodiscard]] double bspQueryEpsilon(double maxAbsCoordinate);
 
 /// The leaf whose region holds `point` (points on a plane go to the front).
-uint32_t findLeaf(const BspView& bsp, const glm::dvec3& point);
+[[nodiscard]] uint32_t findLeaf(const BspView& bsp, const glm::dvec3& point);
 
 /// A frustum as six planes (xyz normal pointing inside, w offset): inside when dot >= -w.
 struct Frustum {
@@ -55,10 +55,10 @@ struct RayHit {
 };
 
 /// First triangle (either side) hit by origin + t * direction, 0 <= t <= tMax.
-RayHit raycast(const BspView& bsp, const glm::dvec3& origin, const glm::dvec3& direction,
-               double tMax);
-RayHit raycastBruteForce(const BspView& bsp, const glm::dvec3& origin, const glm::dvec3& direction,
-                         double tMax);
+[[nodiscard]] RayHit raycast(const BspView& bsp, const glm::dvec3& origin,
+                             const glm::dvec3& direction, double tMax);
+[[nodiscard]] RayHit raycastBruteForce(const BspView& bsp, const glm::dvec3& origin,
+                                       const glm::dvec3& direction, double tMax);
 
 struct SweepHit {
     bool hit = false;
@@ -68,9 +68,9 @@ struct SweepHit {
 };
 
 /// First contact of a sphere of `radius` whose centre moves from start to end.
-SweepHit sweepSphere(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& end,
-                     double radius);
-SweepHit sweepSphereBruteForce(const BspView& bsp, const glm::dvec3& start, const glm::dvec3& end,
-                               double radius);
+[[nodiscard]] SweepHit sweepSphere(const BspView& bsp, const glm::dvec3& start,
+                                   const glm::dvec3& end, double radius);
+[[nodiscard]] SweepHit sweepSphereBruteForce(const BspView& bsp, const glm::dvec3& start,
+                                             const glm::dvec3& end, double radius);
 
 }  // namespace onelight::world

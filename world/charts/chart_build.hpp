@@ -30,6 +30,7 @@ struct ChartShape {
 };
 
 /// Groups the triangles into chart shapes and sets StaticTriangle::chart to the shape index.
-std::vector<ChartShape> buildChartShapes(StaticGeometry& geometry, const ChartOptions& options);
+[[nodiscard]] std::vector<ChartShape> buildChartShapes(StaticGeometry& geometry,
+                                                       const ChartOptions& options);
 
 }  // namespace onelight::world

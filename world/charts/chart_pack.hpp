@@ -18,10 +18,12 @@ struct ChartLayout {
 
 /// Places the shapes, then rewrites geometry so each vertex belongs to one chart and carries
 /// uv1 normalised over its atlas.
-ChartLayout packCharts(StaticGeometry& geometry, const std::vector<ChartShape>& shapes,
-                       const ChartOptions& options);
+[[nodiscard]] ChartLayout packCharts(StaticGeometry& geometry,
+                                     const std::vector<ChartShape>& shapes,
+                                     const ChartOptions& options);
 
 /// buildChartShapes followed by packCharts.
-ChartLayout buildLightmapCharts(StaticGeometry& geometry, const ChartOptions& options);
+[[nodiscard]] ChartLayout buildLightmapCharts(StaticGeometry& geometry,
+                                              const ChartOptions& options);
 
 }  // namespace onelight::world

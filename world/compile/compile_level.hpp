@@ -49,7 +49,7 @@ struct CompileResult {
 
 /// Compiles `source`. `illuminance` gives each primary candidate's illuminance (the baker's
 /// includes visibility); null uses makeUnshadowedPrimaryIlluminance. Throws Error.
-CompileResult compileLevel(const SourceLevel& source, const CompileOptions& options,
-                           const PrimaryIlluminanceFn* illuminance = nullptr);
+[[nodiscard]] CompileResult compileLevel(const SourceLevel& source, const CompileOptions& options,
+                                         const PrimaryIlluminanceFn* illuminance = nullptr);
 
 }  // namespace onelight::world

@@ -22,6 +22,6 @@ struct SplitLevel {
 };
 
 /// Throws Error when a world transform turns a position into NaN or Inf.
-SplitLevel splitStaticDynamic(const SourceLevel& level);
+[[nodiscard]] SplitLevel splitStaticDynamic(const SourceLevel& level);
 
 }  // namespace onelight::world

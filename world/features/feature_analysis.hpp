@@ -9,8 +9,8 @@ namespace onelight::world {
 /// Reads everything but `level.features` and returns what to put there. The grid covers the
 /// authored bounds when given (`authored_grid`), else the static bounds grown by `gridMargin`
 /// metres on each side.
-Features analyseFeatures(const CompiledLevel& level, bool hasAuthoredGrid,
-                         const glm::vec3& authoredGridMin, const glm::vec3& authoredGridMax,
-                         float gridMargin = 1.0f);
+[[nodiscard]] Features analyseFeatures(const CompiledLevel& level, bool hasAuthoredGrid,
+                                       const glm::vec3& authoredGridMin,
+                                       const glm::vec3& authoredGridMax, float gridMargin = 1.0f);
 
 }  // namespace onelight::world

@@ -49,12 +49,12 @@ private:
 
 /// A flat square grid in the plane y = height: cells x cells quads, `size` metres wide,
 /// centred on (centreX, centreZ), facing +y.
-MeshData gridMesh(const std::string& name, int cells, double size, double height,
-                  double centreX = 0.0, double centreZ = 0.0);
+[[nodiscard]] MeshData gridMesh(const std::string& name, int cells, double size, double height,
+                                double centreX = 0.0, double centreZ = 0.0);
 
 /// An axis-aligned box with `cells` x `cells` quads per face, outward normals, no bottom face
 /// when `openBottom`.
-MeshData boxMesh(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int cells,
-                 bool openBottom);
+[[nodiscard]] MeshData boxMesh(const std::string& name, const glm::vec3& lo, const glm::vec3& hi,
+                               int cells, bool openBottom);
 
 }  // namespace onelight::world

@@ -13,10 +13,10 @@ struct Camera;
 
 namespace onelight::world {
 
-Camera importCamera(const tinygltf::Camera& source, const glm::dmat4& worldFromLocal,
-                    const std::string& name, const std::string& where);
+[[nodiscard]] Camera importCamera(const tinygltf::Camera& source, const glm::dmat4& worldFromLocal,
+                                  const std::string& name, const std::string& where);
 
 /// Rotation part of a world transform, scale and shear removed (unit quaternion).
-glm::quat rotationOf(const glm::dmat4& worldFromLocal);
+[[nodiscard]] glm::quat rotationOf(const glm::dmat4& worldFromLocal);
 
 }  // namespace onelight::world

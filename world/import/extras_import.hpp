@@ -37,6 +37,6 @@ struct NodeExtras {
 };
 
 /// Parses node.extras; `where` names the node for errors ("file.gltf: node 'lamp'").
-NodeExtras parseNodeExtras(const tinygltf::Value& extras, const std::string& where);
+[[nodiscard]] NodeExtras parseNodeExtras(const tinygltf::Value& extras, const std::string& where);
 
 }  // namespace onelight::world

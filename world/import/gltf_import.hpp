@@ -11,6 +11,6 @@
 namespace onelight::world {
 
 /// Throws Error with a one-line message naming the file and the place on bad input.
-SourceLevel importGltf(const std::string& path);
+[[nodiscard]] SourceLevel importGltf(const std::string& path);
 
 }  // namespace onelight::world

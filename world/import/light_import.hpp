@@ -16,7 +16,7 @@ namespace onelight::world {
 
 /// `where` names the node for errors. Negative or non-finite intensity, unknown types and bad
 /// cone angles are CompileErrors.
-Light importLight(const tinygltf::Light& source, const glm::dmat4& worldFromLocal,
-                  const std::string& name, LightRole role, const std::string& where);
+[[nodiscard]] Light importLight(const tinygltf::Light& source, const glm::dmat4& worldFromLocal,
+                                const std::string& name, LightRole role, const std::string& where);
 
 }  // namespace onelight::world

@@ -22,7 +22,7 @@ struct ImportedPrimitive {
 
 /// Reads primitive `primitiveIndex` of mesh `meshIndex`. Throws Error naming the mesh
 /// on malformed data, NaN or Inf.
-ImportedPrimitive importPrimitive(const tinygltf::Model& model, int meshIndex, int primitiveIndex,
-                                  const std::string& file);
+[[nodiscard]] ImportedPrimitive importPrimitive(const tinygltf::Model& model, int meshIndex,
+                                                int primitiveIndex, const std::string& file);
 
 }  // namespace onelight::world

@@ -16,6 +16,6 @@ void generateTangents(std::vector<Vertex>& vertices, const std::vector<uint32_t>
 
 /// A unit vector perpendicular to the unit vector n (Duff et al. 2017, "Building an
 /// Orthonormal Basis, Revisited").
-glm::vec3 anyPerpendicular(const glm::vec3& n);
+[[nodiscard]] glm::vec3 anyPerpendicular(const glm::vec3& n);
 
 }  // namespace onelight::world

@@ -15,7 +15,7 @@
 namespace onelight::package {
 
 /// Sections 32, 33 and 34, in that order, then 35 when there are probes, for serializePackage.
-std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked);
+[[nodiscard]] std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked);
 
 /// The baked lighting a package holds, if any.
 struct BakedContents {

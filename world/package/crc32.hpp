@@ -7,6 +7,6 @@
 namespace onelight::package {
 
 /// Continues `crc` (0 to start) over `size` bytes.
-uint32_t crc32(const void* data, size_t size, uint32_t crc = 0);
+[[nodiscard]] uint32_t crc32(const void* data, size_t size, uint32_t crc = 0);
 
 }  // namespace onelight::package

@@ -20,8 +20,8 @@ struct RawSection {
 };
 
 /// The package's bytes: every core section, then `baked_sections` in the order given.
-std::vector<uint8_t> serializePackage(const world::CompiledLevel& level,
-                                      std::span<const RawSection> bakedSections = {});
+[[nodiscard]] std::vector<uint8_t> serializePackage(const world::CompiledLevel& level,
+                                                    std::span<const RawSection> bakedSections = {});
 
 /// Writes `bytes` to `path` through `path.tmp` and a rename, so that `path` is never
 /// half-written. Throws world::Error naming the file.

@@ -17,7 +17,7 @@
 namespace onelight::world {
 
 /// Texels of a cube of edge `face_size` with every mip down to 1x1: 6 * sum_m (size >> m)^2.
-uint64_t probeTexelCount(uint32_t faceSize);
+[[nodiscard]] uint64_t probeTexelCount(uint32_t faceSize);
 
 }  // namespace onelight::world
 
@@ -26,11 +26,11 @@ namespace onelight::package {
 /// RGB9E5 (EXT_texture_shared_exponent, "Encoding": 9-bit mantissas, 5-bit exponent, bias
 /// 15): channels clamped to [0, 65408], NaN to 0. Each channel's error is at most half a step,
 /// max(r, g, b) / 512 (plus 2^-25 where the largest channel is below 2^-15).
-uint32_t encodeRgb9e5(glm::vec3 rgb);
-glm::vec3 decodeRgb9e5(uint32_t packed);
+[[nodiscard]] uint32_t encodeRgb9e5(glm::vec3 rgb);
+[[nodiscard]] glm::vec3 decodeRgb9e5(uint32_t packed);
 
 /// Section 35 for serializePackage.
-RawSection encodeProbeSection(const std::vector<world::EnvironmentProbe>& probes);
+[[nodiscard]] RawSection encodeProbeSection(const std::vector<world::EnvironmentProbe>& probes);
 
 /// The probes a package holds, if any.
 struct ProbeContents {

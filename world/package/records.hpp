@@ -50,29 +50,29 @@ inline void put(float (&dst)[4], const glm::quat& q) {
 }
 
 /// The array field `v` as a vector.
-inline glm::vec2 vec(const float (&v)[2]) {
+[[nodiscard]] inline glm::vec2 vec(const float (&v)[2]) {
     return glm::vec2(v[0], v[1]);
 }
 /// The array field `v` as a vector.
-inline glm::vec3 vec(const float (&v)[3]) {
+[[nodiscard]] inline glm::vec3 vec(const float (&v)[3]) {
     return glm::vec3(v[0], v[1], v[2]);
 }
 /// The array field `v` as a vector.
-inline glm::vec4 vec(const float (&v)[4]) {
+[[nodiscard]] inline glm::vec4 vec(const float (&v)[4]) {
     return glm::vec4(v[0], v[1], v[2], v[3]);
 }
 /// The array field `v` as a vector.
-inline glm::dvec3 vec(const double (&v)[3]) {
+[[nodiscard]] inline glm::dvec3 vec(const double (&v)[3]) {
     return glm::dvec3(v[0], v[1], v[2]);
 }
 /// The array field `v` (x, y, z, w) as a quaternion.
-inline glm::quat quat(const float (&v)[4]) {
+[[nodiscard]] inline glm::quat quat(const float (&v)[4]) {
     return glm::quat(v[3], v[0], v[1], v[2]);
 }
 
 /// Bytes [first, first + count) of `bytes`, or none when they do not fit.
-inline std::span<const uint8_t> slice(std::span<const uint8_t> bytes, uint64_t first,
-                                      uint64_t count) {
+[[nodiscard]] inline std::span<const uint8_t> slice(std::span<const uint8_t> bytes, uint64_t first,
+                                                    uint64_t count) {
     if (first > bytes.size() || count > bytes.size() - first) return {};
     return bytes.subspan(first, count);
 }
@@ -107,7 +107,7 @@ struct BlobReader {
 namespace records {
 
 /// Level settings -> DiskLevel (reserved 0).
-inline DiskLevel toDisk(const world::LevelSettings& s) {
+[[nodiscard]] inline DiskLevel toDisk(const world::LevelSettings& s) {
     DiskLevel d{};
     d.exposureEv100 = s.exposureEv100;
     d.hasExposure = s.hasExposure ? 1 : 0;
@@ -120,7 +120,7 @@ inline DiskLevel toDisk(const world::LevelSettings& s) {
 }
 
 /// DiskLevel -> level settings.
-inline world::LevelSettings fromDisk(const DiskLevel& d) {
+[[nodiscard]] inline world::LevelSettings fromDisk(const DiskLevel& d) {
     world::LevelSettings s;
     s.exposureEv100 = d.exposureEv100;
     s.hasExposure = d.hasExposure != 0;
@@ -133,7 +133,7 @@ inline world::LevelSettings fromDisk(const DiskLevel& d) {
 }
 
 /// Material -> DiskMaterial; appends the name to `blobs`.
-inline DiskMaterial toDisk(const world::Material& m, BlobWriter& blobs) {
+[[nodiscard]] inline DiskMaterial toDisk(const world::Material& m, BlobWriter& blobs) {
     DiskMaterial d{};
     d.name = blobs.addString(m.name);
     put(d.baseColor, m.baseColor);
@@ -158,7 +158,7 @@ inline DiskMaterial toDisk(const world::Material& m, BlobWriter& blobs) {
 }
 
 /// DiskMaterial -> material, the name read from `blobs`.
-inline world::Material fromDisk(const DiskMaterial& d, const BlobReader& blobs) {
+[[nodiscard]] inline world::Material fromDisk(const DiskMaterial& d, const BlobReader& blobs) {
     world::Material m;
     m.name = blobs.string(d.name);
     m.baseColor = vec(d.baseColor);
@@ -183,7 +183,7 @@ inline world::Material fromDisk(const DiskMaterial& d, const BlobReader& blobs) 
 }
 
 /// Texture -> DiskTexture.
-inline DiskTexture toDisk(const world::Texture& t) {
+[[nodiscard]] inline DiskTexture toDisk(const world::Texture& t) {
     DiskTexture d{};
     d.image = t.image;
     d.magFilter = t.sampler.magFilter;
@@ -194,7 +194,7 @@ inline DiskTexture toDisk(const world::Texture& t) {
 }
 
 /// DiskTexture -> texture.
-inline world::Texture fromDisk(const DiskTexture& d) {
+[[nodiscard]] inline world::Texture fromDisk(const DiskTexture& d) {
     world::Texture t;
     t.image = d.image;
     t.sampler.magFilter = d.magFilter;
@@ -205,7 +205,7 @@ inline world::Texture fromDisk(const DiskTexture& d) {
 }
 
 /// Image -> DiskImage; appends the strings and the encoded bytes to `blobs`.
-inline DiskImage toDisk(const world::Image& image, BlobWriter& blobs) {
+[[nodiscard]] inline DiskImage toDisk(const world::Image& image, BlobWriter& blobs) {
     DiskImage d{};
     d.name = blobs.addString(image.name);
     d.uri = blobs.addString(image.uri);
@@ -218,7 +218,7 @@ inline DiskImage toDisk(const world::Image& image, BlobWriter& blobs) {
 }
 
 /// DiskImage -> image, strings and encoded bytes read from `blobs`.
-inline world::Image fromDisk(const DiskImage& d, const BlobReader& blobs) {
+[[nodiscard]] inline world::Image fromDisk(const DiskImage& d, const BlobReader& blobs) {
     world::Image image;
     image.name = blobs.string(d.name);
     image.uri = blobs.string(d.uri);
@@ -229,7 +229,7 @@ inline world::Image fromDisk(const DiskImage& d, const BlobReader& blobs) {
 }
 
 /// Light -> DiskLight; appends the name to `blobs`.
-inline DiskLight toDisk(const world::Light& l, BlobWriter& blobs) {
+[[nodiscard]] inline DiskLight toDisk(const world::Light& l, BlobWriter& blobs) {
     DiskLight d{};
     d.name = blobs.addString(l.name);
     d.type = static_cast<uint8_t>(l.type);
@@ -245,7 +245,7 @@ inline DiskLight toDisk(const world::Light& l, BlobWriter& blobs) {
 }
 
 /// DiskLight -> light, the name read from `blobs`.
-inline world::Light fromDisk(const DiskLight& d, const BlobReader& blobs) {
+[[nodiscard]] inline world::Light fromDisk(const DiskLight& d, const BlobReader& blobs) {
     world::Light l;
     l.name = blobs.string(d.name);
     l.type = static_cast<world::LightType>(d.type);
@@ -261,7 +261,7 @@ inline world::Light fromDisk(const DiskLight& d, const BlobReader& blobs) {
 }
 
 /// Camera -> DiskCamera; appends the name to `blobs`.
-inline DiskCamera toDisk(const world::Camera& c, BlobWriter& blobs) {
+[[nodiscard]] inline DiskCamera toDisk(const world::Camera& c, BlobWriter& blobs) {
     DiskCamera d{};
     d.name = blobs.addString(c.name);
     d.orthographic = c.orthographic ? 1 : 0;
@@ -279,7 +279,7 @@ inline DiskCamera toDisk(const world::Camera& c, BlobWriter& blobs) {
 }
 
 /// DiskCamera -> camera, the name read from `blobs`.
-inline world::Camera fromDisk(const DiskCamera& d, const BlobReader& blobs) {
+[[nodiscard]] inline world::Camera fromDisk(const DiskCamera& d, const BlobReader& blobs) {
     world::Camera c;
     c.name = blobs.string(d.name);
     c.orthographic = d.orthographic != 0;
@@ -297,7 +297,7 @@ inline world::Camera fromDisk(const DiskCamera& d, const BlobReader& blobs) {
 }
 
 /// Vertex (static or dynamic) -> DiskVertex.
-inline DiskVertex toDisk(const world::Vertex& v) {
+[[nodiscard]] inline DiskVertex toDisk(const world::Vertex& v) {
     DiskVertex d{};
     put(d.position, v.position);
     put(d.normal, v.normal);
@@ -308,7 +308,7 @@ inline DiskVertex toDisk(const world::Vertex& v) {
 }
 
 /// DiskVertex -> vertex.
-inline world::Vertex fromDisk(const DiskVertex& d) {
+[[nodiscard]] inline world::Vertex fromDisk(const DiskVertex& d) {
     world::Vertex v;
     v.position = vec(d.position);
     v.normal = vec(d.normal);
@@ -319,7 +319,7 @@ inline world::Vertex fromDisk(const DiskVertex& d) {
 }
 
 /// Surface -> DiskSurface.
-inline DiskSurface toDisk(const world::Surface& s) {
+[[nodiscard]] inline DiskSurface toDisk(const world::Surface& s) {
     DiskSurface d{};
     d.firstIndex = s.firstIndex;
     d.indexCount = s.indexCount;
@@ -340,7 +340,7 @@ inline DiskSurface toDisk(const world::Surface& s) {
 }
 
 /// DiskSurface -> surface.
-inline world::Surface fromDisk(const DiskSurface& d) {
+[[nodiscard]] inline world::Surface fromDisk(const DiskSurface& d) {
     world::Surface s;
     s.firstIndex = d.firstIndex;
     s.indexCount = d.indexCount;
@@ -361,7 +361,7 @@ inline world::Surface fromDisk(const DiskSurface& d) {
 }
 
 /// Chart -> DiskChart.
-inline DiskChart toDisk(const world::Chart& c) {
+[[nodiscard]] inline DiskChart toDisk(const world::Chart& c) {
     DiskChart d{};
     d.atlas = c.atlas;
     d.x = c.x;
@@ -378,7 +378,7 @@ inline DiskChart toDisk(const world::Chart& c) {
 }
 
 /// DiskChart -> chart.
-inline world::Chart fromDisk(const DiskChart& d) {
+[[nodiscard]] inline world::Chart fromDisk(const DiskChart& d) {
     world::Chart c;
     c.atlas = d.atlas;
     c.x = d.x;
@@ -395,17 +395,17 @@ inline world::Chart fromDisk(const DiskChart& d) {
 }
 
 /// Atlas -> DiskAtlas.
-inline DiskAtlas toDisk(const world::Atlas& a) {
+[[nodiscard]] inline DiskAtlas toDisk(const world::Atlas& a) {
     return DiskAtlas{a.width, a.height};
 }
 
 /// DiskAtlas -> atlas.
-inline world::Atlas fromDisk(const DiskAtlas& d) {
+[[nodiscard]] inline world::Atlas fromDisk(const DiskAtlas& d) {
     return world::Atlas{d.width, d.height};
 }
 
 /// BSP plane -> DiskBspPlane.
-inline DiskBspPlane toDisk(const world::BspPlane& p) {
+[[nodiscard]] inline DiskBspPlane toDisk(const world::BspPlane& p) {
     DiskBspPlane d{};
     put(d.normal, p.normal);
     d.distance = p.distance;
@@ -413,12 +413,12 @@ inline DiskBspPlane toDisk(const world::BspPlane& p) {
 }
 
 /// DiskBspPlane -> BSP plane.
-inline world::BspPlane fromDisk(const DiskBspPlane& d) {
+[[nodiscard]] inline world::BspPlane fromDisk(const DiskBspPlane& d) {
     return world::BspPlane{vec(d.normal), d.distance};
 }
 
 /// BSP node -> DiskBspNode.
-inline DiskBspNode toDisk(const world::BspNode& n) {
+[[nodiscard]] inline DiskBspNode toDisk(const world::BspNode& n) {
     DiskBspNode d{};
     d.plane = n.plane;
     d.front = n.front;
@@ -429,7 +429,7 @@ inline DiskBspNode toDisk(const world::BspNode& n) {
 }
 
 /// DiskBspNode -> BSP node.
-inline world::BspNode fromDisk(const DiskBspNode& d) {
+[[nodiscard]] inline world::BspNode fromDisk(const DiskBspNode& d) {
     world::BspNode n;
     n.plane = d.plane;
     n.front = d.front;
@@ -440,7 +440,7 @@ inline world::BspNode fromDisk(const DiskBspNode& d) {
 }
 
 /// BSP leaf -> DiskBspLeaf.
-inline DiskBspLeaf toDisk(const world::BspLeaf& l) {
+[[nodiscard]] inline DiskBspLeaf toDisk(const world::BspLeaf& l) {
     DiskBspLeaf d{};
     d.firstTriangle = l.firstTriangle;
     d.triangleCount = l.triangleCount;
@@ -452,7 +452,7 @@ inline DiskBspLeaf toDisk(const world::BspLeaf& l) {
 }
 
 /// DiskBspLeaf -> BSP leaf.
-inline world::BspLeaf fromDisk(const DiskBspLeaf& d) {
+[[nodiscard]] inline world::BspLeaf fromDisk(const DiskBspLeaf& d) {
     world::BspLeaf l;
     l.firstTriangle = d.firstTriangle;
     l.triangleCount = d.triangleCount;
@@ -464,7 +464,7 @@ inline world::BspLeaf fromDisk(const DiskBspLeaf& d) {
 }
 
 /// Dynamic mesh -> DiskDynamicMesh; appends the name to `blobs`.
-inline DiskDynamicMesh toDisk(const world::DynamicMesh& m, BlobWriter& blobs) {
+[[nodiscard]] inline DiskDynamicMesh toDisk(const world::DynamicMesh& m, BlobWriter& blobs) {
     DiskDynamicMesh d{};
     d.name = blobs.addString(m.name);
     d.material = m.material;
@@ -476,7 +476,8 @@ inline DiskDynamicMesh toDisk(const world::DynamicMesh& m, BlobWriter& blobs) {
 }
 
 /// DiskDynamicMesh -> dynamic mesh, the name read from `blobs`.
-inline world::DynamicMesh fromDisk(const DiskDynamicMesh& d, const BlobReader& blobs) {
+[[nodiscard]] inline world::DynamicMesh fromDisk(const DiskDynamicMesh& d,
+                                                 const BlobReader& blobs) {
     world::DynamicMesh m;
     m.name = blobs.string(d.name);
     m.material = d.material;
@@ -488,7 +489,7 @@ inline world::DynamicMesh fromDisk(const DiskDynamicMesh& d, const BlobReader& b
 }
 
 /// Entity -> DiskEntity; appends the name to `blobs`.
-inline DiskEntity toDisk(const world::Entity& e, BlobWriter& blobs) {
+[[nodiscard]] inline DiskEntity toDisk(const world::Entity& e, BlobWriter& blobs) {
     DiskEntity d{};
     d.name = blobs.addString(e.name);
     d.flags = e.flags;
@@ -505,7 +506,7 @@ inline DiskEntity toDisk(const world::Entity& e, BlobWriter& blobs) {
 }
 
 /// DiskEntity -> entity, the name read from `blobs`.
-inline world::Entity fromDisk(const DiskEntity& d, const BlobReader& blobs) {
+[[nodiscard]] inline world::Entity fromDisk(const DiskEntity& d, const BlobReader& blobs) {
     world::Entity e;
     e.name = blobs.string(d.name);
     e.flags = d.flags;
@@ -522,7 +523,7 @@ inline world::Entity fromDisk(const DiskEntity& d, const BlobReader& blobs) {
 }
 
 /// Features -> DiskFeatures.
-inline DiskFeatures toDisk(const world::Features& f) {
+[[nodiscard]] inline DiskFeatures toDisk(const world::Features& f) {
     DiskFeatures d{};
     d.flags = f.flags;
     d.materialClasses = f.materialClasses;
@@ -539,7 +540,7 @@ inline DiskFeatures toDisk(const world::Features& f) {
 }
 
 /// DiskFeatures -> features.
-inline world::Features fromDisk(const DiskFeatures& d) {
+[[nodiscard]] inline world::Features fromDisk(const DiskFeatures& d) {
     world::Features f;
     f.flags = d.flags;
     f.materialClasses = d.materialClasses;
@@ -556,7 +557,7 @@ inline world::Features fromDisk(const DiskFeatures& d) {
 }
 
 /// Lightmap texel -> DiskLightmapTexel.
-inline DiskLightmapTexel toDisk(const world::LightmapTexel& t) {
+[[nodiscard]] inline DiskLightmapTexel toDisk(const world::LightmapTexel& t) {
     DiskLightmapTexel d{};
     put(d.irradiance, t.irradiance);
     put(d.direction, t.direction);
@@ -566,7 +567,7 @@ inline DiskLightmapTexel toDisk(const world::LightmapTexel& t) {
 }
 
 /// DiskLightmapTexel -> lightmap texel.
-inline world::LightmapTexel fromDisk(const DiskLightmapTexel& d) {
+[[nodiscard]] inline world::LightmapTexel fromDisk(const DiskLightmapTexel& d) {
     world::LightmapTexel t;
     t.irradiance = vec(d.irradiance);
     t.direction = vec(d.direction);
@@ -576,7 +577,7 @@ inline world::LightmapTexel fromDisk(const DiskLightmapTexel& d) {
 }
 
 /// The light grid's layout and the bake's shard -> DiskLightGridHeader (cellCount from the cells).
-inline DiskLightGridHeader toDiskGridHeader(const world::BakedLighting& baked) {
+[[nodiscard]] inline DiskLightGridHeader toDiskGridHeader(const world::BakedLighting& baked) {
     DiskLightGridHeader d{};
     put(d.origin, baked.grid.origin);
     put(d.cellSize, baked.grid.cellSize);
@@ -600,7 +601,7 @@ inline void fromDiskGridHeader(const DiskLightGridHeader& d, world::BakedLightin
 }
 
 /// Light grid cell -> DiskLightGridCell.
-inline DiskLightGridCell toDisk(const world::LightGridCell& c) {
+[[nodiscard]] inline DiskLightGridCell toDisk(const world::LightGridCell& c) {
     DiskLightGridCell d{};
     for (size_t f = 0; f < 6; ++f) put(d.ambientCube[f], c.ambientCube[f]);
     d.dominantPrimary = c.dominantPrimary == world::kNoIndex ? kNoIndex : c.dominantPrimary;
@@ -610,7 +611,7 @@ inline DiskLightGridCell toDisk(const world::LightGridCell& c) {
 }
 
 /// DiskLightGridCell -> light grid cell.
-inline world::LightGridCell fromDisk(const DiskLightGridCell& d) {
+[[nodiscard]] inline world::LightGridCell fromDisk(const DiskLightGridCell& d) {
     world::LightGridCell c;
     for (size_t f = 0; f < 6; ++f) c.ambientCube[f] = vec(d.ambientCube[f]);
     c.dominantPrimary = d.dominantPrimary == kNoIndex ? world::kNoIndex : d.dominantPrimary;
@@ -620,7 +621,7 @@ inline world::LightGridCell fromDisk(const DiskLightGridCell& d) {
 }
 
 /// Environment probe -> DiskProbe, its texels placed at `firstTexel` of the section's texels.
-inline DiskProbe toDisk(const world::EnvironmentProbe& p, uint32_t firstTexel) {
+[[nodiscard]] inline DiskProbe toDisk(const world::EnvironmentProbe& p, uint32_t firstTexel) {
     DiskProbe d{};
     put(d.position, p.position);
     put(d.boxMin, p.boxMin);
@@ -636,7 +637,8 @@ inline DiskProbe toDisk(const world::EnvironmentProbe& p, uint32_t firstTexel) {
 
 /// DiskProbe -> environment probe, its texels copied from `texelBytes` (all of the section's
 /// texels, 4 bytes each).
-inline world::EnvironmentProbe fromDisk(const DiskProbe& d, std::span<const uint8_t> texelBytes) {
+[[nodiscard]] inline world::EnvironmentProbe fromDisk(const DiskProbe& d,
+                                                      std::span<const uint8_t> texelBytes) {
     world::EnvironmentProbe p;
     p.position = vec(d.position);
     p.boxMin = vec(d.boxMin);

@@ -21,11 +21,11 @@ using PrimaryIlluminanceFn = std::function<void(const glm::dvec3& position, cons
                                                 std::span<double> illuminance)>;
 
 /// Index of the largest illuminance (lowest index on ties); kNoIndex when every value is zero.
-uint32_t dominantPrimary(std::span<const double> illuminance);
+[[nodiscard]] uint32_t dominantPrimary(std::span<const double> illuminance);
 
 /// Illuminance without visibility: directional E = I cos; point E = I cos / d^2 with the
 /// KHR_lights_punctual range window; spot adds the glTF cone falloff. Colour is weighted by
 /// luminance (Rec. 709). `primaries` are the level's primary-candidate lights.
-PrimaryIlluminanceFn makeUnshadowedPrimaryIlluminance(std::vector<Light> primaries);
+[[nodiscard]] PrimaryIlluminanceFn makeUnshadowedPrimaryIlluminance(std::vector<Light> primaries);
 
 }  // namespace onelight::world

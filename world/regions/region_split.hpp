@@ -36,9 +36,9 @@ RegionStats assignPrimaryRegions(StaticGeometry& geometry, uint32_t primaryCount
 
 /// Primaries other than `own` with non-zero illuminance at any corner of the given triangles:
 /// the lights this surface gives up, baked as secondary. Sorted ascending.
-std::vector<uint32_t> givenUpPrimaries(const StaticGeometry& geometry,
-                                       std::span<const StaticTriangle> triangles, uint32_t own,
-                                       uint32_t primaryCount,
-                                       const PrimaryIlluminanceFn& illuminance);
+[[nodiscard]] std::vector<uint32_t> givenUpPrimaries(const StaticGeometry& geometry,
+                                                     std::span<const StaticTriangle> triangles,
+                                                     uint32_t own, uint32_t primaryCount,
+                                                     const PrimaryIlluminanceFn& illuminance);
 
 }  // namespace onelight::world
