@@ -106,6 +106,7 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
     return runReportingErrors(input, [&] {
         const world::SourceLevel source = world::importGltf(input);
         BakeResult result = bakeLevel(source, options);
+        rebaseImagePaths(result.level, output);
         const std::vector<uint8_t> bytes = packageBytes(result.level, result.baked);
         package::writeFileAtomically(output, bytes);
         if (!reportPath.empty()) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <new>
 
 #include "world/error.hpp"
@@ -21,6 +22,17 @@ std::string formatUsage(const std::string& synopsis, const std::string& summary,
                                                : " (default: " + o.defaultValue + ")") +
                 "\n";
     return text;
+}
+
+void rebaseImagePaths(world::CompiledLevel& level, const std::string& package) {
+    const std::filesystem::path folder = std::filesystem::absolute(package).parent_path();
+    for (world::Image& image : level.images) {
+        if (image.uri.empty()) continue;
+        std::error_code ec;
+        const std::filesystem::path relative =
+            std::filesystem::relative(std::filesystem::absolute(image.uri), folder, ec);
+        if (!ec && !relative.empty()) image.uri = relative.generic_string();
+    }
 }
 
 std::string formatNumber(double value) {

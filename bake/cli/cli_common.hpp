@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "world/compiled_level.hpp"
+
 namespace onelight::bake {
 
 /// One option of a subcommand, as its help lists it.
@@ -20,6 +22,10 @@ inline const std::string kRequired = "required";
 /// line, aligned.
 [[nodiscard]] std::string formatUsage(const std::string& synopsis, const std::string& summary,
                                       const std::vector<CliOption>& options);
+
+/// Makes the level's image file references (as imported: relative to the working folder)
+/// relative to the folder of `package`, where the runtime looks for them.
+void rebaseImagePaths(world::CompiledLevel& level, const std::string& package);
 
 /// `value` as the shortest text that reads it back ("%g").
 [[nodiscard]] std::string formatNumber(double value);

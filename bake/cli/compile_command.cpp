@@ -15,18 +15,6 @@
 namespace onelight::bake {
 namespace {
 
-/// Image file references become relative to the package's folder.
-void rebaseImagePaths(world::CompiledLevel& level, const std::filesystem::path& package) {
-    const std::filesystem::path folder = std::filesystem::absolute(package).parent_path();
-    for (world::Image& image : level.images) {
-        if (image.uri.empty()) continue;
-        std::error_code ec;
-        const std::filesystem::path relative =
-            std::filesystem::relative(std::filesystem::absolute(image.uri), folder, ec);
-        if (!ec && !relative.empty()) image.uri = relative.generic_string();
-    }
-}
-
 void printSummary(const std::string& output, const world::CompileStats& s, size_t bytes) {
     std::printf("compiled %s (%zu bytes)\n", output.c_str(), bytes);
     std::printf(
