@@ -108,7 +108,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     auto start = std::chrono::steady_clock::now();
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(source);
-    const BakeScene scene(device, split.staticGeometry, source.materials);
+    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(source));
     const BakeLights lights = makeBakeLights(source.lights, options.lightSizes,
                                              options.skyRadiance.value_or(source.skyRadiance));
     report.stages.push_back({"scene", secondsSince(start), {}, scene.triangleCount()});

@@ -44,10 +44,17 @@ void EmbreeDevice::onError(void* user, RTCError code, const char* message) {
 
 BakeScene::BakeScene(const EmbreeDevice& device, const world::StaticGeometry& geometry,
                      std::vector<world::Material> materials)
+    : BakeScene(device, geometry, factorMaterials(std::move(materials))) {}
+
+BakeScene::BakeScene(const EmbreeDevice& device, const world::StaticGeometry& geometry,
+                     SceneMaterials materials)
     : materials_(std::move(materials)) {
     positions_.reserve(geometry.vertices.size());
-    for (const world::CompileVertex& v : geometry.vertices)
+    attributes_.reserve(geometry.vertices.size());
+    for (const world::CompileVertex& v : geometry.vertices) {
         positions_.push_back(glm::vec3(v.position));
+        attributes_.push_back({v.normal, v.tangent, v.uv0});
+    }
     indices_.reserve(geometry.triangles.size() * 3);
     for (const world::StaticTriangle& t : geometry.triangles) {
         indices_.insert(indices_.end(), t.v.begin(), t.v.end());
@@ -57,9 +64,13 @@ BakeScene::BakeScene(const EmbreeDevice& device, const world::StaticGeometry& ge
 }
 
 BakeScene::BakeScene(const EmbreeDevice& device, const world::CompiledLevel& level)
-    : materials_(level.materials) {
+    : materials_(factorMaterials(level.materials)) {
     positions_.reserve(level.vertices.size());
-    for (const world::Vertex& v : level.vertices) positions_.push_back(v.position);
+    attributes_.reserve(level.vertices.size());
+    for (const world::Vertex& v : level.vertices) {
+        positions_.push_back(v.position);
+        attributes_.push_back({v.normal, v.tangent, v.uv0});
+    }
     indices_ = level.indices;
     triangleMaterial_.assign(indices_.size() / 3, world::kNoIndex);
     for (const world::Surface& s : level.surfaces)
@@ -71,6 +82,7 @@ BakeScene::BakeScene(const EmbreeDevice& device, const world::CompiledLevel& lev
 void BakeScene::build(const EmbreeDevice& device) {
     const size_t triangleCount = indices_.size() / 3;
     triangleNormal_.resize(triangleCount);
+    uvDensityLog2_.resize(triangleCount);
     boundsMin_ = glm::vec3(std::numeric_limits<float>::max());
     boundsMax_ = glm::vec3(-std::numeric_limits<float>::max());
     for (size_t t = 0; t < triangleCount; ++t) {
@@ -79,6 +91,14 @@ void BakeScene::build(const EmbreeDevice& device) {
         const glm::dvec3 n = glm::cross(glm::dvec3(b - a), glm::dvec3(c - a));
         const double length = glm::length(n);
         triangleNormal_[t] = length > 0.0 ? glm::vec3(n / length) : glm::vec3(0.0f, 0.0f, 1.0f);
+        const glm::vec2 ua = attributes_[indices_[3 * t]].uv,
+                        ub = attributes_[indices_[3 * t + 1]].uv,
+                        uc = attributes_[indices_[3 * t + 2]].uv;
+        const double uvArea = std::fabs(double(ub.x - ua.x) * double(uc.y - ua.y) -
+                                        double(uc.x - ua.x) * double(ub.y - ua.y));
+        // A degenerate uv mapping reads the finest mip (no density information).
+        uvDensityLog2_[t] =
+            length > 0.0 && uvArea > 0.0 ? float(0.5 * std::log2(uvArea / length)) : -64.0f;
         for (const glm::vec3& p : {a, b, c}) {
             boundsMin_ = glm::min(boundsMin_, p);
             boundsMax_ = glm::max(boundsMax_, p);
@@ -121,12 +141,28 @@ BakeScene::~BakeScene() {
 
 const world::Material& BakeScene::materialOf(uint32_t triangle) const {
     const uint32_t m = triangleMaterial_[triangle];
-    return m < materials_.size() ? materials_[m] : defaultMaterial_;
+    return m < materials_.materials.size() ? materials_.materials[m] : defaultMaterial_;
+}
+
+SurfaceAttributes BakeScene::attributesAt(const SurfaceHit& hit) const {
+    const VertexAttributes& a = attributes_[indices_[3 * hit.triangle]];
+    const VertexAttributes& b = attributes_[indices_[3 * hit.triangle + 1]];
+    const VertexAttributes& c = attributes_[indices_[3 * hit.triangle + 2]];
+    const float u = hit.barycentric.x, v = hit.barycentric.y, w = 1.0f - u - v;
+    SurfaceAttributes out;
+    out.uv = w * a.uv + u * b.uv + v * c.uv;
+    out.normal = w * a.normal + u * b.normal + v * c.normal;
+    out.tangent = w * a.tangent + u * b.tangent + v * c.tangent;
+    out.tangent.w = a.tangent.w;  // the bitangent sign is a triangle's, not interpolated
+    out.uvDensityLog2 = uvDensityLog2_[hit.triangle];
+    return out;
 }
 
 size_t BakeScene::memoryBytes() const {
     return positions_.size() * sizeof(glm::vec3) + indices_.size() * sizeof(uint32_t) +
-           triangleNormal_.size() * sizeof(glm::vec3) + triangleMaterial_.size() * 4;
+           triangleNormal_.size() * sizeof(glm::vec3) + triangleMaterial_.size() * 4 +
+           attributes_.size() * sizeof(VertexAttributes) + uvDensityLog2_.size() * sizeof(float) +
+           textureBytes(materials_);
 }
 
 SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, float maxDistance,
@@ -167,6 +203,7 @@ SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, f
     const glm::vec3 c = positions_[indices_[3 * hit.triangle + 2]];
     hit.position = a + query.hit.u * (b - a) + query.hit.v * (c - a);
     hit.backFace = glm::dot(dir, hit.normal) > 0.0f;
+    hit.barycentric = {query.hit.u, query.hit.v};
     return hit;
 }
 

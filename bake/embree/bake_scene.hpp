@@ -12,6 +12,8 @@
 #include <embree3/rtcore.h>
 #include <glm/glm.hpp>
 
+#include "bake/materials/scene_materials.hpp"
+#include "bake/materials/surface_point.hpp"
 #include "world/compiled_level.hpp"
 #include "world/static_geometry.hpp"
 
@@ -52,11 +54,12 @@ struct RayCounts {
 /// What a ray found.
 struct SurfaceHit {
     bool found = false;
-    float distance = 0.0f;     // metres along the unit ray direction
-    uint32_t triangle = 0;     // into BakeScene triangles
-    glm::vec3 position{0.0f};  // metres, world
-    glm::vec3 normal{0.0f};    // unit geometric normal of the front face (winding order)
-    bool backFace = false;     // the ray arrived on the side opposite `normal`
+    float distance = 0.0f;        // metres along the unit ray direction
+    uint32_t triangle = 0;        // into BakeScene triangles
+    glm::vec3 position{0.0f};     // metres, world
+    glm::vec3 normal{0.0f};       // unit geometric normal of the front face (winding order)
+    bool backFace = false;        // the ray arrived on the side opposite `normal`
+    glm::vec2 barycentric{0.0f};  // Embree's (u, v): position = a + u (b - a) + v (c - a)
 };
 
 /// A ray as a BakeScene traced it, for tools that replay the baker's rays (the benchmark
@@ -73,10 +76,14 @@ using RayObserver = void (*)(void* user, const TracedRay& ray);
 /// The static world in Embree, plus the per-triangle data hits are shaded with.
 class BakeScene {
 public:
-    /// Builds from the static triangles of a level (world space). `materials` are the level's.
+    /// Builds from the static triangles of a level (world space), shaded with `materials`
+    /// (the level's, with their textures: loadSceneMaterials).
+    BakeScene(const EmbreeDevice& device, const world::StaticGeometry& geometry,
+              SceneMaterials materials);
+    /// The same with the materials' factors alone.
     BakeScene(const EmbreeDevice& device, const world::StaticGeometry& geometry,
               std::vector<world::Material> materials);
-    /// Builds from a compiled level's static vertices and indices.
+    /// Builds from a compiled level's static vertices and indices (factors alone).
     BakeScene(const EmbreeDevice& device, const world::CompiledLevel& level);
     ~BakeScene();
     BakeScene(const BakeScene&) = delete;
@@ -106,6 +113,13 @@ public:
     RTCScene embreeScene() const { return scene_; }  // borrowed, committed
 
     const world::Material& materialOf(uint32_t triangle) const;
+    /// The index of `triangle`'s material in materials() (kNoIndex: the default).
+    [[nodiscard]] uint32_t materialIndexOf(uint32_t triangle) const {
+        return triangleMaterial_[triangle];
+    }
+    [[nodiscard]] const SceneMaterials& materials() const { return materials_; }
+    /// The interpolated vertex attributes where `hit` landed.
+    [[nodiscard]] SurfaceAttributes attributesAt(const SurfaceHit& hit) const;
     uint32_t triangleCount() const { return static_cast<uint32_t>(triangleMaterial_.size()); }
     size_t memoryBytes() const;
 
@@ -117,8 +131,15 @@ private:
     std::vector<uint32_t> indices_;           // 3 per triangle
     std::vector<glm::vec3> triangleNormal_;   // unit, from the winding
     std::vector<uint32_t> triangleMaterial_;  // into materials_
-    std::vector<world::Material> materials_;
+    SceneMaterials materials_;
     world::Material defaultMaterial_;
+    struct VertexAttributes {
+        glm::vec3 normal{0.0f, 0.0f, 1.0f};
+        glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};
+        glm::vec2 uv{0.0f};
+    };
+    std::vector<VertexAttributes> attributes_;  // per vertex
+    std::vector<float> uvDensityLog2_;          // per triangle: 0.5 log2(uv area / world area)
     glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
     float rayOffset_ = 1e-4f;
     float diameter_ = 1.0f;

@@ -26,7 +26,8 @@ world::LightGridCell bakeCell(const BakeScene& scene, const BakeLights& lights,
         const glm::vec3 w = sampleUniformSphere(rotatedHammersley(i, count, s0, s1));
         FirstHit first;
         const glm::vec3 l =
-            traceRadiance(scene, lights, settings.transport, centre, w, rng, rays, &first);
+            traceRadiance(scene, lights, settings.transport, centre, w,
+                          RayCone{0.0f, sampleSpread(4.0f * kPi, count)}, rng, rays, &first);
         if (first.found && first.backFace) ++backFaces;
         for (size_t a = 0; a < 6; ++a)
             cube[a] += glm::dvec3(l) * double(std::max(0.0f, glm::dot(kAxes[a], w)));

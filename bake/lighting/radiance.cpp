@@ -9,12 +9,11 @@
 namespace onelight::bake {
 namespace {
 
-glm::vec3 brdfCos(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
-                  const glm::vec3& l) {
+glm::vec3 brdfCos(const Bsdf& bsdf, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
     const glsl::BrdfDots d = glsl::brdfDots(n, v, l);
-    const glm::vec3 diffuse = material.albedo * (glsl::Fd_Lambert() * d.NoL);
+    const glm::vec3 diffuse = bsdf.albedo * (glsl::Fd_Lambert() * d.NoL);
     const glm::vec3 specular = glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
-                                                  material.specularColor, material.gloss, d);
+                                                  bsdf.specularColor, bsdf.gloss, d);
     return diffuse + specular;
 }
 
@@ -26,28 +25,30 @@ bool finiteNonNegative(const glm::vec3& c) {
 }  // namespace
 
 glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
-                         const world::Material& material, const glm::vec3& position,
-                         const glm::vec3& normal, const glm::vec3& toViewer, Rng& rng,
+                         const ShadingPoint& point, const glm::vec3& toViewer, Rng& rng,
                          RayCounts& rays) {
     glm::vec3 radiance(0.0f);
-    const glm::vec3 origin = position + normal * scene.rayOffset();
+    const glm::vec3 origin = point.position + point.geometricNormal * scene.rayOffset();
     for (const BakeLight& light : lights.lights) {
-        const LightIncidence incidence = lightIncidence(light, position);
+        const LightIncidence incidence = lightIncidence(light, point.position);
         const glm::vec2 u(rng.next(), rng.next());
         if (incidence.irradiance == glm::vec3(0.0f)) continue;
         const LightDirection d = sampleLightDirection(light, incidence, u, scene.sceneDiameter());
-        if (glm::dot(normal, d.direction) <= 0.0f) continue;
+        if (glm::dot(point.geometricNormal, d.direction) <= 0.0f ||
+            glm::dot(point.shadingNormal, d.direction) <= 0.0f)
+            continue;
         if (d.shadowDistance > 0.0f &&
             scene.occluded(origin, d.direction, d.shadowDistance, rays.shadow))
             continue;
-        radiance += brdfCos(material, normal, toViewer, d.direction) * incidence.irradiance;
+        radiance +=
+            brdfCos(point.bsdf, point.shadingNormal, toViewer, d.direction) * incidence.irradiance;
     }
     return radiance;
 }
 
 glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                         const TransportSettings& settings, glm::vec3 origin, glm::vec3 dir,
-                        Rng& rng, RayCounts& rays, FirstHit* firstHit) {
+                        RayCone cone, Rng& rng, RayCounts& rays, FirstHit* firstHit) {
     glm::vec3 radiance(0.0f);
     glm::vec3 throughput(1.0f);
     for (uint32_t depth = 0; depth < settings.maxDepth; ++depth) {
@@ -59,20 +60,30 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
         }
         const world::Material& material = scene.materialOf(hit.triangle);
         if (hit.backFace && !material.doubleSided) break;
-        const glm::vec3 n = hit.backFace ? -hit.normal : hit.normal;
+        ShadingPoint point;
+        point.position = hit.position;
+        point.geometricNormal = hit.backFace ? -hit.normal : hit.normal;
         const glm::vec3 v = -dir;
-        radiance +=
-            throughput * directRadiance(scene, lights, material, hit.position, n, v, rng, rays);
-
-        const SurfaceSample next = sampleSurface(material, n, v, rng);
-        if (next.weight == glm::vec3(0.0f)) break;
-        throughput *= next.weight;
+        const MaterialSample m =
+            sampleMaterial(scene.materials(), scene.materialIndexOf(hit.triangle),
+                           scene.attributesAt(hit), point.geometricNormal, hit.backFace,
+                           cone.widthAt(hit.distance), glm::dot(point.geometricNormal, v));
+        point.shadingNormal = m.shadingNormal;
+        point.bsdf = m.bsdf;
+        radiance += throughput * m.emission;
+        radiance += throughput * directRadiance(scene, lights, point, v, rng, rays);
+        const SurfaceSample next = sampleSurface(point.bsdf, point.shadingNormal, v, rng);
+        if (next.weight == glm::vec3(0.0f) ||
+            glm::dot(point.geometricNormal, next.direction) <= 0.0f)
+            break;
+        throughput *= next.weight * m.occlusion;
         if (depth + 1 >= settings.rouletteDepth) {
             const float q = std::min(0.95f, std::max({throughput.x, throughput.y, throughput.z}));
             if (!(q > 0.0f) || rng.next() >= q) break;
             throughput /= q;
         }
-        origin = hit.position + n * scene.rayOffset();
+        cone = bounceCone(cone, hit.distance, next.pdf);
+        origin = hit.position + point.geometricNormal * scene.rayOffset();
         dir = next.direction;
     }
     return finiteNonNegative(radiance) ? radiance : glm::vec3(0.0f);

@@ -11,6 +11,8 @@
 #include "bake/embree/bake_scene.hpp"
 #include "bake/lighting/lights.hpp"
 #include "bake/lighting/sampling.hpp"
+#include "bake/materials/ray_cone.hpp"
+#include "bake/materials/surface_point.hpp"
 
 namespace onelight::bake {
 
@@ -36,10 +38,19 @@ struct TransportSettings {
                  | Lo_direct ~ sum_l (albedo NoL / pi + specularLobe) E_l vis(w_l) |
                  +----------------------------------------------------------------+
 */
+/// A surface point as the transport shades it.
+struct ShadingPoint {
+    glm::vec3 position{0.0f};
+    glm::vec3 geometricNormal{0.0f, 0.0f, 1.0f};  // the triangle's, on the viewer's side
+    glm::vec3 shadingNormal{0.0f, 0.0f, 1.0f};    // the material's (smooth, normal-mapped)
+    Bsdf bsdf;
+};
+
+/// Light reaches the point only from above both its geometric and its shading surface: the
+/// BRDF is evaluated about the shading normal, rays leave along the geometric one.
 [[nodiscard]] glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
-                                       const world::Material& material, const glm::vec3& position,
-                                       const glm::vec3& normal, const glm::vec3& toViewer, Rng& rng,
-                                       RayCounts& rays);
+                                       const ShadingPoint& point, const glm::vec3& toViewer,
+                                       Rng& rng, RayCounts& rays);
 
 /// What traceRadiance saw first (for inside-geometry tests).
 struct FirstHit {
@@ -61,10 +72,14 @@ struct FirstHit {
      | L ~ sum_k T_k Lo_direct(y_k),  T_{k+1} = T_k (f cos' / pdf(w')) / q              |
      +------------------------------------------------------------------------------+
    Back faces of single-sided materials absorb (they are only seen from inside solids).
+   Every hit is shaded with its material where the ray landed (bake/materials): textures read
+   at the level of detail of the path's footprint `cone` (ray_cone.hpp), which each bounce
+   widens; emissive surfaces add their emission (cd/m^2) times the throughput; the continuation
+   carries the material's ambient occlusion, as the runtime applies it to the secondary light.
 */
 [[nodiscard]] glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                                       const TransportSettings& settings, glm::vec3 origin,
-                                      glm::vec3 dir, Rng& rng, RayCounts& rays,
+                                      glm::vec3 dir, RayCone cone, Rng& rng, RayCounts& rays,
                                       FirstHit* firstHit = nullptr);
 
 }  // namespace onelight::bake

@@ -8,7 +8,7 @@
 
 namespace onelight::bake {
 
-float specularProbability(const world::Material& material, float NoV) {
+float specularProbability(const Bsdf& material, float NoV) {
     if (!(luminance(material.specularColor) > 0.0f)) return 0.0f;
     const float specular =
         luminance(glsl::F_Schlick(material.specularColor, std::clamp(NoV, 0.0f, 1.0f)));
@@ -33,15 +33,14 @@ float mixturePdf(float p, float gloss, const glsl::BrdfDots& d, float NoL) {
 
 }  // namespace
 
-float surfacePdf(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
-                 const glm::vec3& l) {
+float surfacePdf(const Bsdf& material, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
     const float NoL = glm::dot(n, l);
     if (NoL <= 0.0f) return 0.0f;
     return mixturePdf(specularProbability(material, glm::dot(n, v)), material.gloss,
                       glsl::brdfDots(n, v, l), NoL);
 }
 
-SurfaceSample sampleSurface(const world::Material& material, const glm::vec3& n, const glm::vec3& v,
+SurfaceSample sampleSurface(const Bsdf& material, const glm::vec3& n, const glm::vec3& v,
                             Rng& rng) {
     const Frame frame = frameAround(n);
     const float p = specularProbability(material, glm::dot(n, v));
@@ -60,6 +59,7 @@ SurfaceSample sampleSurface(const world::Material& material, const glm::vec3& n,
             glm::normalize(frame.toWorld(sampleCosineHemisphere({rng.next(), rng.next()})));
         if (p == 0.0f) {  // Lambert alone: f cos / pdf = (albedo NoL / pi) / (NoL / pi)
             s.weight = material.albedo;
+            s.pdf = std::max(glm::dot(n, s.direction), 0.0f) / kPi;
             return s;
         }
     }
@@ -72,6 +72,7 @@ SurfaceSample sampleSurface(const world::Material& material, const glm::vec3& n,
                            glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
                                               material.specularColor, material.gloss, d);
     s.weight = fCos / pdf;
+    s.pdf = pdf;
     return s;
 }
 

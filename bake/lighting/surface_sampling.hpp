@@ -7,7 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "bake/lighting/sampling.hpp"
-#include "world/compiled_level.hpp"
+#include "bake/materials/surface_point.hpp"
 
 namespace onelight::bake {
 
@@ -15,19 +15,20 @@ namespace onelight::bake {
 struct SurfaceSample {
     glm::vec3 direction{0.0f};
     glm::vec3 weight{0.0f};
+    float pdf = 0.0f;  // the mixture's density of `direction` (per steradian); 0 with weight 0
 };
 
 /// Probability of drawing from the specular lobe at view cosine NoV: the luminance of its
 /// Schlick reflectance at normal view, F(NoV) = f0 + (1 - f0)(1 - NoV)^5, over that plus the
 /// diffuse albedo's. 0 for a surface without specular colour, 1 without albedo.
-[[nodiscard]] float specularProbability(const world::Material& material, float NoV);
+[[nodiscard]] float specularProbability(const Bsdf& material, float NoV);
 
 /// Density (per steradian) of sampleSurface drawing l at (n, v): the mixture
 ///   pdf(l) = (1 - p) NoL / pi + p D(h) NoH / (4 VoH),   h = normalize(v + l), p as above
 /// (Walter et al. 2007, eq. 14 and 38: a half vector drawn with density D NoH reflects to l
 /// with density D NoH / (4 VoH)).
-[[nodiscard]] float surfacePdf(const world::Material& material, const glm::vec3& n,
-                               const glm::vec3& v, const glm::vec3& l);
+[[nodiscard]] float surfacePdf(const Bsdf& material, const glm::vec3& n, const glm::vec3& v,
+                               const glm::vec3& l);
 
 /// Draws the continuation at a hit with unit normal n (facing v) seen from unit v: with
 /// probability p a GGX half vector about n (cos^2 theta_h = (1 - u) / (1 + (a^2 - 1) u),
@@ -38,7 +39,7 @@ struct SurfaceSample {
 ///            | weight = (albedo NoL / pi + specularLobe(v, l)) / pdf(l)             |
 ///            +---------------------------------------------------------------------+
 /// A surface without specular colour draws exactly as before (two random numbers, cosine).
-[[nodiscard]] SurfaceSample sampleSurface(const world::Material& material, const glm::vec3& n,
+[[nodiscard]] SurfaceSample sampleSurface(const Bsdf& material, const glm::vec3& n,
                                           const glm::vec3& v, Rng& rng);
 
 }  // namespace onelight::bake

@@ -116,7 +116,9 @@ TexelEstimate estimateTexel(const BakeScene& scene, const BakeLights& lights,
             const glm::vec3 w = glm::normalize(
                 frame.toWorld(sampleCosineHemisphere(rotatedHammersley(i, count, s0, s1))));
             const glm::vec3 e =
-                kPi * traceRadiance(scene, lights, settings.transport, origin, w, rng, rays);
+                kPi * traceRadiance(scene, lights, settings.transport, origin, w,
+                                    RayCone{sample.texelSize, sampleSpread(2.0f * kPi, count)},
+                                    rng, rays);
             const double y = luminance(e);
             out.indirect += glm::dvec3(e);
             out.indirectDirection += y * glm::dvec3(w);

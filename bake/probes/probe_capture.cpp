@@ -26,6 +26,8 @@ Cubemap captureProbe(const BakeScene& scene, const BakeLights& lights, glm::vec3
     Cubemap cube = makeCubemap(size);
     const uint32_t n = std::max(1u, settings.samplesPerTexel);
     const float area = (2.0f / float(size)) * (2.0f / float(size));
+    // Each ray's footprint: its share of the texel's solid angle (about area at the face centre).
+    const RayCone cone{0.0f, sampleSpread(area, n)};
     tbb::enumerable_thread_specific<RayCounts> counts;
     tbb::parallel_for(tbb::blocked_range<int>(0, 6 * size), [&](const auto& rows) {
         RayCounts& local = counts.local();
@@ -44,7 +46,7 @@ Cubemap captureProbe(const BakeScene& scene, const BakeLights& lights, glm::vec3
                     const float weight = 1.0f / (r2 * std::sqrt(r2));  // pdf(w) = r^3 / A
                     const glm::vec3 dir = glsl::cubeDirection(face, uv);
                     sum += glm::dvec3(traceRadiance(scene, lights, settings.transport, position,
-                                                    dir, rng, local)) *
+                                                    dir, cone, rng, local)) *
                            double(weight);
                 }
                 cube.mips[0].at(face, x, y) = glm::vec3(

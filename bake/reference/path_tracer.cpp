@@ -25,6 +25,10 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
     const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
     const float aspect = float(width) / float(height);
     const float tanHalf = std::tan(0.5f * camera.yfov);
+    // A pixel's footprint: its angle (perspective) or its width (orthographic).
+    const RayCone pixelCone = camera.orthographic
+                                  ? RayCone{2.0f * camera.ymag / float(height), 0.0f}
+                                  : RayCone{0.0f, 2.0f * tanHalf / float(height)};
     tbb::enumerable_thread_specific<RayCounts> counts;
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, height), [&](const auto& rows) {
         RayCounts& local = counts.local();
@@ -44,7 +48,7 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
                                              glm::vec3(sx * tanHalf * aspect, sy * tanHalf, -1.0f));
                     }
                     sum += glm::dvec3(
-                        traceRadiance(scene, lights, transport, origin, dir, rng, local));
+                        traceRadiance(scene, lights, transport, origin, dir, pixelCone, rng, local));
                 }
                 const glm::vec3 l = glm::vec3(sum / double(std::max(1u, spp)));
                 float* out = &image.rgb[(size_t(y) * width + x) * 3];
@@ -78,7 +82,9 @@ glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
         // uniform hemisphere: the upper half of a uniform sphere direction
         glm::vec3 local = sampleUniformSphere({rng.next() * 0.5f, rng.next()});
         const glm::vec3 w = glm::normalize(frame.toWorld(local));
-        indirect += glm::dvec3(traceRadiance(scene, lights, transport, origin, w, rng, rays)) *
+        indirect += glm::dvec3(traceRadiance(scene, lights, transport, origin, w,
+                                             RayCone{0.0f, sampleSpread(2.0f * kPi, samples)},
+                                             rng, rays)) *
                     double(local.z);
     }
     e += indirect * (2.0 * 3.14159265358979323846 / double(std::max(1u, samples)));

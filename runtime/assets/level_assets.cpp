@@ -8,34 +8,7 @@
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#define STBI_ONLY_JPEG
-#define STBI_FAILURE_USERMSG
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wdouble-promotion"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb_image.h>
-#pragma GCC diagnostic pop
-
 namespace onelight::assets {
-
-DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where) {
-    if (size == 0 || size > size_t(1) << 30)
-        throw world::Error(where + ": empty or oversized image data");
-    int width = 0, height = 0, channels = 0;
-    stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
-    if (!pixels)
-        throw world::Error(where + ": not a decodable PNG/JPEG image (" + stbi_failure_reason() +
-                           ")");
-    DecodedImage out;
-    out.width = uint32_t(width);
-    out.height = uint32_t(height);
-    out.rgba.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
-    stbi_image_free(pixels);
-    return out;
-}
 
 LoadedLevel loadLevel(const std::string& path) {
     package::PackageContents read = package::readPackageFile(path);
@@ -58,17 +31,14 @@ LoadedLevel loadLevel(const std::string& path) {
         const std::string where = path + ": image " + std::to_string(i) + " '" + image.name + "'";
         if (!image.encodedBytes.empty()) {
             out.images.push_back(
-                decodeImage(image.encodedBytes.data(), image.encodedBytes.size(), where));
+                world::decodeImage(image.encodedBytes.data(), image.encodedBytes.size(), where));
             continue;
         }
         const std::filesystem::path file = folder / image.uri;
-        std::ifstream in(file, std::ios::binary);
-        if (!in)
+        if (!std::filesystem::is_regular_file(file))
             throw world::Error(file.string() + ": cannot open the image referenced by " + where +
                                "; expected a PNG or JPEG file");
-        const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                         std::istreambuf_iterator<char>());
-        out.images.push_back(decodeImage(bytes.data(), bytes.size(), file.string()));
+        out.images.push_back(world::readImageFile(file.string()));
     }
     return out;
 }

@@ -1,6 +1,6 @@
 // A level package loaded for the runtime: the compiled level (world/package reader), its baked
 // lighting when the baker filled it (sections 32..34), and its images decoded to RGBA8
-// (stb_image), from the package's embedded bytes or from files beside it.
+// (world/images), from the package's embedded bytes or from files beside it.
 #pragma once
 
 #include <cstdint>
@@ -9,14 +9,11 @@
 
 #include "world/baked_lighting.hpp"
 #include "world/compiled_level.hpp"
+#include "world/images/image_decode.hpp"
 
 namespace onelight::assets {
 
-/// An image decoded to 8-bit RGBA, rows top to bottom.
-struct DecodedImage {
-    uint32_t width = 0, height = 0;
-    std::vector<uint8_t> rgba;  // width * height * 4 bytes
-};
+using world::DecodedImage;
 
 struct LoadedLevel {
     std::string path;                  // the .olpak file
@@ -30,8 +27,5 @@ struct LoadedLevel {
 /// refers to. Throws world::Error naming the file and what was expected (an unmerged part of a
 /// sharded bake included).
 [[nodiscard]] LoadedLevel loadLevel(const std::string& path);
-
-/// Decodes PNG/JPEG bytes. Throws world::Error, its message starting with `where` (the file).
-[[nodiscard]] DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where);
 
 }  // namespace onelight::assets

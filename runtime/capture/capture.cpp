@@ -80,12 +80,8 @@ FloatImage readExr(const std::string& path) {
     return image;
 }
 
-assets::DecodedImage readPng(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw world::Error(path + ": cannot open");
-    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                     std::istreambuf_iterator<char>());
-    return assets::decodeImage(bytes.data(), bytes.size(), path);
+world::DecodedImage readPng(const std::string& path) {
+    return world::readImageFile(path);
 }
 
 void writeJson(const std::string& path, const nlohmann::json& value) {

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "assets/level_assets.hpp"
+#include "world/images/image_decode.hpp"
 
 namespace onelight::capture {
 
@@ -32,7 +32,7 @@ void writeExr(const std::string& path, uint32_t width, uint32_t height,
 [[nodiscard]] FloatImage readExr(const std::string& path);
 
 /// Reads a PNG as 8-bit RGBA (tests).
-[[nodiscard]] assets::DecodedImage readPng(const std::string& path);
+[[nodiscard]] world::DecodedImage readPng(const std::string& path);
 
 /// Pretty-printed JSON.
 void writeJson(const std::string& path, const nlohmann::json& value);

@@ -126,7 +126,7 @@ uint32_t textureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_
     const uint64_t key = (uint64_t(texture.image) << 1) | (srgb ? 1u : 0u);
     auto found = s.textureIndex.find(key);
     if (found != s.textureIndex.end()) return found->second;
-    const assets::DecodedImage& decoded = loaded.images[texture.image];
+    const world::DecodedImage& decoded = loaded.images[texture.image];
     vk::ImageDesc desc;
     desc.format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
     desc.width = decoded.width;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "capture/capture.hpp"
+
 namespace onelight::bake::test {
 
 uint32_t addLambertMaterial(world::SourceLevel& level, float albedo) {
@@ -95,14 +97,31 @@ void addInwardSphere(world::SourceLevel& level, glm::vec3 centre, float radius, 
     instance.nodeName = "sphere";
     instance.meshName = "sphere";
     instance.material = material;
-    for (const glm::vec3& p : positions) {
+    for (size_t i = 0; i < positions.size(); ++i) {
         world::Vertex v;
-        v.position = p;
-        v.normal = glm::normalize(centre - p);
+        v.position = positions[i];
+        v.normal = glm::normalize(centre - positions[i]);
+        // Longitude and latitude: u around the axis, v from the +z pole.
+        v.uv0 = {float(i % row) / float(segments), float(i / row) / float(rings)};
         instance.vertices.push_back(v);
     }
     instance.indices = std::move(indices);
     level.instances.push_back(std::move(instance));
+}
+
+uint32_t addImageTexture(world::SourceLevel& level, const std::string& pngPath, uint32_t width,
+                         uint32_t height, const std::vector<uint8_t>& rgba,
+                         const world::Sampler& sampler) {
+    capture::writePng(pngPath, width, height, rgba);
+    world::Image image;
+    image.name = pngPath;
+    image.uri = pngPath;
+    level.images.push_back(image);
+    world::Texture texture;
+    texture.image = uint32_t(level.images.size() - 1);
+    texture.sampler = sampler;
+    level.textures.push_back(texture);
+    return uint32_t(level.textures.size() - 1);
 }
 
 world::Light pointLight(glm::vec3 position, float candela, world::LightRole role) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -24,6 +25,12 @@ void addBox(world::SourceLevel& level, glm::vec3 lo, glm::vec3 hi, uint32_t mate
 /// UV sphere with faces looking inward.
 void addInwardSphere(world::SourceLevel& level, glm::vec3 centre, float radius, uint32_t rings,
                      uint32_t segments, uint32_t material);
+
+/// Writes `rgba` (8-bit, width x height, top row first) as a PNG at `pngPath` and adds an image
+/// and a texture reading it through `sampler`; returns the texture's index.
+uint32_t addImageTexture(world::SourceLevel& level, const std::string& pngPath, uint32_t width,
+                         uint32_t height, const std::vector<uint8_t>& rgba,
+                         const world::Sampler& sampler = {});
 
 world::Light pointLight(glm::vec3 position, float candela, world::LightRole role);
 world::Light spotLight(glm::vec3 position, glm::vec3 direction, float candela, float inner,

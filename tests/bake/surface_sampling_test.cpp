@@ -17,12 +17,8 @@
 namespace onelight::bake {
 namespace {
 
-world::Material material(float albedo, float f0, float gloss) {
-    world::Material m;
-    m.albedo = glm::vec3(albedo);
-    m.specularColor = glm::vec3(f0);
-    m.gloss = gloss;
-    return m;
+Bsdf material(float albedo, float f0, float gloss) {
+    return {glm::vec3(albedo), glm::vec3(f0), gloss};
 }
 
 glm::vec3 viewAt(float mu) {
@@ -60,7 +56,7 @@ TEST(SurfaceSampling, MeanWeightIsTheDirectionalAlbedo) {
             for (const float gloss : {0.0f, 0.5f, 0.9f, 1.0f})
                 for (const float mu : {1.0f, 0.5f, 0.1f, 0.02f}) {
                     if (albedo == 0.0f && f0 == 0.0f) continue;
-                    const world::Material m = material(albedo, f0, gloss);
+                    const Bsdf m = material(albedo, f0, gloss);
                     const glm::vec3 v = viewAt(mu);
                     const Moments w = moments(
                         kDraws, [&](Rng& rng) { return sampleSurface(m, n, v, rng).weight.y; });
@@ -82,7 +78,7 @@ TEST(SurfaceSampling, DensityIntegratesToTheProbabilityAboveTheHorizon) {
     const glm::vec3 n(0.0f, 0.0f, 1.0f);
     for (const float gloss : {0.3f, 0.6f})
         for (const float mu : {0.9f, 0.2f}) {
-            const world::Material m = material(0.3f, 0.04f, gloss);
+            const Bsdf m = material(0.3f, 0.04f, gloss);
             const glm::vec3 v = viewAt(mu);
             constexpr int kCos = 4000, kPhi = 720;
             double integral = 0.0;
@@ -111,7 +107,7 @@ TEST(SurfaceSampling, DensityIntegratesToTheProbabilityAboveTheHorizon) {
 // sampling (the old continuation) is orders of magnitude above the mixture's.
 TEST(SurfaceSampling, MixtureTamesGlossyVariance) {
     const glm::vec3 n(0.0f, 0.0f, 1.0f);
-    const world::Material m = material(0.2f, 0.04f, 0.8f);
+    const Bsdf m = material(0.2f, 0.04f, 0.8f);
     const glm::vec3 v = viewAt(0.7f);
     const Moments mixture =
         moments(200000, [&](Rng& rng) { return sampleSurface(m, n, v, rng).weight.y; });

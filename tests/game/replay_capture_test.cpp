@@ -44,7 +44,7 @@ std::string playReplay(const std::string& name, const std::string& folder = "") 
 void expectGoldens(const std::string& replay, const std::vector<std::string>& captures) {
     std::string dir = playReplay(replay);
     for (const std::string& c : captures) {
-        const onelight::assets::DecodedImage png =
+        const onelight::world::DecodedImage png =
             onelight::capture::readPng(dir + "/" + c + ".png");
         ASSERT_TRUE(fs::exists(dir + "/" + c + ".exr")) << c;
         ASSERT_TRUE(fs::exists(dir + "/" + c + ".json")) << c;

@@ -77,7 +77,7 @@ TEST(LabCli, QuickReportWritesTablesCsvsAndPlots) {
         EXPECT_NE(text.str().find(std::string("| ") + model + " |"), std::string::npos) << model;
     for (const char* png : {"models_cost_vs_error.png", "models_cost_vs_albedo_error.png",
                             "env_cost_vs_error.png", "albedo_gloss05.png"}) {
-        const onelight::assets::DecodedImage image =
+        const onelight::world::DecodedImage image =
             onelight::capture::readPng((dir / png).string());
         EXPECT_EQ(image.width, 960u);
         EXPECT_EQ(image.height, 600u);

@@ -322,7 +322,7 @@ TEST(ProbePlacement, AFlatLevelsProbesFloatAboveIt) {
 
 TEST(ProbePlacement, AnEmptyLevelGetsOneProbeAtTheCentre) {
     EmbreeDevice device;
-    const BakeScene scene(device, world::StaticGeometry{}, {});
+    const BakeScene scene(device, world::StaticGeometry{}, std::vector<world::Material>{});
     world::CompiledLevel level;
     level.settings.boundsMin = glm::vec3(-2.0f);
     level.settings.boundsMax = glm::vec3(4.0f);

@@ -35,7 +35,7 @@ TEST(PackageImages, ImageReferencesFollowThePackageFromAnyWorkingFolder) {
         ASSERT_EQ(std::system(line.c_str()), 0) << line;
         const assets::LoadedLevel level = assets::loadLevel(package.string());
         ASSERT_FALSE(level.images.empty());
-        for (const assets::DecodedImage& image : level.images) EXPECT_GT(image.width, 0u);
+        for (const world::DecodedImage& image : level.images) EXPECT_GT(image.width, 0u);
     }
 }
 

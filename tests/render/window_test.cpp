@@ -45,8 +45,8 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
     const test::ProcessResult h = test::runProcess(ONELIGHT_ONELIGHT_PATH, headless);
     ASSERT_EQ(h.exitCode, 0) << h.stderrText;
 
-    const assets::DecodedImage windowShot = capture::readPng(dir + "/windowed_window.png");
-    const assets::DecodedImage headlessShot = capture::readPng(dir + "/headless.png");
+    const world::DecodedImage windowShot = capture::readPng(dir + "/windowed_window.png");
+    const world::DecodedImage headlessShot = capture::readPng(dir + "/headless.png");
     ASSERT_EQ(windowShot.width, headlessShot.width);
     ASSERT_EQ(windowShot.height, headlessShot.height);
     const std::vector<uint8_t>& screenshot = windowShot.rgba;

@@ -27,7 +27,7 @@ GoldenResult compareWithGolden(const std::vector<uint8_t>& rgba8, uint32_t width
     if (!std::filesystem::exists(goldenPath))
         return {false,
                 goldenPath + ": no golden (run with ONELIGHT_UPDATE_GOLDENS=1 to create it)"};
-    const assets::DecodedImage golden = capture::readPng(goldenPath);
+    const world::DecodedImage golden = capture::readPng(goldenPath);
     const uint32_t w = golden.width, h = golden.height;
     const std::vector<uint8_t>& expected = golden.rgba;
     if (w != width || h != height)

@@ -133,17 +133,14 @@ void main() {
     if (ALPHA_MASK == 1 && base.a < m.emissive.a) discard;
 
     // Material parameters per texel (shaders/material.glsl), by class.
-    float metallic = m.params.x;
-    float roughness = m.params.y;
-    if (MATERIAL_CLASS != MATERIAL_LAMBERT && hasTexture(m, TEXTURE_METALLIC_ROUGHNESS)) {
-        vec4 mr = texture(metallicRoughnessTexture, inUv0);
-        roughness *= mr.g;
-        metallic *= mr.b;
-    }
-    vec3 albedo = albedo_fromMetallic(base.rgb, metallic);
-    vec3 f0 = MATERIAL_CLASS == MATERIAL_DIELECTRIC ? vec3(m.f0Gloss.x)
-                                                    : specularColor_fromMetallic(base.rgb, metallic);
-    float gloss = gloss_fromRoughness(roughness);
+    vec2 mr = vec2(m.params.x, m.params.y);
+    if (hasTexture(m, TEXTURE_METALLIC_ROUGHNESS))
+        mr = metallicRoughness_fromTexel(MATERIAL_CLASS, mr.x, mr.y,
+                                         texture(metallicRoughnessTexture, inUv0));
+    MaterialPoint point = materialPoint(MATERIAL_CLASS, base.rgb, mr.x, mr.y, m.f0Gloss.x);
+    vec3 albedo = point.albedo;
+    vec3 f0 = point.f0;
+    float gloss = point.gloss;
 
     vec3 p = inWorldPosition;
     vec3 geometricNormal = normalize(inNormal);
@@ -193,7 +190,8 @@ void main() {
     // de-normalised by the same irradiance (shaders/probe.glsl, "Normalization").
     vec3 irradiance = secondaryIrradiance(n);
     float ao = 1.0;
-    if (hasTexture(m, TEXTURE_OCCLUSION)) ao = 1.0 + m.params.w * (texture(occlusionTexture, inUv0).r - 1.0);
+    if (hasTexture(m, TEXTURE_OCCLUSION))
+        ao = occlusion_fromTexel(texture(occlusionTexture, inUv0).r, m.params.w);
     float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
     vec3 probeSample = vec3(0.0);
     vec2 env = vec2(0.0);

@@ -1,0 +1,63 @@
+#include "bake/materials/scene_materials.hpp"
+
+#include <map>
+#include <string>
+#include <utility>
+
+#include "world/error.hpp"
+
+namespace onelight::bake {
+
+SceneMaterials factorMaterials(std::vector<world::Material> materials) {
+    SceneMaterials out;
+    out.textureSets.resize(materials.size());
+    out.materials = std::move(materials);
+    return out;
+}
+
+SceneMaterials loadSceneMaterials(const world::SourceLevel& level) {
+    SceneMaterials out = factorMaterials(level.materials);
+    std::map<uint32_t, world::DecodedImage> decoded;     // by image index
+    std::map<std::pair<uint32_t, bool>, uint32_t> made;  // (texture, sRGB) -> textures
+    auto image = [&](uint32_t index) -> const world::DecodedImage& {
+        auto found = decoded.find(index);
+        if (found != decoded.end()) return found->second;
+        const world::Image& source = level.images.at(index);
+        const std::string where =
+            level.sourcePath + ": image " + std::to_string(index) + " '" + source.name + "'";
+        world::DecodedImage pixels =
+            source.encodedBytes.empty()
+                ? world::readImageFile(source.uri)
+                : world::decodeImage(source.encodedBytes.data(), source.encodedBytes.size(), where);
+        return decoded.emplace(index, std::move(pixels)).first->second;
+    };
+    auto texture = [&](uint32_t index, bool srgb) -> uint32_t {
+        if (index == world::kNoIndex || index >= level.textures.size()) return world::kNoIndex;
+        const world::Texture& t = level.textures[index];
+        if (t.image == world::kNoIndex || t.image >= level.images.size()) return world::kNoIndex;
+        auto found = made.find({index, srgb});
+        if (found != made.end()) return found->second;
+        out.textures.push_back(makeBakeTexture(image(t.image), srgb, t.sampler));
+        const uint32_t slot = uint32_t(out.textures.size() - 1);
+        made[{index, srgb}] = slot;
+        return slot;
+    };
+    for (size_t m = 0; m < out.materials.size(); ++m) {
+        const world::Material& material = out.materials[m];
+        MaterialTextureSet& set = out.textureSets[m];
+        set.baseColor = texture(material.baseColorTexture, true);
+        set.metallicRoughness = texture(material.metallicRoughnessTexture, false);
+        set.normal = texture(material.normalTexture, false);
+        set.occlusion = texture(material.occlusionTexture, false);
+        set.emissive = texture(material.emissiveTexture, true);
+    }
+    return out;
+}
+
+uint64_t textureBytes(const SceneMaterials& materials) {
+    uint64_t bytes = 0;
+    for (const BakeTexture& t : materials.textures) bytes += textureBytes(t);
+    return bytes;
+}
+
+}  // namespace onelight::bake

@@ -1,0 +1,43 @@
+// The materials of a bake: the level's materials with their textures decoded and mip-mapped
+// once (bake_textures.hpp), so that every ray hit can be shaded as the runtime shades a pixel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bake/materials/bake_textures.hpp"
+#include "world/compiled_level.hpp"
+#include "world/source_level.hpp"
+
+namespace onelight::bake {
+
+/// Which of SceneMaterials::textures a material reads for each glTF slot (kNoIndex: none).
+struct MaterialTextureSet {
+    uint32_t baseColor = world::kNoIndex;          // sRGB
+    uint32_t metallicRoughness = world::kNoIndex;  // linear
+    uint32_t normal = world::kNoIndex;             // linear
+    uint32_t occlusion = world::kNoIndex;          // linear
+    uint32_t emissive = world::kNoIndex;           // sRGB
+    [[nodiscard]] bool any() const {
+        return (baseColor & metallicRoughness & normal & occlusion & emissive) != world::kNoIndex;
+    }
+};
+
+struct SceneMaterials {
+    std::vector<world::Material> materials;
+    std::vector<MaterialTextureSet> textureSets;  // per material
+    std::vector<BakeTexture> textures;            // one per (glTF texture, colour space) used
+};
+
+/// The materials alone, shaded with their factors (no textures).
+[[nodiscard]] SceneMaterials factorMaterials(std::vector<world::Material> materials);
+
+/// The level's materials with every texture they use decoded: images embedded in the glTF or
+/// read from their files (uri as the importer resolved it). Throws world::Error naming an image
+/// that cannot be read or decoded.
+[[nodiscard]] SceneMaterials loadSceneMaterials(const world::SourceLevel& level);
+
+/// Bytes the decoded textures hold.
+[[nodiscard]] uint64_t textureBytes(const SceneMaterials& materials);
+
+}  // namespace onelight::bake

@@ -1,0 +1,102 @@
+#include "bake/materials/surface_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shading.hpp"
+
+namespace onelight::bake {
+namespace {
+
+// The level of detail of `texture` for a footprint of `width` metres (already divided by the
+// cosine) on a triangle of uv density `uvDensityLog2`: log2 of the texels the footprint covers
+// (Akenine-Moller et al. 2019, Ray Tracing Gems ch. 20, eq. 20.4, with the triangle's texel
+// density 0.5 log2(texels * uv area / world area)).
+float lodOf(const BakeTexture& texture, float width, float uvDensityLog2) {
+    if (!(width > 0.0f)) return 0.0f;
+    return std::log2(width) + uvDensityLog2 +
+           0.5f * std::log2(float(texture.width) * float(texture.height));
+}
+
+glm::vec4 texel(const SceneMaterials& materials, uint32_t index, const SurfaceAttributes& a,
+                float width) {
+    if (index == world::kNoIndex) return glm::vec4(1.0f);
+    const BakeTexture& t = materials.textures[index];
+    return sampleTexture(t, a.uv, lodOf(t, width, a.uvDensityLog2));
+}
+
+}  // namespace
+
+Bsdf factorBsdf(const world::Material& material) {
+    // The compiled factors (materialPoint of the glTF factors), with the terms the material's
+    // class keeps: a Lambert-only material no specular, a metal no diffuse (materialPoint).
+    Bsdf b{material.albedo, material.specularColor, material.gloss};
+    if (material.materialClass == world::MaterialClass::kLambert) b.specularColor = glm::vec3(0.0f);
+    if (material.materialClass == world::MaterialClass::kMetal) b.albedo = glm::vec3(0.0f);
+    return b;
+}
+
+MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material,
+                              const SurfaceAttributes& a, const glm::vec3& geometricNormal,
+                              bool backFace, float footprint, float cosine) {
+    static const world::Material kDefault;
+    const bool known = material < materials.materials.size();
+    const world::Material& m = known ? materials.materials[material] : kDefault;
+    MaterialSample s;
+    s.shadingNormal = geometricNormal;
+    const bool emits = !backFace || m.doubleSided;
+    if (!known || !materials.textureSets[material].any()) {
+        s.bsdf = factorBsdf(m);
+        s.emission = emits ? m.emissive : glm::vec3(0.0f);
+        s.alpha = m.baseColor.w;
+        // Smooth shading: the interpolated vertex normal, on the ray's side, as the shader.
+        const float length2 = glm::dot(a.normal, a.normal);
+        if (length2 > 1e-12f)
+            s.shadingNormal = (backFace ? -a.normal : a.normal) / std::sqrt(length2);
+        return s;
+    }
+    const MaterialTextureSet& set = materials.textureSets[material];
+    const float width = footprint / std::max(std::fabs(cosine), 1e-3f);
+    const glm::vec4 base = m.baseColor * texel(materials, set.baseColor, a, width);
+    const glm::vec2 mr =
+        glsl::metallicRoughness_fromTexel(int(m.materialClass), m.metallic, m.roughness,
+                                          set.metallicRoughness == world::kNoIndex
+                                              ? glm::vec4(1.0f)
+                                              : texel(materials, set.metallicRoughness, a, width));
+    const glsl::MaterialPoint point =
+        glsl::materialPoint(int(m.materialClass), glm::vec3(base), mr.x, mr.y, m.specularColor.x);
+    s.bsdf = {point.albedo, point.f0, point.gloss};
+    s.alpha = base.w;
+    if (set.occlusion != world::kNoIndex)
+        s.occlusion =
+            std::clamp(glsl::occlusion_fromTexel(texel(materials, set.occlusion, a, width).x,
+                                                 m.occlusionStrength),
+                       0.0f, 1.0f);
+    if (emits) s.emission = m.emissive * glm::vec3(texel(materials, set.emissive, a, width));
+
+    // The normal as forward.frag builds it: the interpolated normal (flipped on a back face),
+    // the tangent made orthogonal to it, the map's texel in that frame.
+    glm::vec3 n = geometricNormal;
+    const float length2 = glm::dot(a.normal, a.normal);
+    if (length2 > 1e-12f) n = (backFace ? -a.normal : a.normal) / std::sqrt(length2);
+    if (set.normal != world::kNoIndex) {
+        const glm::vec3 tangent(a.tangent);
+        const glm::vec3 t = tangent - n * glm::dot(n, tangent);
+        const float tl = glm::length(t);
+        if (tl > 1e-6f)
+            n = glsl::normal_fromTangentSpace(glm::vec3(texel(materials, set.normal, a, width)),
+                                              m.normalScale, n, t / tl, a.tangent.w);
+    }
+    s.shadingNormal = n;
+    return s;
+}
+
+float sampleAlpha(const SceneMaterials& materials, uint32_t material, glm::vec2 uv) {
+    if (material >= materials.materials.size()) return 1.0f;
+    const world::Material& m = materials.materials[material];
+    const uint32_t base = materials.textureSets[material].baseColor;
+    if (base == world::kNoIndex) return m.baseColor.w;
+    return m.baseColor.w * sampleTexture(materials.textures[base], uv, 0.0f).w;
+}
+
+}  // namespace onelight::bake

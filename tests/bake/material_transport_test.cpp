@@ -1,0 +1,179 @@
+// The light transport sees the real material: textures reach every ray hit of the reference path
+// tracer and of the baker's bounces (bake/materials), against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "bake/embree/bake_scene.hpp"
+#include "bake/reference/path_tracer.hpp"
+#include "bake_scenes.hpp"
+#include "world/compile/static_split.hpp"
+
+namespace onelight::bake {
+namespace {
+
+std::string outputFolder() {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "onelight_materials";
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+// IEC 61966-2-1, the linear value of an 8-bit sRGB code.
+float linearOf(uint8_t code) {
+    const float c = float(code) / 255.0f;
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+// An 8x8 checker of 2x2-texel blocks, codes `a` and `b` (grey).
+std::vector<uint8_t> checker(uint8_t a, uint8_t b) {
+    std::vector<uint8_t> rgba;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const uint8_t c = ((x / 2 + y / 2) % 2) ? b : a;
+            rgba.insert(rgba.end(), {c, c, c, 255});
+        }
+    return rgba;
+}
+
+constexpr uint8_t kLight = 220, kDark = 50;
+
+// A 2 x 2 m Lambert plane at y = 0 whose uv covers [0, 1]^2 once (u along +x, v along +z),
+// textured with the checker, under a uniform sky; a camera 2 m above looks straight down.
+world::SourceLevel checkerPlane(float sky) {
+    world::SourceLevel level;
+    const uint32_t m = test::addLambertMaterial(level, 1.0f);
+    world::Sampler nearest;
+    nearest.magFilter = 9728;
+    level.materials[m].baseColorTexture = test::addImageTexture(
+        level, outputFolder() + "/checker.png", 8, 8, checker(kLight, kDark), nearest);
+    world::MeshInstance plane;
+    plane.nodeName = plane.meshName = "plane";
+    plane.material = m;
+    for (int i = 0; i < 4; ++i) {
+        world::Vertex v;
+        const float x = (i == 1 || i == 2) ? 1.0f : -1.0f, z = (i >= 2) ? 1.0f : -1.0f;
+        v.position = {x, 0.0f, z};
+        v.normal = {0.0f, 1.0f, 0.0f};
+        v.uv0 = {0.5f * (x + 1.0f), 0.5f * (z + 1.0f)};
+        plane.vertices.push_back(v);
+    }
+    plane.indices = {0, 2, 1, 0, 3, 2};  // counter-clockwise seen from +y
+    level.instances.push_back(plane);
+    world::Camera camera;
+    camera.name = "down";
+    camera.position = {0.0f, 2.0f, 0.0f};
+    camera.rotation = glm::angleAxis(-0.5f * 3.14159265f, glm::vec3(1.0f, 0.0f, 0.0f));
+    camera.yfov = 0.8f;
+    level.cameras.push_back(camera);
+    level.skyRadiance = glm::vec3(sky);
+    return level;
+}
+
+// The checker's linear albedo at plane point (x, z), or -1 within `margin` (uv) of a block edge.
+float checkerAlbedoAt(float x, float z, float margin) {
+    const float u = 0.5f * (x + 1.0f), v = 0.5f * (z + 1.0f);
+    const float bu = u * 4.0f, bv = v * 4.0f;  // 4 x 4 blocks
+    const auto nearEdge = [&](float b) {
+        const float f = b - std::floor(b);
+        return f < margin * 4.0f || f > 1.0f - margin * 4.0f;
+    };
+    if (u <= 0.0f || u >= 1.0f || v <= 0.0f || v >= 1.0f || nearEdge(bu) || nearEdge(bv))
+        return -1.0f;
+    return linearOf(((int(bu) + int(bv)) % 2) ? kDark : kLight);
+}
+
+// Under a uniform sky L an open Lambert plane reflects albedo x L (every path escapes after its
+// first bounce, so each sample is exact): the reference shows each checker texel's albedo x L,
+// and the lightmap's irradiance stays pi L: the texture reaches the frame through the
+// renderer, not through the bake.
+TEST(MaterialTransport, ACheckerUnderAUniformSkyShowsEachTexelsAlbedo) {
+    const float sky = 1000.0f;
+    const world::SourceLevel level = checkerPlane(sky);
+    const EmbreeDevice device;
+    const world::SplitLevel split = world::splitStaticDynamic(level);
+    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
+    const BakeLights lights = makeBakeLights(level.lights, {}, level.skyRadiance);
+    RayCounts rays;
+    const uint32_t size = 64;
+    const ReferenceImage image =
+        renderReference(scene, lights, level.cameras[0], size, size, 4, {}, nullptr, rays);
+    const glm::mat3 rotation = glm::mat3_cast(level.cameras[0].rotation);
+    const float tanHalf = std::tan(0.5f * level.cameras[0].yfov);
+    int checked[2] = {0, 0};
+    for (uint32_t y = 0; y < size; ++y)
+        for (uint32_t x = 0; x < size; ++x) {
+            const float sx = (float(x) + 0.5f) / float(size) * 2.0f - 1.0f;
+            const float sy = 1.0f - (float(y) + 0.5f) / float(size) * 2.0f;
+            const glm::vec3 d = rotation * glm::vec3(sx * tanHalf, sy * tanHalf, -1.0f);
+            const glm::vec3 p = level.cameras[0].position + d * (2.0f / -d.y);
+            // A pixel spans 2 tan(0.4) 2 / 64 = 0.053 m = 0.013 uv: stay 0.02 uv inside blocks.
+            const float albedo = checkerAlbedoAt(p.x, p.z, 0.02f);
+            if (albedo < 0.0f) continue;
+            const float rendered = image.rgb[(size_t(y) * size + x) * 3];
+            ASSERT_NEAR(rendered, albedo * sky, 0.01f * albedo * sky) << "pixel " << x << ", " << y;
+            ++checked[albedo > 0.5f ? 1 : 0];
+        }
+    EXPECT_GT(checked[0], 200);
+    EXPECT_GT(checked[1], 200);
+
+    BakeOptions options = test::testOptions(8.0f);
+    options.indirectSamples = 64;
+    const BakeResult baked = bakeLevel(level, options);
+    ASSERT_FALSE(baked.baked.texels.empty());
+    int sampled = 0;
+    for (const world::LightmapTexel& t : baked.baked.texels) {
+        if (!(t.flags & world::kLightmapTexelSampled)) continue;
+        ASSERT_NEAR(t.irradiance.x, 3.14159265f * sky, 0.01f * 3.14159265f * sky);
+        ++sampled;
+    }
+    EXPECT_GT(sampled, 100);
+}
+
+// An integrating sphere: a closed Lambert sphere with a point light at its centre. Direct light
+// E_d = I / R^2 lands evenly, and every reflection spreads evenly over a Lambert sphere, so the
+// irradiance anywhere is E_d (1 + rho + rho^2 + ...) = E_d / (1 - rho) with rho the wall's
+// mean albedo. The wall is textured with stripes of two albedos: only their mean makes the
+// closed form (the material's factor, white, would not converge at all).
+TEST(MaterialTransport, AnIntegratingSphereSeesItsTexturesMeanAlbedo) {
+    world::SourceLevel level;
+    const uint32_t m = test::addLambertMaterial(level, 1.0f);
+    std::vector<uint8_t> stripes;
+    const uint8_t codes[2] = {240, 150};
+    for (int x = 0; x < 16; ++x)
+        stripes.insert(stripes.end(), {codes[x % 2], codes[x % 2], codes[x % 2], 255});
+    level.materials[m].baseColorTexture =
+        test::addImageTexture(level, outputFolder() + "/stripes.png", 16, 1, stripes);
+    const float radius = 2.0f, candela = 100.0f;
+    test::addInwardSphere(level, glm::vec3(0.0f), radius, 64, 128, m);
+    level.lights.push_back(test::pointLight(glm::vec3(0.0f), candela, world::LightRole::kBaked));
+    const EmbreeDevice device;
+    const world::SplitLevel split = world::splitStaticDynamic(level);
+    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
+    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    TransportSettings transport;
+    transport.maxDepth = 200;
+    RayCounts rays;
+    const double rho = 0.5 * (double(linearOf(codes[0])) + double(linearOf(codes[1])));
+    // A point 2 cm inside the wall, looking in: the direct light there is I / d^2 (the light
+    // straight ahead), the indirect light the wall's, uniform inside the sphere.
+    const float phi = 2.0f * 3.14159265f * 0.5f / 128.0f;
+    const float theta = 3.14159265f * 32.5f / 64.0f;
+    const glm::vec3 out(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                        std::cos(theta));
+    const float d = 0.99f * radius;
+    const glm::vec3 e =
+        referenceIrradiance(scene, lights, out * d, -out, 40000, 7, transport, rays);
+    const double wall = double(candela) / (double(radius) * double(radius));
+    const double expected = double(candela) / (double(d) * double(d)) + wall * rho / (1.0 - rho);
+    std::printf(
+        "[ sphere ] mean albedo %.4f: irradiance %.3f lux, closed form %.3f (the white "
+        "factor alone: unbounded)\n",
+        rho, double(e.x), expected);
+    EXPECT_NEAR(double(e.x), expected, 0.02 * expected);
+}
+
+}  // namespace
+}  // namespace onelight::bake

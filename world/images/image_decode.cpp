@@ -1,0 +1,89 @@
+#include "world/images/image_decode.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "world/error.hpp"
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#define STBI_ONLY_JPEG
+#define STBI_ONLY_HDR
+#define STBI_FAILURE_USERMSG
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wdouble-promotion"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#include <stb_image.h>
+#pragma GCC diagnostic pop
+
+namespace onelight::world {
+
+namespace {
+
+// The bytes of a regular file (not a FIFO or a device, which could block or never end).
+std::vector<uint8_t> readRegularFile(const std::string& path, const char* expected) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(path + ": cannot open; expected " + expected);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open; expected " + expected);
+    return std::vector<uint8_t>((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
+}
+
+void checkExtent(int width, int height, const std::string& where) {
+    if (width <= 0 || height <= 0 || uint32_t(width) > kMaxImageExtent ||
+        uint32_t(height) > kMaxImageExtent)
+        throw Error(where + ": image of " + std::to_string(width) + "x" + std::to_string(height) +
+                    "; expected 1.." + std::to_string(kMaxImageExtent) + " texels a side");
+}
+
+}  // namespace
+
+DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where) {
+    if (size == 0 || size > size_t(1) << 30) throw Error(where + ": empty or oversized image data");
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
+        throw Error(where + ": not a decodable PNG/JPEG image (" + stbi_failure_reason() + ")");
+    checkExtent(width, height, where);
+    stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
+    if (!pixels)
+        throw Error(where + ": not a decodable PNG/JPEG image (" + stbi_failure_reason() + ")");
+    DecodedImage out;
+    out.width = uint32_t(width);
+    out.height = uint32_t(height);
+    out.rgba.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
+    stbi_image_free(pixels);
+    return out;
+}
+
+DecodedImage readImageFile(const std::string& path) {
+    const std::vector<uint8_t> bytes = readRegularFile(path, "a PNG or JPEG file");
+    return decodeImage(bytes.data(), bytes.size(), path);
+}
+
+HdrImage readHdrFile(const std::string& path) {
+    const std::vector<uint8_t> bytes = readRegularFile(path, "a Radiance .hdr image");
+    int width = 0, height = 0, channels = 0;
+    if (bytes.empty() ||
+        !stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels))
+        throw Error(path + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
+    checkExtent(width, height, path);
+    float* pixels =
+        stbi_loadf_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 3);
+    if (!pixels) throw Error(path + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
+    HdrImage out;
+    out.width = uint32_t(width);
+    out.height = uint32_t(height);
+    out.rgb.assign(pixels, pixels + size_t(width) * size_t(height) * 3);
+    stbi_image_free(pixels);
+    for (float& v : out.rgb)
+        if (!(v >= 0.0f) || !std::isfinite(v)) v = 0.0f;  // no NaN or Inf reaches a texel
+    return out;
+}
+
+}  // namespace onelight::world
