@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -16,6 +17,61 @@ namespace {
 constexpr float kSelfIntersectionScale = 2e-5f;
 /// The offset never goes below this (metres), for levels near the origin.
 constexpr float kMinimumRayOffset = 1e-5f;
+
+bool alphaFiltered(const world::Material* material) {
+    return material != nullptr && material->alphaMode != world::AlphaMode::kOpaque;
+}
+
+uint32_t floatBits(float f) {
+    uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+/// MurmurHash3's 32-bit finaliser over a running combination: a well-mixed uniform in [0, 1)
+/// from the ray and the triangle, so a BLEND decision needs no random-number state.
+float coverageHash(uint32_t triangle, const glm::vec3& origin, const glm::vec3& dir) {
+    uint32_t h = 0x9E3779B9u ^ triangle;
+    for (float f : {origin.x, origin.y, origin.z, dir.x, dir.y, dir.z}) {
+        h ^= floatBits(f) + 0x9E3779B9u + (h << 6) + (h >> 2);
+        h ^= h >> 16;
+        h *= 0x85EBCA6Bu;
+        h ^= h >> 13;
+        h *= 0xC2B2AE35u;
+        h ^= h >> 16;
+    }
+    return float(h >> 8) * 0x1p-24f;
+}
+
+/// One Embree triangle geometry over all of `positions` with the triangles `triangles` of
+/// `indices`, attached to `scene`; its ID is returned.
+unsigned attachTriangles(RTCDevice device, RTCScene scene, const std::vector<glm::vec3>& positions,
+                         const std::vector<uint32_t>& indices,
+                         const std::vector<uint32_t>& triangles, RTCFilterFunctionN filter,
+                         void* user) {
+    RTCGeometry mesh = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // Embree reads 16 bytes at the last vertex: its own buffer has the slack.
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
+    for (size_t i = 0; i < positions.size(); ++i) {
+        vertices[3 * i] = positions[i].x;
+        vertices[3 * i + 1] = positions[i].y;
+        vertices[3 * i + 2] = positions[i].z;
+    }
+    auto* out = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+        mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles.size()));
+    for (size_t t = 0; t < triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k) out[3 * t + k] = indices[3 * size_t(triangles[t]) + k];
+    if (filter != nullptr) {
+        rtcSetGeometryUserData(mesh, user);
+        rtcSetGeometryIntersectFilterFunction(mesh, filter);
+        rtcSetGeometryOccludedFilterFunction(mesh, filter);
+    }
+    rtcCommitGeometry(mesh);
+    const unsigned id = rtcAttachGeometry(scene, mesh);
+    rtcReleaseGeometry(mesh);
+    return id;
+}
 
 }  // namespace
 
@@ -111,25 +167,24 @@ void BakeScene::build(const EmbreeDevice& device) {
     rayOffset_ = std::max(kMinimumRayOffset, kSelfIntersectionScale * magnitude);
     diameter_ = std::max(1.0f, 2.0f * glm::length(boundsMax_ - boundsMin_));
 
+    std::vector<uint32_t> opaque, filtered;
+    for (uint32_t t = 0; t < triangleCount; ++t) {
+        const uint32_t m = triangleMaterial_[t];
+        const bool alpha =
+            alphaFiltered(m < materials_.materials.size() ? &materials_.materials[m] : nullptr);
+        (alpha ? filtered : opaque).push_back(t);
+    }
     scene_ = rtcNewScene(device.handle());
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-    if (triangleCount > 0) {
-        RTCGeometry mesh = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
-        // Embree reads 16 bytes at the last vertex: the shared buffer gets one float of slack.
-        auto* vertices = static_cast<float*>(
-            rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                    3 * sizeof(float), positions_.size()));
-        for (size_t i = 0; i < positions_.size(); ++i) {
-            vertices[3 * i] = positions_[i].x;
-            vertices[3 * i + 1] = positions_[i].y;
-            vertices[3 * i + 2] = positions_[i].z;
-        }
-        auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangleCount));
-        std::copy(indices_.begin(), indices_.end(), triangles);
-        rtcCommitGeometry(mesh);
-        rtcAttachGeometry(scene_, mesh);
-        rtcReleaseGeometry(mesh);
+    // Geometry IDs follow attachment order; empty groups are not attached.
+    for (std::vector<uint32_t>* group : {&opaque, &filtered}) {
+        if (group->empty()) continue;
+        const unsigned id =
+            attachTriangles(device.handle(), scene_, positions_, indices_, *group,
+                            group == &filtered ? &alphaFilter : nullptr, this);
+        if (id != geometryTriangles_.size())
+            throw std::runtime_error("Embree: unexpected geometry ID " + std::to_string(id));
+        geometryTriangles_.push_back(std::move(*group));
     }
     rtcCommitScene(scene_);
     if (!device.lastError().empty()) throw std::runtime_error(device.lastError());
@@ -137,6 +192,38 @@ void BakeScene::build(const EmbreeDevice& device) {
 
 BakeScene::~BakeScene() {
     rtcReleaseScene(scene_);
+}
+
+bool BakeScene::coverageAccepts(uint32_t triangle, glm::vec2 barycentric,
+                                const glm::vec3& origin, const glm::vec3& dir) const {
+    const uint32_t m = triangleMaterial_[triangle];
+    if (m >= materials_.materials.size()) return true;
+    const world::Material& material = materials_.materials[m];
+    if (material.alphaMode == world::AlphaMode::kOpaque) return true;
+    SurfaceHit at;
+    at.triangle = triangle;
+    at.barycentric = barycentric;
+    const float alpha = sampleAlpha(materials_, m, attributesAt(at).uv);
+    if (material.alphaMode == world::AlphaMode::kMask) return alpha >= material.alphaCutoff;
+    return coverageHash(triangle, origin, dir) < alpha;
+}
+
+void BakeScene::alphaFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* self = static_cast<const BakeScene*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const uint32_t triangle = self->geometryTriangles_[RTCHitN_geomID(args->hit, args->N, i)]
+                                                          [RTCHitN_primID(args->hit, args->N, i)];
+        const glm::vec2 barycentric(RTCHitN_u(args->hit, args->N, i),
+                                    RTCHitN_v(args->hit, args->N, i));
+        const glm::vec3 origin(RTCRayN_org_x(args->ray, args->N, i),
+                               RTCRayN_org_y(args->ray, args->N, i),
+                               RTCRayN_org_z(args->ray, args->N, i));
+        const glm::vec3 dir(RTCRayN_dir_x(args->ray, args->N, i),
+                            RTCRayN_dir_y(args->ray, args->N, i),
+                            RTCRayN_dir_z(args->ray, args->N, i));
+        if (!self->coverageAccepts(triangle, barycentric, origin, dir)) args->valid[i] = 0;
+    }
 }
 
 const world::Material& BakeScene::materialOf(uint32_t triangle) const {
@@ -162,6 +249,7 @@ size_t BakeScene::memoryBytes() const {
     return positions_.size() * sizeof(glm::vec3) + indices_.size() * sizeof(uint32_t) +
            triangleNormal_.size() * sizeof(glm::vec3) + triangleMaterial_.size() * 4 +
            attributes_.size() * sizeof(VertexAttributes) + uvDensityLog2_.size() * sizeof(float) +
+           triangleMaterial_.size() * sizeof(uint32_t) +  // geometryTriangles_
            textureBytes(materials_);
 }
 
@@ -194,7 +282,7 @@ SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, f
     if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return hit;
     hit.found = true;
     hit.distance = query.ray.tfar;
-    hit.triangle = query.hit.primID;
+    hit.triangle = geometryTriangles_[query.hit.geomID][query.hit.primID];
     hit.normal = triangleNormal_[hit.triangle];
     // The hit point from the barycentrics (not origin + t dir): its error is relative to the
     // triangle's coordinates, not to the ray's length.

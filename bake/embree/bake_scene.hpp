@@ -74,6 +74,18 @@ struct TracedRay {
 using RayObserver = void (*)(void* user, const TracedRay& ray);
 
 /// The static world in Embree, plus the per-triangle data hits are shaded with.
+/*
+   Alpha: triangles of MASK and BLEND materials sit in a second Embree geometry whose filter
+   functions (intersect and occluded) see every candidate hit:
+     MASK   rejected where alpha(uv) < alphaCutoff (glTF), for every ray: the holes of a grate
+            let light and view rays through;
+     BLEND  accepted with probability alpha(uv), decided by a hash of the ray and the triangle
+            (stochastic coverage): on average a fraction 1 - alpha goes through, so shadows
+            and views through the surface see it as a transmitter of (1 - alpha) without
+            refraction. The hash makes the decision the same on every thread and every call
+            (Embree may test a primitive twice under spatial splits).
+   Opaque triangles stay in the first geometry, with no filter, at full Embree speed.
+*/
 class BakeScene {
 public:
     /// Builds from the static triangles of a level (world space), shaded with `materials`
@@ -123,14 +135,21 @@ public:
     uint32_t triangleCount() const { return static_cast<uint32_t>(triangleMaterial_.size()); }
     size_t memoryBytes() const;
 
+    /// Whether the alpha filter lets a ray (origin, dir) hit `triangle` at `barycentric`.
+    [[nodiscard]] bool coverageAccepts(uint32_t triangle, glm::vec2 barycentric,
+                                       const glm::vec3& origin, const glm::vec3& dir) const;
+
 private:
     void build(const EmbreeDevice& device);
+    static void alphaFilter(const RTCFilterFunctionNArguments* args);
 
     RTCScene scene_ = nullptr;  // owned
     std::vector<glm::vec3> positions_;
     std::vector<uint32_t> indices_;           // 3 per triangle
     std::vector<glm::vec3> triangleNormal_;   // unit, from the winding
     std::vector<uint32_t> triangleMaterial_;  // into materials_
+    // Embree geometry ID -> primID -> triangle: the opaque group, then the alpha-filtered.
+    std::vector<std::vector<uint32_t>> geometryTriangles_;
     SceneMaterials materials_;
     world::Material defaultMaterial_;
     struct VertexAttributes {

@@ -1,0 +1,296 @@
+// Alpha in the light transport (bake/embree/bake_scene.hpp): a MASK grate lets shadow rays, view
+// rays and the light grid's visibility rays through its holes, and a BLEND sheet transmits
+// 1 - alpha, against the grate's geometry traced by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "bake/embree/bake_scene.hpp"
+#include "bake/lightmap/texel_placement.hpp"
+#include "bake/reference/path_tracer.hpp"
+#include "bake_scenes.hpp"
+#include "world/compile/static_split.hpp"
+
+namespace onelight::bake {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+std::string outputFolder() {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "onelight_alpha";
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+// The grate's alpha texture: 8 x 8 texels of 4 x 4 cells, each a 2 x 2 hole (alpha 0) framed
+// by two-texel bars (alpha 1) on its low sides: open fraction 1 / 4.
+constexpr double kOpenFraction = 1.0 / 4.0;
+std::vector<uint8_t> grateTexture() {
+    std::vector<uint8_t> rgba;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const bool bar = x % 4 < 2 || y % 4 < 2;
+            rgba.insert(rgba.end(), {255, 255, 255, uint8_t(bar ? 255 : 0)});
+        }
+    return rgba;
+}
+
+// Grate: 2 x 2 m at y = kGrateHeight, uv = 2 (x + 1), 2 (z + 1): the texture repeats every
+// 0.5 m, so a texel is 1/16 m and the hole pattern's period 0.25 m.
+constexpr float kGrateHeight = 1.0f;
+constexpr glm::vec3 kLight{0.0f, 3.0f, 0.0f};
+constexpr float kCandela = 100.0f, kFloorAlbedo = 0.5f;
+
+// Whether grate point (x, z) is open (1), a bar (0), or within `margin` texels of an edge or
+// outside the grate (-1).
+int grateOpenAt(float x, float z, float margin) {
+    if (std::fabs(x) >= 1.0f || std::fabs(z) >= 1.0f) return -1;
+    int open = 1;
+    for (float c : {x, z}) {
+        const float texel = 16.0f * (c + 1.0f);        // texel coordinate along the grate
+        const float inCell = texel - 4.0f * std::floor(texel / 4.0f);  // [0, 4): bar is [0, 2)
+        for (float edge : {0.0f, 2.0f, 4.0f})
+            if (std::fabs(inCell - edge) < margin) return -1;
+        if (inCell < 2.0f) open = 0;
+    }
+    return open;
+}
+
+// Where the segment from the light to floor/space point p crosses the grate's plane.
+glm::vec3 grateCrossing(const glm::vec3& from, const glm::vec3& p) {
+    return from + (p - from) * ((from.y - kGrateHeight) / (from.y - p.y));
+}
+
+// A 3 x 3 m Lambert floor at y = 0 under the grate, a primary point light above both.
+world::SourceLevel grateLevel(world::AlphaMode mode, float blendAlpha) {
+    world::SourceLevel level;
+    const uint32_t floor = test::addLambertMaterial(level, kFloorAlbedo);
+    test::addQuad(level, {-1.5f, 0.0f, 1.5f}, {1.5f, 0.0f, 1.5f}, {1.5f, 0.0f, -1.5f},
+                  {-1.5f, 0.0f, -1.5f}, floor, "floor");
+    const uint32_t grate = test::addLambertMaterial(level, 0.0f);
+    world::Material& g = level.materials[grate];
+    g.alphaMode = mode;
+    g.doubleSided = true;
+    if (mode == world::AlphaMode::kMask) {
+        world::Sampler nearest;
+        nearest.magFilter = 9728;
+        g.baseColorTexture = test::addImageTexture(level, outputFolder() + "/grate.png", 8, 8,
+                                                   grateTexture(), nearest);
+    } else {
+        g.baseColor.w = blendAlpha;
+    }
+    world::MeshInstance mesh;
+    mesh.nodeName = mesh.meshName = "grate";
+    mesh.material = grate;
+    for (int i = 0; i < 4; ++i) {
+        world::Vertex v;
+        const float x = (i == 1 || i == 2) ? 1.0f : -1.0f, z = (i >= 2) ? 1.0f : -1.0f;
+        v.position = {x, kGrateHeight, z};
+        v.normal = {0.0f, 1.0f, 0.0f};
+        v.uv0 = {2.0f * (x + 1.0f), 2.0f * (z + 1.0f)};
+        mesh.vertices.push_back(v);
+    }
+    mesh.indices = {0, 2, 1, 0, 3, 2};
+    level.instances.push_back(mesh);
+    level.lights.push_back(test::pointLight(kLight, kCandela, world::LightRole::kPrimary));
+    world::Camera camera;
+    camera.name = "down";
+    camera.position = {0.0f, 2.5f, 0.0f};
+    camera.rotation = glm::angleAxis(-0.5f * kPi, glm::vec3(1.0f, 0.0f, 0.0f));
+    camera.yfov = 0.8f;
+    level.cameras.push_back(camera);
+    return level;
+}
+
+// The floor's unshadowed radiance at p: albedo / pi x I cos / d^2.
+float floorRadiance(const glm::vec3& p) {
+    const glm::vec3 toLight = kLight - p;
+    const float d2 = glm::dot(toLight, toLight);
+    return kFloorAlbedo / kPi * kCandela * (toLight.y / std::sqrt(d2)) / d2;
+}
+
+struct FloorTexel {
+    glm::vec3 position;
+    float mask;  // the baked shadow mask, [0, 1]
+};
+
+std::vector<FloorTexel> floorTexels(const BakeResult& result) {
+    std::vector<FloorTexel> out;
+    for (const TexelSample& s : placeTexels(result.level)) {
+        if (!s.centreInside || s.normal.y < 0.99f || std::fabs(s.position.y) > 1e-3f) continue;
+        out.push_back({s.position, float(result.baked.shadowMask[s.texel]) / 255.0f});
+    }
+    return out;
+}
+
+BakeOptions grateOptions() {
+    BakeOptions options = test::testOptions(48.0f);
+    options.compile.charts.atlasSize = 1024;
+    options.shadowSamples = 16;
+    options.indirectSamples = 4;
+    options.gridSamples = 4;
+    options.gridCellSize = 0.05f;
+    options.probeSamples = 1;
+    options.probeFaceSize = 4;
+    return options;
+}
+
+// The floor region whose light paths cross the grate's central [-0.75, 0.75]^2: six whole
+// periods of the hole pattern each way, so its mean openness is the texture's.
+bool underCentralGrate(const glm::vec3& p) {
+    const glm::vec3 q = grateCrossing(kLight, p);
+    return std::fabs(q.x) < 0.75f && std::fabs(q.z) < 0.75f;
+}
+
+TEST(AlphaTransport, AMaskGrateCastsItsHolesPatternIntoTheShadowMaskAndTheGrid) {
+    const world::SourceLevel level = grateLevel(world::AlphaMode::kMask, 1.0f);
+    const BakeResult result = bakeLevel(level, grateOptions());
+    ASSERT_TRUE(test::allFiniteNonNegative(result.baked));
+
+    // Shadow mask: each texel clear of an edge is open or shut as its light path through the
+    // grate is (the light's 5 cm radius blurs 0.27 texels of the grate: margin 0.45).
+    double sum = 0.0;
+    int inside = 0, checked = 0, wrong = 0;
+    for (const FloorTexel& t : floorTexels(result)) {
+        if (!underCentralGrate(t.position)) continue;
+        sum += double(t.mask);
+        ++inside;
+        const glm::vec3 q = grateCrossing(kLight, t.position);
+        const int open = grateOpenAt(q.x, q.z, 0.45f);
+        if (open < 0) continue;
+        ++checked;
+        if (std::fabs(t.mask - float(open)) > 0.05f) ++wrong;
+    }
+    const double meanOpen = sum / inside;
+    std::printf("[ grate ] shadow mask: %d texels, mean openness %.4f (texture %.4f), %d of %d "
+                "off the pattern\n",
+                inside, meanOpen, kOpenFraction, wrong, checked);
+    EXPECT_GT(checked, 3000);
+    EXPECT_EQ(wrong, 0);
+    EXPECT_NEAR(meanOpen, kOpenFraction, 0.02 * kOpenFraction);
+
+    // The light grid: the dominant primary's visibility at each cell centre below the grate.
+    const world::LightGrid& grid = result.baked.grid;
+    double gridSum = 0.0;
+    int cells = 0, gridChecked = 0, gridWrong = 0;
+    for (uint32_t z = 0; z < grid.dims.z; ++z)
+        for (uint32_t y = 0; y < grid.dims.y; ++y)
+            for (uint32_t x = 0; x < grid.dims.x; ++x) {
+                const glm::vec3 c =
+                    grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
+                if (c.y <= 0.0f || c.y >= kGrateHeight - 0.1f || !underCentralGrate(c)) continue;
+                const world::LightGridCell& cell =
+                    grid.cells[(size_t(z) * grid.dims.y + y) * grid.dims.x + x];
+                const float v = cell.dominantPrimary == 0 ? cell.primaryVisibility : 0.0f;
+                gridSum += double(v);
+                ++cells;
+                const glm::vec3 q = grateCrossing(kLight, c);
+                const int open = grateOpenAt(q.x, q.z, 0.45f);
+                if (open < 0) continue;
+                ++gridChecked;
+                if (std::fabs(v - float(open)) > 0.05f) ++gridWrong;
+            }
+    const double gridOpen = gridSum / cells;
+    std::printf("[ grate ] light grid: %d cells, mean visibility %.4f, %d of %d off the "
+                "pattern\n",
+                cells, gridOpen, gridWrong, gridChecked);
+    EXPECT_GT(gridChecked, 5000);
+    EXPECT_EQ(gridWrong, 0);
+    EXPECT_NEAR(gridOpen, kOpenFraction, 0.02 * kOpenFraction);
+}
+
+// View rays: from above the grate, the reference sees the lit floor through the holes, lit
+// where its own light path is open too, and the black grate elsewhere.
+TEST(AlphaTransport, TheReferenceSeesTheFloorThroughTheGratesHoles) {
+    const world::SourceLevel level = grateLevel(world::AlphaMode::kMask, 1.0f);
+    const EmbreeDevice device;
+    const world::SplitLevel split = world::splitStaticDynamic(level);
+    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
+    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    RayCounts rays;
+    const uint32_t size = 192;
+    const world::Camera& camera = level.cameras[0];
+    const ReferenceImage image = renderReference(scene, lights, camera, size, size, 4, {}, nullptr, rays);
+    const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
+    const float tanHalf = std::tan(0.5f * camera.yfov);
+    int counted[2] = {0, 0};
+    for (uint32_t y = 0; y < size; ++y)
+        for (uint32_t x = 0; x < size; ++x) {
+            const float sx = (float(x) + 0.5f) / float(size) * 2.0f - 1.0f;
+            const float sy = 1.0f - (float(y) + 0.5f) / float(size) * 2.0f;
+            const glm::vec3 d = rotation * glm::vec3(sx * tanHalf, sy * tanHalf, -1.0f);
+            // A pixel spans 0.006 m = 0.1 texels of the grate: margin 0.45 texels.
+            const glm::vec3 atGrate = camera.position + d * ((camera.position.y - kGrateHeight) / -d.y);
+            const int viewOpen = grateOpenAt(atGrate.x, atGrate.z, 0.45f);
+            if (viewOpen < 0) continue;
+            const glm::vec3 p = camera.position + d * (camera.position.y / -d.y);
+            const glm::vec3 q = grateCrossing(kLight, p);
+            const int lightOpen = viewOpen ? grateOpenAt(q.x, q.z, 0.45f) : 0;
+            if (lightOpen < 0) continue;
+            const float expected = float(viewOpen * lightOpen) * floorRadiance(p);
+            const float rendered = image.rgb[(size_t(y) * size + x) * 3];
+            ASSERT_NEAR(rendered, expected, 0.01f * floorRadiance(p)) << "pixel " << x << ", " << y;
+            ++counted[viewOpen * lightOpen];
+        }
+    EXPECT_GT(counted[0], 2000);
+    EXPECT_GT(counted[1], 400);
+}
+
+// A BLEND sheet of alpha 0.3 stops 30% of every ray on average: the floor's shadow mask below
+// reads 0.7, and the reference, whose view rays cross the sheet once and whose shadow rays
+// cross it again, shows 0.49 of the open floor's radiance.
+TEST(AlphaTransport, ABlendSheetTransmitsOneMinusAlpha) {
+    const float alpha = 0.3f;
+    const world::SourceLevel level = grateLevel(world::AlphaMode::kBlend, alpha);
+    BakeOptions options = grateOptions();
+    options.compile.charts.texelsPerMetre = 16.0f;
+    options.shadowSamples = 64;
+    options.gridCellSize = 0.25f;
+    options.gridSamples = 4;
+    const BakeResult result = bakeLevel(level, options);
+    double sum = 0.0;
+    int inside = 0;
+    for (const FloorTexel& t : floorTexels(result))
+        if (underCentralGrate(t.position)) {
+            sum += double(t.mask);
+            ++inside;
+        }
+    ASSERT_GT(inside, 500);
+    const double transmitted = sum / inside;
+
+    const EmbreeDevice device;
+    const world::SplitLevel split = world::splitStaticDynamic(level);
+    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
+    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    RayCounts rays;
+    const uint32_t size = 64;
+    const world::Camera& camera = level.cameras[0];
+    const ReferenceImage image = renderReference(scene, lights, camera, size, size, 64, {}, nullptr, rays);
+    const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
+    const float tanHalf = std::tan(0.5f * camera.yfov);
+    double rendered = 0.0, open = 0.0;
+    for (uint32_t y = 0; y < size; ++y)
+        for (uint32_t x = 0; x < size; ++x) {
+            const float sx = (float(x) + 0.5f) / float(size) * 2.0f - 1.0f;
+            const float sy = 1.0f - (float(y) + 0.5f) / float(size) * 2.0f;
+            const glm::vec3 d = rotation * glm::vec3(sx * tanHalf, sy * tanHalf, -1.0f);
+            const glm::vec3 p = camera.position + d * (camera.position.y / -d.y);
+            if (!underCentralGrate(p)) continue;
+            rendered += double(image.rgb[(size_t(y) * size + x) * 3]);
+            open += double(floorRadiance(p));
+        }
+    const double seen = rendered / open;
+    const double t = 1.0 - double(alpha);
+    std::printf("[ blend ] shadow mask %.4f (1 - alpha = %.2f); reference %.4f ((1 - alpha)^2 "
+                "= %.2f)\n",
+                transmitted, t, seen, t * t);
+    EXPECT_NEAR(transmitted, t, 0.02 * t);
+    EXPECT_NEAR(seen, t * t, 0.02 * t * t);
+}
+
+}  // namespace
+}  // namespace onelight::bake
