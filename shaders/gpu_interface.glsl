@@ -87,7 +87,7 @@ struct GpuShadowView {
 struct GpuMaterial {
     vec4 baseColor;  // linear RGBA factor
     vec4 f0Gloss;    // rgb specular colour factor, a gloss factor
-    vec4 emissive;   // rgb emissive factor (exposure-relative), a alpha cutoff
+    vec4 emissive;   // rgb emission factor (cd/m^2), a alpha cutoff
     vec4 params;     // x metallic, y roughness, z normal scale, w occlusion strength
     uvec4 textures;  // x bit mask (1 << TEXTURE_*)
 };

@@ -51,7 +51,7 @@ struct Material {
     glm::vec3 albedo{1.0f};          // diffuse reflectance, linear
     glm::vec3 specularColor{0.04f};  // F0, linear
     float gloss = 0.0f;              // [0,1], GGX alpha = sqrt(2 / (1 + 2^(18 gloss)))
-    glm::vec3 emissive{0.0f};        // linear factor
+    glm::vec3 emissive{0.0f};        // cd/m^2: emissiveFactor x KHR_materials_emissive_strength
     float alphaCutoff = 0.5f;        // used when alphaMode == mask
     AlphaMode alphaMode = AlphaMode::kOpaque;
     bool doubleSided = false;

@@ -102,7 +102,7 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
         const EmbreeDevice device;
         const world::SplitLevel split = world::splitStaticDynamic(source);
         const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(source));
-        const BakeLights lights = makeBakeLights(source.lights, LightSizes{},
+        const BakeLights lights = makeBakeLights(scene, source.lights, LightSizes{},
                                                  sky >= 0.0f ? glm::vec3(sky) : source.skyRadiance);
         RayCounts rays;
         Progress progress("reference", height, true);

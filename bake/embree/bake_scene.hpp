@@ -4,6 +4,7 @@
 // geometry new -> fill buffers -> commit -> attach -> release; the scene committed before use.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <string>
@@ -123,6 +124,16 @@ public:
         observerUser_ = user;
     }
     RTCScene embreeScene() const { return scene_; }  // borrowed, committed
+
+    /// The corners of `triangle` (world metres) and its unit front-face normal (winding order).
+    [[nodiscard]] std::array<glm::vec3, 3> triangleVertices(uint32_t triangle) const {
+        return {positions_[indices_[3 * size_t(triangle)]],
+                positions_[indices_[3 * size_t(triangle) + 1]],
+                positions_[indices_[3 * size_t(triangle) + 2]]};
+    }
+    [[nodiscard]] glm::vec3 triangleNormal(uint32_t triangle) const {
+        return triangleNormal_[triangle];
+    }
 
     const world::Material& materialOf(uint32_t triangle) const;
     /// The index of `triangle`'s material in materials() (kNoIndex: the default).

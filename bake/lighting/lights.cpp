@@ -7,8 +7,15 @@
 
 namespace onelight::bake {
 
-BakeLights makeBakeLights(const std::vector<world::Light>& levelLights, const LightSizes& sizes,
-                          glm::vec3 skyRadiance) {
+BakeLights makeBakeLights(const BakeScene& scene, const std::vector<world::Light>& levelLights,
+                          const LightSizes& sizes, glm::vec3 skyRadiance) {
+    BakeLights out = makePunctualLights(levelLights, sizes, skyRadiance);
+    out.emitters = collectEmitters(scene);
+    return out;
+}
+
+BakeLights makePunctualLights(const std::vector<world::Light>& levelLights,
+                              const LightSizes& sizes, glm::vec3 skyRadiance) {
     BakeLights out;
     out.skyRadiance = skyRadiance;
     for (size_t i = 0; i < levelLights.size(); ++i) {

@@ -1,7 +1,7 @@
 // Light evaluation in physical units for the baker and the reference path tracer: glTF
 // directional lights in lux, point and spot lights in candela with inverse-square falloff and
 // the KHR_lights_punctual cone (evaluatePunctualLight of shaders/lighting.glsl, shared with the
-// runtime), a uniform sky in cd/m^2, and the
+// runtime), a uniform sky in cd/m^2, the level's emissive surfaces (emitters.hpp), and the
 // visibility of a light of finite size (a sphere for point/spot, a cone of directions for the
 // sun) by shadow rays.
 #pragma once
@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "bake/embree/bake_scene.hpp"
+#include "bake/lighting/emitters.hpp"
 #include "bake/lighting/sampling.hpp"
 #include "world/compiled_level.hpp"
 
@@ -31,13 +32,23 @@ struct BakeLight {
     float radius = 0.0f;                    // metres (point, spot) or radians (directional)
 };
 
-/// The lights a bake uses (effect lights are runtime-only and left out), plus the sky.
+/// The lights a bake uses (effect lights are runtime-only and left out), the scene's emissive
+/// surfaces, and the sky.
 struct BakeLights {
     std::vector<BakeLight> lights;
+    Emitters emitters;
     glm::vec3 skyRadiance{0.0f};  // cd/m^2, uniform over every direction that escapes
 };
 
-[[nodiscard]] BakeLights makeBakeLights(const std::vector<world::Light>& levelLights,
+/// The level's lights and the sky, without emitters: for tools that evaluate punctual light
+/// alone (the lightmap's primary term at runtime, seam checks).
+[[nodiscard]] BakeLights makePunctualLights(const std::vector<world::Light>& levelLights,
+                                            const LightSizes& sizes, glm::vec3 skyRadiance);
+
+/// Everything a bake lights with: the level's lights, the sky and the emissive triangles of
+/// `scene`.
+[[nodiscard]] BakeLights makeBakeLights(const BakeScene& scene,
+                                        const std::vector<world::Light>& levelLights,
                                         const LightSizes& sizes, glm::vec3 skyRadiance);
 
 /// A light seen from a point: where its centre is and how much it gives there.

@@ -46,11 +46,31 @@ glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
     return radiance;
 }
 
+EmitterEstimate sampleEmitterRadiance(const BakeScene& scene, const Emitters& emitters,
+                                      const glm::vec3& origin, const glm::vec3& normal, Rng& rng,
+                                      RayCounts& rays) {
+    EmitterEstimate out;
+    const glm::vec3 u(rng.next(), rng.next(), rng.next());
+    if (emitters.empty()) return out;
+    const EmitterSample e = sampleEmitter(scene, emitters, origin, u);
+    out.direction = e.direction;
+    if (!(e.pdf > 0.0f) || (normal != glm::vec3(0.0f) && glm::dot(normal, e.direction) <= 0.0f))
+        return out;
+    if (e.shadowDistance > 0.0f &&
+        scene.occluded(origin, e.direction, e.shadowDistance, rays.shadow))
+        return out;
+    out.pdf = e.pdf;
+    out.radianceOverPdf = e.radiance / e.pdf;
+    return out;
+}
+
 glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                         const TransportSettings& settings, glm::vec3 origin, glm::vec3 dir,
-                        RayCone cone, Rng& rng, RayCounts& rays, FirstHit* firstHit) {
+                        RayCone cone, Rng& rng, RayCounts& rays, FirstHit* firstHit,
+                        float originPdf) {
     glm::vec3 radiance(0.0f);
     glm::vec3 throughput(1.0f);
+    float directionPdf = originPdf;  // density `dir` was drawn with, 0: no emitter sampling
     for (uint32_t depth = 0; depth < settings.maxDepth; ++depth) {
         const SurfaceHit hit = scene.intersect(origin, dir, scene.sceneDiameter(), rays.bounce);
         if (depth == 0 && firstHit) *firstHit = {hit.found, hit.backFace, hit.distance};
@@ -70,8 +90,24 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                            cone.widthAt(hit.distance), glm::dot(point.geometricNormal, v));
         point.shadingNormal = m.shadingNormal;
         point.bsdf = m.bsdf;
-        radiance += throughput * m.emission;
+        if (m.emission != glm::vec3(0.0f)) {
+            const float emitter = emitterPdf(lights.emitters, hit.triangle, hit.distance,
+                                             std::fabs(glm::dot(dir, hit.normal)));
+            const float weight = directionPdf > 0.0f ? powerHeuristic(directionPdf, emitter) : 1.0f;
+            radiance += throughput * m.emission * weight;
+        }
         radiance += throughput * directRadiance(scene, lights, point, v, rng, rays);
+        const glm::vec3 offOrigin = hit.position + point.geometricNormal * scene.rayOffset();
+        if (!lights.emitters.empty()) {
+            const EmitterEstimate e = sampleEmitterRadiance(scene, lights.emitters, offOrigin,
+                                                            point.geometricNormal, rng, rays);
+            if (e.pdf > 0.0f && glm::dot(point.shadingNormal, e.direction) > 0.0f) {
+                const float weight = powerHeuristic(
+                    e.pdf, surfacePdf(point.bsdf, point.shadingNormal, v, e.direction));
+                radiance += throughput * m.occlusion * e.radianceOverPdf * weight *
+                            brdfCos(point.bsdf, point.shadingNormal, v, e.direction);
+            }
+        }
         const SurfaceSample next = sampleSurface(point.bsdf, point.shadingNormal, v, rng);
         if (next.weight == glm::vec3(0.0f) ||
             glm::dot(point.geometricNormal, next.direction) <= 0.0f)
@@ -83,8 +119,9 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
             throughput /= q;
         }
         cone = bounceCone(cone, hit.distance, next.pdf);
-        origin = hit.position + point.geometricNormal * scene.rayOffset();
+        origin = offOrigin;
         dir = next.direction;
+        directionPdf = next.pdf;
     }
     return finiteNonNegative(radiance) ? radiance : glm::vec3(0.0f);
 }

@@ -52,6 +52,21 @@ struct ShadingPoint {
                                        const ShadingPoint& point, const glm::vec3& toViewer,
                                        Rng& rng, RayCounts& rays);
 
+/// One next-event sample of the emissive surfaces seen from `origin` (already off its surface):
+/// an emitter point drawn by power (emitters.hpp) and tested by a shadow ray. `normal`, when
+/// not zero, is the hemisphere the point can receive from (points behind it are skipped
+/// without a ray). The caller weights the sample against its own direction strategy of
+/// density p_other(l) with powerHeuristic(pdf, p_other(l)).
+struct EmitterEstimate {
+    glm::vec3 direction{0.0f, 0.0f, 1.0f};
+    glm::vec3 radianceOverPdf{0.0f};  // L_e / pdf, 0 when blocked or nothing was drawn
+    float pdf = 0.0f;                 // per steradian
+};
+[[nodiscard]] EmitterEstimate sampleEmitterRadiance(const BakeScene& scene, const Emitters& emitters,
+                                                    const glm::vec3& origin,
+                                                    const glm::vec3& normal, Rng& rng,
+                                                    RayCounts& rays);
+
 /// What traceRadiance saw first (for inside-geometry tests).
 struct FirstHit {
     bool found = false;
@@ -74,12 +89,18 @@ struct FirstHit {
    Back faces of single-sided materials absorb (they are only seen from inside solids).
    Every hit is shaded with its material where the ray landed (bake/materials): textures read
    at the level of detail of the path's footprint `cone` (ray_cone.hpp), which each bounce
-   widens; emissive surfaces add their emission (cd/m^2) times the throughput; the continuation
-   carries the material's ambient occlusion, as the runtime applies it to the secondary light.
+   widens; the continuation carries the material's ambient occlusion, as the runtime applies it
+   to the secondary light.
+   Emissive surfaces (emitters.hpp) are found two ways, combined by multiple importance
+   sampling (Veach 1997, ch. 9, power heuristic): at every hit one emitter point drawn by power
+   (weight w_e = p_e^2 / (p_e^2 + p_f^2), p_f the continuation's density of that direction),
+   and the emission a continuation lands on (weight p_f^2 / (p_f^2 + p_e^2)). The first
+   segment's emission has weight 1 unless the caller samples the emitters at `origin` too, once
+   per direction, and passes the density `originPdf` it drew `dir` with.
 */
 [[nodiscard]] glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                                       const TransportSettings& settings, glm::vec3 origin,
                                       glm::vec3 dir, RayCone cone, Rng& rng, RayCounts& rays,
-                                      FirstHit* firstHit = nullptr);
+                                      FirstHit* firstHit = nullptr, float originPdf = 0.0f);
 
 }  // namespace onelight::bake

@@ -50,6 +50,9 @@ glm::vec3 moveOutOfGeometry(const BakeScene& scene, const glm::vec3& origin,
    Indirect part: w_i cosine-distributed on a rotated Hammersley set (pdf (n . w) / pi), so
      int L (n . w) dw ~ (1/N) sum_i L(w_i) (n . w_i) / pdf(w_i) = (pi / N) sum_i L(w_i)
    where L(w_i) = traceRadiance (every bounce of every light, and the sky on escape).
+   Emissive surfaces: with each w_i one emitter point l_i drawn by power (emitters.hpp), the
+   two combined by the power heuristic (radiance.hpp): the emitter sample adds
+   L_e (n . l_i) / p_e(l_i) x w_e(l_i), the emission w_i lands on counts with 1 - w_e(w_i).
    The indirect part is then averaged with the texel's neighbours (the second pass of
    bakeLightmapTexels: a tent whose radius, one of kIndirectFilterRadii, grows with the local
    noise past the kIndirectFilterNoise thresholds).
@@ -111,17 +114,30 @@ TexelEstimate estimateTexel(const BakeScene& scene, const BakeLights& lights,
     if (count > 0) {
         const Frame frame = frameAround(n);
         const float s0 = rng.next(), s1 = rng.next();
+        const bool emitters = !lights.emitters.empty();
         double sumY2 = 0.0;
         for (uint32_t i = 0; i < count; ++i) {
             const glm::vec3 w = glm::normalize(
                 frame.toWorld(sampleCosineHemisphere(rotatedHammersley(i, count, s0, s1))));
-            const glm::vec3 e =
-                kPi * traceRadiance(scene, lights, settings.transport, origin, w,
-                                    RayCone{sample.texelSize, sampleSpread(2.0f * kPi, count)},
-                                    rng, rays);
+            const float pdf = glm::dot(n, w) / kPi;
+            glm::vec3 e = kPi * traceRadiance(scene, lights, settings.transport, origin, w,
+                                              RayCone{sample.texelSize,
+                                                      sampleSpread(2.0f * kPi, count)},
+                                              rng, rays, nullptr, emitters ? pdf : 0.0f);
+            out.indirectDirection += double(luminance(e)) * glm::dvec3(w);
+            if (emitters) {
+                const EmitterEstimate l =
+                    sampleEmitterRadiance(scene, lights.emitters, origin, n, rng, rays);
+                if (l.pdf > 0.0f) {
+                    const float cosine = glm::dot(n, l.direction);
+                    const glm::vec3 el = l.radianceOverPdf * cosine *
+                                         powerHeuristic(l.pdf, cosine / kPi);
+                    out.indirectDirection += double(luminance(el)) * glm::dvec3(l.direction);
+                    e += el;
+                }
+            }
             const double y = luminance(e);
             out.indirect += glm::dvec3(e);
-            out.indirectDirection += y * glm::dvec3(w);
             out.indirectLuminance += y;
             sumY2 += y * y;
         }
@@ -203,8 +219,8 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             const TexelEstimate& e = estimates[i - begin];
             // The indirect filter: a tent of radius r ([1 .. r+1 .. 1] per axis) over neighbours
             // of the same chart that were not moved out of geometry and that see this texel's
-            // origin (a short shadow ray), so no light crosses a wall. A field linear across
-            // the window is unchanged; for a full window the noise drops to sqrt(sum w^2) /
+            // origin (a short shadow ray), so no light crosses a wall, each with its mirror
+            // neighbour. A field linear across the window is unchanged; for a full window the noise drops to sqrt(sum w^2) /
             // sum w = 0.375 (r = 1), 0.24 (r = 2), 0.18 (r = 3). The radius grows with the
             // largest relative noise in the texel's 3x3 neighbourhood (not its own: a texel
             // whose paths happened to miss a small bright source looks quiet, while its
@@ -218,24 +234,40 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             const int radius = localNoise > kIndirectFilterNoise[1]   ? kIndirectFilterRadii[2]
                                : localNoise > kIndirectFilterNoise[0] ? kIndirectFilterRadii[1]
                                                                       : kIndirectFilterRadii[0];
+            // Which neighbours may join: same chart, not moved, and seeing this texel.
+            constexpr int kSide = 2 * kIndirectFilterRadii[2] + 1;
+            long usable[kSide * kSide];
+            const auto slot = [&](int dx, int dy) { return (dy + radius) * kSide + dx + radius; };
+            for (int dy = -radius; dy <= radius; ++dy)
+                for (int dx = -radius; dx <= radius; ++dx) {
+                    long& j = usable[slot(dx, dy)];
+                    j = (dx == 0 && dy == 0) || e.moved ? -1 : neighbour(s, dx, dy);
+                    if (j < 0) continue;
+                    const TexelSample& ns = samples[size_t(j) + begin];
+                    const TexelEstimate& ne = estimates[size_t(j)];
+                    if (ne.moved || chartOf(level, ns) != chartOf(level, s)) {
+                        j = -1;
+                        continue;
+                    }
+                    const glm::vec3 to = ne.origin - e.origin;
+                    const float distance = glm::length(to);
+                    if (distance > 0.0f &&
+                        scene.occluded(e.origin, to / distance, distance, local.probe))
+                        j = -1;
+                }
+            // A neighbour joins only with its mirror image about the texel, so the window is
+            // point-symmetric and a linear field stays unchanged at a chart's edges and corners
+            // too (a one-sided window there would pull the texel towards its inner neighbours).
             const double centreWeight = double(radius + 1) * double(radius + 1);
             glm::dvec3 indirect = centreWeight * e.indirect;
             glm::dvec3 indirectDirection = centreWeight * e.indirectDirection;
             double indirectLuminance = centreWeight * e.indirectLuminance;
             double weight = centreWeight;
-            for (int dy = -radius; dy <= radius && !e.moved; ++dy) {
+            for (int dy = -radius; dy <= radius; ++dy)
                 for (int dx = -radius; dx <= radius; ++dx) {
-                    if (dx == 0 && dy == 0) continue;
-                    const long j = neighbour(s, dx, dy);
-                    if (j < 0) continue;
-                    const TexelSample& ns = samples[size_t(j) + begin];
+                    const long j = usable[slot(dx, dy)];
+                    if (j < 0 || usable[slot(-dx, -dy)] < 0) continue;
                     const TexelEstimate& ne = estimates[size_t(j)];
-                    if (ne.moved || chartOf(level, ns) != chartOf(level, s)) continue;
-                    const glm::vec3 to = ne.origin - e.origin;
-                    const float distance = glm::length(to);
-                    if (distance > 0.0f &&
-                        scene.occluded(e.origin, to / distance, distance, local.probe))
-                        continue;
                     const double w =
                         double(radius + 1 - std::abs(dx)) * double(radius + 1 - std::abs(dy));
                     indirect += w * ne.indirect;
@@ -243,7 +275,6 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
                     indirectLuminance += w * ne.indirectLuminance;
                     weight += w;
                 }
-            }
             indirect /= weight;
             indirectDirection /= weight;
             indirectLuminance /= weight;

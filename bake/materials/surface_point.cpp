@@ -44,10 +44,9 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
     const world::Material& m = known ? materials.materials[material] : kDefault;
     MaterialSample s;
     s.shadingNormal = geometricNormal;
-    const bool emits = !backFace || m.doubleSided;
     if (!known || !materials.textureSets[material].any()) {
         s.bsdf = factorBsdf(m);
-        s.emission = emits ? m.emissive : glm::vec3(0.0f);
+        s.emission = sampleEmission(materials, material, a, backFace, 0.0f);
         s.alpha = m.baseColor.w;
         // Smooth shading: the interpolated vertex normal, on the ray's side, as the shader.
         const float length2 = glm::dot(a.normal, a.normal);
@@ -72,7 +71,7 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
             std::clamp(glsl::occlusion_fromTexel(texel(materials, set.occlusion, a, width).x,
                                                  m.occlusionStrength),
                        0.0f, 1.0f);
-    if (emits) s.emission = m.emissive * glm::vec3(texel(materials, set.emissive, a, width));
+    s.emission = sampleEmission(materials, material, a, backFace, width);
 
     // The normal as forward.frag builds it: the interpolated normal (flipped on a back face),
     // the tangent made orthogonal to it, the map's texel in that frame.
@@ -89,6 +88,24 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
     }
     s.shadingNormal = n;
     return s;
+}
+
+glm::vec3 sampleEmission(const SceneMaterials& materials, uint32_t material,
+                         const SurfaceAttributes& a, bool backFace, float width) {
+    if (material >= materials.materials.size()) return glm::vec3(0.0f);
+    const world::Material& m = materials.materials[material];
+    if ((backFace && !m.doubleSided) || m.emissive == glm::vec3(0.0f)) return glm::vec3(0.0f);
+    return m.emissive *
+           glm::vec3(texel(materials, materials.textureSets[material].emissive, a, width));
+}
+
+glm::vec3 meanEmission(const SceneMaterials& materials, uint32_t material) {
+    if (material >= materials.materials.size()) return glm::vec3(0.0f);
+    const world::Material& m = materials.materials[material];
+    const uint32_t index = materials.textureSets[material].emissive;
+    if (index == world::kNoIndex) return m.emissive;
+    const BakeTexture& t = materials.textures[index];
+    return m.emissive * glm::vec3(t.texels[t.mipOffset.back()]);
 }
 
 float sampleAlpha(const SceneMaterials& materials, uint32_t material, glm::vec2 uv) {

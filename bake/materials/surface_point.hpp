@@ -46,6 +46,16 @@ struct MaterialSample {
                                             const glm::vec3& geometricNormal, bool backFace,
                                             float footprint, float cosine);
 
+/// The emission (cd/m^2) of `material` at a point, towards the side the ray arrived from (none
+/// from the back face of a single-sided material), its texture read for a footprint `width`
+/// metres wide across the surface (0: the finest mip).
+[[nodiscard]] glm::vec3 sampleEmission(const SceneMaterials& materials, uint32_t material,
+                                       const SurfaceAttributes& attributes, bool backFace,
+                                       float width);
+
+/// The emission factor times the emissive texture's mean (the last mip): to rank emitters.
+[[nodiscard]] glm::vec3 meanEmission(const SceneMaterials& materials, uint32_t material);
+
 /// The base colour alpha alone (alpha-tested coverage), at the finest mip.
 [[nodiscard]] float sampleAlpha(const SceneMaterials& materials, uint32_t material, glm::vec2 uv);
 

@@ -78,14 +78,24 @@ glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
     }
     const Frame frame = frameAround(normal);
     glm::dvec3 indirect(0.0);
+    const bool emitters = !lights.emitters.empty();
+    constexpr float kUniformPdf = 1.0f / (2.0f * kPi);  // the hemisphere directions' density
     for (uint32_t i = 0; i < samples; ++i) {
         // uniform hemisphere: the upper half of a uniform sphere direction
         glm::vec3 local = sampleUniformSphere({rng.next() * 0.5f, rng.next()});
         const glm::vec3 w = glm::normalize(frame.toWorld(local));
         indirect += glm::dvec3(traceRadiance(scene, lights, transport, origin, w,
                                              RayCone{0.0f, sampleSpread(2.0f * kPi, samples)},
-                                             rng, rays)) *
+                                             rng, rays, nullptr, emitters ? kUniformPdf : 0.0f)) *
                     double(local.z);
+        if (!emitters) continue;
+        // One emitter point per direction, in the same 2 pi / N scale (radiance.hpp).
+        const EmitterEstimate emitter =
+            sampleEmitterRadiance(scene, lights.emitters, origin, normal, rng, rays);
+        if (emitter.pdf > 0.0f)
+            indirect += glm::dvec3(emitter.radianceOverPdf) *
+                        double(glm::dot(normal, emitter.direction) *
+                               powerHeuristic(emitter.pdf, kUniformPdf) * kUniformPdf);
     }
     e += indirect * (2.0 * 3.14159265358979323846 / double(std::max(1u, samples)));
     return glm::vec3(e);

@@ -244,7 +244,7 @@ bool rayThroughput(const BenchOptions& o) {
     const world::CompiledLevel level = world::compileLevel(source, compile).level;
     const EmbreeDevice device;
     BakeScene scene(device, level);
-    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
     const std::vector<TexelSample> samples = placeTexels(level);
     if (samples.empty()) {
         std::printf("the generated level has no lightmap texels\n");
@@ -394,7 +394,7 @@ bool speedAgainstError(const BenchOptions& o) {
         samples = placeTexels(r.level);
         const EmbreeDevice device;
         const BakeScene scene(device, r.level);
-        const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+        const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
         std::vector<size_t> chosen;
         for (size_t i = 0; i < samples.size(); i += o.stride)
             if (samples[i].centreInside) chosen.push_back(i);
@@ -419,7 +419,7 @@ bool speedAgainstError(const BenchOptions& o) {
         referenceNoise = std::sqrt(noiseSq / double(std::max<size_t>(1, points.size())));
         referenceSeconds = secondsSince(start);
     }
-    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    const BakeLights lights = makePunctualLights(level.lights, {}, glm::vec3(0.0f));
     std::printf(
         "reference  %zu points (every %u-th texel centre, >= 1 lux), %u samples each, "
         "%.1f s; its own RMS noise %.3f%%\n",

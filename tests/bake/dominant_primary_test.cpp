@@ -22,7 +22,7 @@ TEST(DominantPrimary, VisibilityDecidesTheDominantLight) {
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(level);
     const BakeScene scene(device, split.staticGeometry, level.materials);
-    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
     AtomicRayCount rays;
     const world::PrimaryIlluminanceFn shadowed =
         makeShadowedPrimaryIlluminance(scene, lights, 16, &rays);

@@ -23,7 +23,7 @@ struct Baked {
 
 Baked bake(const world::SourceLevel& source, const BakeOptions& options) {
     Baked b{bakeLevel(source, options),
-            makeBakeLights(source.lights, options.lightSizes,
+            makePunctualLights(source.lights, options.lightSizes,
                            options.skyRadiance.value_or(source.skyRadiance)),
             {}};
     b.samples = placeTexels(b.result.level);

@@ -205,7 +205,7 @@ TEST(LightmapSeams, ChartBordersShowNoVisibleStep) {
     options.indirectSamples = 4096;
     options.shadowSamples = 64;
     const BakeResult r = bakeLevel(source, options);
-    const BakeLights lights = makeBakeLights(source.lights, options.lightSizes,
+    const BakeLights lights = makePunctualLights(source.lights, options.lightSizes,
                                              options.skyRadiance.value_or(source.skyRadiance));
     const std::vector<SeamPoint> points = seamPoints(r.level, r.baked, lights);
     const bool verbose = std::getenv("ONELIGHT_VERBOSE") != nullptr;

@@ -95,7 +95,7 @@ TEST(MaterialTransport, ACheckerUnderAUniformSkyShowsEachTexelsAlbedo) {
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(level);
     const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(level.lights, {}, level.skyRadiance);
+    const BakeLights lights = makeBakeLights(scene, level.lights, {}, level.skyRadiance);
     RayCounts rays;
     const uint32_t size = 64;
     const ReferenceImage image =
@@ -152,7 +152,7 @@ TEST(MaterialTransport, AnIntegratingSphereSeesItsTexturesMeanAlbedo) {
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(level);
     const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
     TransportSettings transport;
     transport.maxDepth = 200;
     RayCounts rays;

@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(source);
     const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(source));
-    const BakeLights lights = makeBakeLights(source.lights, LightSizes{}, glm::vec3(0.0f));
+    const BakeLights lights = makeBakeLights(scene, source.lights, LightSizes{}, glm::vec3(0.0f));
     const glm::vec3 position(0.0f, 0.0f, 1.5f);
 
     using clock = std::chrono::steady_clock;

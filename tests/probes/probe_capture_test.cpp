@@ -35,7 +35,7 @@ struct Room {
     EmbreeDevice device;
     world::SplitLevel split = world::splitStaticDynamic(source);
     BakeScene scene{device, split.staticGeometry, source.materials};
-    BakeLights lights = makeBakeLights(source.lights, LightSizes{}, glm::vec3(0.0f));
+    BakeLights lights = makeBakeLights(scene, source.lights, LightSizes{}, glm::vec3(0.0f));
 };
 
 const glm::vec3 kCapturePoint(0.3f, -0.2f, 1.2f);

@@ -606,6 +606,38 @@ TEST(RenderBaked, FloorUnderAUniformSkyIsAlbedoTimesSky) {
         << floor.x << " " << floor.y << " " << floor.z;
 }
 
+// An emissive surface shows its own radiance, pre-exposed like the rest of the frame: a black
+// floor of emission 0.5 x strength 800 = 400 cd/m^2 reads 400 cd/m^2 in the linear capture at
+// two exposures four stops apart (an exposure-relative emission would differ 16 times). No
+// light and no sky: the floor pixel is the emission alone.
+// Tolerance 1%: the HDR target's half floats and the readback's un-exposure.
+TEST(RenderBaked, AnEmissiveSurfaceShowsItsLuminancePreExposed) {
+    test::Scene scene;
+    test::SceneMaterial glow{{0.0f, 0.0f, 0.0f, 1.0f}, 0.0f, 1.0f};
+    glow.emissive = glm::vec3(0.5f);
+    glow.emissiveStrength = 800.0f;
+    scene.materials = {glow};
+    test::addFloor(scene, 0.0f, 0.0f, 10.0f, 0.0f, 0);
+    const std::string gltf = test::outputDir() + "/emissive_floor.gltf";
+    test::writeGltf(scene, gltf);
+    const assets::LoadedLevel level =
+        test::bakeAndLoad(gltf, test::outputDir() + "/emissive_floor.olpak");
+    ASSERT_EQ(level.level.materials.size(), 1u);
+    EXPECT_EQ(level.level.materials[0].emissive, glm::vec3(400.0f));
+    for (float ev100 : {6.0f, 10.0f}) {
+        render::FrameInputs inputs;
+        inputs.camera = render::cameraFromYawPitch({0.0f, 2.0f, 6.0f}, 0.0f, -10.0f);
+        inputs.camera.hasExposure = true;
+        inputs.camera.ev100 = ev100;
+        const std::vector<float> linear = renderLinear(level, options(40.0f, 8.0f), inputs,
+                                                       "emissive_ev" + std::to_string(int(ev100)));
+        const glm::uvec2 at = floorPixelNear(inputs.camera, {0.0f, 0.0f, 2.0f});
+        const glm::vec3 floor = pixel(linear, at.x, at.y);
+        EXPECT_LT(relativeError(floor, glm::vec3(400.0f), 1.0), 0.01)
+            << "EV " << ev100 << ": " << floor.x << " " << floor.y << " " << floor.z;
+    }
+}
+
 // The probe path of the forward shader against the C++ formula: a dielectric floor (dark, so
 // the specular weighs) under a uniform grey sky L, its baked probes replaced in memory by one
 // synthetic probe (and a decoy) whose mips are uniform and coloured apart (mip 0 red, 1 green, 2

@@ -169,12 +169,19 @@ void writeGltf(const Scene& scene, const std::string& path) {
         if (m.dynamic) node["extras"] = {{"onelight", {{"dynamic", true}}}};
         nodes.push_back(node);
     }
-    for (const SceneMaterial& m : scene.materials)
-        materials.push_back(
-            {{"pbrMetallicRoughness",
-              {{"baseColorFactor", {m.baseColor.x, m.baseColor.y, m.baseColor.z, m.baseColor.w}},
-               {"metallicFactor", m.metallic},
-               {"roughnessFactor", m.roughness}}}});
+    for (const SceneMaterial& m : scene.materials) {
+        json material = {
+            {"pbrMetallicRoughness",
+             {{"baseColorFactor", {m.baseColor.x, m.baseColor.y, m.baseColor.z, m.baseColor.w}},
+              {"metallicFactor", m.metallic},
+              {"roughnessFactor", m.roughness}}}};
+        if (m.emissive != glm::vec3(0.0f))
+            material["emissiveFactor"] = {m.emissive.x, m.emissive.y, m.emissive.z};
+        if (m.emissiveStrength != 1.0f)
+            material["extensions"] = {
+                {"KHR_materials_emissive_strength", {{"emissiveStrength", m.emissiveStrength}}}};
+        materials.push_back(material);
+    }
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const SceneLight& l = scene.lights[i];
         static const char* const types[3] = {"directional", "point", "spot"};

@@ -17,6 +17,8 @@ struct SceneMaterial {
     glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};
     float metallic = 0.0f;
     float roughness = 0.5f;
+    glm::vec3 emissive{0.0f};      // emissiveFactor
+    float emissiveStrength = 1.0f;  // KHR_materials_emissive_strength (written when not 1)
 };
 
 struct SceneMesh {

@@ -99,6 +99,27 @@ TEST(Import, MetallicRoughnessBecomesAlbedoSpecularGloss) {
     EXPECT_EQ(m.materialClass, world::MaterialClass::kFull);
 }
 
+// Emission in cd/m^2: emissiveFactor x KHR_materials_emissive_strength (world/import/README.md).
+TEST(Import, EmissionIsFactorTimesStrengthInNits) {
+    GltfBuilder gltf;
+    MeshData panel = oneTriangle("panel"), dim = oneTriangle("dim");
+    panel.material = gltf.addMaterial(
+        {{"name", "panel"},
+         {"emissiveFactor", {1.0, 0.5, 0.25}},
+         {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 400.0}}}}}});
+    dim.material = gltf.addMaterial({{"name", "dim"}, {"emissiveFactor", {0.5, 0.5, 0.5}}});
+    gltf.addNode({{"name", "a"}, {"mesh", gltf.addMesh(panel)}});
+    gltf.addNode({{"name", "b"}, {"mesh", gltf.addMesh(dim)}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("emission"), "emission"));
+    ASSERT_EQ(level.materials.size(), 2u);
+    const world::Material& a = level.materials[0].name == "panel" ? level.materials[0]
+                                                                   : level.materials[1];
+    const world::Material& b = level.materials[0].name == "panel" ? level.materials[1]
+                                                                   : level.materials[0];
+    EXPECT_EQ(a.emissive, glm::vec3(400.0f, 200.0f, 100.0f));
+    EXPECT_EQ(b.emissive, glm::vec3(0.5f));
+}
+
 TEST(Import, LightsKeepUnitsRolesAndDirections) {
     GltfBuilder gltf;
     const int sun = gltf.addLight({{"type", "directional"}, {"intensity", 100000.0}});

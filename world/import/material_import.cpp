@@ -61,6 +61,13 @@ Material convertMaterial(const tinygltf::Material& source,
     m.roughness = clamp01(finiteOr(pbr.roughnessFactor, 1.0f));
     for (size_t i = 0; i < 3 && i < source.emissiveFactor.size(); ++i)
         m.emissive[static_cast<int>(i)] = std::max(0.0f, finiteOr(source.emissiveFactor[i], 0.0f));
+    // KHR_materials_emissive_strength scales the factor; the product is in cd/m^2 (README).
+    if (const auto it = source.extensions.find("KHR_materials_emissive_strength");
+        it != source.extensions.end() && it->second.Has("emissiveStrength")) {
+        const tinygltf::Value& strength = it->second.Get("emissiveStrength");
+        if (strength.IsNumber())
+            m.emissive *= std::max(0.0f, finiteOr(strength.GetNumberAsDouble(), 1.0f));
+    }
     m.alphaCutoff = clamp01(finiteOr(source.alphaCutoff, 0.5f));
     m.alphaMode = source.alphaMode == "MASK"    ? AlphaMode::kMask
                   : source.alphaMode == "BLEND" ? AlphaMode::kBlend

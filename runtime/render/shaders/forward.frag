@@ -203,11 +203,12 @@ void main() {
     }
     radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, ao, so, probeSample);
 
-    // Pre-exposed output; emissive is exposure-relative (1 = display white before the curve).
-    float exposure = frame.cameraPosition.w;
+    // Emission in cd/m^2 like every other radiance (world/import/README.md), then the whole
+    // pre-exposed.
     vec3 emissive = m.emissive.rgb;
     if (hasTexture(m, TEXTURE_EMISSIVE)) emissive *= texture(emissiveTexture, inUv0).rgb;
-    vec3 color = radiance * exposure + emissive;
+    float exposure = frame.cameraPosition.w;
+    vec3 color = (radiance + emissive) * exposure;
     if (any(isnan(color)) || any(isinf(color))) color = vec3(0.0);
     outColor = vec4(min(color, vec3(HDR_MAX)), 1.0);
 }
