@@ -18,8 +18,27 @@ constexpr float kSelfIntersectionScale = 2e-5f;
 /// The offset never goes below this (metres), for levels near the origin.
 constexpr float kMinimumRayOffset = 1e-5f;
 
-bool alphaFiltered(const world::Material* material) {
-    return material != nullptr && material->alphaMode != world::AlphaMode::kOpaque;
+/// How rays meet a material's triangles.
+enum class Coverage {
+    kOpaque,    // every hit counts: the first geometry, no filter
+    kFiltered,  // the alpha filter decides per hit: the second geometry
+    kNone,      // no hit ever counts (alpha 0 everywhere): not given to Embree
+};
+
+/// The coverage of material `m`. A material without a base colour texture has one alpha (its
+/// factor), so MASK and BLEND are decided here once, exactly as the filter would decide every
+/// hit (alpha >= cutoff; a uniform in [0, 1) below alpha), and the filter only runs where alpha
+/// varies over the surface or BLEND's coin is needed.
+Coverage coverageOf(const SceneMaterials& materials, uint32_t m) {
+    if (m >= materials.materials.size()) return Coverage::kOpaque;
+    const world::Material& material = materials.materials[m];
+    if (material.alphaMode == world::AlphaMode::kOpaque) return Coverage::kOpaque;
+    if (materials.textureSets[m].baseColor != world::kNoIndex) return Coverage::kFiltered;
+    const float alpha = material.baseColor.w;
+    if (material.alphaMode == world::AlphaMode::kMask)
+        return alpha >= material.alphaCutoff ? Coverage::kOpaque : Coverage::kNone;
+    if (alpha >= 1.0f) return Coverage::kOpaque;
+    return alpha > 0.0f ? Coverage::kFiltered : Coverage::kNone;
 }
 
 uint32_t floatBits(float f) {
@@ -43,21 +62,15 @@ float coverageHash(uint32_t triangle, const glm::vec3& origin, const glm::vec3& 
     return float(h >> 8) * 0x1p-24f;
 }
 
-/// One Embree triangle geometry over all of `positions` with the triangles `triangles` of
-/// `indices`, attached to `scene`; its ID is returned.
-unsigned attachTriangles(RTCDevice device, RTCScene scene, const std::vector<glm::vec3>& positions,
+/// One Embree triangle geometry over the shared vertex buffer `vertices` (`vertexCount`
+/// float3) with the triangles `triangles` of `indices`, attached to `scene`; its ID is returned.
+unsigned attachTriangles(RTCDevice device, RTCScene scene, RTCBuffer vertices, size_t vertexCount,
                          const std::vector<uint32_t>& indices,
                          const std::vector<uint32_t>& triangles, RTCFilterFunctionN filter,
                          void* user) {
     RTCGeometry mesh = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    // Embree reads 16 bytes at the last vertex: its own buffer has the slack.
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), positions.size()));
-    for (size_t i = 0; i < positions.size(); ++i) {
-        vertices[3 * i] = positions[i].x;
-        vertices[3 * i + 1] = positions[i].y;
-        vertices[3 * i + 2] = positions[i].z;
-    }
+    rtcSetGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, vertices, 0,
+                         3 * sizeof(float), vertexCount);
     auto* out = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
         mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles.size()));
     for (size_t t = 0; t < triangles.size(); ++t)
@@ -168,23 +181,45 @@ void BakeScene::build(const EmbreeDevice& device) {
     diameter_ = std::max(1.0f, 2.0f * glm::length(boundsMax_ - boundsMin_));
 
     std::vector<uint32_t> opaque, filtered;
+    std::vector<Coverage> coverage(materials_.materials.size());
+    for (uint32_t m = 0; m < coverage.size(); ++m) coverage[m] = coverageOf(materials_, m);
     for (uint32_t t = 0; t < triangleCount; ++t) {
         const uint32_t m = triangleMaterial_[t];
-        const bool alpha =
-            alphaFiltered(m < materials_.materials.size() ? &materials_.materials[m] : nullptr);
-        (alpha ? filtered : opaque).push_back(t);
+        const Coverage c = m < coverage.size() ? coverage[m] : Coverage::kOpaque;
+        if (c != Coverage::kNone) (c == Coverage::kOpaque ? opaque : filtered).push_back(t);
     }
+    if (!filtered.empty() &&
+        !rtcGetDeviceProperty(device.handle(), RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED))
+        throw std::runtime_error(
+            "Embree: filter functions are not supported by this build (EMBREE_FILTER_FUNCTION); "
+            "the level's MASK and BLEND materials need them");
     scene_ = rtcNewScene(device.handle());
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-    // Geometry IDs follow attachment order; empty groups are not attached.
-    for (std::vector<uint32_t>* group : {&opaque, &filtered}) {
-        if (group->empty()) continue;
-        const unsigned id =
-            attachTriangles(device.handle(), scene_, positions_, indices_, *group,
-                            group == &filtered ? &alphaFilter : nullptr, this);
-        if (id != geometryTriangles_.size())
-            throw std::runtime_error("Embree: unexpected geometry ID " + std::to_string(id));
-        geometryTriangles_.push_back(std::move(*group));
+    if (!opaque.empty() || !filtered.empty()) {
+        // One vertex buffer shared by both geometries. Embree reads 16 bytes at the last
+        // vertex: the buffer gets one float of slack.
+        RTCBuffer vertices =
+            rtcNewBuffer(device.handle(), (3 * positions_.size() + 1) * sizeof(float));
+        auto* v = static_cast<float*>(rtcGetBufferData(vertices));
+        for (size_t i = 0; i < positions_.size(); ++i) {
+            v[3 * i] = positions_[i].x;
+            v[3 * i + 1] = positions_[i].y;
+            v[3 * i + 2] = positions_[i].z;
+        }
+        v[3 * positions_.size()] = 0.0f;
+        // Geometry IDs follow attachment order; empty groups are not attached.
+        for (std::vector<uint32_t>* group : {&opaque, &filtered}) {
+            if (group->empty()) continue;
+            const unsigned id =
+                attachTriangles(device.handle(), scene_, vertices, positions_.size(), indices_,
+                                *group, group == &filtered ? &alphaFilter : nullptr, this);
+            if (id != geometryTriangles_.size()) {
+                rtcReleaseBuffer(vertices);
+                throw std::runtime_error("Embree: unexpected geometry ID " + std::to_string(id));
+            }
+            geometryTriangles_.push_back(std::move(*group));
+        }
+        rtcReleaseBuffer(vertices);
     }
     rtcCommitScene(scene_);
     if (!device.lastError().empty()) throw std::runtime_error(device.lastError());
@@ -194,16 +229,19 @@ BakeScene::~BakeScene() {
     rtcReleaseScene(scene_);
 }
 
-bool BakeScene::coverageAccepts(uint32_t triangle, glm::vec2 barycentric,
-                                const glm::vec3& origin, const glm::vec3& dir) const {
+bool BakeScene::coverageAccepts(uint32_t triangle, glm::vec2 barycentric, const glm::vec3& origin,
+                                const glm::vec3& dir) const {
     const uint32_t m = triangleMaterial_[triangle];
     if (m >= materials_.materials.size()) return true;
     const world::Material& material = materials_.materials[m];
     if (material.alphaMode == world::AlphaMode::kOpaque) return true;
-    SurfaceHit at;
-    at.triangle = triangle;
-    at.barycentric = barycentric;
-    const float alpha = sampleAlpha(materials_, m, attributesAt(at).uv);
+    // The uv as attributesAt interpolates it (the same expression), without the other
+    // attributes.
+    const glm::vec2 a = attributes_[indices_[3 * size_t(triangle)]].uv;
+    const glm::vec2 b = attributes_[indices_[3 * size_t(triangle) + 1]].uv;
+    const glm::vec2 c = attributes_[indices_[3 * size_t(triangle) + 2]].uv;
+    const float u = barycentric.x, v = barycentric.y, w = 1.0f - u - v;
+    const float alpha = sampleAlpha(materials_, m, w * a + u * b + v * c);
     if (material.alphaMode == world::AlphaMode::kMask) return alpha >= material.alphaCutoff;
     return coverageHash(triangle, origin, dir) < alpha;
 }
