@@ -2,6 +2,8 @@
 // rays and the light grid's visibility rays through its holes, and a BLEND sheet transmits
 // 1 - alpha, against the grate's geometry traced by hand.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <cstdio>
@@ -210,7 +212,7 @@ TEST(AlphaTransport, TheReferenceSeesTheFloorThroughTheGratesHoles) {
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(level);
     const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
     RayCounts rays;
     const uint32_t size = 192;
     const world::Camera& camera = level.cameras[0];
@@ -265,7 +267,7 @@ TEST(AlphaTransport, ABlendSheetTransmitsOneMinusAlpha) {
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(level);
     const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(level.lights, {}, glm::vec3(0.0f));
+    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
     RayCounts rays;
     const uint32_t size = 64;
     const world::Camera& camera = level.cameras[0];
@@ -290,6 +292,227 @@ TEST(AlphaTransport, ABlendSheetTransmitsOneMinusAlpha) {
                 transmitted, t, seen, t * t);
     EXPECT_NEAR(transmitted, t, 0.02 * t);
     EXPECT_NEAR(seen, t * t, 0.02 * t * t);
+}
+
+// Ray by ray, against BakeScene itself: the shadow rays of `count` floor points whose paths to
+// the light's centre cross the grate's central 1.5 x 1.5 m (six whole periods each way) at the
+// points of an R2 low-discrepancy sequence (Roberts 2018), so their open fraction converges to
+// the texture's like 1 / count.
+struct ShadowRay {
+    glm::vec3 origin, dir;
+    float distance;
+    glm::vec3 crossing;  // where the ray meets the grate's plane
+};
+std::vector<ShadowRay> shadowRaysThroughTheGrate(const BakeScene& scene, uint32_t count) {
+    std::vector<ShadowRay> rays;
+    for (uint32_t i = 0; i < count; ++i) {
+        const double a = 0.5 + 0.7548776662466927 * i, b = 0.5 + 0.5698402909980532 * i;
+        const glm::vec3 q(float(1.5 * (a - std::floor(a)) - 0.75), kGrateHeight,
+                          float(1.5 * (b - std::floor(b)) - 0.75));
+        const glm::vec3 p = kLight + (q - kLight) * (kLight.y / (kLight.y - kGrateHeight));
+        const glm::vec3 origin(p.x, scene.rayOffset(), p.z);
+        const glm::vec3 to = kLight - origin;
+        rays.push_back({origin, glm::normalize(to), glm::length(to), q});
+    }
+    return rays;
+}
+
+// 1 where BakeScene::occluded stops `ray`, traced on the threads of a parallel loop.
+std::vector<uint8_t> blocked(const BakeScene& scene, const std::vector<ShadowRay>& rays) {
+    std::vector<uint8_t> out(rays.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 256), [&](const auto& r) {
+        uint64_t counter = 0;
+        for (size_t i = r.begin(); i != r.end(); ++i)
+            out[i] = scene.occluded(rays[i].origin, rays[i].dir, rays[i].distance, counter);
+    });
+    return out;
+}
+
+double openFraction(const std::vector<uint8_t>& blockedRays) {
+    size_t open = 0;
+    for (uint8_t b : blockedRays) open += b == 0;
+    return double(open) / double(blockedRays.size());
+}
+
+// The grate level's static world in Embree, as the baker builds it.
+struct LevelScene {
+    const EmbreeDevice device;
+    const BakeScene scene;
+    explicit LevelScene(const world::SourceLevel& level)
+        : scene(device, world::splitStaticDynamic(level).staticGeometry,
+                loadSceneMaterials(level)) {}
+};
+
+// Shadow rays: the open ones are the texture's open fraction, and each one clear of an edge is
+// open exactly where it crosses a hole. With the grate's material OPAQUE (what every triangle
+// was before the alpha filter) not one ray passes, so these checks and those of the shadow
+// mask and the grid above fail without the filter.
+TEST(AlphaTransport, ShadowRaysPassTheGrateInItsOpenFraction) {
+    world::SourceLevel level = grateLevel(world::AlphaMode::kMask, 1.0f);
+    const uint32_t count = 100000;
+    {
+        const LevelScene s(level);
+        const std::vector<ShadowRay> rays = shadowRaysThroughTheGrate(s.scene, count);
+        const std::vector<uint8_t> stopped = blocked(s.scene, rays);
+        int checked = 0, wrong = 0;
+        for (size_t i = 0; i < rays.size(); ++i) {
+            const int open = grateOpenAt(rays[i].crossing.x, rays[i].crossing.z, 0.01f);
+            if (open < 0) continue;
+            ++checked;
+            wrong += (stopped[i] == 0) != (open == 1);
+        }
+        const double measured = openFraction(stopped);
+        std::printf(
+            "[ grate ] %u shadow rays: open %.5f (texture %.5f); %d of %d off the "
+            "pattern\n",
+            count, measured, kOpenFraction, wrong, checked);
+        EXPECT_NEAR(measured, kOpenFraction, 0.02 * kOpenFraction);
+        EXPECT_GT(checked, 90000);
+        EXPECT_EQ(wrong, 0);
+    }
+    level.materials[1].alphaMode = world::AlphaMode::kOpaque;
+    const LevelScene opaque(level);
+    const double measured =
+        openFraction(blocked(opaque.scene, shadowRaysThroughTheGrate(opaque.scene, count)));
+    std::printf("[ grate ] the same grate OPAQUE: open %.5f\n", measured);
+    EXPECT_EQ(measured, 0.0);
+
+    // And the bake: the shadow mask under an OPAQUE grate is black.
+    const BakeResult result = bakeLevel(level, grateOptions());
+    double sum = 0.0;
+    int inside = 0;
+    for (const FloorTexel& t : floorTexels(result))
+        if (underCentralGrate(t.position)) {
+            sum += double(t.mask);
+            ++inside;
+        }
+    ASSERT_GT(inside, 1000);
+    EXPECT_EQ(sum, 0.0);
+}
+
+// View rays (BakeScene::intersect) straight down through each texel centre of the grate find
+// the floor below a hole and the grate on a bar; straight up from below they escape through a
+// hole and meet the grate's back face on a bar. The hit's triangle is the scene's own (its
+// material and its interpolated uv are the grate's at the hit).
+TEST(AlphaTransport, ViewRaysSeeThroughTheHolesAndStopAtTheBars) {
+    const world::SourceLevel level = grateLevel(world::AlphaMode::kMask, 1.0f);
+    const LevelScene s(level);
+    const BakeScene& scene = s.scene;
+    const uint32_t floorMaterial = 0, grateMaterial = 1;
+    int holes = 0, bars = 0;
+    uint64_t counter = 0;
+    for (int tz = 0; tz < 32; ++tz)
+        for (int tx = 0; tx < 32; ++tx) {
+            const float x = -1.0f + (float(tx) + 0.5f) / 16.0f;
+            const float z = -1.0f + (float(tz) + 0.5f) / 16.0f;
+            const int open = grateOpenAt(x, z, 0.45f);
+            ASSERT_GE(open, 0);
+            const SurfaceHit down =
+                scene.intersect({x, 2.5f, z}, {0.0f, -1.0f, 0.0f}, 10.0f, counter);
+            const SurfaceHit up = scene.intersect({x, 0.5f, z}, {0.0f, 1.0f, 0.0f}, 10.0f, counter);
+            ASSERT_TRUE(down.found);
+            if (open) {
+                ++holes;
+                EXPECT_EQ(scene.materialIndexOf(down.triangle), floorMaterial) << tx << ", " << tz;
+                EXPECT_NEAR(down.distance, 2.5f, 1e-4f);
+                EXPECT_NEAR(down.position.y, 0.0f, 1e-5f);
+                EXPECT_FALSE(up.found) << tx << ", " << tz;
+            } else {
+                ++bars;
+                EXPECT_EQ(scene.materialIndexOf(down.triangle), grateMaterial) << tx << ", " << tz;
+                EXPECT_NEAR(down.distance, 2.5f - kGrateHeight, 1e-4f);
+                EXPECT_FALSE(down.backFace);
+                const glm::vec2 uv = scene.attributesAt(down).uv;
+                EXPECT_NEAR(uv.x, 2.0f * (x + 1.0f), 1e-4f);
+                EXPECT_NEAR(uv.y, 2.0f * (z + 1.0f), 1e-4f);
+                ASSERT_TRUE(up.found);
+                EXPECT_EQ(scene.materialIndexOf(up.triangle), grateMaterial);
+                EXPECT_TRUE(up.backFace);
+                EXPECT_NEAR(up.distance, kGrateHeight - 0.5f, 1e-4f);
+            }
+        }
+    EXPECT_EQ(holes, 256);  // 1/4 of 32 x 32
+    EXPECT_EQ(bars, 768);
+}
+
+// BLEND alpha 0.3: a shadow ray passes the sheet with probability 0.7 and a view ray sees it
+// with probability 0.3; every decision is a function of the ray and the triangle alone, so the
+// same rays give the same answers on every run and at any thread count, and a bake gives the
+// same bytes on one thread and on two.
+TEST(AlphaTransport, BlendCoverageIsAlphaAndTheSameOnEveryRunAndThread) {
+    const float alpha = 0.3f;
+    const world::SourceLevel level = grateLevel(world::AlphaMode::kBlend, alpha);
+    const LevelScene s(level);
+    const uint32_t count = 200000;
+    const std::vector<ShadowRay> rays = shadowRaysThroughTheGrate(s.scene, count);
+    std::vector<uint8_t> serial, parallel;
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        serial = blocked(s.scene, rays);
+    }
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+        parallel = blocked(s.scene, rays);
+    }
+    const double transmitted = openFraction(serial);
+    EXPECT_TRUE(serial == parallel);
+    EXPECT_TRUE(blocked(s.scene, rays) == serial);
+
+    uint64_t counter = 0;
+    uint32_t seen = 0;
+    for (const ShadowRay& r : rays) {  // down through the same crossings
+        const SurfaceHit hit = s.scene.intersect(r.crossing + glm::vec3(0.0f, 1.0f, 0.0f),
+                                                 {0.0f, -1.0f, 0.0f}, 10.0f, counter);
+        seen += hit.found && s.scene.materialIndexOf(hit.triangle) == 1;
+    }
+    const double seenFraction = double(seen) / double(count);
+    std::printf(
+        "[ blend ] %u shadow rays: transmitted %.5f (1 - alpha = %.2f); view rays see the "
+        "sheet %.5f (alpha = %.2f)\n",
+        count, transmitted, 1.0 - double(alpha), seenFraction, double(alpha));
+    EXPECT_NEAR(transmitted, 1.0 - double(alpha), 0.02 * (1.0 - double(alpha)));
+    EXPECT_NEAR(seenFraction, double(alpha), 0.02 * double(alpha));
+
+    BakeOptions options = grateOptions();
+    options.compile.charts.texelsPerMetre = 16.0f;
+    options.gridCellSize = 0.25f;
+    std::vector<uint8_t> one, two;
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        const BakeResult r = bakeLevel(level, options);
+        one = packageBytes(r.level, r.baked);
+    }
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+        const BakeResult r = bakeLevel(level, options);
+        two = packageBytes(r.level, r.baked);
+    }
+    EXPECT_TRUE(one == two);
+}
+
+// A material whose alpha is its factor alone (no base colour texture) is decided when the scene
+// is built, as the filter would decide each hit: MASK at or above the cutoff and BLEND at 1 are
+// opaque, MASK below the cutoff and BLEND at 0 are never hit.
+TEST(AlphaTransport, AConstantAlphaIsDecidedOnceAsTheFilterWould) {
+    struct Case {
+        world::AlphaMode mode;
+        float alpha;
+        double open;
+    };
+    for (const Case& c :
+         {Case{world::AlphaMode::kMask, 0.5f, 0.0}, Case{world::AlphaMode::kMask, 0.49f, 1.0},
+          Case{world::AlphaMode::kBlend, 1.0f, 0.0}, Case{world::AlphaMode::kBlend, 0.0f, 1.0}}) {
+        world::SourceLevel level = grateLevel(world::AlphaMode::kBlend, c.alpha);
+        level.materials[1].alphaMode = c.mode;
+        const LevelScene s(level);
+        EXPECT_EQ(openFraction(blocked(s.scene, shadowRaysThroughTheGrate(s.scene, 1000))), c.open)
+            << "mode " << int(c.mode) << ", alpha " << c.alpha;
+        uint64_t counter = 0;
+        const SurfaceHit hit =
+            s.scene.intersect({0.1f, 2.0f, 0.1f}, {0.0f, -1.0f, 0.0f}, 10.0f, counter);
+        ASSERT_TRUE(hit.found);
+        EXPECT_EQ(s.scene.materialIndexOf(hit.triangle), c.open > 0.5 ? 0u : 1u);
+    }
 }
 
 }  // namespace
