@@ -228,7 +228,8 @@ struct LevelSettings {
     float texelsPerMetre = 0.0f;                 // requested lightmap density
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // static geometry, metres
     float probeSpacing = 0.0f;                   // metres between automatic probes; 0 = unset
-    glm::vec3 skyRadiance{0.0f};                 // cd/m^2, RGB: the uniform sky, 0 = none
+    glm::vec3 skyRadiance{0.0f};   // cd/m^2, RGB: the uniform sky (0 = none), or skyImage's scale
+    uint32_t skyImage = kNoIndex;  // into images: an equirectangular HDR sky (shaders/sky.glsl)
 };
 
 struct CompiledLevel {

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -112,10 +113,10 @@ TEST(Import, EmissionIsFactorTimesStrengthInNits) {
     gltf.addNode({{"name", "b"}, {"mesh", gltf.addMesh(dim)}});
     const world::SourceLevel level = importGltf(gltf.write(freshFolder("emission"), "emission"));
     ASSERT_EQ(level.materials.size(), 2u);
-    const world::Material& a = level.materials[0].name == "panel" ? level.materials[0]
-                                                                   : level.materials[1];
-    const world::Material& b = level.materials[0].name == "panel" ? level.materials[1]
-                                                                   : level.materials[0];
+    const world::Material& a =
+        level.materials[0].name == "panel" ? level.materials[0] : level.materials[1];
+    const world::Material& b =
+        level.materials[0].name == "panel" ? level.materials[1] : level.materials[0];
     EXPECT_EQ(a.emissive, glm::vec3(400.0f, 200.0f, 100.0f));
     EXPECT_EQ(b.emissive, glm::vec3(0.5f));
 }
@@ -226,6 +227,30 @@ TEST(Import, SkyIsTheLevels) {
     }
 }
 
+// An image sky: "file.hdr", or {"image": ..., "scale": s or [r, g, b]}; the image joins the
+// level's images as a file reference beside the glTF, and its scale is the sky radiance.
+TEST(Import, SkyImageJoinsTheImages) {
+    for (const auto& [sky, scale] :
+         {std::pair{nlohmann::json("sky.hdr"), glm::vec3(1.0f)},
+          std::pair{nlohmann::json({{"image", "sky.hdr"}, {"scale", 2500.0}}), glm::vec3(2500.0f)},
+          std::pair{nlohmann::json({{"image", "sky.hdr"}, {"scale", {1.0, 2.0, 3.0}}}),
+                    glm::vec3(1, 2, 3)}}) {
+        GltfBuilder gltf;
+        gltf.addNode({{"name", "tri"}, {"mesh", gltf.addMesh(oneTriangle("tri"))}});
+        gltf.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"sky", sky}}}}}});
+        const std::string folder = freshFolder("sky_image");
+        const world::SourceLevel level = importGltf(gltf.write(folder, "sky"));
+        EXPECT_EQ(level.skyRadiance, scale);
+        ASSERT_LT(level.skyImage, level.images.size());
+        EXPECT_EQ(level.images[level.skyImage].uri,
+                  (std::filesystem::path(folder) / "sky.hdr").lexically_normal().string());
+        world::CompileOptions options;
+        const world::CompiledLevel compiled = world::compileLevel(level, options).level;
+        EXPECT_EQ(compiled.settings.skyImage, level.skyImage);
+        EXPECT_EQ(compiled.settings.skyRadiance, scale);
+    }
+}
+
 TEST(Import, ImagesAreFileReferencesOrEncodedBytes) {
     GltfBuilder gltf;
     MeshData mesh = oneTriangle("tri");
@@ -318,6 +343,18 @@ TEST(ImportErrors, BadSky) {
     GltfBuilder words;
     words.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"sky", "blue"}}}}}});
     expectError(words.write(freshFolder("sky_words"), "sky"), {"settings", "sky"});
+    GltfBuilder png;
+    png.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"sky", "sky.png"}}}}}});
+    expectError(png.write(freshFolder("sky_png"), "sky"), {"settings", "sky.png", ".hdr"});
+    GltfBuilder noImage;
+    noImage.addNode(
+        {{"name", "settings"}, {"extras", {{"onelight", {{"sky", {{"scale", 2.0}}}}}}}});
+    expectError(noImage.write(freshFolder("sky_object"), "sky"), {"settings", "\"image\""});
+    GltfBuilder badScale;
+    badScale.addNode(
+        {{"name", "settings"},
+         {"extras", {{"onelight", {{"sky", {{"image", "a.hdr"}, {"scale", -1.0}}}}}}}});
+    expectError(badScale.write(freshFolder("sky_scale"), "sky"), {"sky.scale", "cd/m^2 >= 0"});
 }
 
 TEST(ImportErrors, UnknownRole) {

@@ -82,7 +82,6 @@ void expectRoundTrip(const Disk& d, const Blobs& blobs = {}) {
 TEST(PackageRecords, EveryCoreRecordRoundTrips) {
     DiskLevel level = patterned<DiskLevel>();
     level.hasExposure = 1;
-    level.reserved = 0;
     expectRoundTrip(level);
 
     Blobs materialBlobs;

@@ -2,6 +2,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -112,6 +113,19 @@ TEST(Package, SkyRoundTripsAndIsChecked) {
         expectRejected(patched(bytes, kSectionLevel, 0, offsetof(DiskLevel, skyRadiance) + 4, bits),
                        "skyRadiance");
     }
+    // The sky's image indexes the images.
+    EXPECT_EQ(read.level.settings.skyImage, world::kNoIndex);
+    world::Image sky;
+    sky.name = "sky";
+    sky.uri = "sky.hdr";
+    level.images.push_back(sky);
+    level.settings.skyImage = uint32_t(level.images.size() - 1);
+    const std::vector<uint8_t> withImage = serializePackage(level);
+    EXPECT_EQ(parsePackage(withImage, "test.olpak").level.settings.skyImage,
+              level.settings.skyImage);
+    expectRejected(patched(withImage, kSectionLevel, 0, offsetof(DiskLevel, skyImage),
+                           uint32_t(level.images.size())),
+                   "skyImage");
 }
 
 TEST(Package, BakedSectionsSurviveARoundTrip) {
@@ -169,7 +183,7 @@ TEST(Package, WrongMagicAndVersionAreNamed) {
     std::vector<uint8_t> version = bytes;
     const uint32_t v = kVersion + 1;
     std::memcpy(version.data() + 4, &v, 4);
-    expectRejected(version, "version 2");
+    expectRejected(version, "version " + std::to_string(kVersion + 1));
 }
 
 TEST(Package, OutOfRangeIndicesAreRejected) {

@@ -201,6 +201,7 @@ CompileResult compileLevel(const SourceLevel& source, const CompileOptions& opti
     settings.texelsPerMetre = static_cast<float>(chartOptions.texelsPerMetre);
     settings.probeSpacing = source.probeSpacing;
     settings.skyRadiance = source.skyRadiance;
+    settings.skyImage = source.skyImage;
     if (!level.vertices.empty()) {
         settings.boundsMin = glm::vec3(INFINITY);
         settings.boundsMax = glm::vec3(-INFINITY);

@@ -1,6 +1,7 @@
 #include "world/import/extras_import.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include <tiny_gltf.h>
@@ -38,6 +39,14 @@ void readBox(const tinygltf::Value& v, const char* minKey, const char* maxKey,
     hi = readVec3(v.Get(maxKey), place + "." + maxKey);
     if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
         throw Error(place + ": expected " + minKey + " < " + maxKey + " on every axis");
+}
+
+// True when `name` ends in ".hdr", in any case.
+bool endsWithHdr(const std::string& name) {
+    if (name.size() < 4) return false;
+    std::string end = name.substr(name.size() - 4);
+    for (char& c : end) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return end == ".hdr";
 }
 
 }  // namespace
@@ -106,11 +115,29 @@ NodeExtras parseNodeExtras(const tinygltf::Value& extras, const std::string& whe
     if (o.Has("sky")) {
         const tinygltf::Value& sky = o.Get("sky");
         out.hasSky = true;
-        out.skyRadiance = sky.IsArray() ? readVec3(sky, base + ".sky")
-                                        : glm::vec3(readNumber(sky, base + ".sky"));
+        // An image: "file.hdr", or {"image": "file.hdr", "scale": s or [r, g, b]}.
+        const tinygltf::Value* scale = nullptr;
+        if (sky.IsString()) {
+            out.skyImage = sky.Get<std::string>();
+        } else if (sky.IsObject()) {
+            if (!sky.Has("image") || !sky.Get("image").IsString())
+                throw Error(base +
+                            ".sky is an object without \"image\"; expected {\"image\": "
+                            "\"sky.hdr\", \"scale\": cd/m^2 per unit}");
+            out.skyImage = sky.Get("image").Get<std::string>();
+            if (sky.Has("scale")) scale = &sky.Get("scale");
+        }
+        if (!out.skyImage.empty() && !endsWithHdr(out.skyImage))
+            throw Error(base + ".sky names '" + out.skyImage +
+                        "'; expected a Radiance .hdr file, or a radiance in cd/m^2");
+        const tinygltf::Value* radiance = out.skyImage.empty() ? &sky : scale;
+        const std::string what = out.skyImage.empty() ? ".sky" : ".sky.scale";
+        out.skyRadiance = radiance == nullptr   ? glm::vec3(1.0f)
+                          : radiance->IsArray() ? readVec3(*radiance, base + what)
+                                                : glm::vec3(readNumber(*radiance, base + what));
         if (!(std::min({out.skyRadiance.x, out.skyRadiance.y, out.skyRadiance.z}) >= 0.0f))
-            throw Error(base +
-                        ".sky is negative; expected a radiance in cd/m^2 >= 0 "
+            throw Error(base + what +
+                        " is negative; expected a radiance in cd/m^2 >= 0 "
                         "(one number, or [r, g, b])");
     }
     if (o.Has("exposure")) {

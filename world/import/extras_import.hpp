@@ -33,7 +33,8 @@ struct NodeExtras {
     float texelsPerMetre = 0.0f;  // lightmap density for the level, > 0 when given
     float probeSpacing = 0.0f;    // metres between the level's automatic probes, > 0 when given
     bool hasSky = false;
-    glm::vec3 skyRadiance{0.0f};  // cd/m^2, RGB, >= 0: the level's uniform sky
+    glm::vec3 skyRadiance{0.0f};  // cd/m^2, RGB, >= 0: the uniform sky, or the image's scale
+    std::string skyImage;         // an equirectangular .hdr (as written), empty for a uniform sky
 };
 
 /// Parses node.extras; `where` names the node for errors ("file.gltf: node 'lamp'").

@@ -76,9 +76,10 @@ struct Importer {
     const tinygltf::Model& model;
     const std::string& file;
     std::string folder;
-    SourceLevel level;
-    UseOrder materials, textures, images;
+    SourceLevel level{};
+    UseOrder materials{}, textures{}, images{};
     uint32_t defaultMaterial = kNoIndex;
+    std::string skyImage{};  // extras.onelight.sky's image, relative to the glTF's folder
 
     uint32_t useTexture(int gltfTexture) {
         if (gltfTexture < 0) return kNoIndex;
@@ -122,7 +123,10 @@ struct Importer {
         }
         if (extras.texelsPerMetre > 0.0f) level.texelsPerMetre = extras.texelsPerMetre;
         if (extras.probeSpacing > 0.0f) level.probeSpacing = extras.probeSpacing;
-        if (extras.hasSky) level.skyRadiance = extras.skyRadiance;
+        if (extras.hasSky) {
+            level.skyRadiance = extras.skyRadiance;
+            skyImage = extras.skyImage;
+        }
         if (extras.hasExposure && node.camera < 0 && !level.hasExposure) {
             level.hasExposure = true;
             level.exposureEv100 = extras.exposureEv100;
@@ -287,8 +291,7 @@ SourceLevel importGltf(const std::string& path) {
         throw Error(path + ": not a valid glTF 2.0 file: " +
                     (error.empty() ? std::string("unknown error") : firstLine(error)));
 
-    Importer importer{
-        model, path, std::filesystem::path(path).parent_path().string(), {}, {}, {}, {}, kNoIndex};
+    Importer importer{model, path, std::filesystem::path(path).parent_path().string()};
     importer.level.sourcePath = path;
     std::vector<int> roots;
     if (!model.scenes.empty()) {
@@ -309,6 +312,18 @@ SourceLevel importGltf(const std::string& path) {
     std::vector<bool> seen(model.nodes.size(), false);
     for (int root : roots) importer.visit(root, glm::dmat4(1.0), kNoIndex, seen, 0);
     importer.resolveMaterialsAndTextures();
+    if (!importer.skyImage.empty()) {
+        // The sky's image joins the level's images (a file reference; decoded by the baker and
+        // the runtime, which both check it is a readable .hdr).
+        world::Image sky;
+        sky.name = "sky";
+        sky.mimeType = "image/vnd.radiance";
+        sky.uri = (std::filesystem::path(importer.folder) / importer.skyImage)
+                      .lexically_normal()
+                      .string();
+        importer.level.skyImage = uint32_t(importer.level.images.size());
+        importer.level.images.push_back(std::move(sky));
+    }
     return std::move(importer.level);
 }
 

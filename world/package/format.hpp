@@ -27,7 +27,7 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 2;          // 2: DiskLevel holds the sky
+inline constexpr uint32_t kVersion = 3;          // 2: DiskLevel holds the sky; 3: its image
 using world::kNoIndex;                           // world/no_index.hpp
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -98,8 +98,9 @@ struct DiskLevel {
     float boundsMin[3];    // metres, static geometry (0 when there is none)
     float boundsMax[3];    // metres, >= boundsMin
     float probeSpacing;    // metres between automatic probes, >= 0; 0 = the baker's default
-    float skyRadiance[3];  // cd/m^2, RGB, finite, >= 0: the uniform sky (0 = none)
-    uint32_t reserved;     // 0
+    float skyRadiance[3];  // cd/m^2, RGB, finite, >= 0: the uniform sky (0 = none), or the scale
+                           // of skyImage's texels
+    uint32_t skyImage;     // into images: an equirectangular Radiance .hdr sky, or kNoIndex
 };
 static_assert(sizeof(DiskLevel) == 56);
 

@@ -88,6 +88,8 @@ public:
         loadBlobs();
         level.settings = fromDisk(single<DiskLevel>(kSectionLevel));
         load<DiskImage>(kSectionImages, level, level.images);  // before textures: they index images
+        checkIndex(kSectionLevel, 0, "skyImage", level.settings.skyImage, level.images.size(),
+                   "images", true);
         load<DiskTexture>(kSectionTextures, level, level.textures);
         load<DiskMaterial>(kSectionMaterials, level, level.materials);
         load<DiskLight>(kSectionLights, level, level.lights);
@@ -293,7 +295,6 @@ private:
         checkFinite(id, i, "skyRadiance", d.skyRadiance);
         if (!(std::min({d.skyRadiance[0], d.skyRadiance[1], d.skyRadiance[2]}) >= 0.0f))
             fail(id, i, "skyRadiance negative; expected cd/m^2 >= 0");
-        if (d.reserved != 0) fail(id, i, "reserved " + std::to_string(d.reserved) + "; expected 0");
     }
 
     void check(uint32_t id, size_t i, const DiskImage& d, const CompiledLevel&) const {

@@ -106,7 +106,7 @@ struct BlobReader {
 
 namespace records {
 
-/// Level settings -> DiskLevel (reserved 0).
+/// Level settings -> DiskLevel.
 [[nodiscard]] inline DiskLevel toDisk(const world::LevelSettings& s) {
     DiskLevel d{};
     d.exposureEv100 = s.exposureEv100;
@@ -116,6 +116,7 @@ namespace records {
     put(d.boundsMax, s.boundsMax);
     d.probeSpacing = s.probeSpacing;
     put(d.skyRadiance, s.skyRadiance);
+    d.skyImage = s.skyImage;
     return d;
 }
 
@@ -129,6 +130,7 @@ namespace records {
     s.boundsMax = vec(d.boundsMax);
     s.probeSpacing = d.probeSpacing;
     s.skyRadiance = vec(d.skyRadiance);
+    s.skyImage = d.skyImage;
     return s;
 }
 
