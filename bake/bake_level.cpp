@@ -109,8 +109,8 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(source);
     const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(source));
-    const BakeLights lights = makeBakeLights(scene, source.lights, options.lightSizes,
-                                             options.skyRadiance.value_or(source.skyRadiance));
+    const BakeLights lights =
+        makeLevelLights(scene, source, options.lightSizes, options.skyRadiance);
     report.stages.push_back({"scene", secondsSince(start), {}, scene.triangleCount()});
     report.triangles = scene.triangleCount();
 

@@ -73,6 +73,15 @@ using uint = unsigned int;
 [[nodiscard]] inline float atan(float x) {
     return std::atan(x);
 }
+[[nodiscard]] inline float acos(float x) {
+    return std::acos(x);
+}
+[[nodiscard]] inline float sin(float x) {
+    return std::sin(x);
+}
+[[nodiscard]] inline float cos(float x) {
+    return std::cos(x);
+}
 [[nodiscard]] inline float fract(float x) {
     return x - std::floor(x);
 }

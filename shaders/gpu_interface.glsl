@@ -32,7 +32,8 @@ const int BINDING_PROBES = 7;           // samplerCubeArray
 const int BINDING_MATERIALS = 8;        // storage GpuMaterial[]
 const int BINDING_ENV_BRDF = 9;         // sampler2D
 const int BINDING_PROBE_RECORDS = 10;   // storage GpuProbe[]
-const int FRAME_BINDING_COUNT = 11;
+const int BINDING_SKY = 11;             // sampler2D, the sky image (shaders/sky.glsl)
+const int FRAME_BINDING_COUNT = 12;
 
 // Descriptor set 1: a material's textures, binding = slot. GpuMaterial.textures.x holds bit
 // (1 << slot) for every slot the material fills (the others hold placeholders).
@@ -73,6 +74,8 @@ struct FrameUniforms {
     vec4 baked;           // x placeholder ambient (lux), y lightmap decode (stored x this = lux)
     vec4 probeParams;     // x mip count of the probes' cubes
     uvec4 counts;         // x effect omnis in use, y effect spot on (0/1), z probe records
+    mat4 skyFromClip;     // clip position to world direction: inverse(proj x view's rotation)
+    vec4 sky;             // rgb the sky image's scale (cd/m^2 per unit), w 1 = drawn
     GpuLight effectOmnis[MAX_EFFECT_OMNIS];  // diffuse only; info.y NO_INDEX (no shadow)
     GpuLight effectSpot;                     // the flashlight; no shadow
 };

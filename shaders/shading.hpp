@@ -15,6 +15,7 @@ namespace {
 #include "lighting.glsl"
 #include "material.glsl"
 #include "probe.glsl"
+#include "sky.glsl"
 #include "tonemap.glsl"
 #pragma GCC diagnostic pop
 }  // namespace

@@ -40,9 +40,9 @@ enum class AlphaMode : uint8_t { kOpaque = 0, kMask = 1, kBlend = 2 };
 ///   specularColor = mix(0.04, baseColor.rgb, metallic)
 ///   gloss          = saturate(log2(2 / roughness^4 - 1) / 18)   (inverse of
 ///                    ggxAlpha_fromGloss with GGX alpha = roughness^2)
-/// When textures are present these are the factors: the runtime applies the same formula per
-/// texel to the glTF textures (shaders/material.glsl) and the baker shades with the factors
-/// alone. Texture processing in the baker is planned, not built.
+/// When textures are present these are the factors: the runtime and the baker apply the same
+/// formula per texel to the glTF textures (shaders/material.glsl; the baker at every ray hit,
+/// bake/materials).
 struct Material {
     std::string name;
     glm::vec4 baseColor{1.0f};       // linear RGBA factor

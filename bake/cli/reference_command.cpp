@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <tbb/global_control.h>
@@ -102,8 +103,9 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
         const EmbreeDevice device;
         const world::SplitLevel split = world::splitStaticDynamic(source);
         const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(source));
-        const BakeLights lights = makeBakeLights(scene, source.lights, LightSizes{},
-                                                 sky >= 0.0f ? glm::vec3(sky) : source.skyRadiance);
+        const BakeLights lights =
+            makeLevelLights(scene, source, LightSizes{},
+                            sky >= 0.0f ? std::optional(glm::vec3(sky)) : std::nullopt);
         RayCounts rays;
         Progress progress("reference", height, true);
         const ReferenceImage image =

@@ -22,21 +22,21 @@ world::LightGridCell bakeCell(const BakeScene& scene, const BakeLights& lights,
     const float s0 = rng.next(), s1 = rng.next();
     std::array<glm::dvec3, 6> cube{};
     uint32_t backFaces = 0;
-    const bool emitters = !lights.emitters.empty();
+    const bool emission = samplesEmission(lights);
     constexpr float kUniformPdf = 1.0f / (4.0f * kPi);  // the directions' density
     for (uint32_t i = 0; i < count; ++i) {
         const glm::vec3 w = sampleUniformSphere(rotatedHammersley(i, count, s0, s1));
         FirstHit first;
         const glm::vec3 l = traceRadiance(scene, lights, settings.transport, centre, w,
-                                          RayCone{0.0f, sampleSpread(4.0f * kPi, count)}, rng,
-                                          rays, &first, emitters ? kUniformPdf : 0.0f);
+                                          RayCone{0.0f, sampleSpread(4.0f * kPi, count)}, rng, rays,
+                                          &first, emission ? kUniformPdf : 0.0f);
         if (first.found && first.backFace) ++backFaces;
         for (size_t a = 0; a < 6; ++a)
             cube[a] += glm::dvec3(l) * double(std::max(0.0f, glm::dot(kAxes[a], w)));
-        if (!emitters) continue;
-        // One emitter point per direction, in the same 4 pi / N scale: L_e w_e / (p_e 4 pi).
-        const EmitterEstimate e =
-            sampleEmitterRadiance(scene, lights.emitters, centre, glm::vec3(0.0f), rng, rays);
+        if (!emission) continue;
+        // One emission sample per direction, in the same 4 pi / N scale: L_e w_e / (p_e 4 pi).
+        const EmissionEstimate e =
+            sampleEmission(scene, lights, centre, glm::vec3(0.0f), rng, rays);
         if (!(e.pdf > 0.0f)) continue;
         const glm::vec3 le = e.radianceOverPdf * (powerHeuristic(e.pdf, kUniformPdf) * kUniformPdf);
         for (size_t a = 0; a < 6; ++a)

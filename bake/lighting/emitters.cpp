@@ -43,14 +43,14 @@ Emitters collectEmitters(const BakeScene& scene) {
     return out;
 }
 
-EmitterSample sampleEmitter(const BakeScene& scene, const Emitters& emitters,
-                            const glm::vec3& from, glm::vec3 u) {
+EmitterSample sampleEmitter(const BakeScene& scene, const Emitters& emitters, const glm::vec3& from,
+                            glm::vec3 u) {
     EmitterSample s;
     if (emitters.empty()) return s;
-    const size_t i = std::min(
-        size_t(std::upper_bound(emitters.cdf.begin(), emitters.cdf.end(), u.x) -
-               emitters.cdf.begin()),
-        emitters.triangles.size() - 1);
+    const size_t i =
+        std::min(size_t(std::upper_bound(emitters.cdf.begin(), emitters.cdf.end(), u.x) -
+                        emitters.cdf.begin()),
+                 emitters.triangles.size() - 1);
     const EmissiveTriangle& e = emitters.triangles[i];
     // A uniform point: barycentrics (sqrt(u1) (1 - u2), sqrt(u1) u2) (Turk 1990, Graphics Gems).
     const float r = std::sqrt(u.y);

@@ -13,7 +13,7 @@
 namespace onelight::bake {
 
 struct EmissiveTriangle {
-    uint32_t triangle = 0;           // into BakeScene triangles
+    uint32_t triangle = 0;                  // into BakeScene triangles
     glm::vec3 a{0.0f}, ab{0.0f}, ac{0.0f};  // a vertex and the two edges from it (Embree's u, v)
     glm::vec3 normal{0.0f, 0.0f, 1.0f};     // unit, the front face's
     float area = 0.0f;                      // m^2
@@ -30,8 +30,8 @@ struct EmissiveTriangle {
 */
 struct Emitters {
     std::vector<EmissiveTriangle> triangles;
-    std::vector<float> cdf;                  // cumulative choice probability, back() == 1
-    std::vector<float> choiceOverArea;       // per scene triangle: P(choose) / area, 0 if none
+    std::vector<float> cdf;             // cumulative choice probability, back() == 1
+    std::vector<float> choiceOverArea;  // per scene triangle: P(choose) / area, 0 if none
     [[nodiscard]] bool empty() const { return triangles.empty(); }
 };
 

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
+#include "world/error.hpp"
 #include "world/light_model.hpp"
 
 namespace onelight::bake {
@@ -14,8 +16,23 @@ BakeLights makeBakeLights(const BakeScene& scene, const std::vector<world::Light
     return out;
 }
 
-BakeLights makePunctualLights(const std::vector<world::Light>& levelLights,
-                              const LightSizes& sizes, glm::vec3 skyRadiance) {
+BakeLights makeLevelLights(const BakeScene& scene, const world::SourceLevel& source,
+                           const LightSizes& sizes, std::optional<glm::vec3> uniformSky) {
+    BakeLights out =
+        makeBakeLights(scene, source.lights, sizes, uniformSky.value_or(source.skyRadiance));
+    if (uniformSky || source.skyImage == world::kNoIndex) return out;
+    if (source.skyImage >= source.images.size() || source.images[source.skyImage].uri.empty())
+        throw world::Error(source.sourcePath + ": sky image " + std::to_string(source.skyImage) +
+                           " is not a file among its " + std::to_string(source.images.size()) +
+                           " images; expected a Radiance .hdr file");
+    out.skyImage =
+        makeSkyImage(world::readHdrFile(source.images[source.skyImage].uri), source.skyRadiance);
+    out.skyRadiance = glm::vec3(0.0f);
+    return out;
+}
+
+BakeLights makePunctualLights(const std::vector<world::Light>& levelLights, const LightSizes& sizes,
+                              glm::vec3 skyRadiance) {
     BakeLights out;
     out.skyRadiance = skyRadiance;
     for (size_t i = 0; i < levelLights.size(); ++i) {

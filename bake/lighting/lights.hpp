@@ -1,12 +1,14 @@
 // Light evaluation in physical units for the baker and the reference path tracer: glTF
 // directional lights in lux, point and spot lights in candela with inverse-square falloff and
 // the KHR_lights_punctual cone (evaluatePunctualLight of shaders/lighting.glsl, shared with the
-// runtime), a uniform sky in cd/m^2, the level's emissive surfaces (emitters.hpp), and the
+// runtime), the sky in cd/m^2 (uniform, or an image: sky.hpp), the level's emissive surfaces
+// (emitters.hpp), and the
 // visibility of a light of finite size (a sphere for point/spot, a cone of directions for the
 // sun) by shadow rays.
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -14,7 +16,9 @@
 #include "bake/embree/bake_scene.hpp"
 #include "bake/lighting/emitters.hpp"
 #include "bake/lighting/sampling.hpp"
+#include "bake/lighting/sky.hpp"
 #include "world/compiled_level.hpp"
+#include "world/source_level.hpp"
 
 namespace onelight::bake {
 
@@ -37,8 +41,14 @@ struct BakeLight {
 struct BakeLights {
     std::vector<BakeLight> lights;
     Emitters emitters;
-    glm::vec3 skyRadiance{0.0f};  // cd/m^2, uniform over every direction that escapes
+    glm::vec3 skyRadiance{0.0f};  // cd/m^2, uniform over every direction that escapes...
+    SkyImage skyImage;            // ...unless the sky is an image (then skyRadiance is unused)
 };
+
+/// The sky's radiance (cd/m^2) arriving from `direction` (unit, towards the sky).
+[[nodiscard]] inline glm::vec3 skyAlong(const BakeLights& lights, const glm::vec3& direction) {
+    return lights.skyImage.empty() ? lights.skyRadiance : skyRadiance(lights.skyImage, direction);
+}
 
 /// The level's lights and the sky, without emitters: for tools that evaluate punctual light
 /// alone (the lightmap's primary term at runtime, seam checks).
@@ -50,6 +60,14 @@ struct BakeLights {
 [[nodiscard]] BakeLights makeBakeLights(const BakeScene& scene,
                                         const std::vector<world::Light>& levelLights,
                                         const LightSizes& sizes, glm::vec3 skyRadiance);
+
+/// Everything `source` bakes with: its lights, the emissive triangles of `scene` and its sky,
+/// the image it names (decoded from its file, times its skyRadiance) or its uniform radiance;
+/// `uniformSky`, when set, replaces either (onelight-bake --sky). Throws world::Error naming
+/// the sky's file when it cannot be read.
+[[nodiscard]] BakeLights makeLevelLights(const BakeScene& scene, const world::SourceLevel& source,
+                                         const LightSizes& sizes,
+                                         std::optional<glm::vec3> uniformSky);
 
 /// A light seen from a point: where its centre is and how much it gives there.
 struct LightIncidence {

@@ -22,6 +22,12 @@ bool finiteNonNegative(const glm::vec3& c) {
            c.y >= 0.0f && c.z >= 0.0f;
 }
 
+// The probability that sampleEmission draws an emitter point rather than a sky direction.
+float emitterChoice(const BakeLights& lights) {
+    if (lights.emitters.empty()) return 0.0f;
+    return lights.skyImage.empty() ? 1.0f : 0.5f;
+}
+
 }  // namespace
 
 glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
@@ -46,22 +52,53 @@ glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
     return radiance;
 }
 
-EmitterEstimate sampleEmitterRadiance(const BakeScene& scene, const Emitters& emitters,
-                                      const glm::vec3& origin, const glm::vec3& normal, Rng& rng,
-                                      RayCounts& rays) {
-    EmitterEstimate out;
+bool samplesEmission(const BakeLights& lights) {
+    return !lights.emitters.empty() || !lights.skyImage.empty();
+}
+
+EmissionEstimate sampleEmission(const BakeScene& scene, const BakeLights& lights,
+                                const glm::vec3& origin, const glm::vec3& normal, Rng& rng,
+                                RayCounts& rays) {
+    EmissionEstimate out;
     const glm::vec3 u(rng.next(), rng.next(), rng.next());
-    if (emitters.empty()) return out;
-    const EmitterSample e = sampleEmitter(scene, emitters, origin, u);
-    out.direction = e.direction;
-    if (!(e.pdf > 0.0f) || (normal != glm::vec3(0.0f) && glm::dot(normal, e.direction) <= 0.0f))
+    const float choice = emitterChoice(lights);
+    float shadowDistance = 0.0f;
+    glm::vec3 radiance(0.0f);
+    if (u.x < choice) {
+        const EmitterSample e =
+            sampleEmitter(scene, lights.emitters, origin, glm::vec3(u.x / choice, u.y, u.z));
+        out.direction = e.direction;
+        out.pdf = e.pdf * choice;
+        shadowDistance = e.shadowDistance;
+        radiance = e.radiance;
+    } else if (!lights.skyImage.empty()) {
+        const SkySample s = sampleSky(lights.skyImage, glm::vec2(u.y, u.z));
+        out.direction = s.direction;
+        out.pdf = s.pdf * (1.0f - choice);
+        shadowDistance = scene.sceneDiameter();
+        radiance = s.radiance;
+    }
+    if (!(out.pdf > 0.0f) ||
+        (normal != glm::vec3(0.0f) && glm::dot(normal, out.direction) <= 0.0f) ||
+        (shadowDistance > 0.0f &&
+         scene.occluded(origin, out.direction, shadowDistance, rays.shadow))) {
+        out.pdf = 0.0f;
         return out;
-    if (e.shadowDistance > 0.0f &&
-        scene.occluded(origin, e.direction, e.shadowDistance, rays.shadow))
-        return out;
-    out.pdf = e.pdf;
-    out.radianceOverPdf = e.radiance / e.pdf;
+    }
+    out.radianceOverPdf = radiance / out.pdf;
     return out;
+}
+
+float emitterHitPdf(const BakeLights& lights, uint32_t triangle, float distance, float cosLight) {
+    const float choice = emitterChoice(lights);
+    return choice > 0.0f ? choice * emitterPdf(lights.emitters, triangle, distance, cosLight)
+                         : 0.0f;
+}
+
+float skyEscapePdf(const BakeLights& lights, const glm::vec3& direction) {
+    return lights.skyImage.empty()
+               ? 0.0f
+               : (1.0f - emitterChoice(lights)) * skyPdf(lights.skyImage, direction);
 }
 
 glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
@@ -70,12 +107,15 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                         float originPdf) {
     glm::vec3 radiance(0.0f);
     glm::vec3 throughput(1.0f);
-    float directionPdf = originPdf;  // density `dir` was drawn with, 0: no emitter sampling
+    float directionPdf = originPdf;  // density `dir` was drawn with, 0: no emission sampling
     for (uint32_t depth = 0; depth < settings.maxDepth; ++depth) {
         const SurfaceHit hit = scene.intersect(origin, dir, scene.sceneDiameter(), rays.bounce);
         if (depth == 0 && firstHit) *firstHit = {hit.found, hit.backFace, hit.distance};
         if (!hit.found) {
-            radiance += throughput * lights.skyRadiance;
+            const float weight = directionPdf > 0.0f && !lights.skyImage.empty()
+                                     ? powerHeuristic(directionPdf, skyEscapePdf(lights, dir))
+                                     : 1.0f;
+            radiance += throughput * skyAlong(lights, dir) * weight;
             break;
         }
         const world::Material& material = scene.materialOf(hit.triangle);
@@ -91,16 +131,16 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
         point.shadingNormal = m.shadingNormal;
         point.bsdf = m.bsdf;
         if (m.emission != glm::vec3(0.0f)) {
-            const float emitter = emitterPdf(lights.emitters, hit.triangle, hit.distance,
-                                             std::fabs(glm::dot(dir, hit.normal)));
+            const float emitter = emitterHitPdf(lights, hit.triangle, hit.distance,
+                                                std::fabs(glm::dot(dir, hit.normal)));
             const float weight = directionPdf > 0.0f ? powerHeuristic(directionPdf, emitter) : 1.0f;
             radiance += throughput * m.emission * weight;
         }
         radiance += throughput * directRadiance(scene, lights, point, v, rng, rays);
         const glm::vec3 offOrigin = hit.position + point.geometricNormal * scene.rayOffset();
-        if (!lights.emitters.empty()) {
-            const EmitterEstimate e = sampleEmitterRadiance(scene, lights.emitters, offOrigin,
-                                                            point.geometricNormal, rng, rays);
+        if (samplesEmission(lights)) {
+            const EmissionEstimate e =
+                sampleEmission(scene, lights, offOrigin, point.geometricNormal, rng, rays);
             if (e.pdf > 0.0f && glm::dot(point.shadingNormal, e.direction) > 0.0f) {
                 const float weight = powerHeuristic(
                     e.pdf, surfacePdf(point.bsdf, point.shadingNormal, v, e.direction));

@@ -52,20 +52,33 @@ struct ShadingPoint {
                                        const ShadingPoint& point, const glm::vec3& toViewer,
                                        Rng& rng, RayCounts& rays);
 
-/// One next-event sample of the emissive surfaces seen from `origin` (already off its surface):
-/// an emitter point drawn by power (emitters.hpp) and tested by a shadow ray. `normal`, when
-/// not zero, is the hemisphere the point can receive from (points behind it are skipped
-/// without a ray). The caller weights the sample against its own direction strategy of
-/// density p_other(l) with powerHeuristic(pdf, p_other(l)).
-struct EmitterEstimate {
+/// Whether `lights` holds light that is found two ways, by next-event estimation and by the
+/// paths' own directions: emissive surfaces, or a sky image. (A uniform sky is left to the
+/// paths: cosine-weighted directions already sample it perfectly on a diffuse surface.)
+[[nodiscard]] bool samplesEmission(const BakeLights& lights);
+
+/// One next-event sample of the emitted light seen from `origin` (already off its surface): a
+/// point on an emitter drawn by power (emitters.hpp) or a direction of the sky image drawn by
+/// its density (sky.hpp), each with probability 1/2 when the level has both, tested by a shadow
+/// ray. `normal`, when not zero, is the hemisphere the point can receive from (directions
+/// behind it are skipped without a ray). The caller weights the sample against its own
+/// direction strategy of density p_other(l) with powerHeuristic(pdf, p_other(l)).
+struct EmissionEstimate {
     glm::vec3 direction{0.0f, 0.0f, 1.0f};
     glm::vec3 radianceOverPdf{0.0f};  // L_e / pdf, 0 when blocked or nothing was drawn
-    float pdf = 0.0f;                 // per steradian
+    float pdf = 0.0f;                 // per steradian, the choice between the two included
 };
-[[nodiscard]] EmitterEstimate sampleEmitterRadiance(const BakeScene& scene, const Emitters& emitters,
-                                                    const glm::vec3& origin,
-                                                    const glm::vec3& normal, Rng& rng,
-                                                    RayCounts& rays);
+[[nodiscard]] EmissionEstimate sampleEmission(const BakeScene& scene, const BakeLights& lights,
+                                              const glm::vec3& origin, const glm::vec3& normal,
+                                              Rng& rng, RayCounts& rays);
+
+/// The density (per steradian) with which sampleEmission draws the point a ray found on scene
+/// triangle `triangle` at `distance`, arriving at cosine `cosLight` to it.
+[[nodiscard]] float emitterHitPdf(const BakeLights& lights, uint32_t triangle, float distance,
+                                  float cosLight);
+
+/// The density with which sampleEmission draws `direction`, a ray that escaped to the sky.
+[[nodiscard]] float skyEscapePdf(const BakeLights& lights, const glm::vec3& direction);
 
 /// What traceRadiance saw first (for inside-geometry tests).
 struct FirstHit {
@@ -78,7 +91,7 @@ struct FirstHit {
 /// a path traced with next-event estimation at every hit and a continuation drawn from the
 /// diffuse-specular mixture of surface_sampling.hpp.
 /*
-   L(x, -w) = Lo(y, -w),  y the first hit along w, or the sky radiance when there is none.
+   L(x, -w) = Lo(y, -w),  y the first hit along w, or the sky's radiance along w when none.
    Lo(y, v) = Lo_direct(y, v) + int f(v, w') L(y, -w') cos' dw'
    Continuation: w' from the mixture density pdf(w') (sampleSurface), so the path throughput
    multiplies by f cos' / pdf (albedo exactly for a Lambert-only surface), and by 1 / q when
@@ -91,12 +104,13 @@ struct FirstHit {
    at the level of detail of the path's footprint `cone` (ray_cone.hpp), which each bounce
    widens; the continuation carries the material's ambient occlusion, as the runtime applies it
    to the secondary light.
-   Emissive surfaces (emitters.hpp) are found two ways, combined by multiple importance
-   sampling (Veach 1997, ch. 9, power heuristic): at every hit one emitter point drawn by power
-   (weight w_e = p_e^2 / (p_e^2 + p_f^2), p_f the continuation's density of that direction),
-   and the emission a continuation lands on (weight p_f^2 / (p_f^2 + p_e^2)). The first
-   segment's emission has weight 1 unless the caller samples the emitters at `origin` too, once
-   per direction, and passes the density `originPdf` it drew `dir` with.
+   Emissive surfaces (emitters.hpp) and a sky image (sky.hpp) are found two ways, combined by
+   multiple importance sampling (Veach 1997, ch. 9, power heuristic): at every hit one
+   sampleEmission (weight w_e = p_e^2 / (p_e^2 + p_f^2), p_f the continuation's density of that
+   direction), and the emission a continuation lands on or the sky it escapes to (weight
+   p_f^2 / (p_f^2 + p_e^2)). The first segment's has weight 1 unless the caller calls
+   sampleEmission at `origin` too, once per direction, and passes the density `originPdf` it
+   drew `dir` with.
 */
 [[nodiscard]] glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                                       const TransportSettings& settings, glm::vec3 origin,

@@ -50,9 +50,10 @@ glm::vec3 moveOutOfGeometry(const BakeScene& scene, const glm::vec3& origin,
    Indirect part: w_i cosine-distributed on a rotated Hammersley set (pdf (n . w) / pi), so
      int L (n . w) dw ~ (1/N) sum_i L(w_i) (n . w_i) / pdf(w_i) = (pi / N) sum_i L(w_i)
    where L(w_i) = traceRadiance (every bounce of every light, and the sky on escape).
-   Emissive surfaces: with each w_i one emitter point l_i drawn by power (emitters.hpp), the
-   two combined by the power heuristic (radiance.hpp): the emitter sample adds
-   L_e (n . l_i) / p_e(l_i) x w_e(l_i), the emission w_i lands on counts with 1 - w_e(w_i).
+   Emissive surfaces and a sky image: with each w_i one emission sample l_i (an emitter point
+   drawn by power or a sky direction drawn by the image, radiance.hpp sampleEmission), the two
+   combined by the power heuristic: the sample adds L_e (n . l_i) / p_e(l_i) x w_e(l_i), the
+   emission or sky w_i reaches counts with 1 - w_e(w_i).
    The indirect part is then averaged with the texel's neighbours (the second pass of
    bakeLightmapTexels: a tent whose radius, one of kIndirectFilterRadii, grows with the local
    noise past the kIndirectFilterNoise thresholds).
@@ -114,24 +115,23 @@ TexelEstimate estimateTexel(const BakeScene& scene, const BakeLights& lights,
     if (count > 0) {
         const Frame frame = frameAround(n);
         const float s0 = rng.next(), s1 = rng.next();
-        const bool emitters = !lights.emitters.empty();
+        const bool emission = samplesEmission(lights);
         double sumY2 = 0.0;
         for (uint32_t i = 0; i < count; ++i) {
             const glm::vec3 w = glm::normalize(
                 frame.toWorld(sampleCosineHemisphere(rotatedHammersley(i, count, s0, s1))));
             const float pdf = glm::dot(n, w) / kPi;
-            glm::vec3 e = kPi * traceRadiance(scene, lights, settings.transport, origin, w,
-                                              RayCone{sample.texelSize,
-                                                      sampleSpread(2.0f * kPi, count)},
-                                              rng, rays, nullptr, emitters ? pdf : 0.0f);
+            glm::vec3 e =
+                kPi * traceRadiance(scene, lights, settings.transport, origin, w,
+                                    RayCone{sample.texelSize, sampleSpread(2.0f * kPi, count)}, rng,
+                                    rays, nullptr, emission ? pdf : 0.0f);
             out.indirectDirection += double(luminance(e)) * glm::dvec3(w);
-            if (emitters) {
-                const EmitterEstimate l =
-                    sampleEmitterRadiance(scene, lights.emitters, origin, n, rng, rays);
+            if (emission) {
+                const EmissionEstimate l = sampleEmission(scene, lights, origin, n, rng, rays);
                 if (l.pdf > 0.0f) {
                     const float cosine = glm::dot(n, l.direction);
-                    const glm::vec3 el = l.radianceOverPdf * cosine *
-                                         powerHeuristic(l.pdf, cosine / kPi);
+                    const glm::vec3 el =
+                        l.radianceOverPdf * cosine * powerHeuristic(l.pdf, cosine / kPi);
                     out.indirectDirection += double(luminance(el)) * glm::dvec3(l.direction);
                     e += el;
                 }
@@ -220,12 +220,12 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             // The indirect filter: a tent of radius r ([1 .. r+1 .. 1] per axis) over neighbours
             // of the same chart that were not moved out of geometry and that see this texel's
             // origin (a short shadow ray), so no light crosses a wall, each with its mirror
-            // neighbour. A field linear across the window is unchanged; for a full window the noise drops to sqrt(sum w^2) /
-            // sum w = 0.375 (r = 1), 0.24 (r = 2), 0.18 (r = 3). The radius grows with the
-            // largest relative noise in the texel's 3x3 neighbourhood (not its own: a texel
-            // whose paths happened to miss a small bright source looks quiet, while its
-            // neighbours' spikes show where the estimate is unreliable), so rare bright paths
-            // (a sunlit yard seen through a doorway) are spread instead of left as speckles.
+            // neighbour. A field linear across the window is unchanged; for a full window the noise
+            // drops to sqrt(sum w^2) / sum w = 0.375 (r = 1), 0.24 (r = 2), 0.18 (r = 3). The
+            // radius grows with the largest relative noise in the texel's 3x3 neighbourhood (not
+            // its own: a texel whose paths happened to miss a small bright source looks quiet,
+            // while its neighbours' spikes show where the estimate is unreliable), so rare bright
+            // paths (a sunlit yard seen through a doorway) are spread instead of left as speckles.
             double localNoise = relativeNoise(e);
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx)

@@ -47,8 +47,8 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
                         dir = glm::normalize(rotation *
                                              glm::vec3(sx * tanHalf * aspect, sy * tanHalf, -1.0f));
                     }
-                    sum += glm::dvec3(
-                        traceRadiance(scene, lights, transport, origin, dir, pixelCone, rng, local));
+                    sum += glm::dvec3(traceRadiance(scene, lights, transport, origin, dir,
+                                                    pixelCone, rng, local));
                 }
                 const glm::vec3 l = glm::vec3(sum / double(std::max(1u, spp)));
                 float* out = &image.rgb[(size_t(y) * width + x) * 3];
@@ -78,20 +78,19 @@ glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
     }
     const Frame frame = frameAround(normal);
     glm::dvec3 indirect(0.0);
-    const bool emitters = !lights.emitters.empty();
+    const bool emission = samplesEmission(lights);
     constexpr float kUniformPdf = 1.0f / (2.0f * kPi);  // the hemisphere directions' density
     for (uint32_t i = 0; i < samples; ++i) {
         // uniform hemisphere: the upper half of a uniform sphere direction
         glm::vec3 local = sampleUniformSphere({rng.next() * 0.5f, rng.next()});
         const glm::vec3 w = glm::normalize(frame.toWorld(local));
         indirect += glm::dvec3(traceRadiance(scene, lights, transport, origin, w,
-                                             RayCone{0.0f, sampleSpread(2.0f * kPi, samples)},
-                                             rng, rays, nullptr, emitters ? kUniformPdf : 0.0f)) *
+                                             RayCone{0.0f, sampleSpread(2.0f * kPi, samples)}, rng,
+                                             rays, nullptr, emission ? kUniformPdf : 0.0f)) *
                     double(local.z);
-        if (!emitters) continue;
-        // One emitter point per direction, in the same 2 pi / N scale (radiance.hpp).
-        const EmitterEstimate emitter =
-            sampleEmitterRadiance(scene, lights.emitters, origin, normal, rng, rays);
+        if (!emission) continue;
+        // One emission sample per direction, in the same 2 pi / N scale (radiance.hpp).
+        const EmissionEstimate emitter = sampleEmission(scene, lights, origin, normal, rng, rays);
         if (emitter.pdf > 0.0f)
             indirect += glm::dvec3(emitter.radianceOverPdf) *
                         double(glm::dot(normal, emitter.direction) *

@@ -35,9 +35,16 @@ LoadedLevel loadLevel(const std::string& path) {
             continue;
         }
         const std::filesystem::path file = folder / image.uri;
+        const bool sky = i == out.level.settings.skyImage;
         if (!std::filesystem::is_regular_file(file))
             throw world::Error(file.string() + ": cannot open the image referenced by " + where +
-                               "; expected a PNG or JPEG file");
+                               (sky ? "; expected a Radiance .hdr file (the sky)"
+                                    : "; expected a PNG or JPEG file"));
+        if (sky) {
+            out.sky = world::readHdrFile(file.string());
+            out.images.emplace_back();
+            continue;
+        }
         out.images.push_back(world::readImageFile(file.string()));
     }
     return out;

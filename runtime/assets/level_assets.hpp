@@ -20,12 +20,13 @@ struct LoadedLevel {
     world::CompiledLevel level;        // as the package holds it
     bool hasBakedLighting = false;     // the package holds sections 32..34 (a complete bake)
     world::BakedLighting baked;        // lightmap texels, shadow masks, light grid when present
-    std::vector<DecodedImage> images;  // one per level.images, decoded
+    std::vector<DecodedImage> images;  // one per level.images, decoded (empty: the sky's)
+    world::HdrImage sky;               // level.settings.skyImage decoded, else empty
 };
 
 /// Reads the package at `path`, its baked lighting when present, and decodes every image it
-/// refers to. Throws world::Error naming the file and what was expected (an unmerged part of a
-/// sharded bake included).
+/// refers to (PNG and JPEG for materials, the sky's Radiance .hdr). Throws world::Error naming the
+/// file and what was expected (an unmerged part of a sharded bake included).
 [[nodiscard]] LoadedLevel loadLevel(const std::string& path);
 
 }  // namespace onelight::assets

@@ -48,6 +48,16 @@ void writePng(const std::string& path, uint32_t width, uint32_t height,
     commit(path);
 }
 
+void writeHdr(const std::string& path, uint32_t width, uint32_t height,
+              const std::vector<float>& rgb) {
+    if (rgb.size() != size_t(width) * height * 3)
+        throw world::Error(path + ": the image has " + std::to_string(rgb.size()) +
+                           " floats, expected " + std::to_string(size_t(width) * height * 3));
+    if (!stbi_write_hdr(temporaryName(path).c_str(), int(width), int(height), 3, rgb.data()))
+        throw world::Error(path + ": cannot write the .hdr");
+    commit(path);
+}
+
 void writeExr(const std::string& path, uint32_t width, uint32_t height,
               const std::vector<float>& rgba) {
     if (rgba.size() != size_t(width) * height * 4)

@@ -28,6 +28,10 @@ void writePng(const std::string& path, uint32_t width, uint32_t height,
 void writeExr(const std::string& path, uint32_t width, uint32_t height,
               const std::vector<float>& rgba);
 
+/// Linear float RGB, top row first, as a Radiance .hdr (RGBE, run-length encoded).
+void writeHdr(const std::string& path, uint32_t width, uint32_t height,
+              const std::vector<float>& rgb);
+
 /// Reads an EXR back as float RGBA (tests).
 [[nodiscard]] FloatImage readExr(const std::string& path);
 

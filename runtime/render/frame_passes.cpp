@@ -52,9 +52,12 @@ void prepareForwardTargets(const RendererState& s, VkCommandBuffer cmd) {
 }
 
 // Dynamic rendering into the HDR target (through the MSAA target when multisampled) over a clear
-// to the level's sky (pre-exposed radiance, as the pass writes), with depth.
+// to the level's uniform sky (pre-exposed radiance, as the pass writes; black under a sky image,
+// which the sky pass draws), with depth.
 void beginForwardRendering(const RendererState& s, VkCommandBuffer cmd, float exposure) {
-    const glm::vec3 sky = glm::min(s.settings.skyRadiance * exposure, glm::vec3(glsl::HDR_MAX));
+    const glm::vec3 sky =
+        s.skyImage ? glm::vec3(0.0f)
+                   : glm::min(s.settings.skyRadiance * exposure, glm::vec3(glsl::HDR_MAX));
     const VkClearColorValue clear{{sky.r, sky.g, sky.b, 1.0f}};
     const VkRenderingAttachmentInfo color =
         s.samples != VK_SAMPLE_COUNT_1_BIT
@@ -110,6 +113,10 @@ void recordForwardPass(RendererState& s, VkCommandBuffer cmd, const FrameSlot& s
                            sizeof(push), &push);
         vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
         stats.trianglesDrawn += d.indexCount / 3;
+    }
+    if (s.skyPipeline) {  // last: only the pixels the level left at the far plane run it
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.skyPipeline);
+        vkCmdDraw(cmd, 3, 1, 0, 0);
     }
     vkCmdEndRendering(cmd);
 }

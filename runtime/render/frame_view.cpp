@@ -73,8 +73,8 @@ FrameView frameViewOf(const RendererState& s, const FrameInputs& inputs) {
         v.camera.zfar > 0.0f
             ? v.camera.zfar
             : glm::length(v.camera.position - 0.5f * (s.boundsMin + s.boundsMax)) + diagonal;
-    v.viewProj =
-        projectionMatrix(v.camera, float(s.width) / float(s.height), zfar) * viewMatrix(v.camera);
+    v.projection = projectionMatrix(v.camera, float(s.width) / float(s.height), zfar);
+    v.viewProj = v.projection * viewMatrix(v.camera);
     v.ev100 = v.camera.hasExposure     ? v.camera.ev100
               : s.settings.hasExposure ? s.settings.exposureEv100
                                        : s.info.autoEv100;
@@ -176,6 +176,8 @@ FrameUniforms frameUniformsOf(const RendererState& s, const FrameView& view,
     u.probeParams = glm::vec4(float(s.probeMips), 0.0f, 0.0f, 0.0f);
     const uint32_t omnis = std::min(effects.omniCount, kMaxEffectOmnis);
     u.counts = glm::uvec4(omnis, effects.spotOn ? 1u : 0u, s.probeCount, 0u);
+    u.skyFromClip = glm::inverse(view.projection * glm::mat4(glm::mat3(viewMatrix(view.camera))));
+    u.sky = glm::vec4(s.settings.skyRadiance, s.skyImage ? 1.0f : 0.0f);
     for (uint32_t i = 0; i < omnis; ++i) u.effectOmnis[i] = gpuLightOf(effects.omni[i]);
     u.effectSpot = gpuLightOf(effects.spot);
     return u;

@@ -28,7 +28,7 @@ static_assert(glsl::NO_INDEX == world::kNoIndex,
               "one \"no index\" on both sides of the GPU interface");
 
 static_assert(sizeof(GpuLight) == 80);
-static_assert(sizeof(FrameUniforms) == 144 + 80 * (kMaxEffectOmnis + 1));
+static_assert(sizeof(FrameUniforms) == 224 + 80 * (kMaxEffectOmnis + 1));
 static_assert(sizeof(GpuShadowView) == 80);
 static_assert(sizeof(GpuMaterial) == 80);
 static_assert(sizeof(GpuObjectLighting) == 96);

@@ -1,6 +1,6 @@
 // The renderer's pipelines and descriptor sets, laid out from the bindings of
 // shaders/gpu_interface.glsl: the forward permutations a level's materials use, the shadow
-// pipeline, the tonemap pipeline, and the frame, material and tonemap sets.
+// pipeline, the sky and tonemap pipelines, and the frame, material and tonemap sets.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -13,6 +13,8 @@
 #include "forward.vert.spv.h"
 #include "fullscreen.vert.spv.h"
 #include "shadow.vert.spv.h"
+#include "sky.frag.spv.h"
+#include "sky.vert.spv.h"
 #include "tonemap.frag.spv.h"
 
 namespace onelight::render {
@@ -41,8 +43,9 @@ const std::vector<VkDescriptorSetLayoutBinding>& frameBindings() {
         vk::layoutBinding(glsl::BINDING_PROBES, kSampled, kFragment),
         vk::layoutBinding(glsl::BINDING_MATERIALS, kStorage, kFragment),
         vk::layoutBinding(glsl::BINDING_ENV_BRDF, kSampled, kFragment),
-        vk::layoutBinding(glsl::BINDING_PROBE_RECORDS, kStorage, kFragment)};
-    static_assert(glsl::FRAME_BINDING_COUNT == 11, "one layout binding per frame binding");
+        vk::layoutBinding(glsl::BINDING_PROBE_RECORDS, kStorage, kFragment),
+        vk::layoutBinding(glsl::BINDING_SKY, kSampled, kFragment)};
+    static_assert(glsl::FRAME_BINDING_COUNT == 12, "one layout binding per frame binding");
     return bindings;
 }
 
@@ -144,6 +147,20 @@ void createShadowAndTonemapPipelines(RendererState& s) {
     s.tonemapPipeline = vk::createGraphicsPipeline(ctx, s.tonemapLayout, tonemap);
 }
 
+// The sky pass: the forward pass's layout and targets, no depth writes, behind everything.
+void createSkyPipeline(RendererState& s) {
+    if (!s.skyImage) return;
+    vk::GraphicsPipelineDesc sky;
+    sky.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kSkyVertSpirv, {}},
+                  {VK_SHADER_STAGE_FRAGMENT_BIT, kSkyFragSpirv, {}}};
+    sky.cullMode = VK_CULL_MODE_NONE;
+    sky.depthWrite = false;
+    sky.samples = s.samples;
+    sky.colorFormats = {kHdrFormat};
+    sky.depthFormat = kDepthFormat;
+    s.skyPipeline = vk::createGraphicsPipeline(*s.ctx, s.forwardLayout, sky);
+}
+
 // One frame set per frame slot, one material set per material, the tonemap set.
 void createDescriptorSets(RendererState& s) {
     const vk::Context& ctx = *s.ctx;
@@ -173,6 +190,7 @@ void createDescriptorSets(RendererState& s) {
         w.buffer(glsl::BINDING_MATERIALS, kStorage, s.materialBuffer.buffer);
         w.image(glsl::BINDING_ENV_BRDF, s.envBrdf.view, s.linearClamp);
         w.buffer(glsl::BINDING_PROBE_RECORDS, kStorage, s.probeBuffer.buffer);
+        w.image(glsl::BINDING_SKY, s.sky.view, s.skySampler);
         w.update(ctx);
     }
     for (const MaterialTextures& textures : s.materialTextures) {
@@ -201,6 +219,7 @@ void createPipelines(RendererState& s) {
     createLayouts(s);
     createForwardPipelines(s);
     createShadowAndTonemapPipelines(s);
+    createSkyPipeline(s);
     createDescriptorSets(s);
 }
 
@@ -211,7 +230,7 @@ void destroyPipelines(RendererState& s) {
     s.materialSets.clear();
     s.tonemapSet = VK_NULL_HANDLE;
     for (FrameSlot& slot : s.frames) slot.frameSet = VK_NULL_HANDLE;
-    for (VkPipeline* p : {&s.tonemapPipeline, &s.shadowPipeline, &s.flatPipeline}) {
+    for (VkPipeline* p : {&s.skyPipeline, &s.tonemapPipeline, &s.shadowPipeline, &s.flatPipeline}) {
         if (*p) vkDestroyPipeline(ctx.device, *p, nullptr);
         *p = VK_NULL_HANDLE;
     }

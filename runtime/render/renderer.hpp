@@ -133,6 +133,7 @@ struct RendererInfo {
     uint32_t shadowLayers = 0;
     uint32_t probes = 0;      // environment probes in use (0: the uniform placeholder)
     uint64_t probeBytes = 0;  // their cube array, every mip
+    bool skyImage = false;    // the sky pass draws the level's sky image behind it
 };
 
 struct RendererState;  // render/renderer_state.hpp

@@ -124,6 +124,11 @@ struct RendererState {
     vk::Image lut;
     vk::Image envBrdf;  // EnvBRDF_Fit at kEnvBrdfSize^2 texel centres (NoV, gloss)
 
+    // The sky image (RGBA16F, the decoded .hdr unscaled), a black texel when the level has none.
+    vk::Image sky;
+    VkSampler skySampler = VK_NULL_HANDLE;  // owned: linear, repeating in u, clamped in v
+    bool skyImage = false;                  // the level's sky is an image: the sky pass draws it
+
     // Targets.
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     uint32_t width = 0, height = 0;
@@ -137,6 +142,7 @@ struct RendererState {
     VkPipeline flatPipeline = VK_NULL_HANDLE;          // owned
     VkPipeline shadowPipeline = VK_NULL_HANDLE;        // owned
     VkPipeline tonemapPipeline = VK_NULL_HANDLE;       // owned
+    VkPipeline skyPipeline = VK_NULL_HANDLE;           // owned, when skyImage
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;  // owned, frees the sets
     VkDescriptorSet tonemapSet = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> materialSets;  // per material (one default when none)
@@ -207,7 +213,7 @@ struct Draw {
 /// The camera, the exposure and the dynamic objects' transforms and primaries of one frame.
 struct FrameView {
     Camera camera;
-    glm::mat4 viewProj{1.0f};
+    glm::mat4 projection{1.0f}, viewProj{1.0f};
     float ev100 = 0.0f, exposure = 1.0f;
     std::vector<glm::mat4> entityTransforms;  // per entity: given, else its placement
     std::vector<uint32_t> entityPrimary;      // per entity: the game's pick, or kNoIndex

@@ -102,9 +102,30 @@ vk::SamplerDesc samplerDesc(const world::Sampler& sampler) {
     return d;
 }
 
-// The brightest primary's illuminance at the level centre (lux): what automatic exposure and
-// the automatic placeholder ambient are based on.
-float referenceIlluminance(const RendererState& s) {
+// The illuminance the sky gives an open floor (lux): pi L for a uniform sky, the upper rows of
+// a sky image x cos(theta) x their solid angle (shaders/sky.glsl's mapping) for an image.
+float skyIlluminance(const world::LevelSettings& settings, const world::HdrImage& sky) {
+    if (sky.width == 0 || sky.height == 0) return glsl::PI * glsl::luminance(settings.skyRadiance);
+    double e = 0.0;
+    for (uint32_t i = 0; i < sky.height / 2; ++i) {
+        const double pi = double(glsl::PI);
+        const double t0 = pi * double(i) / sky.height, t1 = pi * (i + 1.0) / sky.height;
+        // int cos sin over the row's theta, times its phi width 2 pi / W:
+        const double weight = 0.5 * (std::sin(t1) * std::sin(t1) - std::sin(t0) * std::sin(t0)) *
+                              (2.0 * pi / sky.width);
+        for (uint32_t j = 0; j < sky.width; ++j) {
+            const size_t t = (size_t(i) * sky.width + j) * 3;
+            e += weight *
+                 double(glsl::luminance(glm::vec3(sky.rgb[t], sky.rgb[t + 1], sky.rgb[t + 2]) *
+                                        settings.skyRadiance));
+        }
+    }
+    return float(e);
+}
+
+// The brightest primary's illuminance at the level centre, or the sky's on an open floor when
+// brighter (lux): what automatic exposure and the automatic placeholder ambient are based on.
+float referenceIlluminance(const RendererState& s, const world::HdrImage& sky) {
     const glm::vec3 centre = 0.5f * (s.boundsMin + s.boundsMax);
     float best = 0.0f;
     for (const world::Light& light : s.lights) {
@@ -116,13 +137,15 @@ float referenceIlluminance(const RendererState& s) {
         }
         best = std::max(best, e);
     }
-    return best;
+    return std::max(best, skyIlluminance(s.settings, sky));
 }
 
 uint32_t textureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_t textureIndex,
                     bool srgb) {
     const world::Texture& texture = loaded.level.textures.at(textureIndex);
-    if (texture.image >= loaded.images.size()) return kNoIndex;
+    // Out of range, or the sky's image (decoded apart, as HDR): no material texture.
+    if (texture.image >= loaded.images.size() || loaded.images[texture.image].width == 0)
+        return kNoIndex;
     const uint64_t key = (uint64_t(texture.image) << 1) | (srgb ? 1u : 0u);
     auto found = s.textureIndex.find(key);
     if (found != s.textureIndex.end()) return found->second;
@@ -442,6 +465,27 @@ void createEnvBrdfTable(RendererState& s) {
     createHalfImage(*s.ctx, s.envBrdf, desc, texels);
 }
 
+// The sky image at full resolution (its light is already in the baked lighting; here it is
+// only seen), linear RGB in half floats, clamped to their range; one black texel without one.
+void uploadSky(RendererState& s, const assets::LoadedLevel& loaded) {
+    const world::HdrImage& sky = loaded.sky;
+    s.skyImage = sky.width > 0 && sky.height > 0;
+    vk::ImageDesc desc;
+    desc.width = s.skyImage ? sky.width : 1;
+    desc.height = s.skyImage ? sky.height : 1;
+    std::vector<float> texels(size_t(desc.width) * desc.height * 4, 0.0f);
+    if (s.skyImage)
+        for (size_t t = 0; t < size_t(sky.width) * sky.height; ++t)
+            for (size_t c = 0; c < 3; ++c)
+                texels[4 * t + c] = std::min(sky.rgb[3 * t + c], glsl::HDR_MAX);
+    createHalfImage(*s.ctx, s.sky, desc, texels);
+    vk::SamplerDesc wrapU;
+    wrapU.addressU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+    wrapU.addressV = wrapU.addressW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    s.skySampler = vk::createSampler(*s.ctx, wrapU);
+    s.info.skyImage = s.skyImage;
+}
+
 }  // namespace
 
 void uploadLights(RendererState& s) {
@@ -468,7 +512,7 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
     }
     s.drawnPrimary.assign(level.entities.size(), kNoIndex);
 
-    const float reference = referenceIlluminance(s);
+    const float reference = referenceIlluminance(s, loaded.sky);
     s.ambientLux = s.options.placeholderAmbientLux >= 0.0f
                        ? s.options.placeholderAmbientLux
                        : (reference > 0.0f ? 0.1f * reference : 1.0f);
@@ -488,6 +532,7 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
     uploadBakedLighting(s, loaded);
     createLut(s);
     createEnvBrdfTable(s);
+    uploadSky(s, loaded);
 
     // Material textures: (image, sampler) per slot, placeholders where absent.
     s.materialTextures.clear();
@@ -519,6 +564,9 @@ void destroyScene(RendererState& s) {
     if (s.linearClamp) vkDestroySampler(ctx.device, s.linearClamp, nullptr);
     s.nearestClamp = s.linearClamp = VK_NULL_HANDLE;
     vk::destroyImage(ctx, s.envBrdf);
+    vk::destroyImage(ctx, s.sky);
+    if (s.skySampler) vkDestroySampler(ctx.device, s.skySampler, nullptr);
+    s.skySampler = VK_NULL_HANDLE;
     vk::destroyImage(ctx, s.lut);
     vk::destroyImage(ctx, s.shadowMask);
     vk::destroyImage(ctx, s.lightmap);

@@ -124,6 +124,18 @@ uint32_t addImageTexture(world::SourceLevel& level, const std::string& pngPath, 
     return uint32_t(level.textures.size() - 1);
 }
 
+void setSkyImage(world::SourceLevel& level, const std::string& hdrPath, const world::HdrImage& sky,
+                 glm::vec3 scale) {
+    capture::writeHdr(hdrPath, sky.width, sky.height, sky.rgb);
+    world::Image image;
+    image.name = "sky";
+    image.mimeType = "image/vnd.radiance";
+    image.uri = hdrPath;
+    level.skyImage = uint32_t(level.images.size());
+    level.images.push_back(image);
+    level.skyRadiance = scale;
+}
+
 world::Light pointLight(glm::vec3 position, float candela, world::LightRole role) {
     world::Light l;
     l.name = "point";
@@ -214,6 +226,42 @@ world::SourceLevel smallRoomWithProbes() {
         }
         level.entities.push_back(e);
     }
+    return level;
+}
+
+world::SourceLevel texturedRoomWithProbes(const std::string& folder) {
+    world::SourceLevel level = smallRoomWithProbes();
+    std::vector<uint8_t> checker, bumps, holes;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const uint8_t c = ((x + y) % 2) ? 230 : 60;
+            checker.insert(checker.end(), {c, uint8_t(c * 3 / 4), uint8_t(c / 2), 255});
+            const float a = 0.4f * std::sin(0.785398f * float(x));
+            bumps.insert(bumps.end(), {uint8_t(127.5f + 127.5f * std::sin(a)), 128,
+                                       uint8_t(127.5f + 127.5f * std::cos(a)), 255});
+            holes.insert(holes.end(), {200, 200, 200, uint8_t((x % 4 < 2) ? 255 : 0)});
+        }
+    level.materials[0].baseColorTexture =
+        addImageTexture(level, folder + "/room_checker.png", 8, 8, checker);
+    level.materials[1].normalTexture =
+        addImageTexture(level, folder + "/room_bumps.png", 8, 8, bumps);
+    world::Material glow = level.materials[0];
+    glow.name = "glow";
+    glow.baseColorTexture = world::kNoIndex;
+    glow.emissive = glm::vec3(300.0f, 250.0f, 200.0f);
+    level.materials.push_back(glow);
+    addQuad(level, {1.2f, -0.2f, 1.9f}, {1.4f, -0.2f, 1.9f}, {1.4f, 0.2f, 1.9f}, {1.2f, 0.2f, 1.9f},
+            uint32_t(level.materials.size() - 1), "panel");
+    world::Material grate = level.materials[0];
+    grate.name = "grate";
+    grate.alphaMode = world::AlphaMode::kMask;
+    grate.doubleSided = true;
+    grate.baseColorTexture = addImageTexture(level, folder + "/room_holes.png", 8, 8, holes);
+    level.materials.push_back(grate);
+    addQuad(level, {-1.2f, -0.8f, 0.7f}, {-0.4f, -0.8f, 0.7f}, {-0.4f, 0.0f, 0.7f},
+            {-1.2f, 0.0f, 0.7f}, uint32_t(level.materials.size() - 1), "grate");
+    for (world::MeshInstance& m : level.instances)
+        for (world::Vertex& v : m.vertices) v.uv0 = {v.position.x + v.position.z, v.position.y};
     return level;
 }
 

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "bake/bake_level.hpp"
+#include "world/images/image_decode.hpp"
 #include "world/source_level.hpp"
 
 namespace onelight::bake::test {
@@ -32,6 +33,11 @@ uint32_t addImageTexture(world::SourceLevel& level, const std::string& pngPath, 
                          uint32_t height, const std::vector<uint8_t>& rgba,
                          const world::Sampler& sampler = {});
 
+/// Writes `sky` (linear RGB) as a Radiance .hdr at `hdrPath` and makes it the level's sky image,
+/// each texel times `scale` cd/m^2, as extras.onelight.sky {"image", "scale"} would.
+void setSkyImage(world::SourceLevel& level, const std::string& hdrPath, const world::HdrImage& sky,
+                 glm::vec3 scale);
+
 world::Light pointLight(glm::vec3 position, float candela, world::LightRole role);
 world::Light spotLight(glm::vec3 position, glm::vec3 direction, float candela, float inner,
                        float outer, world::LightRole role);
@@ -46,6 +52,11 @@ world::SourceLevel smallRoom();
 /// smallRoom with a glossy block and three authored probes (the first box-projected), so that
 /// the probe stage runs and two shards split its probes 1 + 2.
 world::SourceLevel smallRoomWithProbes();
+
+/// smallRoomWithProbes with every material feature the transport reads: a checker base colour
+/// on the walls, a normal map on the glossy block, an emissive panel and a MASK grate with
+/// holes (textures written as PNGs into `folder`; uv0 projected from the positions).
+world::SourceLevel texturedRoomWithProbes(const std::string& folder);
 
 /// testOptions at 4 texels/m with a few samples of everything: seconds for smallRoom.
 BakeOptions fastBakeOptions();

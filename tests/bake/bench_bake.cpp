@@ -11,6 +11,9 @@
 //     own noise is measured too). Also written as CSV with --csv.
 //  3. Scaling: the same room at 1x, 2x and 4x texels (texels_per_metre x1, x sqrt 2, x2).
 //  4. Peak memory per bake: ru_maxrss after resetting the high-water mark (/proc/self/clear_refs).
+//  5. Materials: the same room bare and with every material feature (bake_scenes.hpp
+//     texturedRoomWithProbes: textures, a normal map, an emissive panel, a MASK grate), baked
+//     alike; its rays/s against the bare room's is the cost of shading real materials.
 // Timings on 2 cores spread up to 1.6x between runs: compare ratios within one run.
 #include <sys/resource.h>
 #include <time.h>
@@ -529,6 +532,36 @@ bool parse(int argc, char** argv, BenchOptions& o) {
 }  // namespace
 }  // namespace onelight::bake
 
+// ---------------------------------------------------------------------------------------------
+// 5. Materials
+
+void materials(const BenchOptions& o) {
+    std::printf("\n== 5. Materials: the probe room bare and with every material feature ==\n");
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / "onelight_bench_materials";
+    std::filesystem::create_directories(folder);
+    BakeOptions options = test::fastBakeOptions();
+    options.quality = BakeQuality::kDraft;
+    const world::SourceLevel levels[2] = {test::smallRoomWithProbes(),
+                                          test::texturedRoomWithProbes(folder.string())};
+    const char* names[2] = {"bare (factors)", "textured + normal map + emitter + MASK"};
+    double rate[2] = {0.0, 0.0};
+    std::printf("%-40s %9s %12s %9s\n", "level", "seconds", "rays", "Mrays/s");
+    for (int k = 0; k < 2; ++k) {
+        double best = 1e30;
+        uint64_t rays = 0;
+        for (uint32_t r = 0; r < std::max(1u, o.repeats); ++r) {
+            const Bake b = timedBake(levels[k], options);
+            best = std::min(best, b.seconds);
+            rays = stageRays(b.result.report).total();
+        }
+        rate[k] = mrays(rays, best);
+        std::printf("%-40s %9.3f %12llu %9.2f\n", names[k], best,
+                    static_cast<unsigned long long>(rays), rate[k]);
+    }
+    std::printf("textured / bare rays/s: %.2f\n", rate[1] / rate[0]);
+}
+
 int main(int argc, char** argv) {
     using namespace onelight::bake;
     BenchOptions o;
@@ -550,6 +583,7 @@ int main(int argc, char** argv) {
         if (!o.throughputOnly) {
             if (!speedAgainstError(o)) return 1;
             scaling(o);
+            materials(o);
         }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "onelight-bench-bake: %s\n", e.what());

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <filesystem>
+#include <string>
+
 #include "bake_scenes.hpp"
 #include "shading.hpp"
 #include "tests/support/error_message.hpp"
@@ -13,8 +16,25 @@
 namespace onelight::bake {
 namespace {
 
-TEST(BakeDeterminism, OneAndTwoThreadsGiveIdenticalBytes) {
-    const world::SourceLevel level = test::smallRoomWithProbes();
+std::string outputFolder() {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "onelight_determinism";
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+// A plain room, and the same room with textures, a normal map, an emissive panel and a MASK
+// grate (every material feature the transport reads at a hit).
+class BakeDeterminism : public ::testing::TestWithParam<bool> {
+protected:
+    world::SourceLevel level() const {
+        return GetParam() ? test::texturedRoomWithProbes(outputFolder())
+                          : test::smallRoomWithProbes();
+    }
+};
+
+TEST_P(BakeDeterminism, OneAndTwoThreadsGiveIdenticalBytes) {
+    const world::SourceLevel level = this->level();
     std::vector<uint8_t> one, two;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
@@ -30,8 +50,8 @@ TEST(BakeDeterminism, OneAndTwoThreadsGiveIdenticalBytes) {
     EXPECT_TRUE(one == two);
 }
 
-TEST(BakeDeterminism, ShardsMergedEqualAWholeBake) {
-    const world::SourceLevel level = test::smallRoomWithProbes();
+TEST_P(BakeDeterminism, ShardsMergedEqualAWholeBake) {
+    const world::SourceLevel level = this->level();
     const BakeResult whole = bakeLevel(level, test::fastBakeOptions());
     ASSERT_EQ(whole.baked.probes.size(), 3u);
     // Each probe's E_avg is exactly what the runtime reads from the finished grid there.
@@ -67,6 +87,11 @@ TEST(BakeDeterminism, ShardsMergedEqualAWholeBake) {
         onelight::test::errorMessage([&] { (void)mergeBakedLighting(compiled, parts); });
     EXPECT_NE(error.find("1 parts given"), std::string::npos) << error;
 }
+
+INSTANTIATE_TEST_SUITE_P(Levels, BakeDeterminism, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& level) {
+                             return level.param ? "Textured" : "Plain";
+                         });
 
 }  // namespace
 }  // namespace onelight::bake

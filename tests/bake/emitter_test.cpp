@@ -21,14 +21,16 @@ constexpr double kPiD = 3.14159265358979323846;
 
 // View factor from a differential area to a parallel rectangle [0, a] x [0, b] at height c with
 // a corner straight above it (Howell, "A Catalog of Radiation Heat Transfer Configuration
-// Factors", B-3):  F = 1/(2 pi) [A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2))]
+// Factors", B-3):  F = 1/(2 pi) [A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2)
+// atan(A/sqrt(1+B^2))]
 double cornerFactor(double a, double b, double c) {
     const double A = a / c, B = b / c;
     const double sa = std::sqrt(1.0 + A * A), sb = std::sqrt(1.0 + B * B);
     return (A / sa * std::atan(B / sa) + B / sb * std::atan(A / sb)) / (2.0 * kPiD);
 }
 double signedCorner(double x, double y, double c) {
-    return (x < 0.0 ? -1.0 : 1.0) * (y < 0.0 ? -1.0 : 1.0) * cornerFactor(std::fabs(x), std::fabs(y), c);
+    return (x < 0.0 ? -1.0 : 1.0) * (y < 0.0 ? -1.0 : 1.0) *
+           cornerFactor(std::fabs(x), std::fabs(y), c);
 }
 // Irradiance at (px, pz) on the floor from a Lambertian rectangle [x0, x1] x [z0, z1] of
 // luminance L at height c: pi L F, F by superposition of the four corner rectangles.
@@ -44,7 +46,8 @@ double rectangleIrradiance(double L, double x0, double x1, double z0, double z1,
 // sqrt((h^2 + r^2 + R^2)^2 - 4 r^2 R^2)).
 double diskIrradiance(double L, double R, double h, double r) {
     const double s = h * h + r * r + R * R;
-    return 0.5 * kPiD * L * (1.0 - (h * h + r * r - R * R) / std::sqrt(s * s - 4.0 * r * r * R * R));
+    return 0.5 * kPiD * L *
+           (1.0 - (h * h + r * r - R * R) / std::sqrt(s * s - 4.0 * r * r * R * R));
 }
 
 // A 2 x 2 m floor at y = 0 (albedo 0.5) under an emitter facing down (black, emission L).
@@ -97,7 +100,8 @@ struct Scene {
     BakeLights lights;
     explicit Scene(const world::SourceLevel& level) {
         const world::SplitLevel split = world::splitStaticDynamic(level);
-        scene = std::make_unique<BakeScene>(device, split.staticGeometry, loadSceneMaterials(level));
+        scene =
+            std::make_unique<BakeScene>(device, split.staticGeometry, loadSceneMaterials(level));
         lights = makeBakeLights(*scene, level.lights, {}, glm::vec3(0.0f));
     }
 };
@@ -131,9 +135,10 @@ BakeResult expectLightmapMatches(const world::SourceLevel& level, uint32_t sampl
         ++checked;
     }
     const double bias = sum / checked, rms = std::sqrt(sumSq / checked);
-    std::printf("[ %s ] lightmap, %u paths: %d floor texels, relative error mean %+.4f, RMS "
-                "%.4f, worst %.4f\n",
-                name, samples, checked, bias, rms, worst);
+    std::printf(
+        "[ %s ] lightmap, %u paths: %d floor texels, relative error mean %+.4f, RMS "
+        "%.4f, worst %.4f\n",
+        name, samples, checked, bias, rms, worst);
     EXPECT_GT(checked, 500);
     EXPECT_LT(std::fabs(bias), 0.5 * tolerance);
     EXPECT_LT(rms, tolerance);
@@ -149,10 +154,10 @@ TEST(Emitters, AFarSquareLightsAFacingPatchWithLACos2OverD2) {
     ASSERT_EQ(s.lights.emitters.triangles.size(), 2u);
     TransportSettings transport;
     RayCounts rays;
-    const double farField = double(L) * double(side) * double(side) / (double(height) * double(height));
-    const glm::vec3 e =
-        referenceIrradiance(*s.scene, s.lights, {0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, 4096, 3,
-                            transport, rays);
+    const double farField =
+        double(L) * double(side) * double(side) / (double(height) * double(height));
+    const glm::vec3 e = referenceIrradiance(*s.scene, s.lights, {0.0f, 0.0f, 0.0f},
+                                            {0.0f, 1.0f, 0.0f}, 4096, 3, transport, rays);
     std::printf("[ square ] reference %.5f lux below the centre, far field L A / d^2 = %.5f\n",
                 double(e.x), farField);
     EXPECT_NEAR(double(e.x), farField, 0.01 * farField);
@@ -216,19 +221,18 @@ Variances estimatorVariances(const Scene& s, const glm::vec3& p, uint32_t n) {
     const Frame frame = frameAround(normal);
     double sum[3] = {0, 0, 0}, sumSq[3] = {0, 0, 0};
     for (uint32_t i = 0; i < n; ++i) {
-        const glm::vec3 w = glm::normalize(frame.toWorld(sampleCosineHemisphere({rng.next(), rng.next()})));
+        const glm::vec3 w =
+            glm::normalize(frame.toWorld(sampleCosineHemisphere({rng.next(), rng.next()})));
         const float pdf = glm::dot(normal, w) / kPi;
-        const EmitterEstimate e =
-            sampleEmitterRadiance(*s.scene, s.lights.emitters, origin, normal, rng, rays);
+        const EmissionEstimate e = sampleEmission(*s.scene, s.lights, origin, normal, rng, rays);
         const float cosE = glm::dot(normal, e.direction);
         const double nee = e.pdf > 0.0f ? double(e.radianceOverPdf.x * cosE) : 0.0;
         const double cosine =
             double(kPi * traceRadiance(*s.scene, s.lights, transport, origin, w, {}, rng, rays).x);
-        const double mis =
-            double(kPi * traceRadiance(*s.scene, s.lights, transport, origin, w, {}, rng, rays,
-                                       nullptr, pdf)
-                             .x) +
-            (e.pdf > 0.0f ? nee * double(powerHeuristic(e.pdf, cosE / kPi)) : 0.0);
+        const double mis = double(kPi * traceRadiance(*s.scene, s.lights, transport, origin, w, {},
+                                                      rng, rays, nullptr, pdf)
+                                            .x) +
+                           (e.pdf > 0.0f ? nee * double(powerHeuristic(e.pdf, cosE / kPi)) : 0.0);
         const double x[3] = {nee, cosine, mis};
         for (int k = 0; k < 3; ++k) {
             sum[k] += x[k];
@@ -275,8 +279,8 @@ TEST(Emitters, AGlowingIntegratingSphereReachesLOverOneMinusRho) {
     transport.maxDepth = 200;
     RayCounts rays;
     const glm::vec3 p(0.0f, 0.0f, -1.98f);  // near the wall's pole, facing in
-    const glm::vec3 e = referenceIrradiance(*s.scene, s.lights, p, {0.0f, 0.0f, 1.0f}, 20000, 9,
-                                            transport, rays);
+    const glm::vec3 e =
+        referenceIrradiance(*s.scene, s.lights, p, {0.0f, 0.0f, 1.0f}, 20000, 9, transport, rays);
     const double want = kPiD * double(L) / (1.0 - double(rho));
     std::printf("[ sphere ] irradiance %.3f lux, closed form pi L / (1 - rho) = %.3f\n",
                 double(e.x), want);

@@ -17,6 +17,7 @@
 #include "test_scene.hpp"
 #include "vk/context.hpp"
 #include "world/dynamic_primary.hpp"
+#include "world/images/image_decode.hpp"
 #include "world/light_grid_sample.hpp"
 #include "world/package/probe_section.hpp"
 
@@ -636,6 +637,80 @@ TEST(RenderBaked, AnEmissiveSurfaceShowsItsLuminancePreExposed) {
         EXPECT_LT(relativeError(floor, glm::vec3(400.0f), 1.0), 0.01)
             << "EV " << ev100 << ": " << floor.x << " " << floor.y << " " << floor.z;
     }
+}
+
+// A sky image behind the level: every pixel the floor leaves to the sky shows the image along
+// the pixel's ray (shaders/sky.glsl's mapping, bilinear between texel centres) times its scale,
+// at two exposures and two headings (u varies with the heading, so a turned or mirrored
+// mapping shows). Tolerance 1 %: the half-float texels and HDR target round at 2^-11, the
+// sampler weighs with 8 fractional bits on a sky that changes by < 3 % between texels.
+glm::vec3 equirectBilinear(const world::HdrImage& image, const glm::vec3& direction) {
+    const glm::vec2 uv = glsl::equirectUv_fromDirection(direction);
+    const float x = uv.x * float(image.width) - 0.5f, y = uv.y * float(image.height) - 0.5f;
+    const int w = int(image.width), h = int(image.height);
+    const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+    const float fx = x - float(x0), fy = std::clamp(y - float(y0), 0.0f, 1.0f);
+    const auto at = [&](int i, int j) {
+        i = std::clamp(i, 0, h - 1);
+        j = ((j % w) + w) % w;
+        const size_t t = (size_t(i) * image.width + size_t(j)) * 3;
+        return glm::vec3(image.rgb[t], image.rgb[t + 1], image.rgb[t + 2]);
+    };
+    return glm::mix(glm::mix(at(y0, x0), at(y0, x0 + 1), fx),
+                    glm::mix(at(y0 + 1, x0), at(y0 + 1, x0 + 1), fx), fy);
+}
+
+TEST(RenderBaked, TheSkyImageShowsBehindTheLevel) {
+    world::HdrImage sky;
+    sky.width = 64;
+    sky.height = 32;
+    for (uint32_t i = 0; i < sky.height; ++i)
+        for (uint32_t j = 0; j < sky.width; ++j) {
+            const float v = (float(i) + 0.5f) / float(sky.height);
+            const float u = (float(j) + 0.5f) / float(sky.width);
+            // Neither symmetric in u nor about u = 1/2: a mirrored or turned mapping shows.
+            const float around =
+                1.0f + 0.3f * std::cos(6.2831853f * u) + 0.2f * std::sin(6.2831853f * u);
+            sky.rgb.insert(sky.rgb.end(),
+                           {(1.0f - 0.6f * v) * around, (1.0f - 0.5f * v) * around, 1.0f * around});
+        }
+    capture::writeHdr(test::outputDir() + "/sky_image.hdr", sky.width, sky.height, sky.rgb);
+    const world::HdrImage stored = world::readHdrFile(test::outputDir() + "/sky_image.hdr");
+    test::Scene scene;
+    scene.materials = {{{0.5f, 0.5f, 0.5f, 1.0f}, 0.0f, 1.0f}};
+    test::addFloor(scene, 0.0f, 0.0f, 10.0f, 0.0f, 0);
+    scene.sky = glm::vec3(2000.0f);
+    scene.skyImage = "sky_image.hdr";
+    const std::string gltf = test::outputDir() + "/sky_image.gltf";
+    test::writeGltf(scene, gltf);
+    const assets::LoadedLevel level =
+        test::bakeAndLoad(gltf, test::outputDir() + "/sky_image.olpak");
+    ASSERT_EQ(level.sky.width, sky.width);
+    for (const float yaw : {0.0f, 120.0f})
+        for (const float ev100 : {8.0f, 12.0f}) {
+            render::FrameInputs inputs;
+            inputs.camera = render::cameraFromYawPitch({0.0f, 2.0f, 0.0f}, yaw, 20.0f);
+            inputs.camera.hasExposure = true;
+            inputs.camera.ev100 = ev100;
+            const std::string name =
+                "sky_image_yaw" + std::to_string(int(yaw)) + "_ev" + std::to_string(int(ev100));
+            const std::vector<float> linear =
+                renderLinear(level, options(0.01f, 0.005f), inputs, name);
+            int checked = 0;
+            double worst = 0.0;
+            for (uint32_t y = 0; y < kHeight; y += 3)
+                for (uint32_t x = 0; x < kWidth; x += 3) {
+                    const Ray r = pixelRay(inputs.camera, float(x) + 0.5f, float(y) + 0.5f);
+                    if (r.direction.y < 0.05f) continue;  // the floor, its edge, the horizon
+                    const glm::vec3 want = equirectBilinear(stored, r.direction) * 2000.0f;
+                    worst = std::max(worst, relativeError(pixel(linear, x, y), want, 1.0));
+                    ++checked;
+                }
+            std::printf("[ sky ] %s: %d sky pixels, worst %.3f %%\n", name.c_str(), checked,
+                        100.0 * worst);
+            EXPECT_GT(checked, 500);
+            EXPECT_LT(worst, 0.01) << name;
+        }
 }
 
 // The probe path of the forward shader against the C++ formula: a dielectric floor (dark, so

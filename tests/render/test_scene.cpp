@@ -200,10 +200,13 @@ void writeGltf(const Scene& scene, const std::string& path) {
         if (l.role) node["extras"] = {{"onelight", {{"role", l.role}}}};
         nodes.push_back(node);
     }
-    if (scene.sky != glm::vec3(0.0f))
+    const json sky = {scene.sky.x, scene.sky.y, scene.sky.z};
+    if (!scene.skyImage.empty())
         nodes.push_back(
             {{"name", "level_settings"},
-             {"extras", {{"onelight", {{"sky", {scene.sky.x, scene.sky.y, scene.sky.z}}}}}}});
+             {"extras", {{"onelight", {{"sky", {{"image", scene.skyImage}, {"scale", sky}}}}}}}});
+    else if (scene.sky != glm::vec3(0.0f))
+        nodes.push_back({{"name", "level_settings"}, {"extras", {{"onelight", {{"sky", sky}}}}}});
     json sceneNodes = json::array();
     for (size_t i = 0; i < nodes.size(); ++i) sceneNodes.push_back(i);
     json gltf = {{"asset", {{"version", "2.0"}}},

@@ -17,7 +17,7 @@ struct SceneMaterial {
     glm::vec4 baseColor{0.8f, 0.8f, 0.8f, 1.0f};
     float metallic = 0.0f;
     float roughness = 0.5f;
-    glm::vec3 emissive{0.0f};      // emissiveFactor
+    glm::vec3 emissive{0.0f};       // emissiveFactor
     float emissiveStrength = 1.0f;  // KHR_materials_emissive_strength (written when not 1)
 };
 
@@ -43,7 +43,8 @@ struct Scene {
     std::vector<SceneMaterial> materials;
     std::vector<SceneMesh> meshes;
     std::vector<SceneLight> lights;
-    glm::vec3 sky{0.0f};  // cd/m^2: extras.onelight.sky of a settings node when non-zero
+    glm::vec3 sky{0.0f};   // cd/m^2: extras.onelight.sky of a settings node when non-zero...
+    std::string skyImage;  // ...or the scale of this .hdr (relative to the glTF) when given
 };
 
 /// A quad in the plane y = height, facing +Y, of half size `half` around (cx, cz).

@@ -37,6 +37,8 @@ layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer Materials {
 // EnvBRDF_Fit(NoV, gloss) tabulated at texel centres (rg = scale, bias): one fetch instead of the
 // 27-term fit per pixel.
 layout(set = 0, binding = BINDING_ENV_BRDF) uniform sampler2D envBrdfTable;
+// The level's sky image (equirectangular, linear, x frame.sky.rgb), a black texel without one.
+layout(set = 0, binding = BINDING_SKY) uniform sampler2D skyImage;
 
 // Set 1: the material's textures (placeholders where it has none).
 layout(set = 1, binding = TEXTURE_BASE_COLOR) uniform sampler2D baseColorTexture;
