@@ -529,9 +529,6 @@ bool parse(int argc, char** argv, BenchOptions& o) {
     return o.triangles > 0 && o.texels > 0 && o.referenceSpp > 1 && o.scalingTexelsPerMetre > 0.0f;
 }
 
-}  // namespace
-}  // namespace onelight::bake
-
 // ---------------------------------------------------------------------------------------------
 // 5. Materials
 
@@ -561,6 +558,9 @@ void materials(const BenchOptions& o) {
     }
     std::printf("textured / bare rays/s: %.2f\n", rate[1] / rate[0]);
 }
+
+}  // namespace
+}  // namespace onelight::bake
 
 int main(int argc, char** argv) {
     using namespace onelight::bake;
