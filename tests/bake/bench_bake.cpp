@@ -11,9 +11,9 @@
 //     own noise is measured too). Also written as CSV with --csv.
 //  3. Scaling: the same room at 1x, 2x and 4x texels (texels_per_metre x1, x sqrt 2, x2).
 //  4. Peak memory per bake: ru_maxrss after resetting the high-water mark (/proc/self/clear_refs).
-//  5. Materials: the same room bare and with every material feature (bake_scenes.hpp
-//     texturedRoomWithProbes: textures, a normal map, an emissive panel, a MASK grate), baked
-//     alike; its rays/s against the bare room's is the cost of shading real materials.
+//  5. Materials: a textured room (bake_scenes.hpp texturedRoomWithProbes: base colour, a normal
+//     map, an emissive panel, a MASK grate) against the same room with its factors only; the
+//     rays/s ratio is the cost of reading textures at every hit.
 // Timings on 2 cores spread up to 1.6x between runs: compare ratios within one run.
 #include <sys/resource.h>
 #include <time.h>
@@ -38,6 +38,7 @@
 #include "bake/bake_level.hpp"
 #include "bake/lightmap/lightmap_bake.hpp"
 #include "bake/lightmap/texel_placement.hpp"
+#include "bake/materials/bake_textures.hpp"
 #include "bake/reference/path_tracer.hpp"
 #include "bake_scenes.hpp"
 #include "tests/world/level_generator.hpp"
@@ -57,6 +58,7 @@ struct BenchOptions {
     uint32_t repeats = 3;                // replays per path; the fastest counts
     uint32_t threads = 0;                // 0: every core
     bool throughputOnly = false;         // part 1 only (for profiling)
+    bool materialsOnly = false;          // part 5 only
     std::string csv;
 };
 
@@ -521,6 +523,8 @@ bool parse(int argc, char** argv, BenchOptions& o) {
             o.threads = uint32_t(std::strtoul(argv[++i], nullptr, 10));
         else if (a == "--throughput-only")
             o.throughputOnly = true;
+        else if (a == "--materials-only")
+            o.materialsOnly = true;
         else if (a == "--csv" && has_value)
             o.csv = argv[++i];
         else
@@ -533,30 +537,48 @@ bool parse(int argc, char** argv, BenchOptions& o) {
 // 5. Materials
 
 void materials(const BenchOptions& o) {
-    std::printf("\n== 5. Materials: the probe room bare and with every material feature ==\n");
+    std::printf("\n== 5. Materials: a textured room against the same room with factors only ==\n");
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / "onelight_bench_materials";
     std::filesystem::create_directories(folder);
-    BakeOptions options = test::fastBakeOptions();
-    options.quality = BakeQuality::kDraft;
-    const world::SourceLevel levels[2] = {test::smallRoomWithProbes(),
-                                          test::texturedRoomWithProbes(folder.string())};
-    const char* names[2] = {"bare (factors)", "textured + normal map + emitter + MASK"};
-    double rate[2] = {0.0, 0.0};
-    std::printf("%-40s %9s %12s %9s\n", "level", "seconds", "rays", "Mrays/s");
+    BakeOptions options = test::testOptions(24.0f, BakeQuality::kDefault);
+    options.compile.charts.atlasSize = 1024;
+    world::SourceLevel textured = test::texturedRoomWithProbes(folder.string());
+    // The same geometry and emitter; each base colour texture's mean (its last mip, linear)
+    // moved into the factor, so both levels reflect alike and trace about as many rays.
+    world::SourceLevel factors = textured;
+    for (world::Material& m : factors.materials) {
+        if (m.baseColorTexture != world::kNoIndex) {
+            const world::Texture& t = textured.textures[m.baseColorTexture];
+            const glm::vec4 mean =
+                makeBakeTexture(world::readImageFile(textured.images[t.image].uri), true, t.sampler)
+                    .texels.back();
+            m.baseColor *= glm::vec4(glm::vec3(mean), 1.0f);
+            m.albedo *= glm::vec3(mean);
+        }
+        m.baseColorTexture = m.metallicRoughnessTexture = m.normalTexture = m.occlusionTexture =
+            m.emissiveTexture = world::kNoIndex;
+    }
+    const world::SourceLevel* levels[2] = {&factors, &textured};
+    const char* names[2] = {"factors only (texture means)", "textured (base colour, normal, MASK)"};
+    double rate[2] = {0.0, 0.0}, seconds[2] = {0.0, 0.0};
+    std::printf("%-42s %9s %12s %9s\n", "textured room, default quality", "bake s", "rays",
+                "Mrays/s");
     for (int k = 0; k < 2; ++k) {
         double best = 1e30;
         uint64_t rays = 0;
         for (uint32_t r = 0; r < std::max(1u, o.repeats); ++r) {
-            const Bake b = timedBake(levels[k], options);
+            const Bake b = timedBake(*levels[k], options);
             best = std::min(best, b.seconds);
             rays = stageRays(b.result.report).total();
         }
         rate[k] = mrays(rays, best);
-        std::printf("%-40s %9.3f %12llu %9.2f\n", names[k], best,
+        seconds[k] = best;
+        std::printf("%-42s %9.3f %12llu %9.2f\n", names[k], best,
                     static_cast<unsigned long long>(rays), rate[k]);
     }
-    std::printf("textured / bare rays/s: %.2f\n", rate[1] / rate[0]);
+    std::printf("textured / factors only: rays/s %.2f, bake time %.2f (fastest of %u each)\n",
+                rate[1] / rate[0], seconds[1] / seconds[0], std::max(1u, o.repeats));
 }
 
 }  // namespace
@@ -569,7 +591,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr,
                      "usage: onelight-bench-bake [--triangles N] [--texels N] [--reference-spp N] "
                      "[--stride N] [--scaling-texels-per-metre X] [--repeats N] [--threads N] "
-                     "[--throughput-only] [--csv PATH]\n");
+                     "[--throughput-only] [--materials-only] [--csv PATH]\n");
         return 2;
     }
     const uint32_t threads =
@@ -579,8 +601,11 @@ int main(int argc, char** argv) {
                 RTC_VERSION_STRING, loadAverage().c_str());
     const auto start = std::chrono::steady_clock::now();
     try {
-        if (!rayThroughput(o)) return 1;
-        if (!o.throughputOnly) {
+        if (o.materialsOnly) {
+            materials(o);
+        } else if (!rayThroughput(o)) {
+            return 1;
+        } else if (!o.throughputOnly) {
             if (!speedAgainstError(o)) return 1;
             scaling(o);
             materials(o);
