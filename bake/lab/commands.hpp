@@ -1,7 +1,9 @@
 // The larger onelight-lab commands, one file each.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace onelight::lab {
 
@@ -11,5 +13,10 @@ namespace onelight::lab {
 // env-fit: fits the environment "Fresnel" (env_brdf.hpp) and writes it as GLSL to `path`
 // (default: stdout) (env_fit_command.cpp).
 [[nodiscard]] int envFit(const std::string& path);
+
+// sheet: EXRs side by side through exposure and the filmic curve into the PNG `output`; with a
+// rectangle (x, y, width, height) each image's mean there (sheet_command.cpp).
+[[nodiscard]] int sheet(const std::string& output, float ev100,
+                        const std::vector<std::string>& images, const std::vector<uint32_t>& rect);
 
 }  // namespace onelight::lab

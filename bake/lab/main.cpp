@@ -2,6 +2,8 @@
 //   onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST   CSV of albedo scale and bias
 //   onelight-lab brdf-report -o DIR                                 tables, CSVs and plots
 //   onelight-lab env-fit [-o FILE]                                  fits shaders/env_brdf_fit.glsl
+//   onelight-lab sheet -o OUT.png --ev100 E --images A.exr,B.exr [--rect x,y,w,h]
+//                                                                   EXRs side by side, tonemapped
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -21,6 +23,8 @@ constexpr const char* kUsage =
     "usage: onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST\n"
     "       onelight-lab brdf-report -o DIR [--quick]\n"
     "       onelight-lab env-fit [-o FILE]\n"
+    "       onelight-lab sheet -o OUT.png --ev100 E --images A.exr,B.exr[,...] [--rect "
+    "x,y,w,h]\n"
     "models: bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith; mu in (0,1]; gloss in "
     "[0,1]\n";
 
@@ -93,6 +97,18 @@ int envFitCommand(int argc, char** argv) {
     return envFit(o.get("-o"));
 }
 
+int sheetCommand(int argc, char** argv) {
+    Options o = parseOptions(argc, argv, {"-o", "--ev100", "--images", "--rect"}, {});
+    const std::vector<double> ev =
+        parseNumberList("--ev100", required(o, "--ev100"), -20.0, 30.0, false);
+    if (ev.size() != 1) throw std::invalid_argument("--ev100: expected one number");
+    std::vector<uint32_t> rect;
+    if (o.has("--rect"))
+        for (double v : parseNumberList("--rect", o.get("--rect"), 0.0, 1e6, false))
+            rect.push_back(uint32_t(v));
+    return sheet(required(o, "-o"), float(ev[0]), parseWordList(required(o, "--images")), rect);
+}
+
 }  // namespace
 }  // namespace onelight::lab
 
@@ -107,6 +123,7 @@ int main(int argc, char** argv) {
         if (command == "brdf-albedo") return brdfAlbedo(argc, argv);
         if (command == "brdf-report") return brdfReportCommand(argc, argv);
         if (command == "env-fit") return envFitCommand(argc, argv);
+        if (command == "sheet") return sheetCommand(argc, argv);
         std::fprintf(stderr, "onelight-lab: unknown command '%s'\n%s", argv[1], kUsage);
         return 1;
     } catch (const std::exception& e) {

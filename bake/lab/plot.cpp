@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+// Internal to this file (static), so a program may link another user of stb_image_write.
+#define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
 #pragma GCC diagnostic push

@@ -7,6 +7,8 @@
 
 #include <tinyexr.h>
 
+// Internal to this file (static), so a program may link another user of stb_image_write.
+#define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"

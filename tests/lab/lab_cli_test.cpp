@@ -6,10 +6,13 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "albedo.hpp"
 #include "capture/capture.hpp"
 #include "run_command.hpp"
+#include "shading.hpp"
 
 namespace {
 
@@ -85,4 +88,33 @@ TEST(LabCli, QuickReportWritesTablesCsvsAndPlots) {
     for (const char* csv : {"models.csv", "models_grid.csv", "env_fresnel.csv"})
         EXPECT_TRUE(std::filesystem::file_size(dir / csv) > 40) << csv;
     std::filesystem::remove_all(dir);
+}
+
+// sheet: two EXRs side by side through exposure and the filmic curve; a pixel of radiance L at
+// EV100 E reads displayValue(L x exposure) x 255 in the PNG, and the rectangle's means and
+// ratio are printed. Images of different sizes are a named error.
+TEST(LabCli, SheetPutsExrsSideBySideThroughTheCurve) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "onelight_lab_sheet";
+    std::filesystem::create_directories(dir);
+    const std::string a = (dir / "a.exr").string(), b = (dir / "b.exr").string();
+    const std::string small = (dir / "small.exr").string(), png = (dir / "sheet.png").string();
+    onelight::capture::writeExr(a, 4, 2, std::vector<float>(4 * 2 * 4, 100.0f));
+    onelight::capture::writeExr(b, 4, 2, std::vector<float>(4 * 2 * 4, 200.0f));
+    onelight::capture::writeExr(small, 2, 2, std::vector<float>(2 * 2 * 4, 1.0f));
+    onelight::test::CommandResult r =
+        run("sheet -o " + png + " --ev100 7 --images " + a + "," + b + " --rect 0,0,4,2");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("(2.0000 of the first)"), std::string::npos) << r.output;
+    const onelight::world::DecodedImage sheet = onelight::capture::readPng(png);
+    ASSERT_EQ(sheet.width, 8u);
+    ASSERT_EQ(sheet.height, 2u);
+    const float exposure = 1.0f / (1.2f * 128.0f);  // exposure_fromEV100(7)
+    for (const auto& [x, radiance] : {std::pair{1u, 100.0f}, std::pair{6u, 200.0f}}) {
+        const float want = onelight::glsl::displayValue(radiance * exposure) * 255.0f;
+        EXPECT_NEAR(float(sheet.rgba[x * 4]), want, 0.6f) << "pixel " << x;
+    }
+    r = run("sheet -o " + png + " --ev100 7 --images " + a + "," + small);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("small.exr: 2x2; expected the first image's 4x2"), std::string::npos)
+        << r.output;
 }
