@@ -145,6 +145,42 @@ TEST(Sky, TheSampledDensityIsTheEvaluatedOneAndIntegratesToOne) {
     EXPECT_LT(mismatched, int(n / 1000));
 }
 
+// Hard skies: all black (sampled uniformly, no light, no NaN), one texel (uniform), and a
+// 2 x 1 image whose only light is one texel: each a density over the sphere that integrates to
+// 1 and samples that are finite.
+TEST(Sky, BlackTinyAndOneHotTexelSkiesStayFinite) {
+    const auto image = [](uint32_t w, uint32_t h, std::vector<float> rgb) {
+        world::HdrImage i;
+        i.width = w;
+        i.height = h;
+        i.rgb = std::move(rgb);
+        return i;
+    };
+    const world::HdrImage skies[3] = {image(4, 2, std::vector<float>(24, 0.0f)),
+                                      image(1, 1, {2.0f, 2.0f, 2.0f}),
+                                      image(2, 1, {0.0f, 0.0f, 0.0f, 5.0f, 5.0f, 5.0f})};
+    for (const world::HdrImage& i : skies) {
+        const SkyImage sky = makeSkyImage(i, glm::vec3(100.0f));
+        const double total = integrateOverSphere(
+            sky, 64, [&](const glm::vec3& w) { return double(skyPdf(sky, w)); });
+        EXPECT_NEAR(total, 1.0, 2e-3) << i.width << "x" << i.height;
+        Rng rng{seedFrom(9)};
+        for (int k = 0; k < 2000; ++k) {
+            const SkySample s = sampleSky(sky, {rng.next(), rng.next()});
+            ASSERT_TRUE(std::isfinite(s.pdf) && s.pdf >= 0.0f);
+            ASSERT_TRUE(std::isfinite(s.radiance.x) && s.radiance.x >= 0.0f);
+            ASSERT_TRUE(std::isfinite(s.direction.x) && std::isfinite(s.direction.y));
+        }
+    }
+    // Straight up and down, where u is undefined, the lookup is finite and the density 0.
+    const SkyImage sky = makeSkyImage(syntheticSky(), glm::vec3(1.0f));
+    for (const glm::vec3 pole : {glm::vec3(0, 1, 0), glm::vec3(0, -1, 0)}) {
+        const glm::vec3 l = skyRadiance(sky, pole);
+        EXPECT_TRUE(std::isfinite(l.x) && std::isfinite(l.y) && std::isfinite(l.z));
+        EXPECT_EQ(skyPdf(sky, pole), 0.0f);
+    }
+}
+
 struct SkyScene {
     world::SourceLevel level;
     EmbreeDevice device;
