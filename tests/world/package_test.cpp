@@ -339,8 +339,13 @@ TEST(Package, WritesAtomically) {
     writeFileAtomically(path, bytes);
     EXPECT_FALSE(std::filesystem::exists(path + ".tmp"));
     EXPECT_EQ(serializePackage(readPackageFile(path).level), bytes);
-    EXPECT_THROW(writeFileAtomically((folder / "missing" / "level.olpak").string(), bytes),
-                 world::Error);
+    // A missing folder is made; a folder that is a file is a named error.
+    const std::string nested = (folder / "new" / "deeper" / "level.olpak").string();
+    writeFileAtomically(nested, bytes);
+    EXPECT_EQ(serializePackage(readPackageFile(nested).level), bytes);
+    const std::string underFile = (std::filesystem::path(path) / "level.olpak").string();
+    const std::string error = errorMessage([&] { writeFileAtomically(underFile, bytes); });
+    EXPECT_NE(error.find("cannot create its folder"), std::string::npos) << error;
     EXPECT_THROW((void)readPackageFile((folder / "absent.olpak").string()), world::Error);
 }
 

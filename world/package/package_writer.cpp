@@ -145,6 +145,12 @@ std::vector<uint8_t> serializePackage(const world::CompiledLevel& level,
 
 void writeFileAtomically(const std::string& path, std::span<const uint8_t> bytes) {
     const std::string temporary = path + ".tmp";
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    std::error_code made;
+    if (!folder.empty()) std::filesystem::create_directories(folder, made);
+    if (made)
+        throw world::Error(path + ": cannot create its folder " + folder.string() + " (" +
+                           made.message() + ")");
     {
         std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
         if (!file) throw world::Error(path + ": cannot create " + temporary);

@@ -24,7 +24,7 @@ struct RawSection {
                                                     std::span<const RawSection> bakedSections = {});
 
 /// Writes `bytes` to `path` through `path.tmp` and a rename, so that `path` is never
-/// half-written. Throws world::Error naming the file.
+/// half-written; makes `path`'s folder when it is missing. Throws world::Error naming the file.
 void writeFileAtomically(const std::string& path, std::span<const uint8_t> bytes);
 
 }  // namespace onelight::package
