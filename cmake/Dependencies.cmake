@@ -13,6 +13,10 @@ find_package(TBB REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(GTest REQUIRED)
 find_package(benchmark REQUIRED)
+# pk3 archives (Quake 3 maps). Through pkg-config: Debian 12's libzip CMake config names the
+# zipcmp/zipmerge/ziptool programs, which libzip-dev does not install, and fails without them.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)
 find_path(STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
 find_path(TINYEXR_INCLUDE_DIR tinyexr.h REQUIRED)
 find_library(TINYEXR_LIBRARY tinyexr REQUIRED)

@@ -27,8 +27,9 @@ std::string usage() {
         {"--free-fly", "a free-fly camera instead of the player (default: the player)"},
         {"-h, --help", "this help"}};
     std::string text =
-        "usage: onelight LEVEL(.gltf|.glb|.olpak) [OPTIONS]\n"
-        "  plays LEVEL in a window (a .gltf or .glb is baked first when its package is stale)\n";
+        "usage: onelight LEVEL(.gltf|.glb|.olpak|.bsp|PAK.pk3:maps/NAME.bsp|NAME) [OPTIONS]\n"
+        "  plays LEVEL in a window (a .gltf or .glb is baked first when its package is stale; a\n"
+        "  Quake 3 map NAME into NAME.olpak here, at draft quality)\n";
     for (const auto& [flag, meaning] : options) {
         const std::string f = flag;
         text += "  " + f + std::string(f.size() < 32 ? 32 - f.size() : 1, ' ') + meaning + "\n";

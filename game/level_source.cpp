@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "world/error.hpp"
+#include "world/level_names.hpp"
 
 namespace onelight::game {
 
@@ -74,6 +75,51 @@ std::string compilerError(const std::string& output) {
     return first;
 }
 
+// Runs onelight-bake: compile alone first (fast, its one-line errors captured), then the bake,
+// with the baker's progress bars on stderr when a person watches it (a terminal).
+void compileAndBake(const std::string& level, const std::string& package, const fs::path& bake,
+                    const std::vector<std::string>& bakeOptions, const std::string& why) {
+    std::string output;
+    int code = runCaptured({bake.string(), "compile", level, "-o", package}, output);
+    if (code != 0) {
+        const std::string error = compilerError(output);
+        throw world::Error(error.empty() ? level + ": onelight-bake compile failed (exit " +
+                                               std::to_string(code) + ")"
+                                         : error);
+    }
+    const bool watched = isatty(STDERR_FILENO) != 0;
+    if (watched) std::fprintf(stderr, "onelight: baking %s (%s)\n", level.c_str(), why.c_str());
+    output.clear();
+    std::vector<std::string> argv = {bake.string(), level, "-o", package};
+    argv.insert(argv.end(), bakeOptions.begin(), bakeOptions.end());
+    code = runCaptured(argv, output, watched);
+    if (code != 0) {
+        const std::string error = compilerError(output);
+        throw world::Error(error.empty() ? level + ": onelight-bake failed (exit " +
+                                               std::to_string(code) + ")"
+                                         : error);
+    }
+}
+
+// A Quake 3 map: its package NAME.olpak in the current folder, baked at draft quality when
+// missing or older than the baker (a first look takes seconds; bake it yourself with
+// onelight-bake --quality default for more).
+std::string resolveQuake3Package(const std::string& level, const std::string& baker) {
+    std::error_code ec;
+    const std::string package = world::defaultPackagePath(level);
+    const fs::path bake = baker;
+    const bool bakerKnown = fs::exists(bake, ec);
+    if (fs::exists(package, ec) &&
+        (!bakerKnown || fs::last_write_time(package, ec) >= fs::last_write_time(bake, ec)))
+        return package;
+    if (!bakerKnown)
+        throw world::Error(level + ": needs compiling, but " + bake.string() +
+                           " is missing; expected onelight-bake beside onelight");
+    compileAndBake(level, package, bake, {"--quality", "draft"},
+                   "a Quake 3 map at draft quality into " + package);
+    return package;
+}
+
 }  // namespace
 
 std::string resolveLevelPackage(const std::string& level) {
@@ -82,6 +128,8 @@ std::string resolveLevelPackage(const std::string& level) {
 
 std::string resolveLevelPackage(const std::string& level, const std::string& baker) {
     std::error_code ec;
+    if (world::isQuake3Map(level) && !fs::is_regular_file(level, ec))
+        return resolveQuake3Package(level, baker);
     if (!fs::is_regular_file(level, ec))
         throw world::Error(
             level + ": no such file; expected a glTF level (.gltf, .glb) or a .olpak package");
@@ -103,30 +151,8 @@ std::string resolveLevelPackage(const std::string& level, const std::string& bak
     if (!bakerKnown)
         throw world::Error(level + ": needs compiling, but " + bake.string() +
                            " is missing; expected onelight-bake beside onelight");
-    // First compile alone (fast, its one-line errors captured), then bake the lighting, with
-    // the baker's progress bars on stderr when a person watches it (a terminal).
-    std::string output;
-    int code = runCaptured({bake.string(), "compile", level, "-o", package}, output);
-    if (code != 0) {
-        const std::string why = compilerError(output);
-        throw world::Error(why.empty() ? level + ": onelight-bake compile failed (exit " +
-                                             std::to_string(code) + ")"
-                                       : why);
-    }
-    const bool watched = isatty(STDERR_FILENO) != 0;
-    if (watched)
-        std::fprintf(
-            stderr,
-            "onelight: baking %s (the package is missing or older than the level or the baker)\n",
-            level.c_str());
-    output.clear();
-    code = runCaptured({bake.string(), level, "-o", package}, output, watched);
-    if (code != 0) {
-        const std::string why = compilerError(output);
-        throw world::Error(why.empty() ? level + ": onelight-bake failed (exit " +
-                                             std::to_string(code) + ")"
-                                       : why);
-    }
+    compileAndBake(level, package, bake, {},
+                   "the package is missing or older than the level or the baker");
     return package;
 }
 

@@ -13,7 +13,7 @@
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "world/error.hpp"
-#include "world/import/gltf_import.hpp"
+#include "world/import/level_import.hpp"
 #include "world/package/package_writer.hpp"
 
 namespace onelight::bake {
@@ -98,13 +98,13 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
         }
     }
     if (input.empty()) return badArgument("no level given");
-    if (output.empty()) output = std::filesystem::path(input).replace_extension(".olpak").string();
+    if (output.empty()) output = world::defaultPackagePath(input);
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0)
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(threads));
     return runReportingErrors(input, [&] {
-        const world::SourceLevel source = world::importGltf(input);
+        const world::SourceLevel source = world::importLevel(input);
         BakeResult result = bakeLevel(source, options);
         rebaseImagePaths(result.level, output);
         const std::vector<uint8_t> bytes = packageBytes(result.level, result.baked);

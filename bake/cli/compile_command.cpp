@@ -9,7 +9,7 @@
 #include "bake/cli/subcommands.hpp"
 #include "world/compile/compile_level.hpp"
 #include "world/error.hpp"
-#include "world/import/gltf_import.hpp"
+#include "world/import/level_import.hpp"
 #include "world/package/package_writer.hpp"
 
 namespace onelight::bake {
@@ -102,9 +102,9 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
         std::fprintf(stderr, "onelight-bake compile: no level given\n%s", compileUsage().c_str());
         return 2;
     }
-    if (output.empty()) output = std::filesystem::path(input).replace_extension(".olpak").string();
+    if (output.empty()) output = world::defaultPackagePath(input);
     return runReportingErrors(input, [&] {
-        const world::SourceLevel source = world::importGltf(input);
+        const world::SourceLevel source = world::importLevel(input);
         world::CompileResult result = world::compileLevel(source, options);
         rebaseImagePaths(result.level, output);
         const std::vector<uint8_t> bytes = package::serializePackage(result.level);

@@ -16,7 +16,7 @@
 #include "bake/reference/path_tracer.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/error.hpp"
-#include "world/import/gltf_import.hpp"
+#include "world/import/level_import.hpp"
 
 namespace onelight::bake {
 std::string referenceUsage() {
@@ -84,7 +84,7 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(threads));
     return runReportingErrors(input, [&] {
-        const world::SourceLevel source = world::importGltf(input);
+        const world::SourceLevel source = world::importLevel(input);
         const world::Camera* camera = nullptr;
         for (const world::Camera& c : source.cameras)
             if (c.name == cameraName) camera = &c;

@@ -1,0 +1,321 @@
+// Quake 3 maps: the BSP reader's checks on hand-made files, patch tessellation without cracks,
+// the entity lump, the light mapping, and a real OpenArena map when the game's packages are
+// installed (openarena-081-maps, openarena-081-textures, openarena-data).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "tests/support/error_message.hpp"
+#include "world/error.hpp"
+#include "world/import/level_import.hpp"
+#include "world/import/q3/bsp_file.hpp"
+#include "world/import/q3/entity_lump.hpp"
+#include "world/import/q3/patch_tessellation.hpp"
+
+namespace onelight::world::q3 {
+namespace {
+
+using onelight::test::errorMessage;
+
+std::filesystem::path freshFolder(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / "onelight_q3" / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// A BSP written record by record: one shader, a square (4 vertices, 2 triangles) in the plane
+// z = 0 facing +z, and the entity text given.
+struct BspBuilder {
+    std::string entities = "{\n\"classname\" \"worldspawn\"\n}\n";
+    std::vector<BspShader> shaders;
+    std::vector<BspVertex> vertices;
+    std::vector<int32_t> indices;
+    std::vector<BspSurface> surfaces;
+
+    BspBuilder() {
+        BspShader s{};
+        std::strcpy(s.name, "textures/test/wall");
+        shaders.push_back(s);
+        for (const auto& p :
+             {std::pair{0.0f, 0.0f}, {64.0f, 0.0f}, {64.0f, 64.0f}, {0.0f, 64.0f}}) {
+            BspVertex v{};
+            v.position[0] = p.first;
+            v.position[1] = p.second;
+            v.normal[2] = 1.0f;
+            vertices.push_back(v);
+        }
+        indices = {0, 1, 2, 0, 2, 3};
+        BspSurface f{};
+        f.type = kSurfacePlanar;
+        f.vertexCount = 4;
+        f.indexCount = 6;
+        f.fog = -1;
+        surfaces.push_back(f);
+    }
+
+    std::vector<uint8_t> bytes() const {
+        std::vector<uint8_t> out(sizeof(BspHeader), 0);
+        BspHeader h{};
+        std::memcpy(h.magic, kBspMagic, 4);
+        h.version = kBspVersion;
+        const auto lump = [&](Lump l, const void* data, size_t size) {
+            h.lumps[l] = {int32_t(out.size()), int32_t(size)};
+            const auto* b = static_cast<const uint8_t*>(data);
+            out.insert(out.end(), b, b + size);
+            while (out.size() % 4) out.push_back(0);
+        };
+        lump(kLumpEntities, entities.c_str(), entities.size() + 1);
+        lump(kLumpShaders, shaders.data(), shaders.size() * sizeof(BspShader));
+        lump(kLumpDrawVerts, vertices.data(), vertices.size() * sizeof(BspVertex));
+        lump(kLumpDrawIndexes, indices.data(), indices.size() * sizeof(int32_t));
+        lump(kLumpSurfaces, surfaces.data(), surfaces.size() * sizeof(BspSurface));
+        std::memcpy(out.data(), &h, sizeof h);
+        return out;
+    }
+
+    std::string write(const std::string& folder, const std::string& name) const {
+        const std::string path = (freshFolder(folder) / (name + ".bsp")).string();
+        const std::vector<uint8_t> b = bytes();
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
+        return path;
+    }
+};
+
+std::string parseError(const std::vector<uint8_t>& bytes) {
+    return errorMessage([&] { (void)parseBsp(bytes, "test.bsp"); });
+}
+
+TEST(Quake3Bsp, AHandMadeMapImportsInMetresWithYUp) {
+    BspBuilder b;
+    Quake3Options options;
+    options.gameFolders = {freshFolder("no_game").string()};
+    const SourceLevel level = importLevel(b.write("square", "square"), options);
+    ASSERT_EQ(level.instances.size(), 1u);
+    const MeshInstance& mesh = level.instances[0];
+    ASSERT_EQ(mesh.indices.size(), 6u);
+    // (64, 64, 0) units is (2, 0, -2) m; the face's +z normal is +y.
+    EXPECT_EQ(mesh.vertices[2].position, glm::vec3(2.0f, 0.0f, -2.0f));
+    EXPECT_EQ(mesh.vertices[0].normal, glm::vec3(0.0f, 1.0f, 0.0f));
+    // Wound counter-clockwise about +y.
+    const glm::vec3 a = mesh.vertices[mesh.indices[0]].position,
+                    c = mesh.vertices[mesh.indices[2]].position,
+                    bb = mesh.vertices[mesh.indices[1]].position;
+    EXPECT_GT(glm::cross(bb - a, c - a).y, 0.0f);
+    // No image of the shader's name in any pk3: grey, counted as missing.
+    ASSERT_EQ(level.materials.size(), 1u);
+    EXPECT_EQ(level.materials[0].baseColorTexture, kNoIndex);
+    EXPECT_EQ(level.materials[0].name, "textures/test/wall");
+    EXPECT_FLOAT_EQ(level.texelsPerMetre, 2.0f);  // one luxel per 16 units
+}
+
+TEST(Quake3Bsp, BadFilesGiveOneLineNamingThePlace) {
+    const std::vector<uint8_t> good = BspBuilder().bytes();
+    EXPECT_NO_THROW((void)parseBsp(good, "test.bsp"));
+    const auto expectError = [](const std::vector<uint8_t>& bytes, const std::string& fragment) {
+        const std::string e = parseError(bytes);
+        EXPECT_NE(e.find(fragment), std::string::npos) << "got: " << e;
+        EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+        EXPECT_EQ(e.rfind("test.bsp", 0), 0u) << e;
+    };
+    expectError(std::vector<uint8_t>(good.begin(), good.begin() + 100), "expected a Quake 3 BSP");
+    std::vector<uint8_t> magic = good;
+    magic[0] = 'V';
+    expectError(magic, "no IBSP magic");
+    std::vector<uint8_t> version = good;
+    version[4] = 47;
+    expectError(version, "version 47");
+    std::vector<uint8_t> truncated(good.begin(), good.end() - 50);
+    expectError(truncated, "outside the file");
+    {
+        BspBuilder b;
+        b.surfaces[0].vertexCount = -1;
+        expectError(b.bytes(), "surface 0: vertices 0 + -1");
+    }
+    {
+        BspBuilder b;
+        b.indices[4] = 9;
+        expectError(b.bytes(), "surface 0: index 4 is 9; expected 0 .. 3");
+    }
+    {
+        BspBuilder b;
+        b.surfaces[0].shader = 3;
+        expectError(b.bytes(), "surface 0: shader 3 of 1");
+    }
+    {
+        BspBuilder b;
+        b.surfaces[0].type = kSurfacePatch;
+        b.surfaces[0].patchWidth = 2;
+        b.surfaces[0].patchHeight = 2;
+        expectError(b.bytes(), "a patch of 2 x 2 controls");
+    }
+    {
+        BspBuilder b;
+        b.vertices[1].position[0] = std::nanf("");
+        expectError(b.bytes(), "vertex 1 is NaN or Inf");
+    }
+    {
+        std::vector<uint8_t> odd = good;
+        BspHeader h;
+        std::memcpy(&h, odd.data(), sizeof h);
+        h.lumps[kLumpDrawVerts].length -= 4;
+        std::memcpy(odd.data(), &h, sizeof h);
+        expectError(odd, "expected a multiple of its 44-byte records");
+    }
+}
+
+TEST(Quake3Bsp, APk3ThatIsNotAZipIsNamed) {
+    const auto folder = freshFolder("not_zip");
+    const std::string pk3 = (folder / "broken.pk3").string();
+    std::ofstream(pk3) << "not a zip at all";
+    const std::string e = errorMessage([&] { (void)importLevel(pk3 + ":maps/x.bsp"); });
+    EXPECT_NE(e.find("broken.pk3: not a readable pk3 (zip) archive"), std::string::npos) << e;
+}
+
+TEST(Quake3Entities, ParseKeysAndNameTheLineOfAFault) {
+    const std::vector<MapEntity> e = parseEntities(
+        "{\n\"classname\" \"worldspawn\"\n}\n{\n\"classname\" \"light\"\n\"light\" \"250\"\n"
+        "\"_color\" \"1 0.5 0.25\"\n}\n",
+        "t.bsp");
+    ASSERT_EQ(e.size(), 2u);
+    EXPECT_EQ(e[1].get("classname"), "light");
+    EXPECT_EQ(e[1].line, 4);
+    EXPECT_EQ(numberKey(e[1], "light", 0.0f, "t.bsp"), 250.0f);
+    EXPECT_EQ(vectorKey(e[1], "_color", glm::vec3(0.0f), "t.bsp"), glm::vec3(1.0f, 0.5f, 0.25f));
+    EXPECT_NE(errorMessage([] {
+                  (void)parseEntities("{\n\"a\" \"b\"\n", "t.bsp");
+              }).find("t.bsp: entities line 1: an entity is never closed"),
+              std::string::npos);
+    EXPECT_NE(errorMessage([] {
+                  (void)parseEntities("{\n\"a\"\n\"b\" x }", "t.bsp");
+              }).find("entities line 3: expected a quoted key"),
+              std::string::npos);
+    EXPECT_NE(errorMessage([&] {
+                  (void)numberKey(e[1], "_color", 0.0f, "t.bsp");
+              }).find("\"_color\" holds 3 numbers; expected one"),
+              std::string::npos);
+}
+
+// q3map2's units and spot cone: "light" 300 is 300 x 7500 / 32^2 cd, and a light aimed at a
+// target 256 units away with radius 64 has tan(outer) = (64 + 16) / 256.
+TEST(Quake3Lights, PointAndSpotFollowQ3map2) {
+    BspBuilder b;
+    b.entities +=
+        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 128\"\n\"light\" \"300\"\n}\n"
+        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 256\"\n\"light\" \"600\"\n\"target\" "
+        "\"spot1\"\n\"_color\" \"1 0.5 0\"\n}\n"
+        "{\n\"classname\" \"info_null\"\n\"targetname\" \"spot1\"\n\"origin\" \"0 0 0\"\n}\n";
+    Quake3Options options;
+    options.gameFolders = {freshFolder("no_game_lights").string()};
+    options.primaryLights = 1;
+    const SourceLevel level = importLevel(b.write("lights", "lights"), options);
+    ASSERT_EQ(level.lights.size(), 2u);
+    const Light& point = level.lights[0];
+    EXPECT_EQ(point.type, LightType::kPoint);
+    EXPECT_NEAR(point.intensity, 300.0 * 7500.0 / 1024.0, 1e-3);
+    EXPECT_EQ(point.position, glm::vec3(0.0f, 4.0f, 0.0f));
+    EXPECT_EQ(point.role, LightRole::kBaked);
+    const Light& spot = level.lights[1];
+    EXPECT_EQ(spot.type, LightType::kSpot);
+    EXPECT_EQ(spot.role, LightRole::kPrimary);  // the brightest
+    EXPECT_NEAR(std::tan(spot.outerCone), 80.0 / 256.0, 1e-6);
+    EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
+    EXPECT_EQ(spot.color, glm::vec3(1.0f, 0.5f, 0.0f));
+}
+
+// Patches: every vertex a patch shares with a neighbour is bit-identical, whichever way the
+// neighbour runs along the shared border and whether it is its row or its column.
+TEST(Quake3Patches, SharedBordersAreBitIdentical) {
+    // A curved 5 x 3 grid (two pieces side by side).
+    std::vector<PatchPoint> grid;
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x)
+            grid.push_back({glm::vec3(float(x) * 17.3f, float(y) * 11.1f,
+                                      std::sin(float(x) * 1.3f + float(y)) * 9.7f),
+                            glm::vec3(0, 0, 1), glm::vec2(float(x) * 0.31f, float(y) * 0.27f)});
+    // The neighbour's first column is the first piece's top row (controls (0..2, 2)) reversed.
+    std::vector<PatchPoint> neighbour(9);
+    for (int j = 0; j < 3; ++j) {
+        const PatchPoint& border = grid[size_t(2 * 5 + (2 - j))];
+        neighbour[size_t(j) * 3] = border;
+        for (int i = 1; i < 3; ++i)
+            neighbour[size_t(j) * 3 + size_t(i)] = {
+                border.position + glm::vec3(0.0f, float(i) * 13.0f, 1.0f), glm::vec3(0, 0, 1),
+                glm::vec2(0.0f)};
+    }
+    for (uint32_t level : {1u, 3u, 4u, 7u}) {
+        const PatchMesh a = tessellatePatch(grid, 5, 3, level);
+        const PatchMesh b = tessellatePatch(neighbour, 3, 3, level);
+        const uint32_t row = level + 1;
+        ASSERT_EQ(a.vertices.size(), size_t(2 * row * row));
+        ASSERT_EQ(a.triangles.size(), size_t(2 * level * level * 6));
+        for (uint32_t k = 0; k <= level; ++k) {
+            // Inside the grid: piece 0's right border is piece 1's left border.
+            const PatchPoint& right = a.vertices[k * row + level];
+            const PatchPoint& left = a.vertices[row * row + k * row];
+            EXPECT_EQ(std::memcmp(&right.position, &left.position, sizeof(glm::vec3)), 0);
+            // Across patches: piece 0's top row at i = k is the neighbour's column 0 at
+            // j = level - k.
+            const PatchPoint& top = a.vertices[level * row + k];
+            const PatchPoint& side = b.vertices[(level - k) * row];
+            EXPECT_EQ(std::memcmp(&top.position, &side.position, sizeof(glm::vec3)), 0)
+                << "level " << level << ", k " << k;
+            EXPECT_EQ(top.uv, side.uv);
+        }
+        // The corners are the controls themselves.
+        EXPECT_EQ(a.vertices[0].position, grid[0].position);
+        EXPECT_EQ(a.vertices[row * row + level * row + level].position, grid[14].position);
+    }
+    EXPECT_TRUE(tessellatePatch(grid, 4, 3, 4).vertices.empty());  // even width: nothing
+}
+
+// A real map, when the game is installed: q3dm6ish imports with its textures, spawns (each
+// with a camera at its eyes), lights (at most 4 primaries) and finite geometry of a sane size.
+TEST(Quake3Maps, Q3dm6ishImportsWithTexturesSpawnsAndLights) {
+    if (defaultQuake3Folders().empty())
+        GTEST_SKIP() << "OpenArena is not installed (openarena-data, openarena-081-maps, "
+                        "openarena-081-textures)";
+    const SourceLevel level = importLevel("q3dm6ish");
+    size_t triangles = 0, textured = 0;
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const MeshInstance& m : level.instances) {
+        triangles += m.indices.size() / 3;
+        for (const Vertex& v : m.vertices) {
+            ASSERT_TRUE(std::isfinite(v.position.x) && std::isfinite(v.position.y) &&
+                        std::isfinite(v.position.z));
+            lo = glm::min(lo, v.position);
+            hi = glm::max(hi, v.position);
+        }
+    }
+    for (const Material& m : level.materials) textured += m.baseColorTexture != kNoIndex;
+    const glm::vec3 size = hi - lo;
+    std::printf(
+        "[ q3dm6ish ] %zu triangles, %zu materials (%zu textured), %zu lights, %zu "
+        "spawns, %.0f x %.0f x %.0f m\n",
+        triangles, level.materials.size(), textured, level.lights.size(), level.cameras.size(),
+        double(size.x), double(size.y), double(size.z));
+    EXPECT_GT(triangles, 2000u);
+    EXPECT_GE(textured * 10, level.materials.size() * 9);
+    EXPECT_GT(level.lights.size(), 10u);
+    size_t primaries = 0;
+    for (const Light& l : level.lights) primaries += l.role == LightRole::kPrimary;
+    EXPECT_EQ(primaries, 4u);
+    EXPECT_GE(level.cameras.size(), 4u);
+    EXPECT_EQ(level.cameras.size(), level.entities.size());
+    for (const Entity& e : level.entities) {
+        EXPECT_TRUE(e.flags & kEntitySpawn);
+        EXPECT_GT(e.position.y, lo.y);  // above the map's lowest point
+    }
+    EXPECT_GT(std::max(size.x, size.z), 20.0f);
+    EXPECT_LT(std::max({size.x, size.y, size.z}), 300.0f);
+}
+
+}  // namespace
+}  // namespace onelight::world::q3

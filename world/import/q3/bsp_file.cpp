@@ -1,0 +1,118 @@
+#include "world/import/q3/bsp_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "world/error.hpp"
+
+namespace onelight::world::q3 {
+namespace {
+
+const char* const kLumpNames[kLumpCount] = {
+    "entities",     "shaders",  "planes",    "nodes",       "leafs",     "leaf surfaces",
+    "leaf brushes", "models",   "brushes",   "brush sides", "vertices",  "indices",
+    "fogs",         "surfaces", "lightmaps", "light grid",  "visibility"};
+
+template <typename Record>
+std::vector<Record> readLump(std::span<const uint8_t> bytes, const BspHeader& header, Lump lump,
+                             const std::string& where) {
+    const BspLump& l = header.lumps[lump];
+    const std::string name =
+        std::string("lump ") + std::to_string(int(lump)) + " (" + kLumpNames[lump] + ")";
+    if (l.offset < 0 || l.length < 0 || uint64_t(l.offset) + uint64_t(l.length) > bytes.size())
+        throw Error(where + ": " + name + " at offset " + std::to_string(l.offset) + ", " +
+                    std::to_string(l.length) + " bytes, is outside the file's " +
+                    std::to_string(bytes.size()) + " bytes");
+    if (l.length % int32_t(sizeof(Record)) != 0)
+        throw Error(where + ": " + name + " holds " + std::to_string(l.length) +
+                    " bytes; expected a multiple of its " + std::to_string(sizeof(Record)) +
+                    "-byte records");
+    std::vector<Record> out(size_t(l.length) / sizeof(Record));
+    if (!out.empty()) std::memcpy(out.data(), bytes.data() + l.offset, size_t(l.length));
+    return out;
+}
+
+std::string surfaceWhere(const std::string& where, size_t s) {
+    return where + ": surface " + std::to_string(s);
+}
+
+void checkRange(const std::string& place, const char* what, int32_t first, int32_t count,
+                size_t size, const char* lump) {
+    if (first < 0 || count < 0 || uint64_t(first) + uint64_t(count) > size)
+        throw Error(place + ": " + what + " " + std::to_string(first) + " + " +
+                    std::to_string(count) + " is outside the " + std::to_string(size) + " " + lump +
+                    "; expected a range inside them");
+}
+
+void checkSurface(const BspFile& bsp, size_t s, const std::string& where) {
+    const BspSurface& f = bsp.surfaces[s];
+    const std::string place = surfaceWhere(where, s);
+    if (f.type < kSurfacePlanar || f.type > kSurfaceFlare)
+        throw Error(place + ": type " + std::to_string(f.type) +
+                    "; expected 1 (planar), 2 (patch), 3 (triangles) or 4 (flare)");
+    if (f.shader < 0 || size_t(f.shader) >= bsp.shaders.size())
+        throw Error(place + ": shader " + std::to_string(f.shader) + " of " +
+                    std::to_string(bsp.shaders.size()) + "; expected an index into the shaders");
+    if (f.type == kSurfaceFlare) return;  // drawn as a billboard; never read
+    checkRange(place, "vertices", f.firstVertex, f.vertexCount, bsp.vertices.size(), "vertices");
+    if (f.type == kSurfacePatch) {
+        if (f.patchWidth < 3 || f.patchHeight < 3 || f.patchWidth % 2 == 0 ||
+            f.patchHeight % 2 == 0 || int64_t(f.patchWidth) * f.patchHeight != f.vertexCount)
+            throw Error(place + ": a patch of " + std::to_string(f.patchWidth) + " x " +
+                        std::to_string(f.patchHeight) + " controls with " +
+                        std::to_string(f.vertexCount) +
+                        " vertices; expected odd sizes >= 3 whose product is the vertex count");
+        return;
+    }
+    checkRange(place, "indices", f.firstIndex, f.indexCount, bsp.indices.size(), "indices");
+    if (f.indexCount % 3 != 0)
+        throw Error(place + ": " + std::to_string(f.indexCount) +
+                    " indices; expected whole triangles (a multiple of 3)");
+    for (int32_t i = 0; i < f.indexCount; ++i) {
+        const int32_t index = bsp.indices[size_t(f.firstIndex + i)];
+        if (index < 0 || index >= f.vertexCount)
+            throw Error(place + ": index " + std::to_string(f.firstIndex + i) + " is " +
+                        std::to_string(index) + "; expected 0 .. " +
+                        std::to_string(f.vertexCount - 1) + " (its vertices)");
+    }
+}
+
+}  // namespace
+
+std::string shaderName(const BspShader& shader) {
+    return std::string(shader.name, strnlen(shader.name, sizeof shader.name));
+}
+
+BspFile parseBsp(std::span<const uint8_t> bytes, const std::string& where) {
+    if (bytes.size() < sizeof(BspHeader))
+        throw Error(where + ": " + std::to_string(bytes.size()) +
+                    " bytes; expected a Quake 3 BSP (a " + std::to_string(sizeof(BspHeader)) +
+                    "-byte header and its lumps)");
+    BspHeader header;
+    std::memcpy(&header, bytes.data(), sizeof header);
+    if (std::memcmp(header.magic, kBspMagic, 4) != 0)
+        throw Error(where + ": not a Quake 3 BSP (no IBSP magic)");
+    if (header.version != kBspVersion)
+        throw Error(where + ": IBSP version " + std::to_string(header.version) + "; expected " +
+                    std::to_string(kBspVersion) + " (Quake 3, OpenArena)");
+    BspFile bsp;
+    const std::vector<char> text = readLump<char>(bytes, header, kLumpEntities, where);
+    bsp.entities.assign(text.begin(), std::find(text.begin(), text.end(), '\0'));
+    bsp.shaders = readLump<BspShader>(bytes, header, kLumpShaders, where);
+    bsp.vertices = readLump<BspVertex>(bytes, header, kLumpDrawVerts, where);
+    bsp.indices = readLump<int32_t>(bytes, header, kLumpDrawIndexes, where);
+    bsp.surfaces = readLump<BspSurface>(bytes, header, kLumpSurfaces, where);
+    for (size_t v = 0; v < bsp.vertices.size(); ++v) {
+        const BspVertex& x = bsp.vertices[v];
+        for (float c : {x.position[0], x.position[1], x.position[2], x.texcoord[0], x.texcoord[1],
+                        x.normal[0], x.normal[1], x.normal[2]})
+            if (!std::isfinite(c))
+                throw Error(where + ": vertex " + std::to_string(v) +
+                            " is NaN or Inf; expected finite numbers");
+    }
+    for (size_t s = 0; s < bsp.surfaces.size(); ++s) checkSurface(bsp, s, where);
+    return bsp;
+}
+
+}  // namespace onelight::world::q3

@@ -1,0 +1,30 @@
+// A Quake 3 BSP read from its bytes and checked: every lump inside the file and a whole number
+// of records, every surface's shader, vertex and index ranges inside their lumps, every index
+// inside its surface, patch grids odd-sized and complete, positions finite. Only the lumps the
+// importer uses are kept (bsp_format.hpp).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "world/import/q3/bsp_format.hpp"
+
+namespace onelight::world::q3 {
+
+struct BspFile {
+    std::string entities;  // the entity lump's text
+    std::vector<BspShader> shaders;
+    std::vector<BspVertex> vertices;
+    std::vector<int32_t> indices;  // relative to their surface's firstVertex
+    std::vector<BspSurface> surfaces;
+};
+
+/// Throws world::Error naming `where` (the file), the lump or surface, and what was expected.
+[[nodiscard]] BspFile parseBsp(std::span<const uint8_t> bytes, const std::string& where);
+
+/// A shader's name as a string (the record's NUL-padded 64 bytes).
+[[nodiscard]] std::string shaderName(const BspShader& shader);
+
+}  // namespace onelight::world::q3

@@ -1,0 +1,98 @@
+// The Quake 3 BSP file (IBSP version 46, as q3map2 writes it for Quake 3 and OpenArena),
+// declared once: the header's lump directory and the records of the lumps the importer reads.
+// Little-endian, packed as stored (every record is a multiple of 4 bytes, no padding).
+// Reference: the id Tech 3 source release, code/qcommon/qfiles.h (GPL-2+).
+#pragma once
+
+#include <cstdint>
+
+namespace onelight::world::q3 {
+
+inline constexpr char kBspMagic[4] = {'I', 'B', 'S', 'P'};
+inline constexpr int32_t kBspVersion = 46;
+
+/// Lump numbers (qfiles.h LUMP_*).
+enum Lump : int {
+    kLumpEntities = 0,
+    kLumpShaders = 1,
+    kLumpPlanes = 2,
+    kLumpNodes = 3,
+    kLumpLeafs = 4,
+    kLumpLeafSurfaces = 5,
+    kLumpLeafBrushes = 6,
+    kLumpModels = 7,
+    kLumpBrushes = 8,
+    kLumpBrushSides = 9,
+    kLumpDrawVerts = 10,
+    kLumpDrawIndexes = 11,
+    kLumpFogs = 12,
+    kLumpSurfaces = 13,
+    kLumpLightmaps = 14,
+    kLumpLightGrid = 15,
+    kLumpVisibility = 16,
+    kLumpCount = 17
+};
+
+struct BspLump {
+    int32_t offset;  // bytes from the file's start
+    int32_t length;  // bytes
+};
+
+struct BspHeader {
+    char magic[4];  // kBspMagic
+    int32_t version;
+    BspLump lumps[kLumpCount];
+};
+static_assert(sizeof(BspHeader) == 144);
+
+/// A shader reference (qfiles.h dshader_t): its name and the compiler's flags.
+struct BspShader {
+    char name[64];         // e.g. "textures/base_wall/concrete", NUL-padded
+    int32_t surfaceFlags;  // SURF_*
+    int32_t contentFlags;  // CONTENTS_*
+};
+static_assert(sizeof(BspShader) == 72);
+
+/// Surface flags the importer reads (surfaceflags.h).
+inline constexpr int32_t kSurfNoDraw = 0x80;  // SURF_NODRAW: never drawn (clip, triggers)
+inline constexpr int32_t kSurfSky = 0x4;      // SURF_SKY: the sky, drawn as the background
+inline constexpr int32_t kSurfHint = 0x100;   // SURF_HINT
+inline constexpr int32_t kSurfSkip = 0x200;   // SURF_SKIP
+/// Content flags the importer reads.
+inline constexpr int32_t kContentsFog = 0x40;  // CONTENTS_FOG: a fog volume's faces
+
+/// A vertex (qfiles.h drawVert_t), in map units, Z up.
+struct BspVertex {
+    float position[3];
+    float texcoord[2];  // the shader's texture coordinates (texels / size, may exceed 1)
+    float lightmap[2];  // q3map2's lightmap coordinates
+    float normal[3];
+    uint8_t color[4];  // q3map2's vertex light (RGBA)
+};
+static_assert(sizeof(BspVertex) == 44);
+
+/// Surface types (qfiles.h mapSurfaceType_t).
+enum SurfaceType : int32_t {
+    kSurfaceBad = 0,
+    kSurfacePlanar = 1,     // a polygon, triangulated in the index lump
+    kSurfacePatch = 2,      // a biquadratic Bezier patch: patchWidth x patchHeight controls
+    kSurfaceTriangles = 3,  // a triangle soup (models), in the index lump
+    kSurfaceFlare = 4       // a billboard flare
+};
+
+/// A drawn surface (qfiles.h dsurface_t).
+struct BspSurface {
+    int32_t shader;  // into the shader lump
+    int32_t fog;     // into the fog lump, or -1
+    int32_t type;    // SurfaceType
+    int32_t firstVertex, vertexCount;
+    int32_t firstIndex, indexCount;  // indices are relative to firstVertex
+    int32_t lightmap;                // q3map2's lightmap page, or < 0
+    int32_t lightmapX, lightmapY, lightmapWidth, lightmapHeight;
+    float lightmapOrigin[3];
+    float lightmapVectors[3][3];  // S, T and the plane normal for planar surfaces
+    int32_t patchWidth, patchHeight;
+};
+static_assert(sizeof(BspSurface) == 104);
+
+}  // namespace onelight::world::q3

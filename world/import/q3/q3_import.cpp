@@ -1,0 +1,324 @@
+#include "world/import/q3/q3_import.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "world/error.hpp"
+#include "world/import/q3/bsp_file.hpp"
+#include "world/import/q3/entity_lump.hpp"
+#include "world/import/q3/patch_tessellation.hpp"
+#include "world/import/q3/pk3_archive.hpp"
+
+namespace onelight::world {
+namespace {
+
+using namespace q3;
+
+glm::vec3 levelPoint(const float p[3]) {
+    const double s = kQuake3MetresPerUnit;
+    return glm::vec3(float(double(p[0]) * s), float(double(p[2]) * s), float(-double(p[1]) * s));
+}
+glm::vec3 levelPoint(glm::vec3 p) {
+    const float q[3] = {p.x, p.y, p.z};
+    return levelPoint(q);
+}
+glm::vec3 levelDirection(const float n[3]) {
+    return glm::vec3(n[0], n[2], -n[1]);
+}
+
+bool endsWith(const std::string& s, const std::string& end) {
+    return s.size() >= end.size() && fileKey(s.substr(s.size() - end.size())) == end;
+}
+
+std::vector<uint8_t> readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open the map");
+    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+// Every pk3 of `folders`, in name order (pak0 before pak1: later archives win).
+void addGameFolders(GameFiles& files, const std::vector<std::string>& folders) {
+    for (const std::string& folder : folders) {
+        std::vector<std::string> pk3s;
+        std::error_code ec;
+        for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
+            if (entry.is_regular_file() && endsWith(entry.path().string(), ".pk3"))
+                pk3s.push_back(entry.path().string());
+        std::sort(pk3s.begin(), pk3s.end());
+        for (const std::string& p : pk3s) files.add(p);
+    }
+}
+
+// The map's bytes and its name for messages, from a .bsp file, PAK.pk3:maps/X.bsp, or X.
+struct MapSource {
+    std::vector<uint8_t> bytes;
+    std::string where;
+};
+MapSource findMap(const std::string& spec, GameFiles& files,
+                  const std::vector<std::string>& folders) {
+    const size_t colon = fileKey(spec).find(".pk3:");
+    if (colon != std::string::npos) {
+        const std::string pk3 = spec.substr(0, colon + 4), inside = spec.substr(colon + 5);
+        files.add(pk3);
+        const Pk3Archive& archive = *files.archives.back();
+        for (const std::string& n : archive.names())
+            if (fileKey(n) == fileKey(inside)) return {archive.read(n), pk3 + ":" + n};
+        throw Error(spec + ": " + pk3 + " holds no '" + inside + "'");
+    }
+    if (endsWith(spec, ".bsp")) return {readFile(spec), spec};
+    const std::string name = "maps/" + spec + ".bsp";
+    if (auto bytes = files.read(name)) return {std::move(*bytes), files.where(name)};
+    std::string searched;
+    for (const std::string& f : folders) searched += (searched.empty() ? "" : ", ") + f;
+    throw Error(spec + ": no map of that name (maps/" + spec + ".bsp) in the pk3s of " +
+                (searched.empty() ? std::string("no game folder (install openarena-data and "
+                                                "openarena-081-maps)")
+                                  : searched));
+}
+
+// What a shader's surfaces are: drawn, or left out (sky, clip, triggers, fog, hints).
+bool drawn(const BspShader& shader) {
+    if (shader.surfaceFlags & (kSurfNoDraw | kSurfSky | kSurfHint | kSurfSkip)) return false;
+    if (shader.contentFlags & kContentsFog) return false;
+    const std::string name = fileKey(shaderName(shader));
+    for (const char* skip : {"common/clip", "common/trigger", "common/nodraw", "common/caulk",
+                             "common/hint", "common/skip", "textures/skies/", "/sky", "noshader"})
+        if (name.find(skip) != std::string::npos) return false;
+    return true;
+}
+
+// The level's material for each drawn shader: its image (name.tga or name.jpg) as the base
+// colour of a Lambert material, grey when the game holds no image of that name.
+struct MaterialTable {
+    SourceLevel& level;
+    const GameFiles& files;
+    std::map<int32_t, uint32_t> byShader;
+    uint32_t missingImages = 0;
+
+    uint32_t materialOf(const BspShader& shader, int32_t index) {
+        const auto found = byShader.find(index);
+        if (found != byShader.end()) return found->second;
+        Material m;
+        m.name = shaderName(shader);
+        m.materialClass = MaterialClass::kLambert;
+        m.metallic = 0.0f;
+        m.roughness = 1.0f;
+        m.specularColor = glm::vec3(0.0f);
+        std::string base = m.name;
+        for (const char* ext : {".tga", ".jpg"})
+            if (endsWith(base, ext)) base = base.substr(0, base.size() - 4);
+        for (const auto& [ext, mime] :
+             {std::pair{".tga", "image/x-tga"}, std::pair{".jpg", "image/jpeg"}}) {
+            std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
+            if (!bytes) continue;
+            Image image;
+            image.name = files.where(base + ext);
+            image.mimeType = mime;
+            image.encodedBytes = std::move(*bytes);
+            level.images.push_back(std::move(image));
+            Texture texture;
+            texture.image = uint32_t(level.images.size() - 1);
+            texture.sampler.magFilter = 9729;  // LINEAR
+            texture.sampler.minFilter = 9987;  // LINEAR_MIPMAP_LINEAR
+            level.textures.push_back(texture);
+            m.baseColorTexture = uint32_t(level.textures.size() - 1);
+            break;
+        }
+        if (m.baseColorTexture == kNoIndex) {
+            ++missingImages;
+            m.baseColor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+        }
+        m.albedo = glm::vec3(m.baseColor);
+        level.materials.push_back(m);
+        return byShader[index] = uint32_t(level.materials.size() - 1);
+    }
+};
+
+Vertex levelVertex(const PatchPoint& p) {
+    Vertex v;
+    v.position = levelPoint(p.position);
+    const float n[3] = {p.normal.x, p.normal.y, p.normal.z};
+    const glm::vec3 d = levelDirection(n);
+    const float length = glm::length(d);
+    v.normal = length > 1e-12f ? d / length : glm::vec3(0.0f, 1.0f, 0.0f);
+    v.uv0 = p.uv;
+    return v;
+}
+
+PatchPoint patchPoint(const BspVertex& v) {
+    return {glm::vec3(v.position[0], v.position[1], v.position[2]),
+            glm::vec3(v.normal[0], v.normal[1], v.normal[2]),
+            glm::vec2(v.texcoord[0], v.texcoord[1])};
+}
+
+// Appends a surface's triangles to `mesh`, wound counter-clockwise about the vertex normals
+// (the majority of its triangles decides, so a surface keeps one sense).
+void appendOriented(MeshInstance& mesh, const std::vector<Vertex>& vertices,
+                    const std::vector<uint32_t>& triangles) {
+    double agreement = 0.0;
+    for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const Vertex &a = vertices[triangles[t]], &b = vertices[triangles[t + 1]],
+                     &c = vertices[triangles[t + 2]];
+        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+        agreement += double(glm::dot(n, a.normal + b.normal + c.normal));
+    }
+    const uint32_t base = uint32_t(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), vertices.begin(), vertices.end());
+    for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        const uint32_t a = base + triangles[t], b = base + triangles[t + 1],
+                       c = base + triangles[t + 2];
+        if (agreement >= 0.0)
+            mesh.indices.insert(mesh.indices.end(), {a, b, c});
+        else
+            mesh.indices.insert(mesh.indices.end(), {a, c, b});
+    }
+}
+
+// Player spawns, with a camera at each one's eyes looking along its "angle".
+void addSpawns(SourceLevel& level, const std::vector<MapEntity>& entities,
+               const std::string& where) {
+    uint32_t n = 0;
+    for (const MapEntity& e : entities) {
+        const std::string type = e.get("classname");
+        if (type != "info_player_deathmatch" && type != "info_player_start") continue;
+        const glm::vec3 origin = vectorKey(e, "origin", glm::vec3(0.0f), where);
+        const float yaw = numberKey(e, "angle", 0.0f, where);  // degrees about Z from +X
+        // Quake's heading (cos, sin, 0) is (cos, 0, -sin) here: a turn about +Y of yaw - 90
+        // degrees takes a camera's -Z there.
+        const glm::quat turn = glm::angleAxis(glm::radians(yaw - 90.0f), glm::vec3(0, 1, 0));
+        Entity spawn;
+        spawn.name = "spawn" + std::to_string(n);
+        spawn.flags = kEntitySpawn;
+        spawn.position = levelPoint(origin + glm::vec3(0.0f, 0.0f, -24.0f));  // the feet
+        spawn.rotation = turn;
+        level.entities.push_back(spawn);
+        Camera camera;
+        camera.name = spawn.name;
+        camera.position = levelPoint(origin + glm::vec3(0.0f, 0.0f, 26.0f));  // the eyes
+        camera.rotation = turn;
+        camera.yfov = glm::radians(73.74f);  // Quake's 90 degree horizontal fov at 4:3
+        level.cameras.push_back(camera);
+        ++n;
+    }
+}
+
+// Point lights, spots where they aim at a target (q3map2's cone), candela by
+// kQuake3CandelaPerLight; the brightest `primaries` are primary, the others baked.
+void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, uint32_t primaries,
+               const std::string& where) {
+    std::map<std::string, glm::vec3> targets;
+    for (const MapEntity& e : entities)
+        if (e.keys.count("targetname"))
+            targets[e.get("targetname")] = vectorKey(e, "origin", glm::vec3(0.0f), where);
+    for (const MapEntity& e : entities) {
+        if (e.get("classname") != "light") continue;
+        Light l;
+        l.name = e.get("targetname", "light" + std::to_string(level.lights.size()));
+        const glm::vec3 origin = vectorKey(e, "origin", glm::vec3(0.0f), where);
+        l.position = levelPoint(origin);
+        const float value = numberKey(e, "light", numberKey(e, "_light", 300.0f, where), where);
+        l.intensity = float(double(std::max(0.0f, value)) * kQuake3CandelaPerLight);
+        glm::vec3 color = vectorKey(e, "_color", glm::vec3(1.0f), where);
+        const float peak = std::max({color.x, color.y, color.z});
+        l.color = peak > 0.0f ? glm::max(color / peak, glm::vec3(0.0f)) : glm::vec3(1.0f);
+        l.type = LightType::kPoint;
+        const auto target = targets.find(e.get("target"));
+        if (e.keys.count("target") && target != targets.end()) {
+            // q3map2: tan(half angle) = (radius + 16) / distance to the target (radius 64).
+            const glm::vec3 to = target->second - origin;
+            const float distance = glm::length(to);
+            if (distance > 0.0f) {
+                const float radius = numberKey(e, "radius", 64.0f, where);
+                l.type = LightType::kSpot;
+                const float tangent[3] = {to.x / distance, to.y / distance, to.z / distance};
+                l.direction = levelDirection(tangent);
+                l.outerCone = std::min(1.5f, std::atan((radius + 16.0f) / distance));
+                l.innerCone = 0.8f * l.outerCone;
+            }
+        }
+        l.role = LightRole::kBaked;
+        level.lights.push_back(l);
+    }
+    std::vector<size_t> order(level.lights.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        return level.lights[a].intensity > level.lights[b].intensity;
+    });
+    for (size_t i = 0; i < std::min<size_t>(primaries, order.size()); ++i)
+        level.lights[order[i]].role = LightRole::kPrimary;
+}
+
+}  // namespace
+
+std::vector<std::string> defaultQuake3Folders() {
+    std::vector<std::string> out;
+    for (const char* f : {"/usr/share/games/openarena/baseoa"})
+        if (std::filesystem::is_directory(f)) out.push_back(f);
+    return out;
+}
+
+SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) {
+    if (options.patchLevel < 1 || options.patchLevel > 64)
+        throw Error(spec + ": patch level " + std::to_string(options.patchLevel) +
+                    "; expected 1 .. 64 segments");
+    const std::vector<std::string> folders =
+        options.gameFolders.empty() ? defaultQuake3Folders() : options.gameFolders;
+    GameFiles files;
+    addGameFolders(files, folders);
+    const MapSource map = findMap(spec, files, folders);
+    const BspFile bsp = parseBsp(map.bytes, map.where);
+
+    SourceLevel level;
+    level.sourcePath = map.where;
+    MaterialTable materials{level, files, {}, 0};
+    std::map<uint32_t, MeshInstance> meshes;  // by material
+    for (size_t s = 0; s < bsp.surfaces.size(); ++s) {
+        const BspSurface& f = bsp.surfaces[s];
+        if (f.type == kSurfaceFlare || f.vertexCount == 0) continue;
+        const BspShader& shader = bsp.shaders[size_t(f.shader)];
+        if (!drawn(shader)) continue;
+        const uint32_t material = materials.materialOf(shader, f.shader);
+        MeshInstance& mesh = meshes[material];
+        std::vector<Vertex> vertices;
+        std::vector<uint32_t> triangles;
+        if (f.type == kSurfacePatch) {
+            std::vector<PatchPoint> controls;
+            for (int32_t v = 0; v < f.vertexCount; ++v)
+                controls.push_back(patchPoint(bsp.vertices[size_t(f.firstVertex + v)]));
+            const PatchMesh patch = tessellatePatch(controls, uint32_t(f.patchWidth),
+                                                    uint32_t(f.patchHeight), options.patchLevel);
+            for (const PatchPoint& p : patch.vertices) vertices.push_back(levelVertex(p));
+            triangles = patch.triangles;
+        } else {
+            for (int32_t v = 0; v < f.vertexCount; ++v)
+                vertices.push_back(
+                    levelVertex(patchPoint(bsp.vertices[size_t(f.firstVertex + v)])));
+            for (int32_t i = 0; i < f.indexCount; ++i)
+                triangles.push_back(uint32_t(bsp.indices[size_t(f.firstIndex + i)]));
+        }
+        appendOriented(mesh, vertices, triangles);
+    }
+    for (auto& [material, mesh] : meshes) {
+        mesh.material = material;
+        mesh.nodeName = mesh.meshName = level.materials[material].name;
+        level.instances.push_back(std::move(mesh));
+    }
+    const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
+    // q3map2's lightmap density: one luxel per 16 units, times worldspawn's _lightmapscale.
+    const float luxelUnits =
+        16.0f *
+        (entities.empty() ? 1.0f : numberKey(entities[0], "_lightmapscale", 1.0f, map.where));
+    if (!(luxelUnits > 0.0f)) throw Error(map.where + ": worldspawn's _lightmapscale is not > 0");
+    level.texelsPerMetre = float(1.0 / (double(luxelUnits) * kQuake3MetresPerUnit));
+    addSpawns(level, entities, map.where);
+    addLights(level, entities, options.primaryLights, map.where);
+    return level;
+}
+
+}  // namespace onelight::world

@@ -1,0 +1,43 @@
+// Quake 3 / OpenArena maps as levels: a map named as a .bsp file, as PAK.pk3:maps/NAME.bsp, or
+// as NAME alone (searched in the installed game's pk3s) is read into the same SourceLevel as a
+// glTF. Textures come from the game's pk3s; shader scripts are not read yet (a shader maps to
+// the image of its name).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "world/source_level.hpp"
+
+namespace onelight::world {
+
+/*
+   Units: one map unit is 1/32 m. Evidence: the player's box is 56 units tall (-24 .. +32 about
+   its origin, eyes at +26), 1.75 m at 1/32 m; stair steps are 16 units (0.5 m, game-sized) and
+   doors 96 .. 128 units (3 .. 4 m).
+   Axes: Quake's Z is up; a map point (x, y, z) is (x, z, -y) / 32 in the level (a rotation, so
+   windings keep their sense).
+   Lightmap density: q3map2's, one luxel per 16 units (2 texels per metre) times worldspawn's
+   _lightmapscale.
+   Lights: q3map2 lights a surface at distance d (units) and cosine c from a point light of
+   "light" L with L 7500 c / d^2 lightmap units (of 255 at full white). One unit is taken as
+   1 lux, so the light's intensity is L 7500 / 32^2 = 7.32 L cd (the default L = 300 gives
+   2197 cd: 137 lux at 4 m).
+*/
+inline constexpr double kQuake3MetresPerUnit = 1.0 / 32.0;
+inline constexpr double kQuake3CandelaPerLight = 7500.0 / (32.0 * 32.0);
+
+struct Quake3Options {
+    uint32_t patchLevel = 4;               // segments per patch piece and direction, 1 .. 64
+    uint32_t primaryLights = 4;            // the brightest lights become primaries; others baked
+    std::vector<std::string> gameFolders;  // folders of pk3s; empty: the installed OpenArena's
+};
+
+/// The installed OpenArena game data folders that exist (Debian's openarena-data and maps).
+[[nodiscard]] std::vector<std::string> defaultQuake3Folders();
+
+/// Throws Error with a one-line message naming the file and the place on bad input.
+[[nodiscard]] SourceLevel importQuake3(const std::string& spec, const Quake3Options& options = {});
+
+}  // namespace onelight::world
