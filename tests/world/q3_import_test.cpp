@@ -17,6 +17,8 @@
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/entity_lump.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
+#include "world/import/q3/pk3_archive.hpp"
+#include "world/import/q3/shader_script.hpp"
 
 namespace onelight::world::q3 {
 namespace {
@@ -274,6 +276,81 @@ TEST(Quake3Patches, SharedBordersAreBitIdentical) {
         EXPECT_EQ(a.vertices[row * row + level * row + level].position, grid[14].position);
     }
     EXPECT_TRUE(tessellatePatch(grid, 4, 3, 4).vertices.empty());  // even width: nothing
+}
+
+// Shader scripts: stages, surfaceparms, the q3map keys, comments, keywords it skips, and the
+// colour stage past an environment map and the lightmap.
+TEST(Quake3Shaders, ScriptsParseWithTheirStagesAndQ3mapKeys) {
+    const std::vector<ShaderScript> s = parseShaderScript(
+        "// a comment\n"
+        "textures/base_light/panel\n{\n  qer_editorimage textures/base_light/panel.tga\n"
+        "  q3map_lightimage textures/base_light/panel.blend.tga\n  surfaceparm METALSTEPS\n"
+        "  q3map_surfacelight 1000\n  deformVertexes wave 100 sin 0 1 0 1 /* skipped */\n"
+        "  { map textures/effects/envmap2.tga\n tcGen environment }\n"
+        "  {\n    map textures/base_light/panel.tga\n    blendFunc GL_ONE GL_ONE\n  }\n"
+        "  { map $lightmap\n blendfunc filter }\n}\n"
+        "textures/skies/night\n{\n surfaceparm sky\n surfaceparm noimpact\n"
+        " q3map_sun 1 0.9 0.8 120 45 60\n q3map_skylight 80 3\n cull none\n}\n"
+        "textures/grate\n{\n { map textures/grate.tga\n alphaFunc GE128 }\n}\n",
+        "test.shader");
+    ASSERT_EQ(s.size(), 3u);
+    EXPECT_EQ(s[0].name, "textures/base_light/panel");
+    EXPECT_EQ(s[0].line, 2);
+    EXPECT_EQ(s[0].surfaceLight, 1000.0f);
+    EXPECT_EQ(s[0].lightImage, "textures/base_light/panel.blend.tga");
+    EXPECT_TRUE(s[0].surfaceParms.count("metalsteps"));
+    ASSERT_EQ(s[0].stages.size(), 3u);
+    ASSERT_NE(s[0].colorStage(), nullptr);
+    EXPECT_EQ(s[0].colorStage()->map, "textures/base_light/panel.tga");
+    EXPECT_EQ(s[0].colorStage()->blendFunc, "gl_one gl_one");
+    ASSERT_TRUE(s[1].sun.has_value());
+    EXPECT_EQ(s[1].sun->intensity, 120.0f);
+    EXPECT_EQ(s[1].sun->elevation, 60.0f);
+    EXPECT_EQ(s[1].skyLight, 80.0f);
+    EXPECT_TRUE(s[1].cullNone);
+    EXPECT_EQ(s[1].colorStage(), nullptr);
+    EXPECT_EQ(s[2].colorStage()->alphaFunc, "ge128");
+}
+
+TEST(Quake3Shaders, BrokenScriptsNameTheirFileAndLine) {
+    const auto expectError = [](const std::string& text, const std::string& fragment) {
+        const std::string e = errorMessage([&] { (void)parseShaderScript(text, "x.shader"); });
+        EXPECT_NE(e.find(fragment), std::string::npos) << "got: " << e;
+    };
+    expectError("a\n{\n surfaceparm sky\n", "x.shader:2: shader 'a': its '{' is never closed");
+    expectError("a\n{\n { map b.tga\n", "x.shader:3: a stage's '{' is never closed");
+    expectError("}\n", "x.shader:1: a '}' closes nothing");
+    expectError("a\nb\n{\n}\n", "x.shader:1: shader 'a' has no '{' after its name");
+    expectError("a\n{\n q3map_sun 1 1 1 100\n}\n", "x.shader:3: q3map_sun has 4 values");
+    expectError("a\n{\n /* never closed\n}\n", "x.shader:3: a /* comment is never closed");
+    // A keyword it does not know is skipped, not an error (the game's renderer has hundreds),
+    // and a number that is a word reads 0, as q3map2 reads it (the game's clown2.shader has one).
+    EXPECT_EQ(parseShaderScript("a\n{\n frobnicate 1 2 3\n}\n", "x.shader").size(), 1u);
+    EXPECT_EQ(parseShaderScript("a\n{\n q3map_surfacelight x.tga\n}\n", "x.shader")[0].surfaceLight,
+              0.0f);
+}
+
+// Every script of the installed game parses.
+TEST(Quake3Shaders, TheGamesScriptsAllParse) {
+    if (defaultQuake3Folders().empty())
+        GTEST_SKIP() << "OpenArena is not installed (openarena-data)";
+    GameFiles files;
+    for (const std::string& folder : defaultQuake3Folders())
+        for (const auto& entry : std::filesystem::directory_iterator(folder))
+            if (entry.path().extension() == ".pk3") files.add(entry.path().string());
+    size_t scripts = 0, shaders = 0;
+    for (const auto& [key, file] : files.files) {
+        if (key.rfind("scripts/", 0) != 0 || key.size() < 7 ||
+            key.compare(key.size() - 7, 7, ".shader") != 0)
+            continue;
+        const std::vector<uint8_t> bytes = *files.read(key);
+        shaders +=
+            parseShaderScript(std::string(bytes.begin(), bytes.end()), files.where(key)).size();
+        ++scripts;
+    }
+    std::printf("[ shaders ] %zu scripts, %zu shaders\n", scripts, shaders);
+    EXPECT_GT(scripts, 50u);
+    EXPECT_GT(shaders, 1000u);
 }
 
 // A real map, when the game is installed: q3dm6ish imports with its textures, spawns (each

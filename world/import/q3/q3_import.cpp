@@ -14,6 +14,7 @@
 #include "world/import/q3/entity_lump.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
+#include "world/import/q3/shader_script.hpp"
 
 namespace onelight::world {
 namespace {
@@ -82,10 +83,33 @@ MapSource findMap(const std::string& spec, GameFiles& files,
                                   : searched));
 }
 
-// What a shader's surfaces are: drawn, or left out (sky, clip, triggers, fog, hints).
-bool drawn(const BspShader& shader) {
+// The game's shader scripts by name (lower case); the first definition of a name wins, as in
+// the game.
+using ShaderScripts = std::map<std::string, ShaderScript>;
+ShaderScripts loadShaderScripts(const GameFiles& files) {
+    ShaderScripts out;
+    for (const auto& [key, file] : files.files) {
+        if (key.rfind("scripts/", 0) != 0 || !endsWith(key, ".shader")) continue;
+        const std::vector<uint8_t> bytes = *files.read(key);
+        for (ShaderScript& s :
+             parseShaderScript(std::string(bytes.begin(), bytes.end()), files.where(key)))
+            out.emplace(fileKey(s.name), std::move(s));
+    }
+    return out;
+}
+
+const ShaderScript* scriptOf(const ShaderScripts& scripts, const BspShader& shader) {
+    const auto found = scripts.find(fileKey(shaderName(shader)));
+    return found == scripts.end() ? nullptr : &found->second;
+}
+
+// Whether a shader's surfaces are drawn, or left out: sky, clip, triggers, nodraw, fog, hints.
+bool drawn(const BspShader& shader, const ShaderScript* script) {
     if (shader.surfaceFlags & (kSurfNoDraw | kSurfSky | kSurfHint | kSurfSkip)) return false;
     if (shader.contentFlags & kContentsFog) return false;
+    if (script)
+        for (const char* parm : {"nodraw", "sky", "fog", "hint", "skip", "areaportal"})
+            if (script->surfaceParms.count(parm)) return false;
     const std::string name = fileKey(shaderName(shader));
     for (const char* skip : {"common/clip", "common/trigger", "common/nodraw", "common/caulk",
                              "common/hint", "common/skip", "textures/skies/", "/sky", "noshader"})
@@ -93,26 +117,28 @@ bool drawn(const BspShader& shader) {
     return true;
 }
 
-// The level's material for each drawn shader: its image (name.tga or name.jpg) as the base
-// colour of a Lambert material, grey when the game holds no image of that name.
+// The image path without a .tga or .jpg extension.
+std::string withoutImageExtension(std::string name) {
+    for (const char* ext : {".tga", ".jpg"})
+        if (endsWith(name, ext)) name = name.substr(0, name.size() - 4);
+    return name;
+}
+
+// The level's material for each drawn shader (q3_import.hpp, "Shaders").
 struct MaterialTable {
     SourceLevel& level;
     const GameFiles& files;
     std::map<int32_t, uint32_t> byShader;
+    std::map<std::string, uint32_t> textureByImage;  // (name + sRGB) -> textures
     uint32_t missingImages = 0;
 
-    uint32_t materialOf(const BspShader& shader, int32_t index) {
-        const auto found = byShader.find(index);
-        if (found != byShader.end()) return found->second;
-        Material m;
-        m.name = shaderName(shader);
-        m.materialClass = MaterialClass::kLambert;
-        m.metallic = 0.0f;
-        m.roughness = 1.0f;
-        m.specularColor = glm::vec3(0.0f);
-        std::string base = m.name;
-        for (const char* ext : {".tga", ".jpg"})
-            if (endsWith(base, ext)) base = base.substr(0, base.size() - 4);
+    // A texture of the image `name` (.tga or .jpg, the extension as written or not), or
+    // kNoIndex when no archive holds it.
+    uint32_t textureOf(const std::string& name) {
+        const std::string base = withoutImageExtension(name);
+        const auto known = textureByImage.find(fileKey(base));
+        if (known != textureByImage.end()) return known->second;
+        uint32_t index = kNoIndex;
         for (const auto& [ext, mime] :
              {std::pair{".tga", "image/x-tga"}, std::pair{".jpg", "image/jpeg"}}) {
             std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
@@ -127,12 +153,47 @@ struct MaterialTable {
             texture.sampler.magFilter = 9729;  // LINEAR
             texture.sampler.minFilter = 9987;  // LINEAR_MIPMAP_LINEAR
             level.textures.push_back(texture);
-            m.baseColorTexture = uint32_t(level.textures.size() - 1);
+            index = uint32_t(level.textures.size() - 1);
             break;
         }
+        return textureByImage[fileKey(base)] = index;
+    }
+
+    uint32_t materialOf(const BspShader& shader, int32_t index, const ShaderScript* script) {
+        const auto found = byShader.find(index);
+        if (found != byShader.end()) return found->second;
+        Material m;
+        m.name = shaderName(shader);
+        m.materialClass = MaterialClass::kLambert;
+        m.metallic = 0.0f;
+        m.roughness = 1.0f;
+        m.specularColor = glm::vec3(0.0f);
+        const ShaderStage* stage = script ? script->colorStage() : nullptr;
+        if (stage) m.baseColorTexture = textureOf(stage->map);
+        if (m.baseColorTexture == kNoIndex && script && !script->editorImage.empty())
+            m.baseColorTexture = textureOf(script->editorImage);
+        if (m.baseColorTexture == kNoIndex) m.baseColorTexture = textureOf(m.name);
         if (m.baseColorTexture == kNoIndex) {
             ++missingImages;
             m.baseColor = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+        }
+        if (stage && !stage->alphaFunc.empty()) {
+            m.alphaMode = AlphaMode::kMask;  // gt0: any alpha; ge128 and lt128: half
+            m.alphaCutoff = stage->alphaFunc == "gt0" ? 0.5f / 255.0f : 0.5f;
+        } else if (stage && !stage->blendFunc.empty() && stage->blendFunc != "gl_one gl_zero") {
+            m.alphaMode = AlphaMode::kBlend;
+        }
+        if (script) {
+            m.doubleSided = script->cullNone;
+            if (script->surfaceLight > 0.0f) {
+                // q3map2 gives an area light value x area x 0.25 photons (a point light
+                // value x 7500): at 1 lux per lightmap unit and 1/32 m per unit that is a
+                // radiance of 0.25 value cd/m^2, coloured by its light image (or its texture).
+                m.emissive = glm::vec3(kQuake3NitsPerSurfaceLight * double(script->surfaceLight));
+                m.emissiveTexture =
+                    script->lightImage.empty() ? kNoIndex : textureOf(script->lightImage);
+                if (m.emissiveTexture == kNoIndex) m.emissiveTexture = m.baseColorTexture;
+            }
         }
         m.albedo = glm::vec3(m.baseColor);
         level.materials.push_back(m);
@@ -245,13 +306,48 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, uint3
         l.role = LightRole::kBaked;
         level.lights.push_back(l);
     }
-    std::vector<size_t> order(level.lights.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    // The sun, when the sky has one, is a primary already; the brightest points fill the rest.
+    std::vector<size_t> order;
+    size_t given = 0;
+    for (size_t i = 0; i < level.lights.size(); ++i) {
+        if (level.lights[i].type != LightType::kDirectional)
+            order.push_back(i);
+        else
+            given += level.lights[i].role == LightRole::kPrimary;
+    }
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
         return level.lights[a].intensity > level.lights[b].intensity;
     });
-    for (size_t i = 0; i < std::min<size_t>(primaries, order.size()); ++i)
+    const size_t budget = primaries > given ? primaries - given : 0;
+    for (size_t i = 0; i < std::min(budget, order.size()); ++i)
         level.lights[order[i]].role = LightRole::kPrimary;
+}
+
+// The sun (q3map_sun, a primary directional light in lux) and a uniform sky (q3map_skylight
+// V as L = V / pi, so an open floor gets V lux) of the map's sky shaders.
+void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& scripts) {
+    for (const BspShader& shader : bsp.shaders) {
+        const ShaderScript* script = scriptOf(scripts, shader);
+        if (!script || !script->surfaceParms.count("sky")) continue;
+        if (script->sun && script->sun->intensity > 0.0f) {
+            const ShaderSun& sun = *script->sun;
+            const float d = glm::radians(sun.degrees), e = glm::radians(sun.elevation);
+            const float toSun[3] = {std::cos(e) * std::cos(d), std::cos(e) * std::sin(d),
+                                    std::sin(e)};
+            Light l;
+            l.name = "sun";
+            l.type = LightType::kDirectional;
+            l.role = LightRole::kPrimary;
+            l.direction = -levelDirection(toSun);
+            l.intensity = sun.intensity;
+            const float peak = std::max({sun.color.x, sun.color.y, sun.color.z});
+            l.color = peak > 0.0f ? glm::max(sun.color / peak, glm::vec3(0.0f)) : glm::vec3(1.0f);
+            level.lights.push_back(l);
+        }
+        if (script->skyLight > 0.0f)
+            level.skyRadiance = glm::vec3(float(double(script->skyLight) / M_PI));
+        return;  // one sky per map
+    }
 }
 
 }  // namespace
@@ -276,14 +372,16 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
 
     SourceLevel level;
     level.sourcePath = map.where;
-    MaterialTable materials{level, files, {}, 0};
+    const ShaderScripts scripts = loadShaderScripts(files);
+    MaterialTable materials{level, files, {}, {}, 0};
     std::map<uint32_t, MeshInstance> meshes;  // by material
     for (size_t s = 0; s < bsp.surfaces.size(); ++s) {
         const BspSurface& f = bsp.surfaces[s];
         if (f.type == kSurfaceFlare || f.vertexCount == 0) continue;
         const BspShader& shader = bsp.shaders[size_t(f.shader)];
-        if (!drawn(shader)) continue;
-        const uint32_t material = materials.materialOf(shader, f.shader);
+        const ShaderScript* script = scriptOf(scripts, shader);
+        if (!drawn(shader, script)) continue;
+        const uint32_t material = materials.materialOf(shader, f.shader, script);
         MeshInstance& mesh = meshes[material];
         std::vector<Vertex> vertices;
         std::vector<uint32_t> triangles;
@@ -309,6 +407,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         mesh.nodeName = mesh.meshName = level.materials[material].name;
         level.instances.push_back(std::move(mesh));
     }
+    addSunAndSky(level, bsp, scripts);
     const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
     // q3map2's lightmap density: one luxel per 16 units, times worldspawn's _lightmapscale.
     const float luxelUnits =

@@ -1,7 +1,6 @@
 // Quake 3 / OpenArena maps as levels: a map named as a .bsp file, as PAK.pk3:maps/NAME.bsp, or
 // as NAME alone (searched in the installed game's pk3s) is read into the same SourceLevel as a
-// glTF. Textures come from the game's pk3s; shader scripts are not read yet (a shader maps to
-// the image of its name).
+// glTF, with its textures and shader scripts from the game's pk3s.
 #pragma once
 
 #include <cstdint>
@@ -24,9 +23,19 @@ namespace onelight::world {
    "light" L with L 7500 c / d^2 lightmap units (of 255 at full white). One unit is taken as
    1 lux, so the light's intensity is L 7500 / 32^2 = 7.32 L cd (the default L = 300 gives
    2197 cd: 137 lux at 4 m).
+   Shaders (the .shader files in scripts/; a name without a script is the image of that name, .tga or
+   .jpg): the colour stage (shader_script.hpp colorStage, else qer_editorimage, else the name)
+   is a Lambert base colour; alphaFunc makes it MASK (GT0: any alpha, GE128 and LT128: 1/2),
+   another blend of that stage BLEND (stochastic coverage, bake/README.md); cull none makes it
+   double-sided; q3map_surfacelight S is emission of 0.25 S cd/m^2 (q3map2 gives an area light
+   S x area x 0.25 photons where a point light has light x 7500), times its q3map_lightimage
+   (or its colour texture). Surfaceparm nodraw, sky, fog, hint and skip leave a surface out. A
+   sky shader's q3map_sun is a primary directional light (intensity in lux), its
+   q3map_skylight V a uniform sky of V / pi cd/m^2 (V lux on an open floor).
 */
 inline constexpr double kQuake3MetresPerUnit = 1.0 / 32.0;
 inline constexpr double kQuake3CandelaPerLight = 7500.0 / (32.0 * 32.0);
+inline constexpr double kQuake3NitsPerSurfaceLight = 0.25;
 
 struct Quake3Options {
     uint32_t patchLevel = 4;               // segments per patch piece and direction, 1 .. 64
