@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Shared by ./play and ./test: install missing Debian packages, configure, build (Release, -j2).
 # Idempotent: a second run installs nothing, configures nothing and builds only what changed.
-# Usage: scripts/setup.sh [BUILD_DIR [extra cmake args...]]
+# Usage: scripts/setup.sh [BUILD_DIR [extra cmake args...]]; ONELIGHT_TEST_PACKAGES=1 adds the
+# packages of scripts/test-packages.txt (./test sets it).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-$root/build}
 shift || true
 
-mapfile -t wanted < <(grep -v '^#' "$root/scripts/packages.txt" | sed '/^$/d')
+lists=("$root/scripts/packages.txt")
+[ "${ONELIGHT_TEST_PACKAGES:-0}" = 1 ] && lists+=("$root/scripts/test-packages.txt")
+mapfile -t wanted < <(cat "${lists[@]}" | grep -v '^#' | sed '/^$/d')
 missing=()
 for p in "${wanted[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
