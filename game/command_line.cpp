@@ -25,6 +25,9 @@ std::string usage() {
         {"--replay SCRIPT", "play a replay script on the fixed tick (default: none)"},
         {"--capture-dir DIR", "where a replay's captures go (default: captures/)"},
         {"--free-fly", "a free-fly camera instead of the player (default: the player)"},
+        {"--quality Q",
+         "draft, default or high: the bake's when LEVEL needs baking (default: draft for a "
+         "Quake 3 map, else the baker's default)"},
         {"-h, --help", "this help"}};
     std::string text =
         "usage: onelight LEVEL(.gltf|.glb|.olpak|.bsp|PAK.pk3:maps/NAME.bsp|NAME) [OPTIONS]\n"
@@ -78,6 +81,11 @@ CommandLine parseCommandLine(int argc, char** argv) {
             out.replay = argv[++i];
         } else if (a == "--capture-dir" && hasValue) {
             out.captureDir = argv[++i];
+        } else if (a == "--quality" && hasValue) {
+            out.quality = argv[++i];
+            if (out.quality != "draft" && out.quality != "default" && out.quality != "high")
+                throw world::Error("--quality '" + out.quality +
+                                   "': expected draft, default or high");
         } else if (a == "--camera" && hasValue) {
             out.camera = argv[++i];
         } else if (a == "--capture" && hasValue) {

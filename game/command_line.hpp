@@ -7,7 +7,9 @@
 namespace onelight::game {
 
 struct CommandLine {
-    std::string level;  // .gltf, .glb or .olpak
+    std::string level;    // .gltf, .glb, .olpak, or a Quake 3 map (world/level_names.hpp)
+    std::string quality;  // the bake's when onelight bakes LEVEL; empty: draft for a Quake 3
+                          // map, the baker's default for a glTF
     bool headless = false;
     uint32_t width = 1280, height = 720;
     std::string camera;   // NAME or x,y,z,yaw,pitch; empty = the level's first or automatic

@@ -104,7 +104,8 @@ void compileAndBake(const std::string& level, const std::string& package, const 
 // A Quake 3 map: its package NAME.olpak in the current folder, baked at draft quality when
 // missing or older than the baker (a first look takes seconds; bake it yourself with
 // onelight-bake --quality default for more).
-std::string resolveQuake3Package(const std::string& level, const std::string& baker) {
+std::string resolveQuake3Package(const std::string& level, const std::string& baker,
+                                 const std::string& quality) {
     std::error_code ec;
     const std::string package = world::defaultPackagePath(level);
     const fs::path bake = baker;
@@ -115,21 +116,22 @@ std::string resolveQuake3Package(const std::string& level, const std::string& ba
     if (!bakerKnown)
         throw world::Error(level + ": needs compiling, but " + bake.string() +
                            " is missing; expected onelight-bake beside onelight");
-    compileAndBake(level, package, bake, {"--quality", "draft"},
-                   "a Quake 3 map at draft quality into " + package);
+    compileAndBake(level, package, bake, {"--quality", quality},
+                   "a Quake 3 map at " + quality + " quality into " + package);
     return package;
 }
 
 }  // namespace
 
-std::string resolveLevelPackage(const std::string& level) {
-    return resolveLevelPackage(level, bakeExecutable().string());
+std::string resolveLevelPackage(const std::string& level, const std::string& quality) {
+    return resolveLevelPackageWith(level, bakeExecutable().string(), quality);
 }
 
-std::string resolveLevelPackage(const std::string& level, const std::string& baker) {
+std::string resolveLevelPackageWith(const std::string& level, const std::string& baker,
+                                    const std::string& quality) {
     std::error_code ec;
     if (world::isQuake3Map(level) && !fs::is_regular_file(level, ec))
-        return resolveQuake3Package(level, baker);
+        return resolveQuake3Package(level, baker, quality.empty() ? "draft" : quality);
     if (!fs::is_regular_file(level, ec))
         throw world::Error(
             level + ": no such file; expected a glTF level (.gltf, .glb) or a .olpak package");
@@ -151,8 +153,11 @@ std::string resolveLevelPackage(const std::string& level, const std::string& bak
     if (!bakerKnown)
         throw world::Error(level + ": needs compiling, but " + bake.string() +
                            " is missing; expected onelight-bake beside onelight");
-    compileAndBake(level, package, bake, {},
-                   "the package is missing or older than the level or the baker");
+    compileAndBake(level, package, bake,
+                   quality.empty() ? std::vector<std::string>{}
+                                   : std::vector<std::string>{"--quality", quality},
+                   "the package is missing or older than the level or the baker" +
+                       (quality.empty() ? std::string() : ", at " + quality + " quality"));
     return package;
 }
 

@@ -9,10 +9,15 @@ namespace onelight::game {
 
 /// The package to load for `level`, compiling it first when needed. Throws world::Error, one
 /// line "FILE: what was expected".
-[[nodiscard]] std::string resolveLevelPackage(const std::string& level);
+/// `quality` (draft, default, high) is the bake's when it bakes; empty: draft for a Quake 3
+/// map, the baker's default for a glTF.
+[[nodiscard]] std::string resolveLevelPackage(const std::string& level,
+                                              const std::string& quality = {});
 
 /// The same with the baker's path given (tests); the one above uses onelight-bake beside this
 /// executable.
-[[nodiscard]] std::string resolveLevelPackage(const std::string& level, const std::string& baker);
+[[nodiscard]] std::string resolveLevelPackageWith(const std::string& level,
+                                                  const std::string& baker,
+                                                  const std::string& quality = {});
 
 }  // namespace onelight::game

@@ -199,7 +199,8 @@ int run(int argc, char** argv) {
         std::printf("%s", game::usage().c_str());
         return 0;
     }
-    const assets::LoadedLevel level = assets::loadLevel(game::resolveLevelPackage(cl.level));
+    const assets::LoadedLevel level =
+        assets::loadLevel(game::resolveLevelPackage(cl.level, cl.quality));
     if (!cl.replay.empty()) return game::runReplay(cl, level);
     if (!cl.headless && !cl.freeFly && cl.camera.empty()) return game::runPlay(cl, level);
     return runViewer(cl, level, resolveCamera(cl, level));

@@ -35,3 +35,12 @@ TEST(GameCommandLine, AnUnknownOptionFailsAndPointsToTheHelp) {
     EXPECT_NE(r.output.find("unexpected argument '--nope'"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("onelight --help"), std::string::npos) << r.output;
 }
+
+TEST(GameCommandLine, AQualityOtherThanTheBakersIsNamed) {
+    const onelight::test::CommandResult r =
+        onelight::test::runCommand(kOnelight + " level.gltf --quality best");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("--quality 'best': expected draft, default or high"),
+              std::string::npos)
+        << r.output;
+}

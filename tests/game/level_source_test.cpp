@@ -29,12 +29,18 @@ struct Fixture {
         calls = dir / "calls.txt";
         std::ofstream(level) << "{}";
         // Records its arguments; writes the package named after -o.
-        std::ofstream(baker) << "#!/bin/sh\necho \"$1\" >> '" << calls.string()
+        std::ofstream(baker) << "#!/bin/sh\necho \"$*\" >> '" << calls.string()
                              << "'\nwhile [ $# -gt 1 ]; do [ \"$1\" = -o ] && echo pak > \"$2\"; "
                                 "shift; done\nexit 0\n";
         fs::permissions(baker, fs::perms::owner_all);
     }
     ~Fixture() { fs::remove_all(dir); }
+    std::string callLines() const {
+        std::ifstream in(calls);
+        std::string all, line;
+        while (std::getline(in, line)) all += line + "\n";
+        return all;
+    }
     int callCount() const {
         std::ifstream in(calls);
         int n = 0;
@@ -49,33 +55,57 @@ struct Fixture {
 TEST(LevelSource, RebakesOnlyWhenThePackageIsOlderThanTheLevelOrTheBaker) {
     const Fixture f;
     // Missing package: compile, then bake.
-    EXPECT_EQ(onelight::game::resolveLevelPackage(f.level, f.baker), f.package.string());
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith(f.level, f.baker), f.package.string());
     EXPECT_EQ(f.callCount(), 2);
 
     // Newer than both: used as it is.
     f.age(f.level, 100);
     f.age(f.baker, 100);
-    EXPECT_EQ(onelight::game::resolveLevelPackage(f.level, f.baker), f.package.string());
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith(f.level, f.baker), f.package.string());
     EXPECT_EQ(f.callCount(), 2);
 
     // A rebuilt baker makes it stale.
     f.age(f.package, 200);
     f.age(f.level, 300);
-    EXPECT_EQ(onelight::game::resolveLevelPackage(f.level, f.baker), f.package.string());
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith(f.level, f.baker), f.package.string());
     EXPECT_EQ(f.callCount(), 4);
 
     // So does an edited level.
     f.age(f.package, 200);
     f.age(f.baker, 300);
     f.age(f.level, 100);
-    EXPECT_EQ(onelight::game::resolveLevelPackage(f.level, f.baker), f.package.string());
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith(f.level, f.baker), f.package.string());
     EXPECT_EQ(f.callCount(), 6);
 
     // No baker and a stale package: a clear error naming the level and the baker.
     f.age(f.package, 200);
-    const std::string error = onelight::test::errorMessage(
-        [&] { (void)onelight::game::resolveLevelPackage(f.level, (f.dir / "absent").string()); });
+    const std::string error = onelight::test::errorMessage([&] {
+        (void)onelight::game::resolveLevelPackageWith(f.level, (f.dir / "absent").string());
+    });
     EXPECT_NE(error.find("level.gltf: needs compiling"), std::string::npos) << error;
+}
+
+// A Quake 3 map (a bare name): its package is NAME.olpak in the current folder, baked at draft
+// quality unless --quality says otherwise, and left alone while newer than the baker.
+TEST(LevelSource, AQuake3MapBakesAtDraftIntoTheCurrentFolder) {
+    const Fixture f;
+    const fs::path before = fs::current_path();
+    fs::current_path(f.dir);
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith("somemap", f.baker.string()),
+              "somemap.olpak");
+    EXPECT_EQ(f.callLines(),
+              "compile somemap -o somemap.olpak\nsomemap -o somemap.olpak --quality draft\n");
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith("somemap", f.baker.string()),
+              "somemap.olpak");
+    EXPECT_EQ(f.callCount(), 2);  // fresh: no bake
+    fs::remove(f.dir / "somemap.olpak");
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith("pak1.pk3:maps/other.bsp", f.baker.string(),
+                                                      "high"),
+              "other.olpak");
+    EXPECT_NE(f.callLines().find("pak1.pk3:maps/other.bsp -o other.olpak --quality high"),
+              std::string::npos)
+        << f.callLines();
+    fs::current_path(before);
 }
 
 }  // namespace
