@@ -9,12 +9,14 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "shading.hpp"
 #include "world/error.hpp"
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/entity_lump.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/shader_script.hpp"
+#include "world/light_model.hpp"
 
 namespace onelight::world {
 namespace {
@@ -270,8 +272,8 @@ void addSpawns(SourceLevel& level, const std::vector<MapEntity>& entities,
 }
 
 // Point lights, spots where they aim at a target (q3map2's cone), candela by
-// kQuake3CandelaPerLight; the brightest `primaries` are primary, the others baked.
-void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, uint32_t primaries,
+// kQuake3CandelaPerLight, all baked until chooseLightRoles.
+void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
                const std::string& where) {
     std::map<std::string, glm::vec3> targets;
     for (const MapEntity& e : entities)
@@ -306,20 +308,46 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, uint3
         l.role = LightRole::kBaked;
         level.lights.push_back(l);
     }
-    // The sun, when the sky has one, is a primary already; the brightest points fill the rest.
+}
+
+// The primaries (q3_import.hpp, "Which lights are primaries"): each light's share of the
+// surface area where it is the brightest, unshadowed, at the triangles' centroids.
+void chooseLightRoles(SourceLevel& level, uint32_t maximum) {
+    std::vector<double> area(level.lights.size(), 0.0);
+    double total = 0.0;
+    for (const MeshInstance& mesh : level.instances)
+        for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const Vertex &a = mesh.vertices[mesh.indices[t]],
+                         &b = mesh.vertices[mesh.indices[t + 1]],
+                         &c = mesh.vertices[mesh.indices[t + 2]];
+            const glm::vec3 cross = glm::cross(b.position - a.position, c.position - a.position);
+            const double size = 0.5 * double(glm::length(cross));
+            if (!(size > 0.0)) continue;
+            const glm::vec3 normal = cross / float(2.0 * size);
+            const glm::vec3 centroid = (a.position + b.position + c.position) / 3.0f;
+            const glm::vec3 lifted = centroid + normal * 0.01f;
+            float best = 0.0f;
+            size_t brightest = level.lights.size();
+            for (size_t l = 0; l < level.lights.size(); ++l) {
+                const LightAtPoint at = evaluateLight(level.lights[l], lifted);
+                const float e =
+                    glsl::luminance(at.illuminance) * std::max(0.0f, glm::dot(normal, at.toLight));
+                if (e > best) {
+                    best = e;
+                    brightest = l;
+                }
+            }
+            total += size;
+            if (brightest < level.lights.size()) area[brightest] += size;
+        }
     std::vector<size_t> order;
-    size_t given = 0;
-    for (size_t i = 0; i < level.lights.size(); ++i) {
-        if (level.lights[i].type != LightType::kDirectional)
-            order.push_back(i);
-        else
-            given += level.lights[i].role == LightRole::kPrimary;
+    for (size_t l = 0; l < level.lights.size(); ++l) {
+        level.lights[l].role = LightRole::kBaked;
+        if (total > 0.0 && area[l] >= kQuake3PrimaryAreaShare * total) order.push_back(l);
     }
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-        return level.lights[a].intensity > level.lights[b].intensity;
-    });
-    const size_t budget = primaries > given ? primaries - given : 0;
-    for (size_t i = 0; i < std::min(budget, order.size()); ++i)
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t x, size_t y) { return area[x] > area[y]; });
+    for (size_t i = 0; i < std::min<size_t>(maximum, order.size()); ++i)
         level.lights[order[i]].role = LightRole::kPrimary;
 }
 
@@ -416,7 +444,8 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     if (!(luxelUnits > 0.0f)) throw Error(map.where + ": worldspawn's _lightmapscale is not > 0");
     level.texelsPerMetre = float(1.0 / (double(luxelUnits) * kQuake3MetresPerUnit));
     addSpawns(level, entities, map.where);
-    addLights(level, entities, options.primaryLights, map.where);
+    addLights(level, entities, map.where);
+    chooseLightRoles(level, options.primaryLights);
     return level;
 }
 

@@ -23,6 +23,12 @@ namespace onelight::world {
    "light" L with L 7500 c / d^2 lightmap units (of 255 at full white). One unit is taken as
    1 lux, so the light's intensity is L 7500 / 32^2 = 7.32 L cd (the default L = 300 gives
    2197 cd: 137 lux at 4 m).
+   Which lights are primaries (the lights the runtime draws with shadow maps): a light is a
+   candidate when it is the brightest on at least kQuake3PrimaryAreaShare of the map's surface
+   area (each triangle's centroid, cosine-weighted illuminance, no shadows: an estimate, the
+   compile assigns the real primaries with shadows), the largest shares first, at most
+   Quake3Options::primaryLights (the sun counts among them); the others are baked. A light that
+   is the brightest almost nowhere needs no shadow map of its own.
    Shaders (the .shader files in scripts/; a name without a script is the image of that name, .tga or
    .jpg): the colour stage (shader_script.hpp colorStage, else qer_editorimage, else the name)
    is a Lambert base colour; alphaFunc makes it MASK (GT0: any alpha, GE128 and LT128: 1/2),
@@ -36,10 +42,11 @@ namespace onelight::world {
 inline constexpr double kQuake3MetresPerUnit = 1.0 / 32.0;
 inline constexpr double kQuake3CandelaPerLight = 7500.0 / (32.0 * 32.0);
 inline constexpr double kQuake3NitsPerSurfaceLight = 0.25;
+inline constexpr double kQuake3PrimaryAreaShare = 0.02;
 
 struct Quake3Options {
     uint32_t patchLevel = 4;               // segments per patch piece and direction, 1 .. 64
-    uint32_t primaryLights = 4;            // the brightest lights become primaries; others baked
+    uint32_t primaryLights = 8;  // at most this many primary candidates (q3_import.hpp, Lights)
     std::vector<std::string> gameFolders;  // folders of pk3s; empty: the installed OpenArena's
 };
 
