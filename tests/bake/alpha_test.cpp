@@ -53,7 +53,7 @@ int grateOpenAt(float x, float z, float margin) {
     if (std::fabs(x) >= 1.0f || std::fabs(z) >= 1.0f) return -1;
     int open = 1;
     for (float c : {x, z}) {
-        const float texel = 16.0f * (c + 1.0f);        // texel coordinate along the grate
+        const float texel = 16.0f * (c + 1.0f);  // texel coordinate along the grate
         const float inCell = texel - 4.0f * std::floor(texel / 4.0f);  // [0, 4): bar is [0, 2)
         for (float edge : {0.0f, 2.0f, 4.0f})
             if (std::fabs(inCell - edge) < margin) return -1;
@@ -168,9 +168,10 @@ TEST(AlphaTransport, AMaskGrateCastsItsHolesPatternIntoTheShadowMaskAndTheGrid) 
         if (std::fabs(t.mask - float(open)) > 0.05f) ++wrong;
     }
     const double meanOpen = sum / inside;
-    std::printf("[ grate ] shadow mask: %d texels, mean openness %.4f (texture %.4f), %d of %d "
-                "off the pattern\n",
-                inside, meanOpen, kOpenFraction, wrong, checked);
+    std::printf(
+        "[ grate ] shadow mask: %d texels, mean openness %.4f (texture %.4f), %d of %d "
+        "off the pattern\n",
+        inside, meanOpen, kOpenFraction, wrong, checked);
     EXPECT_GT(checked, 3000);
     EXPECT_EQ(wrong, 0);
     EXPECT_NEAR(meanOpen, kOpenFraction, 0.02 * kOpenFraction);
@@ -182,8 +183,7 @@ TEST(AlphaTransport, AMaskGrateCastsItsHolesPatternIntoTheShadowMaskAndTheGrid) 
     for (uint32_t z = 0; z < grid.dims.z; ++z)
         for (uint32_t y = 0; y < grid.dims.y; ++y)
             for (uint32_t x = 0; x < grid.dims.x; ++x) {
-                const glm::vec3 c =
-                    grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
+                const glm::vec3 c = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
                 if (c.y <= 0.0f || c.y >= kGrateHeight - 0.1f || !underCentralGrate(c)) continue;
                 const world::LightGridCell& cell =
                     grid.cells[(size_t(z) * grid.dims.y + y) * grid.dims.x + x];
@@ -197,9 +197,10 @@ TEST(AlphaTransport, AMaskGrateCastsItsHolesPatternIntoTheShadowMaskAndTheGrid) 
                 if (std::fabs(v - float(open)) > 0.05f) ++gridWrong;
             }
     const double gridOpen = gridSum / cells;
-    std::printf("[ grate ] light grid: %d cells, mean visibility %.4f, %d of %d off the "
-                "pattern\n",
-                cells, gridOpen, gridWrong, gridChecked);
+    std::printf(
+        "[ grate ] light grid: %d cells, mean visibility %.4f, %d of %d off the "
+        "pattern\n",
+        cells, gridOpen, gridWrong, gridChecked);
     EXPECT_GT(gridChecked, 5000);
     EXPECT_EQ(gridWrong, 0);
     EXPECT_NEAR(gridOpen, kOpenFraction, 0.02 * kOpenFraction);
@@ -216,7 +217,8 @@ TEST(AlphaTransport, TheReferenceSeesTheFloorThroughTheGratesHoles) {
     RayCounts rays;
     const uint32_t size = 192;
     const world::Camera& camera = level.cameras[0];
-    const ReferenceImage image = renderReference(scene, lights, camera, size, size, 4, {}, nullptr, rays);
+    const ReferenceImage image =
+        renderReference(scene, lights, camera, size, size, 4, {}, nullptr, rays);
     const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
     const float tanHalf = std::tan(0.5f * camera.yfov);
     int counted[2] = {0, 0};
@@ -226,7 +228,8 @@ TEST(AlphaTransport, TheReferenceSeesTheFloorThroughTheGratesHoles) {
             const float sy = 1.0f - (float(y) + 0.5f) / float(size) * 2.0f;
             const glm::vec3 d = rotation * glm::vec3(sx * tanHalf, sy * tanHalf, -1.0f);
             // A pixel spans 0.006 m = 0.1 texels of the grate: margin 0.45 texels.
-            const glm::vec3 atGrate = camera.position + d * ((camera.position.y - kGrateHeight) / -d.y);
+            const glm::vec3 atGrate =
+                camera.position + d * ((camera.position.y - kGrateHeight) / -d.y);
             const int viewOpen = grateOpenAt(atGrate.x, atGrate.z, 0.45f);
             if (viewOpen < 0) continue;
             const glm::vec3 p = camera.position + d * (camera.position.y / -d.y);
@@ -271,7 +274,8 @@ TEST(AlphaTransport, ABlendSheetTransmitsOneMinusAlpha) {
     RayCounts rays;
     const uint32_t size = 64;
     const world::Camera& camera = level.cameras[0];
-    const ReferenceImage image = renderReference(scene, lights, camera, size, size, 64, {}, nullptr, rays);
+    const ReferenceImage image =
+        renderReference(scene, lights, camera, size, size, 64, {}, nullptr, rays);
     const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
     const float tanHalf = std::tan(0.5f * camera.yfov);
     double rendered = 0.0, open = 0.0;
@@ -287,9 +291,10 @@ TEST(AlphaTransport, ABlendSheetTransmitsOneMinusAlpha) {
         }
     const double seen = rendered / open;
     const double t = 1.0 - double(alpha);
-    std::printf("[ blend ] shadow mask %.4f (1 - alpha = %.2f); reference %.4f ((1 - alpha)^2 "
-                "= %.2f)\n",
-                transmitted, t, seen, t * t);
+    std::printf(
+        "[ blend ] shadow mask %.4f (1 - alpha = %.2f); reference %.4f ((1 - alpha)^2 "
+        "= %.2f)\n",
+        transmitted, t, seen, t * t);
     EXPECT_NEAR(transmitted, t, 0.02 * t);
     EXPECT_NEAR(seen, t * t, 0.02 * t * t);
 }

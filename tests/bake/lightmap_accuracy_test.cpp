@@ -24,7 +24,7 @@ struct Baked {
 Baked bake(const world::SourceLevel& source, const BakeOptions& options) {
     Baked b{bakeLevel(source, options),
             makePunctualLights(source.lights, options.lightSizes,
-                           options.skyRadiance.value_or(source.skyRadiance)),
+                               options.skyRadiance.value_or(source.skyRadiance)),
             {}};
     b.samples = placeTexels(b.result.level);
     return b;

@@ -206,7 +206,7 @@ TEST(LightmapSeams, ChartBordersShowNoVisibleStep) {
     options.shadowSamples = 64;
     const BakeResult r = bakeLevel(source, options);
     const BakeLights lights = makePunctualLights(source.lights, options.lightSizes,
-                                             options.skyRadiance.value_or(source.skyRadiance));
+                                                 options.skyRadiance.value_or(source.skyRadiance));
     const std::vector<SeamPoint> points = seamPoints(r.level, r.baked, lights);
     const bool verbose = std::getenv("ONELIGHT_VERBOSE") != nullptr;
     double sumSq = 0.0, worstSmooth = 0.0, worstRatio = 0.0;

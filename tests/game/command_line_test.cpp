@@ -40,7 +40,6 @@ TEST(GameCommandLine, AQualityOtherThanTheBakersIsNamed) {
     const onelight::test::CommandResult r =
         onelight::test::runCommand(kOnelight + " level.gltf --quality best");
     EXPECT_EQ(r.exitCode, 1) << r.output;
-    EXPECT_NE(r.output.find("--quality 'best': expected draft, default or high"),
-              std::string::npos)
+    EXPECT_NE(r.output.find("--quality 'best': expected draft, default or high"), std::string::npos)
         << r.output;
 }

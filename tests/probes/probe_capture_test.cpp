@@ -85,8 +85,7 @@ TEST(ProbeCapture, BoxRoomMatchesThePathTracerWithinItsNoise) {
         for (uint32_t i = 0; i < kPathsPerChunk; ++i) {
             const glm::vec3 w = sampleUniformSphere({rng.next(), rng.next()});
             const double l = luminance(traceRadiance(room.scene, room.lights, settings.transport,
-                                                     kCapturePoint, w, RayCone{}, rng,
-                                                     out.rays));
+                                                     kCapturePoint, w, RayCone{}, rng, out.rays));
             const int f = glsl::cubeFace(w);
             out.sum[f] += l;
             out.sum2[f] += l * l;

@@ -49,11 +49,13 @@ DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& w
     if (size == 0 || size > size_t(1) << 30) throw Error(where + ": empty or oversized image data");
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
-        throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() + ")");
+        throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() +
+                    ")");
     checkExtent(width, height, where);
     stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
     if (!pixels)
-        throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() + ")");
+        throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() +
+                    ")");
     DecodedImage out;
     out.width = uint32_t(width);
     out.height = uint32_t(height);

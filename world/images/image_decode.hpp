@@ -1,5 +1,6 @@
-// Encoded images (PNG, JPEG, TGA for Quake 3 textures; Radiance HDR for skies) decoded to pixels with stb_image: the one
-// decoder of the runtime (its material textures) and the baker (the same textures at ray hits).
+// Encoded images (PNG, JPEG, TGA for Quake 3 textures; Radiance HDR for skies) decoded to pixels
+// with stb_image: the one decoder of the runtime (its material textures) and the baker (the same
+// textures at ray hits).
 #pragma once
 
 #include <cstddef>
@@ -24,7 +25,8 @@ struct HdrImage {
 /// The largest width or height a decoded image may have (texels).
 inline constexpr uint32_t kMaxImageExtent = 16384;
 
-/// Decodes PNG, JPEG or TGA bytes. Throws world::Error, its message starting with `where` (the file).
+/// Decodes PNG, JPEG or TGA bytes. Throws world::Error, its message starting with `where` (the
+/// file).
 [[nodiscard]] DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where);
 
 /// Reads and decodes the image file at `path` (PNG/JPEG). Throws world::Error naming it.

@@ -29,15 +29,15 @@ namespace onelight::world {
    compile assigns the real primaries with shadows), the largest shares first, at most
    Quake3Options::primaryLights (the sun counts among them); the others are baked. A light that
    is the brightest almost nowhere needs no shadow map of its own.
-   Shaders (the .shader files in scripts/; a name without a script is the image of that name, .tga or
-   .jpg): the colour stage (shader_script.hpp colorStage, else qer_editorimage, else the name)
-   is a Lambert base colour; alphaFunc makes it MASK (GT0: any alpha, GE128 and LT128: 1/2),
-   another blend of that stage BLEND (stochastic coverage, bake/README.md); cull none makes it
-   double-sided; q3map_surfacelight S is emission of 0.25 S cd/m^2 (q3map2 gives an area light
-   S x area x 0.25 photons where a point light has light x 7500), times its q3map_lightimage
-   (or its colour texture). Surfaceparm nodraw, sky, fog, hint and skip leave a surface out. A
-   sky shader's q3map_sun is a primary directional light (intensity in lux), its
-   q3map_skylight V a uniform sky of V / pi cd/m^2 (V lux on an open floor).
+   Shaders (the .shader files in scripts/; a name without a script is the image of that name, .tga
+   or .jpg): the colour stage (shader_script.hpp colorStage, else qer_editorimage, else the name) is
+   a Lambert base colour; alphaFunc makes it MASK (GT0: any alpha, GE128 and LT128: 1/2), another
+   blend of that stage BLEND (stochastic coverage, bake/README.md); cull none makes it double-sided;
+   q3map_surfacelight S is emission of 0.25 S cd/m^2 (q3map2 gives an area light S x area x 0.25
+   photons where a point light has light x 7500), times its q3map_lightimage (or its colour
+   texture). Surfaceparm nodraw, sky, fog, hint and skip leave a surface out. A sky shader's
+   q3map_sun is a primary directional light (intensity in lux), its q3map_skylight V a uniform sky
+   of V / pi cd/m^2 (V lux on an open floor).
 */
 inline constexpr double kQuake3MetresPerUnit = 1.0 / 32.0;
 inline constexpr double kQuake3CandelaPerLight = 7500.0 / (32.0 * 32.0);
@@ -45,7 +45,7 @@ inline constexpr double kQuake3NitsPerSurfaceLight = 0.25;
 inline constexpr double kQuake3PrimaryAreaShare = 0.02;
 
 struct Quake3Options {
-    uint32_t patchLevel = 4;               // segments per patch piece and direction, 1 .. 64
+    uint32_t patchLevel = 4;     // segments per patch piece and direction, 1 .. 64
     uint32_t primaryLights = 8;  // at most this many primary candidates (q3_import.hpp, Lights)
     std::vector<std::string> gameFolders;  // folders of pk3s; empty: the installed OpenArena's
 };
