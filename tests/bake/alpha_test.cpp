@@ -210,10 +210,9 @@ TEST(AlphaTransport, AMaskGrateCastsItsHolesPatternIntoTheShadowMaskAndTheGrid) 
 // where its own light path is open too, and the black grate elsewhere.
 TEST(AlphaTransport, TheReferenceSeesTheFloorThroughTheGratesHoles) {
     const world::SourceLevel level = grateLevel(world::AlphaMode::kMask, 1.0f);
-    const EmbreeDevice device;
-    const world::SplitLevel split = world::splitStaticDynamic(level);
-    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
+    const test::LevelScene built(level);
+    const BakeScene& scene = built.scene;
+    const BakeLights& lights = built.lights;
     RayCounts rays;
     const uint32_t size = 192;
     const world::Camera& camera = level.cameras[0];
@@ -267,10 +266,9 @@ TEST(AlphaTransport, ABlendSheetTransmitsOneMinusAlpha) {
     ASSERT_GT(inside, 500);
     const double transmitted = sum / inside;
 
-    const EmbreeDevice device;
-    const world::SplitLevel split = world::splitStaticDynamic(level);
-    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
+    const test::LevelScene built(level);
+    const BakeScene& scene = built.scene;
+    const BakeLights& lights = built.lights;
     RayCounts rays;
     const uint32_t size = 64;
     const world::Camera& camera = level.cameras[0];
@@ -339,14 +337,7 @@ double openFraction(const std::vector<uint8_t>& blockedRays) {
     return double(open) / double(blockedRays.size());
 }
 
-// The grate level's static world in Embree, as the baker builds it.
-struct LevelScene {
-    const EmbreeDevice device;
-    const BakeScene scene;
-    explicit LevelScene(const world::SourceLevel& level)
-        : scene(device, world::splitStaticDynamic(level).staticGeometry,
-                loadSceneMaterials(level)) {}
-};
+using test::LevelScene;
 
 // Shadow rays: the open ones are the texture's open fraction, and each one clear of an edge is
 // open exactly where it crosses a hole. With the grate's material OPAQUE (what every triangle

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "capture/capture.hpp"
+#include "world/compile/static_split.hpp"
 
 namespace onelight::bake::test {
 
@@ -123,6 +124,10 @@ uint32_t addImageTexture(world::SourceLevel& level, const std::string& pngPath, 
     level.textures.push_back(texture);
     return uint32_t(level.textures.size() - 1);
 }
+
+LevelScene::LevelScene(const world::SourceLevel& level)
+    : scene(device, world::splitStaticDynamic(level).staticGeometry, loadSceneMaterials(level)),
+      lights(makeBakeLights(scene, level.lights, {}, level.skyRadiance)) {}
 
 void setSkyImage(world::SourceLevel& level, const std::string& hdrPath, const world::HdrImage& sky,
                  glm::vec3 scale) {

@@ -7,6 +7,8 @@
 #include <glm/glm.hpp>
 
 #include "bake/bake_level.hpp"
+#include "bake/embree/bake_scene.hpp"
+#include "bake/lighting/lights.hpp"
 #include "world/images/image_decode.hpp"
 #include "world/source_level.hpp"
 
@@ -32,6 +34,15 @@ void addInwardSphere(world::SourceLevel& level, glm::vec3 centre, float radius, 
 uint32_t addImageTexture(world::SourceLevel& level, const std::string& pngPath, uint32_t width,
                          uint32_t height, const std::vector<uint8_t>& rgba,
                          const world::Sampler& sampler = {});
+
+/// A level's static world in Embree, as the baker builds it, and its lights, emitters and
+/// uniform sky (makeBakeLights).
+struct LevelScene {
+    const EmbreeDevice device;
+    const BakeScene scene;
+    const BakeLights lights;
+    explicit LevelScene(const world::SourceLevel& level);
+};
 
 /// Writes `sky` (linear RGB) as a Radiance .hdr at `hdrPath` and makes it the level's sky image,
 /// each texel times `scale` cd/m^2, as extras.onelight.sky {"image", "scale"} would.

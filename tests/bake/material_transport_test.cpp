@@ -94,10 +94,9 @@ float checkerAlbedoAt(float x, float z, float margin) {
 TEST(MaterialTransport, ACheckerUnderAUniformSkyShowsEachTexelsAlbedo) {
     const float sky = 1000.0f;
     const world::SourceLevel level = checkerPlane(sky);
-    const EmbreeDevice device;
-    const world::SplitLevel split = world::splitStaticDynamic(level);
-    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(scene, level.lights, {}, level.skyRadiance);
+    const test::LevelScene built(level);
+    const BakeScene& scene = built.scene;
+    const BakeLights& lights = built.lights;
     RayCounts rays;
     const uint32_t size = 64;
     const ReferenceImage image =
@@ -151,10 +150,9 @@ TEST(MaterialTransport, AnIntegratingSphereSeesItsTexturesMeanAlbedo) {
     const float radius = 2.0f, candela = 100.0f;
     test::addInwardSphere(level, glm::vec3(0.0f), radius, 64, 128, m);
     level.lights.push_back(test::pointLight(glm::vec3(0.0f), candela, world::LightRole::kBaked));
-    const EmbreeDevice device;
-    const world::SplitLevel split = world::splitStaticDynamic(level);
-    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
+    const test::LevelScene built(level);
+    const BakeScene& scene = built.scene;
+    const BakeLights& lights = built.lights;
     TransportSettings transport;
     transport.maxDepth = 200;
     RayCounts rays;
@@ -251,10 +249,9 @@ FloorAgreement normalMappedFloor(bool glossy) {
     sun.direction = -toSun;
     level.lights.push_back(sun);
 
-    const EmbreeDevice device;
-    const world::SplitLevel split = world::splitStaticDynamic(level);
-    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(level));
-    const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
+    const test::LevelScene built(level);
+    const BakeScene& scene = built.scene;
+    const BakeLights& lights = built.lights;
     RayCounts rays;
     const uint32_t size = 128;
     const world::Camera& camera = level.cameras[0];
