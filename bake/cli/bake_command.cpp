@@ -1,4 +1,4 @@
-// onelight-bake LEVEL.gltf -o LEVEL.olpak [OPTIONS] (bakeUsage lists them with their defaults).
+// onelight-bake LEVEL -o LEVEL.olpak [OPTIONS] (bakeUsage lists them with their defaults).
 // Compiles and bakes in one go: progress bars with ETA on stderr, a summary on stdout. --sky
 // overrides the level's uniform sky (extras.onelight.sky).
 #include <cstdio>
@@ -30,8 +30,9 @@ std::string bakeUsage() {
     const BakeOptions d;
     const world::ChartOptions& charts = d.compile.charts;
     return formatUsage(
-        "onelight-bake LEVEL.gltf [-o LEVEL.olpak] [OPTIONS]",
-        "compiles LEVEL and bakes its lighting: progress on stderr, a summary on stdout",
+        "onelight-bake LEVEL [-o LEVEL.olpak] [OPTIONS]",
+        "compiles LEVEL and bakes its lighting: progress on stderr, a summary on stdout\n  " +
+            kLevelMeaning,
         {{"-o PATH", "the package to write", "LEVEL with the extension .olpak"},
          {"--quality Q", "draft, default or high", qualityName(d.quality)},
          {"--threads N", "worker threads, 1..1024", "every core"},
@@ -41,6 +42,7 @@ std::string bakeUsage() {
          {"--grid-cell M", "the light grid's cell size in metres", formatNumber(d.gridCellSize)},
          {"--texels-per-metre N", "lightmap density, 0.01..1024",
           "the level's, or " + formatNumber(charts.texelsPerMetre)},
+         patchLevelOption(),
          {"--quiet", "no progress bars", "bars on a terminal"},
          {"-h, --help", "this help", ""}});
 }
@@ -49,6 +51,7 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
     if (printedHelp(arguments, bakeUsage())) return 0;
     std::string input, output, reportPath;
     BakeOptions options;
+    world::Quake3Options quake3;
     int threads = 0;
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& a = arguments[i];
@@ -89,6 +92,10 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
                                    "'; expected a number in [0.01, 1024]");
             options.compile.charts.texelsPerMetre = v;
             options.compile.charts.densityFromCommandLine = true;
+        } else if (a == "--patch-level" && hasValue) {
+            if (!parsePatchLevel(arguments[++i], quake3))
+                return badArgument("--patch-level '" + arguments[i] +
+                                   "'; expected an integer in [1, 64]");
         } else if (a == "--quiet") {
             options.showProgress = false;
         } else if (!a.empty() && a[0] != '-' && input.empty()) {
@@ -104,7 +111,7 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(threads));
     return runReportingErrors(input, [&] {
-        const world::SourceLevel source = world::importLevel(input);
+        const world::SourceLevel source = world::importLevel(input, quake3);
         BakeResult result = bakeLevel(source, options);
         rebaseImagePaths(result.level, output);
         const std::vector<uint8_t> bytes = packageBytes(result.level, result.baked);

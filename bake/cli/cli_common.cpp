@@ -1,6 +1,7 @@
 #include "bake/cli/cli_common.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -22,6 +23,18 @@ std::string formatUsage(const std::string& synopsis, const std::string& summary,
                                                : " (default: " + o.defaultValue + ")") +
                 "\n";
     return text;
+}
+
+CliOption patchLevelOption() {
+    return {"--patch-level N", "segments per Quake 3 patch piece and direction, 1..64",
+            std::to_string(world::Quake3Options{}.patchLevel)};
+}
+
+bool parsePatchLevel(const std::string& text, world::Quake3Options& options) {
+    double value = 0.0;
+    if (!parseNumber(text, 1.0, 64.0, value) || value != std::floor(value)) return false;
+    options.patchLevel = static_cast<uint32_t>(value);
+    return true;
 }
 
 void rebaseImagePaths(world::CompiledLevel& level, const std::string& package) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "world/compiled_level.hpp"
+#include "world/import/q3/q3_import.hpp"
 
 namespace onelight::bake {
 
@@ -22,6 +23,18 @@ inline const std::string kRequired = "required";
 /// line, aligned.
 [[nodiscard]] std::string formatUsage(const std::string& synopsis, const std::string& summary,
                                       const std::vector<CliOption>& options);
+
+/// What LEVEL may be, for every subcommand's help.
+inline const std::string kLevelMeaning =
+    "LEVEL: a glTF (.gltf, .glb), a Quake 3 map (.bsp), PAK.pk3:maps/NAME.bsp, or the NAME of an "
+    "installed OpenArena map";
+
+/// --patch-level N: how finely a Quake 3 map's curved patches are tessellated.
+[[nodiscard]] CliOption patchLevelOption();
+
+/// Reads --patch-level's value into `options`; false (and `options` unchanged) unless it is an
+/// integer in [1, 64].
+[[nodiscard]] bool parsePatchLevel(const std::string& text, world::Quake3Options& options);
 
 /// Makes the level's image file references (as imported: relative to the working folder)
 /// relative to the folder of `package`, where the runtime looks for them.

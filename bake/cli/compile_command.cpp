@@ -1,4 +1,4 @@
-// onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [OPTIONS] (compileUsage lists them).
+// onelight-bake compile LEVEL [-o LEVEL.olpak] [OPTIONS] (compileUsage lists them).
 // Imports, compiles without lighting, writes the package atomically and prints a summary.
 #include <cstdio>
 #include <exception>
@@ -52,12 +52,14 @@ void printSummary(const std::string& output, const world::CompileStats& s, size_
 std::string compileUsage() {
     const world::ChartOptions d;
     return formatUsage(
-        "onelight-bake compile LEVEL.gltf [-o LEVEL.olpak] [OPTIONS]",
-        "compiles LEVEL without lighting (BSP, primaries, charts) and prints a summary",
+        "onelight-bake compile LEVEL [-o LEVEL.olpak] [OPTIONS]",
+        "compiles LEVEL without lighting (BSP, primaries, charts) and prints a summary\n  " +
+            kLevelMeaning,
         {{"-o PATH", "the package to write", "LEVEL with the extension .olpak"},
          {"--texels-per-metre N", "lightmap density, 0.01..1024",
           "the level's, or " + formatNumber(d.texelsPerMetre)},
          {"--atlas-size N", "texels per side of an atlas, 64..16384", std::to_string(d.atlasSize)},
+         patchLevelOption(),
          {"-h, --help", "this help", ""}});
 }
 
@@ -65,6 +67,7 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
     if (printedHelp(arguments, compileUsage())) return 0;
     std::string input, output;
     world::CompileOptions options;
+    world::Quake3Options quake3;
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& a = arguments[i];
         const bool hasValue = i + 1 < arguments.size();
@@ -90,6 +93,14 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
                 return 2;
             }
             options.charts.atlasSize = static_cast<uint32_t>(value);
+        } else if (a == "--patch-level" && hasValue) {
+            if (!parsePatchLevel(arguments[++i], quake3)) {
+                std::fprintf(stderr,
+                             "onelight-bake compile: --patch-level '%s'; expected an integer in "
+                             "[1, 64]\n",
+                             arguments[i].c_str());
+                return 2;
+            }
         } else if (!a.empty() && a[0] != '-' && input.empty()) {
             input = a;
         } else {
@@ -104,12 +115,14 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
     }
     if (output.empty()) output = world::defaultPackagePath(input);
     return runReportingErrors(input, [&] {
-        const world::SourceLevel source = world::importLevel(input);
+        const world::SourceLevel source = world::importLevel(input, quake3);
         world::CompileResult result = world::compileLevel(source, options);
         rebaseImagePaths(result.level, output);
         const std::vector<uint8_t> bytes = package::serializePackage(result.level);
         package::writeFileAtomically(output, bytes);
         printSummary(output, result.stats, bytes.size());
+        for (const std::string& note : source.importNotes)
+            std::fprintf(stderr, "onelight-bake: warning: %s\n", note.c_str());
         return 0;
     });
 }

@@ -1,4 +1,4 @@
-// onelight-bake reference LEVEL.gltf --camera NAME --spp N -o out.exr [OPTIONS]
+// onelight-bake reference LEVEL --camera NAME --spp N -o out.exr [OPTIONS]
 // (referenceUsage lists them with their defaults).
 // The path-traced ground truth of a camera's view: linear radiance in cd/m^2, every light at
 // full strength, no exposure, no tonemap.
@@ -21,8 +21,9 @@
 namespace onelight::bake {
 std::string referenceUsage() {
     return formatUsage(
-        "onelight-bake reference LEVEL.gltf --camera NAME --spp N -o OUT.exr [OPTIONS]",
-        "path-traces the camera's view: linear radiance in cd/m^2, no exposure, no tonemap",
+        "onelight-bake reference LEVEL --camera NAME --spp N -o OUT.exr [OPTIONS]",
+        "path-traces the camera's view: linear radiance in cd/m^2, no exposure, no tonemap\n  " +
+            kLevelMeaning,
         {{"--camera NAME", "the level's camera to render", kRequired},
          {"--spp N", "paths per pixel", kRequired},
          {"-o PATH", "the EXR to write", kRequired},
@@ -30,6 +31,7 @@ std::string referenceUsage() {
           "720 rows at the camera's aspect, else 1280x720"},
          {"--sky CD_PER_M2", "a uniform sky's radiance", "the level's extras.onelight.sky, or 0"},
          {"--threads N", "worker threads", "every core"},
+         patchLevelOption(),
          {"-h, --help", "this help", ""}});
 }
 
@@ -39,6 +41,7 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
     uint32_t width = 0, height = 0, spp = 0;
     int threads = 0;
     float sky = -1.0f;  // < 0: the level's sky
+    world::Quake3Options quake3;
     try {
         for (size_t i = 0; i < arguments.size(); ++i) {
             const std::string& a = arguments[i];
@@ -62,6 +65,10 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
             } else if (a == "--sky" && hasValue) {
                 sky = std::stof(arguments[++i]);
                 if (!(sky >= 0.0f) || !std::isfinite(sky)) throw std::invalid_argument("--sky");
+            } else if (a == "--patch-level" && hasValue) {
+                if (!parsePatchLevel(arguments[++i], quake3))
+                    throw std::invalid_argument("--patch-level " + arguments[i] +
+                                                "; expected an integer in [1, 64]");
             } else if (!a.empty() && a[0] != '-' && input.empty()) {
                 input = a;
             } else {
@@ -84,7 +91,7 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(threads));
     return runReportingErrors(input, [&] {
-        const world::SourceLevel source = world::importLevel(input);
+        const world::SourceLevel source = world::importLevel(input, quake3);
         const world::Camera* camera = nullptr;
         for (const world::Camera& c : source.cameras)
             if (c.name == cameraName) camera = &c;

@@ -29,7 +29,7 @@ TEST(BakeCommandLine, HelpExitsZeroAndListsEveryOptionWithItsDefault) {
     for (const char* ask : {"--help", "-h"}) {
         const onelight::test::CommandResult r = onelight::test::runCommand(kBake + " " + ask);
         EXPECT_EQ(r.exitCode, 0) << r.output;
-        for (const char* command : {"onelight-bake LEVEL.gltf", "onelight-bake compile",
+        for (const char* command : {"onelight-bake LEVEL", "onelight-bake compile",
                                     "onelight-bake reference", "onelight-bake merge"})
             EXPECT_NE(r.output.find(std::string("usage: ") + command), std::string::npos)
                 << command << "\n"
@@ -37,7 +37,7 @@ TEST(BakeCommandLine, HelpExitsZeroAndListsEveryOptionWithItsDefault) {
         for (const char* flag :
              {"--quality Q", "--threads N", "--report PATH", "--shard i/N", "--sky CD_PER_M2",
               "--grid-cell M", "--texels-per-metre N", "--quiet", "--atlas-size N", "--camera NAME",
-              "--spp N", "--size WxH", "-o PATH"}) {
+              "--spp N", "--size WxH", "-o PATH", "--patch-level N"}) {
             const std::string line = lineOf(r.output, flag);
             EXPECT_NE(line, "") << flag << " is not listed\n" << r.output;
             EXPECT_TRUE(line.find("(default: ") != std::string::npos ||
