@@ -29,6 +29,9 @@ bool actsBeforeSystems(CommandKind k) {
 ReplayRunner makeReplayRunner(replay::Script script, std::vector<std::string> lightNames,
                               const ecs::Registry& registry) {
     ReplayRunner r{std::move(script), std::move(lightNames)};
+    const ecs::Entity player = findNamed(registry, "player");
+    if (player != ecs::kNullEntity && registry.allOf<Transform>(player))
+        r.origin = registry.get<Transform>(player).position;
     for (const Command& c : r.script.commands) {
         if (c.kind != CommandKind::kExpectPrimary) continue;
         ecs::Entity e = findNamed(registry, c.name);
@@ -76,6 +79,7 @@ void applyReplayInput(ReplayRunner& r, uint64_t tick, InputState& input, ecs::Re
                 p.yaw = glm::radians(c.values[3]);
                 p.pitch = glm::radians(c.values[4]);
                 p.velocity = glm::vec3(0.0f);
+                r.origin = registry.get<Transform>(player).position;
                 break;
             }
             default:
@@ -108,6 +112,28 @@ ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, const ecs::Regi
                                         " effect lights, found " + std::to_string(live) + " (" +
                                         std::to_string(flashes) + " gun flashes, " +
                                         std::to_string(spots) + " flashlight)");
+                break;
+            }
+            case CommandKind::kExpectOnGround:
+            case CommandKind::kExpectMoved: {
+                const ecs::Entity player = findNamed(registry, "player");
+                if (player == ecs::kNullEntity || !registry.allOf<Player, Transform>(player))
+                    throw ReplayFailure(place(r, c) + "there is no player");
+                const glm::vec3 feet = registry.get<Transform>(player).position;
+                const std::string at = "(feet at " + std::to_string(feet.x) + " " +
+                                       std::to_string(feet.y) + " " + std::to_string(feet.z) + ")";
+                if (c.kind == CommandKind::kExpectOnGround) {
+                    if (!registry.get<Player>(player).onGround)
+                        throw ReplayFailure(place(r, c) + "expected the player on the ground " +
+                                            at + ", but it is in the air");
+                    break;
+                }
+                const float moved =
+                    glm::length(glm::vec2(feet.x - r.origin.x, feet.z - r.origin.z));
+                if (!(moved >= c.values[0]))
+                    throw ReplayFailure(place(r, c) + "expected the player to have moved " +
+                                        std::to_string(c.values[0]) + " m or more, found " +
+                                        std::to_string(moved) + " m " + at);
                 break;
             }
             case CommandKind::kExpectPrimary: {

@@ -27,10 +27,12 @@ struct ReplayRunner {
     std::vector<std::string> lightNames;  // the level's lights, by index
     size_t next = 0;                      // first command not yet applied
     size_t nextCheck = 0;                 // first command not yet checked (post-systems)
+    glm::vec3 origin{0.0f};  // the player's feet at the start or at the last spawn command
 };
 
 // Checks that every entity and light the script names exists (entities by their Name
-// component); throws ReplayFailure naming the first that does not.
+// component); throws ReplayFailure naming the first that does not. Records where the entity
+// named "player", if any, starts (ReplayRunner::origin).
 [[nodiscard]] ReplayRunner makeReplayRunner(replay::Script script,
                                             std::vector<std::string> lightNames,
                                             const ecs::Registry& registry);

@@ -163,7 +163,7 @@ Script parseScript(std::string_view text, const std::string& path) {
             if (c.name.find('/') != std::string::npos || c.name.find("..") != std::string::npos)
                 p.fail("expected a capture name without '/' or '..', found '" + c.name + "'");
         } else if (head == "expect") {
-            std::string_view what = p.word("'primary' or 'effect-lights'");
+            std::string_view what = p.word("'primary', 'effect-lights' or 'player'");
             if (what == "primary") {
                 c.kind = CommandKind::kExpectPrimary;
                 c.name = std::string(p.word("an entity name"));
@@ -175,8 +175,17 @@ Script parseScript(std::string_view text, const std::string& path) {
                 if (n < 0 || n > 5 || n != std::floor(n))
                     p.fail("expected a whole count from 0 to 5");
                 c.count = int(n);
+            } else if (what == "player") {
+                if (p.choice("on-ground", "moved")) {
+                    c.kind = CommandKind::kExpectOnGround;
+                } else {
+                    c.kind = CommandKind::kExpectMoved;
+                    double d = p.number("a distance in metres");
+                    if (!(d >= 0.0 && d <= 1e6)) p.fail("expected a distance from 0 to 1e6 metres");
+                    c.values[0] = float(d);
+                }
             } else {
-                p.fail("expected 'primary' or 'effect-lights' after 'expect', found '" +
+                p.fail("expected 'primary', 'effect-lights' or 'player' after 'expect', found '" +
                        std::string(what) + "'");
             }
         } else if (head == "quit") {

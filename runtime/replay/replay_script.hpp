@@ -14,6 +14,9 @@
 //   capture NAME                   writes NAME.png, NAME.exr and NAME.json
 //   expect primary ENTITY == LIGHT
 //   expect effect-lights N
+//   expect player on-ground        the player stands on a floor (walking a level in a replay)
+//   expect player moved D          at least D metres, horizontally, from where it started (the
+//                                  level's spawn, or the last spawn command)
 //   quit
 //
 // Parsing checks the syntax, numbers and times; entity and light names are resolved (and
@@ -37,6 +40,8 @@ enum class CommandKind {
     kCapture,
     kExpectPrimary,
     kExpectEffectLights,
+    kExpectOnGround,
+    kExpectMoved,
     kQuit
 };
 
@@ -48,7 +53,7 @@ struct Command {
     std::string name;      // Spawn: "player"; Key: key; Capture: file stem; ExpectPrimary: entity
     std::string light;     // ExpectPrimary: the light's name
     bool on = false;       // Key: down; Flashlight: on
-    float values[5] = {};  // Spawn: x y z yaw pitch; Look: dyaw dpitch
+    float values[5] = {};  // Spawn: x y z yaw pitch; Look: dyaw dpitch; ExpectMoved: metres
     int count = 0;         // ExpectEffectLights
 };
 

@@ -21,6 +21,7 @@ struct MiniGame {
     std::vector<std::string> lights = {"sun", "lamp"};
 
     MiniGame() {
+        registry.emplace<Name>(player, Name{"player"});
         registry.emplace<Transform>(player);
         registry.emplace<Player>(player);
         registry.emplace<Flashlight>(player);
@@ -110,6 +111,31 @@ TEST(ReplayRunner, AFailedExpectationNamesTheLineAndBothValues) {
     } catch (const ReplayFailure& e) {
         EXPECT_STREQ(e.what(),
                      "t.replay:2: expected 3 effect lights, found 1 (1 gun flashes, 0 flashlight)");
+    }
+}
+
+TEST(ReplayRunner, ThePlayerExpectationsMeasureTheWalkFromTheLastSpawn) {
+    // 0.5 s of W at 4 m/s is 2 m from the spawn; without level geometry the player falls.
+    const std::string walk =
+        "spawn player 3 1.7 0 yaw 0 pitch 0\nat 0 key W down\nat 0.5 key W up\n";
+    MiniGame g;
+    EXPECT_NO_THROW(g.run(walk + "at 0.6 expect player moved 1.9\n"));
+    MiniGame h;
+    try {
+        h.run(walk + "at 0.6 expect player moved 2.5\n");
+        FAIL() << "no failure";
+    } catch (const ReplayFailure& e) {
+        EXPECT_EQ(
+            std::string(e.what()).rfind("t.replay:4: expected the player to have moved 2.5", 0), 0u)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("found 2.0"), std::string::npos) << e.what();
+    }
+    MiniGame k;
+    try {
+        k.run(walk + "at 0.6 expect player on-ground\n");
+        FAIL() << "no failure";
+    } catch (const ReplayFailure& e) {
+        EXPECT_NE(std::string(e.what()).find("in the air"), std::string::npos) << e.what();
     }
 }
 

@@ -84,6 +84,10 @@ TEST(ReplayScript, BadInputNamesFileLineAndExpectation) {
         {"at inf fire\n", "s.replay:1: expected a time in seconds (a number), found 'inf'"},
         {"capture ../etc/x\n", "s.replay:1: expected a capture name without '/' or '..'"},
         {"tick 0\n", "s.replay:1: expected a tick rate between 1 and 1000 Hz"},
+        {"expect player flying\n", "s.replay:1: expected 'on-ground' or 'moved', found 'flying'"},
+        {"expect player moved -1\n", "s.replay:1: expected a distance from 0 to 1e6 metres"},
+        {"expect player moved\n", "s.replay:1: expected a distance in metres"},
+        {"expect weather\n", "s.replay:1: expected 'primary', 'effect-lights' or 'player'"},
     };
     for (auto& c : cases) {
         std::string e = errorOf(c.text);
