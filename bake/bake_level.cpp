@@ -8,6 +8,7 @@
 
 #include "bake/dominant/dominant_primary.hpp"
 #include "bake/embree/bake_scene.hpp"
+#include "bake/lightmap/imported_lightmap.hpp"
 #include "bake/lightmap/texel_placement.hpp"
 #include "bake/probes/probe_placement.hpp"
 #include "world/compile/static_split.hpp"
@@ -139,6 +140,8 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     const world::LightGrid gridLayout = grid;
     const std::vector<ProbePlacement> placements =
         placeProbes(level, scene, ProbePlacementSettings{options.probeSpacing});
+    report.warnings.insert(report.warnings.end(), source.importNotes.begin(),
+                           source.importNotes.end());
     for (const ProbePlacement& p : placements)
         if (p.insideSolid)
             report.warnings.push_back(
@@ -154,6 +157,9 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     baked.shadowMask.assign(texelCount, 0);
     baked.shardIndex = options.shardIndex;
     baked.shardCount = options.shardCount;
+    // The source's own bake at the same texels (every shard holds all of it; it is cheap).
+    baked.importedTexels =
+        resampleImportedLightmap(device.handle(), level, samples, source.importedLightmap);
     start = std::chrono::steady_clock::now();
     {
         uint64_t work = 0;
@@ -238,6 +244,13 @@ std::vector<glm::vec3> probeAverageIrradiance(const BakeScene& scene, const Bake
 
 void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked) {
     dilateLightmaps(level, baked);
+    if (!baked.importedTexels.empty()) {
+        world::BakedLighting imported;
+        imported.texels = std::move(baked.importedTexels);
+        imported.shadowMask.assign(imported.texels.size(), 0);
+        dilateLightmaps(level, imported);
+        baked.importedTexels = std::move(imported.texels);
+    }
     baked.shardIndex = 0;
     baked.shardCount = 1;
 }
@@ -259,7 +272,9 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         if (byIndex[p.shardIndex])
             throw world::Error("merge: shard " + std::to_string(p.shardIndex) + " given twice");
         if (p.texels.size() != texels || p.shadowMask.size() != texels ||
-            p.grid.cells.size() != parts[0].grid.cells.size() || p.grid.dims != parts[0].grid.dims)
+            p.grid.cells.size() != parts[0].grid.cells.size() ||
+            p.grid.dims != parts[0].grid.dims ||
+            p.importedTexels.size() != parts[0].importedTexels.size())
             throw world::Error("merge: shard " + std::to_string(p.shardIndex) +
                                " does not match the level (texel or grid cell counts differ)");
         byIndex[p.shardIndex] = &p;

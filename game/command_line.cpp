@@ -28,6 +28,10 @@ std::string usage() {
         {"--quality Q",
          "draft, default or high: the bake's when LEVEL needs baking (default: draft for a "
          "Quake 3 map, else the baker's default)"},
+        {"--view onelight|q3map2",
+         "whose baked light to show: the engine's, or a Quake 3 map's own q3map2 lightmaps "
+         "(default: onelight)"},
+        {"--ev100 EV", "a fixed exposure, -10..30 (default: metered in the view)"},
         {"-h, --help", "this help"}};
     std::string text =
         "usage: onelight LEVEL(.gltf|.glb|.olpak|.bsp|PAK.pk3:maps/NAME.bsp|NAME) [OPTIONS]\n"
@@ -86,6 +90,21 @@ CommandLine parseCommandLine(int argc, char** argv) {
             if (out.quality != "draft" && out.quality != "default" && out.quality != "high")
                 throw world::Error("--quality '" + out.quality +
                                    "': expected draft, default or high");
+        } else if (a == "--view" && hasValue) {
+            out.view = argv[++i];
+            if (out.view != "onelight" && out.view != "q3map2")
+                throw world::Error("--view '" + out.view + "': expected onelight or q3map2");
+        } else if (a == "--ev100" && hasValue) {
+            const std::string v = argv[++i];
+            try {
+                size_t used = 0;
+                out.ev100 = std::stof(v, &used);
+                out.hasEv100 = used == v.size() && out.ev100 >= -10.0f && out.ev100 <= 30.0f;
+            } catch (const std::exception&) {
+                out.hasEv100 = false;
+            }
+            if (!out.hasEv100)
+                throw world::Error("--ev100 '" + v + "': expected a number in [-10, 30]");
         } else if (a == "--camera" && hasValue) {
             out.camera = argv[++i];
         } else if (a == "--capture" && hasValue) {

@@ -15,12 +15,16 @@ struct CommandLine {
     std::string camera;   // NAME or x,y,z,yaw,pitch; empty = the level's first or automatic
     std::string capture;  // out/NAME: writes NAME.png, NAME.exr, NAME.json
     uint32_t msaa = 2;
-    uint32_t frames = 0;      // window: quit after this many frames (0 = until Esc)
-    bool flashlight = false;  // the spot effect light at the camera
-    std::string replay;       // a replay script to run (game mode, fixed tick)
-    std::string captureDir;   // where a replay's captures go (default: captures/)
-    bool freeFly = false;     // window: a free-fly camera instead of the player
-    bool help = false;        // -h or --help: print usage() and exit 0
+    uint32_t frames = 0;            // window: quit after this many frames (0 = until Esc)
+    bool flashlight = false;        // the spot effect light at the camera
+    std::string replay;             // a replay script to run (game mode, fixed tick)
+    std::string captureDir;         // where a replay's captures go (default: captures/)
+    bool freeFly = false;           // window: a free-fly camera instead of the player
+    std::string view = "onelight";  // whose baked light is shown: onelight, or q3map2 (the
+                                    // Quake 3 map's own lightmaps, game/lighting_view.hpp)
+    bool hasEv100 = false;          // --ev100: a fixed exposure instead of the metered one
+    float ev100 = 0.0f;
+    bool help = false;  // -h or --help: print usage() and exit 0
 };
 
 /// Parses argv. Throws world::Error, one line ("onelight: " not included), on a bad argument.

@@ -19,11 +19,13 @@
 #include "command_line.hpp"
 #include "free_fly.hpp"
 #include "level_source.hpp"
+#include "lighting_view.hpp"
 #include "platform/window.hpp"
 #include "play_mode.hpp"
 #include "render/renderer.hpp"
 #include "render_target.hpp"
 #include "replay_mode.hpp"
+#include "session.hpp"
 #include "vk/context.hpp"
 #include "world/error.hpp"
 
@@ -150,6 +152,24 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
             glfwSetInputMode(target.window.window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
     }
     std::fflush(stdout);
+    // Exposure: --ev100, else the camera's or the level's own, else metered in the view as the
+    // game meters the player's (game/session.hpp meteredEv100).
+    game::Session meter;
+    game::startSession(meter, level);
+    meter.secondaryLux = std::max(info.ambientLux, 1.0f);
+    const bool metered = !cl.hasEv100 && !camera.hasExposure && !level.level.settings.hasExposure;
+    const auto expose = [&](render::Camera c) {
+        if (cl.hasEv100) {
+            c.hasExposure = true;
+            c.ev100 = cl.ev100;
+        } else if (metered) {
+            const float ev = game::meteredEv100(meter, c, NAN);
+            c.hasExposure = std::isfinite(ev);
+            c.ev100 = c.hasExposure ? ev : 0.0f;
+        }
+        return c;
+    };
+    camera = expose(camera);
     int code = 0;
     try {
         game::FreeFly fly = game::freeFlyFrom(camera);
@@ -161,7 +181,7 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
             last = now;
             if (!cl.headless && cl.frames == 0) {
                 game::updateFreeFly(fly, target.window.window, dt);
-                camera = game::cameraOf(fly, camera);
+                camera = expose(game::cameraOf(fly, camera));
             }
             const bool lastFrame = frames > 0 && frame + 1 >= frames;
             render::FrameInputs inputs;
@@ -199,8 +219,8 @@ int run(int argc, char** argv) {
         std::printf("%s", game::usage().c_str());
         return 0;
     }
-    const assets::LoadedLevel level =
-        assets::loadLevel(game::resolveLevelPackage(cl.level, cl.quality));
+    assets::LoadedLevel level = assets::loadLevel(game::resolveLevelPackage(cl.level, cl.quality));
+    game::applyLightingView(level, cl.view);
     if (!cl.replay.empty()) return game::runReplay(cl, level);
     if (!cl.headless && !cl.freeFly && cl.camera.empty()) return game::runPlay(cl, level);
     return runViewer(cl, level, resolveCamera(cl, level));

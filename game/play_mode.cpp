@@ -56,6 +56,8 @@ int runPlay(const CommandLine& cl, const assets::LoadedLevel& level) {
     openRenderTarget(target, cl, level, true);
     Session session;
     startSession(session, level);
+    session.fixedExposure = cl.hasEv100;
+    session.ev100 = cl.ev100;
     session.secondaryLux = std::max(render::rendererInfo(target.renderer).ambientLux, 1.0f);
     std::printf("onelight: playing %s, %ux%u, MSAA %ux\n", level.path.c_str(),
                 target.window.swapchain.extent.width, target.window.swapchain.extent.height,

@@ -89,6 +89,8 @@ void writeContactSheet(const std::string& path, const std::vector<Capture>& capt
 int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
     Session session;
     startSession(session, level);
+    session.fixedExposure = cl.hasEv100;
+    session.ev100 = cl.ev100;
     ReplayRunner runner =
         makeReplayRunner(replay::loadScript(cl.replay), session.lightNames, session.registry);
     const double tickSeconds = 1.0 / runner.script.tickRate;

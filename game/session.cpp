@@ -87,9 +87,8 @@ float primaryScore(const Session& s, uint32_t light, const glm::vec3& point) {
     return hit.hit ? 0.0f : e;
 }
 
-float meteredEv100(const Session& s, float fallback) {
+float meteredEv100(const Session& s, const render::Camera& camera, float fallback) {
     const world::CompiledLevel& level = s.level->level;
-    const render::Camera camera = playerCamera(s);
     const glm::vec3 eye = camera.position;
     double sumLog2 = 0.0;
     int hits = 0;
@@ -122,9 +121,11 @@ float meteredEv100(const Session& s, float fallback) {
 void stepSession(Session& s) {
     // The eye adapts to the metered exposure with a 0.4 s time constant (from the first tick
     // on, it starts adapted).
-    float target = meteredEv100(s, s.ev100);
-    float rate = 1.0f - std::exp(-float(s.tickSeconds) / 0.4f);
-    s.ev100 = s.tick == 0 ? target : s.ev100 + (target - s.ev100) * rate;
+    if (!s.fixedExposure) {
+        float target = meteredEv100(s, playerCamera(s), s.ev100);
+        float rate = 1.0f - std::exp(-float(s.tickSeconds) / 0.4f);
+        s.ev100 = s.tick == 0 ? target : s.ev100 + (target - s.ev100) * rate;
+    }
     ecs::Tick tick{s.tick++, s.tickSeconds};
     playerSystem(s.registry, tick, s.input, s.tuning, &s.bsp);
     moverSystem(s.registry, tick);

@@ -33,6 +33,7 @@ struct Session {
     std::vector<uint32_t> primaryCandidates;  // lights that may be a dynamic object's primary
     std::vector<std::string> lightNames;      // by light index
     float ev100 = 0.0f;                       // the player's adapted exposure
+    bool fixedExposure = false;               // ev100 is given (--ev100), not metered
     float secondaryLux = 30.0f;  // secondary illuminance the meter adds (the renderer's ambient)
 };
 
@@ -47,14 +48,15 @@ void stepSession(Session& session);
 // The player's eye as a camera, with the adapted exposure.
 [[nodiscard]] render::Camera playerCamera(const Session& session);
 
-// The exposure a reflected-light meter in the player's view asks for: 15 rays across the view
+// The exposure a reflected-light meter in `camera`'s view asks for: 15 rays across the view
 // find the surfaces it sees; each surface's luminance is the shadowed illuminance of every
 // primary on it (its own normal) plus the baked secondary light there (the light grid's ambient
 // cube along the normal; session.secondaryLux without a grid), on a middle-grey (18%)
 // Lambertian surface; EV100 = log2(L * S / K) of their geometric
 // mean, S = 100, K = 12.5 (ISO 2720; Lagarde and de Rousiers 2014, sec. 5.1). Keeps `fallback`
 // when the view sees no surface.
-[[nodiscard]] float meteredEv100(const Session& session, float fallback);
+[[nodiscard]] float meteredEv100(const Session& session, const render::Camera& camera,
+                                 float fallback);
 
 // The renderer's inputs for the current state; `transforms` holds what frame.dynamicTransforms
 // points to.

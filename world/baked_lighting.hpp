@@ -62,8 +62,10 @@ struct BakedLighting {
     std::vector<LightmapTexel> texels;  // every atlas in order, row-major
     std::vector<uint8_t> shadowMask;    // same order: own primary's visibility 0..255
     LightGrid grid;
-    std::vector<EnvironmentProbe> probes;     // section 35; a part holds its shard's range
-    uint32_t shardIndex = 0, shardCount = 1;  // shardCount > 1: an unmerged part
+    std::vector<EnvironmentProbe> probes;       // section 35; a part holds its shard's range
+    std::vector<LightmapTexel> importedTexels;  // section 36: the source's own bake (q3map2's)
+                                                // at the same texels; empty when it has none
+    uint32_t shardIndex = 0, shardCount = 1;    // shardCount > 1: an unmerged part
 };
 
 /// Offset of atlas `atlas`'s first texel in BakedLighting::texels.

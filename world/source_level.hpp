@@ -26,6 +26,23 @@ struct MeshInstance {
     uint32_t entity = kNoIndex;     // into SourceLevel::entities when dynamic
 };
 
+/// Light the source format baked itself (a Quake 3 map: q3map2's lightmaps and vertex light),
+/// kept so that the engine's bake can be compared with it (`onelight LEVEL --view q3map2`). Each
+/// triangle of the level's static geometry, with where its corners read the light.
+struct ImportedLightmap {
+    struct Triangle {
+        glm::vec3 corners[3];      // metres, world, as in the level's instances
+        glm::vec2 uv[3];           // in the page, [0, 1]^2
+        glm::vec3 vertexLight[3];  // the light at the corners, used when page is kNoIndex
+        uint32_t page = kNoIndex;  // into pages
+    };
+    std::string producer;        // who baked it ("q3map2"); empty: none
+    uint32_t pageSize = 0;       // texels per side of a page
+    std::vector<uint8_t> pages;  // RGB8, pageSize^2 per page, row-major
+    float luxPerValue = 1.0f;    // irradiance of one unit of a page or vertex light value
+    std::vector<Triangle> triangles;
+};
+
 struct SourceLevel {
     std::string sourcePath;  // the .gltf, for messages
     std::vector<Material> materials;
@@ -44,6 +61,9 @@ struct SourceLevel {
     uint32_t skyImage = kNoIndex;  // into images: an equirectangular Radiance .hdr sky
     bool hasGridBounds = false;
     glm::vec3 gridMin{0.0f}, gridMax{0.0f};
+    ImportedLightmap importedLightmap;     // the source's own bake, if it carries one
+    std::vector<std::string> importNotes;  // what the import approximated or ignored, one line
+                                           // each; the bake reports them as warnings
 };
 
 }  // namespace onelight::world

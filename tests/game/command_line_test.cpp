@@ -17,7 +17,8 @@ TEST(GameCommandLine, HelpExitsZeroAndListsEveryOptionWithItsDefault) {
         EXPECT_EQ(r.output.rfind("usage: onelight LEVEL", 0), 0u) << r.output;
         for (const char* flag :
              {"--headless", "--size WxH", "--camera", "--capture out/NAME", "--msaa N",
-              "--frames N", "--flashlight", "--replay SCRIPT", "--capture-dir DIR", "--free-fly"}) {
+              "--frames N", "--flashlight", "--replay SCRIPT", "--capture-dir DIR", "--free-fly",
+              "--view onelight|q3map2", "--ev100 EV"}) {
             const size_t at = r.output.find(std::string("\n  ") + flag);
             ASSERT_NE(at, std::string::npos) << flag << " is not listed\n" << r.output;
             const size_t next = r.output.find("\n  -", at + 1);
@@ -42,4 +43,17 @@ TEST(GameCommandLine, AQualityOtherThanTheBakersIsNamed) {
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("--quality 'best': expected draft, default or high"), std::string::npos)
         << r.output;
+}
+
+TEST(GameCommandLine, AViewOrExposureOutOfRangeIsNamed) {
+    for (const auto& [arguments, expected] :
+         {std::pair<std::string, std::string>{"x.olpak --view radiant",
+                                              "--view 'radiant': expected onelight or q3map2"},
+          {"x.olpak --ev100 99", "--ev100 '99': expected a number in [-10, 30]"},
+          {"x.olpak --ev100 nan", "--ev100 'nan': expected a number in [-10, 30]"}}) {
+        const onelight::test::CommandResult r =
+            onelight::test::runCommand(kOnelight + " " + arguments);
+        EXPECT_EQ(r.exitCode, 1) << r.output;
+        EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+    }
 }

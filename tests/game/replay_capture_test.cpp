@@ -147,3 +147,52 @@ TEST(DemoReplays, BadScriptsGiveOneClearLineAndExitOne) {
               std::string::npos)
         << missing.output;
 }
+
+// A Quake 3 map, imported, compiled and baked at draft quality by onelight-bake, then played: the
+// replay walks the map on its own collision (its expect lines) and its captures match goldens.
+TEST(Quake3Replay, Q3dm6ishBakesAndPlays) {
+    const std::string game = "/usr/share/games/openarena/baseoa/";
+    for (const char* pk3 : {"pak0.pk3", "pak1-maps.pk3", "pak4-textures.pk3"})
+        if (!fs::exists(game + pk3))
+            GTEST_SKIP() << game << pk3 << " is missing: install openarena-data, "
+                         << "openarena-081-maps and openarena-081-textures";
+    const std::string dir = outputDir("q3dm6ish");
+    const std::string package = dir + "/q3dm6ish.olpak";
+    CommandResult bake = onelight::test::runCommand(
+        std::string(ONELIGHT_BAKE_EXE) + " q3dm6ish --quality draft --quiet -o " + package);
+    ASSERT_EQ(bake.exitCode, 0) << bake.output;
+    CommandResult play =
+        runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
+                    "/q3dm6ish.replay --headless --size 320x180 --capture-dir " + dir);
+    ASSERT_EQ(play.exitCode, 0) << play.output;
+    for (const std::string c : {"start", "walked", "back"}) {
+        const onelight::world::DecodedImage png =
+            onelight::capture::readPng(dir + "/" + c + ".png");
+        onelight::test::GoldenResult g = onelight::test::compareWithGolden(
+            png.rgba, png.width, png.height,
+            std::string(ONELIGHT_GAME_GOLDENS) + "/q3dm6ish_" + c + ".png",
+            dir + "/" + c + "_diff.png");
+        EXPECT_TRUE(g.ok) << g.message;
+    }
+    // The map's own q3map2 lightmaps from the first spawn, at a fixed exposure (--view q3map2).
+    CommandResult view = runOnelight(package +
+                                     " --headless --camera spawn0 --size 320x180 --ev100 4 "
+                                     "--view q3map2 --capture " +
+                                     dir + "/q3map2_spawn0");
+    ASSERT_EQ(view.exitCode, 0) << view.output;
+    const onelight::world::DecodedImage png =
+        onelight::capture::readPng(dir + "/q3map2_spawn0.png");
+    onelight::test::GoldenResult g = onelight::test::compareWithGolden(
+        png.rgba, png.width, png.height,
+        std::string(ONELIGHT_GAME_GOLDENS) + "/q3dm6ish_q3map2_spawn0.png",
+        dir + "/q3map2_spawn0_diff.png");
+    EXPECT_TRUE(g.ok) << g.message;
+}
+
+// A package that does not come from a Quake 3 map has no q3map2 lightmaps to show.
+TEST(Quake3Replay, TheQ3map2ViewOfAnotherLevelIsRefused) {
+    CommandResult r =
+        runOnelight(std::string(ONELIGHT_DEMO_PACKAGE) + " --headless --size 32x18 --view q3map2");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("no q3map2 lightmaps"), std::string::npos) << r.output;
+}

@@ -19,6 +19,7 @@
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/shader_script.hpp"
+#include "world/light_model.hpp"
 
 namespace onelight::world::q3 {
 namespace {
@@ -40,6 +41,7 @@ struct BspBuilder {
     std::vector<BspVertex> vertices;
     std::vector<int32_t> indices;
     std::vector<BspSurface> surfaces;
+    std::vector<uint8_t> lightmaps;  // whole pages, or empty
 
     BspBuilder() {
         BspShader s{};
@@ -78,6 +80,7 @@ struct BspBuilder {
         lump(kLumpDrawVerts, vertices.data(), vertices.size() * sizeof(BspVertex));
         lump(kLumpDrawIndexes, indices.data(), indices.size() * sizeof(int32_t));
         lump(kLumpSurfaces, surfaces.data(), surfaces.size() * sizeof(BspSurface));
+        lump(kLumpLightmaps, lightmaps.data(), lightmaps.size());
         std::vector<uint8_t> out(sizeof h + body.size());
         std::memcpy(out.data(), &h, sizeof h);
         if (!body.empty()) std::memcpy(out.data() + sizeof h, body.data(), body.size());
@@ -173,6 +176,46 @@ TEST(Quake3Bsp, BadFilesGiveOneLineNamingThePlace) {
         std::memcpy(odd.data(), &h, sizeof h);
         expectError(odd, "expected a multiple of its 44-byte records");
     }
+    {
+        BspBuilder b;
+        b.lightmaps.assign(kLightmapPageBytes, 0);
+        b.surfaces[0].lightmap = 2;
+        expectError(b.bytes(), "surface 0: lightmap page 2 of 1");
+    }
+    {
+        BspBuilder b;
+        b.lightmaps.assign(100, 0);
+        expectError(b.bytes(), "lump 14 (lightmaps) holds 100 bytes; expected whole pages");
+    }
+}
+
+// q3map2's own light comes along for --view q3map2: each drawn triangle with its corners in the
+// level, its lightmap coordinates and page, or its vertex light where it has no page.
+TEST(Quake3Bsp, TheMapsOwnLightmapsAreKept) {
+    BspBuilder b;
+    b.lightmaps.assign(2 * kLightmapPageBytes, 7);
+    b.surfaces[0].lightmap = 1;
+    for (size_t v = 0; v < b.vertices.size(); ++v) {
+        b.vertices[v].lightmap[0] = 0.25f * float(v);
+        b.vertices[v].lightmap[1] = 0.5f;
+        b.vertices[v].color[0] = uint8_t(10 * v);
+    }
+    b.surfaces.push_back(b.surfaces[0]);
+    b.surfaces[1].lightmap = -3;  // vertex lit
+    Quake3Options options;
+    options.gameFolders = {freshFolder("no_game_lightmaps").string()};
+    const SourceLevel level = importLevel(b.write("lightmaps", "lightmaps"), options);
+    const ImportedLightmap& l = level.importedLightmap;
+    EXPECT_EQ(l.producer, "q3map2");
+    EXPECT_EQ(l.pageSize, kLightmapPageSize);
+    EXPECT_EQ(l.pages.size(), 2 * kLightmapPageBytes);
+    ASSERT_EQ(l.triangles.size(), 4u);
+    EXPECT_EQ(l.triangles[0].page, 1u);
+    EXPECT_EQ(l.triangles[2].page, kNoIndex);
+    // The first triangle is vertices 0 1 2 of the square: (0,0) (2,0) (2,-2) m in x and z.
+    EXPECT_EQ(l.triangles[0].corners[1], glm::vec3(2.0f, 0.0f, 0.0f));
+    EXPECT_EQ(l.triangles[0].uv[1], glm::vec2(0.25f, 0.5f));
+    EXPECT_EQ(l.triangles[2].vertexLight[2], glm::vec3(20.0f, 0.0f, 0.0f));
 }
 
 TEST(Quake3Bsp, APk3ThatIsNotAZipIsNamed) {
@@ -229,6 +272,39 @@ TEST(Quake3Lights, PointAndSpotFollowQ3map2) {
     EXPECT_NEAR(std::tan(spot.outerCone), 80.0 / 256.0, 1e-6);
     EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
     EXPECT_EQ(spot.color, glm::vec3(1.0f, 0.5f, 0.0f));
+}
+
+// A linear light (spawnflags 1) is an inverse-square light with q3map2's reach as its range,
+// equal to q3map2's L 7500/8000 - d at half the reach (q3_import.hpp, "Linear lights"), and dark
+// at the reach; the import says it approximated it. Worldspawn's ambient is reported as ignored.
+TEST(Quake3Lights, LinearFalloffIsApproximatedAndAmbientIsReported) {
+    BspBuilder b;
+    b.entities =
+        "{\n\"classname\" \"worldspawn\"\n\"ambient\" \"10\"\n}\n"
+        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 300\"\n\"light\" \"300\"\n"
+        "\"spawnflags\" \"1\"\n\"fade\" \"0.5\"\n}\n";
+    Quake3Options options;
+    options.gameFolders = {freshFolder("no_game_linear").string()};
+    const SourceLevel level = importLevel(b.write("linear", "linear"), options);
+    ASSERT_EQ(level.lights.size(), 1u);
+    const Light& l = level.lights[0];
+    const double reach = 300.0 * 7500.0 / 8000.0 / 0.5;  // units: 562.5, 17.6 m
+    EXPECT_NEAR(l.range, reach / 32.0, 1e-4);
+    const glm::vec3 below = l.position - glm::vec3(0.0f, 1.0f, 0.0f);
+    const auto luxAt = [&](double units) {
+        return double(evaluateLight(l, l.position + (below - l.position) * float(units / 32.0))
+                          .illuminance.x);
+    };
+    // q3map2 at half the reach: 300 x 7500/8000 - 281.25 x 0.5 = 140.625 lightmap units (lux).
+    EXPECT_NEAR(luxAt(reach / 2.0), 140.625, 140.625 * 1e-4);
+    EXPECT_EQ(luxAt(reach), 0.0);
+    EXPECT_GT(luxAt(reach / 4.0), 140.625);
+    ASSERT_EQ(level.importNotes.size(), 2u);
+    EXPECT_NE(level.importNotes[0].find("1 light(s) with q3map2's linear falloff approximated"),
+              std::string::npos)
+        << level.importNotes[0];
+    EXPECT_NE(level.importNotes[1].find("worldspawn 'ambient' 10 ignored"), std::string::npos)
+        << level.importNotes[1];
 }
 
 // Primaries are the lights that are the brightest somewhere: over the 2 x 2 m square, a light

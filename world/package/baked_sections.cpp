@@ -69,6 +69,19 @@ std::string where(const std::string& name, const char* section, uint64_t record)
     return name + ": section " + section + ", record " + std::to_string(record) + ": ";
 }
 
+/// The texels of a section whose sizes were checked, each record checked.
+std::vector<world::LightmapTexel> decodeTexels(const RawSection& s, const std::string& name,
+                                               const char* section) {
+    std::vector<world::LightmapTexel> texels(s.count);
+    for (uint32_t i = 0; i < s.count; ++i) {
+        const auto d =
+            readRecord<DiskLightmapTexel>(s.bytes, size_t(i) * sizeof(DiskLightmapTexel));
+        check(d, where(name, section, i));
+        texels[i] = fromDisk(d);
+    }
+    return texels;
+}
+
 }  // namespace
 
 std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
@@ -92,18 +105,28 @@ std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
     for (const world::LightGridCell& cell : baked.grid.cells) appendBytes(grid.bytes, toDisk(cell));
     grid.count = static_cast<uint32_t>(grid.bytes.size());
     if (!baked.probes.empty()) out.push_back(encodeProbeSection(baked.probes));
+    if (!baked.importedTexels.empty()) {
+        RawSection imported;
+        imported.id = kSectionImportedLightmap;
+        imported.elementSize = sizeof(DiskLightmapTexel);
+        imported.count = static_cast<uint32_t>(baked.importedTexels.size());
+        for (const world::LightmapTexel& t : baked.importedTexels)
+            appendBytes(imported.bytes, toDisk(t));
+        out.push_back(std::move(imported));
+    }
     return out;
 }
 
 BakedContents decodeBakedSections(std::span<const RawSection> sections,
                                   const world::CompiledLevel& level, const std::string& name) {
     BakedContents result;
-    const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr;
+    const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr, *imported = nullptr;
     for (const RawSection& s : sections) {
-        const RawSection** slot = s.id == kSectionLightmapTexels ? &texels
-                                  : s.id == kSectionShadowMasks  ? &masks
-                                  : s.id == kSectionLightGrid    ? &grid
-                                                                 : nullptr;
+        const RawSection** slot = s.id == kSectionLightmapTexels     ? &texels
+                                  : s.id == kSectionShadowMasks      ? &masks
+                                  : s.id == kSectionLightGrid        ? &grid
+                                  : s.id == kSectionImportedLightmap ? &imported
+                                                                     : nullptr;
         if (!slot) continue;
         if (*slot) {
             throw world::Error(name + ": section " + std::to_string(s.id) + " appears twice");
@@ -112,9 +135,10 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
     }
     if (!texels && !masks && !grid) {
         for (const RawSection& s : sections)
-            if (s.id == kSectionProbes)
-                throw world::Error(name +
-                                   ": section probes present without baked lighting; expected "
+            if (s.id == kSectionProbes || s.id == kSectionImportedLightmap)
+                throw world::Error(name + ": section " +
+                                   (s.id == kSectionProbes ? "probes" : "imported_lightmap") +
+                                   " present without baked lighting; expected "
                                    "sections lightmap_texels, shadow_masks and light_grid too");
         return result;  // no baked lighting
     }
@@ -140,12 +164,17 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
                            std::to_string(expectedTexels) + " (the atlases' texels)");
     }
     world::BakedLighting& baked = result.baked;
-    baked.texels.resize(texels->count);
-    for (uint32_t i = 0; i < texels->count; ++i) {
-        const auto d =
-            readRecord<DiskLightmapTexel>(texels->bytes, size_t(i) * sizeof(DiskLightmapTexel));
-        check(d, where(name, "lightmap_texels", i));
-        baked.texels[i] = fromDisk(d);
+    baked.texels = decodeTexels(*texels, name, "lightmap_texels");
+    if (imported) {
+        if (imported->elementSize != sizeof(DiskLightmapTexel) ||
+            imported->bytes.size() != uint64_t(imported->count) * sizeof(DiskLightmapTexel) ||
+            imported->count != expectedTexels)
+            throw world::Error(name + ": section imported_lightmap: element size " +
+                               std::to_string(imported->elementSize) + ", count " +
+                               std::to_string(imported->count) + "; expected element size " +
+                               std::to_string(sizeof(DiskLightmapTexel)) + " and count " +
+                               std::to_string(expectedTexels) + " (the atlases' texels)");
+        baked.importedTexels = decodeTexels(*imported, name, "imported_lightmap");
     }
 
     // Shadow masks.

@@ -57,11 +57,12 @@ enum SectionId : uint32_t {
     kSectionFeatures = 21,         // DiskFeatures[1]
     kCoreSectionCount = 22,        // ids below this are required, exactly once each
     // Baked lighting, added by the baker; unknown to `compile`, kept raw by the reader.
-    kSectionLightmapTexels = 32,  // directional secondary irradiance per atlas
-    kSectionShadowMasks = 33,     // baked primary shadow masks per atlas
-    kSectionLightGrid = 34,       // dynamic objects' secondary lighting and dominant primary
-    kSectionProbes = 35,          // prefiltered, normalised environment probes
-    kSectionIdLimit = 48,         // ids at or above this are invalid
+    kSectionLightmapTexels = 32,    // directional secondary irradiance per atlas
+    kSectionShadowMasks = 33,       // baked primary shadow masks per atlas
+    kSectionLightGrid = 34,         // dynamic objects' secondary lighting and dominant primary
+    kSectionProbes = 35,            // prefiltered, normalised environment probes
+    kSectionImportedLightmap = 36,  // the source format's own bake at the same texels
+    kSectionIdLimit = 48,           // ids at or above this are invalid
 };
 
 struct FileHeader {
@@ -299,6 +300,11 @@ static_assert(sizeof(DiskFeatures) == 60);
 //       E(n') = irradiance * max(0, 0.5 + dot(n', direction)) / normalWeight
 //   which returns `irradiance` exactly at the surface normal (a rebalanced half-Lambert
 //   directional lightmap).
+// kSectionImportedLightmap (optional, only with 32..34): DiskLightmapTexel[], the same texel
+//   order and count as kSectionLightmapTexels: the light the source format baked itself (a Quake
+//   3 map's q3map2 lightmaps, bake/lightmap/imported_lightmap.hpp), all of it (no primary is
+//   left out), non-directional (direction 0, normalWeight 0.5). `onelight --view q3map2` shows
+//   it in place of the engine's bake.
 // kSectionShadowMasks: uint8_t[], same texel order and count: the baked visibility of the
 //   surface's own primary, 0 (umbra) .. 255 (fully lit), softened by the light's size.
 // kSectionLightGrid: uint8_t[]: one DiskLightGridHeader, then DiskLightGridCell[cellCount]

@@ -55,6 +55,12 @@ void checkSurface(const BspFile& bsp, size_t s, const std::string& where) {
         throw Error(place + ": shader " + std::to_string(f.shader) + " of " +
                     std::to_string(bsp.shaders.size()) + "; expected an index into the shaders");
     if (f.type == kSurfaceFlare) return;  // drawn as a billboard; never read
+    const size_t pages = bsp.lightmaps.size() / kLightmapPageBytes;
+    // No lightmap lump: none, or external lightmap images (q3map2 -lightmapsize); the importer
+    // then reads the vertex light.
+    if (pages > 0 && f.lightmap >= 0 && size_t(f.lightmap) >= pages)
+        throw Error(place + ": lightmap page " + std::to_string(f.lightmap) + " of " +
+                    std::to_string(pages) + "; expected an index into the lightmap lump or < 0");
     checkRange(place, "vertices", f.firstVertex, f.vertexCount, bsp.vertices.size(), "vertices");
     if (f.type == kSurfacePatch) {
         if (f.patchWidth < 3 || f.patchHeight < 3 || f.patchWidth % 2 == 0 ||
@@ -103,10 +109,15 @@ BspFile parseBsp(std::span<const uint8_t> bytes, const std::string& where) {
     bsp.vertices = readLump<BspVertex>(bytes, header, kLumpDrawVerts, where);
     bsp.indices = readLump<int32_t>(bytes, header, kLumpDrawIndexes, where);
     bsp.surfaces = readLump<BspSurface>(bytes, header, kLumpSurfaces, where);
+    bsp.lightmaps = readLump<uint8_t>(bytes, header, kLumpLightmaps, where);
+    if (bsp.lightmaps.size() % kLightmapPageBytes != 0)
+        throw Error(where + ": lump 14 (lightmaps) holds " + std::to_string(bsp.lightmaps.size()) +
+                    " bytes; expected whole pages of " + std::to_string(kLightmapPageBytes) +
+                    " bytes");
     for (size_t v = 0; v < bsp.vertices.size(); ++v) {
         const BspVertex& x = bsp.vertices[v];
         for (float c : {x.position[0], x.position[1], x.position[2], x.texcoord[0], x.texcoord[1],
-                        x.normal[0], x.normal[1], x.normal[2]})
+                        x.lightmap[0], x.lightmap[1], x.normal[0], x.normal[1], x.normal[2]})
             if (!std::isfinite(c))
                 throw Error(where + ": vertex " + std::to_string(v) +
                             " is NaN or Inf; expected finite numbers");

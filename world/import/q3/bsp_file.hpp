@@ -19,6 +19,7 @@ struct BspFile {
     std::vector<BspVertex> vertices;
     std::vector<int32_t> indices;  // relative to their surface's firstVertex
     std::vector<BspSurface> surfaces;
+    std::vector<uint8_t> lightmaps;  // whole pages (bsp_format.hpp kLightmapPageBytes each)
 };
 
 /// Throws world::Error naming `where` (the file), the lump or surface, and what was expected.

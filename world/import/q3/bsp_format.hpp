@@ -61,6 +61,11 @@ inline constexpr int32_t kSurfSkip = 0x200;   // SURF_SKIP
 /// Content flags the importer reads.
 inline constexpr int32_t kContentsFog = 0x40;  // CONTENTS_FOG: a fog volume's faces
 
+/// The lightmap lump: pages of kLightmapPageSize^2 RGB8 texels, row-major (q3map2's light as
+/// bytes: clamped to 255 keeping the hue).
+inline constexpr uint32_t kLightmapPageSize = 128;
+inline constexpr uint32_t kLightmapPageBytes = kLightmapPageSize * kLightmapPageSize * 3;
+
 /// A vertex (qfiles.h drawVert_t), in map units, Z up.
 struct BspVertex {
     float position[3];

@@ -19,7 +19,9 @@ PatchPoint bezierPoint(const PatchPoint& p0, const PatchPoint& p1, const PatchPo
                        uint32_t level) {
     return {bezier(p0.position, p1.position, p2.position, k, level),
             bezier(p0.normal, p1.normal, p2.normal, k, level),
-            bezier(p0.uv, p1.uv, p2.uv, k, level)};
+            bezier(p0.uv, p1.uv, p2.uv, k, level),
+            bezier(p0.lightmapUv, p1.lightmapUv, p2.lightmapUv, k, level),
+            bezier(p0.vertexLight, p1.vertexLight, p2.vertexLight, k, level)};
 }
 
 }  // namespace

@@ -15,6 +15,8 @@ struct PatchPoint {
     glm::vec3 position{0.0f};
     glm::vec3 normal{0.0f, 0.0f, 1.0f};
     glm::vec2 uv{0.0f};
+    glm::vec2 lightmapUv{0.0f};   // q3map2's lightmap coordinates
+    glm::vec3 vertexLight{0.0f};  // q3map2's vertex light, 0..255
 };
 
 struct PatchMesh {

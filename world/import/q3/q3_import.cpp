@@ -217,7 +217,24 @@ Vertex levelVertex(const PatchPoint& p) {
 PatchPoint patchPoint(const BspVertex& v) {
     return {glm::vec3(v.position[0], v.position[1], v.position[2]),
             glm::vec3(v.normal[0], v.normal[1], v.normal[2]),
-            glm::vec2(v.texcoord[0], v.texcoord[1])};
+            glm::vec2(v.texcoord[0], v.texcoord[1]), glm::vec2(v.lightmap[0], v.lightmap[1]),
+            glm::vec3(v.color[0], v.color[1], v.color[2])};
+}
+
+// Keeps where q3map2's light lies on a surface's triangles (SourceLevel::importedLightmap).
+void appendImportedLight(ImportedLightmap& imported, const std::vector<PatchPoint>& points,
+                         const std::vector<uint32_t>& triangles, int32_t page) {
+    for (size_t t = 0; t + 2 < triangles.size(); t += 3) {
+        ImportedLightmap::Triangle triangle;
+        for (int k = 0; k < 3; ++k) {
+            const PatchPoint& p = points[triangles[t + size_t(k)]];
+            triangle.corners[k] = levelPoint(p.position);
+            triangle.uv[k] = p.lightmapUv;
+            triangle.vertexLight[k] = p.vertexLight;
+        }
+        triangle.page = page >= 0 ? uint32_t(page) : kNoIndex;
+        imported.triangles.push_back(triangle);
+    }
 }
 
 // Appends a surface's triangles to `mesh`, wound counter-clockwise about the vertex normals
@@ -279,6 +296,7 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
     for (const MapEntity& e : entities)
         if (e.keys.count("targetname"))
             targets[e.get("targetname")] = vectorKey(e, "origin", glm::vec3(0.0f), where);
+    uint32_t linear = 0;
     for (const MapEntity& e : entities) {
         if (e.get("classname") != "light") continue;
         Light l;
@@ -305,9 +323,38 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
                 l.innerCone = 0.8f * l.outerCone;
             }
         }
+        const int flags = int(numberKey(e, "spawnflags", 0.0f, where));
+        if (flags & 1) {
+            // Linear falloff (q3_import.hpp, "Linear lights"), matched at half its reach.
+            const double fade = std::max(1e-3, double(numberKey(e, "fade", 1.0f, where)));
+            const double reach = kQuake3LinearScale * double(std::max(0.0f, value)) / fade;
+            const double half = 0.5 * reach * kQuake3MetresPerUnit;
+            const double window = (1.0 - 1.0 / 16.0) * (1.0 - 1.0 / 16.0);
+            const double atHalf = 0.5 * kQuake3LinearScale * double(std::max(0.0f, value));  // lux
+            l.intensity = float(atHalf * half * half / window);
+            l.range = float(reach * kQuake3MetresPerUnit);
+            ++linear;
+        }
         l.role = LightRole::kBaked;
         level.lights.push_back(l);
     }
+    if (linear > 0)
+        level.importNotes.push_back(
+            where + ": " + std::to_string(linear) +
+            " light(s) with q3map2's linear falloff approximated by inverse-square lights with a "
+            "range, equal to q3map2 at half their reach");
+}
+
+// Worldspawn's constant light (q3_import.hpp): reported, not modelled.
+void noteIgnoredAmbient(SourceLevel& level, const std::vector<MapEntity>& entities,
+                        const std::string& where) {
+    if (entities.empty()) return;
+    for (const char* key : {"ambient", "_ambient", "_minlight"})
+        if (entities[0].keys.count(key) && numberKey(entities[0], key, 0.0f, where) != 0.0f)
+            level.importNotes.push_back(where + ": worldspawn '" + key + "' " +
+                                        entities[0].get(key) +
+                                        " ignored: a constant added to every luxel is light from "
+                                        "nowhere; the bake's bounces light what it stood in for");
 }
 
 // The primaries (q3_import.hpp, "Which lights are primaries"): each light's share of the
@@ -411,30 +458,36 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         if (!drawn(shader, script)) continue;
         const uint32_t material = materials.materialOf(shader, f.shader, script);
         MeshInstance& mesh = meshes[material];
-        std::vector<Vertex> vertices;
+        std::vector<PatchPoint> points;
         std::vector<uint32_t> triangles;
         if (f.type == kSurfacePatch) {
             std::vector<PatchPoint> controls;
             for (int32_t v = 0; v < f.vertexCount; ++v)
                 controls.push_back(patchPoint(bsp.vertices[size_t(f.firstVertex + v)]));
-            const PatchMesh patch = tessellatePatch(controls, uint32_t(f.patchWidth),
-                                                    uint32_t(f.patchHeight), options.patchLevel);
-            for (const PatchPoint& p : patch.vertices) vertices.push_back(levelVertex(p));
-            triangles = patch.triangles;
+            PatchMesh patch = tessellatePatch(controls, uint32_t(f.patchWidth),
+                                              uint32_t(f.patchHeight), options.patchLevel);
+            points = std::move(patch.vertices);
+            triangles = std::move(patch.triangles);
         } else {
             for (int32_t v = 0; v < f.vertexCount; ++v)
-                vertices.push_back(
-                    levelVertex(patchPoint(bsp.vertices[size_t(f.firstVertex + v)])));
+                points.push_back(patchPoint(bsp.vertices[size_t(f.firstVertex + v)]));
             for (int32_t i = 0; i < f.indexCount; ++i)
                 triangles.push_back(uint32_t(bsp.indices[size_t(f.firstIndex + i)]));
         }
+        std::vector<Vertex> vertices;
+        for (const PatchPoint& p : points) vertices.push_back(levelVertex(p));
         appendOriented(mesh, vertices, triangles);
+        appendImportedLight(level.importedLightmap, points, triangles, f.lightmap);
     }
     for (auto& [material, mesh] : meshes) {
         mesh.material = material;
         mesh.nodeName = mesh.meshName = level.materials[material].name;
         level.instances.push_back(std::move(mesh));
     }
+    level.importedLightmap.producer = "q3map2";
+    level.importedLightmap.pageSize = kLightmapPageSize;
+    level.importedLightmap.pages = bsp.lightmaps;
+    level.importedLightmap.luxPerValue = 1.0f;  // one lightmap unit is one lux (q3_import.hpp)
     addSunAndSky(level, bsp, scripts);
     const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
     // q3map2's lightmap density: one luxel per 16 units, times worldspawn's _lightmapscale.
@@ -445,6 +498,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     level.texelsPerMetre = float(1.0 / (double(luxelUnits) * kQuake3MetresPerUnit));
     addSpawns(level, entities, map.where);
     addLights(level, entities, map.where);
+    noteIgnoredAmbient(level, entities, map.where);
     chooseLightRoles(level, options.primaryLights);
     return level;
 }

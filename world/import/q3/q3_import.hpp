@@ -23,6 +23,12 @@ namespace onelight::world {
    "light" L with L 7500 c / d^2 lightmap units (of 255 at full white). One unit is taken as
    1 lux, so the light's intensity is L 7500 / 32^2 = 7.32 L cd (the default L = 300 gives
    2197 cd: 137 lux at 4 m).
+   Linear lights (spawnflags bit 1): q3map2 gives L 7500 / 8000 c - d fade lightmap units,
+   reaching zero at R = 0.9375 L / fade units. Approximated (and reported) as an inverse-square
+   light with range R (the KHR_lights_punctual window) matched to q3map2 at R / 2:
+   I = 0.46875 L x (R / 64 m)^2 / (1 - 1/16)^2 cd (q3map2 gives 0.46875 L there, for any fade).
+   Worldspawn ambient, _ambient and _minlight (constants q3map2 adds to every luxel, light from
+   nowhere) are ignored and reported: the bake's bounces light what they stood in for.
    Which lights are primaries (the lights the runtime draws with shadow maps): a light is a
    candidate when it is the brightest on at least kQuake3PrimaryAreaShare of the map's surface
    area (each triangle's centroid, cosine-weighted illuminance, no shadows: an estimate, the
@@ -43,6 +49,7 @@ inline constexpr double kQuake3MetresPerUnit = 1.0 / 32.0;
 inline constexpr double kQuake3CandelaPerLight = 7500.0 / (32.0 * 32.0);
 inline constexpr double kQuake3NitsPerSurfaceLight = 0.25;
 inline constexpr double kQuake3PrimaryAreaShare = 0.02;
+inline constexpr double kQuake3LinearScale = 7500.0 / 8000.0;  // q3map2's pointScale x linearScale
 
 struct Quake3Options {
     uint32_t patchLevel = 4;     // segments per patch piece and direction, 1 .. 64

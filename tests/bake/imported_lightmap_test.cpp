@@ -1,0 +1,146 @@
+// A source format's own bake (world::ImportedLightmap, a Quake 3 map's q3map2 lightmaps) read at
+// the engine's lightmap texels: every sampled texel holds the page's bilinear value (or the
+// corners' vertex light) where the texel lies, in closed form; shards merge to the whole bake's
+// bytes; and package section 36 round-trips and is refused when wrong.
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "bake/lightmap/texel_placement.hpp"
+#include "bake_scenes.hpp"
+#include "tests/support/error_message.hpp"
+#include "world/package/baked_sections.hpp"
+#include "world/package/format.hpp"
+
+namespace onelight::bake {
+namespace {
+
+constexpr uint32_t kPage = 4;  // texels per side
+
+// Page texel (i, j): a plane in i and j, so that bilinear reads are exact.
+glm::vec3 pageValue(float i, float j) {
+    return {10.0f * i + 3.0f * j + 5.0f, 2.0f * i, 40.0f};
+}
+
+// A 4 x 4 m floor (y = 0) whose q3map2 light is the page above (uv = (x, z) / 4), and a 4 x 2 m
+// wall (z = -2) without a page, lit by vertex light rising with height: 0 at the floor, 100 lux
+// at the top.
+world::SourceLevel importedLevel() {
+    world::SourceLevel level;
+    const uint32_t m = test::addLambertMaterial(level, 0.5f);
+    test::addQuad(level, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2}, m, "floor");
+    test::addQuad(level, {-2, 0, -2}, {2, 0, -2}, {2, 2, -2}, {-2, 2, -2}, m, "wall");
+    level.lights.push_back(test::pointLight({0, 1.5f, 0}, 100.0f, world::LightRole::kBaked));
+    level.texelsPerMetre = 4.0f;
+    world::ImportedLightmap& imported = level.importedLightmap;
+    imported.producer = "q3map2";
+    imported.pageSize = kPage;
+    for (uint32_t j = 0; j < kPage; ++j)
+        for (uint32_t i = 0; i < kPage; ++i) {
+            const glm::vec3 v = pageValue(float(i), float(j));
+            imported.pages.insert(imported.pages.end(), {uint8_t(v.x), uint8_t(v.y), uint8_t(v.z)});
+        }
+    const auto floorUv = [](glm::vec3 p) { return glm::vec2(p.x + 2.0f, p.z + 2.0f) / 4.0f; };
+    const glm::vec3 f[4] = {{-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2}};
+    const glm::vec3 w[4] = {{-2, 0, -2}, {2, 0, -2}, {2, 2, -2}, {-2, 2, -2}};
+    for (const auto& corners : {std::array<int, 3>{0, 1, 2}, {0, 2, 3}}) {
+        world::ImportedLightmap::Triangle floor, wall;
+        for (int k = 0; k < 3; ++k) {
+            floor.corners[k] = f[corners[size_t(k)]];
+            floor.uv[k] = floorUv(floor.corners[k]);
+            wall.corners[k] = w[corners[size_t(k)]];
+            wall.vertexLight[k] = glm::vec3(50.0f * wall.corners[k].y);
+        }
+        floor.page = 0;
+        imported.triangles.push_back(floor);
+        imported.triangles.push_back(wall);
+    }
+    return level;
+}
+
+// What a texel at `p` must read: the page bilinearly (centres at (i + 1/2) / size, clamped at
+// the edge) on the floor, the vertex light interpolated on the wall.
+glm::vec3 expectedAt(glm::vec3 p) {
+    if (p.z < -1.999f) return glm::vec3(50.0f * p.y);
+    const float s = float(kPage);
+    const float i = std::clamp((p.x + 2.0f) / 4.0f * s - 0.5f, 0.0f, s - 1.0f);
+    const float j = std::clamp((p.z + 2.0f) / 4.0f * s - 0.5f, 0.0f, s - 1.0f);
+    return pageValue(i, j);
+}
+
+TEST(ImportedLightmap, EveryTexelReadsTheSourcesLightWhereItLies) {
+    const world::SourceLevel source = importedLevel();
+    const BakeResult r = bakeLevel(source, test::fastBakeOptions());
+    ASSERT_EQ(r.baked.importedTexels.size(), r.baked.texels.size());
+    size_t checked = 0, floor = 0, wall = 0;
+    for (const TexelSample& s : placeTexels(r.level)) {
+        const world::LightmapTexel& t = r.baked.importedTexels[s.texel];
+        ASSERT_EQ(t.flags, world::kLightmapTexelSampled) << s.texel;
+        const glm::vec3 want = expectedAt(s.position);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(t.irradiance[c], want[c], 1e-3f * (1.0f + want[c]))
+                << "texel " << s.texel << " at " << s.position.x << " " << s.position.y << " "
+                << s.position.z;
+        EXPECT_EQ(t.direction, glm::vec3(0.0f));
+        EXPECT_EQ(t.normalWeight, 0.5f);
+        ++checked;
+        (s.position.z < -1.999f ? wall : floor) += 1;
+    }
+    EXPECT_GT(floor, 100u);
+    EXPECT_GT(wall, 50u);
+    // Padding around the charts is dilated like the engine's own texels: nothing is left unset
+    // where the engine's bake has a value.
+    for (size_t i = 0; i < r.baked.texels.size(); ++i)
+        EXPECT_EQ(r.baked.importedTexels[i].flags != 0, r.baked.texels[i].flags != 0) << i;
+    EXPECT_GT(checked, 0u);
+}
+
+TEST(ImportedLightmap, ShardsMergeToTheWholeBake) {
+    const world::SourceLevel source = importedLevel();
+    BakeOptions options = test::fastBakeOptions();
+    const BakeResult whole = bakeLevel(source, options);
+    std::vector<world::BakedLighting> parts;
+    for (uint32_t i = 0; i < 2; ++i) {
+        options.shardIndex = i;
+        options.shardCount = 2;
+        parts.push_back(bakeLevel(source, options).baked);
+    }
+    const world::BakedLighting merged = mergeBakedLighting(whole.level, parts);
+    EXPECT_EQ(packageBytes(whole.level, merged), packageBytes(whole.level, whole.baked));
+}
+
+TEST(ImportedLightmap, Section36RoundTripsAndIsCheckedAgainstTheAtlases) {
+    const BakeResult r = bakeLevel(importedLevel(), test::fastBakeOptions());
+    std::vector<package::RawSection> sections = package::encodeBakedSections(r.baked);
+    ASSERT_EQ(sections.back().id, package::kSectionImportedLightmap);
+    const package::BakedContents back = package::decodeBakedSections(sections, r.level, "x.olpak");
+    ASSERT_EQ(back.baked.importedTexels.size(), r.baked.importedTexels.size());
+    for (size_t i = 0; i < r.baked.importedTexels.size(); ++i)
+        ASSERT_EQ(back.baked.importedTexels[i].irradiance, r.baked.importedTexels[i].irradiance);
+
+    const auto errorOf = [&](const std::vector<package::RawSection>& broken) {
+        return onelight::test::errorMessage(
+            [&] { (void)package::decodeBakedSections(broken, r.level, "x.olpak"); });
+    };
+    std::vector<package::RawSection> short_ = sections;
+    short_.back().bytes.resize(short_.back().bytes.size() - sizeof(package::DiskLightmapTexel));
+    short_.back().count -= 1;
+    EXPECT_NE(errorOf(short_).find("x.olpak: section imported_lightmap: element size 32, count"),
+              std::string::npos)
+        << errorOf(short_);
+    std::vector<package::RawSection> negative = sections;
+    const float minus = -1.0f;
+    std::memcpy(negative.back().bytes.data(), &minus, 4);
+    EXPECT_NE(errorOf(negative).find("section imported_lightmap, record 0: irradiance[0]"),
+              std::string::npos)
+        << errorOf(negative);
+    const std::vector<package::RawSection> alone(sections.end() - 1, sections.end());
+    EXPECT_NE(errorOf(alone).find("section imported_lightmap present without baked lighting"),
+              std::string::npos)
+        << errorOf(alone);
+}
+
+}  // namespace
+}  // namespace onelight::bake
