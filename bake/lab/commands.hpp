@@ -14,9 +14,11 @@ namespace onelight::lab {
 // (default: stdout) (env_fit_command.cpp).
 [[nodiscard]] int envFit(const std::string& path);
 
-// sheet: EXRs side by side through exposure and the filmic curve into the PNG `output`; with a
+// sheet: EXRs side by side, `columns` to a row (0: all in one), each row through its exposure
+// (one EV100 for all rows, or one per row) and the filmic curve into the PNG `output`; with a
 // rectangle (x, y, width, height) each image's mean there (sheet_command.cpp).
-[[nodiscard]] int sheet(const std::string& output, float ev100,
-                        const std::vector<std::string>& images, const std::vector<uint32_t>& rect);
+[[nodiscard]] int sheet(const std::string& output, const std::vector<float>& ev100,
+                        const std::vector<std::string>& images, const std::vector<uint32_t>& rect,
+                        uint32_t columns);
 
 }  // namespace onelight::lab

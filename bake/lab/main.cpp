@@ -2,7 +2,8 @@
 //   onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST   CSV of albedo scale and bias
 //   onelight-lab brdf-report -o DIR                                 tables, CSVs and plots
 //   onelight-lab env-fit [-o FILE]                                  fits shaders/env_brdf_fit.glsl
-//   onelight-lab sheet -o OUT.png --ev100 E --images A.exr,B.exr [--rect x,y,w,h]
+//   onelight-lab sheet -o OUT.png --ev100 E[,E...] --images A.exr,B.exr [--rect x,y,w,h]
+//                      [--columns N]
 //                                                                   EXRs side by side, tonemapped
 #include <algorithm>
 #include <cstdio>
@@ -23,8 +24,8 @@ constexpr const char* kUsage =
     "usage: onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST\n"
     "       onelight-lab brdf-report -o DIR [--quick]\n"
     "       onelight-lab env-fit [-o FILE]\n"
-    "       onelight-lab sheet -o OUT.png --ev100 E --images A.exr,B.exr[,...] [--rect "
-    "x,y,w,h]\n"
+    "       onelight-lab sheet -o OUT.png --ev100 E[,E per row...] --images A.exr,B.exr[,...] "
+    "[--rect x,y,w,h] [--columns N]\n"
     "models: bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith; mu in (0,1]; gloss in "
     "[0,1]\n";
 
@@ -98,15 +99,23 @@ int envFitCommand(int argc, char** argv) {
 }
 
 int sheetCommand(int argc, char** argv) {
-    Options o = parseOptions(argc, argv, {"-o", "--ev100", "--images", "--rect"}, {});
-    const std::vector<double> ev =
-        parseNumberList("--ev100", required(o, "--ev100"), -20.0, 30.0, false);
-    if (ev.size() != 1) throw std::invalid_argument("--ev100: expected one number");
+    Options o = parseOptions(argc, argv, {"-o", "--ev100", "--images", "--rect", "--columns"}, {});
+    std::vector<float> ev;
+    for (double v : parseNumberList("--ev100", required(o, "--ev100"), -20.0, 30.0, false))
+        ev.push_back(float(v));
+    uint32_t columns = 0;
+    if (o.has("--columns")) {
+        const std::vector<double> c =
+            parseNumberList("--columns", o.get("--columns"), 1.0, 64.0, false);
+        if (c.size() != 1 || c[0] != double(uint32_t(c[0])))
+            throw std::invalid_argument("--columns: expected one whole number in [1, 64]");
+        columns = uint32_t(c[0]);
+    }
     std::vector<uint32_t> rect;
     if (o.has("--rect"))
         for (double v : parseNumberList("--rect", o.get("--rect"), 0.0, 1e6, false))
             rect.push_back(uint32_t(v));
-    return sheet(required(o, "-o"), float(ev[0]), parseWordList(required(o, "--images")), rect);
+    return sheet(required(o, "-o"), ev, parseWordList(required(o, "--images")), rect, columns);
 }
 
 }  // namespace

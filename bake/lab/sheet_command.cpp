@@ -1,6 +1,7 @@
 // onelight-lab sheet: linear EXRs in cd/m^2 (a reference's, a capture's) side by side as one PNG,
 // each through the renderer's exposure and filmic curve (shaders/tonemap.glsl) at one EV100, so
-// a path-traced reference and a real-time frame are looked at alike. With a rectangle, each
+// a path-traced reference and a real-time frame are looked at alike. With --columns, a grid of
+// rows, each at its own EV100 when one is given per row. With a rectangle, each
 // image's mean radiance over it and its ratio to the first image's.
 #include <algorithm>
 #include <cstdio>
@@ -14,9 +15,16 @@
 
 namespace onelight::lab {
 
-int sheet(const std::string& output, float ev100, const std::vector<std::string>& images,
-          const std::vector<uint32_t>& rect) {
+int sheet(const std::string& output, const std::vector<float>& ev100,
+          const std::vector<std::string>& images, const std::vector<uint32_t>& rect,
+          uint32_t columns) {
     if (images.empty()) throw std::invalid_argument("--images: expected one EXR or more");
+    const uint32_t across = columns == 0 ? uint32_t(images.size()) : columns;
+    const uint32_t rows = (uint32_t(images.size()) + across - 1) / across;
+    if (ev100.size() != 1 && ev100.size() != rows)
+        throw std::invalid_argument("--ev100: " + std::to_string(ev100.size()) +
+                                    " values; expected one, or one per row (" +
+                                    std::to_string(rows) + ")");
     if (!rect.empty() && rect.size() != 4)
         throw std::invalid_argument("--rect: expected x,y,width,height");
     std::vector<capture::FloatImage> read;
@@ -34,17 +42,19 @@ int sheet(const std::string& output, float ev100, const std::vector<std::string>
                                         std::to_string(f.height) + " images");
     }
     const uint32_t w = read[0].width, h = read[0].height, n = uint32_t(read.size());
-    const float exposure = glsl::exposure_fromEV100(ev100);
-    std::vector<uint8_t> rgba(size_t(w) * n * h * 4, 255);
+    const size_t stride = size_t(w) * across;  // pixels per row of the sheet
+    std::vector<uint8_t> rgba(stride * rows * h * 4, 255);
     double first = 0.0;
     for (uint32_t k = 0; k < n; ++k) {
         const std::vector<float>& px = read[k].rgba;
+        const uint32_t row = k / across, column = k % across;
+        const float exposure = glsl::exposure_fromEV100(ev100[ev100.size() == 1 ? 0 : row]);
         for (uint32_t y = 0; y < h; ++y)
             for (uint32_t x = 0; x < w; ++x)
                 for (uint32_t c = 0; c < 3; ++c) {
                     const float v = px[(size_t(y) * w + x) * 4 + c];
                     const float d = glsl::displayValue(std::isfinite(v) ? v * exposure : 0.0f);
-                    rgba[(size_t(y) * w * n + size_t(k) * w + x) * 4 + c] =
+                    rgba[((size_t(row) * h + y) * stride + size_t(column) * w + x) * 4 + c] =
                         uint8_t(std::clamp(d * 255.0f + 0.5f, 0.0f, 255.0f));
                 }
         if (rect.empty()) continue;
@@ -60,9 +70,9 @@ int sheet(const std::string& output, float ev100, const std::vector<std::string>
             "the first)\n",
             images[k].c_str(), mean.x, mean.y, mean.z, y, first > 0.0 ? y / first : 0.0);
     }
-    capture::writePng(output, w * n, h, rgba);
-    std::printf("wrote %s: %u images of %ux%u at EV100 %.2f\n", output.c_str(), n, w, h,
-                double(ev100));
+    capture::writePng(output, uint32_t(stride), rows * h, rgba);
+    std::printf("wrote %s: %u images of %ux%u, %u to a row, at EV100 %.2f%s\n", output.c_str(), n,
+                w, h, across, double(ev100[0]), ev100.size() > 1 ? " (first row)" : "");
     return 0;
 }
 

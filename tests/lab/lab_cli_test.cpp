@@ -117,4 +117,20 @@ TEST(LabCli, SheetPutsExrsSideBySideThroughTheCurve) {
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_NE(r.output.find("small.exr: 2x2; expected the first image's 4x2"), std::string::npos)
         << r.output;
+
+    // A grid: three images two to a row, each row at its own exposure; the empty cell is white.
+    r = run("sheet -o " + png + " --ev100 7,8 --columns 2 --images " + a + "," + b + "," + b);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const onelight::world::DecodedImage grid = onelight::capture::readPng(png);
+    ASSERT_EQ(grid.width, 8u);
+    ASSERT_EQ(grid.height, 4u);
+    const float exposure8 = 1.0f / (1.2f * 256.0f);  // exposure_fromEV100(8)
+    const float second = onelight::glsl::displayValue(200.0f * exposure8) * 255.0f;
+    EXPECT_NEAR(float(grid.rgba[(2 * 8 + 1) * 4]), second, 0.6f);  // row 1, image 2
+    EXPECT_EQ(grid.rgba[(2 * 8 + 5) * 4], 255);                    // row 1, no image
+    r = run("sheet -o " + png + " --ev100 7,8,9 --columns 2 --images " + a + "," + b + "," + b);
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("--ev100: 3 values; expected one, or one per row (2)"),
+              std::string::npos)
+        << r.output;
 }
