@@ -67,7 +67,17 @@ MapSource findMap(const std::string& spec, GameFiles& files,
                   const std::vector<std::string>& folders) {
     const size_t colon = fileKey(spec).find(".pk3:");
     if (colon != std::string::npos) {
-        const std::string pk3 = spec.substr(0, colon + 4), inside = spec.substr(colon + 5);
+        std::string pk3 = spec.substr(0, colon + 4);
+        const std::string inside = spec.substr(colon + 5);
+        // A bare pk3 name that is not here is looked for in the game folders
+        // (pak1-maps.pk3:maps/aggressor.bsp).
+        std::error_code ec;
+        if (!std::filesystem::exists(pk3, ec) && std::filesystem::path(pk3).is_relative())
+            for (const std::string& folder : folders)
+                if (std::filesystem::exists(std::filesystem::path(folder) / pk3, ec)) {
+                    pk3 = (std::filesystem::path(folder) / pk3).string();
+                    break;
+                }
         files.add(pk3);
         const Pk3Archive& archive = *files.archives.back();
         for (const std::string& n : archive.names())
