@@ -114,6 +114,9 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
         makeLevelLights(scene, source, options.lightSizes, options.skyRadiance);
     report.stages.push_back({"scene", secondsSince(start), {}, scene.triangleCount()});
     report.triangles = scene.triangleCount();
+    for (const world::Light& l : source.lights)
+        (l.role == world::LightRole::kPrimary ? report.primaryLights : report.bakedLights) += 1;
+    report.emissiveTriangles = uint32_t(lights.emitters.triangles.size());
 
     // 2. World compile; its region splitter asks the shadowed dominant primary.
     start = std::chrono::steady_clock::now();

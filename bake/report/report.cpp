@@ -50,6 +50,9 @@ std::string reportJson(const BakeReport& r) {
     j["peak_memory_bytes"] = r.peakMemoryBytes;
     j["package_bytes"] = r.packageBytes;
     j["triangles"] = r.triangles;
+    j["lights"] = {{"primary", r.primaryLights},
+                   {"baked", r.bakedLights},
+                   {"emissive_triangles", r.emissiveTriangles}};
     j["lightmap"] = {{"texels_total", r.texelsTotal},
                      {"texels_sampled", r.texelsSampled},
                      {"texels_moved_out_of_geometry", r.texelsMoved},

@@ -24,6 +24,7 @@ struct BakeReport {
     uint32_t shardIndex = 0, shardCount = 1;
     std::vector<StageReport> stages;
     uint64_t triangles = 0;
+    uint32_t primaryLights = 0, bakedLights = 0, emissiveTriangles = 0;
     uint64_t texelsTotal = 0, texelsSampled = 0, texelsMoved = 0;
     uint64_t gridCells = 0, gridCellsInside = 0;
     uint32_t shadowSamplesPerLight = 0;

@@ -125,9 +125,9 @@ TEST(ImportedLightmap, Section36RoundTripsAndIsCheckedAgainstTheAtlases) {
             [&] { (void)package::decodeBakedSections(broken, r.level, "x.olpak"); });
     };
     std::vector<package::RawSection> short_ = sections;
-    short_.back().bytes.resize(short_.back().bytes.size() - sizeof(package::DiskLightmapTexel));
+    short_.back().bytes.resize(short_.back().bytes.size() - sizeof(package::DiskImportedTexel));
     short_.back().count -= 1;
-    EXPECT_NE(errorOf(short_).find("x.olpak: section imported_lightmap: element size 32, count"),
+    EXPECT_NE(errorOf(short_).find("x.olpak: section imported_lightmap: element size 12, count"),
               std::string::npos)
         << errorOf(short_);
     std::vector<package::RawSection> negative = sections;

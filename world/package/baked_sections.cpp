@@ -108,10 +108,11 @@ std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
     if (!baked.importedTexels.empty()) {
         RawSection imported;
         imported.id = kSectionImportedLightmap;
-        imported.elementSize = sizeof(DiskLightmapTexel);
+        imported.elementSize = sizeof(DiskImportedTexel);
         imported.count = static_cast<uint32_t>(baked.importedTexels.size());
         for (const world::LightmapTexel& t : baked.importedTexels)
-            appendBytes(imported.bytes, toDisk(t));
+            appendBytes(imported.bytes,
+                        DiskImportedTexel{{t.irradiance.x, t.irradiance.y, t.irradiance.z}});
         out.push_back(std::move(imported));
     }
     return out;
@@ -166,15 +167,25 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
     world::BakedLighting& baked = result.baked;
     baked.texels = decodeTexels(*texels, name, "lightmap_texels");
     if (imported) {
-        if (imported->elementSize != sizeof(DiskLightmapTexel) ||
-            imported->bytes.size() != uint64_t(imported->count) * sizeof(DiskLightmapTexel) ||
+        if (imported->elementSize != sizeof(DiskImportedTexel) ||
+            imported->bytes.size() != uint64_t(imported->count) * sizeof(DiskImportedTexel) ||
             imported->count != expectedTexels)
             throw world::Error(name + ": section imported_lightmap: element size " +
                                std::to_string(imported->elementSize) + ", count " +
                                std::to_string(imported->count) + "; expected element size " +
-                               std::to_string(sizeof(DiskLightmapTexel)) + " and count " +
+                               std::to_string(sizeof(DiskImportedTexel)) + " and count " +
                                std::to_string(expectedTexels) + " (the atlases' texels)");
-        baked.importedTexels = decodeTexels(*imported, name, "imported_lightmap");
+        baked.importedTexels.resize(imported->count);
+        for (uint32_t i = 0; i < imported->count; ++i) {
+            const auto d = readRecord<DiskImportedTexel>(imported->bytes,
+                                                         size_t(i) * sizeof(DiskImportedTexel));
+            checkFiniteNonNegative(where(name, "imported_lightmap", i), "irradiance", d.irradiance);
+            world::LightmapTexel& t = baked.importedTexels[i];
+            t.irradiance = glm::vec3(d.irradiance[0], d.irradiance[1], d.irradiance[2]);
+            t.direction = glm::vec3(0.0f);
+            t.normalWeight = 0.5f;
+            t.flags = baked.texels[i].flags;
+        }
     }
 
     // Shadow masks.

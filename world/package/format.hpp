@@ -300,11 +300,11 @@ static_assert(sizeof(DiskFeatures) == 60);
 //       E(n') = irradiance * max(0, 0.5 + dot(n', direction)) / normalWeight
 //   which returns `irradiance` exactly at the surface normal (a rebalanced half-Lambert
 //   directional lightmap).
-// kSectionImportedLightmap (optional, only with 32..34): DiskLightmapTexel[], the same texel
+// kSectionImportedLightmap (optional, only with 32..34): DiskImportedTexel[], the same texel
 //   order and count as kSectionLightmapTexels: the light the source format baked itself (a Quake
 //   3 map's q3map2 lightmaps, bake/lightmap/imported_lightmap.hpp), all of it (no primary is
-//   left out), non-directional (direction 0, normalWeight 0.5). `onelight --view q3map2` shows
-//   it in place of the engine's bake.
+//   left out), non-directional: read back as a LightmapTexel with direction 0, normalWeight 0.5
+//   and the engine texel's flags. `onelight --view q3map2` shows it in place of the engine's.
 // kSectionShadowMasks: uint8_t[], same texel order and count: the baked visibility of the
 //   surface's own primary, 0 (umbra) .. 255 (fully lit), softened by the light's size.
 // kSectionLightGrid: uint8_t[]: one DiskLightGridHeader, then DiskLightGridCell[cellCount]
@@ -323,6 +323,11 @@ struct DiskLightmapTexel {
     uint32_t flags;       // LightmapTexelFlags; 0 = outside every chart (all zero)
 };
 static_assert(sizeof(DiskLightmapTexel) == 32);
+
+struct DiskImportedTexel {
+    float irradiance[3];  // lux, RGB; finite, >= 0
+};
+static_assert(sizeof(DiskImportedTexel) == 12);
 
 enum LightGridCellFlags : uint32_t {
     kLightGridCellInsideSolid = 1u << 0,  // centre inside geometry: skip when interpolating
