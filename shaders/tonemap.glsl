@@ -28,6 +28,13 @@ float srgbEncode(float linear) {
     return 1.055f * pow(x, 1.0f / 2.4f) - 0.055f;
 }
 
+// IEC 61966-2-1 (sRGB) decoding of a code in [0, 1], as the _SRGB formats do it.
+float srgbDecode(float code) {
+    float x = saturate(code);
+    if (x <= 0.04045f) return x / 12.92f;
+    return pow((x + 0.055f) / 1.055f, 2.4f);
+}
+
 // The colour LUT's shaper: exposed linear colour x maps to a coordinate in [0, 1] over
 // [2^LUT_LOG2_MIN, 2^LUT_LOG2_MAX] (filmic_ACES is within 0.1% of its top at 2^4).
 const float LUT_LOG2_MIN = -12.0f;

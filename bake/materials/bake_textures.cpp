@@ -1,5 +1,7 @@
 #include "bake/materials/bake_textures.hpp"
 
+#include "shading.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,15 +13,10 @@ constexpr uint16_t kClampToEdge = 33071;
 constexpr uint16_t kMirroredRepeat = 33648;
 constexpr uint16_t kNearest = 9728;
 
-// IEC 61966-2-1 (sRGB), the decoding of an 8-bit code as the _SRGB formats do it.
-float srgbToLinear(float c) {
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
 const std::array<float, 256>& srgbTable() {
     static const std::array<float, 256> table = [] {
         std::array<float, 256> t{};
-        for (int i = 0; i < 256; ++i) t[size_t(i)] = srgbToLinear(float(i) / 255.0f);
+        for (int i = 0; i < 256; ++i) t[size_t(i)] = glsl::srgbDecode(float(i) / 255.0f);
         return t;
     }();
     return table;

@@ -491,6 +491,40 @@ TEST(Quake3Maps, Q3dm6ishImportsWithTexturesSpawnsAndLights) {
     }
     EXPECT_GT(std::max(size.x, size.z), 20.0f);
     EXPECT_LT(std::max({size.x, size.y, size.z}), 300.0f);
+    // q3map2's own light comes with it, for every drawn triangle.
+    EXPECT_EQ(level.importedLightmap.triangles.size(), triangles);
+    EXPECT_GT(level.importedLightmap.pages.size(), 0u);
+}
+
+// A pk3 named without its folder is looked for in the game folders; one that is nowhere is
+// named in the error.
+TEST(Quake3Maps, APk3NamedWithoutItsFolderIsFoundInTheGame) {
+    if (defaultQuake3Folders().empty())
+        GTEST_SKIP() << "OpenArena is not installed (openarena-data, openarena-081-maps)";
+    const SourceLevel level = importLevel("pak1-maps.pk3:maps/aggressor.bsp");
+    EXPECT_NE(level.sourcePath.find("/pak1-maps.pk3:maps/aggressor.bsp"), std::string::npos)
+        << level.sourcePath;
+    EXPECT_GT(level.lights.size(), 80u);  // the 0.8.1 BSP keeps its light entities
+    const std::string e = errorMessage([] { (void)importLevel("pak9-none.pk3:maps/x.bsp"); });
+    EXPECT_NE(e.find("pak9-none.pk3"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace onelight::world::q3
+
+namespace onelight::world::q3 {
+namespace {
+
+// oa_bases3's sky shader has no q3map_skylight but a q3map_surfacelight 50 (q3map2 makes its
+// faces area lights): a uniform sky of 0.25 x 50 cd/m^2 at its brightest channel, in its light
+// image's (reddish clouds) mean colour.
+TEST(Quake3Maps, ASkyThatIsASurfaceLightIsAUniformSky) {
+    if (defaultQuake3Folders().empty())
+        GTEST_SKIP() << "OpenArena is not installed (openarena-data, openarena-088-data)";
+    const SourceLevel level = importLevel("oa_bases3");
+    const glm::vec3 sky = level.skyRadiance;
+    EXPECT_FLOAT_EQ(std::max({sky.x, sky.y, sky.z}), 12.5f);
+    EXPECT_GT(sky.x, sky.z);  // red clouds
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 
 #include "shading.hpp"
 #include "world/error.hpp"
+#include "world/images/image_decode.hpp"
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/entity_lump.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
@@ -136,6 +137,40 @@ std::string withoutImageExtension(std::string name) {
     return name;
 }
 
+// The mean linear colour of the image `name` (.tga or .jpg, as textureOf finds it); white when
+// there is no such image. q3map2 lights a surface light with its light image's mean colour,
+// scaled to a brightest channel of 1 (normalisedColour).
+glm::vec3 meanLinearColour(const GameFiles& files, const std::string& name) {
+    const std::string base = withoutImageExtension(name);
+    for (const char* ext : {".tga", ".jpg"}) {
+        const std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
+        if (!bytes) continue;
+        const DecodedImage pixels =
+            decodeImage(bytes->data(), bytes->size(), files.where(base + ext));
+        glm::dvec3 sum(0.0);
+        for (size_t i = 0; i + 3 < pixels.rgba.size(); i += 4)
+            for (int c = 0; c < 3; ++c)
+                sum[c] += double(glsl::srgbDecode(float(pixels.rgba[i + size_t(c)]) / 255.0f));
+        return pixels.rgba.empty() ? glm::vec3(1.0f)
+                                   : glm::vec3(sum / double(pixels.rgba.size() / 4));
+    }
+    return glm::vec3(1.0f);
+}
+
+// `colour` scaled to a brightest channel of 1; white when it is black.
+glm::vec3 normalisedColour(glm::vec3 colour) {
+    const float peak = std::max({colour.x, colour.y, colour.z});
+    return peak > 1e-6f ? colour / peak : glm::vec3(1.0f);
+}
+
+// The image a surface light's colour comes from: its q3map_lightimage, else its colour stage's,
+// else its editor image, else its name.
+std::string lightImageOf(const ShaderScript& script) {
+    if (!script.lightImage.empty()) return script.lightImage;
+    if (const ShaderStage* stage = script.colorStage()) return stage->map;
+    return script.editorImage.empty() ? script.name : script.editorImage;
+}
+
 // The level's material for each drawn shader (q3_import.hpp, "Shaders").
 struct MaterialTable {
     SourceLevel& level;
@@ -200,11 +235,16 @@ struct MaterialTable {
             if (script->surfaceLight > 0.0f) {
                 // q3map2 gives an area light value x area x 0.25 photons (a point light
                 // value x 7500): at 1 lux per lightmap unit and 1/32 m per unit that is a
-                // radiance of 0.25 value cd/m^2, coloured by its light image (or its texture).
-                m.emissive = glm::vec3(kQuake3NitsPerSurfaceLight * double(script->surfaceLight));
+                // radiance of 0.25 value cd/m^2, in its light image's (or its texture's) mean
+                // colour scaled to a brightest channel of 1; the image keeps its pattern.
                 m.emissiveTexture =
                     script->lightImage.empty() ? kNoIndex : textureOf(script->lightImage);
                 if (m.emissiveTexture == kNoIndex) m.emissiveTexture = m.baseColorTexture;
+                const glm::vec3 mean = meanLinearColour(files, lightImageOf(*script));
+                const float peak = std::max({mean.x, mean.y, mean.z});
+                m.emissive =
+                    glm::vec3(float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) /
+                              (peak > 1e-6f ? peak : 1.0f));
             }
         }
         m.albedo = glm::vec3(m.baseColor);
@@ -410,7 +450,8 @@ void chooseLightRoles(SourceLevel& level, uint32_t maximum) {
 
 // The sun (q3map_sun, a primary directional light in lux) and a uniform sky (q3map_skylight
 // V as L = V / pi, so an open floor gets V lux) of the map's sky shaders.
-void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& scripts) {
+void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& scripts,
+                  const GameFiles& files) {
     for (const BspShader& shader : bsp.shaders) {
         const ShaderScript* script = scriptOf(scripts, shader);
         if (!script || !script->surfaceParms.count("sky")) continue;
@@ -429,8 +470,14 @@ void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& s
             l.color = peak > 0.0f ? glm::max(sun.color / peak, glm::vec3(0.0f)) : glm::vec3(1.0f);
             level.lights.push_back(l);
         }
-        if (script->skyLight > 0.0f)
+        if (script->skyLight > 0.0f) {
             level.skyRadiance = glm::vec3(float(double(script->skyLight) / M_PI));
+        } else if (script->surfaceLight > 0.0f) {
+            // The older way: q3map2 makes the sky's faces area lights of value S, which is a
+            // sky of 0.25 S cd/m^2 (q3_import.hpp) in the light image's normalised mean colour.
+            level.skyRadiance = float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) *
+                                normalisedColour(meanLinearColour(files, lightImageOf(*script)));
+        }
         return;  // one sky per map
     }
 }
@@ -498,7 +545,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     level.importedLightmap.pageSize = kLightmapPageSize;
     level.importedLightmap.pages = bsp.lightmaps;
     level.importedLightmap.luxPerValue = 1.0f;  // one lightmap unit is one lux (q3_import.hpp)
-    addSunAndSky(level, bsp, scripts);
+    addSunAndSky(level, bsp, scripts, files);
     const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
     // q3map2's lightmap density: one luxel per 16 units, times worldspawn's _lightmapscale.
     const float luxelUnits =

@@ -41,9 +41,13 @@ namespace onelight::world {
    blend of that stage BLEND (stochastic coverage, bake/README.md); cull none makes it double-sided;
    q3map_surfacelight S is emission of 0.25 S cd/m^2 (q3map2 gives an area light S x area x 0.25
    photons where a point light has light x 7500), times its q3map_lightimage (or its colour
-   texture). Surfaceparm nodraw, sky, fog, hint and skip leave a surface out. A sky shader's
-   q3map_sun is a primary directional light (intensity in lux), its q3map_skylight V a uniform sky
-   of V / pi cd/m^2 (V lux on an open floor).
+   texture) divided by the brightest channel of that image's mean linear colour: q3map2 lights
+   with the image's mean colour normalised to a brightest channel of 1. Surfaceparm nodraw, sky,
+   fog, hint and skip leave a surface out. A sky shader's q3map_sun is a primary directional
+   light (intensity in lux), its q3map_skylight V a uniform sky of V / pi cd/m^2 (V lux on an
+   open floor); without one, its q3map_surfacelight S (q3map2
+   makes the sky's faces area lights) a uniform sky of 0.25 S cd/m^2 in its light image's mean
+   colour normalised to a brightest channel of 1.
 */
 inline constexpr double kQuake3MetresPerUnit = 1.0 / 32.0;
 inline constexpr double kQuake3CandelaPerLight = 7500.0 / (32.0 * 32.0);
