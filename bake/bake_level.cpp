@@ -35,9 +35,12 @@ struct QualityPreset {
     uint32_t indirectSamples;  // paths per lightmap texel (and grid cell)
     uint32_t probeFaceSize;    // texels per probe cube face
     uint32_t probeSamples;     // paths per probe texel
+    uint32_t bouncePasses;     // cached bounce passes over the lightmap texels
+    uint32_t cacheSamples;     // gathering directions per texel in each of them
 };
-constexpr QualityPreset kQualityPresets[] = {
-    {"draft", 8, 128, 32, 16}, {"default", 16, 512, 64, 64}, {"high", 32, 2048, 128, 256}};
+constexpr QualityPreset kQualityPresets[] = {{"draft", 8, 128, 32, 16, 3, 32},
+                                             {"default", 16, 512, 64, 64, 4, 64},
+                                             {"high", 32, 2048, 128, 256, 6, 128}};
 static_assert(size_t(BakeQuality::kHigh) + 1 == std::size(kQualityPresets));
 
 }  // namespace
@@ -60,6 +63,9 @@ LightmapSettings lightmapSettings(const BakeOptions& options) {
     LightmapSettings s;
     s.shadowSamples = options.shadowSamples ? options.shadowSamples : preset.shadowSamples;
     s.indirectSamples = options.indirectSamples ? options.indirectSamples : preset.indirectSamples;
+    s.transport.sampleLights = !options.allLights;
+    s.bouncePasses = options.pathsOnly ? 0 : preset.bouncePasses;
+    s.cacheSamples = preset.cacheSamples;
     return s;
 }
 
@@ -69,6 +75,7 @@ GridSettings gridSettings(const BakeOptions& options) {
     g.cellSize = options.gridCellSize;
     g.shadowSamples = l.shadowSamples;
     g.samples = options.gridSamples ? options.gridSamples : l.indirectSamples;
+    g.transport = l.transport;
     return g;
 }
 
@@ -77,6 +84,7 @@ ProbeCaptureSettings probeSettings(const BakeOptions& options) {
     ProbeCaptureSettings p;
     p.faceSize = options.probeFaceSize ? options.probeFaceSize : preset.probeFaceSize;
     p.samplesPerTexel = options.probeSamples ? options.probeSamples : preset.probeSamples;
+    p.transport.sampleLights = !options.allLights;
     return p;
 }
 
@@ -164,13 +172,17 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     baked.importedTexels =
         resampleImportedLightmap(device.handle(), level, samples, source.importedLightmap);
     start = std::chrono::steady_clock::now();
+    // The lightmaps' cached bounces, which the grid and the probes read too.
+    RadianceCache bounceCache;
     {
-        uint64_t work = 0;
+        uint64_t owned = 0;
         for (const TexelSample& s : samples)
-            work += s.texel >= range.texelBegin && s.texel < range.texelEnd;
-        Progress progress("lightmaps", work, options.showProgress);
-        const LightmapStats stats = bakeLightmapTexels(
-            scene, lights, level, samples, lm, range.texelBegin, range.texelEnd, baked, &progress);
+            owned += s.texel >= range.texelBegin && s.texel < range.texelEnd;
+        Progress progress("lightmaps", lightmapWorkUnits(samples.size(), owned, lm),
+                          options.showProgress);
+        const LightmapStats stats =
+            bakeLightmapTexels(scene, lights, level, samples, lm, range.texelBegin, range.texelEnd,
+                               baked, &progress, &bounceCache);
         progress.finish();
         report.stages.push_back({"lightmaps", secondsSince(start), stats.rays, stats.texelsBaked});
         report.texelsSampled = stats.texelsBaked;
@@ -184,7 +196,8 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     // 4. Light grid.
     start = std::chrono::steady_clock::now();
     {
-        const GridSettings gs = gridSettings(options);
+        GridSettings gs = gridSettings(options);
+        if (!bounceCache.empty()) gs.transport.cache = &bounceCache;
         Progress progress("grid", range.cellEnd - range.cellBegin, options.showProgress);
         const GridStats stats =
             bakeLightGrid(scene, lights, gs, range.cellBegin, range.cellEnd, grid, &progress);
@@ -199,10 +212,12 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     // 5. Environment probes (only where the level has them: placeProbes decides).
     start = std::chrono::steady_clock::now();
     if (!placements.empty()) {
-        const ProbeCaptureSettings ps = probeSettings(options);
+        ProbeCaptureSettings ps = probeSettings(options);
+        GridSettings gs = gridSettings(options);
+        if (!bounceCache.empty()) gs.transport.cache = ps.transport.cache = &bounceCache;
         RayCounts rays;
-        const std::vector<glm::vec3> average = probeAverageIrradiance(
-            scene, lights, gridSettings(options), gridLayout, placements, rays);
+        const std::vector<glm::vec3> average =
+            probeAverageIrradiance(scene, lights, gs, gridLayout, placements, rays);
         baked.probes = bakeProbes(scene, lights, placements, average, ps, range.probeBegin,
                                   range.probeEnd, options.showProgress, rays);
         report.stages.push_back({"probes", secondsSince(start), rays, baked.probes.size()});

@@ -38,6 +38,13 @@ struct BakeOptions {
     float probeSpacing = 8.0f;  // metres between automatic probes unless the level sets it
     uint32_t shardIndex = 0, shardCount = 1;
     bool showProgress = true;
+    // Every light at every point with its own shadow rays, instead of lights drawn by
+    // importance (light_cells.hpp, direct_light.hpp): the exact, slow baseline they are
+    // measured against.
+    bool allLights = false;
+    // Every gathering direction a whole path, instead of cached bounce passes over the texels
+    // (lightmap_bake.cpp): the unbiased, slow baseline the cache is measured against.
+    bool pathsOnly = false;
     // Overrides of the quality preset; 0 keeps the preset.
     uint32_t shadowSamples = 0, indirectSamples = 0, gridSamples = 0;
     uint32_t probeFaceSize = 0, probeSamples = 0;  // a power of two; paths per texel

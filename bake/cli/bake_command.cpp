@@ -43,6 +43,10 @@ std::string bakeUsage() {
          {"--texels-per-metre N", "lightmap density, 0.01..1024",
           "the level's, or " + formatNumber(charts.texelsPerMetre)},
          patchLevelOption(),
+         {"--all-lights", "every light with its own shadow rays at every point (slow)",
+          "lights drawn by importance"},
+         {"--paths-only", "whole paths for the indirect light, no cached bounces (slow)",
+          "cached bounce passes"},
          {"--quiet", "no progress bars", "bars on a terminal"},
          {"-h, --help", "this help", ""}});
 }
@@ -98,6 +102,10 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
                                    "'; expected an integer in [1, 64]");
         } else if (a == "--quiet") {
             options.showProgress = false;
+        } else if (a == "--all-lights") {
+            options.allLights = true;
+        } else if (a == "--paths-only") {
+            options.pathsOnly = true;
         } else if (!a.empty() && a[0] != '-' && input.empty()) {
             input = a;
         } else {

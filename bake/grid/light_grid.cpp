@@ -6,6 +6,8 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "bake/lighting/direct_light.hpp"
+
 namespace onelight::bake {
 namespace {
 
@@ -46,31 +48,37 @@ world::LightGridCell bakeCell(const BakeScene& scene, const BakeLights& lights,
         cell.flags = world::kLightGridCellInsideSolid;
         return cell;
     }
-    // Dominant primary and every light's shadowed direct irradiance at the centre.
-    std::vector<glm::vec3> direct(lights.lights.size(), glm::vec3(0.0f));
-    std::vector<LightIncidence> incidence(lights.lights.size());
-    float bestScore = 0.0f;
-    for (size_t l = 0; l < lights.lights.size(); ++l) {
+    // Dominant primary and every light's shadowed direct irradiance at the centre: primaries
+    // with their full shadow rays each (the dominant choice compares them), the other lights
+    // sharing a budget by importance (direct_light.hpp).
+    std::vector<LightTerm> terms;
+    for (const uint32_t l : lightsNear(lights, centre)) {
         const BakeLight& light = lights.lights[l];
-        incidence[l] = lightIncidence(light, centre);
-        if (incidence[l].irradiance == glm::vec3(0.0f)) continue;
-        const float v =
-            lightVisibility(scene, light, incidence[l], centre, settings.shadowSamples, rng, rays);
-        direct[l] = incidence[l].irradiance * v;
-        const float score = luminance(direct[l]);
+        const LightIncidence incidence = lightIncidence(light, centre);
+        if (incidence.irradiance == glm::vec3(0.0f)) continue;
+        terms.push_back(
+            {l, incidence, luminance(incidence.irradiance),
+             light.light.role == world::LightRole::kPrimary || !settings.transport.sampleLights});
+    }
+    estimateVisibilities(scene, lights, terms, centre, settings.shadowSamples, rng, rays);
+    float bestScore = 0.0f;
+    for (const LightTerm& t : terms) {
+        const BakeLight& light = lights.lights[t.light];
+        const float score = luminance(t.incidence.irradiance * t.visibility);
         if (light.light.role == world::LightRole::kPrimary && score > bestScore) {
             bestScore = score;
             cell.dominantPrimary = light.levelIndex;
-            cell.primaryVisibility = v;
+            cell.primaryVisibility = t.visibility;
         }
     }
     const double scale = 4.0 * 3.14159265358979323846 / count;
     for (size_t a = 0; a < 6; ++a) cube[a] *= scale;
-    for (size_t l = 0; l < lights.lights.size(); ++l) {
-        if (lights.lights[l].levelIndex == cell.dominantPrimary) continue;
+    for (const LightTerm& t : terms) {
+        if (lights.lights[t.light].levelIndex == cell.dominantPrimary) continue;
+        const glm::vec3 direct = t.incidence.irradiance * t.visibility;
         for (size_t a = 0; a < 6; ++a)
-            cube[a] += glm::dvec3(direct[l]) *
-                       double(std::max(0.0f, glm::dot(kAxes[a], incidence[l].direction)));
+            cube[a] += glm::dvec3(direct) *
+                       double(std::max(0.0f, glm::dot(kAxes[a], t.incidence.direction)));
     }
     for (size_t a = 0; a < 6; ++a) cell.ambientCube[a] = glm::max(glm::vec3(cube[a]), 0.0f);
     return cell;

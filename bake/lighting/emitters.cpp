@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bake/lighting/cell_visibility.hpp"
 #include "bake/lighting/sampling.hpp"
 
 namespace onelight::bake {
@@ -28,18 +29,36 @@ Emitters collectEmitters(const BakeScene& scene) {
         power.push_back(double(e.area) * double(y) * (e.doubleSided ? 2.0 : 1.0));
     }
     if (out.triangles.empty()) return out;
-    double total = 0.0;
-    for (double p : power) total += p;
-    out.cdf.resize(power.size());
-    out.choiceOverArea.assign(scene.triangleCount(), 0.0f);
-    double running = 0.0;
-    for (size_t i = 0; i < power.size(); ++i) {
-        running += power[i];
-        out.cdf[i] = float(running / total);
-        out.choiceOverArea[out.triangles[i].triangle] =
-            float(power[i] / total / double(out.triangles[i].area));
+    std::vector<LightBound> bounds(out.triangles.size());
+    out.emitterOf.assign(scene.triangleCount(), ~0u);
+    for (size_t i = 0; i < out.triangles.size(); ++i) {
+        const EmissiveTriangle& e = out.triangles[i];
+        LightBound& b = bounds[i];
+        b.lo = glm::min(e.a, glm::min(e.a + e.ab, e.a + e.ac));
+        b.hi = glm::max(e.a, glm::max(e.a + e.ab, e.a + e.ac));
+        b.power = static_cast<float>(power[i]);
+        if (!e.doubleSided) {
+            b.planeNormal = e.normal;
+            b.planePoint = e.a;
+        }
+        out.emitterOf[e.triangle] = static_cast<uint32_t>(i);
     }
-    out.cdf.back() = 1.0f;
+    out.cells = layoutLightCells(bounds.size(), scene.boundsMin(), scene.boundsMax());
+    const CellSurfacePoints points = surfacePointsOfCells(scene, out.cells);
+    fillLightCells(out.cells, bounds, [&](uint32_t source, uint32_t cell) {
+        const EmissiveTriangle& e = out.triangles[source];
+        const glm::vec3 centre = e.a + (e.ab + e.ac) / 3.0f;
+        return visibleFraction(points, cell, [&](const glm::vec3& p, const glm::vec3& n) {
+            const glm::vec3 to = centre - p;
+            const float distance = glm::length(to);
+            if (!(distance > 0.0f)) return false;
+            const glm::vec3 d = to / distance;
+            uint64_t rays = 0;
+            return glm::dot(n, d) > 0.0f && (e.doubleSided || glm::dot(d, e.normal) < 0.0f) &&
+                   !scene.occluded(p, d, distance * (1.0f - 1e-4f) - 2.0f * scene.rayOffset(),
+                                   rays);
+        });
+    });
     return out;
 }
 
@@ -47,11 +66,9 @@ EmitterSample sampleEmitter(const BakeScene& scene, const Emitters& emitters, co
                             glm::vec3 u) {
     EmitterSample s;
     if (emitters.empty()) return s;
-    const size_t i =
-        std::min(size_t(std::upper_bound(emitters.cdf.begin(), emitters.cdf.end(), u.x) -
-                        emitters.cdf.begin()),
-                 emitters.triangles.size() - 1);
-    const EmissiveTriangle& e = emitters.triangles[i];
+    const LightPick pick = pickLight(emitters.cells, from, u.x);
+    if (!(pick.probability > 0.0f)) return s;
+    const EmissiveTriangle& e = emitters.triangles[pick.source];
     // A uniform point: barycentrics (sqrt(u1) (1 - u2), sqrt(u1) u2) (Turk 1990, Graphics Gems).
     const float r = std::sqrt(u.y);
     SurfaceHit at;
@@ -71,16 +88,20 @@ EmitterSample sampleEmitter(const BakeScene& scene, const Emitters& emitters, co
     s.radiance = sampleEmission(scene.materials(), scene.materialIndexOf(e.triangle),
                                 scene.attributesAt(at), backFace, 0.0f);
     if (s.radiance == glm::vec3(0.0f)) return s;
-    s.pdf = emitterPdf(emitters, e.triangle, s.distance, std::fabs(cosLight));
+    s.pdf = pick.probability / e.area * s.distance * s.distance / std::fabs(cosLight);
     // Stop short of the emitter by the self-intersection offset, relative to the distance too.
     s.shadowDistance = std::max(0.0f, s.distance * (1.0f - 1e-4f) - 2.0f * scene.rayOffset());
     return s;
 }
 
-float emitterPdf(const Emitters& emitters, uint32_t triangle, float distance, float cosLight) {
-    if (emitters.empty() || triangle >= emitters.choiceOverArea.size() || !(cosLight > 0.0f))
+float emitterPdf(const Emitters& emitters, const glm::vec3& from, uint32_t triangle, float distance,
+                 float cosLight) {
+    if (emitters.empty() || triangle >= emitters.emitterOf.size() || !(cosLight > 0.0f))
         return 0.0f;
-    return emitters.choiceOverArea[triangle] * distance * distance / cosLight;
+    const uint32_t e = emitters.emitterOf[triangle];
+    if (e == ~0u) return 0.0f;
+    return lightProbability(emitters.cells, from, e) / emitters.triangles[e].area * distance *
+           distance / cosLight;
 }
 
 }  // namespace onelight::bake

@@ -1,6 +1,6 @@
-// Emissive surfaces as lights: the level's emissive triangles, chosen by their power for
-// next-event estimation, and the multiple-importance weights that combine it with the paths'
-// own (BSDF or gathering) directions that land on an emitter by chance.
+// Emissive surfaces as lights: the level's emissive triangles, chosen by their power and
+// distance for next-event estimation (light_cells.hpp), and the multiple-importance weights that
+// combine it with the paths' own (BSDF or gathering) directions that land on an emitter by chance.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "bake/embree/bake_scene.hpp"
+#include "bake/lighting/light_cells.hpp"
 
 namespace onelight::bake {
 
@@ -20,18 +21,20 @@ struct EmissiveTriangle {
     bool doubleSided = false;               // emits from both faces
 };
 
-/// The emissive triangles of a scene, with the probability of choosing each one.
+/// The emissive triangles of a scene, with the probability of choosing each one from a point.
 /*
    Power estimate P_t = A_t Y(L_t) (x 2 when double-sided), L_t the material's emission factor
-   times its emissive texture's mean (the chain's last mip): P_t only steers the choice, any
-   P_t > 0 where the triangle emits keeps the estimate unbiased, because the MIS weight of a
-   chance hit uses the same probability. Triangles of zero estimate are left out (their light
-   is found by chance hits only, with weight 1).
+   times its emissive texture's mean (the chain's last mip), weighted by distance per cell of
+   `cells` (light_cells.hpp: P_t / (d^2 + h^2), 0 for cells wholly behind a one-sided emitter):
+   the weight only steers the choice, any weight > 0 where the triangle lights keeps the
+   estimate unbiased, because the MIS weight of a chance hit uses the same probability
+   P(t | x). Triangles of zero estimate are left out (their light is found by chance hits only,
+   with weight 1).
 */
 struct Emitters {
     std::vector<EmissiveTriangle> triangles;
-    std::vector<float> cdf;             // cumulative choice probability, back() == 1
-    std::vector<float> choiceOverArea;  // per scene triangle: P(choose) / area, 0 if none
+    LightCells cells;                 // P(t | x), sources indexing `triangles`
+    std::vector<uint32_t> emitterOf;  // per scene triangle: its index in `triangles`, or ~0u
     [[nodiscard]] bool empty() const { return triangles.empty(); }
 };
 
@@ -46,18 +49,19 @@ struct EmitterSample {
     float pdf = 0.0f;                       // per steradian; 0: nothing to add
 };
 
-/// Draws an emitter by power (u.x), a uniform point on it (u.y, u.z), and converts the area
-/// density to solid angle at `from`:
+/// Draws an emitter by P(t | from) (u.x), a uniform point on it (u.y, u.z), and converts the
+/// area density to solid angle at `from`:
 ///            +-----------------------------------------------------------+
-///            | pdf(w) = P(t) / A_t  x  d^2 / |cos theta_light|             |
+///            | pdf(w) = P(t | x) / A_t  x  d^2 / |cos theta_light|         |
 ///            +-----------------------------------------------------------+
 [[nodiscard]] EmitterSample sampleEmitter(const BakeScene& scene, const Emitters& emitters,
                                           const glm::vec3& from, glm::vec3 u);
 
-/// The density (per steradian) with which sampleEmitter would have drawn the point a ray found
-/// on scene triangle `triangle` at `distance` metres, arriving at cosine `cosLight` to it.
-[[nodiscard]] float emitterPdf(const Emitters& emitters, uint32_t triangle, float distance,
-                               float cosLight);
+/// The density (per steradian) with which sampleEmitter would have drawn, from `from`, the
+/// point a ray found on scene triangle `triangle` at `distance` metres, arriving at cosine
+/// `cosLight` to it.
+[[nodiscard]] float emitterPdf(const Emitters& emitters, const glm::vec3& from, uint32_t triangle,
+                               float distance, float cosLight);
 
 /// Veach 1997, sec. 9.2.4, the power heuristic (beta = 2) for a sample drawn from the strategy
 /// of density `chosen` against the other's `other` (sample counts folded into both):

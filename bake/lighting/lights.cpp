@@ -1,9 +1,11 @@
 #include "bake/lighting/lights.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
+#include "bake/lighting/cell_visibility.hpp"
 #include "world/error.hpp"
 #include "world/light_model.hpp"
 
@@ -12,6 +14,30 @@ namespace onelight::bake {
 BakeLights makeBakeLights(const BakeScene& scene, const std::vector<world::Light>& levelLights,
                           const LightSizes& sizes, glm::vec3 skyRadiance) {
     BakeLights out = makePunctualLights(levelLights, sizes, skyRadiance);
+    std::vector<LightBound> bounds;
+    for (uint32_t l = 0; l < out.lights.size(); ++l) {
+        if (out.lights[l].light.type == world::LightType::kDirectional) {
+            out.directionalLights.push_back(l);
+            continue;
+        }
+        out.localLights.push_back(l);
+        bounds.push_back(lightBoundOf(out.lights[l]));
+    }
+    out.lightCells = layoutLightCells(bounds.size(), scene.boundsMin(), scene.boundsMax());
+    const CellSurfacePoints points = surfacePointsOfCells(scene, out.lightCells);
+    fillLightCells(out.lightCells, bounds, [&](uint32_t source, uint32_t cell) {
+        const BakeLight& light = out.lights[out.localLights[source]];
+        return visibleFraction(points, cell, [&](const glm::vec3& p, const glm::vec3& n) {
+            const LightIncidence incidence = lightIncidence(light, p);
+            if (incidence.irradiance == glm::vec3(0.0f)) return false;
+            const LightDirection d =
+                sampleLightDirection(light, incidence, glm::vec2(0.5f), scene.sceneDiameter());
+            uint64_t rays = 0;
+            return glm::dot(n, d.direction) > 0.0f &&
+                   (d.shadowDistance <= 0.0f ||
+                    !scene.occluded(p, d.direction, d.shadowDistance, rays));
+        });
+    });
     out.emitters = collectEmitters(scene);
     return out;
 }
@@ -46,6 +72,26 @@ BakeLights makePunctualLights(const std::vector<world::Light>& levelLights, cons
         out.lights.push_back(b);
     }
     return out;
+}
+
+LightBound lightBoundOf(const BakeLight& light) {
+    const world::Light& l = light.light;
+    LightBound b;
+    const glm::vec3 c = l.color * l.intensity;
+    b.power = std::isfinite(luminance(c)) ? std::max(0.0f, luminance(c)) : 0.0f;
+    if (l.type == world::LightType::kDirectional) {
+        b.directional = true;
+        return b;
+    }
+    // The sphere shadow rays aim at: the range window is measured from its centre.
+    b.lo = l.position - glm::vec3(light.radius);
+    b.hi = l.position + glm::vec3(light.radius);
+    b.range = l.range > 0.0f ? l.range + light.radius : 0.0f;
+    if (l.type == world::LightType::kSpot) {
+        b.axis = l.direction;
+        b.cosOuter = std::cos(l.outerCone);
+    }
+    return b;
 }
 
 LightIncidence lightIncidence(const BakeLight& light, const glm::vec3& position) {

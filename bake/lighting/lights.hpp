@@ -15,6 +15,7 @@
 
 #include "bake/embree/bake_scene.hpp"
 #include "bake/lighting/emitters.hpp"
+#include "bake/lighting/light_cells.hpp"
 #include "bake/lighting/sampling.hpp"
 #include "bake/lighting/sky.hpp"
 #include "world/compiled_level.hpp"
@@ -40,6 +41,12 @@ struct BakeLight {
 /// surfaces, and the sky.
 struct BakeLights {
     std::vector<BakeLight> lights;
+    // Lights drawn by importance: the point and spot lights (`localLights`, indices into
+    // `lights`) through the light cells, whose sources index `localLights`. Directional lights
+    // (`directionalLights`) reach everywhere and are evaluated at every point. No cells: every
+    // light is evaluated.
+    LightCells lightCells;
+    std::vector<uint32_t> localLights, directionalLights;
     Emitters emitters;
     glm::vec3 skyRadiance{0.0f};  // cd/m^2, uniform over every direction that escapes...
     SkyImage skyImage;            // ...unless the sky is an image (then skyRadiance is unused)
@@ -55,8 +62,8 @@ struct BakeLights {
 [[nodiscard]] BakeLights makePunctualLights(const std::vector<world::Light>& levelLights,
                                             const LightSizes& sizes, glm::vec3 skyRadiance);
 
-/// Everything a bake lights with: the level's lights, the sky and the emissive triangles of
-/// `scene`.
+/// Everything a bake lights with: the level's lights (indexed by light cells over the scene),
+/// the sky and the emissive triangles of `scene`.
 [[nodiscard]] BakeLights makeBakeLights(const BakeScene& scene,
                                         const std::vector<world::Light>& levelLights,
                                         const LightSizes& sizes, glm::vec3 skyRadiance);
@@ -68,6 +75,9 @@ struct BakeLights {
 [[nodiscard]] BakeLights makeLevelLights(const BakeScene& scene, const world::SourceLevel& source,
                                          const LightSizes& sizes,
                                          std::optional<glm::vec3> uniformSky);
+
+/// How far and in which cone a light can reach, for the light cells.
+[[nodiscard]] LightBound lightBoundOf(const BakeLight& light);
 
 /// A light seen from a point: where its centre is and how much it gives there.
 struct LightIncidence {

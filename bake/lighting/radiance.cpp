@@ -22,34 +22,85 @@ bool finiteNonNegative(const glm::vec3& c) {
            c.y >= 0.0f && c.z >= 0.0f;
 }
 
+// Candidates per resampled light choice, and the target's floor (a fraction of the light's
+// diffuse term, so that a light whose centre is just below the horizon while part of it is not
+// keeps a density).
+constexpr uint32_t kRisCandidates = 4;
+// A hit whose specular lobe is drawn more often than this continues the path past the cache.
+constexpr float kCacheSpecularLimit = 0.5f;
+constexpr float kRisTargetFloor = 0.02f;
+
 // The probability that sampleEmission draws an emitter point rather than a sky direction.
 float emitterChoice(const BakeLights& lights) {
     if (lights.emitters.empty()) return 0.0f;
     return lights.skyImage.empty() ? 1.0f : 0.5f;
 }
 
+/// The radiance light `light` sends off `point` towards `toViewer`, tested by one shadow ray.
+glm::vec3 oneLight(const BakeScene& scene, const BakeLight& light, const ShadingPoint& point,
+                   const glm::vec3& origin, const glm::vec3& toViewer, glm::vec2 u,
+                   RayCounts& rays) {
+    const LightIncidence incidence = lightIncidence(light, point.position);
+    if (incidence.irradiance == glm::vec3(0.0f)) return glm::vec3(0.0f);
+    const LightDirection d = sampleLightDirection(light, incidence, u, scene.sceneDiameter());
+    if (glm::dot(point.geometricNormal, d.direction) <= 0.0f ||
+        glm::dot(point.shadingNormal, d.direction) <= 0.0f)
+        return glm::vec3(0.0f);
+    if (d.shadowDistance > 0.0f &&
+        scene.occluded(origin, d.direction, d.shadowDistance, rays.shadow))
+        return glm::vec3(0.0f);
+    return brdfCos(point.bsdf, point.shadingNormal, toViewer, d.direction) * incidence.irradiance;
+}
+
 }  // namespace
 
 glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
-                         const ShadingPoint& point, const glm::vec3& toViewer, Rng& rng,
-                         RayCounts& rays) {
-    glm::vec3 radiance(0.0f);
+                         const TransportSettings& settings, const ShadingPoint& point,
+                         const glm::vec3& toViewer, Rng& rng, RayCounts& rays) {
     const glm::vec3 origin = point.position + point.geometricNormal * scene.rayOffset();
-    for (const BakeLight& light : lights.lights) {
-        const LightIncidence incidence = lightIncidence(light, point.position);
-        const glm::vec2 u(rng.next(), rng.next());
-        if (incidence.irradiance == glm::vec3(0.0f)) continue;
-        const LightDirection d = sampleLightDirection(light, incidence, u, scene.sceneDiameter());
-        if (glm::dot(point.geometricNormal, d.direction) <= 0.0f ||
-            glm::dot(point.shadingNormal, d.direction) <= 0.0f)
-            continue;
-        if (d.shadowDistance > 0.0f &&
-            scene.occluded(origin, d.direction, d.shadowDistance, rays.shadow))
-            continue;
-        radiance +=
-            brdfCos(point.bsdf, point.shadingNormal, toViewer, d.direction) * incidence.irradiance;
+    if (!settings.sampleLights || lights.lightCells.empty()) {
+        glm::vec3 radiance(0.0f);
+        for (const BakeLight& light : lights.lights) {
+            const glm::vec2 u(rng.next(), rng.next());
+            radiance += oneLight(scene, light, point, origin, toViewer, u, rays);
+        }
+        return radiance;
     }
-    return radiance;
+    glm::vec3 radiance(0.0f);
+    for (const uint32_t l : lights.directionalLights) {
+        const glm::vec2 u(rng.next(), rng.next());
+        radiance += oneLight(scene, lights.lights[l], point, origin, toViewer, u, rays);
+    }
+    // Resampled importance sampling among the local lights (see radiance.hpp).
+    // The target's BRDF part: the diffuse lobe's cosine, and a constant for the specular one.
+    const float albedo = luminance(point.bsdf.albedo) / kPi;
+    const float specular = luminance(point.bsdf.specularColor) / kPi;
+    const LightCellView cell = lightsAt(lights.lightCells, point.position);
+    uint32_t chosen = 0;
+    float chosenTarget = 0.0f, weightSum = 0.0f;
+    for (uint32_t k = 0; k < kRisCandidates; ++k) {
+        const LightPick pick = pickLight(cell, rng.next());
+        if (!(pick.probability > 0.0f)) return radiance;  // no local light reaches the point
+        const BakeLight& light = lights.lights[lights.localLights[pick.source]];
+        const LightIncidence incidence = lightIncidence(light, point.position);
+        const float e = luminance(incidence.irradiance);
+        if (!(e > 0.0f)) continue;
+        const float cosine = glm::dot(point.shadingNormal, incidence.direction);
+        const float target = e * (albedo * std::max(cosine, kRisTargetFloor) +
+                                  specular * (cosine > 0.0f ? 1.0f : kRisTargetFloor));
+        const float w = target / pick.probability;
+        if (!(w > 0.0f) || !std::isfinite(w)) continue;
+        weightSum += w;
+        if (rng.next() * weightSum < w) {  // reservoir: candidate k kept with w_k / sum w
+            chosen = pick.source;
+            chosenTarget = target;
+        }
+    }
+    const glm::vec2 disc(rng.next(), rng.next());
+    if (!(weightSum > 0.0f)) return radiance;
+    const glm::vec3 f = oneLight(scene, lights.lights[lights.localLights[chosen]], point, origin,
+                                 toViewer, disc, rays);
+    return radiance + f * (weightSum / (float(kRisCandidates) * chosenTarget));
 }
 
 bool samplesEmission(const BakeLights& lights) {
@@ -89,10 +140,12 @@ EmissionEstimate sampleEmission(const BakeScene& scene, const BakeLights& lights
     return out;
 }
 
-float emitterHitPdf(const BakeLights& lights, uint32_t triangle, float distance, float cosLight) {
+float emitterHitPdf(const BakeLights& lights, const glm::vec3& origin, uint32_t triangle,
+                    float distance, float cosLight) {
     const float choice = emitterChoice(lights);
-    return choice > 0.0f ? choice * emitterPdf(lights.emitters, triangle, distance, cosLight)
-                         : 0.0f;
+    return choice > 0.0f
+               ? choice * emitterPdf(lights.emitters, origin, triangle, distance, cosLight)
+               : 0.0f;
 }
 
 float skyEscapePdf(const BakeLights& lights, const glm::vec3& direction) {
@@ -131,12 +184,22 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
         point.shadingNormal = m.shadingNormal;
         point.bsdf = m.bsdf;
         if (m.emission != glm::vec3(0.0f)) {
-            const float emitter = emitterHitPdf(lights, hit.triangle, hit.distance,
+            const float emitter = emitterHitPdf(lights, origin, hit.triangle, hit.distance,
                                                 std::fabs(glm::dot(dir, hit.normal)));
             const float weight = directionPdf > 0.0f ? powerHeuristic(directionPdf, emitter) : 1.0f;
             radiance += throughput * m.emission * weight;
         }
-        radiance += throughput * directRadiance(scene, lights, point, v, rng, rays);
+        if (settings.cache && specularProbability(point.bsdf, glm::dot(point.shadingNormal, v)) <=
+                                  kCacheSpecularLimit) {
+            const uint32_t k = findCachePoint(*settings.cache, hit.position, point.geometricNormal);
+            if (k != kNoCachePoint) {
+                const glm::vec3 e =
+                    settings.cache->direct[k] + settings.cache->indirect[k] * m.occlusion;
+                radiance += throughput * point.bsdf.albedo * (e / kPi);
+                break;
+            }
+        }
+        radiance += throughput * directRadiance(scene, lights, settings, point, v, rng, rays);
         const glm::vec3 offOrigin = hit.position + point.geometricNormal * scene.rayOffset();
         if (samplesEmission(lights)) {
             const EmissionEstimate e =

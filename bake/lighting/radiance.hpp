@@ -10,6 +10,7 @@
 
 #include "bake/embree/bake_scene.hpp"
 #include "bake/lighting/lights.hpp"
+#include "bake/lighting/radiance_cache.hpp"
 #include "bake/lighting/sampling.hpp"
 #include "bake/materials/ray_cone.hpp"
 #include "bake/materials/surface_point.hpp"
@@ -25,18 +26,28 @@ inline constexpr int kShadingFresnel = 1;  // FRESNEL_SCHLICK
 struct TransportSettings {
     uint32_t maxDepth = 64;      // surface hits per path; Russian roulette ends most far earlier
     uint32_t rouletteDepth = 2;  // hits after which Russian roulette starts
+    bool sampleLights = true;    // one light per hit by importance (light_cells.hpp), not all
+    // Cached bounces: a path ends at a diffuse hit the cache covers (radiance_cache.hpp).
+    const RadianceCache* cache = nullptr;
 };
 
 /// Radiance (cd/m^2, RGB) a surface point sends towards `toViewer` by direct light: every
-/// light with one shadow ray towards a random point of it. `normal` faces the viewer side.
+/// directional light, and one point or spot light chosen by resampled importance for the point
+/// (or, with sampleLights off or no light cells, every light), each with one shadow ray
+/// towards a random point of it. `normal` faces the viewer side.
 /*
    Lo_direct(v) = sum_l int_{light l} f(v, w) L_l cos dw
                ~ sum_l f(v, w_l) E_l NoL_l vis(w_l),  w_l uniform on l's apparent disc
    with f NoL = albedo Fd_Lambert NoL + specularLobe  (brdf.glsl) and E_l the irradiance at
    normal incidence (lights.hpp): exact for a small light, unbiased in the visibility.
-                 +----------------------------------------------------------------+
-                 | Lo_direct ~ sum_l (albedo NoL / pi + specularLobe) E_l vis(w_l) |
-                 +----------------------------------------------------------------+
+   The local lights' sum by resampled importance sampling (Talbot, Cline and Egbert 2005,
+   "Importance Resampling for Global Illumination"; Bitterli et al. 2020, eq. 6 with M
+   candidates): M = 8 candidates l_i drawn from the light cells' P(l | x) (light_cells.hpp),
+   each weighted w_i = t(l_i) / P(l_i | x) by the target t(l) = Y(f NoL E_l) towards l's centre
+   (plus a 2% floor of its diffuse term), one l_j kept with probability w_j / sum w, then
+       Lo_local ~ f(v, w_j) E_j NoL_j vis(w_j) / t(l_j) x (1 / M) sum_i w_i
+   unbiased wherever t > 0 where a light gives light, which the floor ensures. One shadow ray;
+   the unshadowed part is nearly exact, so what is left is the visibility's noise.
 */
 /// A surface point as the transport shades it.
 struct ShadingPoint {
@@ -49,8 +60,8 @@ struct ShadingPoint {
 /// Light reaches the point only from above both its geometric and its shading surface: the
 /// BRDF is evaluated about the shading normal, rays leave along the geometric one.
 [[nodiscard]] glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
-                                       const ShadingPoint& point, const glm::vec3& toViewer,
-                                       Rng& rng, RayCounts& rays);
+                                       const TransportSettings& settings, const ShadingPoint& point,
+                                       const glm::vec3& toViewer, Rng& rng, RayCounts& rays);
 
 /// Whether `lights` holds light that is found two ways, by next-event estimation and by the
 /// paths' own directions: emissive surfaces, or a sky image. (A uniform sky is left to the
@@ -72,10 +83,10 @@ struct EmissionEstimate {
                                               const glm::vec3& origin, const glm::vec3& normal,
                                               Rng& rng, RayCounts& rays);
 
-/// The density (per steradian) with which sampleEmission draws the point a ray found on scene
-/// triangle `triangle` at `distance`, arriving at cosine `cosLight` to it.
-[[nodiscard]] float emitterHitPdf(const BakeLights& lights, uint32_t triangle, float distance,
-                                  float cosLight);
+/// The density (per steradian) with which sampleEmission, from `origin`, draws the point a ray
+/// found on scene triangle `triangle` at `distance`, arriving at cosine `cosLight` to it.
+[[nodiscard]] float emitterHitPdf(const BakeLights& lights, const glm::vec3& origin,
+                                  uint32_t triangle, float distance, float cosLight);
 
 /// The density with which sampleEmission draws `direction`, a ray that escaped to the sky.
 [[nodiscard]] float skyEscapePdf(const BakeLights& lights, const glm::vec3& direction);
@@ -104,6 +115,13 @@ struct FirstHit {
    at the level of detail of the path's footprint `cone` (ray_cone.hpp), which each bounce
    widens; the continuation carries the material's ambient occlusion, as the runtime applies it
    to the secondary light.
+   With a radiance cache (settings.cache), a hit whose specular lobe is drawn with probability
+   at most 1/2 (specularProbability: every dielectric but mirrors seen at grazing) and that the
+   cache covers ends the path with the light the cache says leaves it, diffusely:
+       Lo(y) ~ albedo / pi (E_direct(y) + occlusion E_indirect(y))   (+ its emission)
+   Its specular reflection is left out (the bias: f0 ~ 4% of the light for a dielectric), and
+   the cached irradiance is the nearest texel's (piecewise constant over a texel). Metals,
+   mirrors and hits the cache does not cover continue the path as below.
    Emissive surfaces (emitters.hpp) and a sky image (sky.hpp) are found two ways, combined by
    multiple importance sampling (Veach 1997, ch. 9, power heuristic): at every hit one
    sampleEmission (weight w_e = p_e^2 / (p_e^2 + p_f^2), p_f the continuation's density of that

@@ -6,6 +6,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "bake/lighting/direct_light.hpp"
 #include "bake/lighting/sampling.hpp"
 
 namespace onelight::bake {
@@ -46,7 +47,8 @@ glm::vec3 moveOutOfGeometry(const BakeScene& scene, const glm::vec3& origin,
 /*
    Secondary irradiance at a texel (point x, normal n), own primary P:
      E_sec = sum_{l != P} E_l (n . w_l) V_l  +  int_{H(n)} L_ind(x, w) (n . w) dw
-   Direct part: E_l and w_l analytic (lights.hpp), V_l by stratified shadow rays.
+   Direct part: E_l and w_l analytic (lights.hpp), V_l by stratified shadow rays shared among
+   the lights that reach the texel by their importance Y(E_l (n.w_l)) (direct_light.hpp).
    Indirect part: w_i cosine-distributed on a rotated Hammersley set (pdf (n . w) / pi), so
      int L (n . w) dw ~ (1/N) sum_i L(w_i) (n . w_i) / pdf(w_i) = (pi / N) sum_i L(w_i)
    where L(w_i) = traceRadiance (every bounce of every light, and the sky on escape).
@@ -68,14 +70,16 @@ struct TexelEstimate {
     glm::dvec3 direct{0.0}, indirect{0.0};                    // lux
     glm::dvec3 directDirection{0.0}, indirectDirection{0.0};  // sum Y(E) w
     double directLuminance = 0.0, indirectLuminance = 0.0;
-    double noise = 0.0;  // luminance standard error of the indirect part
+    double noise = 0.0;         // luminance standard error of the indirect part
+    glm::vec3 ownDirect{0.0f};  // lux from the own primary, shadowed (for the bounce cache)
     uint8_t mask = 0;
     bool moved = false;
 };
 
-TexelEstimate estimateTexel(const BakeScene& scene, const BakeLights& lights,
-                            const world::CompiledLevel& level, const TexelSample& sample,
-                            const LightmapSettings& settings, RayCounts& rays) {
+/// The texel's origin, its own primary's shadow mask and the other lights' shadowed light.
+TexelEstimate estimateDirect(const BakeScene& scene, const BakeLights& lights,
+                             const world::CompiledLevel& level, const TexelSample& sample,
+                             const LightmapSettings& settings, RayCounts& rays) {
     TexelEstimate out;
     Rng rng{seedFrom(sample.atlas, sample.x, sample.y, kLightmapPass)};
     const glm::vec3 n = sample.normal;
@@ -95,61 +99,166 @@ TexelEstimate estimateTexel(const BakeScene& scene, const BakeLights& lights,
         const float v =
             lightVisibility(scene, *own, incidence, origin, settings.shadowSamples, rng, rays);
         out.mask = static_cast<uint8_t>(std::lround(v * 255.0f));
+        const LightIncidence atCentre = lightIncidence(*own, centre);
+        out.ownDirect = atCentre.irradiance * (std::max(0.0f, glm::dot(n, atCentre.direction)) * v);
     }
-    for (const BakeLight& light : lights.lights) {
+    std::vector<LightTerm> terms;
+    std::vector<LightIncidence> atCentre;
+    for (const uint32_t l : lightsNear(lights, origin)) {
+        const BakeLight& light = lights.lights[l];
         if (&light == own) continue;
         const LightIncidence incidence = lightIncidence(light, origin);
-        const LightIncidence atCentre = lightIncidence(light, centre);
-        const float cosine = glm::dot(n, atCentre.direction);
+        const LightIncidence centreIncidence = lightIncidence(light, centre);
+        const float cosine = glm::dot(n, centreIncidence.direction);
         if (glm::dot(n, incidence.direction) <= 0.0f || cosine <= 0.0f ||
-            atCentre.irradiance == glm::vec3(0.0f))
+            centreIncidence.irradiance == glm::vec3(0.0f))
             continue;
-        const float v =
-            lightVisibility(scene, light, incidence, origin, settings.shadowSamples, rng, rays);
-        const glm::vec3 e = atCentre.irradiance * (cosine * v);
-        out.direct += glm::dvec3(e);
-        out.directDirection += double(luminance(e)) * glm::dvec3(atCentre.direction);
-        out.directLuminance += double(luminance(e));
+        terms.push_back({l, incidence, luminance(centreIncidence.irradiance) * cosine,
+                         !settings.transport.sampleLights});
+        atCentre.push_back(centreIncidence);
     }
-    const uint32_t count = settings.indirectSamples;
-    if (count > 0) {
-        const Frame frame = frameAround(n);
-        const float s0 = rng.next(), s1 = rng.next();
-        const bool emission = samplesEmission(lights);
-        double sumY2 = 0.0;
-        for (uint32_t i = 0; i < count; ++i) {
-            const glm::vec3 w = glm::normalize(
-                frame.toWorld(sampleCosineHemisphere(rotatedHammersley(i, count, s0, s1))));
-            const float pdf = glm::dot(n, w) / kPi;
-            glm::vec3 e =
-                kPi * traceRadiance(scene, lights, settings.transport, origin, w,
-                                    RayCone{sample.texelSize, sampleSpread(2.0f * kPi, count)}, rng,
-                                    rays, nullptr, emission ? pdf : 0.0f);
-            out.indirectDirection += double(luminance(e)) * glm::dvec3(w);
-            if (emission) {
-                const EmissionEstimate l = sampleEmission(scene, lights, origin, n, rng, rays);
-                if (l.pdf > 0.0f) {
-                    const float cosine = glm::dot(n, l.direction);
-                    const glm::vec3 el =
-                        l.radianceOverPdf * cosine * powerHeuristic(l.pdf, cosine / kPi);
-                    out.indirectDirection += double(luminance(el)) * glm::dvec3(l.direction);
-                    e += el;
-                }
-            }
-            const double y = luminance(e);
-            out.indirect += glm::dvec3(e);
-            out.indirectLuminance += y;
-            sumY2 += y * y;
-        }
-        const double inv = 1.0 / count;
-        out.indirect *= inv;
-        out.indirectDirection *= inv;
-        out.indirectLuminance *= inv;
-        const double mean = out.indirectLuminance;
-        out.noise = std::sqrt(std::max(0.0, sumY2 * inv - mean * mean) * inv);
+    estimateVisibilities(scene, lights, terms, origin, settings.shadowSamples, rng, rays);
+    for (size_t t = 0; t < terms.size(); ++t) {
+        const glm::vec3 e =
+            atCentre[t].irradiance * (glm::dot(n, atCentre[t].direction) * terms[t].visibility);
+        out.direct += glm::dvec3(e);
+        out.directDirection += double(luminance(e)) * glm::dvec3(atCentre[t].direction);
+        out.directLuminance += double(luminance(e));
     }
     return out;
 }
+
+/// The texel's indirect light by `count` gathering directions, each a path (or, with a cache
+/// in `transport`, a ray that reads the cache where it lands), seeded for pass `pass`.
+void estimateIndirect(const BakeScene& scene, const BakeLights& lights, const TexelSample& sample,
+                      uint32_t count, const TransportSettings& transport, uint32_t pass,
+                      TexelEstimate& out, RayCounts& rays) {
+    out.indirect = glm::dvec3(0.0);
+    out.indirectDirection = glm::dvec3(0.0);
+    out.indirectLuminance = 0.0;
+    out.noise = 0.0;
+    if (count == 0) return;
+    Rng rng{seedFrom(sample.atlas, sample.x, sample.y, kLightmapPass + 1 + pass)};
+    const glm::vec3 n = sample.normal;
+    const glm::vec3 origin = out.origin;
+    const Frame frame = frameAround(n);
+    const float s0 = rng.next(), s1 = rng.next();
+    const bool emission = samplesEmission(lights);
+    double sumY2 = 0.0;
+    for (uint32_t i = 0; i < count; ++i) {
+        const glm::vec3 w = glm::normalize(
+            frame.toWorld(sampleCosineHemisphere(rotatedHammersley(i, count, s0, s1))));
+        const float pdf = glm::dot(n, w) / kPi;
+        glm::vec3 e =
+            kPi * traceRadiance(scene, lights, transport, origin, w,
+                                RayCone{sample.texelSize, sampleSpread(2.0f * kPi, count)}, rng,
+                                rays, nullptr, emission ? pdf : 0.0f);
+        out.indirectDirection += double(luminance(e)) * glm::dvec3(w);
+        if (emission) {
+            const EmissionEstimate l = sampleEmission(scene, lights, origin, n, rng, rays);
+            if (l.pdf > 0.0f) {
+                const float cosine = glm::dot(n, l.direction);
+                const glm::vec3 el =
+                    l.radianceOverPdf * cosine * powerHeuristic(l.pdf, cosine / kPi);
+                out.indirectDirection += double(luminance(el)) * glm::dvec3(l.direction);
+                e += el;
+            }
+        }
+        const double y = luminance(e);
+        out.indirect += glm::dvec3(e);
+        out.indirectLuminance += y;
+        sumY2 += y * y;
+    }
+    const double inv = 1.0 / count;
+    out.indirect *= inv;
+    out.indirectDirection *= inv;
+    out.indirectLuminance *= inv;
+    const double mean = out.indirectLuminance;
+    out.noise = std::sqrt(std::max(0.0, sumY2 * inv - mean * mean) * inv);
+}
+
+/// Progress units of the final gather per texel: its rays over a cache pass's.
+uint64_t finalPassUnits(const LightmapSettings& settings) {
+    return settings.bouncePasses > 0
+               ? std::max<uint64_t>(1,
+                                    settings.indirectSamples / std::max(1u, settings.cacheSamples))
+               : 1;
+}
+
+/*
+   Cached bounces (Jacobi iteration over the texels): E_0 = the texels' direct light (every
+   light, the own primary included, shadowed); pass k gathers cacheSamples cosine directions
+   per texel whose rays read the cache of pass k - 1 where they land (radiance.hpp), so
+     E_ind,k(x) = (pi / N) sum_i Lo_{k-1}(y_i),   Lo_{k-1}(y) = albedo / pi (E_0 + E_ind,k-1)(y)
+   holds bounces 1..k. The bounces beyond the last pass K are the tail of a series whose ratio
+   r is measured over the level: r = sum Y(E_K - E_K-1) / sum Y(E_K-1 - E_K-2), clamped to
+   [0, 0.9], and E_ind = E_K + (E_K - E_K-1) r / (1 - r) (exact for an enclosure of uniform
+   albedo, where r = albedo). The final gather of each texel then reads this cache.
+*/
+RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
+                          const std::vector<TexelSample>& samples,
+                          const std::vector<TexelEstimate>& direct,
+                          const LightmapSettings& settings, Progress* progress,
+                          tbb::enumerable_thread_specific<RayCounts>& rays) {
+    RadianceCache cache;
+    const size_t n = samples.size();
+    cache.position.resize(n);
+    cache.normal.resize(n);
+    cache.reach.resize(n);
+    cache.direct.resize(n);
+    cache.indirect.assign(n, glm::vec3(0.0f));
+    for (size_t i = 0; i < n; ++i) {
+        cache.position[i] = direct[i].origin;
+        cache.normal[i] = samples[i].normal;
+        cache.reach[i] = samples[i].texelSize;
+        cache.direct[i] = glm::vec3(direct[i].direct) + direct[i].ownDirect;
+    }
+    indexRadianceCache(cache);
+    TransportSettings transport = settings.transport;
+    transport.cache = &cache;
+    std::vector<glm::vec3> previous(n, glm::vec3(0.0f)), beforePrevious(n, glm::vec3(0.0f));
+    std::vector<glm::vec3> next(n);
+    for (uint32_t pass = 0; pass < settings.bouncePasses; ++pass) {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
+            RayCounts& local = rays.local();
+            for (size_t i = r.begin(); i != r.end(); ++i) {
+                TexelEstimate e;
+                e.origin = direct[i].origin;
+                estimateIndirect(scene, lights, samples[i], settings.cacheSamples, transport, pass,
+                                 e, local);
+                next[i] = glm::vec3(e.indirect);
+            }
+            if (progress) progress->advance(r.size());
+        });
+        beforePrevious.swap(previous);
+        previous = cache.indirect;
+        cache.indirect = next;
+    }
+    if (settings.bouncePasses >= 2) {
+        double last = 0.0, before = 0.0;
+        for (size_t i = 0; i < n; ++i) {
+            last += double(luminance(cache.indirect[i] - previous[i]));
+            before += double(luminance(previous[i] - beforePrevious[i]));
+        }
+        const double r = before > 0.0 ? std::clamp(last / before, 0.0, 0.9) : 0.0;
+        const float tail = static_cast<float>(r / (1.0 - r));
+        for (size_t i = 0; i < n; ++i)
+            cache.indirect[i] = glm::max(
+                cache.indirect[i] + (cache.indirect[i] - previous[i]) * tail, glm::vec3(0.0f));
+    }
+    return cache;
+}
+
+}  // namespace
+
+uint64_t lightmapWorkUnits(size_t allSamples, size_t ownedSamples,
+                           const LightmapSettings& settings) {
+    const uint64_t passes = settings.bouncePasses > 0 ? 1 + settings.bouncePasses : 0;
+    return uint64_t(allSamples) * passes + uint64_t(ownedSamples) * finalPassUnits(settings) +
+           (settings.bouncePasses > 0 ? 0 : ownedSamples);
+}
+
+namespace {
 
 // The indirect filter's radii (texels) and the relative-noise thresholds between them.
 constexpr int kIndirectFilterRadii[3] = {1, 2, 3};
@@ -165,8 +274,8 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
                                  const world::CompiledLevel& level,
                                  const std::vector<TexelSample>& samples,
                                  const LightmapSettings& settings, uint64_t texelBegin,
-                                 uint64_t texelEnd, world::BakedLighting& baked,
-                                 Progress* progress) {
+                                 uint64_t texelEnd, world::BakedLighting& baked, Progress* progress,
+                                 RadianceCache* cacheOut) {
     const auto lower = [&](uint64_t texel) {
         return static_cast<size_t>(
             std::lower_bound(samples.begin(), samples.end(), texel,
@@ -184,13 +293,33 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
     const size_t ownedBegin = lower(texelBegin), ownedEnd = lower(texelEnd);
     const size_t begin = lower(texelBegin > halo ? texelBegin - halo : 0);
     const size_t end = lower(texelEnd + halo);
-    std::vector<TexelEstimate> estimates(end - begin);
+    // Direct light: of every texel when the bounces are cached (every pass reads them all,
+    // so every shard computes them all), else of the halo range.
+    const bool cached = settings.bouncePasses > 0;
+    const size_t directBegin = cached ? 0 : begin, directEnd = cached ? samples.size() : end;
+    std::vector<TexelEstimate> all(directEnd - directBegin);
     tbb::enumerable_thread_specific<RayCounts> rays;
-    tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 16), [&](const auto& range) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(directBegin, directEnd, 16), [&](const auto& r) {
         RayCounts& local = rays.local();
-        for (size_t i = range.begin(); i != range.end(); ++i)
-            estimates[i - begin] = estimateTexel(scene, lights, level, samples[i], settings, local);
-        if (progress) progress->advance(range.size());
+        for (size_t i = r.begin(); i != r.end(); ++i)
+            all[i - directBegin] =
+                estimateDirect(scene, lights, level, samples[i], settings, local);
+        if (progress) progress->advance(r.size());
+    });
+    RadianceCache cache;
+    TransportSettings finalTransport = settings.transport;
+    if (cached) {
+        cache = bounceCache(scene, lights, samples, all, settings, progress, rays);
+        finalTransport.cache = &cache;
+    }
+    TexelEstimate* const estimates = all.data() + (begin - directBegin);
+    const uint64_t finalUnits = finalPassUnits(settings);
+    tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 16), [&](const auto& r) {
+        RayCounts& local = rays.local();
+        for (size_t i = r.begin(); i != r.end(); ++i)
+            estimateIndirect(scene, lights, samples[i], settings.indirectSamples, finalTransport,
+                             settings.bouncePasses, estimates[i - begin], local);
+        if (progress) progress->advance(r.size() * finalUnits);
     });
 
     // Find a texel's estimate by its global index.
@@ -294,6 +423,7 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             baked.shadowMask[s.texel] = e.mask;
         }
     });
+    if (cacheOut) *cacheOut = std::move(cache);
     LightmapStats stats;
     for (const RayCounts& r : rays) stats.rays += r;
     stats.texelsBaked = ownedEnd - ownedBegin;

@@ -16,7 +16,11 @@ namespace onelight::bake {
 
 struct LightmapSettings {
     uint32_t shadowSamples = 16;     // shadow rays per light per texel (stratified)
-    uint32_t indirectSamples = 256;  // cosine-distributed paths per texel
+    uint32_t indirectSamples = 256;  // cosine-distributed gathering directions per texel
+    // Cached bounces (lightmap_bake.cpp): passes over every texel before the final gather, and
+    // their directions per texel. 0 passes: every direction is a whole path instead.
+    uint32_t bouncePasses = 0;
+    uint32_t cacheSamples = 64;
     TransportSettings transport;
 };
 
@@ -30,13 +34,20 @@ struct LightmapStats {
 /// Bakes the texels of `samples` whose global index is in [texelBegin, texelEnd) into
 /// `baked` (already sized: texels and shadowMask to totalTexels). Each texel's random
 /// sequence is seeded from (atlas, x, y, pass), so the result does not depend on threads,
-/// order or sharding.
+/// order or sharding. With bounce passes, the cache of every texel is left in `cache` (when
+/// given) for the grid and the probes to read.
 [[nodiscard]] LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& lights,
                                                const world::CompiledLevel& level,
                                                const std::vector<TexelSample>& samples,
                                                const LightmapSettings& settings,
                                                uint64_t texelBegin, uint64_t texelEnd,
-                                               world::BakedLighting& baked, Progress* progress);
+                                               world::BakedLighting& baked, Progress* progress,
+                                               RadianceCache* cache = nullptr);
+
+/// The progress units bakeLightmapTexels advances by for `allSamples` texels of which it owns
+/// `ownedSamples`.
+[[nodiscard]] uint64_t lightmapWorkUnits(size_t allSamples, size_t ownedSamples,
+                                         const LightmapSettings& settings);
 
 /// Fills each chart's unsampled texels from their sampled neighbours, ring by ring, inside
 /// the chart's rectangle only (charts never bleed into each other).

@@ -1,0 +1,89 @@
+#include "bake/lighting/radiance_cache.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace onelight::bake {
+namespace {
+
+constexpr float kNormalAgreement = 0.8f;  // cos 37 degrees
+constexpr float kPlaneTolerance = 0.25f;  // of the point's reach
+
+uint32_t bucketOf(const glm::ivec3& c, uint32_t mask) {
+    uint32_t h = static_cast<uint32_t>(c.x) * 73856093u;
+    h ^= static_cast<uint32_t>(c.y) * 19349663u;
+    h ^= static_cast<uint32_t>(c.z) * 83492791u;
+    return h & mask;
+}
+
+glm::ivec3 cellOfPoint(const glm::vec3& p, float size) {
+    return glm::ivec3(glm::floor(p / size));
+}
+
+}  // namespace
+
+void indexRadianceCache(RadianceCache& cache) {
+    const size_t n = cache.position.size();
+    cache.slots.clear();
+    cache.bucketFirst.clear();
+    if (n == 0) return;
+    std::vector<float> sorted = cache.reach;
+    const size_t at = std::min(n - 1, n * 95 / 100);
+    std::nth_element(sorted.begin(), sorted.begin() + long(at), sorted.end());
+    const float maxReach = std::max(sorted[at], 1e-6f);
+    for (float& r : cache.reach) r = std::min(r, maxReach);
+    cache.cellSize = 2.0f * maxReach;
+    uint32_t buckets = 1;
+    while (buckets < 2 * n && buckets < (1u << 30)) buckets <<= 1;
+    cache.bucketMask = buckets - 1;
+    cache.bucketFirst.assign(size_t(buckets) + 1, 0);
+    std::vector<uint32_t> bucket(n);
+    for (size_t i = 0; i < n; ++i) {
+        bucket[i] = bucketOf(cellOfPoint(cache.position[i], cache.cellSize), cache.bucketMask);
+        ++cache.bucketFirst[bucket[i] + 1];
+    }
+    for (size_t b = 0; b < buckets; ++b) cache.bucketFirst[b + 1] += cache.bucketFirst[b];
+    cache.slots.resize(n);
+    std::vector<uint32_t> fill(cache.bucketFirst.begin(), cache.bucketFirst.end() - 1);
+    for (size_t i = 0; i < n; ++i)
+        cache.slots[fill[bucket[i]]++] = {cache.position[i], cache.reach[i], cache.normal[i],
+                                          static_cast<uint32_t>(i)};
+}
+
+uint32_t findCachePoint(const RadianceCache& cache, const glm::vec3& position,
+                        const glm::vec3& normal) {
+    if (cache.empty()) return kNoCachePoint;
+    // The sphere of radius cellSize / 2 around the point lies in these 2 x 2 x 2 cells.
+    const glm::ivec3 base = cellOfPoint(position - 0.5f * cache.cellSize, cache.cellSize);
+    uint32_t best = kNoCachePoint;
+    float bestDistance2 = 0.0f;
+    uint32_t visited[8];
+    int visitedCount = 0;
+    for (int dz = 0; dz < 2; ++dz)
+        for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) {
+                const uint32_t b = bucketOf(base + glm::ivec3(dx, dy, dz), cache.bucketMask);
+                if (std::find(visited, visited + visitedCount, b) != visited + visitedCount)
+                    continue;
+                visited[visitedCount++] = b;
+                const RadianceCache::Slot* slot = cache.slots.data() + cache.bucketFirst[b];
+                const RadianceCache::Slot* end = cache.slots.data() + cache.bucketFirst[b + 1];
+                for (; slot != end; ++slot) {
+                    const glm::vec3 d = position - slot->position;
+                    const float d2 = glm::dot(d, d);
+                    const float r = slot->reach;
+                    if (d2 > r * r) continue;
+                    if (best != kNoCachePoint &&
+                        (d2 > bestDistance2 || (d2 == bestDistance2 && slot->point > best)))
+                        continue;
+                    if (glm::dot(normal, slot->normal) < kNormalAgreement ||
+                        std::fabs(glm::dot(d, slot->normal)) > kPlaneTolerance * r)
+                        continue;
+                    best = slot->point;
+                    bestDistance2 = d2;
+                }
+            }
+    return best;
+}
+
+}  // namespace onelight::bake
