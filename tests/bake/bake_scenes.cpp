@@ -270,6 +270,25 @@ world::SourceLevel texturedRoomWithProbes(const std::string& folder) {
     return level;
 }
 
+world::SourceLevel manyLightsFloor(uint32_t n) {
+    world::SourceLevel level;
+    const uint32_t floor = addLambertMaterial(level, 0.5f);
+    addQuad(level, {-4, -4, 0}, {4, -4, 0}, {4, 4, 0}, {-4, 4, 0}, floor, "floor");
+    addBox(level, {-2.2f, -1.5f, 0}, {-1.2f, 1.5f, 0.6f}, floor, false, "block_a");
+    addBox(level, {0.8f, -2.5f, 0}, {2.6f, -1.6f, 0.9f}, floor, false, "block_b");
+    addBox(level, {0.9f, 1.0f, 0}, {1.5f, 2.8f, 0.4f}, floor, false, "block_c");
+    const float step = 8.0f / float(n);
+    for (uint32_t y = 0; y < n; ++y)
+        for (uint32_t x = 0; x < n; ++x) {
+            world::Light l = pointLight(
+                {-4.0f + (float(x) + 0.5f) * step, -4.0f + (float(y) + 0.5f) * step, 1.2f},
+                2.0f + float((x * 7 + y * 3) % 5), world::LightRole::kBaked);
+            l.range = (x + y) % 3 == 0 ? 4.0f : 0.0f;
+            level.lights.push_back(l);
+        }
+    return level;
+}
+
 BakeOptions fastBakeOptions() {
     BakeOptions o = testOptions(4.0f);
     o.indirectSamples = 16;

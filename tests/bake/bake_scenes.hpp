@@ -69,6 +69,10 @@ world::SourceLevel smallRoomWithProbes();
 /// holes (textures written as PNGs into `folder`; uv0 projected from the positions).
 world::SourceLevel texturedRoomWithProbes(const std::string& folder);
 
+/// An 8 x 8 m floor (albedo 0.5) with three blocks, under n x n baked point lights 1.2 m up
+/// spread over it (2 to 6 cd, a third of them with a 4 m range): the many-lights level.
+world::SourceLevel manyLightsFloor(uint32_t n);
+
 /// testOptions at 4 texels/m with a few samples of everything: seconds for smallRoom.
 BakeOptions fastBakeOptions();
 

@@ -59,6 +59,8 @@ struct BenchOptions {
     uint32_t threads = 0;                // 0: every core
     bool throughputOnly = false;         // part 1 only (for profiling)
     bool materialsOnly = false;          // part 5 only
+    bool lightsOnly = false;             // part 4 only
+    float lightsTexelsPerMetre = 8.0f;   // the many-lights floor
     std::string csv;
 };
 
@@ -503,6 +505,36 @@ void scaling(const BenchOptions& o) {
         "linear. bake s includes compile and grid, which do not scale with texels)\n");
 }
 
+/// Bake time against light count: the many-lights floor with 8 (approximately: 3 x 3 = 9),
+/// 32 (6 x 6 = 36) and 128 (11 x 11 = 121) lights at default quality, as the baker bakes it
+/// (lights by importance, cached bounces) and with every light along whole paths.
+void lightScaling(const BenchOptions& o) {
+    std::printf("\n== 4. Lights: the many-lights floor at default quality, %.0f texels/m ==\n",
+                double(o.lightsTexelsPerMetre));
+    std::printf("%-7s %-22s %9s %11s %13s %12s\n", "lights", "estimator", "bake s", "lightmap s",
+                "shadow/texel", "vs fewest");
+    const uint32_t sides[3] = {3, 6, 11};
+    for (int mode = 0; mode < 2; ++mode) {
+        double first = 0.0;
+        for (uint32_t side : sides) {
+            BakeOptions options = test::testOptions(o.lightsTexelsPerMetre, BakeQuality::kDefault);
+            options.gridCellSize = 2.0f;
+            options.allLights = options.pathsOnly = mode == 1;
+            const Bake b = timedBake(test::manyLightsFloor(side), options);
+            const BakeReport& r = b.result.report;
+            const double lightmap = stageSeconds(r, "lightmaps");
+            if (side == sides[0]) first = b.seconds;
+            uint64_t shadow = 0;
+            for (const StageReport& s : r.stages)
+                if (s.name == "lightmaps") shadow = s.rays.shadow;
+            std::printf("%-7u %-22s %9.2f %11.2f %13.1f %12.2f\n", side * side,
+                        mode == 0 ? "by importance, cached" : "every light, paths", b.seconds,
+                        lightmap, double(shadow) / double(std::max<uint64_t>(1, r.texelsSampled)),
+                        b.seconds / first);
+        }
+    }
+}
+
 bool parse(int argc, char** argv, BenchOptions& o) {
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -523,6 +555,8 @@ bool parse(int argc, char** argv, BenchOptions& o) {
             o.threads = uint32_t(std::strtoul(argv[++i], nullptr, 10));
         else if (a == "--throughput-only")
             o.throughputOnly = true;
+        else if (a == "--lights-only")
+            o.lightsOnly = true;
         else if (a == "--materials-only")
             o.materialsOnly = true;
         else if (a == "--csv" && has_value)
@@ -591,7 +625,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr,
                      "usage: onelight-bench-bake [--triangles N] [--texels N] [--reference-spp N] "
                      "[--stride N] [--scaling-texels-per-metre X] [--repeats N] [--threads N] "
-                     "[--throughput-only] [--materials-only] [--csv PATH]\n");
+                     "[--throughput-only] [--materials-only] [--lights-only] [--csv PATH]\n");
         return 2;
     }
     const uint32_t threads =
@@ -603,11 +637,14 @@ int main(int argc, char** argv) {
     try {
         if (o.materialsOnly) {
             materials(o);
+        } else if (o.lightsOnly) {
+            lightScaling(o);
         } else if (!rayThroughput(o)) {
             return 1;
         } else if (!o.throughputOnly) {
             if (!speedAgainstError(o)) return 1;
             scaling(o);
+            lightScaling(o);
             materials(o);
         }
     } catch (const std::exception& e) {

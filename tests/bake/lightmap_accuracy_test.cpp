@@ -195,7 +195,9 @@ TEST(LightmapAccuracy, OneCentimetreWallLeaksLessThanATenthOfAPercent) {
 // same points: a closed room with an occluding block, a primary point light and a secondary
 // spot, default quality. Reference: 32768 independent samples per point; its own RMS noise is
 // ~0.53% (onelight-bench-bake measures 0.38% at 65536; at 8192 it was ~1.1%, half the budget).
-// Issue tolerance: 2% RMS.
+// The bake gathers from cached bounces (4 passes of 64 directions, then 512): 1.03% RMS, for
+// fewer rays than whole paths need at the same quality (checked below). Issue 14's tolerance:
+// 1.5% RMS.
 TEST(LightmapAccuracy, LightmapAgreesWithReferencePathTracer) {
     constexpr uint32_t kReferenceSamples = 32768;
     const world::SourceLevel level = test::agreementRoom();
@@ -230,7 +232,18 @@ TEST(LightmapAccuracy, LightmapAgreesWithReferencePathTracer) {
     ASSERT_GT(count, 30u);
     const double rms = std::sqrt(sumSq / double(count));
     std::printf("lightmap vs reference: %zu points, RMS relative error %.4f\n", count, rms);
-    EXPECT_LT(rms, 0.02);
+    EXPECT_LT(rms, 0.015);
+    const auto lightmapRays = [](const BakeResult& r) {
+        for (const StageReport& stage : r.report.stages)
+            if (stage.name == "lightmaps") return stage.rays.total();
+        return uint64_t(0);
+    };
+    options.pathsOnly = true;
+    const BakeResult paths = bakeLevel(level, options);
+    std::printf("lightmap rays: cached %llu, whole paths %llu\n",
+                static_cast<unsigned long long>(lightmapRays(b.result)),
+                static_cast<unsigned long long>(lightmapRays(paths)));
+    EXPECT_LE(lightmapRays(b.result), lightmapRays(paths));
 }
 
 }  // namespace

@@ -83,20 +83,7 @@ TEST(LightCells, SpotIsNotDrawnBehindItsCone) {
 // light) stays well below that at 4 texels/m. The importance-sampled bake traces at most 1/8
 // of the shadow rays.
 TEST(ManyLights, SampledLightsAgreeWithEveryLightAtAnEighthOfTheShadowRays) {
-    world::SourceLevel level;
-    const uint32_t floor = test::addLambertMaterial(level, 0.5f);
-    test::addQuad(level, {-4, -4, 0}, {4, -4, 0}, {4, 4, 0}, {-4, 4, 0}, floor, "floor");
-    test::addBox(level, {-2.2f, -1.5f, 0}, {-1.2f, 1.5f, 0.6f}, floor, false, "block_a");
-    test::addBox(level, {0.8f, -2.5f, 0}, {2.6f, -1.6f, 0.9f}, floor, false, "block_b");
-    test::addBox(level, {0.9f, 1.0f, 0}, {1.5f, 2.8f, 0.4f}, floor, false, "block_c");
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) {
-            world::Light l =
-                test::pointLight({float(x) - 3.5f, float(y) - 3.5f, 1.2f},
-                                 2.0f + float((x * 7 + y * 3) % 5), world::LightRole::kBaked);
-            l.range = (x + y) % 3 == 0 ? 4.0f : 0.0f;
-            level.lights.push_back(l);
-        }
+    const world::SourceLevel level = test::manyLightsFloor(8);
     BakeOptions options = test::testOptions(4.0f, BakeQuality::kDefault);
     options.gridCellSize = 4.0f;
     const BakeResult sampled = bakeLevel(level, options);
