@@ -295,24 +295,7 @@ SurfaceHit BakeScene::intersect(const glm::vec3& origin, const glm::vec3& dir, f
                                 uint64_t& counter) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit query;
-    query.ray.org_x = origin.x;
-    query.ray.org_y = origin.y;
-    query.ray.org_z = origin.z;
-    query.ray.tnear = 0.0f;
-    query.ray.dir_x = dir.x;
-    query.ray.dir_y = dir.y;
-    query.ray.dir_z = dir.z;
-    query.ray.time = 0.0f;
-    query.ray.tfar = maxDistance;
-    query.ray.mask = 0xFFFFFFFFu;
-    query.ray.id = 0;
-    query.ray.flags = 0;
-    query.hit.Ng_x = query.hit.Ng_y = query.hit.Ng_z = 0.0f;
-    query.hit.u = query.hit.v = 0.0f;
-    query.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit query = embreeRay(origin, dir, maxDistance);
     rtcIntersect1(scene_, &context, &query);
     ++counter;
     if (observer_) observer_(observerUser_, {origin, maxDistance, dir, false});
@@ -337,19 +320,7 @@ bool BakeScene::occluded(const glm::vec3& origin, const glm::vec3& dir, float ma
                          uint64_t& counter) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay ray;
-    ray.org_x = origin.x;
-    ray.org_y = origin.y;
-    ray.org_z = origin.z;
-    ray.tnear = 0.0f;
-    ray.dir_x = dir.x;
-    ray.dir_y = dir.y;
-    ray.dir_z = dir.z;
-    ray.time = 0.0f;
-    ray.tfar = maxDistance;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
+    RTCRay ray = embreeRay(origin, dir, maxDistance).ray;
     rtcOccluded1(scene_, &context, &ray);
     ++counter;
     if (observer_) observer_(observerUser_, {origin, maxDistance, dir, true});

@@ -52,6 +52,31 @@ struct RayCounts {
     uint64_t total() const { return shadow + bounce + probe; }
 };
 
+/// An Embree query from `origin` along unit `dir` over (0, maxDistance], with no hit recorded
+/// yet: every field that rtcIntersect1 and rtcOccluded1 read is set.
+[[nodiscard]] inline RTCRayHit embreeRay(const glm::vec3& origin, const glm::vec3& dir,
+                                         float maxDistance) {
+    RTCRayHit q;
+    q.ray.org_x = origin.x;
+    q.ray.org_y = origin.y;
+    q.ray.org_z = origin.z;
+    q.ray.tnear = 0.0f;
+    q.ray.dir_x = dir.x;
+    q.ray.dir_y = dir.y;
+    q.ray.dir_z = dir.z;
+    q.ray.time = 0.0f;
+    q.ray.tfar = maxDistance;
+    q.ray.mask = 0xFFFFFFFFu;
+    q.ray.id = 0;
+    q.ray.flags = 0;
+    q.hit.Ng_x = q.hit.Ng_y = q.hit.Ng_z = 0.0f;
+    q.hit.u = q.hit.v = 0.0f;
+    q.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    q.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    q.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return q;
+}
+
 /// What a ray found.
 struct SurfaceHit {
     bool found = false;

@@ -8,13 +8,6 @@ namespace {
 
 constexpr uint32_t kLightsAtFullRate = 8;  // M = 8 S: eight lights keep S rays each
 
-bool visibleAt(const BakeScene& scene, const BakeLight& light, const LightIncidence& incidence,
-               const glm::vec3& origin, glm::vec2 u, RayCounts& rays) {
-    const LightDirection d = sampleLightDirection(light, incidence, u, scene.sceneDiameter());
-    return d.shadowDistance <= 0.0f ||
-           !scene.occluded(origin, d.direction, d.shadowDistance, rays.shadow);
-}
-
 }  // namespace
 
 std::vector<uint32_t> lightsNear(const BakeLights& lights, const glm::vec3& position) {
@@ -77,8 +70,10 @@ void estimateVisibilities(const BakeScene& scene, const BakeLights& lights,
         const size_t k = std::min(size_t(std::upper_bound(cdf.begin(), cdf.end(), u) - cdf.begin()),
                                   small.size() - 1);
         LightTerm& t = terms[small[k]];
-        const glm::vec2 disc(rng.next(), rng.next());
-        if (!visibleAt(scene, lights.lights[t.light], t.incidence, origin, disc, rays)) continue;
+        // One shadow ray towards a random point of the light: 0 or 1.
+        if (lightVisibility(scene, lights.lights[t.light], t.incidence, origin, 1, rng, rays) <
+            1.0f)
+            continue;
         const double pk = (cdf[k] - (k > 0 ? cdf[k - 1] : 0.0));  // p_k / q
         t.visibility += static_cast<float>(1.0 / (pk * double(std::max(1u, m))));
     }

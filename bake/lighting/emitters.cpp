@@ -7,6 +7,15 @@
 #include "bake/lighting/sampling.hpp"
 
 namespace onelight::bake {
+namespace {
+
+/// The density per steradian of a point drawn on a triangle chosen with `probability` and
+/// uniform over its `area`, seen at `distance` and cosine `cosLight` (emitters.hpp).
+float solidAnglePdf(float probability, float area, float distance, float cosLight) {
+    return probability / area * distance * distance / cosLight;
+}
+
+}  // namespace
 
 Emitters collectEmitters(const BakeScene& scene) {
     Emitters out;
@@ -88,7 +97,7 @@ EmitterSample sampleEmitter(const BakeScene& scene, const Emitters& emitters, co
     s.radiance = sampleEmission(scene.materials(), scene.materialIndexOf(e.triangle),
                                 scene.attributesAt(at), backFace, 0.0f);
     if (s.radiance == glm::vec3(0.0f)) return s;
-    s.pdf = pick.probability / e.area * s.distance * s.distance / std::fabs(cosLight);
+    s.pdf = solidAnglePdf(pick.probability, e.area, s.distance, std::fabs(cosLight));
     // Stop short of the emitter by the self-intersection offset, relative to the distance too.
     s.shadowDistance = std::max(0.0f, s.distance * (1.0f - 1e-4f) - 2.0f * scene.rayOffset());
     return s;
@@ -100,8 +109,8 @@ float emitterPdf(const Emitters& emitters, const glm::vec3& from, uint32_t trian
         return 0.0f;
     const uint32_t e = emitters.emitterOf[triangle];
     if (e == ~0u) return 0.0f;
-    return lightProbability(emitters.cells, from, e) / emitters.triangles[e].area * distance *
-           distance / cosLight;
+    return solidAnglePdf(lightProbability(emitters.cells, from, e), emitters.triangles[e].area,
+                         distance, cosLight);
 }
 
 }  // namespace onelight::bake

@@ -50,14 +50,14 @@ bool reaches(const LightBound& s, const glm::vec3& lo, const glm::vec3& hi) {
     return true;
 }
 
-/// Appends one cell's entries from `weights` (0: left out): probabilities and alias table.
-void appendCell(LightCells& cells, const std::vector<double>& weights) {
+/// One cell's entries from `weights` (0: left out): probabilities and alias table.
+std::vector<LightCellEntry> cellTable(const std::vector<double>& weights) {
     double total = 0.0;
     for (double w : weights) total += w;
     const double floor = total * kMinShare;
     double sum = 0.0;
     for (double w : weights) sum += w > 0.0 ? std::max(w, floor) : 0.0;
-    const size_t begin = cells.entries.size();
+    std::vector<LightCellEntry> entries;
     std::vector<double> scaled;  // n p_k: slots above 1 give to slots below
     for (size_t s = 0; s < weights.size(); ++s) {
         if (!(weights[s] > 0.0)) continue;
@@ -65,7 +65,7 @@ void appendCell(LightCells& cells, const std::vector<double>& weights) {
         LightCellEntry e;
         e.source = static_cast<uint32_t>(s);
         e.probability = static_cast<float>(p);
-        cells.entries.push_back(e);
+        entries.push_back(e);
         scaled.push_back(p);
     }
     const size_t n = scaled.size();
@@ -75,7 +75,7 @@ void appendCell(LightCells& cells, const std::vector<double>& weights) {
     while (!small.empty() && !large.empty()) {
         const uint32_t a = small.back(), b = large.back();
         small.pop_back();
-        LightCellEntry& e = cells.entries[begin + a];
+        LightCellEntry& e = entries[a];
         e.keep = static_cast<float>(scaled[a]);
         e.alias = b;
         scaled[b] -= 1.0 - scaled[a];
@@ -85,9 +85,9 @@ void appendCell(LightCells& cells, const std::vector<double>& weights) {
         }
     }
     // Leftovers are 1 up to rounding: they keep themselves.
-    for (uint32_t k : small) cells.entries[begin + k].keep = 1.0f;
-    for (uint32_t k : large) cells.entries[begin + k].keep = 1.0f;
-    cells.first.push_back(static_cast<uint32_t>(cells.entries.size()));
+    for (uint32_t k : small) entries[k].keep = 1.0f;
+    for (uint32_t k : large) entries[k].keep = 1.0f;
+    return entries;
 }
 
 }  // namespace
@@ -132,7 +132,6 @@ LightCells layoutLightCells(size_t sourceCount, glm::vec3 lo, glm::vec3 hi) {
     const glm::vec3 span = glm::vec3(cells.dims) * size;
     cells.origin = 0.5f * (lo + hi) - 0.5f * span * 1.001f;
     cells.cellSize = size * 1.001f;
-
     return cells;
 }
 
@@ -145,7 +144,7 @@ void fillLightCells(LightCells& cells, const std::vector<LightBound>& sources,
     const uint32_t count = cellCount(cells);
     // Each cell's table on its own (in parallel: the visibility traces rays), then joined in
     // cell order, so the result does not depend on the threads.
-    std::vector<LightCells> parts(count + 1);
+    std::vector<std::vector<LightCellEntry>> tables(count + 1);
     tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count + 1), [&](const auto& range) {
         std::vector<double> weights(sources.size());
         for (uint32_t c = range.begin(); c != range.end(); ++c) {
@@ -170,13 +169,12 @@ void fillLightCells(LightCells& cells, const std::vector<LightBound>& sources,
                     w *= kUnseenWeight + (1.0 - kUnseenWeight) * double(std::min(v, 1.0f));
                 weights[s] = w;
             }
-            parts[c].first.push_back(0);
-            appendCell(parts[c], weights);
+            tables[c] = cellTable(weights);
         }
     });
     cells.first.push_back(0);
-    for (const LightCells& part : parts) {
-        cells.entries.insert(cells.entries.end(), part.entries.begin(), part.entries.end());
+    for (const std::vector<LightCellEntry>& table : tables) {
+        cells.entries.insert(cells.entries.end(), table.begin(), table.end());
         cells.first.push_back(static_cast<uint32_t>(cells.entries.size()));
     }
 }

@@ -26,9 +26,9 @@ bool finiteNonNegative(const glm::vec3& c) {
 // diffuse term, so that a light whose centre is just below the horizon while part of it is not
 // keeps a density).
 constexpr uint32_t kRisCandidates = 4;
+constexpr float kRisTargetFloor = 0.02f;
 // A hit whose specular lobe is drawn more often than this continues the path past the cache.
 constexpr float kCacheSpecularLimit = 0.5f;
-constexpr float kRisTargetFloor = 0.02f;
 
 // The probability that sampleEmission draws an emitter point rather than a sky direction.
 float emitterChoice(const BakeLights& lights) {

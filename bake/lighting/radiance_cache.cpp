@@ -22,16 +22,17 @@ glm::ivec3 cellOfPoint(const glm::vec3& p, float size) {
 
 }  // namespace
 
-void indexRadianceCache(RadianceCache& cache) {
-    const size_t n = cache.position.size();
-    cache.slots.clear();
-    cache.bucketFirst.clear();
-    if (n == 0) return;
-    std::vector<float> sorted = cache.reach;
+RadianceCache makeRadianceCache(std::vector<CachePoint> points) {
+    RadianceCache cache;
+    const size_t n = points.size();
+    cache.direct.assign(n, glm::vec3(0.0f));
+    cache.indirect.assign(n, glm::vec3(0.0f));
+    if (n == 0) return cache;
+    std::vector<float> sorted(n);
+    for (size_t i = 0; i < n; ++i) sorted[i] = points[i].reach;
     const size_t at = std::min(n - 1, n * 95 / 100);
     std::nth_element(sorted.begin(), sorted.begin() + long(at), sorted.end());
     const float maxReach = std::max(sorted[at], 1e-6f);
-    for (float& r : cache.reach) r = std::min(r, maxReach);
     cache.cellSize = 2.0f * maxReach;
     uint32_t buckets = 1;
     while (buckets < 2 * n && buckets < (1u << 30)) buckets <<= 1;
@@ -39,15 +40,16 @@ void indexRadianceCache(RadianceCache& cache) {
     cache.bucketFirst.assign(size_t(buckets) + 1, 0);
     std::vector<uint32_t> bucket(n);
     for (size_t i = 0; i < n; ++i) {
-        bucket[i] = bucketOf(cellOfPoint(cache.position[i], cache.cellSize), cache.bucketMask);
+        points[i].index = static_cast<uint32_t>(i);
+        points[i].reach = std::min(points[i].reach, maxReach);
+        bucket[i] = bucketOf(cellOfPoint(points[i].position, cache.cellSize), cache.bucketMask);
         ++cache.bucketFirst[bucket[i] + 1];
     }
     for (size_t b = 0; b < buckets; ++b) cache.bucketFirst[b + 1] += cache.bucketFirst[b];
     cache.slots.resize(n);
     std::vector<uint32_t> fill(cache.bucketFirst.begin(), cache.bucketFirst.end() - 1);
-    for (size_t i = 0; i < n; ++i)
-        cache.slots[fill[bucket[i]]++] = {cache.position[i], cache.reach[i], cache.normal[i],
-                                          static_cast<uint32_t>(i)};
+    for (size_t i = 0; i < n; ++i) cache.slots[fill[bucket[i]]++] = points[i];
+    return cache;
 }
 
 uint32_t findCachePoint(const RadianceCache& cache, const glm::vec3& position,
@@ -66,20 +68,20 @@ uint32_t findCachePoint(const RadianceCache& cache, const glm::vec3& position,
                 if (std::find(visited, visited + visitedCount, b) != visited + visitedCount)
                     continue;
                 visited[visitedCount++] = b;
-                const RadianceCache::Slot* slot = cache.slots.data() + cache.bucketFirst[b];
-                const RadianceCache::Slot* end = cache.slots.data() + cache.bucketFirst[b + 1];
+                const CachePoint* slot = cache.slots.data() + cache.bucketFirst[b];
+                const CachePoint* end = cache.slots.data() + cache.bucketFirst[b + 1];
                 for (; slot != end; ++slot) {
                     const glm::vec3 d = position - slot->position;
                     const float d2 = glm::dot(d, d);
                     const float r = slot->reach;
                     if (d2 > r * r) continue;
                     if (best != kNoCachePoint &&
-                        (d2 > bestDistance2 || (d2 == bestDistance2 && slot->point > best)))
+                        (d2 > bestDistance2 || (d2 == bestDistance2 && slot->index > best)))
                         continue;
                     if (glm::dot(normal, slot->normal) < kNormalAgreement ||
                         std::fabs(glm::dot(d, slot->normal)) > kPlaneTolerance * r)
                         continue;
-                    best = slot->point;
+                    best = slot->index;
                     bestDistance2 = d2;
                 }
             }

@@ -11,32 +11,31 @@
 
 namespace onelight::bake {
 
+/// A point the cache holds light at.
+struct CachePoint {
+    glm::vec3 position{0.0f};  // metres, on (or just off) the surface
+    float reach = 0.0f;        // metres: a hit this close may read the point
+    glm::vec3 normal{0.0f};    // unit, the side that receives
+    uint32_t index = 0;        // into RadianceCache::direct and indirect
+};
+
 struct RadianceCache {
-    std::vector<glm::vec3> position;  // metres, on (or just off) the surface
-    std::vector<glm::vec3> normal;    // unit, the side that receives
-    std::vector<float> reach;         // metres: a hit this close may read the point
-    std::vector<glm::vec3> direct;    // lux from the lights, shadowed
+    std::vector<glm::vec3> direct;    // lux from the lights, shadowed, per point
     std::vector<glm::vec3> indirect;  // lux from everything else (bounces, sky, emitters)
-    // Spatial hash over `position`: cells of `cellSize` (twice the largest reach), hashed into
-    // buckets of `slots` (copies of the points' geometry, in increasing point order within a
-    // bucket, side by side so that a lookup reads them in sequence).
-    struct Slot {
-        glm::vec3 position{0.0f};
-        float reach = 0.0f;
-        glm::vec3 normal{0.0f};
-        uint32_t point = 0;
-    };
+    // Spatial hash over the points: cells of `cellSize` (twice the largest reach), hashed into
+    // buckets of `slots` (the points in increasing index order within a bucket, side by side so
+    // that a lookup reads them in sequence).
     float cellSize = 1.0f;
     uint32_t bucketMask = 0;
     std::vector<uint32_t> bucketFirst;  // bucketMask + 2 offsets into slots
-    std::vector<Slot> slots;
+    std::vector<CachePoint> slots;
     [[nodiscard]] bool empty() const { return slots.empty(); }
 };
 
-/// Builds the spatial hash of `cache` from its positions and reaches (call after filling
-/// them; irradiance may change afterwards). Reaches above the 95th percentile are clamped so
-/// that one coarse chart does not make every cell large.
-void indexRadianceCache(RadianceCache& cache);
+/// A cache of `points` (point i at index i; their `index` is set here), its light zero.
+/// Reaches above the 95th percentile are clamped so that one coarse chart does not make every
+/// cell large.
+[[nodiscard]] RadianceCache makeRadianceCache(std::vector<CachePoint> points);
 
 inline constexpr uint32_t kNoCachePoint = ~0u;
 

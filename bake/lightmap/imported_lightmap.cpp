@@ -6,6 +6,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include "bake/embree/bake_scene.hpp"
+
 namespace onelight::bake {
 namespace {
 
@@ -47,18 +49,7 @@ public:
                    glm::vec2& uv) const {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
-        RTCRayHit q{};
-        q.ray.org_x = origin.x;
-        q.ray.org_y = origin.y;
-        q.ray.org_z = origin.z;
-        q.ray.dir_x = dir.x;
-        q.ray.dir_y = dir.y;
-        q.ray.dir_z = dir.z;
-        q.ray.tnear = 0.0f;
-        q.ray.tfar = maxDistance;
-        q.ray.mask = 0xFFFFFFFFu;
-        q.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        q.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        RTCRayHit q = embreeRay(origin, dir, maxDistance);
         rtcIntersect1(scene_, &context, &q);
         if (q.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
         triangle = q.hit.primID;

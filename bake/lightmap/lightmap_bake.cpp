@@ -200,20 +200,13 @@ RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
                           const std::vector<TexelEstimate>& direct,
                           const LightmapSettings& settings, Progress* progress,
                           tbb::enumerable_thread_specific<RayCounts>& rays) {
-    RadianceCache cache;
     const size_t n = samples.size();
-    cache.position.resize(n);
-    cache.normal.resize(n);
-    cache.reach.resize(n);
-    cache.direct.resize(n);
-    cache.indirect.assign(n, glm::vec3(0.0f));
-    for (size_t i = 0; i < n; ++i) {
-        cache.position[i] = direct[i].origin;
-        cache.normal[i] = samples[i].normal;
-        cache.reach[i] = samples[i].texelSize;
+    std::vector<CachePoint> points(n);
+    for (size_t i = 0; i < n; ++i)
+        points[i] = {direct[i].origin, samples[i].texelSize, samples[i].normal};
+    RadianceCache cache = makeRadianceCache(std::move(points));
+    for (size_t i = 0; i < n; ++i)
         cache.direct[i] = glm::vec3(direct[i].direct) + direct[i].ownDirect;
-    }
-    indexRadianceCache(cache);
     TransportSettings transport = settings.transport;
     transport.cache = &cache;
     std::vector<glm::vec3> previous(n, glm::vec3(0.0f)), beforePrevious(n, glm::vec3(0.0f));
@@ -253,9 +246,12 @@ RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
 
 uint64_t lightmapWorkUnits(size_t allSamples, size_t ownedSamples,
                            const LightmapSettings& settings) {
-    const uint64_t passes = settings.bouncePasses > 0 ? 1 + settings.bouncePasses : 0;
-    return uint64_t(allSamples) * passes + uint64_t(ownedSamples) * finalPassUnits(settings) +
-           (settings.bouncePasses > 0 ? 0 : ownedSamples);
+    // Cached: the direct pass and the bounce passes over every texel, one unit a texel each.
+    // Paths: the direct pass over the owned texels only. Then the final gather of the owned.
+    const uint64_t before = settings.bouncePasses > 0
+                                ? uint64_t(allSamples) * (1 + settings.bouncePasses)
+                                : uint64_t(ownedSamples);
+    return before + uint64_t(ownedSamples) * finalPassUnits(settings);
 }
 
 namespace {

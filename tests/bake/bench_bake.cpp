@@ -172,25 +172,11 @@ Timing replayRaw(RTCScene scene, const std::vector<TracedRay>& rays, bool occlus
         uint64_t found = 0;
         for (size_t i = begin; i < end; ++i) {
             const TracedRay& r = rays[i];
-            RTCRayHit q;
-            q.ray.org_x = r.origin.x;
-            q.ray.org_y = r.origin.y;
-            q.ray.org_z = r.origin.z;
-            q.ray.tnear = 0.0f;
-            q.ray.dir_x = r.dir.x;
-            q.ray.dir_y = r.dir.y;
-            q.ray.dir_z = r.dir.z;
-            q.ray.time = 0.0f;
-            q.ray.tfar = r.maxDistance;
-            q.ray.mask = 0xFFFFFFFFu;
-            q.ray.id = 0;
-            q.ray.flags = 0;
+            RTCRayHit q = embreeRay(r.origin, r.dir, r.maxDistance);
             if (occlusion) {
                 rtcOccluded1(scene, &context, &q.ray);
                 found += q.ray.tfar < 0.0f;
             } else {
-                q.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                q.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
                 rtcIntersect1(scene, &context, &q);
                 found += q.hit.geomID != RTC_INVALID_GEOMETRY_ID;
             }

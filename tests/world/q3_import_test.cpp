@@ -33,6 +33,13 @@ std::filesystem::path freshFolder(const std::string& name) {
     return dir;
 }
 
+// Import options whose only game folder is an empty one of its own: no game data is found.
+Quake3Options withoutGame(const std::string& name) {
+    Quake3Options options;
+    options.gameFolders = {freshFolder("no_game_" + name).string()};
+    return options;
+}
+
 // A BSP written record by record: one shader, a square (4 vertices, 2 triangles) in the plane
 // z = 0 facing +z, and the entity text given.
 struct BspBuilder {
@@ -102,9 +109,7 @@ std::string parseError(const std::vector<uint8_t>& bytes) {
 
 TEST(Quake3Bsp, AHandMadeMapImportsInMetresWithYUp) {
     BspBuilder b;
-    Quake3Options options;
-    options.gameFolders = {freshFolder("no_game").string()};
-    const SourceLevel level = importLevel(b.write("square", "square"), options);
+    const SourceLevel level = importLevel(b.write("square", "square"), withoutGame("square"));
     ASSERT_EQ(level.instances.size(), 1u);
     const MeshInstance& mesh = level.instances[0];
     ASSERT_EQ(mesh.indices.size(), 6u);
@@ -202,9 +207,8 @@ TEST(Quake3Bsp, TheMapsOwnLightmapsAreKept) {
     }
     b.surfaces.push_back(b.surfaces[0]);
     b.surfaces[1].lightmap = -3;  // vertex lit
-    Quake3Options options;
-    options.gameFolders = {freshFolder("no_game_lightmaps").string()};
-    const SourceLevel level = importLevel(b.write("lightmaps", "lightmaps"), options);
+    const SourceLevel level =
+        importLevel(b.write("lightmaps", "lightmaps"), withoutGame("lightmaps"));
     const ImportedLightmap& l = level.importedLightmap;
     EXPECT_EQ(l.producer, "q3map2");
     EXPECT_EQ(l.pageSize, kLightmapPageSize);
@@ -259,9 +263,7 @@ TEST(Quake3Lights, PointAndSpotFollowQ3map2) {
         "{\n\"classname\" \"light\"\n\"origin\" \"0 0 256\"\n\"light\" \"600\"\n\"target\" "
         "\"spot1\"\n\"_color\" \"1 0.5 0\"\n}\n"
         "{\n\"classname\" \"info_null\"\n\"targetname\" \"spot1\"\n\"origin\" \"0 0 0\"\n}\n";
-    Quake3Options options;
-    options.gameFolders = {freshFolder("no_game_lights").string()};
-    const SourceLevel level = importLevel(b.write("lights", "lights"), options);
+    const SourceLevel level = importLevel(b.write("lights", "lights"), withoutGame("lights"));
     ASSERT_EQ(level.lights.size(), 2u);
     const Light& point = level.lights[0];
     EXPECT_EQ(point.type, LightType::kPoint);
@@ -283,9 +285,7 @@ TEST(Quake3Lights, LinearFalloffIsApproximatedAndAmbientIsReported) {
         "{\n\"classname\" \"worldspawn\"\n\"ambient\" \"10\"\n}\n"
         "{\n\"classname\" \"light\"\n\"origin\" \"0 0 300\"\n\"light\" \"300\"\n"
         "\"spawnflags\" \"1\"\n\"fade\" \"0.5\"\n}\n";
-    Quake3Options options;
-    options.gameFolders = {freshFolder("no_game_linear").string()};
-    const SourceLevel level = importLevel(b.write("linear", "linear"), options);
+    const SourceLevel level = importLevel(b.write("linear", "linear"), withoutGame("linear"));
     ASSERT_EQ(level.lights.size(), 1u);
     const Light& l = level.lights[0];
     const double reach = 300.0 * 7500.0 / 8000.0 / 0.5;  // units: 562.5, 17.6 m
@@ -315,8 +315,7 @@ TEST(Quake3Lights, PrimariesAreTheLightsThatAreTheBrightestSomewhere) {
     b.entities +=
         "{\n\"classname\" \"light\"\n\"origin\" \"32 32 64\"\n\"light\" \"300\"\n}\n"
         "{\n\"classname\" \"light\"\n\"origin\" \"9600 0 64\"\n\"light\" \"3000\"\n}\n";
-    Quake3Options options;
-    options.gameFolders = {freshFolder("no_game_roles").string()};
+    Quake3Options options = withoutGame("roles");
     options.primaryLights = 4;
     const SourceLevel level = importLevel(b.write("roles", "roles"), options);
     ASSERT_EQ(level.lights.size(), 2u);
