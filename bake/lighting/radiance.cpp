@@ -27,8 +27,6 @@ bool finiteNonNegative(const glm::vec3& c) {
 // keeps a density).
 constexpr uint32_t kRisCandidates = 4;
 constexpr float kRisTargetFloor = 0.02f;
-// A hit whose specular lobe is drawn more often than this continues the path past the cache.
-constexpr float kCacheSpecularLimit = 0.5f;
 
 // The probability that sampleEmission draws an emitter point rather than a sky direction.
 float emitterChoice(const BakeLights& lights) {
@@ -189,14 +187,18 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
             const float weight = directionPdf > 0.0f ? powerHeuristic(directionPdf, emitter) : 1.0f;
             radiance += throughput * m.emission * weight;
         }
-        if (settings.cache && specularProbability(point.bsdf, glm::dot(point.shadingNormal, v)) <=
-                                  kCacheSpecularLimit) {
+        if (settings.cache) {
             const uint32_t k = findCachePoint(*settings.cache, hit.position, point.geometricNormal);
             if (k != kNoCachePoint) {
+                // The diffuse part from the cache; the specular part traced on, with the
+                // probability sampleSurface would draw it (radiance.hpp).
                 const glm::vec3 e =
                     settings.cache->direct[k] + settings.cache->indirect[k] * m.occlusion;
                 radiance += throughput * point.bsdf.albedo * (e / kPi);
-                break;
+                const float p = specularProbability(point.bsdf, glm::dot(point.shadingNormal, v));
+                if (!(p > 0.0f) || rng.next() >= p) break;
+                throughput /= p;
+                point.bsdf.albedo = glm::vec3(0.0f);
             }
         }
         radiance += throughput * directRadiance(scene, lights, settings, point, v, rng, rays);

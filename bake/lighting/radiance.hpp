@@ -115,13 +115,16 @@ struct FirstHit {
    at the level of detail of the path's footprint `cone` (ray_cone.hpp), which each bounce
    widens; the continuation carries the material's ambient occlusion, as the runtime applies it
    to the secondary light.
-   With a radiance cache (settings.cache), a hit whose specular lobe is drawn with probability
-   at most 1/2 (specularProbability: every dielectric but mirrors seen at grazing) and that the
-   cache covers ends the path with the light the cache says leaves it, diffusely:
-       Lo(y) ~ albedo / pi (E_direct(y) + occlusion E_indirect(y))   (+ its emission)
-   Its specular reflection is left out (the bias: f0 ~ 4% of the light for a dielectric), and
-   the cached irradiance is the nearest texel's (piecewise constant over a texel). Metals,
-   mirrors and hits the cache does not cover continue the path as below.
+   With a radiance cache (settings.cache), a hit the cache covers splits its outgoing light:
+   the diffuse part is read from the cache and ends there,
+       Lo_diffuse(y) ~ albedo / pi (E_direct(y) + occlusion E_indirect(y))
+   and the specular part is traced on with probability p = specularProbability(NoV) (weight
+   1 / p, unbiased): the vertex continues as below with its albedo set to zero, so its direct
+   light, emission sample and continuation are the specular lobe's alone. A Lambert surface
+   ends the path at once; a metal (albedo 0, p ~ 1) is traced on as before. What the cache
+   leaves is its own error: the nearest texel's irradiance, constant over a texel, and the
+   bounces its passes and their extrapolated tail approximate. Hits the cache does not cover
+   (a back side, a surface without texels) shade in full.
    Emissive surfaces (emitters.hpp) and a sky image (sky.hpp) are found two ways, combined by
    multiple importance sampling (Veach 1997, ch. 9, power heuristic): at every hit one
    sampleEmission (weight w_e = p_e^2 / (p_e^2 + p_f^2), p_f the continuation's density of that
