@@ -60,7 +60,7 @@ struct BenchOptions {
     bool throughputOnly = false;         // part 1 only (for profiling)
     bool materialsOnly = false;          // part 5 only
     bool lightsOnly = false;             // part 4 only
-    float lightsTexelsPerMetre = 8.0f;   // the many-lights floor
+    float lightsTexelsPerMetre = 16.0f;  // the many-lights floor
     std::string csv;
 };
 
