@@ -125,6 +125,34 @@ void unite(std::vector<uint32_t>& parent, uint32_t a, uint32_t b) {
         parent[a] = b;
 }
 
+/// Whether some specular surface of `scene` sees geometry in reflection: from the centres of
+/// its specular triangles (every one, or an even stride through them past
+/// kReflectorPoints), kProbeSolidRays directions over each front hemisphere (both sides when
+/// double-sided), stopping at the first hit.
+bool reflectorsSeeGeometry(const BakeScene& scene, RayCounts& rays) {
+    std::vector<uint32_t> reflectors;
+    for (uint32_t t = 0; t < scene.triangleCount(); ++t)
+        if (scene.materialOf(t).materialClass != world::MaterialClass::kLambert)
+            reflectors.push_back(t);
+    const size_t stride = std::max<size_t>(1, reflectors.size() / kReflectorPoints);
+    for (size_t k = 0; k < reflectors.size(); k += stride) {
+        const uint32_t t = reflectors[k];
+        const std::array<glm::vec3, 3> v = scene.triangleVertices(t);
+        const glm::vec3 n = scene.triangleNormal(t);
+        const glm::vec3 centre = (v[0] + v[1] + v[2]) / 3.0f;
+        for (int side = 0; side < (scene.materialOf(t).doubleSided ? 2 : 1); ++side) {
+            const glm::vec3 facing = side == 0 ? n : -n;
+            const glm::vec3 origin = centre + facing * (4.0f * scene.rayOffset());
+            for (uint32_t i = 0; i < kProbeSolidRays; ++i) {
+                glm::vec3 d = fibonacciDirection(i, kProbeSolidRays);
+                if (glm::dot(d, facing) < 0.0f) d = -d;
+                if (scene.occluded(origin, d, scene.sceneDiameter(), rays.shadow)) return true;
+            }
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const BakeScene& scene,
@@ -137,6 +165,14 @@ std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const
     std::vector<ProbePlacement> probes = authoredProbes(level);
     for (ProbePlacement& p : probes) p.insideSolid = testSolid(scene, p.position, out.rays).solid();
     if (!probes.empty() || !(level.features.flags & world::kFeatureProbes)) return probes;
+    // Nothing to reflect: when no specular surface sees any geometry, its reflections hold only
+    // the uniform sky, which the runtime's probe-less path (a uniform normalised radiance)
+    // gives exactly. A sky image varies, so it keeps the probes.
+    if (scene.triangleCount() > 0 && level.settings.skyImage == world::kNoIndex &&
+        !reflectorsSeeGeometry(scene, out.rays)) {
+        out.nothingToReflect = true;
+        return probes;
+    }
     if (scene.triangleCount() == 0) {
         ProbePlacement centre;
         centre.position = 0.5f * (level.settings.boundsMin + level.settings.boundsMax);

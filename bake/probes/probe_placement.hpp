@@ -30,16 +30,21 @@ inline constexpr uint32_t kProbeSolidRays = 64;
 /// Inside solid when more than this fraction of the rays that hit something hit a back face.
 inline constexpr float kProbeSolidFraction = 0.5f;
 
+/// Specular triangles (at most about this many, evenly through them) whose reflection rays
+/// decide whether the level has anything to reflect.
+inline constexpr uint32_t kReflectorPoints = 4096;
+
 /// What placement found, for tests and the bake report.
 struct ProbePlacementStats {
-    float spacing = 0.0f;        // metres, the step used (requested, or grown by the cap)
-    glm::uvec3 lattice{0u};      // points per axis (0 when no lattice was laid)
-    uint32_t latticePoints = 0;  // lattice.x * lattice.y * lattice.z
-    uint32_t openPoints = 0;     // lattice points not inside solid: one probe each
-    uint32_t components = 0;     // connected regions of open points
-    uint32_t cameraProbes = 0;   // probes added at authored cameras
-    bool fallback = false;       // nothing open: one probe at the least solid lattice point
-    RayCounts rays;              // solid tests in `probe`, segments in `shadow`
+    float spacing = 0.0f;           // metres, the step used (requested, or grown by the cap)
+    glm::uvec3 lattice{0u};         // points per axis (0 when no lattice was laid)
+    uint32_t latticePoints = 0;     // lattice.x * lattice.y * lattice.z
+    uint32_t openPoints = 0;        // lattice points not inside solid: one probe each
+    uint32_t components = 0;        // connected regions of open points
+    uint32_t cameraProbes = 0;      // probes added at authored cameras
+    bool fallback = false;          // nothing open: one probe at the least solid lattice point
+    bool nothingToReflect = false;  // no specular surface sees geometry: no probe placed
+    RayCounts rays;                 // solid tests in `probe`, segments in `shadow`
 };
 
 // The probes of a level whose static world is `scene` (built from the same level).
@@ -49,6 +54,12 @@ struct ProbePlacementStats {
 // below (the bake warns: such a probe's reflections come out dark). Otherwise none
 // unless the level has specular materials (kFeatureProbes). Then, with no box and entity kNoIndex:
 //
+// - Nothing to reflect (a lone floor under a uniform sky): none when, from the centres of the
+//   specular triangles (about kReflectorPoints of them at most), no ray of kProbeSolidRays
+//   directions over their front hemispheres (both sides when double-sided) hits geometry, and
+//   the sky is not an image: their reflections hold only the uniform sky, which the runtime's
+//   probe-less path reproduces (docs/lighting.md "Secondary specular").
+//   stats->nothingToReflect says so.
 // - Empty level (no static triangle): one probe at the centre of the bounds.
 // - Lattice: the spacing is level.settings.probe_spacing when the level sets it (> 0), else
 //   settings.spacing. Over the static bounds (level.settings.boundsMin/max), per axis

@@ -76,12 +76,21 @@ world::SourceLevel twoRooms(bool door) {
     return level;
 }
 
+// The level's materials made specular (a dielectric of f0 0.04), as kFeatureProbes says.
+std::vector<world::Material> specular(std::vector<world::Material> materials) {
+    for (world::Material& m : materials) {
+        m.materialClass = world::MaterialClass::kDielectric;
+        m.specularColor = glm::vec3(0.04f);
+    }
+    return materials;
+}
+
 // The static world of `source` in Embree, and a compiled level with its bounds, specular
 // materials (kFeatureProbes) and cameras: what placeProbes reads.
 struct Built {
     explicit Built(const world::SourceLevel& source)
         : split(world::splitStaticDynamic(source)),
-          scene(device, split.staticGeometry, source.materials) {
+          scene(device, split.staticGeometry, specular(source.materials)) {
         level.settings.boundsMin = scene.boundsMin();
         level.settings.boundsMax = scene.boundsMax();
         level.features.flags = world::kFeatureProbes;
@@ -307,12 +316,31 @@ TEST(ProbePlacement, NoneWithoutSpecularMaterials) {
     EXPECT_TRUE(place(built, 1.0f).empty());
 }
 
-// A floor alone: the lattice is lifted to kProbeMinLatticeHeight, so its probes float half of
-// it above the floor (they would otherwise lie in the floor, half their view black).
-TEST(ProbePlacement, AFlatLevelsProbesFloatAboveIt) {
+// A glossy floor alone reflects nothing but the sky: no probe (the runtime's probe-less path
+// gives a uniform sky exactly; a sunlit quad used to get a lattice of them), unless the sky is
+// an image.
+TEST(ProbePlacement, AnOpenFloorUnderAUniformSkyGetsNoProbe) {
     world::SourceLevel source;
     test::addQuad(source, {-4.0f, 0.0f, -4.0f}, {-4.0f, 0.0f, 4.0f}, {4.0f, 0.0f, 4.0f},
                   {4.0f, 0.0f, -4.0f}, test::addLambertMaterial(source, 0.5f), "floor");
+    Built built(source);
+    ProbePlacementStats stats;
+    EXPECT_TRUE(place(built, 4.0f, &stats).empty());
+    EXPECT_TRUE(stats.nothingToReflect);
+    built.level.settings.skyImage = 0;
+    EXPECT_EQ(place(built, 4.0f, &stats).size(), 4u);
+    EXPECT_FALSE(stats.nothingToReflect);
+}
+
+// A nearly flat level (a floor and a 20 cm step, which the floor reflects): the lattice is
+// lifted to kProbeMinLatticeHeight, so its probes float half of it above the floor (they would
+// otherwise lie in the floor, half their view black).
+TEST(ProbePlacement, AFlatLevelsProbesFloatAboveIt) {
+    world::SourceLevel source;
+    const uint32_t m = test::addLambertMaterial(source, 0.5f);
+    test::addQuad(source, {-4.0f, 0.0f, -4.0f}, {-4.0f, 0.0f, 4.0f}, {4.0f, 0.0f, 4.0f},
+                  {4.0f, 0.0f, -4.0f}, m, "floor");
+    test::addBox(source, {3.0f, 0.0f, 3.0f}, {3.5f, 0.2f, 3.5f}, m, false, "step");
     const Built built(source);
     const std::vector<ProbePlacement> probes = place(built, 4.0f);
     ASSERT_EQ(probes.size(), 4u);  // 2 x 1 x 2
