@@ -125,6 +125,40 @@ void unite(std::vector<uint32_t>& parent, uint32_t a, uint32_t b) {
         parent[a] = b;
 }
 
+/// The box of the walls around `point`, as engines fit reflection proxies: for each of the
+/// six axis directions, kBoxFitRays x kBoxFitRays rays through a grid on that face of a cube
+/// around the point; the face lies at the farthest hit's distance along the axis (an obstacle
+/// in front of a wall shortens some rays, not the farthest). A face most of whose rays escape
+/// (a doorway, the open sky) leaves the probe unboxed: false.
+bool fitBox(const BakeScene& scene, glm::vec3 point, RayCounts& rays, glm::vec3& lo,
+            glm::vec3& hi) {
+    for (int axis = 0; axis < 3; ++axis)
+        for (int sign = -1; sign <= 1; sign += 2) {
+            glm::vec3 a(0.0f), t(0.0f), b(0.0f);
+            a[axis] = float(sign);
+            t[(axis + 1) % 3] = 1.0f;
+            b[(axis + 2) % 3] = 1.0f;
+            uint32_t hits = 0;
+            float farthest = 0.0f;
+            for (uint32_t i = 0; i < kBoxFitRays; ++i)
+                for (uint32_t j = 0; j < kBoxFitRays; ++j) {
+                    const float u = 1.6f * (float(i) + 0.5f) / float(kBoxFitRays) - 0.8f;
+                    const float v = 1.6f * (float(j) + 0.5f) / float(kBoxFitRays) - 0.8f;
+                    const glm::vec3 d = glm::normalize(a + u * t + v * b);
+                    const SurfaceHit hit =
+                        scene.intersect(point, d, scene.sceneDiameter(), rays.probe);
+                    if (!hit.found) continue;
+                    ++hits;
+                    farthest = std::max(farthest, hit.distance * glm::dot(d, a));
+                }
+            if (float(hits) < kBoxFitHitFraction * float(kBoxFitRays * kBoxFitRays) ||
+                !(farthest > 0.0f))
+                return false;
+            (sign > 0 ? hi : lo)[axis] = point[axis] + float(sign) * farthest;
+        }
+    return true;
+}
+
 /// Whether some specular surface of `scene` sees geometry in reflection: from the centres of
 /// its specular triangles (every one, or an even stride through them past
 /// kReflectorPoints), kProbeSolidRays directions over each front hemisphere (both sides when
@@ -261,6 +295,14 @@ std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const
         probes.push_back(p);
         ++out.cameraProbes;
     }
+
+    // Box projection for every probe placed so far, where walls close it in on every side.
+    for (ProbePlacement& p : probes)
+        if (fitBox(scene, p.position, out.rays, p.boxMin, p.boxMax)) {
+            ++out.boxed;
+        } else {
+            p.boxMin = p.boxMax = glm::vec3(0.0f);
+        }
 
     if (probes.empty()) {
         uint32_t best = 0;

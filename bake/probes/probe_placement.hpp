@@ -30,6 +30,11 @@ inline constexpr uint32_t kProbeSolidRays = 64;
 /// Inside solid when more than this fraction of the rays that hit something hit a back face.
 inline constexpr float kProbeSolidFraction = 0.5f;
 
+/// Box fitting: rays per side of each of the six cube faces around a probe, and the share of a
+/// face's rays that must hit geometry for the face to close the box.
+inline constexpr uint32_t kBoxFitRays = 5;
+inline constexpr float kBoxFitHitFraction = 0.8f;
+
 /// Specular triangles (at most about this many, evenly through them) whose reflection rays
 /// decide whether the level has anything to reflect.
 inline constexpr uint32_t kReflectorPoints = 4096;
@@ -44,6 +49,7 @@ struct ProbePlacementStats {
     uint32_t cameraProbes = 0;      // probes added at authored cameras
     bool fallback = false;          // nothing open: one probe at the least solid lattice point
     bool nothingToReflect = false;  // no specular surface sees geometry: no probe placed
+    uint32_t boxed = 0;             // placed probes that got a fitted box
     RayCounts rays;                 // solid tests in `probe`, segments in `shadow`
 };
 
@@ -86,6 +92,10 @@ struct ProbePlacementStats {
 //   the spacing, between points) gets none and is not seen: lower the spacing for it.
 // - Cameras (where the player looks): then one probe at each authored camera, in order, that
 //   is not inside solid (the rule above) and not within spacing / 2 of any probe before it.
+// - Boxes: each probe placed so far gets a box-projection box fitted to the walls around it
+//   (kBoxFitRays^2 rays through each face of a cube around it; each face at the farthest hit
+//   along its axis), or none when a face is open (fewer than kBoxFitHitFraction of its rays
+//   hit): rooms are box-projected, open areas are not. stats->boxed counts them.
 // - Fallback: when that leaves no probe (every point inside solid, no camera kept), one at the
 //   lattice point with the smallest back-face fraction (lowest index on ties), so a level with
 //   specular materials always has a probe; stats->fallback says so.

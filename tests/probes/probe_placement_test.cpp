@@ -137,13 +137,55 @@ TEST(ProbePlacement, ClosedRoomsEachGetProbesAndTheWallBetweenNone) {
     EXPECT_EQ(countInside(probes, kRoomALo, kRoomAHi), 48u);
     EXPECT_EQ(countInside(probes, kRoomBLo, kRoomBHi), 48u);
     EXPECT_EQ(countInside(probes, kWallLo, kWallHi), 0u) << "a probe inside the wall's solid";
-    // By component, lowest lattice index first: room A's 48, then room B's.
+    // By component, lowest lattice index first: room A's 48, then room B's. Each is
+    // box-projected with its room's walls as the box (the rays' farthest hits land on the
+    // walls: float rounding only, 1 mm).
+    EXPECT_EQ(stats.boxed, 96u);
     for (size_t i = 0; i < probes.size(); ++i) {
-        EXPECT_EQ(probes[i].position.x < 4.0f, i < 48) << i;
+        const bool inA = i < 48;
+        EXPECT_EQ(probes[i].position.x < 4.0f, inA) << i;
         EXPECT_EQ(probes[i].entity, world::kNoIndex);
-        EXPECT_EQ(probes[i].boxMin, glm::vec3(0.0f));
-        EXPECT_EQ(probes[i].boxMax, glm::vec3(0.0f));
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_NEAR(probes[i].boxMin[a], (inA ? kRoomALo : kRoomBLo)[a], 1e-3f) << i;
+            EXPECT_NEAR(probes[i].boxMax[a], (inA ? kRoomAHi : kRoomBHi)[a], 1e-3f) << i;
+        }
     }
+}
+
+// A block in the room shortens the rays that meet it, not the farthest: every probe of room A,
+// those above and beside the block too, still gets the room's walls as its box.
+TEST(ProbePlacement, FittedBoxesAreTheWallsNotTheObstacles) {
+    world::SourceLevel source = twoRooms(false);
+    test::addBox(source, {1.5f, 1.5f, 0.0f}, {2.5f, 2.5f, 1.0f}, 0, false, "block");
+    const Built built(source);
+    ProbePlacementStats stats;
+    const std::vector<ProbePlacement> probes = place(built, 1.0f, &stats);
+    size_t checked = 0;
+    for (const ProbePlacement& p : probes) {
+        if (!strictlyInside(p.position, kRoomALo, kRoomAHi)) continue;
+        ASSERT_LT(p.boxMin.x, p.boxMax.x) << "unboxed at " << p.position.x << " " << p.position.y;
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_NEAR(p.boxMin[a], kRoomALo[a], 1e-3f);
+            EXPECT_NEAR(p.boxMax[a], kRoomAHi[a], 1e-3f);
+        }
+        ++checked;
+    }
+    EXPECT_GT(checked, 40u);
+}
+
+// Under the open sky most rays through the upper face escape: no box.
+TEST(ProbePlacement, AnOpenYardIsNotBoxed) {
+    world::SourceLevel source;
+    const uint32_t m = test::addLambertMaterial(source, 0.5f);
+    test::addQuad(source, {-4.0f, 0.0f, -4.0f}, {-4.0f, 0.0f, 4.0f}, {4.0f, 0.0f, 4.0f},
+                  {4.0f, 0.0f, -4.0f}, m, "floor");
+    test::addBox(source, {3.0f, 0.0f, 3.0f}, {3.5f, 0.2f, 3.5f}, m, false, "step");
+    const Built built(source);
+    ProbePlacementStats stats;
+    const std::vector<ProbePlacement> probes = place(built, 4.0f, &stats);
+    ASSERT_FALSE(probes.empty());
+    EXPECT_EQ(stats.boxed, 0u);
+    for (const ProbePlacement& p : probes) EXPECT_EQ(p.boxMax, glm::vec3(0.0f));
 }
 
 TEST(ProbePlacement, ADoorwayMergesTheRoomsIntoOneComponent) {
