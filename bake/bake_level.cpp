@@ -66,6 +66,7 @@ LightmapSettings lightmapSettings(const BakeOptions& options) {
     s.transport.sampleLights = !options.allLights;
     s.bouncePasses = options.pathsOnly ? 0 : preset.bouncePasses;
     s.cacheSamples = preset.cacheSamples;
+    s.denoise.enabled = !options.noDenoise;
     return s;
 }
 
@@ -188,6 +189,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
         report.texelsSampled = stats.texelsBaked;
         report.texelsMoved = stats.texelsMoved;
         report.lightmapMeanRelativeNoise = stats.meanRelativeNoise;
+        report.lightmapDenoisedRelativeNoise = stats.meanRelativeNoiseDenoised;
     }
     report.texelsTotal = texelCount;
     report.shadowSamplesPerLight = lm.shadowSamples;

@@ -45,6 +45,9 @@ struct BakeOptions {
     // Every gathering direction a whole path, instead of cached bounce passes over the texels
     // (lightmap_bake.cpp): the unbiased, slow baseline the cache is measured against.
     bool pathsOnly = false;
+    // The lightmaps' indirect part as estimated, without the denoiser (lightmap_denoise.hpp):
+    // the baseline the denoiser is measured against.
+    bool noDenoise = false;
     // Overrides of the quality preset; 0 keeps the preset.
     uint32_t shadowSamples = 0, indirectSamples = 0, gridSamples = 0;
     uint32_t probeFaceSize = 0, probeSamples = 0;  // a power of two; paths per texel

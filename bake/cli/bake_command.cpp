@@ -47,6 +47,7 @@ std::string bakeUsage() {
           "lights drawn by importance"},
          {"--paths-only", "whole paths for the indirect light, no cached bounces (slow)",
           "cached bounce passes"},
+         {"--no-denoise", "the lightmaps' indirect light as estimated, unfiltered", "denoised"},
          {"--quiet", "no progress bars", "bars on a terminal"},
          {"-h, --help", "this help", ""}});
 }
@@ -106,6 +107,8 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
             options.allLights = true;
         } else if (a == "--paths-only") {
             options.pathsOnly = true;
+        } else if (a == "--no-denoise") {
+            options.noDenoise = true;
         } else if (!a.empty() && a[0] != '-' && input.empty()) {
             input = a;
         } else {

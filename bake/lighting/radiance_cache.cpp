@@ -28,9 +28,11 @@ RadianceCache makeRadianceCache(std::vector<CachePoint> points) {
     cache.direct.assign(n, glm::vec3(0.0f));
     cache.indirect.assign(n, glm::vec3(0.0f));
     if (n == 0) return cache;
-    std::vector<float> sorted(n);
-    for (size_t i = 0; i < n; ++i) sorted[i] = points[i].reach;
-    const size_t at = std::min(n - 1, n * 95 / 100);
+    std::vector<float> sorted;
+    for (const CachePoint& p : points)
+        if (p.reach > 0.0f) sorted.push_back(p.reach);
+    if (sorted.empty()) return cache;
+    const size_t at = std::min(sorted.size() - 1, sorted.size() * 95 / 100);
     std::nth_element(sorted.begin(), sorted.begin() + long(at), sorted.end());
     const float maxReach = std::max(sorted[at], 1e-6f);
     cache.cellSize = 2.0f * maxReach;
@@ -41,14 +43,16 @@ RadianceCache makeRadianceCache(std::vector<CachePoint> points) {
     std::vector<uint32_t> bucket(n);
     for (size_t i = 0; i < n; ++i) {
         points[i].index = static_cast<uint32_t>(i);
+        if (!(points[i].reach > 0.0f)) continue;
         points[i].reach = std::min(points[i].reach, maxReach);
         bucket[i] = bucketOf(cellOfPoint(points[i].position, cache.cellSize), cache.bucketMask);
         ++cache.bucketFirst[bucket[i] + 1];
     }
     for (size_t b = 0; b < buckets; ++b) cache.bucketFirst[b + 1] += cache.bucketFirst[b];
-    cache.slots.resize(n);
+    cache.slots.resize(cache.bucketFirst.back());
     std::vector<uint32_t> fill(cache.bucketFirst.begin(), cache.bucketFirst.end() - 1);
-    for (size_t i = 0; i < n; ++i) cache.slots[fill[bucket[i]]++] = points[i];
+    for (size_t i = 0; i < n; ++i)
+        if (points[i].reach > 0.0f) cache.slots[fill[bucket[i]]++] = points[i];
     return cache;
 }
 

@@ -34,7 +34,7 @@ struct RadianceCache {
 
 /// A cache of `points` (point i at index i; their `index` is set here), its light zero.
 /// Reaches above the 95th percentile are clamped so that one coarse chart does not make every
-/// cell large.
+/// cell large. A point of reach 0 holds light but is never found.
 [[nodiscard]] RadianceCache makeRadianceCache(std::vector<CachePoint> points);
 
 inline constexpr uint32_t kNoCachePoint = ~0u;

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "bake/lighting/direct_light.hpp"
 #include "bake/lighting/sampling.hpp"
+#include "bake/lightmap/lightmap_denoise.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -56,25 +58,13 @@ glm::vec3 moveOutOfGeometry(const BakeScene& scene, const glm::vec3& origin,
    drawn by power or a sky direction drawn by the image, radiance.hpp sampleEmission), the two
    combined by the power heuristic: the sample adds L_e (n . l_i) / p_e(l_i) x w_e(l_i), the
    emission or sky w_i reaches counts with 1 - w_e(w_i).
-   The indirect part is then averaged with the texel's neighbours (the second pass of
-   bakeLightmapTexels: a tent whose radius, one of kIndirectFilterRadii, grows with the local
-   noise past the kIndirectFilterNoise thresholds).
+   The indirect part is then filtered with the texel's neighbours (lightmap_denoise.hpp).
    Direction: d = 1/2 sum (Y(E_k) w_k) / sum Y(E_k) over the same terms (luminance-weighted).
                   +--------------------------------------------------------------------+
                   | E_sec ~ sum_{l != P} E_l (n.w_l) V_l + (pi / N) sum_i L(w_i)        |
                   +--------------------------------------------------------------------+
    Its estimated noise: the sample standard deviation of pi Y(L(w_i)) over sqrt(N).
 */
-struct TexelEstimate {
-    glm::vec3 origin{0.0f};  // where the rays started (moved out of geometry if needed)
-    glm::dvec3 direct{0.0}, indirect{0.0};                    // lux
-    glm::dvec3 directDirection{0.0}, indirectDirection{0.0};  // sum Y(E) w
-    double directLuminance = 0.0, indirectLuminance = 0.0;
-    double noise = 0.0;         // luminance standard error of the indirect part
-    glm::vec3 ownDirect{0.0f};  // lux from the own primary, shadowed (for the bounce cache)
-    uint8_t mask = 0;
-    bool moved = false;
-};
 
 /// The texel's origin, its own primary's shadow mask and the other lights' shadowed light.
 TexelEstimate estimateDirect(const BakeScene& scene, const BakeLights& lights,
@@ -144,15 +134,17 @@ void estimateIndirect(const BakeScene& scene, const BakeLights& lights, const Te
     const Frame frame = frameAround(n);
     const float s0 = rng.next(), s1 = rng.next();
     const bool emission = samplesEmission(lights);
-    double sumY2 = 0.0;
+    double sumY2 = 0.0, inverseDistances = 0.0;
     for (uint32_t i = 0; i < count; ++i) {
         const glm::vec3 w = glm::normalize(
             frame.toWorld(sampleCosineHemisphere(rotatedHammersley(i, count, s0, s1))));
         const float pdf = glm::dot(n, w) / kPi;
+        FirstHit first;
         glm::vec3 e =
             kPi * traceRadiance(scene, lights, transport, origin, w,
                                 RayCone{sample.texelSize, sampleSpread(2.0f * kPi, count)}, rng,
-                                rays, nullptr, emission ? pdf : 0.0f);
+                                rays, &first, emission ? pdf : 0.0f);
+        if (first.found) inverseDistances += 1.0 / std::max(double(first.distance), 1e-6);
         out.indirectDirection += double(luminance(e)) * glm::dvec3(w);
         if (emission) {
             const EmissionEstimate l = sampleEmission(scene, lights, origin, n, rng, rays);
@@ -175,6 +167,9 @@ void estimateIndirect(const BakeScene& scene, const BakeLights& lights, const Te
     out.indirectLuminance *= inv;
     const double mean = out.indirectLuminance;
     out.noise = std::sqrt(std::max(0.0, sumY2 * inv - mean * mean) * inv);
+    out.harmonicDistance = inverseDistances > 0.0
+                               ? static_cast<float>(double(count) / inverseDistances)
+                               : std::numeric_limits<float>::infinity();
 }
 
 /// Progress units of the final gather per texel: its rays over a cache pass's.
@@ -190,10 +185,16 @@ uint64_t finalPassUnits(const LightmapSettings& settings) {
    light, the own primary included, shadowed); pass k gathers cacheSamples cosine directions
    per texel whose rays read the cache of pass k - 1 where they land (radiance.hpp), so
      E_ind,k(x) = (pi / N) sum_i Lo_{k-1}(y_i),   Lo_{k-1}(y) = albedo / pi (E_0 + E_ind,k-1)(y)
-   holds bounces 1..k. The bounces beyond the last pass K are the tail of a series whose ratio
-   r is measured over the level: r = sum Y(E_K - E_K-1) / sum Y(E_K-1 - E_K-2), clamped to
-   [0, 0.9], and E_ind = E_K + (E_K - E_K-1) r / (1 - r) (exact for an enclosure of uniform
-   albedo, where r = albedo). The final gather of each texel then reads this cache.
+   holds bounces 1..k. Every pass draws a texel's directions from the same random stream, so
+   the passes apply one fixed operator G (E_ind,k = G (E_0 + E_ind,k-1)) and E_k - E_k-1 is
+   exactly G^k E_0, the k-th bounce, free of the passes' independent noise. (With a fresh
+   stream per pass the differences were mostly noise: the measured ratio below swung from
+   0.13 to the 0.9 clamp, and the tail with it.) The bounces beyond the last pass K are the
+   tail of a series whose ratio r is measured over the level:
+   r = sum Y(E_K - E_K-1) / sum Y(E_K-1 - E_K-2), clamped to [0, 0.9], and
+   E_ind = E_K + (E_K - E_K-1) r / (1 - r) (exact for an enclosure of uniform albedo, where
+   r = albedo). Reusing G costs a bias of order 1 / N where a path returns to a texel it left
+   (G_xy G_yx reuses x's directions). The final gather of each texel then reads this cache.
 */
 RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
                           const std::vector<TexelSample>& samples,
@@ -201,9 +202,16 @@ RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
                           const LightmapSettings& settings, Progress* progress,
                           tbb::enumerable_thread_specific<RayCounts>& rays) {
     const size_t n = samples.size();
+    // Only texels whose centre lies on their triangle hold light for hits to read. An edge
+    // texel traces from the triangle's border (texel_placement.hpp), where a concave corner
+    // sees its neighbour wall at grazing angles: a hit beside the border would read that
+    // darker corner value instead of the light where it landed, a loss in every pass (a room's
+    // bounces then decayed 8% faster than its albedo). Hits near a border read the nearest
+    // inner texel, or, when none is in reach, are traced on.
     std::vector<CachePoint> points(n);
     for (size_t i = 0; i < n; ++i)
-        points[i] = {direct[i].origin, samples[i].texelSize, samples[i].normal};
+        points[i] = {direct[i].origin, samples[i].centreInside ? samples[i].texelSize : 0.0f,
+                     samples[i].normal};
     RadianceCache cache = makeRadianceCache(std::move(points));
     for (size_t i = 0; i < n; ++i)
         cache.direct[i] = glm::vec3(direct[i].direct) + direct[i].ownDirect;
@@ -215,10 +223,11 @@ RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
         tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
             RayCounts& local = rays.local();
             for (size_t i = r.begin(); i != r.end(); ++i) {
+                if (!samples[i].centreInside) continue;  // never read (above)
                 TexelEstimate e;
                 e.origin = direct[i].origin;
-                estimateIndirect(scene, lights, samples[i], settings.cacheSamples, transport, pass,
-                                 e, local);
+                estimateIndirect(scene, lights, samples[i], settings.cacheSamples, transport, 0, e,
+                                 local);
                 next[i] = glm::vec3(e.indirect);
             }
             if (progress) progress->advance(r.size());
@@ -254,18 +263,6 @@ uint64_t lightmapWorkUnits(size_t allSamples, size_t ownedSamples,
     return before + uint64_t(ownedSamples) * finalPassUnits(settings);
 }
 
-namespace {
-
-// The indirect filter's radii (texels) and the relative-noise thresholds between them.
-constexpr int kIndirectFilterRadii[3] = {1, 2, 3};
-constexpr double kIndirectFilterNoise[2] = {0.10, 0.25};
-
-uint32_t chartOf(const world::CompiledLevel& level, const TexelSample& s) {
-    return level.surfaces[s.surface].chart;
-}
-
-}  // namespace
-
 LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& lights,
                                  const world::CompiledLevel& level,
                                  const std::vector<TexelSample>& samples,
@@ -278,143 +275,74 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
                              [](const TexelSample& s, uint64_t t) { return s.texel < t; }) -
             samples.begin());
     };
-    // The filter reads neighbours up to kIndirectFilterRadii[2] texels away: estimate a halo of
-    // that many atlas rows (and texels) around the owned range too (every texel's estimate
-    // depends only on its identity, so a halo texel gets the same value in whichever shard
-    // computes it).
-    const int maxRadius = kIndirectFilterRadii[2];
-    uint64_t halo = 1;
-    for (const world::Atlas& a : level.atlases)
-        halo = std::max<uint64_t>(halo, uint64_t(maxRadius) * (a.width + 1ull));
+    const size_t n = samples.size();
     const size_t ownedBegin = lower(texelBegin), ownedEnd = lower(texelEnd);
-    const size_t begin = lower(texelBegin > halo ? texelBegin - halo : 0);
-    const size_t end = lower(texelEnd + halo);
+    const auto owned = [&](size_t i) { return i >= ownedBegin && i < ownedEnd; };
+    // The denoiser reads neighbours up to its largest window away, in world space (across
+    // seams into other charts): estimate those texels too. Every texel's estimate depends only
+    // on its identity, so a neighbour gets the same value in whichever shard computes it.
+    const TexelHash hash = makeTexelHash(samples);
+    std::vector<uint8_t> needed(n, 0);
+    if (settings.denoise.enabled)
+        markDenoiseFootprint(hash, samples, ownedBegin, ownedEnd, needed);
+    else
+        std::fill(needed.begin() + long(ownedBegin), needed.begin() + long(ownedEnd), 1);
     // Direct light: of every texel when the bounces are cached (every pass reads them all,
-    // so every shard computes them all), else of the halo range.
+    // so every shard computes them all), else of the needed texels.
     const bool cached = settings.bouncePasses > 0;
-    const size_t directBegin = cached ? 0 : begin, directEnd = cached ? samples.size() : end;
-    std::vector<TexelEstimate> all(directEnd - directBegin);
+    std::vector<TexelEstimate> estimates(n);
     tbb::enumerable_thread_specific<RayCounts> rays;
-    tbb::parallel_for(tbb::blocked_range<size_t>(directBegin, directEnd, 16), [&](const auto& r) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
         RayCounts& local = rays.local();
-        for (size_t i = r.begin(); i != r.end(); ++i)
-            all[i - directBegin] =
-                estimateDirect(scene, lights, level, samples[i], settings, local);
-        if (progress) progress->advance(r.size());
+        uint64_t units = 0;
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            if (!cached && !needed[i]) continue;
+            estimates[i] = estimateDirect(scene, lights, level, samples[i], settings, local);
+            units += cached || owned(i) ? 1 : 0;
+        }
+        if (progress) progress->advance(units);
     });
     RadianceCache cache;
     TransportSettings finalTransport = settings.transport;
     if (cached) {
-        cache = bounceCache(scene, lights, samples, all, settings, progress, rays);
+        cache = bounceCache(scene, lights, samples, estimates, settings, progress, rays);
         finalTransport.cache = &cache;
     }
-    TexelEstimate* const estimates = all.data() + (begin - directBegin);
     const uint64_t finalUnits = finalPassUnits(settings);
-    tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 16), [&](const auto& r) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
         RayCounts& local = rays.local();
-        for (size_t i = r.begin(); i != r.end(); ++i)
+        uint64_t units = 0;
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            if (!needed[i]) continue;
             estimateIndirect(scene, lights, samples[i], settings.indirectSamples, finalTransport,
-                             settings.bouncePasses, estimates[i - begin], local);
-        if (progress) progress->advance(r.size() * finalUnits);
+                             settings.bouncePasses, estimates[i], local);
+            units += owned(i) ? finalUnits : 0;
+        }
+        if (progress) progress->advance(units);
     });
 
-    // Find a texel's estimate by its global index.
-    const auto find = [&](uint64_t texel) -> long {
-        const size_t i = lower(texel);
-        if (i < begin || i >= end || samples[i].texel != texel) return -1;
-        return static_cast<long>(i - begin);
-    };
-    // The estimate of the texel (dx, dy) away from sample s in its atlas, or -1.
-    const auto neighbour = [&](const TexelSample& s, int dx, int dy) -> long {
-        const world::Atlas& atlas = level.atlases[s.atlas];
-        const int nx = int(s.x) + dx, ny = int(s.y) + dy;
-        if (nx < 0 || ny < 0 || nx >= int(atlas.width) || ny >= int(atlas.height)) return -1;
-        return find(s.texel - s.x - uint64_t(s.y) * atlas.width + uint64_t(ny) * atlas.width +
-                    uint64_t(nx));
-    };
-    // Relative noise of an estimate: its standard error over its whole (direct + indirect) value.
-    const auto relativeNoise = [](const TexelEstimate& e) {
-        const double value = e.directLuminance + e.indirectLuminance;
-        return value > 0.0 ? e.noise / value : 0.0;
-    };
+    std::vector<double> denoisedNoise(ownedEnd - ownedBegin, 0.0);
     tbb::parallel_for(tbb::blocked_range<size_t>(ownedBegin, ownedEnd, 64), [&](const auto& r) {
         RayCounts& local = rays.local();
         for (size_t i = r.begin(); i != r.end(); ++i) {
             const TexelSample& s = samples[i];
-            const TexelEstimate& e = estimates[i - begin];
-            // The indirect filter: a tent of radius r ([1 .. r+1 .. 1] per axis) over neighbours
-            // of the same chart that were not moved out of geometry and that see this texel's
-            // origin (a short shadow ray), so no light crosses a wall, each with its mirror
-            // neighbour. A field linear across the window is unchanged; for a full window the noise
-            // drops to sqrt(sum w^2) / sum w = 0.375 (r = 1), 0.24 (r = 2), 0.18 (r = 3). The
-            // radius grows with the largest relative noise in the texel's 3x3 neighbourhood (not
-            // its own: a texel whose paths happened to miss a small bright source looks quiet,
-            // while its neighbours' spikes show where the estimate is unreliable), so rare bright
-            // paths (a sunlit yard seen through a doorway) are spread instead of left as speckles.
-            double localNoise = relativeNoise(e);
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                    if (long j = neighbour(s, dx, dy); j >= 0)
-                        localNoise = std::max(localNoise, relativeNoise(estimates[size_t(j)]));
-            const int radius = localNoise > kIndirectFilterNoise[1]   ? kIndirectFilterRadii[2]
-                               : localNoise > kIndirectFilterNoise[0] ? kIndirectFilterRadii[1]
-                                                                      : kIndirectFilterRadii[0];
-            // Which neighbours may join: same chart, not moved, and seeing this texel.
-            constexpr int kSide = 2 * kIndirectFilterRadii[2] + 1;
-            long usable[kSide * kSide];
-            const auto slot = [&](int dx, int dy) { return (dy + radius) * kSide + dx + radius; };
-            for (int dy = -radius; dy <= radius; ++dy)
-                for (int dx = -radius; dx <= radius; ++dx) {
-                    long& j = usable[slot(dx, dy)];
-                    j = (dx == 0 && dy == 0) || e.moved ? -1 : neighbour(s, dx, dy);
-                    if (j < 0) continue;
-                    const TexelSample& ns = samples[size_t(j) + begin];
-                    const TexelEstimate& ne = estimates[size_t(j)];
-                    if (ne.moved || chartOf(level, ns) != chartOf(level, s)) {
-                        j = -1;
-                        continue;
-                    }
-                    const glm::vec3 to = ne.origin - e.origin;
-                    const float distance = glm::length(to);
-                    if (distance > 0.0f &&
-                        scene.occluded(e.origin, to / distance, distance, local.probe))
-                        j = -1;
-                }
-            // A neighbour joins only with its mirror image about the texel, so the window is
-            // point-symmetric and a linear field stays unchanged at a chart's edges and corners
-            // too (a one-sided window there would pull the texel towards its inner neighbours).
-            const double centreWeight = double(radius + 1) * double(radius + 1);
-            glm::dvec3 indirect = centreWeight * e.indirect;
-            glm::dvec3 indirectDirection = centreWeight * e.indirectDirection;
-            double indirectLuminance = centreWeight * e.indirectLuminance;
-            double weight = centreWeight;
-            for (int dy = -radius; dy <= radius; ++dy)
-                for (int dx = -radius; dx <= radius; ++dx) {
-                    const long j = usable[slot(dx, dy)];
-                    if (j < 0 || usable[slot(-dx, -dy)] < 0) continue;
-                    const TexelEstimate& ne = estimates[size_t(j)];
-                    const double w =
-                        double(radius + 1 - std::abs(dx)) * double(radius + 1 - std::abs(dy));
-                    indirect += w * ne.indirect;
-                    indirectDirection += w * ne.indirectDirection;
-                    indirectLuminance += w * ne.indirectLuminance;
-                    weight += w;
-                }
-            indirect /= weight;
-            indirectDirection /= weight;
-            indirectLuminance /= weight;
-
+            const TexelEstimate& e = estimates[i];
+            const DenoisedIndirect d =
+                denoiseTexel(scene, hash, samples, estimates, i, settings.denoise, local);
+            denoisedNoise[i - ownedBegin] = d.noise;
             world::LightmapTexel t;
-            const double luminanceSum = e.directLuminance + indirectLuminance;
-            t.irradiance = glm::max(glm::vec3(e.direct + indirect), glm::vec3(0.0f));
+            const double luminanceSum = e.directLuminance + d.indirectLuminance;
+            t.irradiance = glm::max(glm::vec3(e.direct + d.indirect), glm::vec3(0.0f));
             t.direction =
                 luminanceSum > 0.0
-                    ? glm::vec3(0.5 * (e.directDirection + indirectDirection) / luminanceSum)
+                    ? glm::vec3(0.5 * (e.directDirection + d.indirectDirection) / luminanceSum)
                     : glm::vec3(0.0f);
             if (glm::length(t.direction) > 0.5f) t.direction *= 0.5f / glm::length(t.direction);
             t.normalWeight = std::clamp(0.5f + glm::dot(s.normal, t.direction), 0.5f, 1.0f);
             t.flags = world::kLightmapTexelSampled;
-            if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z)) t = {};
+            if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z) ||
+                !std::isfinite(t.direction.x + t.direction.y + t.direction.z))
+                t = {};
             baked.texels[s.texel] = t;
             baked.shadowMask[s.texel] = e.mask;
         }
@@ -423,15 +351,16 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
     LightmapStats stats;
     for (const RayCounts& r : rays) stats.rays += r;
     stats.texelsBaked = ownedEnd - ownedBegin;
-    double noiseSum = 0.0, valueSum = 0.0;
+    double noiseSum = 0.0, denoisedSum = 0.0, valueSum = 0.0;
     for (size_t i = ownedBegin; i < ownedEnd; ++i) {
-        const TexelEstimate& e = estimates[i - begin];
+        const TexelEstimate& e = estimates[i];
         noiseSum += e.noise;
+        denoisedSum += denoisedNoise[i - ownedBegin];
         valueSum += e.directLuminance + e.indirectLuminance;
         stats.texelsMoved += e.moved ? 1 : 0;
     }
-    // Before the filter; a full tent window scales it by 0.375 (r = 1) to 0.18 (r = 3).
     stats.meanRelativeNoise = valueSum > 0.0 ? noiseSum / valueSum : 0.0;
+    stats.meanRelativeNoiseDenoised = valueSum > 0.0 ? denoisedSum / valueSum : 0.0;
     return stats;
 }
 

@@ -8,6 +8,7 @@
 #include "bake/embree/bake_scene.hpp"
 #include "bake/lighting/lights.hpp"
 #include "bake/lighting/radiance.hpp"
+#include "bake/lightmap/lightmap_denoise.hpp"
 #include "bake/lightmap/texel_placement.hpp"
 #include "bake/report/progress.hpp"
 #include "world/baked_lighting.hpp"
@@ -21,14 +22,18 @@ struct LightmapSettings {
     // their directions per texel. 0 passes: every direction is a whole path instead.
     uint32_t bouncePasses = 0;
     uint32_t cacheSamples = 64;
+    DenoiseSettings denoise;  // the indirect part's filter (lightmap_denoise.hpp)
     TransportSettings transport;
 };
 
 struct LightmapStats {
     RayCounts rays;
     uint64_t texelsBaked = 0;
-    uint64_t texelsMoved = 0;        // sample points moved out of geometry
-    double meanRelativeNoise = 0.0;  // estimated standard error / value, luminance-weighted
+    uint64_t texelsMoved = 0;  // sample points moved out of geometry
+    // Estimated standard error / value, luminance-weighted: of the texels' own estimates, and
+    // after the denoiser (from its windows' weights; bias not included).
+    double meanRelativeNoise = 0.0;
+    double meanRelativeNoiseDenoised = 0.0;
 };
 
 /// Bakes the texels of `samples` whose global index is in [texelBegin, texelEnd) into

@@ -58,7 +58,8 @@ std::string reportJson(const BakeReport& r) {
                      {"texels_moved_out_of_geometry", r.texelsMoved},
                      {"shadow_samples_per_light", r.shadowSamplesPerLight},
                      {"indirect_samples_per_texel", r.indirectSamplesPerTexel},
-                     {"estimated_relative_noise", r.lightmapMeanRelativeNoise}};
+                     {"estimated_relative_noise", r.lightmapMeanRelativeNoise},
+                     {"estimated_relative_noise_denoised", r.lightmapDenoisedRelativeNoise}};
     j["light_grid"] = {{"cells", r.gridCells},
                        {"cells_inside_solid", r.gridCellsInside},
                        {"samples_per_cell", r.gridSamplesPerCell}};
@@ -98,10 +99,11 @@ std::string reportSummary(const BakeReport& r) {
     s += line;
     std::snprintf(line, sizeof line,
                   "  lightmaps  %llu texels sampled of %llu, %u paths/texel, estimated noise "
-                  "%.2f%%; grid %llu cells (%llu inside solid)\n",
+                  "%.2f%% (%.2f%% denoised); grid %llu cells (%llu inside solid)\n",
                   static_cast<unsigned long long>(r.texelsSampled),
                   static_cast<unsigned long long>(r.texelsTotal), r.indirectSamplesPerTexel,
-                  100.0 * r.lightmapMeanRelativeNoise, static_cast<unsigned long long>(r.gridCells),
+                  100.0 * r.lightmapMeanRelativeNoise, 100.0 * r.lightmapDenoisedRelativeNoise,
+                  static_cast<unsigned long long>(r.gridCells),
                   static_cast<unsigned long long>(r.gridCellsInside));
     s += line;
     if (r.probesTotal) {

@@ -30,8 +30,9 @@ struct BakeReport {
     uint32_t shadowSamplesPerLight = 0;
     uint32_t indirectSamplesPerTexel = 0;
     uint32_t gridSamplesPerCell = 0;
-    double lightmapMeanRelativeNoise = 0.0;     // estimated standard error / value
-    uint64_t probesTotal = 0, probesBaked = 0;  // placed in the level; captured by this run
+    double lightmapMeanRelativeNoise = 0.0;      // estimated standard error / value
+    double lightmapDenoisedRelativeNoise = 0.0;  // the same after the denoiser
+    uint64_t probesTotal = 0, probesBaked = 0;   // placed in the level; captured by this run
     uint32_t probeFaceSize = 0, probeSamplesPerTexel = 0;
     uint64_t probeBytes = 0;            // section 35 bytes of the probes this run baked
     std::vector<std::string> warnings;  // one line each, naming the thing and what to change

@@ -174,6 +174,37 @@ world::SourceLevel agreementRoom() {
     return level;
 }
 
+world::SourceLevel roofOpeningRoom() {
+    world::SourceLevel level;
+    const uint32_t walls = addLambertMaterial(level, 0.6f);
+    const uint32_t block = addLambertMaterial(level, 0.3f);
+    const float x0 = -2.0f, x1 = 2.0f, y0 = -1.5f, y1 = 1.5f, h = 2.5f;
+    // Floor and four walls (inward), then the ceiling around the opening (facing down).
+    const glm::vec3 c[8] = {{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0},
+                            {x0, y0, h}, {x1, y0, h}, {x1, y1, h}, {x0, y1, h}};
+    const int faces[5][4] = {{0, 3, 2, 1}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+    for (int f = 0; f < 5; ++f)
+        addQuad(level, c[faces[f][3]], c[faces[f][2]], c[faces[f][1]], c[faces[f][0]], walls,
+                "room_" + std::to_string(f));
+    const float ox0 = 0.3f, ox1 = 1.3f, oy0 = -0.5f, oy1 = 0.5f;
+    const auto ceiling = [&](float ax, float ay, float bx, float by, const char* name) {
+        addQuad(level, {ax, ay, h}, {ax, by, h}, {bx, by, h}, {bx, ay, h}, walls, name);
+    };
+    ceiling(x0, y0, ox0, y1, "ceiling_west");
+    ceiling(ox1, y0, x1, y1, "ceiling_east");
+    ceiling(ox0, y0, ox1, oy0, "ceiling_south");
+    ceiling(ox0, oy1, ox1, y1, "ceiling_north");
+    addBox(level, {-1.2f, -0.6f, 0.0f}, {-0.4f, 0.2f, 0.9f}, block, false, "block");
+    world::Light sun;
+    sun.name = "sun";
+    sun.type = world::LightType::kDirectional;
+    sun.role = world::LightRole::kPrimary;
+    sun.intensity = 20000.0f;
+    sun.direction = glm::normalize(glm::vec3(0.25f, 0.15f, -1.0f));
+    level.lights.push_back(sun);
+    return level;
+}
+
 BakeOptions testOptions(float texelsPerMetre, BakeQuality quality) {
     BakeOptions o;
     o.quality = quality;

@@ -57,6 +57,11 @@ world::Light spotLight(glm::vec3 position, glm::vec3 direction, float candela, f
 /// occluding block (albedo 0.3), a primary point light and a secondary ("baked") spot.
 world::SourceLevel agreementRoom();
 
+/// The room lit through an opening: the agreement room's 4 x 3 x 2.5 m shell (albedo 0.6) with
+/// a 1 x 1 m opening in its ceiling, a block (albedo 0.3) and a primary sun (20 klx) that falls
+/// through the opening onto the floor; no sky. Everything but the sunlit patch is lit by bounces.
+world::SourceLevel roofOpeningRoom();
+
 /// A closed 3 x 2 x 2 m room (albedo 0.6) with a solid block and two primary point lights.
 world::SourceLevel smallRoom();
 

@@ -194,14 +194,15 @@ TEST(LightmapAccuracy, OneCentimetreWallLeaksLessThanATenthOfAPercent) {
 /// The relative difference between the lightmap's total irradiance at every `stride`-th texel
 /// centre and the reference path tracer's irradiance there (`referenceSamples` independent
 /// samples per point, every light along whole paths), over points of at least 1 lux: its RMS
-/// (noise and bias) and its mean (bias, the noise averaged down).
+/// (noise and bias) and its mean (bias, the noise averaged down); and the reference's own
+/// relative noise (RMS over the points, from the difference of its two halves).
 struct Agreement {
-    double rms = 1.0, mean = 1.0;
+    double rms = 1.0, mean = 1.0, referenceNoise = 1.0;
 };
 Agreement lightmapAgainstReference(const Baked& b, uint32_t referenceSamples, size_t stride) {
     const EmbreeDevice device;
     const BakeScene scene(device, b.result.level);
-    double sumSq = 0.0, sum = 0.0;
+    double sumSq = 0.0, sum = 0.0, referenceSq = 0.0;
     size_t count = 0;
     RayCounts rays;
     for (size_t i = 0; i < b.samples.size(); i += stride) {
@@ -209,10 +210,15 @@ Agreement lightmapAgainstReference(const Baked& b, uint32_t referenceSamples, si
         if (!s.centreInside) continue;
         const float got =
             luminance(lightmapTotalIrradiance(b.lights, b.result.level, b.result.baked, s));
-        const float want =
-            luminance(referenceIrradiance(scene, b.lights, s.position, s.normal, referenceSamples,
-                                          static_cast<uint32_t>(i), {}, rays));
+        const uint32_t half = referenceSamples / 2;
+        const float a = luminance(referenceIrradiance(scene, b.lights, s.position, s.normal, half,
+                                                      static_cast<uint32_t>(2 * i), {}, rays));
+        const float c = luminance(referenceIrradiance(scene, b.lights, s.position, s.normal, half,
+                                                      static_cast<uint32_t>(2 * i + 1), {}, rays));
+        const float want = 0.5f * (a + c);
         if (want < 1.0f) continue;  // relative error of near-black points is noise
+        const double halves = 0.5 * (double(a) - double(c)) / double(want);
+        referenceSq += halves * halves;
         const double rel = (double(got) - double(want)) / double(want);
         if (std::getenv("ONELIGHT_VERBOSE"))
             std::printf("%6.2f %6.2f %6.2f  n %4.1f %4.1f %4.1f  got %8.3f want %8.3f rel %+.3f\n",
@@ -225,7 +231,8 @@ Agreement lightmapAgainstReference(const Baked& b, uint32_t referenceSamples, si
     }
     EXPECT_GT(count, 30u);
     if (count == 0) return {};
-    return {std::sqrt(sumSq / double(count)), sum / double(count)};
+    return {std::sqrt(sumSq / double(count)), sum / double(count),
+            std::sqrt(referenceSq / double(count))};
 }
 
 uint64_t lightmapRays(const BakeResult& r) {
@@ -288,6 +295,36 @@ TEST(LightmapAccuracy, GlossyFloorReflectionReachesTheWallsThroughTheCache) {
                 a.mean);
     EXPECT_LT(std::fabs(a.mean), 0.015);
     EXPECT_LT(a.rms, 0.04);
+}
+
+// The room lit through an opening in its ceiling (bake_scenes.hpp): outside the sunlit patch
+// every texel's light has bounced. Against the reference at 32768 samples per point (its own
+// noise 3.3% RMS, measured from its two halves), 118 points: the denoised default bake is
+// closer (RMS) than the undenoised one (measured 6.1% against 6.5%) and its mean bias is within
+// 2.5% (-1.4%; it was -7.3% before the cache left edge texels out and reused each texel's
+// directions across passes). Not reached yet: the goal of beating the undenoised high
+// bake (5.6%); the largest errors left are the cache's near field (a wall's foot beside the
+// sunlit patch, +29%), which no filter of the lightmap removes.
+TEST(LightmapDenoise, DenoisedDefaultIsCloserThanUndenoisedInARoomLitThroughAnOpening) {
+    const world::SourceLevel level = test::roofOpeningRoom();
+    BakeOptions options = test::testOptions(6.0f, BakeQuality::kDefault);
+    const Baked denoised = bake(level, options);
+    options.noDenoise = true;
+    const Baked raw = bake(level, options);
+    options.quality = BakeQuality::kHigh;
+    const Baked high = bake(level, options);
+    const Agreement d = lightmapAgainstReference(denoised, 32768, 17);
+    const Agreement r = lightmapAgainstReference(raw, 32768, 17);
+    const Agreement h = lightmapAgainstReference(high, 32768, 17);
+    std::printf(
+        "room lit through an opening, RMS (mean): default denoised %.4f (%+.4f), "
+        "default %.4f (%+.4f), high %.4f (%+.4f); reference noise %.4f; estimated noise "
+        "%.4f -> %.4f\n",
+        d.rms, d.mean, r.rms, r.mean, h.rms, h.mean, d.referenceNoise,
+        denoised.result.report.lightmapMeanRelativeNoise,
+        denoised.result.report.lightmapDenoisedRelativeNoise);
+    EXPECT_LT(d.rms, r.rms);
+    EXPECT_LT(std::fabs(d.mean), 0.025);
 }
 
 }  // namespace
