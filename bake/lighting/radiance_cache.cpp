@@ -3,22 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bake/lighting/spatial_hash.hpp"
+
 namespace onelight::bake {
 namespace {
 
 constexpr float kNormalAgreement = 0.8f;  // cos 37 degrees
 constexpr float kPlaneTolerance = 0.25f;  // of the point's reach
-
-uint32_t bucketOf(const glm::ivec3& c, uint32_t mask) {
-    uint32_t h = static_cast<uint32_t>(c.x) * 73856093u;
-    h ^= static_cast<uint32_t>(c.y) * 19349663u;
-    h ^= static_cast<uint32_t>(c.z) * 83492791u;
-    return h & mask;
-}
-
-glm::ivec3 cellOfPoint(const glm::vec3& p, float size) {
-    return glm::ivec3(glm::floor(p / size));
-}
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "bake/lighting/sampling.hpp"
+#include "bake/lighting/spatial_hash.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -70,17 +71,6 @@ std::array<double, kDenoiseMaxRadius + 1> windowNoiseFactors() {
         f[size_t(r)] = std::sqrt(sum2) / sum;
     }
     return f;
-}
-
-uint32_t bucketOf(const glm::ivec3& c, uint32_t mask) {
-    uint32_t h = static_cast<uint32_t>(c.x) * 73856093u;
-    h ^= static_cast<uint32_t>(c.y) * 19349663u;
-    h ^= static_cast<uint32_t>(c.z) * 83492791u;
-    return h & mask;
-}
-
-glm::ivec3 cellOfPoint(const glm::vec3& p, float size) {
-    return glm::ivec3(glm::floor(p / size));
 }
 
 /// The largest window's reach of texel i, in metres, within the hash's cell size.
