@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "bake/lighting/sampling.hpp"
 #include "bake/lighting/spatial_hash.hpp"
@@ -33,7 +34,9 @@ namespace {
    (nor a neighbour past half its own): by Ward's split-sphere bound the irradiance changes by
    about d / R_harmonic over a step d, so near a wall's foot or beside a bright patch, where the
    field curves within a few texels and a plane would not fit it, the window shrinks to what
-   stays nearly linear (and to nothing when that is under a texel).
+   stays nearly linear, but never below radius 1 (1.5 texels): a texel at a room's edge or
+   corner, whose rays all land close by, left unfiltered showed as a bright blotch along every
+   border of a dim wall.
    The radius r (texels) is the smallest whose full window brings the neighbourhood's noise
    to settings.targetNoise: the largest relative noise among p and its neighbours within
    1.5 h (not p's own alone: a texel whose paths missed a small bright source looks quiet,
@@ -101,6 +104,15 @@ void forEachNear(const TexelHash& hash, const std::vector<TexelSample>& samples,
                     if (glm::dot(d, d) <= reach2) f(j);
                 }
             }
+}
+
+/// How far a window around texel s may reach by its harmonic distance. An edge texel traces
+/// from its triangle's border, where the neighbour wall's nearness says nothing about how the
+/// light varies along the surface: it is not capped (and its noisy corner estimate then gets
+/// a full window of the inner texels instead of staying a blotch along the border).
+float gradientReach(const TexelSample& s, const TexelEstimate& e) {
+    return s.centreInside ? kGradientReach * e.harmonicDistance
+                          : std::numeric_limits<float>::infinity();
 }
 
 /// Whether q may join p's window by its geometry (not yet its visibility).
@@ -182,12 +194,9 @@ DenoisedIndirect denoiseTexel(const BakeScene& scene, const TexelHash& hash,
     std::vector<Member> window;
     window.push_back({static_cast<uint32_t>(i), 1.0, 0.0, 0.0});
     const Frame frame = frameAround(p.normal);
-    const float reach = std::min({windowReach(radius) * p.texelSize, 0.5f * hash.cellSize,
-                                  kGradientReach * e.harmonicDistance});
-    if (reach < p.texelSize) {
-        out.radius = 0;
-        return out;
-    }
+    const float smallest = std::min(windowReach(1) * p.texelSize, 0.5f * hash.cellSize);
+    const float reach = std::max(smallest, std::min({windowReach(radius) * p.texelSize,
+                                                     0.5f * hash.cellSize, gradientReach(p, e)}));
     forEachNear(hash, samples, p.centre, reach, [&](uint32_t j) {
         if (j == i) return;
         const TexelSample& q = samples[j];
@@ -196,7 +205,7 @@ DenoisedIndirect denoiseTexel(const BakeScene& scene, const TexelHash& hash,
         const glm::vec3 d = q.centre - p.centre;
         const float d2 = glm::dot(d, d);
         const double w = biweight(d2, reach * reach);
-        const float own = kGradientReach * qe.harmonicDistance;
+        const float own = std::max(smallest, gradientReach(q, qe));
         if (w <= 0.0 || d2 > own * own) return;
         const glm::vec3 to = qe.origin - e.origin;
         const float distance = glm::length(to);

@@ -300,7 +300,7 @@ TEST(LightmapAccuracy, GlossyFloorReflectionReachesTheWallsThroughTheCache) {
 // The room lit through an opening in its ceiling (bake_scenes.hpp): outside the sunlit patch
 // every texel's light has bounced. Against the reference at 32768 samples per point (its own
 // noise 3.3% RMS, measured from its two halves), 118 points: the denoised default bake is
-// closer (RMS) than the undenoised one (measured 6.1% against 6.5%) and its mean bias is within
+// closer (RMS) than the undenoised one (measured 5.9% against 6.5%) and its mean bias is within
 // 2.5% (-1.4%; it was -7.3% before the cache left edge texels out and reused each texel's
 // directions across passes). Not reached yet: the goal of beating the undenoised high
 // bake (5.6%); the largest errors left are the cache's near field (a wall's foot beside the
