@@ -25,22 +25,33 @@ const BakeLight* ownPrimary(const BakeLights& lights, uint32_t levelIndex) {
 
 /// Moves a sample point out of geometry it lies in: short rays along the surface over the
 /// texel's footprint; a back face among them means the point is inside a solid (e.g. a floor
-/// texel under a wall standing on it), so the point moves just past that back face.
+/// texel under a wall standing on it), so the point moves just past the nearest back face
+/// whose far side still lies on the texel's own surface (within its bounds, `surfaceMin` and
+/// `surfaceMax`). A move off the surface would leave the level: the end wall of a corridor
+/// whose sides stand in front of its edges has texels buried in a side wall, and the side
+/// wall's underside is nearer to some of them than its inner face, but below it is the
+/// outside, where the sky leaked in as bright dots at the corridor's corners.
 glm::vec3 moveOutOfGeometry(const BakeScene& scene, const glm::vec3& origin,
-                            const glm::vec3& normal, float texelSize, RayCounts& rays,
-                            bool& moved) {
+                            const glm::vec3& normal, float texelSize, const glm::vec3& surfaceMin,
+                            const glm::vec3& surfaceMax, RayCounts& rays, bool& moved) {
     const Frame frame = frameAround(normal);
-    const float reach = 0.7072f * texelSize + 2.0f * scene.rayOffset();
+    const float offset = scene.rayOffset();
+    const float reach = 0.7072f * texelSize + 2.0f * offset;
     const glm::vec3 directions[4] = {frame.t, -frame.t, frame.b, -frame.b};
+    const glm::vec3 lo = surfaceMin - glm::vec3(offset), hi = surfaceMax + glm::vec3(offset);
     float nearest = reach;
     glm::vec3 result = origin;
     moved = false;
     for (const glm::vec3& d : directions) {
         const SurfaceHit hit = scene.intersect(origin, d, reach, rays.probe);
-        if (hit.found && hit.backFace && hit.distance < nearest) {
+        if (!hit.found || !hit.backFace) continue;
+        moved = true;  // inside a solid, whether or not a way out is found
+        const glm::vec3 to = origin + d * (hit.distance + 2.0f * offset);
+        const bool onSurface = glm::all(glm::greaterThanEqual(to, lo)) &&
+                               glm::all(glm::lessThanEqual(to, hi));
+        if (onSurface && hit.distance < nearest) {
             nearest = hit.distance;
-            result = origin + d * (hit.distance + 2.0f * scene.rayOffset());
-            moved = true;
+            result = to;
         }
     }
     return result;
@@ -74,7 +85,9 @@ TexelEstimate estimateDirect(const BakeScene& scene, const BakeLights& lights,
     Rng rng{seedFrom(sample.atlas, sample.x, sample.y, kLightmapPass)};
     const glm::vec3 n = sample.normal;
     glm::vec3 origin = sample.position + n * scene.rayOffset();
-    origin = moveOutOfGeometry(scene, origin, n, sample.texelSize, rays, out.moved);
+    const world::Surface& surface = level.surfaces[sample.surface];
+    origin = moveOutOfGeometry(scene, origin, n, sample.texelSize, surface.boundsMin,
+                               surface.boundsMax, rays, out.moved);
     out.origin = origin;
 
     // Visibility is sampled from `origin` (on the surface); the unshadowed light E_l (n.w_l)
@@ -82,7 +95,6 @@ TexelEstimate estimateDirect(const BakeScene& scene, const BakeLights& lights,
     // filtering then reads the edge's own value at a chart border (texel_placement.hpp).
     const glm::vec3 centre = out.moved ? origin : sample.centre + n * scene.rayOffset();
 
-    const world::Surface& surface = level.surfaces[sample.surface];
     const BakeLight* own = ownPrimary(lights, surface.primaryLight);
     if (own) {
         const LightIncidence incidence = lightIncidence(*own, origin);

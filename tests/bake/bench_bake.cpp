@@ -2,8 +2,11 @@
 //  1. Ray throughput. The rays the lightmap stage traces on a generated level (tests/world's
 //     level generator, ~250k triangles) are recorded through BakeScene::observeRays, then
 //     replayed, same scene, same thread count, same grain: (a) through the baker's own per-ray
-//     path (BakeScene::occluded / intersect) and (b) through raw rtcOccluded1 / rtcIntersect1.
-//     The whole lightmap stage (shading, sampling, filter) is also timed on the same texels: its
+//     path (BakeScene::occluded / intersect), (b) through raw rtcOccluded1 / rtcIntersect1 and
+//     (c) through raw rtcOccluded16 / rtcIntersect16 in packets of 16 in trace order. The whole
+//     level is baked at a density giving ~20k texels (the bounce passes read every texel, so a
+//     part of a level costs its whole cache). The lightmap stage (shading, sampling,
+//     cache, denoiser) is also timed on the same texels: its
 //     rays/s against raw Embree on its own rays is the baker's ratio (issue goal >= 0.85).
 //  2. Speed against error: the lightmap-vs-reference agreement test's room baked at draft,
 //     default and high; wall time and RMS relative error of texel irradiance against
@@ -50,7 +53,7 @@ namespace {
 
 struct BenchOptions {
     uint64_t triangles = 250000;         // generated level for the ray throughput
-    uint64_t texels = 6000;              // lightmap texels whose rays are recorded and replayed
+    uint64_t texels = 20000;             // about this many lightmap texels: their rays are replayed
     uint32_t referenceSpp = 65536;       // referenceIrradiance samples per point (two halves)
     uint32_t stride = 11;                // every stride-th texel sample is an error point
     float roomTexelsPerMetre = 6.0f;     // speed-against-error room (the agreement test's)
@@ -106,9 +109,6 @@ struct RayLog {
         static_cast<RayLog*>(user)->perThread.local().push_back(ray);
     }
 };
-
-/// The recorded texels come from this many places of the level.
-constexpr uint32_t kTexelRanges = 6;
 
 /// Same grain for every replay: each task traces this many rays.
 constexpr size_t kReplayGrain = 256;
@@ -185,28 +185,55 @@ Timing replayRaw(RTCScene scene, const std::vector<TracedRay>& rays, bool occlus
     });
 }
 
+/// Raw Embree on the same rays in packets of 16 consecutive rays of a thread's trace order
+/// (rtcOccluded16 / rtcIntersect16, the last packet masked): what tracing in packets would buy
+/// on the baker's own rays, before any cost of gathering them into packets.
+Timing replayPackets(RTCScene scene, const std::vector<TracedRay>& rays, bool occlusion,
+                     std::atomic<uint64_t>& hits) {
+    return timeParallel(rays.size(), [&](size_t begin, size_t end) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        uint64_t found = 0;
+        alignas(64) RTCRayHit16 q;
+        alignas(64) int valid[16];
+        for (size_t first = begin; first < end; first += 16) {
+            const size_t n = std::min<size_t>(16, end - first);
+            for (size_t k = 0; k < 16; ++k) {
+                const TracedRay& r = rays[first + std::min(k, n - 1)];
+                valid[k] = k < n ? -1 : 0;
+                q.ray.org_x[k] = r.origin.x;
+                q.ray.org_y[k] = r.origin.y;
+                q.ray.org_z[k] = r.origin.z;
+                q.ray.tnear[k] = 0.0f;
+                q.ray.dir_x[k] = r.dir.x;
+                q.ray.dir_y[k] = r.dir.y;
+                q.ray.dir_z[k] = r.dir.z;
+                q.ray.time[k] = 0.0f;
+                q.ray.tfar[k] = r.maxDistance;
+                q.ray.mask[k] = 0xFFFFFFFFu;
+                q.ray.id[k] = 0;
+                q.ray.flags[k] = 0;
+                q.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                q.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
+                q.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+            }
+            if (occlusion) {
+                rtcOccluded16(valid, scene, &context, &q.ray);
+                for (size_t k = 0; k < n; ++k) found += q.ray.tfar[k] < 0.0f;
+            } else {
+                rtcIntersect16(valid, scene, &context, &q);
+                for (size_t k = 0; k < n; ++k) found += q.hit.geomID[k] != RTC_INVALID_GEOMETRY_ID;
+            }
+        }
+        hits += found;
+    });
+}
+
 double mrays(uint64_t rays, double seconds) {
     return seconds > 0.0 ? double(rays) / seconds * 1e-6 : 0.0;
 }
 
-/// `parts` texel ranges [begin, end) of about count / parts sampled texels each, spread evenly
-/// over the level's samples (the cost of a texel depends on where it is: spread them).
-std::vector<std::pair<uint64_t, uint64_t>> spreadTexels(const std::vector<TexelSample>& samples,
-                                                        uint64_t count, uint32_t parts) {
-    std::vector<std::pair<uint64_t, uint64_t>> ranges;
-    const size_t n = samples.size(), each = std::max<size_t>(1, count / parts);
-    for (uint32_t k = 0; k < parts; ++k) {
-        const size_t centre = size_t((k + 0.5) / parts * double(n));
-        const size_t first = centre > each / 2 ? centre - each / 2 : 0;
-        const size_t last = std::min(n, first + each);
-        if (first >= last) continue;
-        ranges.push_back(
-            {samples[first].texel, last < n ? samples[last].texel : samples[n - 1].texel + 1});
-    }
-    return ranges;
-}
-
-/// The lightmap stage over every range (each with its filter halo, as a shard bakes).
+/// The lightmap stage over every range.
 LightmapStats bakeRanges(const BakeScene& scene, const BakeLights& lights,
                          const world::CompiledLevel& level, const std::vector<TexelSample>& samples,
                          const LightmapSettings& settings,
@@ -232,9 +259,17 @@ bool rayThroughput(const BenchOptions& o) {
         onelight::test::optionsForTriangles(o.triangles);
     const std::string path = onelight::test::writeGeneratedLevel(folder, "bench_level", generated);
     const world::SourceLevel source = world::importGltf(path);
+    // The whole level is baked (its bounce passes read every texel, so a part of the level
+    // costs the cache of all of it): the density is chosen for about o.texels texels.
     world::CompileOptions compile;
     compile.charts.texelsPerMetre = 4.0;
-    const world::CompiledLevel level = world::compileLevel(source, compile).level;
+    world::CompiledLevel level = world::compileLevel(source, compile).level;
+    const uint64_t firstCount = placeTexels(level).size();
+    if (firstCount > 0) {
+        compile.charts.texelsPerMetre =
+            std::min(4.0, 4.0 * std::sqrt(double(o.texels) / double(firstCount)));
+        level = world::compileLevel(source, compile).level;
+    }
     const EmbreeDevice device;
     BakeScene scene(device, level);
     const BakeLights lights = makeBakeLights(scene, level.lights, {}, glm::vec3(0.0f));
@@ -243,8 +278,7 @@ bool rayThroughput(const BenchOptions& o) {
         std::printf("the generated level has no lightmap texels\n");
         return false;
     }
-    const std::vector<std::pair<uint64_t, uint64_t>> ranges =
-        spreadTexels(samples, o.texels, kTexelRanges);
+    const std::vector<std::pair<uint64_t, uint64_t>> ranges = {{0, totalTexels(level)}};
     BakeOptions draft;
     draft.quality = BakeQuality::kDraft;
     const LightmapSettings settings = lightmapSettings(draft);
@@ -252,8 +286,9 @@ bool rayThroughput(const BenchOptions& o) {
     baked.texels.assign(totalTexels(level), world::LightmapTexel{});
     baked.shadowMask.assign(totalTexels(level), 0);
     std::printf(
-        "level      %u triangles, %zu lights, %zu texel samples (4 texels/m); setup %.1f s\n",
-        scene.triangleCount(), lights.lights.size(), samples.size(), secondsSince(start));
+        "level      %u triangles, %zu lights, %zu texel samples (%.2f texels/m); setup %.1f s\n",
+        scene.triangleCount(), lights.lights.size(), samples.size(), compile.charts.texelsPerMetre,
+        secondsSince(start));
 
     // Record the rays of a draft lightmap bake of the chosen texels.
     RayLog log;
@@ -268,9 +303,10 @@ bool rayThroughput(const BenchOptions& o) {
 
     // The whole stage again, unobserved, and the replays, interleaved so that changes in the
     // machine's load hit every path alike; the fastest of the repeats counts.
-    Timing stage, occlusionBaker, occlusionRaw, closestBaker, closestRaw;
+    Timing stage, occlusionBaker, occlusionRaw, closestBaker, closestRaw, occlusionPackets,
+        closestPackets;
     LightmapStats stats;
-    std::atomic<uint64_t> hits[4] = {0, 0, 0, 0};
+    std::atomic<uint64_t> hits[6] = {0, 0, 0, 0, 0, 0};
     for (uint32_t i = 0; i < o.repeats; ++i) {
         stage.keepFastest(measure(
             [&] { stats = bakeRanges(scene, lights, level, samples, settings, ranges, baked); }));
@@ -278,13 +314,15 @@ bool rayThroughput(const BenchOptions& o) {
         occlusionRaw.keepFastest(replayRaw(scene.embreeScene(), occlusion, true, hits[1]));
         closestBaker.keepFastest(replayBaker(scene, closest, false, hits[2]));
         closestRaw.keepFastest(replayRaw(scene.embreeScene(), closest, false, hits[3]));
+        occlusionPackets.keepFastest(replayPackets(scene.embreeScene(), occlusion, true, hits[4]));
+        closestPackets.keepFastest(replayPackets(scene.embreeScene(), closest, false, hits[5]));
     }
     const uint64_t total = occlusion.size() + closest.size();
     std::printf(
-        "texels     %llu owned in %zu places of the level, each with its filter halo of "
-        "one atlas row (draft: %u shadow rays per light, %u paths per texel)\n",
-        static_cast<unsigned long long>(stats.texelsBaked), ranges.size(), settings.shadowSamples,
-        settings.indirectSamples);
+        "texels     %llu, the whole level (draft: %u shadow rays per light, %u bounce passes of "
+        "%u directions, then %u)\n",
+        static_cast<unsigned long long>(stats.texelsBaked), settings.shadowSamples,
+        settings.bouncePasses, settings.cacheSamples, settings.indirectSamples);
     std::printf(
         "rays       %llu recorded = %llu counted by the stage (shadow %llu, bounce %llu, "
         "probe %llu)\n",
@@ -293,8 +331,8 @@ bool rayThroughput(const BenchOptions& o) {
         static_cast<unsigned long long>(recorded.rays.shadow),
         static_cast<unsigned long long>(recorded.rays.bounce),
         static_cast<unsigned long long>(recorded.rays.probe));
-    if (hits[0] != hits[1] || hits[2] != hits[3])
-        std::printf("WARNING: the baker's and raw replays disagree on hits\n");
+    if (hits[0] != hits[1] || hits[2] != hits[3] || hits[1] != hits[4] || hits[3] != hits[5])
+        std::printf("WARNING: the baker's, raw and packet replays disagree on hits\n");
     const Timing raw{occlusionRaw.wall + closestRaw.wall, occlusionRaw.cpu + closestRaw.cpu};
     const Timing bakerPath{occlusionBaker.wall + closestBaker.wall,
                            occlusionBaker.cpu + closestBaker.cpu};
@@ -312,6 +350,15 @@ bool rayThroughput(const BenchOptions& o) {
     row("all, baker's per-ray path", total, bakerPath, raw, "");
     row("all, whole lightmap stage (shading incl.)", stats.rays.total(), stage, raw,
         "   <- issue goal >= 0.85");
+    std::printf("%-44s %9zu %11.2f %9.2f %13.3f %11.3f\n",
+                "occlusion in packets of 16 (raw / packets)", occlusion.size(),
+                mrays(occlusion.size(), occlusionPackets.wall),
+                mrays(occlusion.size(), occlusionRaw.wall),
+                occlusionRaw.wall / occlusionPackets.wall, occlusionRaw.cpu / occlusionPackets.cpu);
+    std::printf("%-44s %9zu %11.2f %9.2f %13.3f %11.3f\n",
+                "closest hit in packets of 16 (raw / packets)", closest.size(),
+                mrays(closest.size(), closestPackets.wall), mrays(closest.size(), closestRaw.wall),
+                closestRaw.wall / closestPackets.wall, closestRaw.cpu / closestPackets.cpu);
     std::printf(
         "wall s: stage %.3f, raw Embree on its rays %.3f (occlusion %.3f + closest hit "
         "%.3f); CPU s: stage %.3f, raw %.3f; peak memory so far %.1f MiB\n",
