@@ -122,6 +122,7 @@ vk::ContextOptions renderContextOptions(RenderDeviceFeatures& features,
     features.vulkan13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
     features.vulkan13.dynamicRendering = VK_TRUE;
     options.features.imageCubeArray = VK_TRUE;  // the probes' cube array
+    options.features.depthBiasClamp = VK_TRUE;  // the sun shadow map's bias limit
     options.featureChain = &features.vulkan13;
     return options;
 }

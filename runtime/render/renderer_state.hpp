@@ -58,6 +58,7 @@ struct ShadowSlot {
 struct ShadowView {
     glm::mat4 viewProj{1.0f};
     glm::vec4 params{0.0f};
+    float depthBiasClamp = 0.0f;               // depth units, the slope bias's limit; 0: none
     VkImageView staticLayer = VK_NULL_HANDLE;  // owned, layer of staticShadows
     VkImageView frameLayer = VK_NULL_HANDLE;   // owned, layer of frameShadows (with dynamics)
 };

@@ -16,8 +16,9 @@ namespace onelight::render {
 
 namespace {
 
-constexpr float kSunExtentScale = 1.25f;    // the sun map's half size over the shadow radius
-constexpr float kSunCellsPerExtent = 4.0f;  // the camera may move extent / 4 before a refit
+constexpr float kSunExtentScale = 1.25f;     // the sun map's half size over the shadow radius
+constexpr float kSunCellsPerExtent = 4.0f;   // the camera may move extent / 4 before a refit
+constexpr float kSunBiasClampTexels = 2.0f;  // the sun map's largest depth bias, in its texels
 
 uint32_t layersFor(world::LightType type) {
     return type == world::LightType::kPoint ? 6u : 1u;
@@ -36,7 +37,9 @@ void fitSun(RendererState& s, ShadowSlot& slot, const Camera& camera) {
     const glm::vec3 dir = glm::normalize(light.direction);
     const glm::vec3 right = glm::normalize(glm::cross(dir, anyPerpendicular(dir)));
     const glm::vec3 up = glm::cross(right, dir);
-    const float extent = s.options.shadowRadius * kSunExtentScale;
+    // Never wider than the level: a 4 m room's sun map at the 40 m radius's size had 10 cm
+    // texels, and the sun leaked along every junction of its walls for a texel's width.
+    const float extent = std::min(s.options.shadowRadius * kSunExtentScale, levelDiagonal(s));
     const float step = extent / kSunCellsPerExtent;  // a whole number of texels
     const glm::vec2 cell(std::floor(glm::dot(camera.position, right) / step + 0.5f),
                          std::floor(glm::dot(camera.position, up) / step + 0.5f));
@@ -53,6 +56,11 @@ void fitSun(RendererState& s, ShadowSlot& slot, const Camera& camera) {
     ShadowView& v = s.views[slot.firstView];
     v.viewProj = proj * view;
     v.params = glm::vec4(2.0f * extent / float(s.options.shadowMapSize), 0.0f, 0.0f, 0.0f);
+    // The slope bias grows without bound on a caster the sun grazes: a wall 14 degrees off the
+    // sun's rays got ~8 texels (0.8 m) of depth bias, and the room it stands in was sunlit for
+    // 0.8 m behind it (bright bands along every wall of a room lit through a roof opening).
+    // Two texels of depth are enough beside the receivers' normal offset (forward.frag).
+    v.depthBiasClamp = kSunBiasClampTexels * v.params.x / (2.0f * depth);
 }
 
 void fitSpotOrOmni(RendererState& s, ShadowSlot& slot) {
@@ -88,12 +96,13 @@ void fitSpotOrOmni(RendererState& s, ShadowSlot& slot) {
 constexpr float kShadowBiasConstant = 1.25f;
 constexpr float kShadowBiasSlope = 2.0f;
 
-void beginDepthRendering(VkCommandBuffer cmd, VkImageView view, uint32_t size, bool clear) {
+void beginDepthRendering(VkCommandBuffer cmd, VkImageView view, uint32_t size, bool clear,
+                         float biasClamp) {
     const VkRenderingAttachmentInfo depth =
         vk::depthAttachment(view, clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
                             VK_ATTACHMENT_STORE_OP_STORE);
     vk::beginRendering(cmd, {size, size}, nullptr, &depth);
-    vkCmdSetDepthBias(cmd, kShadowBiasConstant, 0.0f, kShadowBiasSlope);
+    vkCmdSetDepthBias(cmd, kShadowBiasConstant, biasClamp, kShadowBiasSlope);
 }
 
 void drawStaticCasters(RendererState& s, VkCommandBuffer cmd, const ShadowView& view) {
@@ -244,7 +253,7 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
                                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
                                                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
-            beginDepthRendering(cmd, s.views[v].staticLayer, size, true);
+            beginDepthRendering(cmd, s.views[v].staticLayer, size, true, s.views[v].depthBiasClamp);
             drawStaticCasters(s, cmd, s.views[v]);
             vkCmdEndRendering(cmd);
             ++rendered;
@@ -294,7 +303,7 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
                                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
-            beginDepthRendering(cmd, s.views[v].frameLayer, size, false);
+            beginDepthRendering(cmd, s.views[v].frameLayer, size, false, s.views[v].depthBiasClamp);
             drawDynamicCasters(s, cmd, s.views[v], entityTransforms);
             vkCmdEndRendering(cmd);
         }
