@@ -139,8 +139,28 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
         result.compileStats = compiled.stats;
         progress.advance(1);
     }
-    StageReport compileStage{"compile", secondsSince(start), {}, result.level.surfaces.size()};
-    compileStage.rays.shadow = dominantRays.shadow.load();
+    // 2b. Density per chart: a pilot pass over the texels at the requested density, then the
+    // charts compiled again with the coarser densities it chose (their shapes do not change).
+    RayCounts pilotRays;
+    if (options.adaptiveDensity) {
+        const std::vector<TexelSample> pilotSamples = placeTexels(result.level);
+        ChartDensityStats density;
+        std::vector<float> scales = chartDensityScales(scene, lights, result.level, pilotSamples,
+                                                       ChartDensitySettings{}, &density);
+        pilotRays = density.rays;
+        report.texelsBeforeDensity = pilotSamples.size();
+        report.chartsReduced = density.chartsReduced;
+        if (density.chartsReduced > 0) {
+            world::CompileOptions coarser = options.compile;
+            coarser.charts.densityScale = std::move(scales);
+            world::CompileResult compiled = world::compileLevel(source, coarser, &dominant);
+            result.level = std::move(compiled.level);
+            result.compileStats = compiled.stats;
+        }
+    }
+    StageReport compileStage{"compile", secondsSince(start), pilotRays,
+                             result.level.surfaces.size()};
+    compileStage.rays.shadow += dominantRays.shadow.load();
     report.stages.push_back(compileStage);
     const world::CompiledLevel& level = result.level;
 

@@ -14,6 +14,7 @@
 
 #include "bake/grid/light_grid.hpp"
 #include "bake/lighting/lights.hpp"
+#include "bake/lightmap/chart_density.hpp"
 #include "bake/lightmap/lightmap_bake.hpp"
 #include "bake/probes/probe_capture.hpp"
 #include "bake/report/report.hpp"
@@ -48,6 +49,10 @@ struct BakeOptions {
     // The lightmaps' indirect part as estimated, without the denoiser (lightmap_denoise.hpp):
     // the baseline the denoiser is measured against.
     bool noDenoise = false;
+    // Lightmap density per chart from a pilot pass (chart_density.hpp): charts whose light is
+    // smooth get fewer texels. Off: every chart at the requested density. onelight-bake turns
+    // it on unless --uniform-density.
+    bool adaptiveDensity = false;
     // Overrides of the quality preset; 0 keeps the preset.
     uint32_t shadowSamples = 0, indirectSamples = 0, gridSamples = 0;
     uint32_t probeFaceSize = 0, probeSamples = 0;  // a power of two; paths per texel

@@ -48,6 +48,8 @@ std::string bakeUsage() {
          {"--paths-only", "whole paths for the indirect light, no cached bounces (slow)",
           "cached bounce passes"},
          {"--no-denoise", "the lightmaps' indirect light as estimated, unfiltered", "denoised"},
+         {"--uniform-density", "every chart at the requested density",
+          "fewer texels on charts whose light a pilot pass finds smooth"},
          {"--quiet", "no progress bars", "bars on a terminal"},
          {"-h, --help", "this help", ""}});
 }
@@ -56,6 +58,7 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
     if (printedHelp(arguments, bakeUsage())) return 0;
     std::string input, output, reportPath;
     BakeOptions options;
+    options.adaptiveDensity = true;
     world::Quake3Options quake3;
     int threads = 0;
     for (size_t i = 0; i < arguments.size(); ++i) {
@@ -109,6 +112,8 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
             options.pathsOnly = true;
         } else if (a == "--no-denoise") {
             options.noDenoise = true;
+        } else if (a == "--uniform-density") {
+            options.adaptiveDensity = false;
         } else if (!a.empty() && a[0] != '-' && input.empty()) {
             input = a;
         } else {

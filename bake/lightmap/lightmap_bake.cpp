@@ -47,8 +47,8 @@ glm::vec3 moveOutOfGeometry(const BakeScene& scene, const glm::vec3& origin,
         if (!hit.found || !hit.backFace) continue;
         moved = true;  // inside a solid, whether or not a way out is found
         const glm::vec3 to = origin + d * (hit.distance + 2.0f * offset);
-        const bool onSurface = glm::all(glm::greaterThanEqual(to, lo)) &&
-                               glm::all(glm::lessThanEqual(to, hi));
+        const bool onSurface =
+            glm::all(glm::greaterThanEqual(to, lo)) && glm::all(glm::lessThanEqual(to, hi));
         if (onSurface && hit.distance < nearest) {
             nearest = hit.distance;
             result = to;
@@ -77,10 +77,12 @@ glm::vec3 moveOutOfGeometry(const BakeScene& scene, const glm::vec3& origin,
    Its estimated noise: the sample standard deviation of pi Y(L(w_i)) over sqrt(N).
 */
 
+}  // namespace
+
 /// The texel's origin, its own primary's shadow mask and the other lights' shadowed light.
-TexelEstimate estimateDirect(const BakeScene& scene, const BakeLights& lights,
-                             const world::CompiledLevel& level, const TexelSample& sample,
-                             const LightmapSettings& settings, RayCounts& rays) {
+TexelEstimate estimateTexelDirect(const BakeScene& scene, const BakeLights& lights,
+                                  const world::CompiledLevel& level, const TexelSample& sample,
+                                  const LightmapSettings& settings, RayCounts& rays) {
     TexelEstimate out;
     Rng rng{seedFrom(sample.atlas, sample.x, sample.y, kLightmapPass)};
     const glm::vec3 n = sample.normal;
@@ -129,6 +131,8 @@ TexelEstimate estimateDirect(const BakeScene& scene, const BakeLights& lights,
     }
     return out;
 }
+
+namespace {
 
 /// The texel's indirect light by `count` gathering directions, each a path (or, with a cache
 /// in `transport`, a ray that reads the cache where it lands), seeded for pass `pass`.
@@ -309,7 +313,7 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
         uint64_t units = 0;
         for (size_t i = r.begin(); i != r.end(); ++i) {
             if (!cached && !needed[i]) continue;
-            estimates[i] = estimateDirect(scene, lights, level, samples[i], settings, local);
+            estimates[i] = estimateTexelDirect(scene, lights, level, samples[i], settings, local);
             units += cached || owned(i) ? 1 : 0;
         }
         if (progress) progress->advance(units);

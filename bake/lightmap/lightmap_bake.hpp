@@ -36,6 +36,14 @@ struct LightmapStats {
     double meanRelativeNoiseDenoised = 0.0;
 };
 
+/// One texel's direct part (the estimator in lightmap_bake.cpp): its ray origin (moved out of a
+/// solid if it lies in one), its own primary's shadow mask and shadowed light, and every other
+/// light's shadowed light, with settings.shadowSamples rays per light. Seeded from the texel.
+[[nodiscard]] TexelEstimate estimateTexelDirect(const BakeScene& scene, const BakeLights& lights,
+                                                const world::CompiledLevel& level,
+                                                const TexelSample& sample,
+                                                const LightmapSettings& settings, RayCounts& rays);
+
 /// Bakes the texels of `samples` whose global index is in [texelBegin, texelEnd) into
 /// `baked` (already sized: texels and shadowMask to totalTexels). Each texel's random
 /// sequence is seeded from (atlas, x, y, pass), so the result does not depend on threads,

@@ -1,5 +1,5 @@
 // The lightmap denoiser: a geometry-guided local-linear filter of the indirect part of every
-// texel's estimate (docs/baking.md "Denoising"). It reads neighbours in world space, so the
+// texel's estimate (docs/lighting.md "Denoising"). It reads neighbours in world space, so the
 // texels of another chart across a seam join as if the seam were not there; it never filters
 // the shadow mask or the direct light, so hard shadow edges stay where they were traced.
 #pragma once

@@ -56,6 +56,8 @@ std::string reportJson(const BakeReport& r) {
     j["lightmap"] = {{"texels_total", r.texelsTotal},
                      {"texels_sampled", r.texelsSampled},
                      {"texels_moved_out_of_geometry", r.texelsMoved},
+                     {"charts_with_fewer_texels", r.chartsReduced},
+                     {"texels_sampled_at_requested_density", r.texelsBeforeDensity},
                      {"shadow_samples_per_light", r.shadowSamplesPerLight},
                      {"indirect_samples_per_texel", r.indirectSamplesPerTexel},
                      {"estimated_relative_noise", r.lightmapMeanRelativeNoise},
@@ -106,6 +108,14 @@ std::string reportSummary(const BakeReport& r) {
                   static_cast<unsigned long long>(r.gridCells),
                   static_cast<unsigned long long>(r.gridCellsInside));
     s += line;
+    if (r.texelsBeforeDensity > 0) {
+        std::snprintf(line, sizeof line,
+                      "  density    %u charts with fewer texels: %llu texels sampled instead of "
+                      "%llu\n",
+                      r.chartsReduced, static_cast<unsigned long long>(r.texelsSampled),
+                      static_cast<unsigned long long>(r.texelsBeforeDensity));
+        s += line;
+    }
     if (r.probesTotal) {
         std::snprintf(line, sizeof line,
                       "  probes     %llu of %llu baked, face %u, %u paths/texel, %.1f KiB\n",

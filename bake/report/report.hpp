@@ -26,6 +26,10 @@ struct BakeReport {
     uint64_t triangles = 0;
     uint32_t primaryLights = 0, bakedLights = 0, emissiveTriangles = 0;
     uint64_t texelsTotal = 0, texelsSampled = 0, texelsMoved = 0;
+    // The pilot pass of adaptive density: charts given fewer texels, and the sampled texels at
+    // the requested density (0 when no pilot ran).
+    uint32_t chartsReduced = 0;
+    uint64_t texelsBeforeDensity = 0;
     uint64_t gridCells = 0, gridCellsInside = 0;
     uint32_t shadowSamplesPerLight = 0;
     uint32_t indirectSamplesPerTexel = 0;

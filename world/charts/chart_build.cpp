@@ -151,6 +151,9 @@ std::vector<ChartShape> buildChartShapes(StaticGeometry& geometry, const ChartOp
         shape.texelsPerMetre =
             std::min(options.texelsPerMetre,
                      extent > 0.0 ? maxExtentTexels / extent : options.texelsPerMetre);
+        if (shapes.size() < options.densityScale.size())
+            shape.texelsPerMetre *=
+                std::clamp(double(options.densityScale[shapes.size()]), 1e-3, 1.0);
         shape.width = static_cast<uint32_t>(std::ceil((hi.x - lo.x) * shape.texelsPerMetre)) +
                       2 * options.padding;
         shape.height = static_cast<uint32_t>(std::ceil((hi.y - lo.y) * shape.texelsPerMetre)) +

@@ -16,6 +16,10 @@ struct ChartOptions {
     uint32_t atlasSize = 1024;            // texels per side of a generated atlas
     uint32_t padding = 2;                 // texels kept free on each side of a chart, >= 2
     double maxNormalAngleDegrees = 40.0;  // between a triangle and its chart's normal
+    // Per generated chart, in chart order, a factor (0, 1] on its density (a pilot bake's
+    // choice, bake/lightmap/chart_density.hpp); empty: 1 for every chart. The charts' shapes
+    // do not depend on it, so the same level gives the same charts with fewer texels.
+    std::vector<float> densityScale;
 };
 
 /// A generated chart before packing: its triangles and its planar projection.

@@ -1,0 +1,93 @@
+// Lightmap density per chart from a pilot pass (bake/lightmap/chart_density.hpp): a chart whose
+// light is uniform gets a thirty-second of the texels per axis, one with a hard shadow keeps
+// them all, and the choice does not depend on threads.
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include "bake/lightmap/chart_density.hpp"
+#include "bake/lightmap/texel_placement.hpp"
+#include "bake_scenes.hpp"
+
+namespace onelight::bake {
+namespace {
+
+world::Light sun() {
+    world::Light l;
+    l.name = "sun";
+    l.type = world::LightType::kDirectional;
+    l.role = world::LightRole::kPrimary;
+    l.intensity = 20000.0f;
+    l.direction = glm::normalize(glm::vec3(0.3f, 0.2f, -1.0f));
+    return l;
+}
+
+/// A 30 x 30 m floor under a sun and a black sky; with a plate 1 m over it when `plate`.
+world::SourceLevel openFloor(bool plate) {
+    world::SourceLevel level;
+    const uint32_t m = test::addLambertMaterial(level, 0.5f);
+    test::addQuad(level, {-15, -15, 0}, {15, -15, 0}, {15, 15, 0}, {-15, 15, 0}, m, "floor");
+    if (plate) {
+        test::addQuad(level, {-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}, m, "plate_bottom");
+        test::addQuad(level, {-1, -1, 1.01f}, {1, -1, 1.01f}, {1, 1, 1.01f}, {-1, 1, 1.01f}, m,
+                      "plate_top");
+    }
+    level.lights.push_back(sun());
+    return level;
+}
+
+BakeOptions adaptive(float texelsPerMetre) {
+    BakeOptions o = test::testOptions(texelsPerMetre, BakeQuality::kDraft);
+    o.compile.charts.atlasSize = 1024;
+    o.adaptiveDensity = true;
+    return o;
+}
+
+// The open floor's light is the same everywhere (the sun, unshadowed; nothing to bounce off):
+// its chart gets the largest reduction, 32 per axis, so ~1/1000 of the texels, and every texel
+// still holds the exact answer: the mask 255 and no secondary light.
+TEST(ChartDensity, AnOpenFloorUnderTheSunGetsAThousandthOfTheTexels) {
+    const BakeResult coarse = bakeLevel(openFloor(false), adaptive(16.0f));
+    std::printf("open floor: %llu texels sampled instead of %llu, %u charts reduced\n",
+                static_cast<unsigned long long>(coarse.report.texelsSampled),
+                static_cast<unsigned long long>(coarse.report.texelsBeforeDensity),
+                coarse.report.chartsReduced);
+    EXPECT_EQ(coarse.report.chartsReduced, 1u);
+    EXPECT_GT(coarse.report.texelsBeforeDensity, 200000u);
+    EXPECT_LT(coarse.report.texelsSampled * 500, coarse.report.texelsBeforeDensity);
+    for (const TexelSample& s : placeTexels(coarse.level)) {
+        ASSERT_EQ(coarse.baked.shadowMask[s.texel], 255);
+        ASSERT_EQ(coarse.baked.texels[s.texel].irradiance, glm::vec3(0.0f));
+    }
+}
+
+// A plate's hard shadow on the floor: the floor's chart keeps its density (a shadow edge is a
+// second difference of the whole light), while the plate's own charts, uniformly lit (its top)
+// or dark (its underside, lit only by the floor's bounce, whose distance is 1 m), may coarsen.
+TEST(ChartDensity, AHardShadowKeepsItsChartsDensity) {
+    const world::SourceLevel level = openFloor(true);
+    BakeOptions options = adaptive(8.0f);
+    options.adaptiveDensity = false;
+    const BakeResult full = bakeLevel(level, options);
+    const test::LevelScene scene(level);
+    const std::vector<TexelSample> samples = placeTexels(full.level);
+    const std::vector<float> scales =
+        chartDensityScales(scene.scene, scene.lights, full.level, samples, {});
+    ASSERT_EQ(scales.size(), full.level.charts.size());
+    // The floor is the largest chart.
+    size_t floor = 0;
+    for (size_t c = 0; c < full.level.charts.size(); ++c)
+        if (full.level.charts[c].width * full.level.charts[c].height >
+            full.level.charts[floor].width * full.level.charts[floor].height)
+            floor = c;
+    EXPECT_EQ(scales[floor], 1.0f);
+    // And the same scales on one thread.
+    const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(chartDensityScales(scene.scene, scene.lights, full.level, samples, {}), scales);
+}
+
+}  // namespace
+}  // namespace onelight::bake
