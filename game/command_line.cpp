@@ -24,6 +24,9 @@ std::string usage() {
         {"--flashlight", "the spot effect light at the camera (default: off)"},
         {"--replay SCRIPT", "play a replay script on the fixed tick (default: none)"},
         {"--capture-dir DIR", "where a replay's captures go (default: captures/)"},
+        {"--benchmark REPLAY",
+         "play REPLAY drawing every tick as fast as possible, no captures; print the median and "
+         "95th-percentile frame times as key=value (default: none)"},
         {"--free-fly", "a free-fly camera instead of the player (default: the player)"},
         {"--quality Q",
          "draft, default or high: the bake's when LEVEL needs baking (default: draft for a "
@@ -83,6 +86,9 @@ CommandLine parseCommandLine(int argc, char** argv) {
             out.freeFly = true;
         } else if (a == "--replay" && hasValue) {
             out.replay = argv[++i];
+        } else if (a == "--benchmark" && hasValue) {
+            out.replay = argv[++i];
+            out.benchmark = true;
         } else if (a == "--capture-dir" && hasValue) {
             out.captureDir = argv[++i];
         } else if (a == "--quality" && hasValue) {

@@ -19,6 +19,8 @@ struct CommandLine {
     bool flashlight = false;        // the spot effect light at the camera
     std::string replay;             // a replay script to run (game mode, fixed tick)
     std::string captureDir;         // where a replay's captures go (default: captures/)
+    bool benchmark = false;         // --benchmark REPLAY: every tick drawn as fast as possible,
+                                    // no captures; frame-time statistics on stdout
     bool freeFly = false;           // window: a free-fly camera instead of the player
     std::string view = "onelight";  // whose baked light is shown: onelight, or q3map2 (the
                                     // Quake 3 map's own lightmaps, game/lighting_view.hpp)

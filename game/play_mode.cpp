@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 #include "ecs/schedule.hpp"
 #include "render_target.hpp"
@@ -49,6 +50,30 @@ struct InputReader {
     }
 };
 
+// The window's title: the level, and twice a second the mean frame time, frames per second
+// and GPU time over the frames since the last update.
+struct FrameRateTitle {
+    std::string level;
+    std::chrono::steady_clock::time_point since{};
+    uint32_t frames = 0;
+    double gpuMs = 0.0;
+
+    void add(GLFWwindow* window, std::chrono::steady_clock::time_point now, double frameGpuMs) {
+        if (frames == 0 && since == std::chrono::steady_clock::time_point{}) since = now;
+        ++frames;
+        gpuMs += frameGpuMs;
+        const double seconds = std::chrono::duration<double>(now - since).count();
+        if (seconds < 0.5) return;
+        char text[512];
+        std::snprintf(text, sizeof text, "onelight - %s - %.1f ms (%.1f fps), GPU %.1f ms",
+                      level.c_str(), 1000.0 * seconds / frames, frames / seconds, gpuMs / frames);
+        glfwSetWindowTitle(window, text);
+        since = now;
+        frames = 0;
+        gpuMs = 0.0;
+    }
+};
+
 }  // namespace
 
 int runPlay(const CommandLine& cl, const assets::LoadedLevel& level) {
@@ -71,13 +96,16 @@ int runPlay(const CommandLine& cl, const assets::LoadedLevel& level) {
         clock.tickSeconds = session.tickSeconds;
         std::vector<render::DynamicTransform> transforms;
         auto last = std::chrono::steady_clock::now();
+        FrameRateTitle title{level.path};
         for (uint32_t frame = 0; !targetWantsToClose(target); ++frame) {
             auto now = std::chrono::steady_clock::now();
             int ticks = clock.advance(std::chrono::duration<double>(now - last).count());
             last = now;
             reader.read(target.window.window, session.input);
             for (int t = 0; t < std::max(ticks, frame == 0 ? 1 : 0); ++t) stepSession(session);
-            drawToTarget(target, frameInputsOf(session, transforms), false);
+            const render::FrameStats stats =
+                drawToTarget(target, frameInputsOf(session, transforms), false);
+            title.add(target.window.window, now, stats.gpuMs);
             if (cl.frames > 0 && frame + 1 >= cl.frames) break;
         }
     } catch (...) {

@@ -1,6 +1,7 @@
 #include "replay_mode.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -62,6 +63,31 @@ nlohmann::json captureJson(Session& s, const render::Renderer& renderer,
             {"dynamic_objects", objects}};
 }
 
+/// The q-quantile of `values` (nearest rank), 0 when empty.
+double quantile(std::vector<double> values, double q) {
+    if (values.empty()) return 0.0;
+    const size_t k = std::min(values.size() - 1, size_t(std::ceil(q * double(values.size()))) - 1);
+    std::nth_element(values.begin(), values.begin() + long(k), values.end());
+    return values[k];
+}
+
+/// Frame times of a benchmark run: wall time of each drawn frame (submit to its end, as the
+/// player waits for it) and the GPU's own time from its timestamps.
+struct FrameTimes {
+    std::vector<double> wallMs, gpuMs;
+};
+
+/// One line a script can read: `onelight-benchmark key=value ...`, times in milliseconds.
+void printBenchmark(const CommandLine& cl, const FrameTimes& t, const render::RendererInfo& info) {
+    const double median = quantile(t.wallMs, 0.5);
+    std::printf(
+        "onelight-benchmark replay=%s frames=%zu width=%u height=%u msaa=%u median_ms=%.3f "
+        "p95_ms=%.3f gpu_median_ms=%.3f gpu_p95_ms=%.3f fps=%.2f\n",
+        cl.replay.c_str(), t.wallMs.size(), cl.width, cl.height, info.msaaInUse, median,
+        quantile(t.wallMs, 0.95), quantile(t.gpuMs, 0.5), quantile(t.gpuMs, 0.95),
+        median > 0.0 ? 1000.0 / median : 0.0);
+}
+
 // All captures side by side at half size, in script order: one PNG to look at.
 void writeContactSheet(const std::string& path, const std::vector<Capture>& captures) {
     if (captures.empty()) return;
@@ -96,7 +122,7 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
     const double tickSeconds = 1.0 / runner.script.tickRate;
     session.tickSeconds = tickSeconds;
     const std::string dir = cl.captureDir.empty() ? std::string("captures") : cl.captureDir;
-    std::filesystem::create_directories(dir);
+    if (!cl.benchmark) std::filesystem::create_directories(dir);
 
     RenderTarget target;
     openRenderTarget(target, cl, level, !cl.headless);
@@ -106,6 +132,7 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
                 render::rendererInfo(target.renderer).msaaInUse);
     int code = 0;
     std::vector<Capture> captures;
+    FrameTimes times;
     try {
         uint64_t lastTick = runner.script.commands.empty() ? 0 : runner.script.commands.back().tick;
         std::vector<render::DynamicTransform> transforms;
@@ -114,12 +141,22 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
                              session.tuning);
             stepSession(session);
             ReplayAfterTick after = finishReplayTick(runner, tick, session.registry);
-            // Headless, only the captured ticks are drawn; in a window, every tick is shown.
-            if (!after.captures.empty() || target.windowed) {
+            // Headless, only the captured ticks are drawn; in a window, and when benchmarking,
+            // every tick is (a benchmark captures nothing).
+            if (!after.captures.empty() || target.windowed || cl.benchmark) {
                 if (targetWantsToClose(target)) break;
                 render::FrameInputs in = frameInputsOf(session, transforms);
-                render::FrameStats stats = drawToTarget(target, in, !after.captures.empty());
-                for (const std::string& name : after.captures) {
+                const auto start = std::chrono::steady_clock::now();
+                render::FrameStats stats =
+                    drawToTarget(target, in, !after.captures.empty() && !cl.benchmark);
+                if (cl.benchmark) {
+                    times.wallMs.push_back(std::chrono::duration<double, std::milli>(
+                                               std::chrono::steady_clock::now() - start)
+                                               .count());
+                    times.gpuMs.push_back(stats.gpuMs);
+                }
+                for (const std::string& name :
+                     cl.benchmark ? std::vector<std::string>{} : after.captures) {
                     const render::CapturedFrame& frame = render::capturedFrame(target.renderer);
                     std::string base = dir + "/" + name;
                     capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8);
@@ -133,7 +170,10 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
             }
             if (after.quit) break;
         }
-        writeContactSheet(dir + "/contact_sheet.png", captures);
+        if (cl.benchmark)
+            printBenchmark(cl, times, render::rendererInfo(target.renderer));
+        else
+            writeContactSheet(dir + "/contact_sheet.png", captures);
     } catch (const ReplayFailure& e) {
         std::fprintf(stderr, "onelight: %s\n", e.what());
         code = 1;
@@ -145,7 +185,7 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
         std::fprintf(stderr, "onelight: %u Vulkan validation errors\n", errors);
         code = 1;
     }
-    if (code == 0)
+    if (code == 0 && !cl.benchmark)
         std::printf("onelight: replay done, %zu captures and a contact sheet in %s/\n",
                     captures.size(), dir.c_str());
     return code;

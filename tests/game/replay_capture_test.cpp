@@ -4,9 +4,12 @@
 // expect lines are checked by the replay itself: a failed one makes `onelight` exit 1.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 #include "capture/capture.hpp"
 #include "golden.hpp"
@@ -114,6 +117,37 @@ TEST(DemoReplays, TheSameReplayGivesTheSameFrames) {
         const std::vector<uint8_t> b = onelight::capture::readPng(second + "/" + c + ".png").rgba;
         EXPECT_TRUE(a == b) << c << " differs between two runs of the same replay";
     }
+}
+
+// --benchmark REPLAY draws every tick of the replay (the mover script: every tick to its quit at
+// 4 s) and prints one line of key=value pairs; it writes no captures. Checked: the frame count
+// is the ticks drawn, the times are positive and finite, the 95th percentile is not below the
+// median, and the GPU time is not above the wall time a frame took.
+TEST(DemoReplays, TheBenchmarkPrintsFrameTimesAScriptCanRead) {
+    const std::string dir = outputDir("benchmark");
+    const CommandResult r =
+        runOnelight(std::string(ONELIGHT_DEMO_PACKAGE) + " --benchmark " + ONELIGHT_REPLAYS +
+                    "/mover.replay --headless --size 64x36 --capture-dir " + dir);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const size_t at = r.output.find("onelight-benchmark ");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    std::map<std::string, std::string> values;
+    std::istringstream line(r.output.substr(at, r.output.find('\n', at) - at));
+    for (std::string pair; line >> pair;)
+        if (const size_t eq = pair.find('='); eq != std::string::npos)
+            values[pair.substr(0, eq)] = pair.substr(eq + 1);
+    for (const char* key : {"frames", "median_ms", "p95_ms", "gpu_median_ms", "gpu_p95_ms", "fps"})
+        ASSERT_TRUE(values.count(key)) << key << " missing in: " << r.output;
+    const int frames = std::stoi(values["frames"]);
+    const double median = std::stod(values["median_ms"]), p95 = std::stod(values["p95_ms"]);
+    const double gpu = std::stod(values["gpu_median_ms"]);
+    EXPECT_GT(frames, 100);
+    EXPECT_TRUE(std::isfinite(median) && median > 0.0);
+    EXPECT_GE(p95, median);
+    EXPECT_GT(gpu, 0.0);
+    EXPECT_LE(gpu, p95);
+    EXPECT_EQ(values["width"], "64");
+    EXPECT_TRUE(fs::is_empty(dir)) << "a benchmark writes no captures";
 }
 
 // Bad replays: one line `onelight: FILE:LINE: what was expected`, exit 1.
