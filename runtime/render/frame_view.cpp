@@ -3,6 +3,7 @@
 // draw list, the dynamic objects' grid lighting and the frame's uniforms.
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "render/renderer_state.hpp"
 #include "shading.hpp"
@@ -138,11 +139,39 @@ DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats
     std::sort(list.visibleLights.begin(), list.visibleLights.end());
     list.visibleLights.erase(std::unique(list.visibleLights.begin(), list.visibleLights.end()),
                              list.visibleLights.end());
-    std::stable_sort(list.draws.begin(), list.draws.end(), [](const Draw& a, const Draw& b) {
-        return a.key != b.key ? a.key < b.key : a.distance2 < b.distance2;
-    });
+    batchDraws(list.draws, s.options.rasterFloor);
+    stats.draws = uint32_t(list.draws.size());
     if (s.options.flatShading) list.visibleLights.clear();
     return list;
+}
+
+void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
+    // Sorted by pipeline, then static before dynamic, then by what a draw binds and pushes,
+    // then by index range, so that the surfaces a draw could share lie side by side; dynamic
+    // meshes front to back. With geometryOnly (the raster floor) only the index range counts.
+    const auto state = [geometryOnly](const Draw& d) {
+        return geometryOnly ? std::make_tuple(0u, 0u, 0u, 0u, 0u)
+                            : std::make_tuple(d.key, d.entity == kNoIndex ? 0u : 1u, d.material,
+                                              d.primaryLight, d.atlas);
+    };
+    std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
+        if (state(a) != state(b)) return state(a) < state(b);
+        if (a.entity != kNoIndex || b.entity != kNoIndex) return a.distance2 < b.distance2;
+        return std::tie(a.vertexOffset, a.firstIndex) < std::tie(b.vertexOffset, b.firstIndex);
+    });
+    size_t kept = 0;
+    for (size_t i = 0; i < draws.size(); ++i) {
+        Draw& last = draws[kept == 0 ? 0 : kept - 1];
+        const Draw& d = draws[i];
+        if (kept > 0 && last.entity == kNoIndex && d.entity == kNoIndex &&
+            state(last) == state(d) && last.vertexOffset == d.vertexOffset &&
+            last.firstIndex + last.indexCount == d.firstIndex) {
+            last.indexCount += d.indexCount;
+            continue;
+        }
+        draws[kept++] = d;
+    }
+    draws.resize(kept);
 }
 
 void writeObjectLighting(const RendererState& s, const FrameView& view, const DrawList& list,

@@ -93,6 +93,7 @@ struct FrameStats {
     double gpuForwardMs = 0.0;
     double gpuTonemapMs = 0.0;
     uint32_t surfacesDrawn = 0, surfacesCulled = 0, dynamicMeshesDrawn = 0;
+    uint32_t draws = 0;                // forward-pass draw calls, after batching
     uint32_t shadowViewsRendered = 0;  // static views redrawn this frame
     uint64_t trianglesDrawn = 0;       // forward pass
     float ev100 = 0.0f, exposure = 1.0f;
@@ -116,8 +117,10 @@ struct RendererOptions {
     float placeholderAmbientLux = -1.0f;  // constant ambient without baked lighting; < 0 = auto
     int forceMaterialClass = -1;          // >= 0: every material in this class (benchmarks)
     bool flatShading = false;             // constant colour, no shadows (benchmark floor)
-    bool samplePlaceholders = false;      // fetch the placeholder baked textures anyway (tests);
-                                          // else a level without baked lighting fetches none
+    bool rasterFloor = false;  // with flatShading: the fewest draws, every adjacent index range
+                               // merged whatever its material (the benchmark's raster floor)
+    bool samplePlaceholders = false;  // fetch the placeholder baked textures anyway (tests);
+                                      // else a level without baked lighting fetches none
     bool probes = true;  // false: the package's probes ignored, a uniform environment instead
 };
 

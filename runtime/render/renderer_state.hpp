@@ -208,7 +208,7 @@ struct Draw {
     int32_t vertexOffset = 0;
     uint32_t primaryLight = kNoIndex, atlas = kNoIndex;
     uint32_t entity = kNoIndex;  // kNoIndex for static; a dynamic object's record in objectLighting
-    float distance2 = 0.0f;      // squared metres from the camera: front to back within a key
+    float distance2 = 0.0f;      // squared metres from the camera: dynamic draws front to back
 };
 
 /// The camera, the exposure and the dynamic objects' transforms and primaries of one frame.
@@ -220,6 +220,12 @@ struct FrameView {
     std::vector<uint32_t> entityPrimary;      // per entity: the game's pick, or kNoIndex
 };
 [[nodiscard]] FrameView frameViewOf(const RendererState& s, const FrameInputs& inputs);
+
+/// Orders the culled draws for recording and merges each run of static draws that bind and push
+/// the same state (pipeline, material, primary, lightmap atlas) over adjacent index ranges into
+/// one draw; dynamic meshes stay one draw each, front to back. With geometryOnly every adjacent
+/// range merges whatever it binds (the raster floor, RendererOptions::rasterFloor).
+void batchDraws(std::vector<Draw>& draws, bool geometryOnly);
 
 /// The frame's draws, sorted by pipeline then front to back, and the primaries they use.
 struct DrawList {
