@@ -115,6 +115,7 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
                        {"gpu_tonemap", stats.gpuTonemapMs},
                        {"gpu_timestamps", stats.gpuTimestamps}};
     j["frame"] = {{"surfaces_drawn", stats.surfacesDrawn},
+                  {"draws", stats.draws},
                   {"surfaces_culled", stats.surfacesCulled},
                   {"dynamic_meshes_drawn", stats.dynamicMeshesDrawn},
                   {"shadow_views_rendered", stats.shadowViewsRendered},

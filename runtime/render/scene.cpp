@@ -6,6 +6,7 @@
 #include <cstring>
 #include <span>
 #include <stdexcept>
+#include <tuple>
 
 #include <glm/gtc/packing.hpp>
 
@@ -176,17 +177,44 @@ VkSampler samplerFor(RendererState& s, const world::Sampler& sampler) {
 }
 
 void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
-    // Static vertices, then dynamic ones; static indices, then dynamic ones.
+    // Static vertices, then dynamic ones; static indices, then dynamic ones. The static
+    // surfaces' indices are laid out grouped by what their draws bind and push (material,
+    // primary, lightmap atlas), in the level's order within a group, so that the surfaces a
+    // view keeps of one group lie side by side and batchDraws merges them into few draws.
     std::vector<world::Vertex> vertices = level.vertices;
     vertices.insert(vertices.end(), level.dynamicVertices.begin(), level.dynamicVertices.end());
-    std::vector<uint32_t> indices = level.indices;
+    std::vector<uint32_t> order(level.surfaces.size());
+    for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        const world::Surface &x = level.surfaces[a], &y = level.surfaces[b];
+        return std::tie(x.material, x.primaryLight, x.atlas) <
+               std::tie(y.material, y.primaryLight, y.atlas);
+    });
+    std::vector<uint32_t> indices;
+    indices.reserve(level.indices.size() + level.dynamicIndices.size());
+    std::vector<uint32_t> firstIndex(level.surfaces.size(), 0);
+    uint64_t covered = 0;
+    for (const world::Surface& surface : level.surfaces) covered += surface.indexCount;
+    if (covered == level.indices.size()) {
+        for (uint32_t i : order) {
+            const world::Surface& surface = level.surfaces[i];
+            firstIndex[i] = uint32_t(indices.size());
+            indices.insert(indices.end(), level.indices.begin() + surface.firstIndex,
+                           level.indices.begin() + surface.firstIndex + surface.indexCount);
+        }
+    } else {  // surfaces that share or skip indices (not what the compiler writes): as stored
+        indices = level.indices;
+        for (uint32_t i = 0; i < level.surfaces.size(); ++i)
+            firstIndex[i] = level.surfaces[i].firstIndex;
+    }
     indices.insert(indices.end(), level.dynamicIndices.begin(), level.dynamicIndices.end());
     createRecordBuffer(*s.ctx, s.vertices, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     createRecordBuffer(*s.ctx, s.indices, indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
-    for (const world::Surface& surface : level.surfaces) {
+    for (uint32_t i = 0; i < level.surfaces.size(); ++i) {
+        const world::Surface& surface = level.surfaces[i];
         DrawSurface d;
-        d.firstIndex = surface.firstIndex;
+        d.firstIndex = firstIndex[i];
         d.indexCount = surface.indexCount;
         d.material = surface.material;
         d.primaryLight = surface.primaryLight;
