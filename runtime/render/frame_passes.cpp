@@ -94,6 +94,23 @@ void recordForwardPass(RendererState& s, VkCommandBuffer cmd, const FrameSlot& s
     vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.forwardLayout.layout, 0, 1,
                             &slot.frameSet, 0, nullptr);
+    if (s.depthPipelines[0] != VK_NULL_HANDLE) {
+        int bound = -1;
+        for (const Draw& d : list.draws) {
+            if (d.key & 8u) continue;  // alpha-masked: its coverage comes from the fragment shader
+            const int doubleSided = (d.key & 4u) ? 1 : 0;
+            if (doubleSided != bound) {
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                  s.depthPipelines[doubleSided]);
+                bound = doubleSided;
+            }
+            const DrawPush push = drawPushOf(s, view, d);
+            vkCmdPushConstants(cmd, s.forwardLayout.layout,
+                               VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                               sizeof(push), &push);
+            vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
+        }
+    }
     uint32_t boundKey = kNoIndex, boundMaterial = kNoIndex;
     for (const Draw& d : list.draws) {
         if (d.key != boundKey) {

@@ -117,6 +117,15 @@ void createForwardPipelines(RendererState& s) {
                                       (doubleSided ? "+double-sided" : "") +
                                       (alphaMask ? "+alpha-mask" : ""));
     }
+    if (s.options.depthPrepass && !s.options.flatShading) {
+        vk::GraphicsPipelineDesc depth = forward;
+        depth.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}}};
+        depth.colorWrite = false;
+        for (int doubleSided = 0; doubleSided < 2; ++doubleSided) {
+            depth.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+            s.depthPipelines[doubleSided] = vk::createGraphicsPipeline(ctx, s.forwardLayout, depth);
+        }
+    }
     if (s.options.flatShading) {
         forward.cullMode = VK_CULL_MODE_BACK_BIT;
         forward.stages = {
@@ -230,7 +239,8 @@ void destroyPipelines(RendererState& s) {
     s.materialSets.clear();
     s.tonemapSet = VK_NULL_HANDLE;
     for (FrameSlot& slot : s.frames) slot.frameSet = VK_NULL_HANDLE;
-    for (VkPipeline* p : {&s.skyPipeline, &s.tonemapPipeline, &s.shadowPipeline, &s.flatPipeline}) {
+    for (VkPipeline* p : {&s.skyPipeline, &s.tonemapPipeline, &s.shadowPipeline, &s.flatPipeline,
+                          &s.depthPipelines[0], &s.depthPipelines[1]}) {
         if (*p) vkDestroyPipeline(ctx.device, *p, nullptr);
         *p = VK_NULL_HANDLE;
     }

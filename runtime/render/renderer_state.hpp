@@ -139,8 +139,10 @@ struct RendererState {
 
     // Pipelines and descriptors.
     vk::PipelineLayout forwardLayout, shadowLayout, tonemapLayout;
-    std::map<uint32_t, VkPipeline> forwardPipelines;   // owned, by permutationKey
-    VkPipeline flatPipeline = VK_NULL_HANDLE;          // owned
+    std::map<uint32_t, VkPipeline> forwardPipelines;  // owned, by permutationKey
+    VkPipeline flatPipeline = VK_NULL_HANDLE;         // owned
+    // The depth pre-pass: forward.vert alone, depth only, culling back faces or none (owned).
+    VkPipeline depthPipelines[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline shadowPipeline = VK_NULL_HANDLE;        // owned
     VkPipeline tonemapPipeline = VK_NULL_HANDLE;       // owned
     VkPipeline skyPipeline = VK_NULL_HANDLE;           // owned, when skyImage

@@ -115,8 +115,10 @@ VkPipeline createGraphicsPipeline(const Context& ctx, const PipelineLayout& layo
 
         std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
         for (VkPipelineColorBlendAttachmentState& b : blends)
-            b.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                               VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+            b.colorWriteMask = desc.colorWrite
+                                   ? VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                         VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT
+                                   : 0u;
         VkPipelineColorBlendStateCreateInfo blend{};
         blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
         blend.attachmentCount = uint32_t(blends.size());

@@ -50,6 +50,7 @@ struct GraphicsPipelineDesc {
     bool depthTest = true;
     bool depthWrite = true;
     VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+    bool colorWrite = true;  // false: the colour attachments are left as they are (depth only)
     bool dynamicDepthBias = false;  // depth bias enabled, its values set per draw
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     std::vector<VkFormat> colorFormats;

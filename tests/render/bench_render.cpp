@@ -161,12 +161,14 @@ int main(int argc, char** argv) {
         // PBR, everything Lambert-only, and a flat-shaded floor (same geometry and MSAA).
         // A fifth draws the raster floor: the same triangles, depth and a constant colour, in
         // the fewest draws (every adjacent index range merged).
-        std::vector<render::RendererOptions> configs(5);  // 1280x720, MSAA 2x requested
+        // A sixth is the full frame without the depth pre-pass.
+        std::vector<render::RendererOptions> configs(6);  // 1280x720, MSAA 2x requested
         configs[1].forceMaterialClass = int(world::MaterialClass::kFull);
         configs[2].forceMaterialClass = int(world::MaterialClass::kLambert);
         configs[3].flatShading = true;
         configs[4].flatShading = true;
         configs[4].rasterFloor = true;
+        configs[5].depthPrepass = false;
         std::vector<render::Renderer> renderers(configs.size());
         std::string rssOne;
         for (size_t c = 0; c < configs.size(); ++c) {
@@ -201,7 +203,7 @@ int main(int argc, char** argv) {
         };
         Row full{median(gpu[0]), median(cpu[0])}, pbr{median(gpu[1]), median(cpu[1])},
             lambert{median(gpu[2]), median(cpu[2])}, flat{median(gpu[3]), median(cpu[3])},
-            floor{median(gpu[4]), median(cpu[4])};
+            floor{median(gpu[4]), median(cpu[4])}, noPrepass{median(gpu[5]), median(cpu[5])};
 
         std::printf(
             "onelight-bench-render: 1280x720, MSAA %ux (2x requested), %s, %d interleaved frames "
@@ -215,6 +217,9 @@ int main(int argc, char** argv) {
             "  full frame (level's permutations, shadows cached): %8.2f ms GPU %8.2f ms CPU, "
             "%u draws\n",
             full.gpuMs, full.cpuMs, draws[0]);
+        std::printf(
+            "  the same without the depth pre-pass:              %8.2f ms GPU %8.2f ms CPU\n",
+            noPrepass.gpuMs, noPrepass.cpuMs);
         std::printf("    its passes: shadows %.2f ms, forward %.2f ms, tonemap %.2f ms GPU\n",
                     median(shadowPass), median(forwardPass), median(tonemapPass));
         std::printf(

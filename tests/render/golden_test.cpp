@@ -164,6 +164,24 @@ TEST(RenderGolden, SunShadowsMaterialClassesAndDynamicObject) {
     compareWithGolden("sun_yard", r.frame);
 }
 
+// The depth pre-pass only rejects hidden samples earlier: the sunlit yard (four material
+// classes, a dynamic box) is the same frame, bit for bit, with it and without it.
+TEST(RenderGolden, TheDepthPrepassChangesNoPixel) {
+    const assets::LoadedLevel level = generated("sun_yard_prepass", sunScene());
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({-2.0f, 3.0f, 9.0f}, -10.0f, -15.0f);
+    render::RendererOptions with = smallFrame(), without = smallFrame();
+    with.depthPrepass = true;
+    without.depthPrepass = false;
+    const test::RenderedFrame a = test::renderOnce(level, with, inputs);
+    const test::RenderedFrame b = test::renderOnce(level, without, inputs);
+    EXPECT_EQ(a.validationErrors, 0u);
+    EXPECT_EQ(b.validationErrors, 0u);
+    ASSERT_EQ(a.frame.rgba8.size(), b.frame.rgba8.size());
+    EXPECT_TRUE(a.frame.rgba8 == b.frame.rgba8);
+    EXPECT_TRUE(a.frame.linearRgba == b.frame.linearRgba);
+}
+
 TEST(RenderGolden, SpotAndOmniShadowsWithEffectLights) {
     const assets::LoadedLevel level = generated("spot_omni", spotOmniScene());
     render::FrameInputs inputs;

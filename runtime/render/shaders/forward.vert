@@ -9,6 +9,9 @@ layout(location = 2) in vec4 inTangent;
 layout(location = 3) in vec2 inUv0;
 layout(location = 4) in vec2 inUv1;
 
+// The depth pre-pass draws with this shader alone: its depth must be the forward pass's exactly.
+invariant gl_Position;
+
 layout(location = 0) out vec3 outWorldPosition;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec4 outTangent;
