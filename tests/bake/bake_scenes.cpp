@@ -195,14 +195,18 @@ world::SourceLevel roofOpeningRoom() {
     ceiling(ox0, y0, ox1, oy0, "ceiling_south");
     ceiling(ox0, oy1, ox1, y1, "ceiling_north");
     addBox(level, {-1.2f, -0.6f, 0.0f}, {-0.4f, 0.2f, 0.9f}, block, false, "block");
+    level.lights.push_back(sunLight({0.25f, 0.15f, -1.0f}, 20000.0f));
+    return level;
+}
+
+world::Light sunLight(glm::vec3 direction, float lux) {
     world::Light sun;
     sun.name = "sun";
     sun.type = world::LightType::kDirectional;
     sun.role = world::LightRole::kPrimary;
-    sun.intensity = 20000.0f;
-    sun.direction = glm::normalize(glm::vec3(0.25f, 0.15f, -1.0f));
-    level.lights.push_back(sun);
-    return level;
+    sun.intensity = lux;
+    sun.direction = glm::normalize(direction);
+    return sun;
 }
 
 BakeOptions testOptions(float texelsPerMetre, BakeQuality quality) {

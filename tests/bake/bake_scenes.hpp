@@ -50,6 +50,8 @@ void setSkyImage(world::SourceLevel& level, const std::string& hdrPath, const wo
                  glm::vec3 scale);
 
 world::Light pointLight(glm::vec3 position, float candela, world::LightRole role);
+/// A primary directional light named "sun" travelling along `direction` (normalised here).
+world::Light sunLight(glm::vec3 direction, float lux);
 world::Light spotLight(glm::vec3 position, glm::vec3 direction, float candela, float inner,
                        float outer, world::LightRole role);
 

@@ -15,16 +15,6 @@
 namespace onelight::bake {
 namespace {
 
-world::Light sun() {
-    world::Light l;
-    l.name = "sun";
-    l.type = world::LightType::kDirectional;
-    l.role = world::LightRole::kPrimary;
-    l.intensity = 20000.0f;
-    l.direction = glm::normalize(glm::vec3(0.3f, 0.2f, -1.0f));
-    return l;
-}
-
 /// A 30 x 30 m floor under a sun and a black sky; with a plate 1 m over it when `plate`.
 world::SourceLevel openFloor(bool plate) {
     world::SourceLevel level;
@@ -35,7 +25,7 @@ world::SourceLevel openFloor(bool plate) {
         test::addQuad(level, {-1, -1, 1.01f}, {1, -1, 1.01f}, {1, 1, 1.01f}, {-1, 1, 1.01f}, m,
                       "plate_top");
     }
-    level.lights.push_back(sun());
+    level.lights.push_back(test::sunLight({0.3f, 0.2f, -1.0f}, 20000.0f));
     return level;
 }
 
