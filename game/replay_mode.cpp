@@ -155,8 +155,8 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
                                                .count());
                     times.gpuMs.push_back(stats.gpuMs);
                 }
-                for (const std::string& name :
-                     cl.benchmark ? std::vector<std::string>{} : after.captures) {
+                for (const std::string& name : after.captures) {
+                    if (cl.benchmark) break;  // a benchmark captures nothing
                     const render::CapturedFrame& frame = render::capturedFrame(target.renderer);
                     std::string base = dir + "/" + name;
                     capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8);

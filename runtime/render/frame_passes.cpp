@@ -97,8 +97,8 @@ void recordForwardPass(RendererState& s, VkCommandBuffer cmd, const FrameSlot& s
     if (s.depthPipelines[0] != VK_NULL_HANDLE) {
         int bound = -1;
         for (const Draw& d : list.draws) {
-            if (d.key & 8u) continue;  // alpha-masked: its coverage comes from the fragment shader
-            const int doubleSided = (d.key & 4u) ? 1 : 0;
+            if (keyAlphaMask(d.key)) continue;  // its coverage comes from the fragment shader
+            const int doubleSided = keyDoubleSided(d.key) ? 1 : 0;
             if (doubleSided != bound) {
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                                   s.depthPipelines[doubleSided]);

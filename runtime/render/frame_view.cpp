@@ -149,10 +149,12 @@ void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
     // Sorted by pipeline, then static before dynamic, then by what a draw binds and pushes,
     // then by index range, so that the surfaces a draw could share lie side by side; dynamic
     // meshes front to back. With geometryOnly (the raster floor) only the index range counts.
+    // Static and dynamic draws never share a state, so the two orders never meet (a strict
+    // weak order).
     const auto state = [geometryOnly](const Draw& d) {
-        return geometryOnly ? std::make_tuple(0u, 0u, 0u, 0u, 0u)
-                            : std::make_tuple(d.key, d.entity == kNoIndex ? 0u : 1u, d.material,
-                                              d.primaryLight, d.atlas);
+        const uint32_t dynamic = d.entity == kNoIndex ? 0u : 1u;
+        return geometryOnly ? std::make_tuple(0u, dynamic, 0u, 0u, 0u)
+                            : std::make_tuple(d.key, dynamic, d.material, d.primaryLight, d.atlas);
     };
     std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
         if (state(a) != state(b)) return state(a) < state(b);

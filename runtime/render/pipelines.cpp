@@ -102,8 +102,8 @@ void createForwardPipelines(RendererState& s) {
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     const int bakedLighting = s.bakedLighting || s.options.samplePlaceholders ? 1 : 0;
     for (uint32_t key : keys) {
-        const int materialClass = int(key & 3u);
-        const bool doubleSided = (key & 4u) != 0, alphaMask = (key & 8u) != 0;
+        const int materialClass = int(keyMaterialClass(key));
+        const bool doubleSided = keyDoubleSided(key), alphaMask = keyAlphaMask(key);
         forward.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
         forward.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}},
                           {VK_SHADER_STAGE_FRAGMENT_BIT,

@@ -161,6 +161,15 @@ struct RendererState {
                                              bool alphaMask) {
     return materialClass | (doubleSided ? 4u : 0u) | (alphaMask ? 8u : 0u);
 }
+[[nodiscard]] inline uint32_t keyMaterialClass(uint32_t key) {
+    return key & 3u;
+}
+[[nodiscard]] inline bool keyDoubleSided(uint32_t key) {
+    return (key & 4u) != 0;
+}
+[[nodiscard]] inline bool keyAlphaMask(uint32_t key) {
+    return (key & 8u) != 0;
+}
 
 // scene.cpp
 void uploadScene(RendererState& s, const assets::LoadedLevel& loaded);
