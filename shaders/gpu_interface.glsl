@@ -33,7 +33,8 @@ const int BINDING_MATERIALS = 8;        // storage GpuMaterial[]
 const int BINDING_ENV_BRDF = 9;         // sampler2D
 const int BINDING_PROBE_RECORDS = 10;   // storage GpuProbe[]
 const int BINDING_SKY = 11;             // sampler2D, the sky image (shaders/sky.glsl)
-const int FRAME_BINDING_COUNT = 12;
+const int BINDING_PROBE_CELLS = 12;     // storage GpuProbeGrid then uint[] (probe_records.hpp)
+const int FRAME_BINDING_COUNT = 13;
 
 // Descriptor set 1: a material's textures, binding = slot. GpuMaterial.textures.x holds bit
 // (1 << slot) for every slot the material fills (the others hold placeholders).
@@ -107,6 +108,17 @@ struct GpuProbe {
     vec4 boxMax;        // xyz
     vec4 influenceMin;  // xyz influence box, w blend band (metres)
     vec4 influenceMax;  // xyz
+};
+
+// The probes' cell grid (runtime/render/probe_records.hpp): a box of dims cells of cellSize
+// metres from origin. Behind it, cell c's list starts at word probeCells[2c] of the same array
+// and holds probeCells[2c + 1] & 0xFFFF records whose influence reaches the cell, in blending
+// order, then probeCells[2c + 1] >> 16 records that can be the nearest probe to a point in it.
+// dims.w 0: no grid (every record is walked).
+struct GpuProbeGrid {
+    vec4 origin;    // xyz metres
+    vec4 cellSize;  // xyz metres
+    uvec4 dims;     // xyz cells, w 1 = the grid is in use
 };
 
 // Per draw (push constants).

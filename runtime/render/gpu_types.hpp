@@ -20,6 +20,7 @@ using glsl::GpuLight;
 using glsl::GpuMaterial;
 using glsl::GpuObjectLighting;
 using glsl::GpuProbe;
+using glsl::GpuProbeGrid;
 using glsl::GpuShadowView;
 
 using world::kNoIndex;
@@ -33,6 +34,7 @@ static_assert(sizeof(GpuShadowView) == 80);
 static_assert(sizeof(GpuMaterial) == 80);
 static_assert(sizeof(GpuObjectLighting) == 96);
 static_assert(sizeof(GpuProbe) == 80);
+static_assert(sizeof(GpuProbeGrid) == 48);
 static_assert(sizeof(DrawPush) == 96);
 
 }  // namespace onelight::render

@@ -44,8 +44,9 @@ const std::vector<VkDescriptorSetLayoutBinding>& frameBindings() {
         vk::layoutBinding(glsl::BINDING_MATERIALS, kStorage, kFragment),
         vk::layoutBinding(glsl::BINDING_ENV_BRDF, kSampled, kFragment),
         vk::layoutBinding(glsl::BINDING_PROBE_RECORDS, kStorage, kFragment),
-        vk::layoutBinding(glsl::BINDING_SKY, kSampled, kFragment)};
-    static_assert(glsl::FRAME_BINDING_COUNT == 12, "one layout binding per frame binding");
+        vk::layoutBinding(glsl::BINDING_SKY, kSampled, kFragment),
+        vk::layoutBinding(glsl::BINDING_PROBE_CELLS, kStorage, kFragment)};
+    static_assert(glsl::FRAME_BINDING_COUNT == 13, "one layout binding per frame binding");
     return bindings;
 }
 
@@ -200,6 +201,7 @@ void createDescriptorSets(RendererState& s) {
         w.image(glsl::BINDING_ENV_BRDF, s.envBrdf.view, s.linearClamp);
         w.buffer(glsl::BINDING_PROBE_RECORDS, kStorage, s.probeBuffer.buffer);
         w.image(glsl::BINDING_SKY, s.sky.view, s.skySampler);
+        w.buffer(glsl::BINDING_PROBE_CELLS, kStorage, s.probeCellBuffer.buffer);
         w.update(ctx);
     }
     for (const MaterialTextures& textures : s.materialTextures) {

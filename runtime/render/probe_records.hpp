@@ -31,6 +31,29 @@ struct ProbeRecords {
 [[nodiscard]] ProbeRecords makeProbeRecords(const std::vector<world::EnvironmentProbe>& probes,
                                             glm::vec3 levelMin, glm::vec3 levelMax);
 
+/// The probes' cell grid, so that a pixel walks only the records that can matter to it rather
+/// than all of them (gpu_interface.glsl GpuProbeGrid has the layout). A cell lists, in blending
+/// order, every record whose influence box overlaps the cell grown by a small margin (so a point
+/// rounded into a neighbouring cell still finds its records), then every record that can be
+/// the nearest capture point to some point of the cell: those no farther at their closest than
+/// the best record's farthest. Walking a cell's lists therefore picks exactly what walking every
+/// record picks. The grid covers the level's bounds in cubes of 1/kProbeCellsPerAxis of the
+/// longest extent; a point outside it walks every record. Levels with at most
+/// kProbeGridMinRecords records get no grid.
+inline constexpr uint32_t kProbeCellsPerAxis = 32;
+inline constexpr uint32_t kProbeGridMinRecords = 4;
+
+struct ProbeCells {
+    GpuProbeGrid grid{};          // dims.w 0: no grid
+    std::vector<uint32_t> words;  // probeCells[]: 2 words per cell, then the lists (>= 1 word)
+};
+
+[[nodiscard]] ProbeCells makeProbeCells(const std::vector<GpuProbe>& records, glm::vec3 levelMin,
+                                        glm::vec3 levelMax);
+
+/// The cell index of p as the shader computes it, or kNoIndex outside the grid (or no grid).
+[[nodiscard]] uint32_t probeCellOf(const GpuProbeGrid& grid, glm::vec3 p);
+
 /// One record that influences everything, for the neutral placeholder cube.
 [[nodiscard]] GpuProbe placeholderProbeRecord();
 

@@ -111,6 +111,7 @@ struct RendererState {
     std::vector<glm::vec2> atlasUvScale;  // per atlas: uv1 to the lightmap array's uv
     world::LightGrid grid;                // empty without baked lighting
     vk::Buffer probeBuffer;               // GpuProbe records (render/probe_records.hpp)
+    vk::Buffer probeCellBuffer;           // GpuProbeGrid and the cells' record lists
     uint32_t probeCount = 1;              // records; the cube array holds as many cubes
     uint32_t probeMips = 1;
 

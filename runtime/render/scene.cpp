@@ -426,6 +426,11 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
     s.probeCount = uint32_t(records.size());
     s.probeMips = s.probe.desc.mipLevels;
     createRecordBuffer(*s.ctx, s.probeBuffer, records, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    const ProbeCells cells = makeProbeCells(records, s.boundsMin, s.boundsMax);
+    std::vector<uint32_t> cellWords(sizeof(GpuProbeGrid) / 4);
+    std::memcpy(cellWords.data(), &cells.grid, sizeof(GpuProbeGrid));
+    cellWords.insert(cellWords.end(), cells.words.begin(), cells.words.end());
+    createRecordBuffer(*s.ctx, s.probeCellBuffer, cellWords, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
 // The baked-lighting interface: the package's lightmaps, shadow masks and light grid, or
@@ -600,6 +605,7 @@ void destroyScene(RendererState& s) {
     vk::destroyImage(ctx, s.lightmap);
     vk::destroyImage(ctx, s.probe);
     vk::destroyBuffer(ctx, s.probeBuffer);
+    vk::destroyBuffer(ctx, s.probeCellBuffer);
     vk::destroyImage(ctx, s.flatNormal);
     vk::destroyImage(ctx, s.white);
     for (auto& [key, sampler] : s.samplers) vkDestroySampler(ctx.device, sampler, nullptr);

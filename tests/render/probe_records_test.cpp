@@ -2,6 +2,7 @@
 // weight of shaders/probe.glsl: what the forward shader's per-pixel blending reads.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "render/probe_records.hpp"
@@ -40,6 +41,125 @@ std::vector<float> blend(const render::ProbeRecords& r, glm::vec3 p) {
     }
     for (float& x : c) x = total > 0.0f ? x / total : x;
     return c;
+}
+
+// The shader's choice (forward.frag probeRadiance) over candidate lists: the blend weight of
+// each record, and the record captured nearest to p (used when no influence reaches p).
+struct Choice {
+    std::vector<float> weights;
+    uint32_t nearest = 0;
+};
+
+Choice choose(const std::vector<render::GpuProbe>& records, glm::vec3 p,
+              const std::vector<uint32_t>& influence, const std::vector<uint32_t>& nearest) {
+    Choice c;
+    c.weights.assign(records.size(), 0.0f);
+    float total = 0.0f;
+    int taken = 0;
+    for (size_t k = 0; k < influence.size() && taken < 2; ++k) {
+        const float w = weight(records[influence[k]], p) * (1.0f - total);
+        if (w <= 0.0f) continue;
+        c.weights[influence[k]] = w;
+        total += w;
+        ++taken;
+    }
+    for (float& x : c.weights) x = total > 0.0f ? x / total : x;
+    float best = 1e30f;
+    for (uint32_t i : nearest) {
+        const glm::vec3 d = p - glm::vec3(records[i].position);
+        if (glm::dot(d, d) < best) {
+            best = glm::dot(d, d);
+            c.nearest = i;
+        }
+    }
+    return c;
+}
+
+// The lists the shader walks at p: its cell's, or every record outside the grid.
+void cellLists(const render::ProbeCells& cells, size_t recordCount, glm::vec3 p,
+               std::vector<uint32_t>& influence, std::vector<uint32_t>& nearest) {
+    influence.clear();
+    nearest.clear();
+    const uint32_t cell = render::probeCellOf(cells.grid, p);
+    if (cell == render::kNoIndex) {
+        for (uint32_t i = 0; i < recordCount; ++i) influence.push_back(i), nearest.push_back(i);
+        return;
+    }
+    const uint32_t first = cells.words.at(2 * cell), counts = cells.words.at(2 * cell + 1);
+    for (uint32_t k = 0; k < (counts & 0xFFFFu); ++k)
+        influence.push_back(cells.words.at(first + k));
+    for (uint32_t k = 0; k < (counts >> 16); ++k)
+        nearest.push_back(cells.words.at(first + (counts & 0xFFFFu) + k));
+}
+
+// 65 probes over a 60 m yard (an automatic placement's 8 x 8 lattice plus one), two boxed
+// rooms, and points everywhere, on cell faces and outside the grid: walking a point's cell
+// picks exactly the blend and the nearest probe that walking every record picks, while a cell
+// lists a handful of the 67 records.
+TEST(ProbeCells, ACellsListsPickWhatWalkingEveryRecordPicks) {
+    std::vector<world::EnvironmentProbe> probes;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            probes.push_back(probeAt({-26.0f + 7.5f * x + 0.3f * float((x * 7 + y) % 3),
+                                      -26.0f + 7.5f * y, 1.5f + 0.2f * float(x % 2)}));
+    probes.push_back(probeAt({0.5f, 0.5f, 1.0f}));
+    probes.push_back(probeAt({10.0f, 10.0f, 2.0f}, {6.0f, 6.0f, 0.0f}, {14.0f, 16.0f, 4.0f}));
+    probes.push_back(probeAt({-12.0f, 3.0f, 2.0f}, {-16.0f, 0.0f, 0.0f}, {-8.0f, 6.0f, 3.0f}));
+    const glm::vec3 levelMin(-30.0f, -30.0f, 0.0f), levelMax(30.0f, 30.0f, 6.0f);
+    const render::ProbeRecords r = render::makeProbeRecords(probes, levelMin, levelMax);
+    const render::ProbeCells cells = render::makeProbeCells(r.records, levelMin, levelMax);
+    ASSERT_EQ(cells.grid.dims.w, 1u);
+
+    std::vector<uint32_t> all(r.records.size());
+    for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+    std::vector<uint32_t> influence, nearest;
+    uint32_t seed = 12345u, outside = 0, onFaces = 0, listed = 0;
+    auto next = [&seed]() {
+        seed = seed * 1664525u + 1013904223u;
+        return float(seed >> 8) / float(1u << 24);
+    };
+    const float cell = cells.grid.cellSize.x;
+    for (int n = 0; n < 40000; ++n) {
+        glm::vec3 p = glm::mix(levelMin - 8.0f, levelMax + 8.0f, glm::vec3(next(), next(), next()));
+        if (n % 4 == 0) {  // on a cell face: rounding may put it in either neighbour
+            p.x = cells.grid.origin.x + cell * std::round((p.x - cells.grid.origin.x) / cell);
+            ++onFaces;
+        }
+        cellLists(cells, r.records.size(), p, influence, nearest);
+        if (render::probeCellOf(cells.grid, p) == render::kNoIndex) ++outside;
+        listed += uint32_t(influence.size() + nearest.size());
+        const Choice expected = choose(r.records, p, all, all);
+        const Choice got = choose(r.records, p, influence, nearest);
+        ASSERT_EQ(got.weights, expected.weights) << "at " << p.x << " " << p.y << " " << p.z;
+        if (*std::max_element(expected.weights.begin(), expected.weights.end()) == 0.0f) {
+            ASSERT_EQ(got.nearest, expected.nearest) << "at " << p.x << " " << p.y << " " << p.z;
+        }
+    }
+    EXPECT_GT(outside, 1000u);
+    EXPECT_GT(onFaces, 1000u);
+    // Inside the grid a point walks about 8 list entries instead of 2 x 67.
+    EXPECT_LT(double(listed - outside * 2 * r.records.size()) / double(40000 - outside), 16.0);
+}
+
+// Few records, an empty level and a level of zero extent get no grid: every record is walked.
+TEST(ProbeCells, FewRecordsOrNoExtentGetNoGrid) {
+    const render::ProbeRecords few =
+        render::makeProbeRecords({probeAt({0.0f, 0.0f, 0.0f}), probeAt({4.0f, 0.0f, 0.0f})},
+                                 glm::vec3(-5.0f), glm::vec3(5.0f));
+    EXPECT_EQ(render::makeProbeCells(few.records, glm::vec3(-5.0f), glm::vec3(5.0f)).grid.dims.w,
+              0u);
+    std::vector<world::EnvironmentProbe> many;
+    for (int i = 0; i < 8; ++i) many.push_back(probeAt({float(i), 0.0f, 0.0f}));
+    const render::ProbeRecords r = render::makeProbeRecords(many, glm::vec3(0.0f), glm::vec3(0.0f));
+    const render::ProbeCells none =
+        render::makeProbeCells(r.records, glm::vec3(0.0f), glm::vec3(0.0f));
+    EXPECT_EQ(none.grid.dims.w, 0u);
+    EXPECT_FALSE(none.words.empty());  // a storage buffer is never empty
+    EXPECT_EQ(render::probeCellOf(none.grid, glm::vec3(0.0f)), render::kNoIndex);
+    const render::ProbeCells flat =
+        render::makeProbeCells(r.records, glm::vec3(0.0f), glm::vec3(7.0f, 0.0f, 0.0f));
+    EXPECT_EQ(flat.grid.dims.w, 1u);
+    EXPECT_EQ(render::probeCellOf(flat.grid, glm::vec3(std::nanf(""))), render::kNoIndex);
 }
 
 // A yard probe without a box and a room probe with one: the room (smaller volume) comes first,

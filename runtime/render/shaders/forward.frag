@@ -91,14 +91,26 @@ vec3 sampleProbe(uint i, vec3 p, vec3 r, float lod) {
 
 // The secondary specular's normalised radiance (shaders/probe.glsl, "Influence"): the first two
 // records, in order, whose influence reaches p, weighted c1 = w1, c2 = (1 - w1) w2 and
-// normalised; outside every influence volume, the probe captured nearest to p.
+// normalised; outside every influence volume, the probe captured nearest to p. Inside the probe
+// grid only p's cell's lists are walked (runtime/render/probe_records.hpp), which pick the same.
 vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
     if (BAKED_LIGHTING == 0) return vec3(INV_PI);
     float lod = probeMipOfGloss(gloss, int(frame.probeParams.x));
+    uint listed = 0u, influenceCount = frame.counts.z, nearestCount = frame.counts.z;
+    vec3 f = floor((p - probeGrid.origin.xyz) / probeGrid.cellSize.xyz);
+    if (probeGrid.dims.w != 0u && all(greaterThanEqual(f, vec3(0.0))) &&
+        all(lessThan(f, vec3(probeGrid.dims.xyz)))) {
+        uvec3 c = uvec3(f);
+        uint cell = c.x + probeGrid.dims.x * (c.y + probeGrid.dims.y * c.z);
+        listed = probeCells[2u * cell];
+        influenceCount = probeCells[2u * cell + 1u] & 0xFFFFu;
+        nearestCount = probeCells[2u * cell + 1u] >> 16u;
+    }
     vec3 sum = vec3(0.0);
     float weight = 0.0;
     uint taken = 0u;
-    for (uint i = 0u; i < frame.counts.z && taken < 2u; ++i) {
+    for (uint k = 0u; k < influenceCount && taken < 2u && weight < 1.0; ++k) {
+        uint i = listed != 0u ? probeCells[listed + k] : k;
         GpuProbe g = probeRecords[i];
         float w = probeInfluenceWeight(p, g.influenceMin.xyz, g.influenceMax.xyz, g.influenceMin.w) *
                   (1.0 - weight);
@@ -110,7 +122,8 @@ vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
     if (weight > 0.0) return sum / weight;
     uint nearest = 0u;
     float best = 1e30;
-    for (uint i = 0u; i < frame.counts.z; ++i) {
+    for (uint k = 0u; k < nearestCount; ++k) {
+        uint i = listed != 0u ? probeCells[listed + influenceCount + k] : k;
         vec3 d = p - probeRecords[i].position.xyz;
         if (dot(d, d) < best) {
             best = dot(d, d);

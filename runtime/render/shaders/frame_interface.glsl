@@ -31,6 +31,10 @@ layout(set = 0, binding = BINDING_PROBES) uniform samplerCubeArray probes;
 layout(set = 0, binding = BINDING_PROBE_RECORDS, std430) readonly buffer Probes {
     GpuProbe probeRecords[];
 };
+layout(set = 0, binding = BINDING_PROBE_CELLS, std430) readonly buffer ProbeCells {
+    GpuProbeGrid probeGrid;
+    uint probeCells[];
+};
 layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer Materials {
     GpuMaterial materials[];
 };
