@@ -251,7 +251,21 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
             report.probeBytes = package::encodeProbeSection(baked.probes).bytes.size();
     }
 
-    // 6. Finish (a whole bake only; parts are finished by merge).
+    // 6. The potentially visible set, whole in every shard (it is cheap and deterministic).
+    if (options.visibility) {
+        start = std::chrono::steady_clock::now();
+        const BakeScene levelScene(device, level);
+        VisibilityStats stats;
+        baked.visibility = bakeVisibility(levelScene, level, options.visibilitySettings,
+                                          options.showProgress, &stats);
+        report.stages.push_back({"visibility", secondsSince(start), stats.rays, stats.cells});
+        report.visibilityCells = stats.cells;
+        report.visibilityClusters = stats.clusters;
+        report.visibilityRows = stats.rows;
+        report.visibilityMeanFraction = stats.meanVisibleFraction;
+    }
+
+    // 7. Finish (a whole bake only; parts are finished by merge).
     start = std::chrono::steady_clock::now();
     if (options.shardCount == 1) finishBakedLighting(level, baked);
     report.stages.push_back({"dilate", secondsSince(start), {}, texelCount});
@@ -317,6 +331,11 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
             p.importedTexels.size() != parts[0].importedTexels.size())
             throw world::Error("merge: shard " + std::to_string(p.shardIndex) +
                                " does not match the level (texel or grid cell counts differ)");
+        if (!(p.visibility == parts[0].visibility))
+            throw world::Error("merge: shard " + std::to_string(p.shardIndex) +
+                               "'s visibility differs from shard " +
+                               std::to_string(parts[0].shardIndex) +
+                               "'s (baked from another level or with other settings)");
         byIndex[p.shardIndex] = &p;
     }
     world::BakedLighting merged = parts[0];

@@ -18,6 +18,7 @@
 #include "bake/lightmap/lightmap_bake.hpp"
 #include "bake/probes/probe_capture.hpp"
 #include "bake/report/report.hpp"
+#include "bake/visibility/visibility_bake.hpp"
 #include "world/baked_lighting.hpp"
 #include "world/compile/compile_level.hpp"
 #include "world/source_level.hpp"
@@ -53,6 +54,9 @@ struct BakeOptions {
     // smooth get fewer texels. Off: every chart at the requested density. onelight-bake turns
     // it on unless --uniform-density.
     bool adaptiveDensity = false;
+    // The potentially visible set (bake/visibility/), which the runtime culls by.
+    bool visibility = true;
+    VisibilitySettings visibilitySettings;
     // Overrides of the quality preset; 0 keeps the preset.
     uint32_t shadowSamples = 0, indirectSamples = 0, gridSamples = 0;
     uint32_t probeFaceSize = 0, probeSamples = 0;  // a power of two; paths per texel

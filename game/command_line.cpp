@@ -28,6 +28,9 @@ std::string usage() {
          "play REPLAY drawing every tick as fast as possible, no captures; print the median and "
          "95th-percentile frame times as key=value (default: none)"},
         {"--free-fly", "a free-fly camera instead of the player (default: the player)"},
+        {"--no-visibility",
+         "draw static surfaces outside the camera's potentially visible set too (default: "
+         "culled by the package's visibility)"},
         {"--quality Q",
          "draft, default or high: the bake's when LEVEL needs baking (default: draft for a "
          "Quake 3 map, else the baker's default)"},
@@ -84,6 +87,8 @@ CommandLine parseCommandLine(int argc, char** argv) {
 
         } else if (a == "--free-fly") {
             out.freeFly = true;
+        } else if (a == "--no-visibility") {
+            out.visibilityCulling = false;
         } else if (a == "--replay" && hasValue) {
             out.replay = argv[++i];
         } else if (a == "--benchmark" && hasValue) {

@@ -22,6 +22,7 @@ struct CommandLine {
     bool benchmark = false;         // --benchmark REPLAY: every tick drawn as fast as possible,
                                     // no captures; frame-time statistics on stdout
     bool freeFly = false;           // window: a free-fly camera instead of the player
+    bool visibilityCulling = true;  // --no-visibility: draw outside the visible set too
     std::string view = "onelight";  // whose baked light is shown: onelight, or q3map2 (the
                                     // Quake 3 map's own lightmaps, game/lighting_view.hpp)
     bool hasEv100 = false;          // --ev100: a fixed exposure instead of the metered one

@@ -117,6 +117,7 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
     j["frame"] = {{"surfaces_drawn", stats.surfacesDrawn},
                   {"draws", stats.draws},
                   {"surfaces_culled", stats.surfacesCulled},
+                  {"surfaces_hidden_by_visibility", stats.surfacesHidden},
                   {"dynamic_meshes_drawn", stats.dynamicMeshesDrawn},
                   {"shadow_views_rendered", stats.shadowViewsRendered},
                   {"triangles", stats.trianglesDrawn}};

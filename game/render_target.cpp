@@ -19,6 +19,7 @@ void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::Load
         options.width = windowed ? t.window.swapchain.extent.width : cl.width;
         options.height = windowed ? t.window.swapchain.extent.height : cl.height;
         options.requestedMsaa = cl.msaa;
+        options.visibilityCulling = cl.visibilityCulling;
         render::createRenderer(t.renderer, t.ctx, level, options);
     } catch (...) {
         closeRenderTarget(t);

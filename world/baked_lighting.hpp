@@ -1,5 +1,5 @@
 // Baked lighting in memory: what the baker produces and what the runtime reads back from the
-// package's sections 32..35 (their on-disk twins are in package/format.hpp). Plain data.
+// package's sections 32..37 (their on-disk twins are in package/format.hpp). Plain data.
 #pragma once
 
 #include <array>
@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "world/compiled_level.hpp"
+#include "world/visibility.hpp"
 
 namespace onelight::world {
 
@@ -63,6 +64,7 @@ struct BakedLighting {
     std::vector<uint8_t> shadowMask;    // same order: own primary's visibility 0..255
     LightGrid grid;
     std::vector<EnvironmentProbe> probes;       // section 35; a part holds its shard's range
+    Visibility visibility;                      // section 37; empty: no culling
     std::vector<LightmapTexel> importedTexels;  // section 36: the source's own bake (q3map2's)
                                                 // at the same texels; empty when it has none
     uint32_t shardIndex = 0, shardCount = 1;    // shardCount > 1: an unmerged part

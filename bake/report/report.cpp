@@ -70,6 +70,10 @@ std::string reportJson(const BakeReport& r) {
                    {"face_size", r.probeFaceSize},
                    {"paths_per_texel", r.probeSamplesPerTexel},
                    {"bytes", r.probeBytes}};
+    j["visibility"] = {{"cells", r.visibilityCells},
+                       {"clusters", r.visibilityClusters},
+                       {"rows", r.visibilityRows},
+                       {"mean_visible_fraction", r.visibilityMeanFraction}};
     j["warnings"] = r.warnings;
     return j.dump(2) + "\n";
 }
@@ -122,6 +126,14 @@ std::string reportSummary(const BakeReport& r) {
                       static_cast<unsigned long long>(r.probesBaked),
                       static_cast<unsigned long long>(r.probesTotal), r.probeFaceSize,
                       r.probeSamplesPerTexel, double(r.probeBytes) / 1024.0);
+        s += line;
+    }
+    if (r.visibilityCells) {
+        std::snprintf(line, sizeof line,
+                      "  visibility %u cells, %u clusters of leaves, %u distinct sets; a cell "
+                      "sees %.1f%% of the clusters on average\n",
+                      r.visibilityCells, r.visibilityClusters, r.visibilityRows,
+                      100.0 * r.visibilityMeanFraction);
         s += line;
     }
     return s;

@@ -108,9 +108,18 @@ DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats
         list.draws.push_back(d);
         if (d.primaryLight != kNoIndex) list.visibleLights.push_back(d.primaryLight);
     };
+    const uint32_t visibleRow =
+        s.options.visibilityCulling ? world::visibilityRowAt(s.visibility, eye) : kNoIndex;
     for (const DrawSurface& surface : s.surfaces) {
         if (!intersects(frustum, surface.boundsMin, surface.boundsMax)) {
             ++stats.surfacesCulled;
+            continue;
+        }
+        if (visibleRow != kNoIndex &&
+            !world::clusterInRow(s.visibility, visibleRow,
+                                 s.visibility.surfaceCluster[surface.index])) {
+            ++stats.surfacesCulled;
+            ++stats.surfacesHidden;
             continue;
         }
         Draw d;

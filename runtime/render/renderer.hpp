@@ -93,6 +93,7 @@ struct FrameStats {
     double gpuForwardMs = 0.0;
     double gpuTonemapMs = 0.0;
     uint32_t surfacesDrawn = 0, surfacesCulled = 0, dynamicMeshesDrawn = 0;
+    uint32_t surfacesHidden = 0;       // of the culled, outside the potentially visible set
     uint32_t draws = 0;                // forward-pass draw calls, after batching
     uint32_t shadowViewsRendered = 0;  // static views redrawn this frame
     uint64_t trianglesDrawn = 0;       // forward pass
@@ -128,6 +129,9 @@ struct RendererOptions {
     bool samplePlaceholders = false;  // fetch the placeholder baked textures anyway (tests);
                                       // else a level without baked lighting fetches none
     bool probes = true;  // false: the package's probes ignored, a uniform environment instead
+    // Static surfaces outside the camera cell's potentially visible set are not drawn
+    // (world/visibility.hpp). The frame is the same either way (a test checks it).
+    bool visibilityCulling = true;
 };
 
 /// What the renderer settled on.

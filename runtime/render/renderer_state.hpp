@@ -35,6 +35,7 @@ using MaterialTextures =
 struct DrawSurface {
     uint32_t firstIndex = 0, indexCount = 0;
     uint32_t material = 0, primaryLight = kNoIndex, atlas = kNoIndex;
+    uint32_t index = 0;  // the level's surface, whose cluster the visible set names
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
 };
 
@@ -110,6 +111,7 @@ struct RendererState {
     float lightmapDecode = 1.0f;          // lux per stored lightmap unit (a power of two)
     std::vector<glm::vec2> atlasUvScale;  // per atlas: uv1 to the lightmap array's uv
     world::LightGrid grid;                // empty without baked lighting
+    world::Visibility visibility;         // the package's potentially visible set; may be empty
     vk::Buffer probeBuffer;               // GpuProbe records (render/probe_records.hpp)
     vk::Buffer probeCellBuffer;           // GpuProbeGrid and the cells' record lists
     uint32_t probeCount = 1;              // records; the cube array holds as many cubes

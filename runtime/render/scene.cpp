@@ -219,6 +219,7 @@ void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
         d.material = surface.material;
         d.primaryLight = surface.primaryLight;
         d.atlas = surface.atlas;
+        d.index = i;
         d.boundsMin = surface.boundsMin;
         d.boundsMax = surface.boundsMax;
         s.surfaces.push_back(d);
@@ -441,6 +442,7 @@ void uploadBakedLighting(RendererState& s, const assets::LoadedLevel& loaded) {
     if (s.bakedLighting) {
         uploadLightmaps(s, loaded);
         s.grid = loaded.baked.grid;
+        s.visibility = loaded.baked.visibility;
     } else {
         const float a = s.ambientLux;
         vk::ImageDesc lm;
@@ -454,6 +456,7 @@ void uploadBakedLighting(RendererState& s, const assets::LoadedLevel& loaded) {
         s.lightmapDecode = 1.0f;
         s.atlasUvScale.assign(loaded.level.atlases.size(), glm::vec2(1.0f));
         s.grid = world::LightGrid{};
+        s.visibility = world::Visibility{};
     }
     s.info.bakedLighting = s.bakedLighting;
     s.info.lightmapDecode = s.lightmapDecode;

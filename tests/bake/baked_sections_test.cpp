@@ -7,6 +7,7 @@
 #include "bake_scenes.hpp"
 #include "tests/support/error_message.hpp"
 #include "world/package/baked_sections.hpp"
+#include "world/package/format.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -14,9 +15,17 @@ namespace {
 TEST(BakedSections, RoundTripAndErrorsNameTheSection) {
     const BakeResult r = bakeLevel(test::smallRoomWithProbes(), test::fastBakeOptions());
     std::vector<package::RawSection> sections = package::encodeBakedSections(r.baked);
-    ASSERT_EQ(sections.size(), 4u);  // 32..34 and the probes
+    ASSERT_EQ(sections.size(), 5u);  // 32..34, the probes and the visibility
+    EXPECT_EQ(sections.back().id, package::kSectionVisibility);
     const package::BakedContents back = package::decodeBakedSections(sections, r.level, "x.olpak");
     EXPECT_TRUE(back.present);
+    EXPECT_FALSE(back.baked.visibility.empty());
+    EXPECT_TRUE(back.baked.visibility == r.baked.visibility);
+    EXPECT_NE(onelight::test::errorMessage([&] {
+                  const std::vector<package::RawSection> alone = {sections.back()};
+                  (void)package::decodeBakedSections(alone, r.level, "x.olpak");
+              }).find("x.olpak: section visibility present without baked lighting"),
+              std::string::npos);
     EXPECT_EQ(back.baked.texels.size(), r.baked.texels.size());
     EXPECT_EQ(back.baked.grid.cells.size(), r.baked.grid.cells.size());
     ASSERT_EQ(back.baked.probes.size(), 3u);

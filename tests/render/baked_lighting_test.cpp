@@ -863,4 +863,55 @@ TEST(RenderBaked, RuntimeSunShadowsDoNotLeakAlongTheJunctionsOfThinWalls) {
     EXPECT_LT(double(leaks), 0.01 * double(dim));
 }
 
+// Culling by the potentially visible set changes no pixel: a 40 m hall cut into three rooms by
+// two walls with offset doorways (a chicane), seen from the first room towards the doorway and
+// from the middle room, with culling on and off, gives identical frames; from the first room
+// the far room's surfaces are not drawn.
+TEST(RenderBaked, CullingByTheVisibleSetChangesNoPixel) {
+    test::Scene s;
+    s.materials = {{{0.6f, 0.6f, 0.6f, 1.0f}, 0.0f, 0.6f}};
+    test::addChicaneHall(s, 3);
+    const std::string gltf = test::outputDir() + "/chicane.gltf";
+    test::writeGltf(s, gltf);
+    const assets::LoadedLevel level =
+        test::bakeAndLoad(gltf, test::outputDir() + "/chicane.olpak", "--texels-per-metre 2");
+    ASSERT_FALSE(level.baked.visibility.empty());
+
+    struct View {
+        glm::vec3 eye;
+        float yaw, pitch;
+        bool hidesSome;
+    };
+    for (const View& view : {View{{-14.0f, 1.7f, 3.0f}, -127.0f, -5.0f, true},
+                             View{{-2.0f, 1.7f, 5.0f}, -63.0f, -5.0f, false}}) {
+        render::FrameInputs inputs;
+        inputs.camera = render::cameraFromYawPitch(view.eye, view.yaw, view.pitch);
+        render::RendererOptions on = options(40.0f, 8.0f), off = on;
+        off.visibilityCulling = false;
+        const test::RenderedFrame culled = test::renderOnce(level, on, inputs);
+        const test::RenderedFrame all = test::renderOnce(level, off, inputs);
+        std::printf(
+            "[ chicane ] from (%.0f, %.0f): %u surfaces drawn with culling, %u without; %u "
+            "hidden by the visible set\n",
+            double(view.eye.x), double(view.eye.z), culled.stats.surfacesDrawn,
+            all.stats.surfacesDrawn, culled.stats.surfacesHidden);
+        EXPECT_EQ(all.stats.surfacesHidden, 0u);
+        if (view.hidesSome) {
+            EXPECT_GT(culled.stats.surfacesHidden, 20u);
+        }
+        ASSERT_EQ(culled.frame.rgba8.size(), all.frame.rgba8.size());
+        size_t differing = 0;
+        for (size_t i = 0; i < all.frame.rgba8.size(); ++i)
+            differing += culled.frame.rgba8[i] != all.frame.rgba8[i];
+        EXPECT_EQ(differing, 0u);
+        EXPECT_TRUE(culled.frame.linearRgba == all.frame.linearRgba);
+        if (differing) {
+            capture::writePng(test::outputDir() + "/chicane_culled.png", kWidth, kHeight,
+                              culled.frame.rgba8);
+            capture::writePng(test::outputDir() + "/chicane_all.png", kWidth, kHeight,
+                              all.frame.rgba8);
+        }
+    }
+}
+
 }  // namespace

@@ -141,6 +141,54 @@ void benchFrameLoop(vk::Context& ctx, const std::string& package) {
         before, after, after / before);
 }
 
+// The same view of a level and of one four times its length: a chicane hall of 3 rooms (40 m)
+// and of 13 (160 m), baked at draft, seen from the first room down the hall, with the visible
+// set's culling and without; frames interleaved, medians.
+void benchLevelScale(vk::Context& ctx) {
+    struct Config {
+        int rooms;
+        bool culling;
+    };
+    const std::vector<Config> configs = {{3, true}, {13, true}, {3, false}, {13, false}};
+    std::vector<assets::LoadedLevel> levels;
+    for (int rooms : {3, 13}) {
+        test::Scene s;
+        s.materials = {{{0.6f, 0.6f, 0.6f, 1.0f}, 0.0f, 0.6f}};
+        test::addChicaneHall(s, rooms);
+        const std::string name = test::outputDir() + "/bench_hall_" + std::to_string(rooms);
+        test::writeGltf(s, name + ".gltf");
+        levels.push_back(
+            test::bakeAndLoad(name + ".gltf", name + ".olpak", "--texels-per-metre 2"));
+    }
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromYawPitch({-18.0f, 1.7f, 9.0f}, -90.0f, -5.0f);
+    std::vector<render::Renderer> renderers(configs.size());
+    for (size_t c = 0; c < configs.size(); ++c) {
+        render::RendererOptions o;
+        o.visibilityCulling = configs[c].culling;
+        render::createRenderer(renderers[c], ctx, levels[configs[c].rooms == 3 ? 0 : 1], o);
+        for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderers[c], inputs, waited);
+    }
+    std::vector<std::vector<double>> gpu(configs.size());
+    std::vector<render::FrameStats> last(configs.size());
+    for (int i = 0; i < kFrames; ++i)
+        for (size_t c = 0; c < configs.size(); ++c) {
+            last[c] = render::drawFrame(renderers[c], inputs, waited);
+            gpu[c].push_back(last[c].gpuMs);
+        }
+    for (auto it = renderers.rbegin(); it != renderers.rend(); ++it) render::destroyRenderer(*it);
+    for (size_t c = 0; c < configs.size(); ++c)
+        std::printf(
+            "  hall of %2d rooms, culling %-3s: %8.2f ms GPU, %u surfaces drawn, %u hidden, "
+            "%u draws\n",
+            configs[c].rooms, configs[c].culling ? "on" : "off", median(gpu[c]),
+            last[c].surfacesDrawn, last[c].surfacesHidden, last[c].draws);
+    std::printf(
+        "  4x the level, the same view: %.3f with culling by the visible set (goal <= 1.2), %.3f "
+        "without\n",
+        median(gpu[1]) / median(gpu[0]), median(gpu[3]) / median(gpu[2]));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -195,6 +243,7 @@ int main(int argc, char** argv) {
         const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
         for (auto it = renderers.rbegin(); it != renderers.rend(); ++it)
             render::destroyRenderer(*it);
+        benchLevelScale(ctx);
         benchProbes(ctx, argc > 1 ? argv[1] : ONELIGHT_DEMO_PACKAGE);
         benchFrameLoop(ctx, argc > 1 ? argv[1] : ONELIGHT_DEMO_PACKAGE);
         vk::destroyContext(ctx);

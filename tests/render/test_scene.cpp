@@ -80,6 +80,54 @@ void addFloor(Scene& scene, float cx, float cz, float half, float height, uint32
     scene.meshes.push_back(m);
 }
 
+void addTiles(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, int n, int m,
+              uint32_t material) {
+    const auto at = [&](float u, float v) {
+        return glm::mix(glm::mix(a, b, u), glm::mix(d, c, u), v);
+    };
+    const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+    for (int j = 0; j < m; ++j)
+        for (int i = 0; i < n; ++i) {
+            const float u0 = float(i) / float(n), u1 = float(i + 1) / float(n);
+            const float v0 = float(j) / float(m), v1 = float(j + 1) / float(m);
+            SceneMesh q;
+            q.material = material;
+            q.positions = {at(u0, v0), at(u1, v0), at(u1, v1), at(u0, v1)};
+            q.normals.assign(4, normal);
+            q.indices = {0, 1, 2, 0, 2, 3};
+            scene.meshes.push_back(std::move(q));
+        }
+}
+
+void addChicaneHall(Scene& s, int rooms) {
+    const float x0 = -20.0f, x1 = 12.0f * float(rooms) - 16.0f, z0 = 0.0f, z1 = 10.0f, h = 4.0f;
+    const int along = int((x1 - x0) / 2.0f);
+    addTiles(s, {x0, 0, z0}, {x0, 0, z1}, {x1, 0, z1}, {x1, 0, z0}, 5, along, 0);  // floor, up
+    addTiles(s, {x0, h, z0}, {x1, h, z0}, {x1, h, z1}, {x0, h, z1}, along, 5, 0);  // ceiling
+    addTiles(s, {x0, 0, z0}, {x1, 0, z0}, {x1, h, z0}, {x0, h, z0}, along, 2, 0);  // z0, +z
+    addTiles(s, {x1, 0, z1}, {x0, 0, z1}, {x0, h, z1}, {x1, h, z1}, along, 2, 0);  // z1, -z
+    addTiles(s, {x0, 0, z1}, {x0, 0, z0}, {x0, h, z0}, {x0, h, z1}, 5, 2, 0);      // x0, +x
+    addTiles(s, {x1, 0, z0}, {x1, 0, z1}, {x1, h, z1}, {x1, h, z0}, 5, 2, 0);      // x1, -x
+    for (int k = 0; k + 1 < rooms; ++k) {
+        const float x = -6.0f + 12.0f * float(k);
+        if (k % 2 == 0)
+            addBox(s, {x - 1.0f, 0, 0}, {x + 1.0f, h, 8}, 0);  // doorway at z 8..10
+        else
+            addBox(s, {x - 1.0f, 0, 2}, {x + 1.0f, h, 10}, 0);  // doorway at z 0..2
+    }
+    for (int r = 0; r < rooms; ++r) {
+        const float lo = r == 0 ? x0 : -5.0f + 12.0f * float(r - 1);
+        const float hi = r + 1 == rooms ? x1 : -7.0f + 12.0f * float(r);
+        const float x = 0.5f * (lo + hi);
+        addBox(s, {x - 0.25f, 0, 4.75f}, {x + 0.25f, 0.5f, 5.25f}, 0);
+        SceneLight lamp;
+        lamp.type = 1;
+        lamp.intensity = 300.0f;
+        lamp.position = {x, 3.0f, 5.0f};
+        s.lights.push_back(lamp);
+    }
+}
+
 void addBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material, bool dynamic) {
     SceneMesh m;
     m.material = material;

@@ -53,6 +53,16 @@ void addFloor(Scene& scene, float cx, float cz, float half, float height, uint32
 /// An axis-aligned box (outward normals, 12 triangles).
 void addBox(Scene& scene, glm::vec3 lo, glm::vec3 hi, uint32_t material, bool dynamic = false);
 
+/// Quad a b c d (counter-clockwise seen from the side it faces) as n x m tiles of `material`.
+void addTiles(Scene& scene, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d, int n, int m,
+              uint32_t material);
+
+/// A hall 10 m deep and 4 m high (y up), its shell in 2 m tiles, cut by 2 m walls every 12 m
+/// (centred at x = -6 + 12 k) into `rooms` rooms with doorways at alternate ends (z 8..10, then
+/// z 0..2: a chicane), from x = -20 to 12 rooms - 16: three rooms span 40 m. A 0.5 m crate and a
+/// 300 cd point light in the middle of each room. Material 0.
+void addChicaneHall(Scene& scene, int rooms);
+
 /// A UV sphere of `rings` x `segments` quads.
 void addSphere(Scene& scene, glm::vec3 centre, float radius, uint32_t rings, uint32_t segments,
                uint32_t material);

@@ -7,6 +7,7 @@
 #include "world/package/format.hpp"
 #include "world/package/probe_section.hpp"
 #include "world/package/records.hpp"
+#include "world/package/visibility_section.hpp"
 
 namespace onelight::package {
 namespace {
@@ -115,18 +116,21 @@ std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
                         DiskImportedTexel{{t.irradiance.x, t.irradiance.y, t.irradiance.z}});
         out.push_back(std::move(imported));
     }
+    if (!baked.visibility.empty()) out.push_back(encodeVisibilitySection(baked.visibility));
     return out;
 }
 
 BakedContents decodeBakedSections(std::span<const RawSection> sections,
                                   const world::CompiledLevel& level, const std::string& name) {
     BakedContents result;
-    const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr, *imported = nullptr;
+    const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr, *imported = nullptr,
+                     *visibility = nullptr;
     for (const RawSection& s : sections) {
         const RawSection** slot = s.id == kSectionLightmapTexels     ? &texels
                                   : s.id == kSectionShadowMasks      ? &masks
                                   : s.id == kSectionLightGrid        ? &grid
                                   : s.id == kSectionImportedLightmap ? &imported
+                                  : s.id == kSectionVisibility       ? &visibility
                                                                      : nullptr;
         if (!slot) continue;
         if (*slot) {
@@ -136,9 +140,12 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
     }
     if (!texels && !masks && !grid) {
         for (const RawSection& s : sections)
-            if (s.id == kSectionProbes || s.id == kSectionImportedLightmap)
+            if (s.id == kSectionProbes || s.id == kSectionImportedLightmap ||
+                s.id == kSectionVisibility)
                 throw world::Error(name + ": section " +
-                                   (s.id == kSectionProbes ? "probes" : "imported_lightmap") +
+                                   (s.id == kSectionProbes       ? "probes"
+                                    : s.id == kSectionVisibility ? "visibility"
+                                                                 : "imported_lightmap") +
                                    " present without baked lighting; expected "
                                    "sections lightmap_texels, shadow_masks and light_grid too");
         return result;  // no baked lighting
@@ -240,6 +247,7 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
 
     // Environment probes (optional: only levels with glossy materials have them).
     baked.probes = decodeProbeSection(sections, level, name).probes;
+    if (visibility) baked.visibility = decodeVisibilitySection(*visibility, level, name);
     return result;
 }
 

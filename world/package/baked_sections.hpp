@@ -1,5 +1,6 @@
 // Writer and reader of the baked-lighting sections (32 lightmap texels, 33 shadow masks,
-// 34 light grid, 35 probes through probe_section.hpp; layouts in format.hpp). The reader
+// 34 light grid, 35 probes through probe_section.hpp, 37 visibility through
+// visibility_section.hpp; layouts in format.hpp). The reader
 // checks every size, count, index and value range against the compiled level and throws
 // world::Error naming the section and the bad value.
 #pragma once

@@ -62,6 +62,7 @@ enum SectionId : uint32_t {
     kSectionLightGrid = 34,         // dynamic objects' secondary lighting and dominant primary
     kSectionProbes = 35,            // prefiltered, normalised environment probes
     kSectionImportedLightmap = 36,  // the source format's own bake at the same texels
+    kSectionVisibility = 37,        // potentially visible sets: view cells -> clusters of surfaces
     kSectionIdLimit = 48,           // ids at or above this are invalid
 };
 
@@ -394,5 +395,32 @@ struct DiskProbe {
     uint32_t reserved;           // 0
 };
 static_assert(sizeof(DiskProbe) == 72);
+
+// ---------------------------------------------------------------------------------------------
+// Visibility (id 37, optional, only with 32..34), written by `onelight-bake`
+// (bake/visibility/visibility_bake.hpp; world/visibility.hpp in memory).
+//
+// uint8_t[]: one DiskVisibilityHeader, then
+//   uint32_t surfaceCluster[surfaceCount]
+//                                     cluster of each static surface, < clusterCount
+//   uint32_t cellRow[cellCount]       per view cell, x fastest: a row < rowCount, or kNoIndex
+//                                     (everything may be visible from the cell)
+//   uint32_t rows[rowCount][(clusterCount + 31) / 32]
+//                                     bit c % 32 of word c / 32: cluster c may be visible; bits
+//                                     past clusterCount are 0
+// Cell (i, j, k) is the cube origin + [i, i + 1) x [j, j + 1) x [k, k + 1) times cellSize.
+// A point outside every cell culls nothing.
+
+struct DiskVisibilityHeader {
+    float origin[3];        // metres, world: the grid's minimum corner; finite
+    float cellSize;         // metres, finite, > 0
+    uint32_t dims[3];       // cells per axis, 1..world::kMaxVisibilityCellsPerAxis each
+    uint32_t cellCount;     // dims[0] dims[1] dims[2] <= world::kMaxVisibilityCells
+    uint32_t surfaceCount;  // == the level's static surfaces, >= 1
+    uint32_t clusterCount;  // 1..surfaceCount
+    uint32_t rowCount;      // <= cellCount
+    uint32_t reserved;      // 0
+};
+static_assert(sizeof(DiskVisibilityHeader) == 48);
 
 }  // namespace onelight::package
