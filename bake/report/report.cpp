@@ -129,11 +129,12 @@ std::string reportSummary(const BakeReport& r) {
         s += line;
     }
     if (r.visibilityCells) {
-        std::snprintf(line, sizeof line,
-                      "  visibility %u cells, %u clusters of leaves, %u distinct sets; a cell "
-                      "sees %.1f%% of the clusters on average\n",
-                      r.visibilityCells, r.visibilityClusters, r.visibilityRows,
-                      100.0 * r.visibilityMeanFraction);
+        std::snprintf(
+            line, sizeof line,
+            "  visibility %u cells, %u clusters of surfaces, %u distinct sets; an open cell "
+            "sees %.1f%% of the clusters on average\n",
+            r.visibilityCells, r.visibilityClusters, r.visibilityRows,
+            100.0 * r.visibilityMeanFraction);
         s += line;
     }
     return s;

@@ -38,7 +38,7 @@ struct BakeReport {
     double lightmapDenoisedRelativeNoise = 0.0;  // the same after the denoiser
     uint64_t probesTotal = 0, probesBaked = 0;   // placed in the level; captured by this run
     uint32_t probeFaceSize = 0, probeSamplesPerTexel = 0;
-    uint64_t probeBytes = 0;            // section 35 bytes of the probes this run baked
+    uint64_t probeBytes = 0;  // section 35 bytes of the probes this run baked
     // The potentially visible set: view cells, leaf clusters, distinct rows, and the mean
     // fraction of the clusters a cell's set holds (0 cells: none baked).
     uint32_t visibilityCells = 0, visibilityClusters = 0, visibilityRows = 0;

@@ -154,8 +154,7 @@ bool boxesOverlap(glm::vec3 aMin, glm::vec3 aMax, glm::vec3 bMin, glm::vec3 bMax
     return glm::all(glm::lessThanEqual(aMin, bMax)) && glm::all(glm::lessThanEqual(bMin, aMax));
 }
 
-}  // namespace
-
+// Step 1: per static surface its cluster, and the cluster count.
 std::vector<uint32_t> clusterSurfaces(const world::CompiledLevel& level,
                                       const VisibilitySettings& settings, uint32_t& clusterCount) {
     std::vector<uint32_t> surfaceCluster(level.surfaces.size(), 0u);
@@ -167,6 +166,8 @@ std::vector<uint32_t> clusterSurfaces(const world::CompiledLevel& level,
                    surfaceCluster, clusterCount);
     return surfaceCluster;
 }
+
+}  // namespace
 
 world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLevel& level,
                                  const VisibilitySettings& settings, bool showProgress,

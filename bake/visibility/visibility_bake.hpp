@@ -37,7 +37,7 @@ struct VisibilitySettings {
     float maxClusterExtent = 4.0f;  // metres
     uint32_t pointsPerCell = 8;     // one per octant, jittered
     uint32_t sweepRays = 128;       // per point
-    uint32_t raysPerPair = 64;       // segments per (cell, unmarked cluster)
+    uint32_t raysPerPair = 64;      // segments per (cell, unmarked cluster)
     uint32_t targetsPerCluster = 64;
 };
 
@@ -46,11 +46,6 @@ struct VisibilityStats {
     uint32_t cells = 0, openCells = 0, clusters = 0, rows = 0;
     double meanVisibleFraction = 0.0;  // clusters in an open cell's set over all clusters, mean
 };
-
-/// The clusters of step 1: per static surface its cluster, and the cluster count.
-[[nodiscard]] std::vector<uint32_t> clusterSurfaces(const world::CompiledLevel& level,
-                                                    const VisibilitySettings& settings,
-                                                    uint32_t& clusterCount);
 
 /// The visibility of `level`, whose static triangles `scene` holds in the level's own order
 /// (BakeScene(device, level)). Empty for a level without static triangles.

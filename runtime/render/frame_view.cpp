@@ -110,14 +110,14 @@ DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats
     };
     const uint32_t visibleRow =
         s.options.visibilityCulling ? world::visibilityRowAt(s.visibility, eye) : kNoIndex;
-    for (const DrawSurface& surface : s.surfaces) {
+    for (size_t i = 0; i < s.surfaces.size(); ++i) {  // in the level's order
+        const DrawSurface& surface = s.surfaces[i];
         if (!intersects(frustum, surface.boundsMin, surface.boundsMax)) {
             ++stats.surfacesCulled;
             continue;
         }
         if (visibleRow != kNoIndex &&
-            !world::clusterInRow(s.visibility, visibleRow,
-                                 s.visibility.surfaceCluster[surface.index])) {
+            !world::clusterInRow(s.visibility, visibleRow, s.visibility.surfaceCluster[i])) {
             ++stats.surfacesCulled;
             ++stats.surfacesHidden;
             continue;

@@ -35,7 +35,6 @@ using MaterialTextures =
 struct DrawSurface {
     uint32_t firstIndex = 0, indexCount = 0;
     uint32_t material = 0, primaryLight = kNoIndex, atlas = kNoIndex;
-    uint32_t index = 0;  // the level's surface, whose cluster the visible set names
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
 };
 

@@ -219,7 +219,6 @@ void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
         d.material = surface.material;
         d.primaryLight = surface.primaryLight;
         d.atlas = surface.atlas;
-        d.index = i;
         d.boundsMin = surface.boundsMin;
         d.boundsMax = surface.boundsMax;
         s.surfaces.push_back(d);

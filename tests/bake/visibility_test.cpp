@@ -192,9 +192,9 @@ TEST(Visibility, EveryClusterSeenFromAnOpenPointIsInItsCellsSet) {
     }
     std::printf(
         "chicane hall: %u clusters, %u cells, %u sets, a cell sees %.0f%%; %u misses "
-        "from %u points\n",
+        "(and %u rays on slivers) from %u points\n",
         b.stats.clusters, b.stats.cells, b.stats.rows, 100.0 * b.stats.meanVisibleFraction, missed,
-        eyes);
+        slivers, eyes);
     EXPECT_EQ(missed, 0u);
 }
 
