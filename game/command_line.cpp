@@ -20,6 +20,9 @@ std::string usage() {
         {"--capture out/NAME", "write NAME.png, NAME.exr and NAME.json (default: none)"},
         {"--msaa N",
          "samples, the nearest supported is used (default: " + std::to_string(d.msaa) + ")"},
+        {"--render-scale S",
+         "window only: draw at S (0.25..1) of the window's size and scale up to it (default: "
+         "0.5 on a CPU device such as lavapipe, else 1)"},
         {"--frames N", "quit after N frames (default: until Esc; headless 1)"},
         {"--flashlight", "the spot effect light at the camera (default: off)"},
         {"--replay SCRIPT", "play a replay script on the fixed tick (default: none)"},
@@ -105,6 +108,17 @@ CommandLine parseCommandLine(int argc, char** argv) {
             out.view = argv[++i];
             if (out.view != "onelight" && out.view != "q3map2")
                 throw world::Error("--view '" + out.view + "': expected onelight or q3map2");
+        } else if (a == "--render-scale" && hasValue) {
+            const std::string v = argv[++i];
+            bool valid = false;
+            try {
+                size_t used = 0;
+                out.renderScale = std::stof(v, &used);
+                valid = used == v.size() && out.renderScale >= 0.25f && out.renderScale <= 1.0f;
+            } catch (const std::exception&) {
+            }
+            if (!valid)
+                throw world::Error("--render-scale '" + v + "': expected a number in [0.25, 1]");
         } else if (a == "--ev100" && hasValue) {
             const std::string v = argv[++i];
             try {
@@ -136,6 +150,9 @@ CommandLine parseCommandLine(int argc, char** argv) {
                                "' (onelight --help lists the options)");
     }
     if (out.level.empty()) throw world::Error("no level given (onelight --help lists the options)");
+    if (out.headless && out.renderScale > 0.0f)
+        throw world::Error(
+            "--render-scale applies to the window; a headless frame's size is --size");
 
     return out;
 }

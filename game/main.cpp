@@ -147,9 +147,12 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
         std::printf("onelight: %ux%u, MSAA %ux (requested %ux)", cl.width, cl.height,
                     info.msaaInUse, info.msaaRequested);
     } else {
-        std::printf("onelight: window %ux%u, MSAA %ux (requested %ux); WASD + mouse, Esc quits\n",
-                    target.window.swapchain.extent.width, target.window.swapchain.extent.height,
-                    info.msaaInUse, info.msaaRequested);
+        std::printf(
+            "onelight: window %ux%u, frame %ux%u at render scale %.2f, MSAA %ux (requested %ux); "
+            "WASD + mouse, Esc quits\n",
+            target.window.swapchain.extent.width, target.window.swapchain.extent.height,
+            target.frameWidth, target.frameHeight, double(target.renderScale), info.msaaInUse,
+            info.msaaRequested);
         if (cl.frames == 0)
             glfwSetInputMode(target.window.window, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
     }

@@ -50,10 +50,11 @@ struct InputReader {
     }
 };
 
-// The window's title: the level, and twice a second the mean frame time, frames per second
-// and GPU time over the frames since the last update.
+// The window's title: the level, twice a second the mean frame time, frames per second and GPU
+// time over the frames since the last update, and the frame's size and render scale.
 struct FrameRateTitle {
     std::string level;
+    std::string frameSize;  // e.g. "640x360 at render scale 0.50"
     std::chrono::steady_clock::time_point since{};
     uint32_t frames = 0;
     double gpuMs = 0.0;
@@ -65,8 +66,9 @@ struct FrameRateTitle {
         const double seconds = std::chrono::duration<double>(now - since).count();
         if (seconds < 0.5) return;
         char text[512];
-        std::snprintf(text, sizeof text, "onelight - %s - %.1f ms (%.1f fps), GPU %.1f ms",
-                      level.c_str(), 1000.0 * seconds / frames, frames / seconds, gpuMs / frames);
+        std::snprintf(text, sizeof text, "onelight - %s - %.1f ms (%.1f fps), GPU %.1f ms - %s",
+                      level.c_str(), 1000.0 * seconds / frames, frames / seconds, gpuMs / frames,
+                      frameSize.c_str());
         glfwSetWindowTitle(window, text);
         since = now;
         frames = 0;
@@ -84,9 +86,12 @@ int runPlay(const CommandLine& cl, const assets::LoadedLevel& level) {
     session.fixedExposure = cl.hasEv100;
     session.ev100 = cl.ev100;
     session.secondaryLux = std::max(render::rendererInfo(target.renderer).ambientLux, 1.0f);
-    std::printf("onelight: playing %s, %ux%u, MSAA %ux\n", level.path.c_str(),
+    char frameSize[96];
+    std::snprintf(frameSize, sizeof frameSize, "%ux%u at render scale %.2f", target.frameWidth,
+                  target.frameHeight, double(target.renderScale));
+    std::printf("onelight: playing %s, window %ux%u, frame %s, MSAA %ux\n", level.path.c_str(),
                 target.window.swapchain.extent.width, target.window.swapchain.extent.height,
-                render::rendererInfo(target.renderer).msaaInUse);
+                frameSize, render::rendererInfo(target.renderer).msaaInUse);
     std::fflush(stdout);
     try {
         if (cl.frames == 0)
@@ -96,7 +101,7 @@ int runPlay(const CommandLine& cl, const assets::LoadedLevel& level) {
         clock.tickSeconds = session.tickSeconds;
         std::vector<render::DynamicTransform> transforms;
         auto last = std::chrono::steady_clock::now();
-        FrameRateTitle title{level.path};
+        FrameRateTitle title{level.path, frameSize};
         for (uint32_t frame = 0; !targetWantsToClose(target); ++frame) {
             auto now = std::chrono::steady_clock::now();
             int ticks = clock.advance(std::chrono::duration<double>(now - last).count());

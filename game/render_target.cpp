@@ -3,7 +3,38 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace onelight::game {
+
+namespace {
+
+// The render scale in use: the command line's, else 0.5 on a CPU device (lavapipe draws every
+// pixel on the cores) and 1 on a GPU; 1 when the display format cannot be scaled by a blit.
+float chooseRenderScale(const vk::Context& ctx, float requested, VkFormat format) {
+    VkFormatProperties props{};
+    vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice, format, &props);
+    const VkFormatFeatureFlags blit = VK_FORMAT_FEATURE_BLIT_SRC_BIT |
+                                      VK_FORMAT_FEATURE_BLIT_DST_BIT |
+                                      VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+    if ((props.optimalTilingFeatures & blit) != blit) return 1.0f;
+    if (requested > 0.0f) return requested;
+    return ctx.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 0.5f : 1.0f;
+}
+
+uint32_t scaled(uint32_t size, float scale) {
+    return std::max(1u, uint32_t(std::lround(double(size) * double(scale))));
+}
+
+void resizeToWindow(RenderTarget& t) {
+    platform::recreateWindowSwapchain(t.window, t.ctx);
+    t.frameWidth = scaled(t.window.swapchain.extent.width, t.renderScale);
+    t.frameHeight = scaled(t.window.swapchain.extent.height, t.renderScale);
+    render::resizeRenderer(t.renderer, t.frameWidth, t.frameHeight);
+}
+
+}  // namespace
 
 void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::LoadedLevel& level,
                       bool windowed) {
@@ -14,12 +45,19 @@ void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::Load
         vk::createContext(t.ctx, render::renderContextOptions(
                                      features, windowed ? platform::windowInstanceExtensions()
                                                         : std::vector<const char*>{}));
-        if (windowed) platform::createWindowSwapchain(t.window, t.ctx);
         render::RendererOptions options;
-        options.width = windowed ? t.window.swapchain.extent.width : cl.width;
-        options.height = windowed ? t.window.swapchain.extent.height : cl.height;
+        options.width = cl.width;
+        options.height = cl.height;
+        if (windowed) {
+            platform::createWindowSwapchain(t.window, t.ctx);
+            t.renderScale = chooseRenderScale(t.ctx, cl.renderScale, t.window.swapchain.format);
+            options.width = scaled(t.window.swapchain.extent.width, t.renderScale);
+            options.height = scaled(t.window.swapchain.extent.height, t.renderScale);
+        }
         options.requestedMsaa = cl.msaa;
         options.visibilityCulling = cl.visibilityCulling;
+        t.frameWidth = options.width;
+        t.frameHeight = options.height;
         render::createRenderer(t.renderer, t.ctx, level, options);
     } catch (...) {
         closeRenderTarget(t);
@@ -35,9 +73,7 @@ render::FrameStats drawToTarget(RenderTarget& t, const render::FrameInputs& inpu
     if (t.windowed) {
         image = vk::acquireNextImage(t.ctx, t.window.swapchain);
         if (image < 0) {
-            platform::recreateWindowSwapchain(t.window, t.ctx);
-            render::resizeRenderer(t.renderer, t.window.swapchain.extent.width,
-                                   t.window.swapchain.extent.height);
+            resizeToWindow(t);
             image = vk::acquireNextImage(t.ctx, t.window.swapchain);
         }
         if (image >= 0) {
@@ -47,11 +83,8 @@ render::FrameStats drawToTarget(RenderTarget& t, const render::FrameInputs& inpu
         }
     }
     render::FrameStats stats = render::drawFrame(t.renderer, inputs, out);
-    if (image >= 0 && !vk::presentImage(t.ctx, t.window.swapchain, uint32_t(image))) {
-        platform::recreateWindowSwapchain(t.window, t.ctx);
-        render::resizeRenderer(t.renderer, t.window.swapchain.extent.width,
-                               t.window.swapchain.extent.height);
-    }
+    if (image >= 0 && !vk::presentImage(t.ctx, t.window.swapchain, uint32_t(image)))
+        resizeToWindow(t);
     return stats;
 }
 

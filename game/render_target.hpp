@@ -14,9 +14,11 @@ namespace onelight::game {
 
 struct RenderTarget {
     bool windowed = false;
-    platform::Window window;    // owned, open when windowed
-    vk::Context ctx;            // owned
-    render::Renderer renderer;  // owned
+    float renderScale = 1.0f;  // the frame's size over the window's (windowed; 1 headless)
+    uint32_t frameWidth = 0, frameHeight = 0;  // the renderer's frame, in pixels
+    platform::Window window;                   // owned, open when windowed
+    vk::Context ctx;                           // owned
+    render::Renderer renderer;                 // owned
 };
 
 // Opens the window (when `windowed`), the context and the renderer at the command line's size

@@ -180,14 +180,18 @@ void recordOutputs(RendererState& s, VkCommandBuffer cmd, const FrameOutput& out
     }
     if (!output.swapchain) return;
     const VkImage swapImage = output.swapchain->images.at(output.swapchainImage);
-    const uint32_t width = std::min(output.swapchain->extent.width, s.width);
-    const uint32_t height = std::min(output.swapchain->extent.height, s.height);
+    const uint32_t width = output.swapchain->extent.width;
+    const uint32_t height = output.swapchain->extent.height;
     vk::imageBarrier(
         cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
         vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                           VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                           VK_ACCESS_TRANSFER_WRITE_BIT));
-    vk::copyImage(cmd, s.display.image, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, width, height);
+    if (width == s.width && height == s.height) {
+        vk::copyImage(cmd, s.display.image, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, width, height);
+    } else {  // a render scale: the frame is smaller than the window
+        vk::blitImage(cmd, s.display.image, s.width, s.height, swapImage, width, height);
+    }
     VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
     if (output.readbackSwapchain) {
         const VkDeviceSize bytes = VkDeviceSize(width) * height * 4;

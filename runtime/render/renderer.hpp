@@ -73,8 +73,8 @@ struct FrameInputs {
 /// Where the frame goes besides the renderer's own targets.
 struct FrameOutput {
     bool readback = false;               // copy the frame to the CPU (capturedFrame)
-    vk::Swapchain* swapchain = nullptr;  // borrowed: copy the frame into this swapchain...
-    uint32_t swapchainImage = 0;         // ...image (acquired), ready to present after
+    vk::Swapchain* swapchain = nullptr;  // borrowed: copy (or scale) the frame into...
+    uint32_t swapchainImage = 0;         // ...this image (acquired), to present after
     bool readbackSwapchain = false;      // copy the swapchain image back too (screenshot)
     bool wait = false;  // wait for this frame and report its own GPU times (benchmarks)
 };

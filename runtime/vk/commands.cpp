@@ -131,4 +131,15 @@ void copyImage(VkCommandBuffer cmd, VkImage src, VkImage dst, VkImageAspectFlags
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
 }
 
+void blitImage(VkCommandBuffer cmd, VkImage src, uint32_t srcWidth, uint32_t srcHeight, VkImage dst,
+               uint32_t dstWidth, uint32_t dstHeight) {
+    VkImageBlit blit{};
+    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    blit.srcOffsets[1] = {int32_t(srcWidth), int32_t(srcHeight), 1};
+    blit.dstSubresource = blit.srcSubresource;
+    blit.dstOffsets[1] = {int32_t(dstWidth), int32_t(dstHeight), 1};
+    vkCmdBlitImage(cmd, src, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+}
+
 }  // namespace onelight::vk

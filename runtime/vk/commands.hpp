@@ -61,4 +61,10 @@ void copyImageToHost(VkCommandBuffer cmd, VkImage image, uint32_t width, uint32_
 void copyImage(VkCommandBuffer cmd, VkImage src, VkImage dst, VkImageAspectFlags aspect,
                uint32_t width, uint32_t height, uint32_t firstLayer = 0, uint32_t layerCount = 1);
 
+// Scales mip 0, layer 0 of the colour image `src` (TRANSFER_SRC_OPTIMAL, srcWidth x srcHeight)
+// onto the whole of `dst` (TRANSFER_DST_OPTIMAL, dstWidth x dstHeight) with a linear filter. Both
+// formats need VK_FORMAT_FEATURE_BLIT_SRC_BIT, BLIT_DST_BIT and SAMPLED_IMAGE_FILTER_LINEAR_BIT.
+void blitImage(VkCommandBuffer cmd, VkImage src, uint32_t srcWidth, uint32_t srcHeight, VkImage dst,
+               uint32_t dstWidth, uint32_t dstHeight);
+
 }  // namespace onelight::vk

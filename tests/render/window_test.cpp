@@ -38,7 +38,8 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
     const std::vector<std::string> view = {dir + "/window_level.olpak", "--size", "320x180",
                                            "--camera", "2,3,6,15,-25"};
     std::vector<std::string> windowed = view, headless = view;
-    windowed.insert(windowed.end(), {"--frames", "3", "--capture", dir + "/windowed"});
+    windowed.insert(windowed.end(),
+                    {"--frames", "3", "--render-scale", "1", "--capture", dir + "/windowed"});
     headless.insert(headless.end(), {"--headless", "--capture", dir + "/headless"});
     const test::ProcessResult w = test::runProcess(ONELIGHT_ONELIGHT_PATH, windowed);
     ASSERT_EQ(w.exitCode, 0) << w.stderrText;
@@ -68,6 +69,60 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
         sh, static_cast<unsigned long long>(over), sum / (pixels * 3));
     EXPECT_LE(double(over), 0.005 * pixels);
     EXPECT_LE(sum / (pixels * 3), 0.5);
+}
+
+// At render scale 0.5 the window shows a 160x90 frame scaled up to its 320x180: the screenshot,
+// averaged back over 2x2 blocks, matches a headless 160x90 frame of the same view. A bilinear
+// blit up and a box filter down return each pixel blended with at most a quarter of each
+// neighbour, so the tolerance is the mean absolute difference over smooth shading plus edges.
+TEST(RenderWindow, RenderScaleDrawsSmallerAndScalesUp) {
+    if (!ONELIGHT_HAVE_XVFB_RUN) GTEST_SKIP() << "xvfb-run is not installed";
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr);
+    test::Scene scene;
+    scene.materials = {{{0.7f, 0.7f, 0.7f, 1.0f}, 0.0f, 0.9f},
+                       {{0.8f, 0.4f, 0.2f, 1.0f}, 0.0f, 0.4f}};
+    test::addFloor(scene, 0.0f, 0.0f, 8.0f, 0.0f, 0);
+    test::addBox(scene, {-1.0f, 0.0f, -1.0f}, {1.0f, 1.5f, 1.0f}, 1);
+    test::SceneLight sun;
+    sun.intensity = 10000.0f;
+    sun.direction = glm::normalize(glm::vec3(0.6f, -0.8f, 0.4f));
+    scene.lights.push_back(sun);
+    const std::string dir = test::outputDir() + "/window_scale";
+    std::filesystem::create_directories(dir);
+    const std::string gltf = dir + "/level.gltf";
+    test::writeGltf(scene, gltf);
+    ASSERT_EQ(test::compileLevel(gltf, dir + "/level.olpak"), 0);
+    const std::string camera = "2,3,6,15,-25";
+    const test::ProcessResult w =
+        test::runProcess(ONELIGHT_ONELIGHT_PATH,
+                         {dir + "/level.olpak", "--size", "320x180", "--camera", camera, "--frames",
+                          "2", "--render-scale", "0.5", "--capture", dir + "/windowed"});
+    ASSERT_EQ(w.exitCode, 0) << w.stderrText;
+    const test::ProcessResult h = test::runProcess(
+        ONELIGHT_ONELIGHT_PATH, {dir + "/level.olpak", "--size", "160x90", "--camera", camera,
+                                 "--headless", "--capture", dir + "/headless"});
+    ASSERT_EQ(h.exitCode, 0) << h.stderrText;
+    const world::DecodedImage window = capture::readPng(dir + "/windowed_window.png");
+    const world::DecodedImage frame = capture::readPng(dir + "/windowed.png");
+    const world::DecodedImage small = capture::readPng(dir + "/headless.png");
+    ASSERT_EQ(window.width, 320u);
+    ASSERT_EQ(window.height, 180u);
+    EXPECT_EQ(frame.width, 160u) << "the captured frame is the renderer's, at the render scale";
+    ASSERT_EQ(small.width, 160u);
+    double sum = 0.0;
+    for (uint32_t y = 0; y < 90; ++y)
+        for (uint32_t x = 0; x < 160; ++x)
+            for (int c = 0; c < 3; ++c) {
+                int box = 0;
+                for (uint32_t dy = 0; dy < 2; ++dy)
+                    for (uint32_t dx = 0; dx < 2; ++dx)
+                        box += window.rgba[4 * ((2 * y + dy) * 320 + 2 * x + dx) + c];
+                sum += std::abs(box / 4.0 - small.rgba[4 * (y * 160 + x) + c]);
+            }
+    const double mean = sum / (160.0 * 90.0 * 3.0);
+    std::printf("[ window ] render scale 0.5: 2x2 means of the window vs 160x90: mean %.3f/255\n",
+                mean);
+    EXPECT_LE(mean, 3.0);
 }
 
 }  // namespace
