@@ -310,33 +310,45 @@ void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting
 }
 
 world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
-                                        std::vector<world::BakedLighting> parts) {
+                                        std::vector<world::BakedLighting> parts,
+                                        const std::vector<std::string>& names) {
     if (parts.empty()) throw world::Error("merge: no parts given");
+    auto name = [&](size_t i) {
+        return i < names.size() ? names[i] : "part " + std::to_string(i + 1);
+    };
     const uint32_t count = parts[0].shardCount;
     if (parts.size() != count)
-        throw world::Error("merge: " + std::to_string(parts.size()) +
-                           " parts given; the first is a part of " + std::to_string(count));
+        throw world::Error("merge: " + std::to_string(parts.size()) + " parts given; " + name(0) +
+                           " is a part of " + std::to_string(count));
     std::vector<const world::BakedLighting*> byIndex(count, nullptr);
+    std::vector<size_t> partOfShard(count, 0);
     const uint64_t texels = totalTexels(level);
-    for (const world::BakedLighting& p : parts) {
+    const world::LightGrid& grid0 = parts[0].grid;
+    for (size_t i = 0; i < parts.size(); ++i) {
+        const world::BakedLighting& p = parts[i];
+        const std::string shard = name(i) + " (shard " + std::to_string(p.shardIndex) + "/" +
+                                  std::to_string(p.shardCount) + ")";
         if (p.shardCount != count || p.shardIndex >= count)
-            throw world::Error("merge: a part is shard " + std::to_string(p.shardIndex) + "/" +
-                               std::to_string(p.shardCount) + "; expected a part of " +
-                               std::to_string(count));
+            throw world::Error("merge: " + shard + "; expected a part of " + std::to_string(count) +
+                               " like " + name(0));
         if (byIndex[p.shardIndex])
-            throw world::Error("merge: shard " + std::to_string(p.shardIndex) + " given twice");
+            throw world::Error("merge: " + shard + ": shard " + std::to_string(p.shardIndex) +
+                               " is also " + name(partOfShard[p.shardIndex]));
         if (p.texels.size() != texels || p.shadowMask.size() != texels ||
-            p.grid.cells.size() != parts[0].grid.cells.size() ||
-            p.grid.dims != parts[0].grid.dims ||
+            p.grid.cells.size() != grid0.cells.size() || p.grid.dims != grid0.dims ||
             p.importedTexels.size() != parts[0].importedTexels.size())
-            throw world::Error("merge: shard " + std::to_string(p.shardIndex) +
-                               " does not match the level (texel or grid cell counts differ)");
+            throw world::Error("merge: " + shard + " does not match the level of " + name(0) +
+                               " (texel or grid cell counts differ)");
+        if (p.grid.origin != grid0.origin || p.grid.cellSize != grid0.cellSize ||
+            p.grid.samples != grid0.samples)
+            throw world::Error("merge: " + shard + ": its light grid's origin, cell size or " +
+                               "samples differ from " + name(0) +
+                               "'s; expected the same grid (baked with other settings?)");
         if (!(p.visibility == parts[0].visibility))
-            throw world::Error("merge: shard " + std::to_string(p.shardIndex) +
-                               "'s visibility differs from shard " +
-                               std::to_string(parts[0].shardIndex) +
+            throw world::Error("merge: " + shard + ": its visibility differs from " + name(0) +
                                "'s (baked from another level or with other settings)");
         byIndex[p.shardIndex] = &p;
+        partOfShard[p.shardIndex] = i;
     }
     world::BakedLighting merged = parts[0];
     for (uint32_t i = 0; i < count; ++i) {

@@ -101,9 +101,11 @@ struct ShardRange {
 void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked);
 
 /// Joins the parts of a sharded bake (any order) into the unfinished whole, then finishes it.
-/// Throws world::Error on a missing or repeated shard or mismatched sizes.
+/// Throws world::Error on a missing or repeated shard, mismatched sizes or grids; `names` (the
+/// parts' files, in the order of `parts`) name the parts in messages.
 [[nodiscard]] world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
-                                                      std::vector<world::BakedLighting> parts);
+                                                      std::vector<world::BakedLighting> parts,
+                                                      const std::vector<std::string>& names = {});
 
 /// The package bytes of a bake result.
 [[nodiscard]] std::vector<uint8_t> packageBytes(const world::CompiledLevel& level,

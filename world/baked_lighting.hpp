@@ -40,6 +40,11 @@ struct LightGridCell {
     uint32_t flags = 0;                      // LightGridCellFlags
 };
 
+/// A light grid's limits, checked by the package reader (docs/limits.md): every axis has at
+/// least one cell, and the whole grid at most kMaxLightGridCells (1.4 GB of cells on disk).
+inline constexpr uint32_t kMaxLightGridCellsPerAxis = 4096;
+inline constexpr uint64_t kMaxLightGridCells = uint64_t(1) << 24;
+
 struct LightGrid {
     glm::vec3 origin{0.0f};    // metres, minimum corner
     glm::vec3 cellSize{1.0f};  // metres

@@ -7,7 +7,11 @@ namespace onelight::world {
 
 LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p) {
     LightGridSample out;
-    if (grid.cells.empty()) return out;
+    // A grid whose cells do not match its dims (only a package the reader refused could hold
+    // one) reads as no grid rather than out of bounds.
+    if (grid.cells.empty() || grid.dims.x == 0 || grid.dims.y == 0 || grid.dims.z == 0 ||
+        uint64_t(grid.dims.x) * grid.dims.y * grid.dims.z != grid.cells.size())
+        return out;
     // Continuous cell coordinate: cell (i, j, k) is centred at origin + (i + 0.5) size.
     const glm::vec3 f = (p - grid.origin) / grid.cellSize - 0.5f;
     glm::uvec3 lo{0u}, hi{0u};
@@ -25,8 +29,8 @@ LightGridSample sampleLightGrid(const LightGrid& grid, glm::vec3 p) {
                            (corner & 4u) ? hi.z : lo.z);
         const float w = ((corner & 1u) ? t.x : 1.0f - t.x) * ((corner & 2u) ? t.y : 1.0f - t.y) *
                         ((corner & 4u) ? t.z : 1.0f - t.z);
-        const uint32_t cell = c.x + grid.dims.x * (c.y + grid.dims.y * c.z);
-        out.cells[corner] = cell;
+        const uint64_t cell = c.x + uint64_t(grid.dims.x) * (c.y + uint64_t(grid.dims.y) * c.z);
+        out.cells[corner] = uint32_t(cell);  // the reader keeps grids below 2^24 cells
         plain[corner] = w;
         const bool solid = (grid.cells[cell].flags & kLightGridCellInsideSolid) != 0;
         out.weights[corner] = solid ? 0.0f : w;

@@ -44,7 +44,9 @@ struct ImportedLightmap {
 };
 
 struct SourceLevel {
-    std::string sourcePath;  // the .gltf, for messages
+    std::string sourcePath;               // the .gltf, for messages
+    std::vector<std::string> inputFiles;  // every file the import read (the level, its buffers
+                                          // and images, the map or pk3s): never an output
     std::vector<Material> materials;
     std::vector<Texture> textures;
     std::vector<Image> images;  // uri relative to the glTF's folder

@@ -13,6 +13,7 @@
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/import/level_import.hpp"
 #include "world/package/package_writer.hpp"
 
@@ -128,8 +129,9 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
                                                       static_cast<size_t>(threads));
     return runReportingErrors(input, [&] {
         const world::SourceLevel source = world::importLevel(input, quake3);
+        world::refuseOutputOverInput(output, source.inputFiles);
         BakeResult result = bakeLevel(source, options);
-        rebaseImagePaths(result.level, output);
+        package::placeImagesForPackage(result.level, output);
         const std::vector<uint8_t> bytes = packageBytes(result.level, result.baked);
         package::writeFileAtomically(output, bytes);
         if (!reportPath.empty()) {

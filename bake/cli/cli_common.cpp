@@ -37,17 +37,6 @@ bool parsePatchLevel(const std::string& text, world::Quake3Options& options) {
     return true;
 }
 
-void rebaseImagePaths(world::CompiledLevel& level, const std::string& package) {
-    const std::filesystem::path folder = std::filesystem::absolute(package).parent_path();
-    for (world::Image& image : level.images) {
-        if (image.uri.empty()) continue;
-        std::error_code ec;
-        const std::filesystem::path relative =
-            std::filesystem::relative(std::filesystem::absolute(image.uri), folder, ec);
-        if (!ec && !relative.empty()) image.uri = relative.generic_string();
-    }
-}
-
 std::string formatNumber(double value) {
     char text[32];
     std::snprintf(text, sizeof(text), "%g", value);

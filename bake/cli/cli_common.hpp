@@ -36,10 +36,6 @@ inline const std::string kLevelMeaning =
 /// integer in [1, 64].
 [[nodiscard]] bool parsePatchLevel(const std::string& text, world::Quake3Options& options);
 
-/// Makes the level's image file references (as imported: relative to the working folder)
-/// relative to the folder of `package`, where the runtime looks for them.
-void rebaseImagePaths(world::CompiledLevel& level, const std::string& package);
-
 /// `value` as the shortest text that reads it back ("%g").
 [[nodiscard]] std::string formatNumber(double value);
 

@@ -9,6 +9,7 @@
 #include "bake/cli/subcommands.hpp"
 #include "world/compile/compile_level.hpp"
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/import/level_import.hpp"
 #include "world/package/package_writer.hpp"
 
@@ -116,8 +117,9 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
     if (output.empty()) output = world::defaultPackagePath(input);
     return runReportingErrors(input, [&] {
         const world::SourceLevel source = world::importLevel(input, quake3);
+        world::refuseOutputOverInput(output, source.inputFiles);
         world::CompileResult result = world::compileLevel(source, options);
-        rebaseImagePaths(result.level, output);
+        package::placeImagesForPackage(result.level, output);
         const std::vector<uint8_t> bytes = package::serializePackage(result.level);
         package::writeFileAtomically(output, bytes);
         printSummary(output, result.stats, bytes.size());

@@ -7,6 +7,7 @@
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
 
@@ -40,6 +41,7 @@ int runMergeCommand(const std::vector<std::string>& arguments) {
         return 2;
     }
     return runReportingErrors(inputs[0], [&] {
+        world::refuseOutputOverInput(output, inputs);
         world::CompiledLevel level;
         std::vector<uint8_t> firstCore;
         std::vector<world::BakedLighting> parts;
@@ -57,7 +59,7 @@ int runMergeCommand(const std::vector<std::string>& arguments) {
             if (!baked.present) throw world::Error(path + ": no baked lighting");
             parts.push_back(std::move(baked.baked));
         }
-        const world::BakedLighting merged = mergeBakedLighting(level, std::move(parts));
+        const world::BakedLighting merged = mergeBakedLighting(level, std::move(parts), inputs);
         const std::vector<uint8_t> bytes = packageBytes(level, merged);
         package::writeFileAtomically(output, bytes);
         std::printf("merged %zu parts into %s (%zu bytes)\n", inputs.size(), output.c_str(),

@@ -16,6 +16,7 @@
 #include "bake/reference/path_tracer.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/import/level_import.hpp"
 
 namespace onelight::bake {
@@ -92,6 +93,7 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
                                                       static_cast<size_t>(threads));
     return runReportingErrors(input, [&] {
         const world::SourceLevel source = world::importLevel(input, quake3);
+        world::refuseOutputOverInput(output, source.inputFiles);
         const world::Camera* camera = nullptr;
         for (const world::Camera& c : source.cameras)
             if (c.name == cameraName) camera = &c;

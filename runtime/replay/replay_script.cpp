@@ -2,9 +2,13 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include "world/error.hpp"
+#include "world/file_read.hpp"
 
 namespace onelight::replay {
 
@@ -37,7 +41,7 @@ public:
     }
     void keyword(std::string_view k) {
         std::string_view w = word(std::string(k).c_str());
-        if (w != k) fail("expected '" + std::string(k) + "', found '" + std::string(w) + "'");
+        if (w != k) fail("expected '" + std::string(k) + "', found '" + quoted(w) + "'");
     }
     double number(const char* expected) {
         std::string_view w = word(expected);
@@ -45,19 +49,30 @@ public:
         double x = 0.0;
         auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), x);
         if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(x))
-            fail(std::string("expected ") + expected + " (a number), found '" + std::string(w) +
-                 "'");
+            fail(std::string("expected ") + expected + " (a number), found '" + quoted(w) + "'");
         return x;
     }
+    // A number in [-limit, limit].
+    double bounded(const char* expected, double limit) {
+        const double x = number(expected);
+        if (!(std::fabs(x) <= limit)) {
+            char text[160];
+            std::snprintf(text, sizeof text, "expected %s from %g to %g, found %g", expected,
+                          -limit, limit, x);
+            fail(text);
+        }
+        return x;
+    }
+    static std::string quoted(std::string_view w) { return world::clipForMessage(w, 60); }
     bool choice(std::string_view yes, std::string_view no) {
         std::string_view w = word((std::string(yes) + " or " + std::string(no)).c_str());
         if (w == yes) return true;
         if (w == no) return false;
         fail("expected '" + std::string(yes) + "' or '" + std::string(no) + "', found '" +
-             std::string(w) + "'");
+             quoted(w) + "'");
     }
     void end() {
-        if (!done()) fail("unexpected '" + std::string(words_[next_]) + "' after the command");
+        if (!done()) fail("unexpected '" + quoted(words_[next_]) + "' after the command");
     }
 
 private:
@@ -111,6 +126,13 @@ Script parseScript(std::string_view text, const std::string& path) {
         if (head == "wait") {
             double s = p.number("seconds");
             if (s < 0.0) p.fail("expected a wait of zero or more seconds");
+            if (cursor + s > kMaxScriptSeconds) {
+                char buf[128];
+                std::snprintf(buf, sizeof buf,
+                              "the wait reaches %g s; expected a script of at most %g s",
+                              cursor + s, kMaxScriptSeconds);
+                p.fail(buf);
+            }
             cursor += s;
             p.end();
             continue;
@@ -118,6 +140,12 @@ Script parseScript(std::string_view text, const std::string& path) {
         if (head == "at") {
             double t = p.number("a time in seconds");
             if (t < 0.0) p.fail("expected a time of zero or more seconds");
+            if (t > kMaxScriptSeconds) {
+                char buf[128];
+                std::snprintf(buf, sizeof buf, "time %g s; expected at most %g s (a day)", t,
+                              kMaxScriptSeconds);
+                p.fail(buf);
+            }
             if (t < cursor) {
                 char buf[96];
                 std::snprintf(buf, sizeof buf,
@@ -135,23 +163,25 @@ Script parseScript(std::string_view text, const std::string& path) {
         if (head == "spawn") {
             c.kind = CommandKind::kSpawn;
             c.name = std::string(p.word("'player'"));
-            if (c.name != "player") p.fail("expected 'player', found '" + c.name + "'");
-            for (int i = 0; i < 3; ++i) c.values[i] = float(p.number("a coordinate in metres"));
+            if (c.name != "player")
+                p.fail("expected 'player', found '" + LineParser::quoted(c.name) + "'");
+            for (int i = 0; i < 3; ++i)
+                c.values[i] = float(p.bounded("a coordinate in metres", kMaxScriptCoordinate));
             p.keyword("yaw");
-            c.values[3] = float(p.number("a yaw in degrees"));
+            c.values[3] = float(p.bounded("a yaw in degrees", kMaxScriptDegrees));
             p.keyword("pitch");
-            c.values[4] = float(p.number("a pitch in degrees"));
+            c.values[4] = float(p.bounded("a pitch in degrees", kMaxScriptDegrees));
         } else if (head == "key") {
             c.kind = CommandKind::kKey;
             c.name = std::string(p.word("a key name"));
             if (!knownKeys().count(c.name))
-                p.fail("expected a key (W A S D SPACE SHIFT CTRL F E Q R 0-9), found '" + c.name +
-                       "'");
+                p.fail("expected a key (W A S D SPACE SHIFT CTRL F E Q R 0-9), found '" +
+                       LineParser::quoted(c.name) + "'");
             c.on = p.choice("down", "up");
         } else if (head == "look") {
             c.kind = CommandKind::kLook;
-            c.values[0] = float(p.number("a yaw change in degrees"));
-            c.values[1] = float(p.number("a pitch change in degrees"));
+            c.values[0] = float(p.bounded("a yaw change in degrees", kMaxScriptDegrees));
+            c.values[1] = float(p.bounded("a pitch change in degrees", kMaxScriptDegrees));
         } else if (head == "flashlight") {
             c.kind = CommandKind::kFlashlight;
             c.on = p.choice("on", "off");
@@ -161,7 +191,8 @@ Script parseScript(std::string_view text, const std::string& path) {
             c.kind = CommandKind::kCapture;
             c.name = std::string(p.word("a capture name"));
             if (c.name.find('/') != std::string::npos || c.name.find("..") != std::string::npos)
-                p.fail("expected a capture name without '/' or '..', found '" + c.name + "'");
+                p.fail("expected a capture name without '/' or '..', found '" +
+                       LineParser::quoted(c.name) + "'");
         } else if (head == "expect") {
             std::string_view what = p.word("'primary', 'effect-lights' or 'player'");
             if (what == "primary") {
@@ -186,28 +217,34 @@ Script parseScript(std::string_view text, const std::string& path) {
                 }
             } else {
                 p.fail("expected 'primary', 'effect-lights' or 'player' after 'expect', found '" +
-                       std::string(what) + "'");
+                       LineParser::quoted(what) + "'");
             }
         } else if (head == "quit") {
             c.kind = CommandKind::kQuit;
         } else {
-            p.fail("unknown command '" + std::string(head) +
+            p.fail("unknown command '" + LineParser::quoted(head) +
                    "' (expected level, tick, spawn, at, wait, key, look, flashlight, fire, "
                    "capture, expect or quit)");
         }
         p.end();
         timedSeen = true;
+        if (script.commands.size() >= kMaxScriptCommands)
+            p.fail("more than " + std::to_string(kMaxScriptCommands) +
+                   " timed commands; expected fewer");
         script.commands.push_back(std::move(c));
     }
     return script;
 }
 
 Script loadScript(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw ScriptError(path + ":0: cannot open the replay script");
-    std::stringstream text;
-    text << in.rdbuf();
-    return parseScript(text.str(), path);
+    std::vector<uint8_t> bytes;
+    try {
+        bytes = world::readRegularFile(path, "a replay script", kMaxScriptBytes);
+    } catch (const world::Error& e) {
+        throw ScriptError(e.what());
+    }
+    return parseScript(std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()),
+                       path);
 }
 
 }  // namespace onelight::replay

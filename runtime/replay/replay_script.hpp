@@ -31,6 +31,14 @@
 
 namespace onelight::replay {
 
+// Limits (docs/limits.md): a script longer, later, with more commands or larger values is
+// rejected with its line.
+inline constexpr size_t kMaxScriptBytes = size_t(16) << 20;  // 16 MiB
+inline constexpr double kMaxScriptSeconds = 24.0 * 3600.0;   // the last command's time: a day
+inline constexpr size_t kMaxScriptCommands = size_t(1) << 20;
+inline constexpr double kMaxScriptCoordinate = 1e6;   // metres, as world::kMaxCoordinateMetres
+inline constexpr double kMaxScriptDegrees = 36000.0;  // a yaw, pitch or look change
+
 enum class CommandKind {
     kSpawn,
     kKey,

@@ -12,6 +12,7 @@
 #include "world/light_grid_sample.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
+#include "world/package/package_writer.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -64,11 +65,13 @@ TEST_P(BakeDeterminism, ShardsMergedEqualAWholeBake) {
     }
     std::vector<world::BakedLighting> parts;
     world::CompiledLevel compiled;
+    const std::string packagePath = "/tmp/onelight_determinism_parts/level.olpak";
     for (uint32_t i : {1u, 0u}) {  // any order
         BakeOptions o = test::fastBakeOptions();
         o.shardIndex = i;
         o.shardCount = 2;
         BakeResult part = bakeLevel(level, o);
+        package::placeImagesForPackage(part.level, packagePath);
         // Through the package, as `merge` reads it.
         const std::vector<uint8_t> bytes = packageBytes(part.level, part.baked);
         const package::PackageContents read = package::parsePackage(bytes, "part");
@@ -79,8 +82,19 @@ TEST_P(BakeDeterminism, ShardsMergedEqualAWholeBake) {
         compiled = read.level;
     }
     const world::BakedLighting merged = mergeBakedLighting(compiled, parts);
-    EXPECT_TRUE(packageBytes(compiled, merged) == packageBytes(whole.level, whole.baked));
+    world::CompiledLevel wholeLevel = whole.level;
+    package::placeImagesForPackage(wholeLevel, packagePath);
+    EXPECT_TRUE(packageBytes(compiled, merged) == packageBytes(wholeLevel, whole.baked));
     EXPECT_TRUE(test::allFiniteNonNegative(merged));
+
+    // A shard whose grid has another origin, with the same counts: named, not merged.
+    std::vector<world::BakedLighting> moved = parts;
+    moved[1].grid.origin.x += 0.25f;
+    const std::string originError = onelight::test::errorMessage([&] {
+        (void)mergeBakedLighting(compiled, moved, {"first.olpak", "second.olpak"});
+    });
+    EXPECT_NE(originError.find("second.olpak (shard "), std::string::npos) << originError;
+    EXPECT_NE(originError.find("light grid's origin"), std::string::npos) << originError;
 
     parts.pop_back();
     const std::string error =

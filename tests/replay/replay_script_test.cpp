@@ -100,6 +100,8 @@ TEST(ReplayScript, MissingFileIsAClearError) {
         (void)loadScript("/nonexistent/x.replay");
         FAIL() << "no error";
     } catch (const ScriptError& e) {
-        EXPECT_STREQ(e.what(), "/nonexistent/x.replay:0: cannot open the replay script");
+        EXPECT_STREQ(e.what(),
+                     "/nonexistent/x.replay: cannot open (No such file or directory); expected a "
+                     "replay script");
     }
 }

@@ -14,7 +14,9 @@ namespace {
 
 using namespace onelight::world;
 
-void expectRoundTrip(const CompiledLevel& level) {
+void expectRoundTrip(CompiledLevel level) {
+    // As `compile` writes it: images beside a package in a fresh folder are embedded.
+    package::placeImagesForPackage(level, (freshFolder("round-trip") / "level.olpak").string());
     const std::vector<uint8_t> bytes = package::serializePackage(level);
     const package::PackageContents read = package::parsePackage(bytes, "round-trip");
     EXPECT_EQ(package::serializePackage(read.level), bytes);

@@ -8,6 +8,7 @@
 
 #include "tests/support/error_message.hpp"
 #include "tests/world/level_generator.hpp"
+#include "tests/world/package_patch.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/error.hpp"
 #include "world/package/crc32.hpp"
@@ -28,47 +29,6 @@ const world::CompiledLevel& sampleLevel() {
         return compileFile(writeGeneratedLevel(freshFolder("package"), "package", options)).level;
     }();
     return level;
-}
-
-SectionEntry entry(const std::vector<uint8_t>& bytes, uint32_t id) {
-    FileHeader header;
-    std::memcpy(&header, bytes.data(), sizeof header);
-    for (uint32_t i = 0; i < header.sectionCount; ++i) {
-        SectionEntry e;
-        std::memcpy(&e, bytes.data() + sizeof(FileHeader) + i * sizeof(SectionEntry), sizeof e);
-        if (e.id == id) return e;
-    }
-    ADD_FAILURE() << "no section " << id;
-    return {};
-}
-
-/// Recomputes every section CRC and the table CRC, so only the semantic checks can object.
-void fixCrcs(std::vector<uint8_t>& bytes) {
-    FileHeader header;
-    std::memcpy(&header, bytes.data(), sizeof header);
-    for (uint32_t i = 0; i < header.sectionCount; ++i) {
-        uint8_t* at = bytes.data() + sizeof(FileHeader) + i * sizeof(SectionEntry);
-        SectionEntry e;
-        std::memcpy(&e, at, sizeof e);
-        e.crc32 = crc32(bytes.data() + e.offset, e.size);
-        std::memcpy(at, &e, sizeof e);
-    }
-    header.tableCrc32 = 0;
-    std::memcpy(bytes.data(), &header, sizeof header);
-    header.tableCrc32 =
-        crc32(bytes.data(), sizeof(FileHeader) + header.sectionCount * sizeof(SectionEntry));
-    std::memcpy(bytes.data(), &header, sizeof header);
-}
-
-/// Overwrites a uint32 field of record `record` in section `id`, then fixes the CRCs.
-std::vector<uint8_t> patched(std::vector<uint8_t> bytes, uint32_t id, uint32_t record,
-                             size_t fieldOffset, uint32_t value) {
-    const SectionEntry e = entry(bytes, id);
-    EXPECT_LT(record, e.count);
-    std::memcpy(bytes.data() + e.offset + uint64_t(record) * e.elementSize + fieldOffset, &value,
-                4);
-    fixCrcs(bytes);
-    return bytes;
 }
 
 void expectRejected(const std::vector<uint8_t>& bytes, const std::string& fragment) {

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <numeric>
 
 #include "world/compile/static_split.hpp"
+#include "world/error.hpp"
 #include "world/features/feature_analysis.hpp"
 
 namespace onelight::world {
@@ -133,6 +135,23 @@ void boundNodes(CompiledLevel& level) {
     }
 }
 
+// Refuses, before anything allocates a texel, a lightmap the bake could not hold: the figure,
+// the memory it would take and the limit (docs/limits.md), rather than "out of memory" later.
+void checkLightmapBudget(const ChartLayout& charts, const ChartOptions& options,
+                         const std::string& path) {
+    if (charts.texelCount <= kMaxLightmapTexels) return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  ": %llu lightmap texels in %zu atlases at %g texels per metre (%.1f GB to bake);"
+                  " expected at most %llu texels (%.1f GB): lower the density "
+                  "(--texels-per-metre or extras.onelight.texels_per_metre)",
+                  static_cast<unsigned long long>(charts.texelCount), charts.atlases.size(),
+                  options.texelsPerMetre, double(charts.texelCount) * kBakeBytesPerTexel * 1e-9,
+                  static_cast<unsigned long long>(kMaxLightmapTexels),
+                  double(kMaxLightmapTexels) * kBakeBytesPerTexel * 1e-9);
+    throw Error(path + text);
+}
+
 }  // namespace
 
 CompileResult compileLevel(const SourceLevel& source, const CompileOptions& options,
@@ -173,6 +192,7 @@ CompileResult compileLevel(const SourceLevel& source, const CompileOptions& opti
         chartOptions.texelsPerMetre = source.texelsPerMetre;
     const ChartLayout charts = buildLightmapCharts(geometry, chartOptions);
     stats.secondsCharts = secondsSince(start);
+    checkLightmapBudget(charts, chartOptions, source.sourcePath);
 
     start = Clock::now();
     const BspBuild bsp = buildBsp(geometry, options.bsp);

@@ -12,6 +12,12 @@
 
 namespace onelight::world {
 
+/// The most lightmap texels a level may have (every atlas's area), and the bake's memory per
+/// texel this limit assumes: the texel (32 bytes), its shadow mask, the denoiser's and the
+/// dilation's copies and the sampler's accumulators (an estimate from the baker's structures).
+inline constexpr uint64_t kMaxLightmapTexels = uint64_t(1) << 27;  // 134M texels
+inline constexpr double kBakeBytesPerTexel = 96.0;
+
 struct CompileOptions {
     RegionOptions regions;
     ChartOptions charts;

@@ -21,20 +21,11 @@
 #include <stb_image.h>
 #pragma GCC diagnostic pop
 
+#include "world/file_read.hpp"
+
 namespace onelight::world {
 
 namespace {
-
-// The bytes of a regular file (not a FIFO or a device, which could block or never end).
-std::vector<uint8_t> readRegularFile(const std::string& path, const char* expected) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw Error(path + ": cannot open; expected " + expected);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open; expected " + expected);
-    return std::vector<uint8_t>((std::istreambuf_iterator<char>(in)),
-                                std::istreambuf_iterator<char>());
-}
 
 void checkExtent(int width, int height, const std::string& where) {
     if (width <= 0 || height <= 0 || uint32_t(width) > kMaxImageExtent ||
@@ -46,7 +37,9 @@ void checkExtent(int width, int height, const std::string& where) {
 }  // namespace
 
 DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where) {
-    if (size == 0 || size > size_t(1) << 30) throw Error(where + ": empty or oversized image data");
+    if (size == 0 || size > kMaxEncodedImageBytes)
+        throw Error(where + ": " + std::to_string(size) + " bytes of image data; expected 1.." +
+                    std::to_string(kMaxEncodedImageBytes));
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
         throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() +
@@ -65,20 +58,26 @@ DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& w
 }
 
 DecodedImage readImageFile(const std::string& path) {
-    const std::vector<uint8_t> bytes = readRegularFile(path, "a PNG or JPEG file");
+    const std::vector<uint8_t> bytes =
+        readRegularFile(path, "a PNG or JPEG file", kMaxEncodedImageBytes);
     return decodeImage(bytes.data(), bytes.size(), path);
 }
 
 HdrImage readHdrFile(const std::string& path) {
-    const std::vector<uint8_t> bytes = readRegularFile(path, "a Radiance .hdr image");
+    const std::vector<uint8_t> bytes =
+        readRegularFile(path, "a Radiance .hdr image", kMaxEncodedImageBytes);
+    return decodeHdrImage(bytes.data(), bytes.size(), path);
+}
+
+HdrImage decodeHdrImage(const uint8_t* bytes, size_t size, const std::string& where) {
     int width = 0, height = 0, channels = 0;
-    if (bytes.empty() ||
-        !stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels))
-        throw Error(path + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
-    checkExtent(width, height, path);
-    float* pixels =
-        stbi_loadf_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 3);
-    if (!pixels) throw Error(path + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
+    if (size == 0 || size > kMaxEncodedImageBytes ||
+        !stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
+        throw Error(where + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
+    checkExtent(width, height, where);
+    float* pixels = stbi_loadf_from_memory(bytes, int(size), &width, &height, &channels, 3);
+    if (!pixels)
+        throw Error(where + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
     HdrImage out;
     out.width = uint32_t(width);
     out.height = uint32_t(height);

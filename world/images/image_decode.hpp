@@ -22,6 +22,9 @@ struct HdrImage {
     std::vector<float> rgb;  // width * height * 3
 };
 
+/// The largest encoded image (file or embedded bytes) decoded.
+inline constexpr size_t kMaxEncodedImageBytes = size_t(1) << 30;
+
 /// The largest width or height a decoded image may have (texels).
 inline constexpr uint32_t kMaxImageExtent = 16384;
 
@@ -31,6 +34,10 @@ inline constexpr uint32_t kMaxImageExtent = 16384;
 
 /// Reads and decodes the image file at `path` (PNG/JPEG). Throws world::Error naming it.
 [[nodiscard]] DecodedImage readImageFile(const std::string& path);
+
+/// Decodes Radiance .hdr bytes as linear RGB (NaN, Inf and negatives to 0). Throws world::Error,
+/// its message starting with `where`.
+[[nodiscard]] HdrImage decodeHdrImage(const uint8_t* bytes, size_t size, const std::string& where);
 
 /// Reads a Radiance .hdr file as linear RGB. Throws world::Error naming it.
 [[nodiscard]] HdrImage readHdrFile(const std::string& path);

@@ -8,8 +8,11 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/import/camera_import.hpp"
 #include "world/import/extras_import.hpp"
+#include "world/import/gltf_json_check.hpp"
+#include "world/import/level_limits.hpp"
 #include "world/import/light_import.hpp"
 #include "world/import/material_import.hpp"
 #include "world/import/mesh_import.hpp"
@@ -274,25 +277,63 @@ struct Importer {
     }
 };
 
+// tinygltf's file access, limited to regular files (a FIFO or /dev/zero would block or never
+// end), with no shell-style expansion of paths, and never writing. `user` collects what was read.
+bool anyFileExists(const std::string& path, void*) {
+    std::error_code ec;  // whatever it is: the read then says why it is not a file to read
+    return std::filesystem::exists(path, ec);
+}
+
+std::string unexpandedPath(const std::string& path, void*) {
+    return path;
+}
+
+bool readRegularFileFor(std::vector<unsigned char>* out, std::string* error,
+                        const std::string& path, void* user) {
+    try {
+        *out = readRegularFile(path, "a buffer or image the glTF names");
+        static_cast<std::vector<std::string>*>(user)->push_back(path);
+        return true;
+    } catch (const Error& e) {
+        if (error) *error += std::string(e.what()) + "\n";
+        return false;
+    }
+}
+
+bool refuseToWrite(std::string* error, const std::string&, const std::vector<unsigned char>&,
+                   void*) {
+    if (error) *error += "the importer writes no files\n";
+    return false;
+}
+
 }  // namespace
 
 SourceLevel importGltf(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw Error(path + ": cannot open; expected a readable .gltf or .glb file");
+    // Our own read and checks first (regular file, glb version, JSON depth, every field's type);
+    // tinygltf then parses what passed, and reads buffers and images only as regular files.
+    const GltfFile file = readCheckedGltf(path);
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keepEncodedImage, nullptr);
+    std::vector<std::string> filesRead;
+    loader.SetFsCallbacks(tinygltf::FsCallbacks{&anyFileExists, &unexpandedPath,
+                                                &readRegularFileFor, &refuseToWrite, &filesRead});
     std::string error, warning;
-    const bool binary = std::filesystem::path(path).extension() == ".glb";
-    const bool loaded = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
-                               : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    const bool loaded =
+        file.binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, file.bytes.data(),
+                                                  unsigned(file.bytes.size()), folder)
+                    : loader.LoadASCIIFromString(&model, &error, &warning,
+                                                 reinterpret_cast<const char*>(file.bytes.data()),
+                                                 unsigned(file.bytes.size()), folder);
     if (!loaded)
         throw Error(path + ": not a valid glTF 2.0 file: " +
                     (error.empty() ? std::string("unknown error") : firstLine(error)));
 
-    Importer importer{model, path, std::filesystem::path(path).parent_path().string()};
+    Importer importer{model, path, folder};
     importer.level.sourcePath = path;
+    importer.level.inputFiles.push_back(path);
+    for (const std::string& read : filesRead) importer.level.inputFiles.push_back(read);
     std::vector<int> roots;
     if (!model.scenes.empty()) {
         const int sceneIndex =
@@ -324,6 +365,7 @@ SourceLevel importGltf(const std::string& path) {
         importer.level.skyImage = uint32_t(importer.level.images.size());
         importer.level.images.push_back(std::move(sky));
     }
+    checkLevelLimits(importer.level);
     return std::move(importer.level);
 }
 

@@ -213,7 +213,16 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
                            std::to_string(sizeof(DiskLightGridHeader)) + " bytes and cells");
     }
     const auto h = readRecord<DiskLightGridHeader>(grid->bytes, 0);
+    for (int c = 0; c < 3; ++c)
+        if (h.dims[c] < 1 || h.dims[c] > world::kMaxLightGridCellsPerAxis)
+            throw world::Error(name + ": section light_grid: dims[" + std::to_string(c) +
+                               "] = " + std::to_string(h.dims[c]) + "; expected 1.." +
+                               std::to_string(world::kMaxLightGridCellsPerAxis) + " cells");
+    // Each factor is at most 4096, so the product is exact in 64 bits.
     const uint64_t cells = uint64_t(h.dims[0]) * h.dims[1] * h.dims[2];
+    if (cells > world::kMaxLightGridCells)
+        throw world::Error(name + ": section light_grid: " + std::to_string(cells) +
+                           " cells; expected at most " + std::to_string(world::kMaxLightGridCells));
     const uint64_t expectedBytes =
         sizeof(DiskLightGridHeader) + uint64_t(h.cellCount) * sizeof(DiskLightGridCell);
     if (cells != h.cellCount || grid->bytes.size() != expectedBytes) {

@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/package/crc32.hpp"
 #include "world/package/format.hpp"
 #include "world/package/records.hpp"
@@ -305,6 +306,13 @@ private:
                    "image bytes");
         if ((d.uri.length == 0) == (d.byteCount == 0))
             fail(id, i, "expected either a uri or embedded bytes, not both or neither");
+        const std::string_view uri(
+            reinterpret_cast<const char*>(blobs_.strings.data()) + d.uri.offset, d.uri.length);
+        if (d.uri.length > 0 && !isPathBesideThePackage(uri))
+            fail(id, i,
+                 "uri '" + world::clipForMessage(uri) +
+                     "'; expected a relative path to a file beside the package or below its "
+                     "folder (no leading '/', no '..', no '\\\\', no ':')");
     }
 
     void check(uint32_t id, size_t i, const DiskTexture& d, const CompiledLevel& level) const {
@@ -552,6 +560,22 @@ private:
 
 }  // namespace
 
+bool isPathBesideThePackage(std::string_view uri) {
+    if (uri.empty() || uri.front() == '/') return false;
+    if (uri.find('\\') != std::string_view::npos || uri.find(':') != std::string_view::npos ||
+        uri.find('\0') != std::string_view::npos)
+        return false;
+    size_t start = 0;
+    while (start <= uri.size()) {
+        size_t end = uri.find('/', start);
+        if (end == std::string_view::npos) end = uri.size();
+        const std::string_view part = uri.substr(start, end - start);
+        if (part == ".." || part.empty()) return false;
+        start = end + 1;
+    }
+    return true;
+}
+
 PackageContents parsePackage(std::span<const uint8_t> bytes, const std::string& name) {
     PackageContents contents;
     try {
@@ -563,10 +587,7 @@ PackageContents parsePackage(std::span<const uint8_t> bytes, const std::string& 
 }
 
 PackageContents readPackageFile(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw world::Error(path + ": cannot open; expected a readable .olpak file");
-    const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(file)),
-                                     std::istreambuf_iterator<char>());
+    const std::vector<uint8_t> bytes = world::readRegularFile(path, "a .olpak package");
     return parsePackage(bytes, path);
 }
 

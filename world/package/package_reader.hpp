@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "world/compiled_level.hpp"
@@ -19,6 +20,11 @@ struct PackageContents {
     world::CompiledLevel level;
     std::vector<RawSection> bakedSections;  // ids >= 32, kept as bytes
 };
+
+/// Whether an image uri may appear in a package: a relative path to a file in the package's
+/// folder or below it. No leading '/', no '..' or empty component, no '\\' or ':' (a drive or
+/// a share): a package that could name any path would make the runtime read anything.
+[[nodiscard]] bool isPathBesideThePackage(std::string_view uri);
 
 /// Parses a whole package; `name` prefixes error messages (usually the file path). Throws
 /// world::Error.

@@ -7,8 +7,11 @@
 #include <fstream>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
+#include "world/images/image_decode.hpp"
 #include "world/package/crc32.hpp"
 #include "world/package/format.hpp"
+#include "world/package/package_reader.hpp"
 #include "world/package/records.hpp"
 
 namespace onelight::package {
@@ -168,6 +171,24 @@ void writeFileAtomically(const std::string& path, std::span<const uint8_t> bytes
     if (ec) {
         std::filesystem::remove(temporary, ec);
         throw world::Error(path + ": cannot rename " + temporary + " into place");
+    }
+}
+
+void placeImagesForPackage(world::CompiledLevel& level, const std::string& packagePath) {
+    const std::filesystem::path folder = std::filesystem::absolute(packagePath).parent_path();
+    for (world::Image& image : level.images) {
+        if (image.uri.empty()) continue;
+        std::error_code ec;
+        const std::string relative =
+            std::filesystem::relative(std::filesystem::absolute(image.uri), folder, ec)
+                .generic_string();
+        if (!ec && isPathBesideThePackage(relative)) {
+            image.uri = relative;
+        } else {
+            image.encodedBytes = world::readRegularFile(image.uri, "an image the level uses",
+                                                        world::kMaxEncodedImageBytes);
+            image.uri.clear();
+        }
     }
 }
 

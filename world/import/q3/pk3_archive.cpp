@@ -3,6 +3,7 @@
 #include <zip.h>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 
 namespace onelight::world::q3 {
 
@@ -14,6 +15,7 @@ struct Pk3Archive::Handle {
 };
 
 Pk3Archive::Pk3Archive(const std::string& path) : path_(path), zip_(std::make_unique<Handle>()) {
+    requireRegularFile(path, "a pk3 (zip) archive");
     int error = 0;
     zip_->zip = zip_open(path.c_str(), ZIP_RDONLY, &error);
     if (!zip_->zip) {

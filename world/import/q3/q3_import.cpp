@@ -11,7 +11,9 @@
 
 #include "shading.hpp"
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/images/image_decode.hpp"
+#include "world/import/level_limits.hpp"
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/entity_lump.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
@@ -41,9 +43,7 @@ bool endsWith(const std::string& s, const std::string& end) {
 }
 
 std::vector<uint8_t> readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open the map");
-    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
+    return readRegularFile(path, "a Quake 3 .bsp map");
 }
 
 // Every pk3 of `folders`, in name order (pak0 before pak1: later archives win).
@@ -504,6 +504,9 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
 
     SourceLevel level;
     level.sourcePath = map.where;
+    if (endsWith(spec, ".bsp") && fileKey(spec).find(".pk3:") == std::string::npos)
+        level.inputFiles.push_back(spec);
+    for (const auto& archive : files.archives) level.inputFiles.push_back(archive->path());
     const ShaderScripts scripts = loadShaderScripts(files);
     MaterialTable materials{level, files, {}, {}, 0};
     std::map<uint32_t, MeshInstance> meshes;  // by material
@@ -557,6 +560,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     addLights(level, entities, map.where);
     noteIgnoredAmbient(level, entities, map.where);
     chooseLightRoles(level, options.primaryLights);
+    checkLevelLimits(level);
     return level;
 }
 

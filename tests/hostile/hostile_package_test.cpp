@@ -1,0 +1,128 @@
+// Hostile packages: image uris that point anywhere but beside the package, and light grids whose
+// dimensions overflow or are empty, all with valid checksums, so that only the reader's checks
+// stand between them and the runtime.
+#include <cstddef>
+#include <cstring>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "hostile_level.hpp"
+#include "tests/support/error_message.hpp"
+#include "tests/world/world_test_support.hpp"
+#include "world/baked_lighting.hpp"
+#include "world/light_grid_sample.hpp"
+#include "world/package/baked_sections.hpp"
+#include "world/package/format.hpp"
+#include "world/package/package_reader.hpp"
+#include "world/package/package_writer.hpp"
+
+namespace onelight::test {
+namespace {
+
+const world::CompiledLevel& triangleLevel() {
+    static const world::CompiledLevel level =
+        compileFile(writeTriangleLevel(hostileFolder("package"))).level;
+    return level;
+}
+
+TEST(HostilePackage, ImageUrisStayBesideThePackage) {
+    for (const char* good : {"a.png", "textures/a.png", "t/u/v.hdr", "..a.png", "a..png"})
+        EXPECT_TRUE(package::isPathBesideThePackage(good)) << good;
+    for (const char* bad : {"", "/etc/hostname", "/proc/self/mem", "../a.png", "t/../../a.png",
+                            "t/..", "..", "a//b.png", "C:a.png", "t\\a.png", "t/"})
+        EXPECT_FALSE(package::isPathBesideThePackage(bad)) << bad;
+
+    // The reader refuses such a uri with the record and the rule.
+    for (const char* bad : {"/etc/hostname", "../../etc/passwd"}) {
+        world::CompiledLevel level = triangleLevel();
+        world::Image image;
+        image.name = "stolen";
+        image.uri = bad;
+        level.images.push_back(image);
+        const std::vector<uint8_t> bytes = package::serializePackage(level);
+        const std::string error =
+            errorMessage([&] { (void)package::parsePackage(bytes, "hostile.olpak"); });
+        EXPECT_NE(error.find("hostile.olpak: section images record 0: uri"), std::string::npos)
+            << error;
+        EXPECT_NE(error.find("expected a relative path to a file beside the package"),
+                  std::string::npos)
+            << error;
+    }
+}
+
+TEST(HostilePackage, ImagesOutsideThePackagesFolderAreEmbedded) {
+    const std::filesystem::path folder = hostileFolder("embed");
+    std::filesystem::create_directories(folder / "assets");
+    std::filesystem::create_directories(folder / "out" / "textures");
+    std::ofstream(folder / "assets" / "far.png") << "far bytes";
+    std::ofstream(folder / "out" / "textures" / "near.png") << "near bytes";
+    world::CompiledLevel level = triangleLevel();
+    level.images.resize(2);
+    level.images[0].uri = (folder / "assets" / "far.png").string();
+    level.images[1].uri = (folder / "out" / "textures" / "near.png").string();
+    package::placeImagesForPackage(level, (folder / "out" / "level.olpak").string());
+    EXPECT_EQ(level.images[0].uri, "");
+    EXPECT_EQ(std::string(level.images[0].encodedBytes.begin(), level.images[0].encodedBytes.end()),
+              "far bytes");
+    EXPECT_EQ(level.images[1].uri, "textures/near.png");
+    EXPECT_TRUE(level.images[1].encodedBytes.empty());
+    // And the result passes the reader.
+    const std::vector<uint8_t> bytes = package::serializePackage(level);
+    EXPECT_EQ(errorMessage([&] { (void)package::parsePackage(bytes, "embedded.olpak"); }), "");
+}
+
+// A complete bake's sections for the triangle level: every texel, a 1x1x1 grid.
+std::vector<package::RawSection> bakedSections() {
+    const world::CompiledLevel& level = triangleLevel();
+    uint64_t texels = 0;
+    for (const world::Atlas& a : level.atlases) texels += uint64_t(a.width) * a.height;
+    world::BakedLighting baked;
+    baked.texels.resize(texels);
+    for (world::LightmapTexel& t : baked.texels) t.normalWeight = 1.0f;
+    baked.shadowMask.assign(texels, 0);
+    baked.grid.dims = glm::uvec3(1);
+    baked.grid.cells.resize(1);
+    return package::encodeBakedSections(baked);
+}
+
+// The light grid section with its header's dims and cell count replaced.
+std::string gridError(uint32_t x, uint32_t y, uint32_t z, uint32_t cellCount) {
+    std::vector<package::RawSection> sections = bakedSections();
+    for (package::RawSection& s : sections) {
+        if (s.id != package::kSectionLightGrid) continue;
+        const uint32_t dims[4] = {x, y, z, cellCount};
+        std::memcpy(s.bytes.data() + offsetof(package::DiskLightGridHeader, dims), dims,
+                    sizeof dims);
+    }
+    return errorMessage(
+        [&] { (void)package::decodeBakedSections(sections, triangleLevel(), "grid.olpak"); });
+}
+
+TEST(HostilePackage, LightGridDimsThatOverflowOrAreEmptyAreRejected) {
+    EXPECT_EQ(gridError(1, 1, 1, 1), "") << "the unedited grid is valid";
+    // 2^21 * 2^21 * 2^22 = 2^64 wraps to 0 in 64 bits; with cellCount 0 it once passed.
+    for (auto [x, y, z, n] :
+         {std::array<uint32_t, 4>{1u << 21, 1u << 21, 1u << 22, 0},
+          std::array<uint32_t, 4>{0xFFFFFFFFu, 0xFFFFFFFFu, 1, 1},
+          std::array<uint32_t, 4>{0, 1, 1, 0}, std::array<uint32_t, 4>{1, 0, 7, 0}}) {
+        const std::string error = gridError(x, y, z, n);
+        EXPECT_NE(error.find("grid.olpak: section light_grid: dims["), std::string::npos) << error;
+        EXPECT_NE(error.find("expected 1..4096 cells"), std::string::npos) << error;
+    }
+    const std::string tooMany = gridError(4096, 4096, 2, 0);
+    EXPECT_NE(tooMany.find("33554432 cells; expected at most 16777216"), std::string::npos)
+        << tooMany;
+}
+
+TEST(HostilePackage, SamplingAGridWhoseCellsDoNotMatchItsDimsReadsNothing) {
+    world::LightGrid grid;
+    grid.dims = glm::uvec3(1u << 21, 1u << 21, 1u << 22);  // wraps to 0 cells in 64 bits
+    grid.cells.resize(8);
+    grid.cells[0].ambientCube[0] = glm::vec3(1.0f);
+    const world::LightGridSample s = world::sampleLightGrid(grid, glm::vec3(1e6f, 2e6f, 3e6f));
+    for (const glm::vec3& face : s.ambientCube) EXPECT_EQ(face, glm::vec3(0.0f));
+}
+
+}  // namespace
+}  // namespace onelight::test
