@@ -12,6 +12,7 @@
 #include "bake/bake_level.hpp"
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
+#include "bake/report/interrupt.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
 #include "world/import/level_import.hpp"
@@ -128,9 +129,12 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       static_cast<size_t>(threads));
     return runReportingErrors(input, [&] {
+        noteStage("importing the level");
         const world::SourceLevel source = world::importLevel(input, quake3);
         world::refuseOutputOverInput(output, source.inputFiles);
+        noteStage("compiling the level");
         BakeResult result = bakeLevel(source, options);
+        noteStage("writing the package");
         package::placeImagesForPackage(result.level, output);
         const std::vector<uint8_t> bytes = packageBytes(result.level, result.baked);
         package::writeFileAtomically(output, bytes);

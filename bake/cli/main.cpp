@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "bake/cli/subcommands.hpp"
+#include "bake/report/interrupt.hpp"
 
 namespace {
 
@@ -32,6 +33,7 @@ std::string usage() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    onelight::bake::installInterruptHandler("onelight-bake");
     if (argc < 2) {
         std::fprintf(stderr, "onelight-bake: no level or subcommand given\n%s", usage().c_str());
         return 2;

@@ -2,11 +2,14 @@
 
 #include <cstdio>
 
+#include "bake/report/interrupt.hpp"
+
 namespace onelight::bake {
 
 Progress::Progress(std::string stage, uint64_t total, bool enabled)
     : stage_(std::move(stage)), total_(total), enabled_(enabled) {
     start_ = lastDraw_ = std::chrono::steady_clock::now();
+    noteStage(stage_.c_str());
     if (enabled_) draw(0, false);
 }
 

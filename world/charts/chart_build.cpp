@@ -111,7 +111,7 @@ std::vector<ChartShape> buildChartShapes(StaticGeometry& geometry, const ChartOp
         shape.normal = unitNormal(geometry, geometry.triangles[seed]);
         planeAxes(shape.normal, shape.axisU, shape.axisV);
         const uint32_t chart = static_cast<uint32_t>(shapes.size());
-        glm::dvec2 lo(INFINITY), hi(-INFINITY);
+        glm::dvec2 lo(HUGE_VAL), hi(-HUGE_VAL);
         const auto project = [&](uint32_t t, glm::dvec2& tlo, glm::dvec2& thi) {
             tlo = lo;
             thi = hi;

@@ -189,7 +189,7 @@ CompileResult compileLevel(const SourceLevel& source, const CompileOptions& opti
     start = Clock::now();
     ChartOptions chartOptions = options.charts;
     if (source.texelsPerMetre > 0.0f && !chartOptions.densityFromCommandLine)
-        chartOptions.texelsPerMetre = source.texelsPerMetre;
+        chartOptions.texelsPerMetre = double(source.texelsPerMetre);
     const ChartLayout charts = buildLightmapCharts(geometry, chartOptions);
     stats.secondsCharts = secondsSince(start);
     checkLightmapBudget(charts, chartOptions, source.sourcePath);

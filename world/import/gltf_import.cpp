@@ -309,9 +309,13 @@ bool refuseToWrite(std::string* error, const std::string&, const std::vector<uns
 }  // namespace
 
 SourceLevel importGltf(const std::string& path) {
-    // Our own read and checks first (regular file, glb version, JSON depth, every field's type);
-    // tinygltf then parses what passed, and reads buffers and images only as regular files.
-    const GltfFile file = readCheckedGltf(path);
+    return importGltfBytes(readRegularFile(path, "a .gltf or .glb file"), path);
+}
+
+SourceLevel importGltfBytes(std::vector<uint8_t> bytes, const std::string& path) {
+    // Our own checks first (glb version, JSON depth, every field's type); tinygltf then parses
+    // what passed, and reads buffers and images only as regular files.
+    const GltfFile file = checkGltfBytes(std::move(bytes), path);
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keepEncodedImage, nullptr);

@@ -4,7 +4,9 @@
 // and the `extras.onelight` markers. Anything the scene does not use is left out.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "world/source_level.hpp"
 
@@ -12,5 +14,9 @@ namespace onelight::world {
 
 /// Throws Error with a one-line message naming the file and the place on bad input.
 [[nodiscard]] SourceLevel importGltf(const std::string& path);
+
+/// The same on the bytes of a .gltf or .glb already read; `path` names it in messages, and its
+/// folder is where external buffers and images are looked for.
+[[nodiscard]] SourceLevel importGltfBytes(std::vector<uint8_t> bytes, const std::string& path);
 
 }  // namespace onelight::world

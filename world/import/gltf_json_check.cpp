@@ -415,8 +415,12 @@ void checkGltfJson(const char* text, size_t size, const std::string& path) {
 }
 
 GltfFile readCheckedGltf(const std::string& path) {
+    return checkGltfBytes(readRegularFile(path, "a .gltf or .glb file"), path);
+}
+
+GltfFile checkGltfBytes(std::vector<uint8_t> bytes, const std::string& path) {
     GltfFile file;
-    file.bytes = readRegularFile(path, "a .gltf or .glb file");
+    file.bytes = std::move(bytes);
     const std::vector<uint8_t>& b = file.bytes;
     file.binary = b.size() >= 4 && readU32(b, 0) == kGlbMagic;
     if (!file.binary) {

@@ -27,7 +27,10 @@ struct GltfFile {
 /// Reads and checks `path`. Throws world::Error naming the file, the place and what was expected.
 [[nodiscard]] GltfFile readCheckedGltf(const std::string& path);
 
-/// The checks of readCheckedGltf on JSON text already in memory (the fuzzer's entry point).
+/// The checks of readCheckedGltf on a file's bytes already in memory.
+[[nodiscard]] GltfFile checkGltfBytes(std::vector<uint8_t> bytes, const std::string& path);
+
+/// The JSON checks alone, on a .gltf's text or a glb's JSON chunk.
 void checkGltfJson(const char* text, size_t size, const std::string& path);
 
 }  // namespace onelight::world

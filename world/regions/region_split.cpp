@@ -7,7 +7,9 @@
 // OpenMesh default-constructs vector properties uninitialised by design; GCC's
 // -Wmaybe-uninitialized flags that inside its headers under the sanitizers.
 #pragma GCC diagnostic push
+#if !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #pragma GCC diagnostic pop
 

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz with clang, ASan and UBSan in build-fuzz/, makes a
+# seed corpus of real files for each, and runs each target for a bounded time or count:
+#   scripts/fuzz.sh                 60 s per target (CI)
+#   scripts/fuzz.sh --seconds S     S seconds per target
+#   scripts/fuzz.sh --runs N        N executions per target (the benchmark: 10000000)
+# Prints, per target, its executions and the result; exits non-zero on any finding (the
+# reproducer is left in build-fuzz/findings/TARGET/).
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=$root/build-fuzz
+limit=(-max_total_time=60)
+case "${1:-}" in
+  --seconds) limit=(-max_total_time="$2") ;;
+  --runs) limit=(-runs="$2") ;;
+  "") ;;
+  *) echo "usage: scripts/fuzz.sh [--seconds S | --runs N]" >&2; exit 2 ;;
+esac
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DONELIGHT_FUZZ=ON >/dev/null
+fi
+cmake --build "$build" -j2 --target onelight_fuzzers
+
+# Seed corpora: real files of each kind.
+corpus=$build/corpus
+rm -rf "$corpus" && mkdir -p "$corpus"/{fuzz_gltf,fuzz_q3,fuzz_package,fuzz_replay,fuzz_command_line}
+cp "$root"/tests/render/levels/*.gltf "$root"/tests/fuzz/seeds/gltf/* "$corpus/fuzz_gltf/"
+cp "$root"/game/replays/*.replay "$corpus/fuzz_replay/"
+cp "$root"/tests/fuzz/seeds/command_line/* "$corpus/fuzz_command_line/"
+maps=/usr/share/games/openarena/baseoa
+if [ -d "$maps" ]; then
+  python3 - "$maps" "$corpus/fuzz_q3" <<'PY'
+import sys, zipfile, glob, os
+folder, out = sys.argv[1], sys.argv[2]
+taken = 0
+for pk3 in sorted(glob.glob(os.path.join(folder, "*.pk3"))):
+    with zipfile.ZipFile(pk3) as z:
+        for name in z.namelist():
+            small_map = name.endswith(".bsp") and z.getinfo(name).file_size < 2_000_000
+            if (small_map and taken < 4) or (name.endswith(".shader") and taken < 12):
+                open(os.path.join(out, os.path.basename(name)), "wb").write(z.read(name))
+                taken += 1
+PY
+fi
+cp "$root"/tests/fuzz/seeds/q3/* "$corpus/fuzz_q3/"
+# Packages: compiled and baked by the main build's onelight-bake, when there is one.
+bake=$root/build/bin/onelight-bake
+if [ -x "$bake" ]; then
+  for level in "$root"/tests/fuzz/seeds/gltf/triangle.gltf; do
+    name=$(basename "$level" .gltf)
+    "$bake" compile "$level" -o "$corpus/fuzz_package/$name.compiled.olpak" >/dev/null
+    "$bake" "$level" --quality draft --quiet -o "$corpus/fuzz_package/$name.baked.olpak" >/dev/null
+  done
+fi
+
+status=0
+for target in fuzz_gltf fuzz_q3 fuzz_package fuzz_replay fuzz_command_line; do
+  findings=$build/findings/$target
+  rm -rf "$findings" && mkdir -p "$findings" "$build/work/$target"
+  log=$build/$target.log
+  extra=()
+  [ "$target" = fuzz_package ] && extra=(-use_value_profile=1)
+  seeds=$(ls "$corpus/$target" | wc -l)
+  if (cd "$findings" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+      UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+      "$build/bin/$target" "${limit[@]}" "${extra[@]}" -rss_limit_mb=4096 -timeout=20 \
+      -max_len=4000000 -print_final_stats=1 "$build/work/$target" "$corpus/$target" >"$log" 2>&1); then
+    result="no finding"
+  else
+    result="FINDING (see $log and $findings)"
+    status=1
+  fi
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  secs=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | grep -o 'in [0-9]*' | grep -o '[0-9]*' || echo "?")
+  echo "fuzz: $target: $runs executions in ${secs} s from $seeds seeds: $result"
+done
+exit $status
