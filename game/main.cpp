@@ -28,6 +28,7 @@
 #include "session.hpp"
 #include "vk/context.hpp"
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 
 namespace {
 
@@ -61,6 +62,13 @@ render::Camera resolveCamera(const game::CommandLine& cl, const assets::LoadedLe
         } catch (const std::exception&) {
             numeric = false;
         }
+    }
+    if (numeric && numbers.size() == 5) {
+        for (int i = 0; i < 5; ++i)
+            if (!(std::fabs(numbers[size_t(i)]) <= (i < 3 ? 1e6f : 36000.0f)))
+                throw world::Error("--camera '" + world::clipForMessage(cl.camera) +
+                                   "': expected x,y,z within 1e6 m and yaw,pitch within 36000 "
+                                   "degrees (docs/limits.md)");
     }
     if (numeric && numbers.size() == 5)
         return render::cameraFromYawPitch({numbers[0], numbers[1], numbers[2]}, numbers[3],

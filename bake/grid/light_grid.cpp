@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include "bake/lighting/direct_light.hpp"
+#include "bake/parallel_for.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -112,7 +112,7 @@ GridStats bakeLightGrid(const BakeScene& scene, const BakeLights& lights,
                         const GridSettings& settings, uint64_t cellBegin, uint64_t cellEnd,
                         world::LightGrid& grid, Progress* progress) {
     tbb::enumerable_thread_specific<RayCounts> rays;
-    tbb::parallel_for(tbb::blocked_range<uint64_t>(cellBegin, cellEnd, 4), [&](const auto& r) {
+    bake::parallelFor(tbb::blocked_range<uint64_t>(cellBegin, cellEnd, 4), [&](const auto& r) {
         RayCounts& local = rays.local();
         for (uint64_t i = r.begin(); i != r.end(); ++i) {
             const uint32_t x = static_cast<uint32_t>(i % grid.dims.x);

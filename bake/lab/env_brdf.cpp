@@ -1,12 +1,11 @@
 #include "env_brdf.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
+#include "bake/parallel_for.hpp"
 #include "least_squares.hpp"
 #include "reference_brdf.hpp"
 
@@ -15,7 +14,7 @@ namespace onelight::lab {
 std::vector<EnvSample> envTruth(const SpecularModel& model, const std::vector<double>& mus,
                                 const std::vector<double>& glosses) {
     std::vector<EnvSample> samples(mus.size() * glosses.size());
-    tbb::parallel_for(size_t(0), samples.size(), [&](size_t i) {
+    bake::parallelFor(size_t(0), samples.size(), [&](size_t i) {
         double mu = mus[i % mus.size()], g = glosses[i / mus.size()];
         samples[i] = {mu, g, specularAlbedo(model, mu, g)};
     });

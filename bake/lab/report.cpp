@@ -7,7 +7,6 @@
 // measured with Google Benchmark in one run, with the model fixed at compile time as a shader
 // specialization fixes it.
 #include <benchmark/benchmark.h>
-#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <cstdio>
@@ -18,6 +17,7 @@
 #include <sstream>
 #include <thread>
 
+#include "bake/parallel_for.hpp"
 #include "commands.hpp"
 #include "env_brdf.hpp"
 #include "grids.hpp"
@@ -132,7 +132,7 @@ struct ModelSummary {
 std::vector<ModelPoint> modelGrid(const SpecularModel& m, const std::vector<double>& mus,
                                   const std::vector<double>& glosses) {
     std::vector<ModelPoint> pts(mus.size() * glosses.size());
-    tbb::parallel_for(size_t(0), pts.size(), [&](size_t i) {
+    bake::parallelFor(size_t(0), pts.size(), [&](size_t i) {
         double mu = mus[i % mus.size()], g = glosses[i / mus.size()];
         pts[i] = {mu, g, specularAlbedo(m, mu, g), referenceAlbedo(m, mu, g), lobeError(m, mu, g)};
     });

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <tbb/parallel_for.h>
+#include "bake/parallel_for.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -145,7 +145,7 @@ void fillLightCells(LightCells& cells, const std::vector<LightBound>& sources,
     // Each cell's table on its own (in parallel: the visibility traces rays), then joined in
     // cell order, so the result does not depend on the threads.
     std::vector<std::vector<LightCellEntry>> tables(count + 1);
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count + 1), [&](const auto& range) {
+    bake::parallelFor(tbb::blocked_range<uint32_t>(0, count + 1), [&](const auto& range) {
         std::vector<double> weights(sources.size());
         for (uint32_t c = range.begin(); c != range.end(); ++c) {
             glm::vec3 cLo(0.0f), cHi(0.0f);

@@ -5,9 +5,9 @@
 #include <limits>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include "bake/lighting/sampling.hpp"
+#include "bake/parallel_for.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -58,7 +58,7 @@ std::vector<float> chartDensityScales(const BakeScene& scene, const BakeLights& 
     // Every texel whose centre is on its triangle, measured once.
     std::vector<Pilot> pilots(samples.size());
     tbb::enumerable_thread_specific<RayCounts> rays;
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, samples.size(), 64), [&](const auto& r) {
+    bake::parallelFor(tbb::blocked_range<size_t>(0, samples.size(), 64), [&](const auto& r) {
         RayCounts& local = rays.local();
         for (size_t i = r.begin(); i != r.end(); ++i)
             if (samples[i].centreInside)
@@ -75,7 +75,7 @@ std::vector<float> chartDensityScales(const BakeScene& scene, const BakeLights& 
     for (size_t i = 0; i < samples.size(); ++i)
         if (pilots[i].valid) sampleOf[samples[i].texel] = static_cast<uint32_t>(i);
 
-    tbb::parallel_for(size_t(0), level.charts.size(), [&](size_t c) {
+    bake::parallelFor(size_t(0), level.charts.size(), [&](size_t c) {
         const world::Chart& chart = level.charts[c];
         if (chart.authored || chart.width == 0 || chart.height == 0) return;
         const uint32_t w = chart.width, h = chart.height;

@@ -4,9 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <tbb/parallel_for.h>
-
 #include "bake/embree/bake_scene.hpp"
+#include "bake/parallel_for.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -89,7 +88,7 @@ std::vector<world::LightmapTexel> resampleImportedLightmap(
                                            : 0;
     const ImportedScene scene(device, imported);
     const float lift = 0.01f;  // metres
-    tbb::parallel_for(size_t(0), samples.size(), [&](size_t i) {
+    bake::parallelFor(size_t(0), samples.size(), [&](size_t i) {
         const TexelSample& s = samples[i];
         uint32_t triangle = 0;
         glm::vec2 b(0.0f);

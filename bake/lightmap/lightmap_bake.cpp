@@ -5,11 +5,11 @@
 #include <limits>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include "bake/lighting/direct_light.hpp"
 #include "bake/lighting/sampling.hpp"
 #include "bake/lightmap/lightmap_denoise.hpp"
+#include "bake/parallel_for.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -236,7 +236,7 @@ RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
     std::vector<glm::vec3> previous(n, glm::vec3(0.0f)), beforePrevious(n, glm::vec3(0.0f));
     std::vector<glm::vec3> next(n);
     for (uint32_t pass = 0; pass < settings.bouncePasses; ++pass) {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
+        bake::parallelFor(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
             RayCounts& local = rays.local();
             for (size_t i = r.begin(); i != r.end(); ++i) {
                 if (!samples[i].centreInside) continue;  // never read (above)
@@ -308,7 +308,7 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
     const bool cached = settings.bouncePasses > 0;
     std::vector<TexelEstimate> estimates(n);
     tbb::enumerable_thread_specific<RayCounts> rays;
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
+    bake::parallelFor(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
         RayCounts& local = rays.local();
         uint64_t units = 0;
         for (size_t i = r.begin(); i != r.end(); ++i) {
@@ -325,7 +325,7 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
         finalTransport.cache = &cache;
     }
     const uint64_t finalUnits = finalPassUnits(settings);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
+    bake::parallelFor(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {
         RayCounts& local = rays.local();
         uint64_t units = 0;
         for (size_t i = r.begin(); i != r.end(); ++i) {
@@ -338,7 +338,7 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
     });
 
     std::vector<double> denoisedNoise(ownedEnd - ownedBegin, 0.0);
-    tbb::parallel_for(tbb::blocked_range<size_t>(ownedBegin, ownedEnd, 64), [&](const auto& r) {
+    bake::parallelFor(tbb::blocked_range<size_t>(ownedBegin, ownedEnd, 64), [&](const auto& r) {
         RayCounts& local = rays.local();
         for (size_t i = r.begin(); i != r.end(); ++i) {
             const TexelSample& s = samples[i];

@@ -1,10 +1,9 @@
 #include "prefilter.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
+#include "bake/parallel_for.hpp"
 #include "shading.hpp"
 
 namespace onelight::bake {
@@ -88,7 +87,7 @@ Cubemap prefilterGGX(Cubemap radiance, const PrefilterOptions& options) {
                                    mipCount - 1);
         const CubeMip& coarse = radiance.mips[sourceMip];
         bool sumTexels = 6.0 * coarse.size * coarse.size <= 2.0 * double(n);  // exact: wins ties
-        tbb::parallel_for(0, 6 * dst.size, [&](int row) {
+        bake::parallelFor(0, 6 * dst.size, [&](int row) {
             int face = row / dst.size, y = row % dst.size;
             for (int x = 0; x < dst.size; ++x) {
                 if (sumTexels) {

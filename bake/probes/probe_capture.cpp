@@ -1,9 +1,9 @@
 #include "probe_capture.hpp"
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include "bake/lighting/sampling.hpp"
+#include "bake/parallel_for.hpp"
 #include "shading.hpp"
 
 namespace onelight::bake {
@@ -29,7 +29,7 @@ Cubemap captureProbe(const BakeScene& scene, const BakeLights& lights, glm::vec3
     // Each ray's footprint: its share of the texel's solid angle (about area at the face centre).
     const RayCone cone{0.0f, sampleSpread(area, n)};
     tbb::enumerable_thread_specific<RayCounts> counts;
-    tbb::parallel_for(tbb::blocked_range<int>(0, 6 * size), [&](const auto& rows) {
+    bake::parallelFor(tbb::blocked_range<int>(0, 6 * size), [&](const auto& rows) {
         RayCounts& local = counts.local();
         for (int row = rows.begin(); row != rows.end(); ++row) {
             const int face = row / size, y = row % size;

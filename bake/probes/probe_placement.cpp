@@ -6,9 +6,9 @@
 #include <numeric>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include "bake/lighting/sampling.hpp"
+#include "bake/parallel_for.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -231,13 +231,13 @@ std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const
     // lands in its point's slot, so the threads' order does not matter.
     tbb::enumerable_thread_specific<RayCounts> rays;
     std::vector<SolidTest> tests(count);
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 16), [&](const auto& r) {
+    bake::parallelFor(tbb::blocked_range<uint32_t>(0, count, 16), [&](const auto& r) {
         RayCounts& mine = rays.local();
         for (uint32_t i = r.begin(); i != r.end(); ++i)
             tests[i] = testSolid(scene, lattice.point(i), mine);
     });
     std::vector<uint8_t> linked(count, 0);  // bit a: connected to the next point along axis a
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, count, 16), [&](const auto& r) {
+    bake::parallelFor(tbb::blocked_range<uint32_t>(0, count, 16), [&](const auto& r) {
         RayCounts& mine = rays.local();
         for (uint32_t i = r.begin(); i != r.end(); ++i) {
             if (tests[i].solid()) continue;

@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 #include <glm/gtc/quaternion.hpp>
 
 #include "bake/lighting/sampling.hpp"
+#include "bake/parallel_for.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -30,7 +30,7 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
                                   ? RayCone{2.0f * camera.ymag / float(height), 0.0f}
                                   : RayCone{0.0f, 2.0f * tanHalf / float(height)};
     tbb::enumerable_thread_specific<RayCounts> counts;
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, height), [&](const auto& rows) {
+    bake::parallelFor(tbb::blocked_range<uint32_t>(0, height), [&](const auto& rows) {
         RayCounts& local = counts.local();
         for (uint32_t y = rows.begin(); y != rows.end(); ++y) {
             for (uint32_t x = 0; x < width; ++x) {

@@ -6,9 +6,9 @@
 #include <tuple>
 
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include "bake/lighting/sampling.hpp"
+#include "bake/parallel_for.hpp"
 #include "bake/report/progress.hpp"
 
 namespace onelight::bake {
@@ -204,7 +204,7 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
     const float reach = scene.sceneDiameter();
     tbb::enumerable_thread_specific<RayCounts> rays;
     Progress progress("visibility", cellCount, showProgress);
-    tbb::parallel_for(tbb::blocked_range<uint32_t>(0, cellCount, 1), [&](const auto& range) {
+    bake::parallelFor(tbb::blocked_range<uint32_t>(0, cellCount, 1), [&](const auto& range) {
         RayCounts& local = rays.local();
         for (uint32_t cell = range.begin(); cell != range.end(); ++cell) {
             const glm::uvec3 c(cell % v.dims.x, (cell / v.dims.x) % v.dims.y,

@@ -139,6 +139,9 @@ TEST(HostileCommandLine, ReplaysPastTheirLimitsAndNonFilesEndQuickly) {
                           shellQuoted(script)),
                       {script.filename().c_str(), ":1:", fragment});
     }
+    // A camera pose past the coordinate range is a clear error, not a black frame.
+    expectFailure(run(kOnelight + " " + package + " --headless --size 32x32 --camera 1e30,0,0,0,0"),
+                  {"--camera '1e30,0,0,0,0'", "within 1e6 m"});
     // A directory and a FIFO as the script.
     expectFailure(run(kOnelight + " " + package + " --headless --replay " + shellQuoted(folder)),
                   {"is a directory", "expected a replay script"});
