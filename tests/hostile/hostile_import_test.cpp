@@ -172,6 +172,11 @@ TEST(HostileImport, WrongTypesLengthsAndRangesAreErrorsNotDefaults) {
                            j["nodes"][0]["extras"] = {{"onelight", json::object()}};
                        },
                        {"nodes[0].extras.onelight", "is empty"});
+    expectEditRejected("extras-typo",
+                       [](json& j) {
+                           j["nodes"][0]["extras"] = {{"onelight", {{"texels_per_meter", 4}}}};
+                       },
+                       {"nodes[0].extras.onelight.texels_per_meter", "is not a setting"});
     expectEditRejected("zfar", [](json& j) { j["cameras"][0]["perspective"]["zfar"] = 0.05; },
                        {"cameras[0].perspective.zfar", "expected zfar > znear"});
     expectEditRejected("aspect",

@@ -169,6 +169,19 @@ private:
                  "is " +
                      (e["onelight"].is_object() ? std::string("empty") : typeName(e["onelight"])) +
                      "; expected an object with at least one setting (docs/level-authoring.md)");
+        if (e.contains("onelight")) {
+            static const char* const kKeys[] = {
+                "role",     "dynamic",          "spawn",         "probe", "mover", "grid",
+                "exposure", "texels_per_metre", "probe_spacing", "sky"};
+            for (const auto& [key, value] : e["onelight"].items()) {
+                bool known = false;
+                for (const char* k : kKeys) known |= key == k;
+                if (!known)
+                    fail(at + ".extras.onelight." + clipForMessage(key),
+                         "is not a setting; expected role, dynamic, spawn, probe, mover, grid, "
+                         "exposure, texels_per_metre, probe_spacing or sky");
+            }
+        }
     }
 
     void string(const Json& parent, const char* key, const std::string& at) const {
