@@ -110,6 +110,14 @@ TEST(HostileImport, DeepNestingIsRefusedBeforeAnyParser) {
     EXPECT_EQ(level.instances.size(), 1u);
 }
 
+// Found by fuzz_gltf: a number past double's range made the JSON parser throw out_of_range,
+// which nothing caught.
+TEST(HostileImport, ANumberPastDoublesRangeIsAnError) {
+    const std::filesystem::path folder = hostileFolder("huge-number");
+    std::ofstream(folder / "huge.gltf") << R"({"asset": {"version": "2.0"}, "scene": 1e400})";
+    expectImportError((folder / "huge.gltf").string(), {"huge.gltf", "not JSON"});
+}
+
 TEST(HostileImport, GlbHeadersThatLieAreRejected) {
     const std::filesystem::path folder = hostileFolder("glb");
     auto writeGlb = [&](const std::string& name, uint32_t version, uint32_t length,

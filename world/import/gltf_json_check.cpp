@@ -420,7 +420,7 @@ void checkGltfJson(const char* text, size_t size, const std::string& path) {
     Json root;
     try {
         root = Json::parse(text, text + size);
-    } catch (const Json::parse_error& e) {
+    } catch (const Json::exception& e) {  // parse_error, and out_of_range for 1e400
         throw Error(path + ": not a valid glTF 2.0 file: not JSON (" +
                     clipForMessage(e.what(), 160) + ")");
     }
