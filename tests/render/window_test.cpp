@@ -15,11 +15,9 @@ namespace {
 
 using namespace onelight;
 
-TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
-    if (!ONELIGHT_HAVE_XVFB_RUN) GTEST_SKIP() << "xvfb-run is not installed";
-    ASSERT_NE(std::getenv("DISPLAY"), nullptr)
-        << "run under xvfb-run (see tests/render/CMakeLists.txt)";
-
+// A floor and an orange box under a sun, written to DIR/NAME.gltf and compiled to
+// DIR/NAME.olpak; returns the compiler's exit code.
+int compileWindowLevel(const std::string& dir, const std::string& name) {
     test::Scene scene;
     scene.materials = {{{0.7f, 0.7f, 0.7f, 1.0f}, 0.0f, 0.9f},
                        {{0.8f, 0.4f, 0.2f, 1.0f}, 0.0f, 0.4f}};
@@ -29,11 +27,19 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
     sun.intensity = 10000.0f;
     sun.direction = glm::normalize(glm::vec3(0.6f, -0.8f, 0.4f));
     scene.lights.push_back(sun);
-    const std::string dir = test::outputDir() + "/window";
     std::filesystem::create_directories(dir);
-    const std::string gltf = dir + "/window_level.gltf";
+    const std::string gltf = dir + "/" + name + ".gltf";
     test::writeGltf(scene, gltf);
-    ASSERT_EQ(test::compileLevel(gltf, dir + "/window_level.olpak"), 0);
+    return test::compileLevel(gltf, dir + "/" + name + ".olpak");
+}
+
+TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
+    if (!ONELIGHT_HAVE_XVFB_RUN) GTEST_SKIP() << "xvfb-run is not installed";
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr)
+        << "run under xvfb-run (see tests/render/CMakeLists.txt)";
+
+    const std::string dir = test::outputDir() + "/window";
+    ASSERT_EQ(compileWindowLevel(dir, "window_level"), 0);
 
     const std::vector<std::string> view = {dir + "/window_level.olpak", "--size", "320x180",
                                            "--camera", "2,3,6,15,-25"};
@@ -78,20 +84,8 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
 TEST(RenderWindow, RenderScaleDrawsSmallerAndScalesUp) {
     if (!ONELIGHT_HAVE_XVFB_RUN) GTEST_SKIP() << "xvfb-run is not installed";
     ASSERT_NE(std::getenv("DISPLAY"), nullptr);
-    test::Scene scene;
-    scene.materials = {{{0.7f, 0.7f, 0.7f, 1.0f}, 0.0f, 0.9f},
-                       {{0.8f, 0.4f, 0.2f, 1.0f}, 0.0f, 0.4f}};
-    test::addFloor(scene, 0.0f, 0.0f, 8.0f, 0.0f, 0);
-    test::addBox(scene, {-1.0f, 0.0f, -1.0f}, {1.0f, 1.5f, 1.0f}, 1);
-    test::SceneLight sun;
-    sun.intensity = 10000.0f;
-    sun.direction = glm::normalize(glm::vec3(0.6f, -0.8f, 0.4f));
-    scene.lights.push_back(sun);
     const std::string dir = test::outputDir() + "/window_scale";
-    std::filesystem::create_directories(dir);
-    const std::string gltf = dir + "/level.gltf";
-    test::writeGltf(scene, gltf);
-    ASSERT_EQ(test::compileLevel(gltf, dir + "/level.olpak"), 0);
+    ASSERT_EQ(compileWindowLevel(dir, "level"), 0);
     const std::string camera = "2,3,6,15,-25";
     const test::ProcessResult w =
         test::runProcess(ONELIGHT_ONELIGHT_PATH,
