@@ -212,8 +212,10 @@ private:
 
     void number(const Json& parent, const char* key, const std::string& at, double low,
                 double high) const {
-        if (!parent.contains(key)) return;
-        const Json& v = parent[key];
+        if (parent.contains(key)) numberValue(parent[key], at, low, high);
+    }
+
+    void numberValue(const Json& v, const std::string& at, double low, double high) const {
         if (!v.is_number()) fail(at, "is " + describe(v) + "; expected a number");
         const double x = v.get<double>();
         if (!(x >= low && x <= high))
@@ -229,16 +231,7 @@ private:
             fail(at, (v.is_array() ? std::to_string(v.size()) + " elements" : "is " + typeName(v)) +
                          "; expected " + std::to_string(count) + " numbers");
         for (size_t i = 0; i < count; ++i)
-            number(v, i, at + "[" + std::to_string(i) + "]", low, high);
-    }
-
-    void number(const Json& array, size_t i, const std::string& at, double low, double high) const {
-        const Json& v = array[i];
-        if (!v.is_number()) fail(at, "is " + describe(v) + "; expected a number");
-        const double x = v.get<double>();
-        if (!(x >= low && x <= high))
-            fail(at, "is " + std::to_string(x) + "; expected a number in [" + std::to_string(low) +
-                         ", " + std::to_string(high) + "]");
+            numberValue(v[i], at + "[" + std::to_string(i) + "]", low, high);
     }
 
     void integerArray(const Json& parent, const char* key, const std::string& at) const {
