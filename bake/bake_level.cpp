@@ -172,6 +172,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     const world::LightGrid gridLayout = grid;
     const std::vector<ProbePlacement> placements =
         placeProbes(level, scene, ProbePlacementSettings{options.probeSpacing});
+    checkProbeBudget(placements.size(), probeSettings(options).faceSize);
     report.warnings.insert(report.warnings.end(), source.importNotes.begin(),
                            source.importNotes.end());
     for (const ProbePlacement& p : placements)

@@ -4,18 +4,30 @@
 #   scripts/fuzz.sh                 60 s per target (CI)
 #   scripts/fuzz.sh --seconds S     S seconds per target
 #   scripts/fuzz.sh --runs N        N executions per target (the benchmark: 10000000)
+#   scripts/fuzz.sh ... --only T,U  only the targets named (fuzz_gltf, fuzz_q3, fuzz_package,
+#                                   fuzz_replay, fuzz_command_line)
 # Prints, per target, its executions and the result; exits non-zero on any finding (the
 # reproducer is left in build-fuzz/findings/TARGET/).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$root/build-fuzz
 limit=(-max_total_time=60)
-case "${1:-}" in
-  --seconds) limit=(-max_total_time="$2") ;;
-  --runs) limit=(-runs="$2") ;;
-  "") ;;
-  *) echo "usage: scripts/fuzz.sh [--seconds S | --runs N]" >&2; exit 2 ;;
-esac
+targets="fuzz_gltf fuzz_q3 fuzz_package fuzz_replay fuzz_command_line"
+usage="usage: scripts/fuzz.sh [--seconds S | --runs N] [--only TARGET,...]"
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --seconds) limit=(-max_total_time="$2"); shift 2 ;;
+    --runs) limit=(-runs="$2"); shift 2 ;;
+    --only) targets=${2//,/ }; shift 2 ;;
+    *) echo "$usage" >&2; exit 2 ;;
+  esac
+done
+for target in $targets; do
+  case " fuzz_gltf fuzz_q3 fuzz_package fuzz_replay fuzz_command_line " in
+    *" $target "*) ;;
+    *) echo "scripts/fuzz.sh: unknown target '$target'; $usage" >&2; exit 2 ;;
+  esac
+done
 if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DONELIGHT_FUZZ=ON >/dev/null
@@ -23,8 +35,10 @@ fi
 cmake --build "$build" -j2 --target onelight_fuzzers
 
 # Seed corpora: real files of each kind.
-corpus=$build/corpus
-rm -rf "$corpus" && mkdir -p "$corpus"/{fuzz_gltf,fuzz_q3,fuzz_package,fuzz_replay,fuzz_command_line}
+# (one folder per run, so that runs of different targets can go side by side)
+corpus=$(mktemp -d "$build/corpus.XXXXXX")
+trap 'rm -rf "$corpus"' EXIT
+mkdir -p "$corpus"/{fuzz_gltf,fuzz_q3,fuzz_package,fuzz_replay,fuzz_command_line}
 cp "$root"/tests/render/levels/*.gltf "$root"/tests/fuzz/seeds/gltf/* "$corpus/fuzz_gltf/"
 cp "$root"/game/replays/*.replay "$corpus/fuzz_replay/"
 cp "$root"/tests/fuzz/seeds/command_line/* "$corpus/fuzz_command_line/"
@@ -57,7 +71,7 @@ if [ -x "$bake" ]; then
 fi
 
 status=0
-for target in fuzz_gltf fuzz_q3 fuzz_package fuzz_replay fuzz_command_line; do
+for target in $targets; do
   findings=$build/findings/$target
   rm -rf "$findings" && mkdir -p "$findings" "$build/work/$target"
   log=$build/$target.log

@@ -19,6 +19,9 @@ SceneMaterials loadSceneMaterials(const world::SourceLevel& level) {
     SceneMaterials out = factorMaterials(level.materials);
     std::map<uint32_t, world::DecodedImage> decoded;     // by image index
     std::map<std::pair<uint32_t, bool>, uint32_t> made;  // (texture, sRGB) -> textures
+    // Each decoded image becomes float RGBA texels with their mips (16 * 4 / 3 bytes a texel),
+    // once per colour space it is read in; charged before it is decoded.
+    world::ImageMemoryBudget budget{16.0 * 4.0 / 3.0 + 4.0};
     auto image = [&](uint32_t index) -> const world::DecodedImage& {
         auto found = decoded.find(index);
         if (found != decoded.end()) return found->second;
@@ -27,8 +30,9 @@ SceneMaterials loadSceneMaterials(const world::SourceLevel& level) {
             level.sourcePath + ": image " + std::to_string(index) + " '" + source.name + "'";
         world::DecodedImage pixels =
             source.encodedBytes.empty()
-                ? world::readImageFile(source.uri)
-                : world::decodeImage(source.encodedBytes.data(), source.encodedBytes.size(), where);
+                ? world::readImageFile(source.uri, &budget)
+                : world::decodeImage(source.encodedBytes.data(), source.encodedBytes.size(), where,
+                                     &budget);
         return decoded.emplace(index, std::move(pixels)).first->second;
     };
     auto texture = [&](uint32_t index, bool srgb) -> uint32_t {

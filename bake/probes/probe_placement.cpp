@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 
 #include <tbb/enumerable_thread_specific.h>
 
 #include "bake/lighting/sampling.hpp"
 #include "bake/parallel_for.hpp"
+#include "world/error.hpp"
+#include "world/package/probe_section.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -188,6 +191,19 @@ bool reflectorsSeeGeometry(const BakeScene& scene, RayCounts& rays) {
 }
 
 }  // namespace
+
+void checkProbeBudget(size_t probeCount, uint32_t faceSize) {
+    if (probeCount <= kMaxBakedProbes) return;
+    const double megabytes = double(probeCount) * double(world::probeTexelCount(faceSize)) *
+                             double(sizeof(uint32_t)) * 1e-6;
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "%zu environment probes of %u texels a face (%.0f MB of texels); expected at "
+                  "most %u (6 cube layers each under the 2048 devices commonly allow): author "
+                  "fewer probe entities",
+                  probeCount, faceSize, megabytes, kMaxBakedProbes);
+    throw world::Error(message);
+}
 
 std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const BakeScene& scene,
                                         const ProbePlacementSettings& settings,

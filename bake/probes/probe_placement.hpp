@@ -22,6 +22,10 @@ struct ProbePlacementSettings {
 /// default quality (131 KB, 1.5 s each), and 1536 cube-array layers at runtime, under the 2048
 /// layers Vulkan implementations commonly allow (maxImageArrayLayers; lavapipe's too).
 inline constexpr uint32_t kMaxProbeLatticePoints = 256;
+/// Probes a level may bake, authored or automatic: 341 cubes fill 2046 cube-array layers, under
+/// the 2048 that Vulkan implementations commonly allow (the runtime refuses more). The baker
+/// checks it, with the probes' memory, before capturing any.
+inline constexpr uint32_t kMaxBakedProbes = 341;
 /// The lattice spans at least this much above the bounds' bottom (y is up): a flat level's
 /// probes float half of it above the floor instead of lying in it.
 inline constexpr float kProbeMinLatticeHeight = 2.0f;  // metres
@@ -52,6 +56,10 @@ struct ProbePlacementStats {
     uint32_t boxed = 0;             // placed probes that got a fitted box
     RayCounts rays;                 // solid tests in `probe`, segments in `shadow`
 };
+
+/// Throws world::Error, before any probe is captured, when `probeCount` probes of `faceSize`
+/// exceed kMaxBakedProbes; the message gives their count, bytes in the package and the limit.
+void checkProbeBudget(size_t probeCount, uint32_t faceSize);
 
 // The probes of a level whose static world is `scene` (built from the same level).
 //

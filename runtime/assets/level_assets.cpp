@@ -26,6 +26,8 @@ LoadedLevel loadLevel(const std::string& path) {
     if (baked.present) out.baked = std::move(baked.baked);
     out.images.reserve(out.level.images.size());
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    // RGBA8 texels and float RGB sky texels, charged before each image is decoded.
+    world::ImageMemoryBudget rgba8{4.0}, skyRgb{12.0};
     for (size_t i = 0; i < out.level.images.size(); ++i) {
         const world::Image& image = out.level.images[i];
         const std::string where = path + ": image " + std::to_string(i) + " '" + image.name + "'";
@@ -33,11 +35,11 @@ LoadedLevel loadLevel(const std::string& path) {
         if (!image.encodedBytes.empty()) {
             if (sky) {
                 out.sky = world::decodeHdrImage(image.encodedBytes.data(),
-                                                image.encodedBytes.size(), where);
+                                                image.encodedBytes.size(), where, &skyRgb);
                 out.images.emplace_back();
             } else {
                 out.images.push_back(world::decodeImage(image.encodedBytes.data(),
-                                                        image.encodedBytes.size(), where));
+                                                        image.encodedBytes.size(), where, &rgba8));
             }
             continue;
         }
@@ -45,11 +47,11 @@ LoadedLevel loadLevel(const std::string& path) {
         // readHdrFile open only regular files, and name this one.
         const std::filesystem::path file = folder / image.uri;
         if (sky) {
-            out.sky = world::readHdrFile(file.string());
+            out.sky = world::readHdrFile(file.string(), &skyRgb);
             out.images.emplace_back();
             continue;
         }
-        out.images.push_back(world::readImageFile(file.string()));
+        out.images.push_back(world::readImageFile(file.string(), &rgba8));
     }
     return out;
 }

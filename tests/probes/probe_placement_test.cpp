@@ -10,8 +10,9 @@
 #include "bake/probes/probe_placement.hpp"
 #include "bake_scenes.hpp"
 #include "world/compile/static_split.hpp"
+#include "world/error.hpp"
 
-using namespace onelight;
+    using namespace onelight;
 using namespace onelight::bake;
 
 namespace {
@@ -421,4 +422,18 @@ TEST(ProbePlacement, SameResultTwiceAndOnOneThread) {
     }
     EXPECT_EQ(first.components, second.components);
     EXPECT_EQ(first.rays.total(), single.rays.total());
+}
+
+TEST(ProbePlacement, MoreProbesThanTheRuntimeHoldsAreRefusedBeforeCapture) {
+    EXPECT_NO_THROW(checkProbeBudget(kMaxBakedProbes, 128));
+    try {
+        checkProbeBudget(kMaxBakedProbes + 1, 64);
+        FAIL() << "342 probes accepted";
+    } catch (const world::Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("342 environment probes"), std::string::npos) << message;
+        EXPECT_NE(message.find("at most 341"), std::string::npos) << message;
+        // 342 cubes of 64 with their mips: 342 * 32766 texels of 4 bytes = 45 MB.
+        EXPECT_NE(message.find("(45 MB"), std::string::npos) << message;
+    }
 }

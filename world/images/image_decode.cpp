@@ -36,7 +36,8 @@ void checkExtent(int width, int height, const std::string& where) {
 
 }  // namespace
 
-DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where) {
+DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where,
+                         ImageMemoryBudget* budget) {
     if (size == 0 || size > kMaxEncodedImageBytes)
         throw Error(where + ": " + std::to_string(size) + " bytes of image data; expected 1.." +
                     std::to_string(kMaxEncodedImageBytes));
@@ -45,6 +46,7 @@ DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& w
         throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() +
                     ")");
     checkExtent(width, height, where);
+    if (budget) chargeImage(*budget, uint32_t(width), uint32_t(height), where);
     stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
     if (!pixels)
         throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() +
@@ -57,24 +59,26 @@ DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& w
     return out;
 }
 
-DecodedImage readImageFile(const std::string& path) {
+DecodedImage readImageFile(const std::string& path, ImageMemoryBudget* budget) {
     const std::vector<uint8_t> bytes =
         readRegularFile(path, "a PNG or JPEG file", kMaxEncodedImageBytes);
-    return decodeImage(bytes.data(), bytes.size(), path);
+    return decodeImage(bytes.data(), bytes.size(), path, budget);
 }
 
-HdrImage readHdrFile(const std::string& path) {
+HdrImage readHdrFile(const std::string& path, ImageMemoryBudget* budget) {
     const std::vector<uint8_t> bytes =
         readRegularFile(path, "a Radiance .hdr image", kMaxEncodedImageBytes);
-    return decodeHdrImage(bytes.data(), bytes.size(), path);
+    return decodeHdrImage(bytes.data(), bytes.size(), path, budget);
 }
 
-HdrImage decodeHdrImage(const uint8_t* bytes, size_t size, const std::string& where) {
+HdrImage decodeHdrImage(const uint8_t* bytes, size_t size, const std::string& where,
+                        ImageMemoryBudget* budget) {
     int width = 0, height = 0, channels = 0;
     if (size == 0 || size > kMaxEncodedImageBytes ||
         !stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
         throw Error(where + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
     checkExtent(width, height, where);
+    if (budget) chargeImage(*budget, uint32_t(width), uint32_t(height), where);
     float* pixels = stbi_loadf_from_memory(bytes, int(size), &width, &height, &channels, 3);
     if (!pixels)
         throw Error(where + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");

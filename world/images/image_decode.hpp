@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "world/images/image_budget.hpp"
+
 namespace onelight::world {
 
 /// An image decoded to 8-bit RGBA, rows top to bottom.
@@ -29,17 +31,20 @@ inline constexpr size_t kMaxEncodedImageBytes = size_t(1) << 30;
 inline constexpr uint32_t kMaxImageExtent = 16384;
 
 /// Decodes PNG, JPEG or TGA bytes. Throws world::Error, its message starting with `where` (the
-/// file).
-[[nodiscard]] DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where);
+/// file). With a `budget`, the image is charged to it from its header before it is decoded.
+[[nodiscard]] DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where,
+                                       ImageMemoryBudget* budget = nullptr);
 
 /// Reads and decodes the image file at `path` (PNG/JPEG). Throws world::Error naming it.
-[[nodiscard]] DecodedImage readImageFile(const std::string& path);
+[[nodiscard]] DecodedImage readImageFile(const std::string& path,
+                                         ImageMemoryBudget* budget = nullptr);
 
 /// Decodes Radiance .hdr bytes as linear RGB (NaN, Inf and negatives to 0). Throws world::Error,
-/// its message starting with `where`.
-[[nodiscard]] HdrImage decodeHdrImage(const uint8_t* bytes, size_t size, const std::string& where);
+/// its message starting with `where`. A `budget` is charged as decodeImage's is.
+[[nodiscard]] HdrImage decodeHdrImage(const uint8_t* bytes, size_t size, const std::string& where,
+                                      ImageMemoryBudget* budget = nullptr);
 
 /// Reads a Radiance .hdr file as linear RGB. Throws world::Error naming it.
-[[nodiscard]] HdrImage readHdrFile(const std::string& path);
+[[nodiscard]] HdrImage readHdrFile(const std::string& path, ImageMemoryBudget* budget = nullptr);
 
 }  // namespace onelight::world
