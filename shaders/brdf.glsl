@@ -152,6 +152,27 @@ float F_Schlick(float f0, float LoH) { return f0 + (1.0f - f0) * pow5(1.0f - LoH
 // Lambert: f = 1 / pi, directional albedo exactly 1.
 float Fd_Lambert() { return INV_PI; }
 
+// Chan 2018, "Material Advances in Call of Duty: WWII", sec. 5 (multiscattering diffuse): a fit
+// to Lambertian microfacets under the GGX NDF of `gloss` (eq. 2) with multiple scattering between
+// them, per unit albedo. A rough surface (gloss 0) goes from Lambert towards the microfacet
+// response LoH + (1 - LoH)^5; a smooth one darkens at grazing view and light,
+// (1 - 0.75 (1 - NoL)^5)(1 - 0.75 (1 - NoV)^5); the last term is the retro-reflection peak
+// around h = n. With g = gloss and NoH = sqrt(1 - NxH2):
+//   f = (mix(F_rough, F_smooth, saturate(2.2 g - 0.5)) + F_retro) / pi,
+//   F_retro = ((34.5 g - 59) g + 24.5) LoH 2^(-max(73.2 g - 21.2, 8.9) sqrt(NoH)).
+float Fd_Chan(float NoV, float NoL, float LoH, float NxH2, float gloss) {
+    float g = saturate(gloss);
+    float roughResponse = LoH + pow5(1.0f - LoH);
+    float smoothResponse = (1.0f - 0.75f * pow5(1.0f - NoL)) * (1.0f - 0.75f * pow5(1.0f - NoV));
+    float fd = mix(roughResponse, smoothResponse, saturate(2.2f * g - 0.5f));
+    float NoH = sqrt(1.0f - saturate(NxH2));
+    float retro = ((34.5f * g - 59.0f) * g + 24.5f) * LoH *
+                  exp2(-max(73.2f * g - 21.2f, 8.9f) * sqrt(NoH));
+    // The retro coefficient dips to -0.7 near g = 0.86, where its exponential is 2^-41: the floor
+    // changes nothing measurable and keeps the piece non-negative.
+    return (fd + max(retro, 0.0f)) * INV_PI;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Environment "Fresnel": the directional albedo of the specular BRDF with Schlick Fresnel,
 // written as f0 * scale + bias. Returned as vec2(scale, bias).

@@ -7,7 +7,7 @@
 #include "brdf.glsl"
 #include "env_brdf_fit.glsl"
 
-#define BRDF_PIECE_COUNT 24
+#define BRDF_PIECE_COUNT 25
 
 float brdfPiece(int piece, vec4 dots, vec4 params) {
     float NoV = dots.x;
@@ -47,6 +47,7 @@ float brdfPiece(int piece, vec4 dots, vec4 params) {
         case 21: return specularLobe(NDF_BLINN_PHONG, VIS_SCHLICK_SMITH, FRESNEL_SCHLICK, vec3(f0), gloss, d).x;
         case 22: return specularLobe(NDF_BECKMANN, VIS_SMITH_CORRELATED, FRESNEL_SCHLICK, vec3(f0), gloss, d).x;
         case 23: return specularLobe(NDF_GGX, VIS_SMITH_CORRELATED, FRESNEL_SCHLICK, vec3(f0), gloss, d).x;
+        case 24: return Fd_Chan(NoV, NoL, LoH, NxH2, gloss);
     }
     return 0.0f;
 }

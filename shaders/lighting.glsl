@@ -25,6 +25,10 @@ const int RUNTIME_FRESNEL = FRESNEL_SCHLICK;
 #define MATERIAL_FULL 2        // Lambert + specular with a coloured f0
 #define MATERIAL_LAMBERT 3     // Lambert only
 
+// Diffuse models (world::DiffuseModel), one per level: a specialization constant at runtime.
+#define DIFFUSE_LAMBERT 0       // Fd_Lambert
+#define DIFFUSE_MULTISCATTER 1  // Fd_Chan: Lambertian microfacets with multiple scattering
+
 // Light types (world::LightType).
 #define LIGHT_DIRECTIONAL 0
 #define LIGHT_POINT 1
@@ -84,22 +88,74 @@ LightSample evaluatePunctualLight(int type, vec3 color, float intensity, float r
 }
 
 // ---------------------------------------------------------------------------------------------
+// The split-sum table: the runtime lobe's directional albedo as f0 * scale + bias, integrated
+// by `onelight-lab env-table` (shaders/env_brdf_table.inc) at sqrt(NoV) = i / (N - 1) and
+// gloss = j / (N - 1), so that both ends of each axis are exact and the rows crowd towards
+// grazing view, where the albedo bends fastest. The GPU reads it as a texture (bilinear, clamp
+// to edge) at envBrdfTableCoord; C++ samples the same numbers the same way (env_brdf_table.hpp).
+
+const int ENV_BRDF_TABLE_SIZE = 32;
+
+// Texture coordinates of (NoV, gloss) in the table: texel centres at the grid points.
+vec2 envBrdfTableCoord(float NoV, float gloss) {
+    float n = float(ENV_BRDF_TABLE_SIZE);
+    float x = sqrt(saturate(NoV)) * (n - 1.0f) + 0.5f;
+    float y = saturate(gloss) * (n - 1.0f) + 0.5f;
+    return vec2(x / n, y / n);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Surface response: the one place a material class picks its terms.
 
-// f(v, l) NoL of a surface of class `materialClass` for one light: Lambert diffuse with
-// `albedo` plus the runtime specular lobe with `f0` and `gloss` (brdf.glsl). A dielectric's f0
-// is grey: the caller passes vec3(scalar).
-vec3 surfaceReflectance(int materialClass, vec3 albedo, vec3 f0, float gloss, BrdfDots d) {
-    vec3 diffuse = albedo * (Fd_Lambert() * d.NoL);
+// Specular occlusion from an ambient occlusion `ao` (Lagarde and de Rousiers 2014, "Moving
+// Frostbite to PBR", listing 26): saturate((NoV + ao)^(2^(-16 alpha - 1)) - 1 + ao). It is 1
+// where ao is 1, ao at normal incidence on a rough surface, and tends to 1 at grazing angles
+// on a glossy one, where the reflection leaves the occluded hemisphere.
+float specularOcclusion(float NoV, float ao, float alpha) {
+    return saturate(pow(NoV + ao, exp2(-16.0f * alpha - 1.0f)) - 1.0f + ao);
+}
+
+// The diffuse BRDF per unit albedo of model `diffuseModel` (DIFFUSE_*).
+float diffuseBrdf(int diffuseModel, float gloss, BrdfDots d) {
+    if (diffuseModel == DIFFUSE_MULTISCATTER) return Fd_Chan(d.NoV, d.NoL, d.LoH, d.NxH2, gloss);
+    return Fd_Lambert();
+}
+
+// Chan 2018, "Material Advances in Call of Duty: WWII", sec. 5.3 (energy conservation): light
+// the specular lobe reflects is not there for the diffuse layer, so diffuse is weighted by
+// 1 - E_spec(f0, gloss, NoV), E_spec = f0 env.x + env.y the lobe's directional albedo from the
+// split-sum table (`env`, the environment "Fresnel" the probes use too). Per channel for a
+// coloured f0. A Lambert-only material has no lobe and keeps all of its diffuse.
+vec3 diffuseEnergyWeight(int materialClass, vec3 f0, vec2 env) {
+    if (materialClass == MATERIAL_LAMBERT) return vec3(1.0f);
+    return saturate(vec3(1.0f) - (f0 * env.x + vec3(env.y)));
+}
+
+// f(v, l) NoL of a surface of class `materialClass` for one light: the level's diffuse model
+// with `albedo`, weighted for energy conservation by `env` (diffuseEnergyWeight), plus the
+// runtime specular lobe with `f0` and `gloss` (brdf.glsl). A dielectric's f0 is grey: the
+// caller passes vec3(scalar). `cavity` ([0, 1], 1 = open) is the small-scale visibility of the
+// texel's normal-mapped relief (docs/materials.md "Cavity"): it scales the primary diffuse, and
+// the primary specular as an occlusion seen along the reflection (specularOcclusion), which
+// lets glossy reflections at grazing view escape the cavities.
+vec3 surfaceReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 f0, float gloss,
+                        vec2 env, float cavity, BrdfDots d) {
+    vec3 diffuse = albedo * diffuseEnergyWeight(materialClass, f0, env) *
+                   (diffuseBrdf(diffuseModel, gloss, d) * d.NoL * cavity);
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
     vec3 specular = specularLobe(RUNTIME_NDF, RUNTIME_VIS, RUNTIME_FRESNEL, f0, gloss, d);
+    if (cavity < 1.0f) specular = specular * specularOcclusion(d.NoV, cavity, ggxAlpha_fromGloss(gloss));
     if (materialClass == MATERIAL_METAL) return specular;
     return diffuse + specular;
 }
 
 // Diffuse only, for the omni effect lights (docs/lighting.md "Effect lights": gun flashes light
-// diffusely).
-vec3 diffuseReflectance(vec3 albedo, BrdfDots d) { return albedo * (Fd_Lambert() * d.NoL); }
+// diffusely): the diffuse term of surfaceReflectance.
+vec3 diffuseReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 f0, float gloss,
+                        vec2 env, float cavity, BrdfDots d) {
+    return albedo * diffuseEnergyWeight(materialClass, f0, env) *
+           (diffuseBrdf(diffuseModel, gloss, d) * d.NoL * cavity);
+}
 
 // ---------------------------------------------------------------------------------------------
 // Baked secondary lighting (the contract with the baker)
@@ -122,23 +178,20 @@ vec3 irradianceAmbientCube(vec3 px, vec3 nx, vec3 py, vec3 ny, vec3 pz, vec3 nz,
     return ex * n2.x + ey * n2.y + ez * n2.z;
 }
 
-// Specular occlusion from an ambient occlusion `ao` (Lagarde and de Rousiers 2014, "Moving
-// Frostbite to PBR", listing 26): saturate((NoV + ao)^(2^(-16 alpha - 1)) - 1 + ao). It is 1
-// where ao is 1, ao at normal incidence on a rough surface, and tends to 1 at grazing angles
-// on a glossy one, where the reflection leaves the occluded hemisphere.
-float specularOcclusion(float NoV, float ao, float alpha) {
-    return saturate(pow(NoV + ao, exp2(-16.0f * alpha - 1.0f)) - 1.0f + ao);
-}
 
 // Secondary light reflected towards v: diffuse from irradiance E (lux, per channel) times the
 // material's ambient occlusion `ao`, and specular from a normalised probe sample (radiance /
 // average irradiance at its capture point) scaled back by E (probeDenormalize), times the
 // environment "Fresnel" f0 * env.x + env.y of the runtime model (EnvBRDF_Fit of
 // env_brdf_fit.glsl, or the runtime's table of it) and the specular occlusion `so` (which
-// replaces ao for the specular). Lambert-only surfaces take no probe; metals no diffuse.
+// replaces ao for the specular). The diffuse is weighted for energy conservation as the primary
+// is (diffuseEnergyWeight); it stays Lambert whatever the level's diffuse model, since baked
+// irradiance arrives from the whole hemisphere (Fd_Chan's view and light dependence averages
+// out to about its albedo there). Lambert-only surfaces take no probe; metals no diffuse.
 vec3 secondaryRadiance(int materialClass, vec3 albedo, vec3 f0, vec2 env, vec3 irradiance,
                        float ao, float so, vec3 normalisedProbe) {
-    vec3 diffuse = albedo * (Fd_Lambert() * ao) * irradiance;
+    vec3 diffuse = albedo * diffuseEnergyWeight(materialClass, f0, env) * (Fd_Lambert() * ao) *
+                   irradiance;
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
     vec3 specular = (f0 * env.x + vec3(env.y)) * normalisedProbe * irradiance * so;
     if (materialClass == MATERIAL_METAL) return specular;

@@ -222,6 +222,14 @@ struct Features {
 };
 
 /// Level-wide settings and measures.
+/// The diffuse BRDF of a level (shaders/lighting.glsl DIFFUSE_*): Lambert, or Lambertian
+/// microfacets with multiple scattering (Chan 2018, sec. 5).
+enum class DiffuseModel : uint8_t { kLambert = 0, kMultiscatter = 1 };
+
+/// How the texture stage makes normal and gloss mips (bake/textures, docs/materials.md): a plain
+/// box filter of each texture, Black Ops' variance to gloss, or WWII's average normal length.
+enum class GlossMipMethod : uint8_t { kBlit = 0, kBlackOps = 1, kWwii = 2 };
+
 struct LevelSettings {
     float exposureEv100 = 0.0f;  // default exposure (extras.onelight.exposure)
     bool hasExposure = false;
@@ -230,6 +238,8 @@ struct LevelSettings {
     float probeSpacing = 0.0f;                   // metres between automatic probes; 0 = unset
     glm::vec3 skyRadiance{0.0f};   // cd/m^2, RGB: the uniform sky (0 = none), or skyImage's scale
     uint32_t skyImage = kNoIndex;  // into images: an equirectangular HDR sky (shaders/sky.glsl)
+    DiffuseModel diffuseModel = DiffuseModel::kLambert;  // extras.onelight.diffuse
+    GlossMipMethod glossMips = GlossMipMethod::kWwii;    // extras.onelight.gloss_mips
 };
 
 struct CompiledLevel {

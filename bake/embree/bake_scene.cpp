@@ -133,7 +133,7 @@ BakeScene::BakeScene(const EmbreeDevice& device, const world::StaticGeometry& ge
 }
 
 BakeScene::BakeScene(const EmbreeDevice& device, const world::CompiledLevel& level)
-    : materials_(factorMaterials(level.materials)) {
+    : materials_(factorMaterials(level.materials, level.settings.diffuseModel)) {
     positions_.reserve(level.vertices.size());
     attributes_.reserve(level.vertices.size());
     for (const world::Vertex& v : level.vertices) {

@@ -14,6 +14,10 @@ namespace onelight::lab {
 // (default: stdout) (env_fit_command.cpp).
 [[nodiscard]] int envFit(const std::string& path);
 
+// env-table: integrates the split-sum table (shaders/lighting.glsl) and writes its numbers to
+// `path` (default: stdout) (env_table_command.cpp).
+[[nodiscard]] int envTable(const std::string& path);
+
 // sheet: EXRs side by side, `columns` to a row (0: all in one), each row through its exposure
 // (one EV100 for all rows, or one per row) and the filmic curve into the PNG `output`; with a
 // rectangle (x, y, width, height) each image's mean there (sheet_command.cpp).

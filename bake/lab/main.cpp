@@ -2,6 +2,7 @@
 //   onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST   CSV of albedo scale and bias
 //   onelight-lab brdf-report -o DIR                                 tables, CSVs and plots
 //   onelight-lab env-fit [-o FILE]                                  fits shaders/env_brdf_fit.glsl
+//   onelight-lab env-table [-o FILE]                          integrates shaders/env_brdf_table.inc
 //   onelight-lab sheet -o OUT.png --ev100 E[,E...] --images A.exr,B.exr [--rect x,y,w,h]
 //                      [--columns N]
 //                                                                   EXRs side by side, tonemapped
@@ -24,6 +25,7 @@ constexpr const char* kUsage =
     "usage: onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST\n"
     "       onelight-lab brdf-report -o DIR [--quick]\n"
     "       onelight-lab env-fit [-o FILE]\n"
+    "       onelight-lab env-table [-o FILE]\n"
     "       onelight-lab sheet -o OUT.png --ev100 E[,E per row...] --images A.exr,B.exr[,...] "
     "[--rect x,y,w,h] [--columns N]\n"
     "models: bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith; mu in (0,1]; gloss in "
@@ -98,6 +100,11 @@ int envFitCommand(int argc, char** argv) {
     return envFit(o.get("-o"));
 }
 
+int envTableCommand(int argc, char** argv) {
+    Options o = parseOptions(argc, argv, {"-o"}, {});
+    return envTable(o.get("-o"));
+}
+
 int sheetCommand(int argc, char** argv) {
     Options o = parseOptions(argc, argv, {"-o", "--ev100", "--images", "--rect", "--columns"}, {});
     std::vector<float> ev;
@@ -132,6 +139,7 @@ int main(int argc, char** argv) {
         if (command == "brdf-albedo") return brdfAlbedo(argc, argv);
         if (command == "brdf-report") return brdfReportCommand(argc, argv);
         if (command == "env-fit") return envFitCommand(argc, argv);
+        if (command == "env-table") return envTableCommand(argc, argv);
         if (command == "sheet") return sheetCommand(argc, argv);
         std::fprintf(stderr, "onelight-lab: unknown command '%s'\n%s", argv[1], kUsage);
         return 1;

@@ -9,14 +9,6 @@
 namespace onelight::bake {
 namespace {
 
-glm::vec3 brdfCos(const Bsdf& bsdf, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
-    const glsl::BrdfDots d = glsl::brdfDots(n, v, l);
-    const glm::vec3 diffuse = bsdf.albedo * (glsl::Fd_Lambert() * d.NoL);
-    const glm::vec3 specular = glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
-                                                  bsdf.specularColor, bsdf.gloss, d);
-    return diffuse + specular;
-}
-
 bool finiteNonNegative(const glm::vec3& c) {
     return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z) && c.x >= 0.0f &&
            c.y >= 0.0f && c.z >= 0.0f;
@@ -47,7 +39,7 @@ glm::vec3 oneLight(const BakeScene& scene, const BakeLight& light, const Shading
     if (d.shadowDistance > 0.0f &&
         scene.occluded(origin, d.direction, d.shadowDistance, rays.shadow))
         return glm::vec3(0.0f);
-    return brdfCos(point.bsdf, point.shadingNormal, toViewer, d.direction) * incidence.irradiance;
+    return bsdfCos(point.bsdf, point.shadingNormal, toViewer, d.direction) * incidence.irradiance;
 }
 
 }  // namespace
@@ -210,7 +202,7 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                 const float weight = powerHeuristic(
                     e.pdf, surfacePdf(point.bsdf, point.shadingNormal, v, e.direction));
                 radiance += throughput * m.occlusion * e.radianceOverPdf * weight *
-                            brdfCos(point.bsdf, point.shadingNormal, v, e.direction);
+                            bsdfCos(point.bsdf, point.shadingNormal, v, e.direction);
             }
         }
         const SurfaceSample next = sampleSurface(point.bsdf, point.shadingNormal, v, rng);

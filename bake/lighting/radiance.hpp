@@ -1,7 +1,7 @@
 // Radiance along a ray through the static world: the one light-transport routine shared by
 // the lightmap baker, the light grid and the reference path tracer. Surfaces shade through the
-// shared BRDF of shaders/brdf.glsl (brdfDots, specularLobe, Fd_Lambert), with the runtime's
-// default model choice (kShadingNdf, kShadingVis, kShadingFresnel below).
+// runtime's own surfaceReflectance (shaders/lighting.glsl, by bsdfCos of surface_point.hpp): the
+// level's diffuse model with its energy-conservation weight plus the runtime specular lobe.
 #pragma once
 
 #include <cstdint>
@@ -16,12 +16,6 @@
 #include "bake/materials/surface_point.hpp"
 
 namespace onelight::bake {
-
-/// The one place the bake picks its BRDF pieces (brdf.glsl NDF_*, VIS_*, FRESNEL_*): GGX,
-/// height-correlated Smith, Schlick (WWII's model, docs/lighting.md "BRDF lego pieces").
-inline constexpr int kShadingNdf = 2;      // NDF_GGX
-inline constexpr int kShadingVis = 3;      // VIS_SMITH_CORRELATED
-inline constexpr int kShadingFresnel = 1;  // FRESNEL_SCHLICK
 
 struct TransportSettings {
     uint32_t maxDepth = 64;      // surface hits per path; Russian roulette ends most far earlier
@@ -38,7 +32,7 @@ struct TransportSettings {
 /*
    Lo_direct(v) = sum_l int_{light l} f(v, w) L_l cos dw
                ~ sum_l f(v, w_l) E_l NoL_l vis(w_l),  w_l uniform on l's apparent disc
-   with f NoL = albedo Fd_Lambert NoL + specularLobe  (brdf.glsl) and E_l the irradiance at
+   with f NoL = bsdfCos (surfaceReflectance of lighting.glsl) and E_l the irradiance at
    normal incidence (lights.hpp): exact for a small light, unbiased in the visibility.
    The local lights' sum by resampled importance sampling (Talbot, Cline and Egbert 2005,
    "Importance Resampling for Global Illumination"; Bitterli et al. 2020, eq. 6 with M

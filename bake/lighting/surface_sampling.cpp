@@ -9,11 +9,13 @@
 namespace onelight::bake {
 
 float specularProbability(const Bsdf& material, float NoV) {
-    if (!(luminance(material.specularColor) > 0.0f)) return 0.0f;
+    // Only a Lambert-only material has no lobe: at f0 = 0 Schlick's Fresnel still reflects
+    // (1 - LoH)^5, which cosine draws would leave to chance at high gloss.
+    if (material.materialClass == MATERIAL_LAMBERT) return 0.0f;
     const float specular =
         luminance(glsl::F_Schlick(material.specularColor, std::clamp(NoV, 0.0f, 1.0f)));
-    const float diffuse = luminance(material.albedo);
-    return specular / (specular + std::max(diffuse, 0.0f));
+    const float total = specular + std::max(luminance(material.albedo), 0.0f);
+    return total > 0.0f ? specular / total : 0.0f;
 }
 
 namespace {
@@ -57,7 +59,9 @@ SurfaceSample sampleSurface(const Bsdf& material, const glm::vec3& n, const glm:
     } else {
         s.direction =
             glm::normalize(frame.toWorld(sampleCosineHemisphere({rng.next(), rng.next()})));
-        if (p == 0.0f) {  // Lambert alone: f cos / pdf = (albedo NoL / pi) / (NoL / pi)
+        if (p == 0.0f && material.materialClass == MATERIAL_LAMBERT &&
+            material.diffuseModel == DIFFUSE_LAMBERT) {
+            // Lambert alone: f cos / pdf = (albedo NoL / pi) / (NoL / pi)
             s.weight = material.albedo;
             s.pdf = std::max(glm::dot(n, s.direction), 0.0f) / kPi;
             return s;
@@ -68,9 +72,7 @@ SurfaceSample sampleSurface(const Bsdf& material, const glm::vec3& n, const glm:
     const glsl::BrdfDots d = glsl::brdfDots(n, v, s.direction);
     const float pdf = mixturePdf(p, material.gloss, d, NoL);
     if (!(pdf > 0.0f)) return s;
-    const glm::vec3 fCos = material.albedo * (glsl::Fd_Lambert() * d.NoL) +
-                           glsl::specularLobe(kShadingNdf, kShadingVis, kShadingFresnel,
-                                              material.specularColor, material.gloss, d);
+    const glm::vec3 fCos = bsdfCos(material, n, v, s.direction);
     s.weight = fCos / pdf;
     s.pdf = pdf;
     return s;

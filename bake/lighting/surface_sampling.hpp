@@ -20,7 +20,7 @@ struct SurfaceSample {
 
 /// Probability of drawing from the specular lobe at view cosine NoV: the luminance of its
 /// Schlick reflectance at normal view, F(NoV) = f0 + (1 - f0)(1 - NoV)^5, over that plus the
-/// diffuse albedo's. 0 for a surface without specular colour, 1 without albedo.
+/// diffuse albedo's. 0 for a Lambert-only material (no lobe), 1 without albedo.
 [[nodiscard]] float specularProbability(const Bsdf& material, float NoV);
 
 /// Density (per steradian) of sampleSurface drawing l at (n, v): the mixture
@@ -38,7 +38,7 @@ struct SurfaceSample {
 ///            +---------------------------------------------------------------------+
 ///            | weight = (albedo NoL / pi + specularLobe(v, l)) / pdf(l)             |
 ///            +---------------------------------------------------------------------+
-/// A surface without specular colour draws exactly as before (two random numbers, cosine).
+/// A Lambert-only surface draws exactly as before (two random numbers, cosine).
 [[nodiscard]] SurfaceSample sampleSurface(const Bsdf& material, const glm::vec3& n,
                                           const glm::vec3& v, Rng& rng);
 

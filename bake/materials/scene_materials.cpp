@@ -8,15 +8,17 @@
 
 namespace onelight::bake {
 
-SceneMaterials factorMaterials(std::vector<world::Material> materials) {
+SceneMaterials factorMaterials(std::vector<world::Material> materials,
+                               world::DiffuseModel diffuseModel) {
     SceneMaterials out;
+    out.diffuseModel = diffuseModel;
     out.textureSets.resize(materials.size());
     out.materials = std::move(materials);
     return out;
 }
 
 SceneMaterials loadSceneMaterials(const world::SourceLevel& level) {
-    SceneMaterials out = factorMaterials(level.materials);
+    SceneMaterials out = factorMaterials(level.materials, level.diffuseModel);
     std::map<uint32_t, world::DecodedImage> decoded;     // by image index
     std::map<std::pair<uint32_t, bool>, uint32_t> made;  // (texture, sRGB) -> textures
     // Each decoded image becomes float RGBA texels with their mips (16 * 4 / 3 bytes a texel),

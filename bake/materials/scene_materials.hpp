@@ -27,10 +27,13 @@ struct SceneMaterials {
     std::vector<world::Material> materials;
     std::vector<MaterialTextureSet> textureSets;  // per material
     std::vector<BakeTexture> textures;            // one per (glTF texture, colour space) used
+    world::DiffuseModel diffuseModel = world::DiffuseModel::kLambert;  // the level's
 };
 
 /// The materials alone, shaded with their factors (no textures).
-[[nodiscard]] SceneMaterials factorMaterials(std::vector<world::Material> materials);
+[[nodiscard]] SceneMaterials factorMaterials(
+    std::vector<world::Material> materials,
+    world::DiffuseModel diffuseModel = world::DiffuseModel::kLambert);
 
 /// The level's materials with every texture they use decoded: images embedded in the glTF or
 /// read from their files (uri as the importer resolved it). Throws world::Error naming an image

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "env_brdf_table.hpp"
 #include "shading.hpp"
 
 namespace onelight::bake {
@@ -27,10 +28,21 @@ glm::vec4 texel(const SceneMaterials& materials, uint32_t index, const SurfaceAt
 
 }  // namespace
 
-Bsdf factorBsdf(const world::Material& material) {
+glm::vec3 bsdfCos(const Bsdf& bsdf, const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
+    const glsl::BrdfDots d = glsl::brdfDots(n, v, l);
+    const glm::vec2 env =
+        bsdf.materialClass == MATERIAL_LAMBERT
+            ? glm::vec2(0.0f)
+            : glsl::sampleEnvBrdfTable(glsl::envBrdfTableCoord(d.NoV, bsdf.gloss));
+    return glsl::surfaceReflectance(bsdf.materialClass, bsdf.diffuseModel, bsdf.albedo,
+                                    bsdf.specularColor, bsdf.gloss, env, 1.0f, d);
+}
+
+Bsdf factorBsdf(const world::Material& material, world::DiffuseModel diffuseModel) {
     // The compiled factors (materialPoint of the glTF factors), with the terms the material's
     // class keeps: a Lambert-only material no specular, a metal no diffuse (materialPoint).
-    Bsdf b{material.albedo, material.specularColor, material.gloss};
+    Bsdf b{material.albedo, material.specularColor, material.gloss, int(material.materialClass),
+           int(diffuseModel)};
     if (material.materialClass == world::MaterialClass::kLambert) b.specularColor = glm::vec3(0.0f);
     if (material.materialClass == world::MaterialClass::kMetal) b.albedo = glm::vec3(0.0f);
     return b;
@@ -45,7 +57,7 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
     MaterialSample s;
     s.shadingNormal = geometricNormal;
     if (!known || !materials.textureSets[material].any()) {
-        s.bsdf = factorBsdf(m);
+        s.bsdf = factorBsdf(m, materials.diffuseModel);
         s.emission = sampleEmission(materials, material, a, backFace, 0.0f);
         s.alpha = m.baseColor.w;
         // Smooth shading: the interpolated vertex normal, on the ray's side, as the shader.
@@ -64,7 +76,8 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
                                               : texel(materials, set.metallicRoughness, a, width));
     const glsl::MaterialPoint point =
         glsl::materialPoint(int(m.materialClass), glm::vec3(base), mr.x, mr.y, m.specularColor.x);
-    s.bsdf = {point.albedo, point.f0, point.gloss};
+    s.bsdf = {point.albedo, point.f0, point.gloss, int(m.materialClass),
+              int(materials.diffuseModel)};
     s.alpha = base.w;
     if (set.occlusion != world::kNoIndex)
         s.occlusion =

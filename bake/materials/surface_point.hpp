@@ -11,15 +11,25 @@
 
 namespace onelight::bake {
 
-/// What the BRDF of a surface point needs (brdf.glsl's pieces: Lambert + the runtime lobe).
+/// What the BRDF of a surface point needs: surfaceReflectance of shaders/lighting.glsl, the
+/// level's diffuse model with its energy-conservation weight plus the runtime lobe.
 struct Bsdf {
     glm::vec3 albedo{0.0f};         // diffuse reflectance, linear
     glm::vec3 specularColor{0.0f};  // f0
     float gloss = 0.0f;             // [0, 1]
+    int materialClass = 2;          // MATERIAL_* (lighting.glsl); 2 = MATERIAL_FULL
+    int diffuseModel = 0;           // DIFFUSE_* (lighting.glsl); 0 = DIFFUSE_LAMBERT
 };
 
-/// The shading factors of a material with its textures ignored.
-[[nodiscard]] Bsdf factorBsdf(const world::Material& material);
+/// f(v, l) NoL of `bsdf` at unit normal n, view v and light l: surfaceReflectance of
+/// shaders/lighting.glsl, as the forward pass evaluates it, with the split-sum term from the
+/// runtime's table (env_brdf_table.hpp) and no cavity.
+[[nodiscard]] glm::vec3 bsdfCos(const Bsdf& bsdf, const glm::vec3& n, const glm::vec3& v,
+                                const glm::vec3& l);
+
+/// The shading factors of a material with its textures ignored, under `diffuseModel`.
+[[nodiscard]] Bsdf factorBsdf(const world::Material& material,
+                              world::DiffuseModel diffuseModel = world::DiffuseModel::kLambert);
 
 /// What a surface point looks like to the ray that found it.
 struct SurfaceAttributes {

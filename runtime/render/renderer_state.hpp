@@ -22,7 +22,6 @@ inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kDisplayFormat = VK_FORMAT_B8G8R8A8_UNORM;  // as the swapchain
 inline constexpr uint32_t kLutSize = 64;
-inline constexpr uint32_t kEnvBrdfSize = 32;
 inline constexpr uint32_t kFramesInFlight =
     2;  // the CPU records one frame while the GPU draws another
 inline constexpr uint32_t kTimestampCount = 4;  // frame start, after shadows, forward, tonemap
@@ -88,6 +87,7 @@ struct RendererState {
     std::vector<world::Entity> entities;
     std::vector<uint8_t> materialClasses;  // per material, after forceMaterialClass
     std::vector<uint8_t> materialDoubleSided, materialAlphaMask;
+    int diffuseModel = 0;  // DIFFUSE_* (lighting.glsl): the level's, a specialization constant
     std::vector<DrawSurface> surfaces;
     std::vector<DrawDynamicMesh> dynamicMeshes;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
@@ -125,7 +125,7 @@ struct RendererState {
 
     // Colour.
     vk::Image lut;
-    vk::Image envBrdf;  // EnvBRDF_Fit at kEnvBrdfSize^2 texel centres (NoV, gloss)
+    vk::Image envBrdf;  // the split-sum table (env_brdf_table.hpp), half floats
 
     // The sky image (RGBA16F, the decoded .hdr unscaled), a black texel when the level has none.
     vk::Image sky;

@@ -10,6 +10,7 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include "env_brdf_table.hpp"
 #include "render/probe_records.hpp"
 #include "render/renderer_state.hpp"
 #include "shading.hpp"
@@ -252,6 +253,7 @@ void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
 void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
     const world::CompiledLevel& level = loaded.level;
     std::vector<GpuMaterial> gpu(std::max<size_t>(level.materials.size(), 1));
+    s.diffuseModel = int(level.settings.diffuseModel);
     for (size_t i = 0; i < level.materials.size(); ++i) {
         const world::Material& m = level.materials[i];
         GpuMaterial& g = gpu[i];
@@ -483,20 +485,15 @@ void createLut(RendererState& s) {
     createHalfImage(*s.ctx, s.lut, desc, texels);
 }
 
-// The environment "Fresnel" of the runtime model, EnvBRDF_Fit, tabulated: the lab's report
-// (docs/brdf-report) measures a 32x32 bilinear table within 1.8e-2 of the truth, below the
-// fit's own 2.9e-2, and it costs one fetch.
+// The split-sum table of the runtime model (shaders/lighting.glsl, env_brdf_table.hpp): the
+// lobe's albedo integrated at the grid points, read at envBrdfTableCoord; one fetch.
 void createEnvBrdfTable(RendererState& s) {
     std::vector<float> texels;
-    for (uint32_t j = 0; j < kEnvBrdfSize; ++j)
-        for (uint32_t i = 0; i < kEnvBrdfSize; ++i) {
-            const float NoV = glsl::max((float(i) + 0.5f) / float(kEnvBrdfSize), glsl::MIN_NOV);
-            const float gloss = (float(j) + 0.5f) / float(kEnvBrdfSize);
-            const glm::vec2 env = glsl::EnvBRDF_Fit(NoV, gloss);
-            texels.insert(texels.end(), {env.x, env.y, 0.0f, 1.0f});
-        }
+    for (uint32_t t = 0; t < glsl::kEnvBrdfTableSize * glsl::kEnvBrdfTableSize; ++t)
+        texels.insert(texels.end(),
+                      {glsl::kEnvBrdfTable[2 * t], glsl::kEnvBrdfTable[2 * t + 1], 0.0f, 1.0f});
     vk::ImageDesc desc;
-    desc.width = desc.height = kEnvBrdfSize;
+    desc.width = desc.height = glsl::kEnvBrdfTableSize;
     createHalfImage(*s.ctx, s.envBrdf, desc, texels);
 }
 

@@ -11,6 +11,7 @@
 #include "bake/lighting/radiance.hpp"
 #include "bake/reference/path_tracer.hpp"
 #include "bake_scenes.hpp"
+#include "env_brdf_table.hpp"
 #include "shading.hpp"
 #include "world/compile/static_split.hpp"
 
@@ -273,11 +274,16 @@ FloorAgreement normalMappedFloor(bool glossy) {
         const glsl::BrdfDots d =
             glsl::brdfDots(shading, glm::normalize(camera.position - p), toSun);
         if (!(glm::dot(shading, toSun) > 0.0f)) return 0.0;
-        const float specular = glossy ? glsl::specularLobe(kShadingNdf, kShadingVis,
-                                                           kShadingFresnel, glm::vec3(f0), gloss, d)
-                                            .x
-                                      : 0.0f;
-        return double(sun.intensity) * (double(albedo * d.NoL) / M_PI + double(specular));
+        const float specular =
+            glossy ? glsl::specularLobe(glsl::RUNTIME_NDF, glsl::RUNTIME_VIS, glsl::RUNTIME_FRESNEL,
+                                        glm::vec3(f0), gloss, d)
+                         .x
+                   : 0.0f;
+        // The diffuse weighted for energy conservation by the split-sum table (lighting.glsl).
+        const glm::vec2 env = glsl::sampleEnvBrdfTable(glsl::envBrdfTableCoord(d.NoV, gloss));
+        const float weight = glossy ? std::max(0.0f, 1.0f - (f0 * env.x + env.y)) : 1.0f;
+        return double(sun.intensity) *
+               (double(albedo * weight * d.NoL) / M_PI + double(specular));
     };
     FloorAgreement out;
     for (uint32_t y = 0; y < size; ++y)

@@ -59,7 +59,8 @@ const char* pieceName(int piece) {
                                         "lobe BlinnPhong/Kelemen/Schlick",
                                         "lobe BlinnPhong/SchlickSmith/Schlick",
                                         "lobe Beckmann/SmithCorrelated/Schlick",
-                                        "lobe GGX/SmithCorrelated/Schlick"};
+                                        "lobe GGX/SmithCorrelated/Schlick",
+                                        "Fd_Chan"};
     return piece < int(std::size(names)) ? names[piece] : "?";
 }
 

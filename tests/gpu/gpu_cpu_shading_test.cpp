@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "capture/capture.hpp"
+#include "env_brdf_table.hpp"
 #include "shading.hpp"
 #include "test_scene.hpp"
 
@@ -50,7 +51,13 @@ glm::vec3 cpuRadiance(const world::CompiledLevel& level, const render::Camera& c
         std::cos(l.innerCone), std::cos(l.outerCone), p);
     const glsl::BrdfDots d = glsl::brdfDots(n, v, s.l);
     if (glm::dot(n, s.l) <= 0.0f || d.NoL <= 0.0f) return glm::vec3(0.0f);
-    return glsl::surfaceReflectance(int(m.materialClass), albedo, f0, gloss, d) * s.illuminance;
+    // The split-sum term as the GPU's sampler reads its table (in half floats there).
+    const glm::vec2 env = m.materialClass == world::MaterialClass::kLambert
+                              ? glm::vec2(0.0f)
+                              : glsl::sampleEnvBrdfTable(glsl::envBrdfTableCoord(d.NoV, gloss));
+    return glsl::surfaceReflectance(int(m.materialClass), DIFFUSE_LAMBERT, albedo, f0, gloss, env,
+                                    1.0f, d) *
+           s.illuminance;
 }
 
 struct Comparison {

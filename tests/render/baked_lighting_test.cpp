@@ -13,6 +13,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "capture/capture.hpp"
+#include "env_brdf_table.hpp"
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
@@ -170,9 +171,9 @@ glm::vec3 lambertRadiance(const world::CompiledLevel& level, uint32_t material, 
             glm::normalize(l.direction), std::cos(l.innerCone), std::cos(l.outerCone), p);
         const glsl::BrdfDots d = glsl::brdfDots(n, v, s.l);
         if (glm::dot(n, s.l) > 0.0f && d.NoL > 0.0f)
-            radiance +=
-                glsl::surfaceReflectance(MATERIAL_LAMBERT, albedo, glm::vec3(0.04f), 0.0f, d) *
-                s.illuminance * shadow;
+            radiance += glsl::surfaceReflectance(MATERIAL_LAMBERT, DIFFUSE_LAMBERT, albedo,
+                                                 glm::vec3(0.04f), 0.0f, glm::vec2(0.0f), 1.0f, d) *
+                        s.illuminance * shadow;
     }
     return radiance + glsl::secondaryRadiance(MATERIAL_LAMBERT, albedo, glm::vec3(0.04f),
                                               glm::vec2(0.0f), secondary, 1.0f, 1.0f,
@@ -718,12 +719,12 @@ TEST(RenderBaked, TheSkyImageShowsBehindTheLevel) {
 // synthetic probe (and a decoy) whose mips are uniform and coloured apart (mip 0 red, 1 green, 2
 // blue, normalised radiance 1 / pi). The floor's E(n) is pi L (it sees only sky), so a floor pixel
 // is
-//   albedo L + (f0 A + B) c(lod) pi L,   lod = probeMipOfGloss(gloss, 3),
-// c the trilinear mix of the two mips around lod and (A, B) = EnvBRDF_Fit(NoV, gloss): the mip
-// chosen by the gloss, the upload's mip order (per mip, every probe's faces), the
-// de-normalisation by E(n) and the environment "Fresnel" all show in the colour. Tolerance 1.5%
-// of the pixel: the GPU reads the fit from a 32^2 table (bilinear), RGB9E5 rounds at 1/512 and
-// the mip lerp weight has 8 fractional bits.
+//   (1 - (f0 A + B)) albedo L + (f0 A + B) c(lod) pi L,   lod = probeMipOfGloss(gloss, 3),
+// c the trilinear mix of the two mips around lod and (A, B) the split-sum table at (NoV, gloss):
+// the mip chosen by the gloss, the upload's mip order (per mip, every probe's faces), the
+// de-normalisation by E(n), the environment "Fresnel" and the diffuse's energy-conservation
+// weight all show in the colour. Tolerance 1.5% of the pixel: the GPU holds the table in half
+// floats, RGB9E5 rounds at 1/512 and the mip lerp weight has 8 fractional bits.
 TEST(RenderBaked, GlossyFloorReadsTheProbeMipOfItsGlossTimesItsIrradiance) {
     test::Scene scene;
     const float roughness = 0.4f;
@@ -770,9 +771,10 @@ TEST(RenderBaked, GlossyFloorReadsTheProbeMipOfItsGlossTimesItsIrradiance) {
         const int below = int(std::floor(lod));
         const float t = lod - float(below);
         const glm::vec3 c = (1.0f - t) * mipColour[below] + t * mipColour[std::min(below + 1, 2)];
-        const glm::vec2 env = glsl::EnvBRDF_Fit(NoV, gloss);
-        const glm::vec3 want =
-            0.05f * scene.sky + (0.04f * env.x + env.y) * c * glsl::PI * scene.sky;
+        const glm::vec2 env = glsl::sampleEnvBrdfTable(glsl::envBrdfTableCoord(NoV, gloss));
+        const float specularAlbedo = 0.04f * env.x + env.y;
+        const glm::vec3 want = (1.0f - specularAlbedo) * 0.05f * scene.sky +
+                               specularAlbedo * c * glsl::PI * scene.sky;
         const glm::vec3 got = pixel(linear, at.x, at.y);
         const float tolerance = 0.015f * std::max({want.x, want.y, want.z});
         for (int ch = 0; ch < 3; ++ch)

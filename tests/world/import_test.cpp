@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include "shading.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/error.hpp"
@@ -212,6 +214,28 @@ TEST(Import, ProbeSpacingIsTheLevels) {
     EXPECT_FLOAT_EQ(world::compileLevel(level, options).level.settings.probeSpacing, 3.5f);
 }
 
+// The material models are the level's, through the compile and the package records.
+TEST(Import, MaterialModelsAreTheLevels) {
+    GltfBuilder gltf;
+    gltf.addNode({{"name", "tri"}, {"mesh", gltf.addMesh(oneTriangle("tri"))}});
+    gltf.addNode(
+        {{"name", "settings"},
+         {"extras", {{"onelight", {{"diffuse", "multiscatter"}, {"gloss_mips", "black_ops"}}}}}});
+    const world::SourceLevel level = importGltf(gltf.write(freshFolder("models_ok"), "models"));
+    EXPECT_EQ(level.diffuseModel, world::DiffuseModel::kMultiscatter);
+    EXPECT_EQ(level.glossMips, world::GlossMipMethod::kBlackOps);
+    world::CompileOptions options;
+    const world::LevelSettings settings = world::compileLevel(level, options).level.settings;
+    EXPECT_EQ(settings.diffuseModel, world::DiffuseModel::kMultiscatter);
+    EXPECT_EQ(settings.glossMips, world::GlossMipMethod::kBlackOps);
+    // Without the keys: Lambert and WWII.
+    GltfBuilder plain;
+    plain.addNode({{"name", "tri"}, {"mesh", plain.addMesh(oneTriangle("tri"))}});
+    const world::SourceLevel defaults = importGltf(plain.write(freshFolder("models_default"), "m"));
+    EXPECT_EQ(defaults.diffuseModel, world::DiffuseModel::kLambert);
+    EXPECT_EQ(defaults.glossMips, world::GlossMipMethod::kWwii);
+}
+
 // The level's sky: one number (grey) or [r, g, b], cd/m^2, through the compile.
 TEST(Import, SkyIsTheLevels) {
     for (const auto& [sky, expected] : {std::pair{nlohmann::json(1200.0), glm::vec3(1200.0f)},
@@ -332,6 +356,19 @@ TEST(ImportErrors, BadProbeSpacing) {
             {{"name", "settings"}, {"extras", {{"onelight", {{"probe_spacing", spacing}}}}}});
         expectError(gltf.write(freshFolder("spacing"), "spacing"),
                     {"settings", "probe_spacing", "expected metres > 0"});
+    }
+}
+
+TEST(ImportErrors, BadMaterialModels) {
+    for (const auto& [key, value, expected] :
+         {std::tuple{"diffuse", nlohmann::json("phong"),
+                     "expected \"lambert\" or \"multiscatter\""},
+          std::tuple{"diffuse", nlohmann::json(1), "must be a string"},
+          std::tuple{"gloss_mips", nlohmann::json("toksvig"),
+                     "\"blit\", \"black_ops\" or \"wwii\""}}) {
+        GltfBuilder gltf;
+        gltf.addNode({{"name", "settings"}, {"extras", {{"onelight", {{key, value}}}}}});
+        expectError(gltf.write(freshFolder("models_bad"), "models"), {"settings", key, expected});
     }
 }
 

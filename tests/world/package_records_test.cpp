@@ -82,6 +82,9 @@ void expectRoundTrip(const Disk& d, const Blobs& blobs = {}) {
 TEST(PackageRecords, EveryCoreRecordRoundTrips) {
     DiskLevel level = patterned<DiskLevel>();
     level.hasExposure = 1;
+    level.diffuseModel = 1;
+    level.glossMips = 2;
+    level.reserved = 0;
     expectRoundTrip(level);
 
     Blobs materialBlobs;

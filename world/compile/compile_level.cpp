@@ -220,6 +220,8 @@ CompileResult compileLevel(const SourceLevel& source, const CompileOptions& opti
     settings.hasExposure = source.hasExposure;
     settings.texelsPerMetre = static_cast<float>(chartOptions.texelsPerMetre);
     settings.probeSpacing = source.probeSpacing;
+    settings.diffuseModel = source.diffuseModel;
+    settings.glossMips = source.glossMips;
     settings.skyRadiance = source.skyRadiance;
     settings.skyImage = source.skyImage;
     if (!level.vertices.empty()) {

@@ -7,6 +7,7 @@
 #include <tiny_gltf.h>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 
 namespace onelight::world {
 namespace {
@@ -20,6 +21,11 @@ float readNumber(const tinygltf::Value& v, const std::string& place) {
     if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
         throw Error(place + " must be a finite number");
     return static_cast<float>(v.GetNumberAsDouble());
+}
+
+std::string readString(const tinygltf::Value& v, const std::string& place) {
+    if (!v.IsString()) throw Error(place + " must be a string");
+    return v.Get<std::string>();
 }
 
 glm::vec3 readVec3(const tinygltf::Value& v, const std::string& place) {
@@ -111,6 +117,28 @@ NodeExtras parseNodeExtras(const tinygltf::Value& extras, const std::string& whe
         if (!(out.probeSpacing > 0.0f))
             throw Error(base + ".probe_spacing is " + std::to_string(out.probeSpacing) +
                         "; expected metres > 0 between automatic probes");
+    }
+    if (o.Has("diffuse")) {
+        const std::string name = readString(o.Get("diffuse"), base + ".diffuse");
+        if (name == "lambert")
+            out.diffuseModel = DiffuseModel::kLambert;
+        else if (name == "multiscatter")
+            out.diffuseModel = DiffuseModel::kMultiscatter;
+        else
+            throw Error(base + ".diffuse is '" + clipForMessage(name) +
+                        "'; expected \"lambert\" or \"multiscatter\"");
+    }
+    if (o.Has("gloss_mips")) {
+        const std::string name = readString(o.Get("gloss_mips"), base + ".gloss_mips");
+        if (name == "blit")
+            out.glossMips = GlossMipMethod::kBlit;
+        else if (name == "black_ops")
+            out.glossMips = GlossMipMethod::kBlackOps;
+        else if (name == "wwii")
+            out.glossMips = GlossMipMethod::kWwii;
+        else
+            throw Error(base + ".gloss_mips is '" + clipForMessage(name) +
+                        "'; expected \"blit\", \"black_ops\" or \"wwii\"");
     }
     if (o.Has("sky")) {
         const tinygltf::Value& sky = o.Get("sky");

@@ -3,6 +3,7 @@
 // values are CompileErrors.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -32,6 +33,8 @@ struct NodeExtras {
     float exposureEv100 = 0.0f;
     float texelsPerMetre = 0.0f;  // lightmap density for the level, > 0 when given
     float probeSpacing = 0.0f;    // metres between the level's automatic probes, > 0 when given
+    std::optional<DiffuseModel> diffuseModel;  // "diffuse": "lambert" or "multiscatter"
+    std::optional<GlossMipMethod> glossMips;   // "gloss_mips": "blit", "black_ops" or "wwii"
     bool hasSky = false;
     glm::vec3 skyRadiance{0.0f};  // cd/m^2, RGB, >= 0: the uniform sky, or the image's scale
     std::string skyImage;         // an equirectangular .hdr (as written), empty for a uniform sky

@@ -126,6 +126,8 @@ struct Importer {
         }
         if (extras.texelsPerMetre > 0.0f) level.texelsPerMetre = extras.texelsPerMetre;
         if (extras.probeSpacing > 0.0f) level.probeSpacing = extras.probeSpacing;
+        if (extras.diffuseModel) level.diffuseModel = *extras.diffuseModel;
+        if (extras.glossMips) level.glossMips = *extras.glossMips;
         if (extras.hasSky) {
             level.skyRadiance = extras.skyRadiance;
             skyImage = extras.skyImage;

@@ -171,15 +171,15 @@ private:
                      "; expected an object with at least one setting (docs/level-authoring.md)");
         if (e.contains("onelight")) {
             static const char* const kKeys[] = {
-                "role",     "dynamic",          "spawn",         "probe", "mover", "grid",
-                "exposure", "texels_per_metre", "probe_spacing", "sky"};
+                "role",     "dynamic",          "spawn",         "probe", "mover",   "grid",
+                "exposure", "texels_per_metre", "probe_spacing", "sky",   "diffuse", "gloss_mips"};
             for (const auto& [key, value] : e["onelight"].items()) {
                 bool known = false;
                 for (const char* k : kKeys) known |= key == k;
                 if (!known)
                     fail(at + ".extras.onelight." + clipForMessage(key),
                          "is not a setting; expected role, dynamic, spawn, probe, mover, grid, "
-                         "exposure, texels_per_metre, probe_spacing or sky");
+                         "exposure, texels_per_metre, probe_spacing, sky, diffuse or gloss_mips");
             }
         }
     }

@@ -27,8 +27,8 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 3;          // 2: DiskLevel holds the sky; 3: its image
-using world::kNoIndex;                           // world/no_index.hpp
+inline constexpr uint32_t kVersion = 4;  // 2: DiskLevel holds the sky; 3: its image; 4: models
+using world::kNoIndex;                   // world/no_index.hpp
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
 
@@ -103,8 +103,11 @@ struct DiskLevel {
     float skyRadiance[3];  // cd/m^2, RGB, finite, >= 0: the uniform sky (0 = none), or the scale
                            // of skyImage's texels
     uint32_t skyImage;     // into images: an equirectangular Radiance .hdr sky, or kNoIndex
+    uint8_t diffuseModel;  // world::DiffuseModel: 0 Lambert, 1 multiscatter
+    uint8_t glossMips;     // world::GlossMipMethod: 0 blit, 1 Black Ops, 2 WWII
+    uint16_t reserved;     // 0
 };
-static_assert(sizeof(DiskLevel) == 56);
+static_assert(sizeof(DiskLevel) == 60);
 
 struct DiskMaterial {
     StringRef name;

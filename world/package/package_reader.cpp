@@ -296,6 +296,15 @@ private:
         checkFinite(id, i, "skyRadiance", d.skyRadiance);
         if (!(std::min({d.skyRadiance[0], d.skyRadiance[1], d.skyRadiance[2]}) >= 0.0f))
             fail(id, i, "skyRadiance negative; expected cd/m^2 >= 0");
+        if (d.diffuseModel > uint8_t(world::DiffuseModel::kMultiscatter))
+            fail(id, i,
+                 "diffuseModel " + std::to_string(d.diffuseModel) +
+                     "; expected 0 (Lambert) or 1 (multiscatter)");
+        if (d.glossMips > uint8_t(world::GlossMipMethod::kWwii))
+            fail(id, i,
+                 "glossMips " + std::to_string(d.glossMips) +
+                     "; expected 0 (blit), 1 (Black Ops) or 2 (WWII)");
+        if (d.reserved != 0) fail(id, i, "reserved " + std::to_string(d.reserved) + "; expected 0");
     }
 
     void check(uint32_t id, size_t i, const DiskImage& d, const CompiledLevel&) const {

@@ -117,6 +117,8 @@ namespace records {
     d.probeSpacing = s.probeSpacing;
     put(d.skyRadiance, s.skyRadiance);
     d.skyImage = s.skyImage;
+    d.diffuseModel = uint8_t(s.diffuseModel);
+    d.glossMips = uint8_t(s.glossMips);
     return d;
 }
 
@@ -131,6 +133,8 @@ namespace records {
     s.probeSpacing = d.probeSpacing;
     s.skyRadiance = vec(d.skyRadiance);
     s.skyImage = d.skyImage;
+    s.diffuseModel = world::DiffuseModel(d.diffuseModel);
+    s.glossMips = world::GlossMipMethod(d.glossMips);
     return s;
 }
 

@@ -14,6 +14,7 @@ layout(constant_id = SPEC_FLAT_SHADING) const int FLAT_SHADING = 0;  // 1: const
 // their placeholders in tests); 0: the neutral placeholder (a constant ambient of frame.baked.x
 // lux, no baked shadow, a uniform environment of normalised radiance 1 / pi) without any fetch.
 layout(constant_id = SPEC_BAKED_LIGHTING) const int BAKED_LIGHTING = 1;
+layout(constant_id = SPEC_DIFFUSE_MODEL) const int DIFFUSE_MODEL = DIFFUSE_LAMBERT;
 
 layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
@@ -178,6 +179,13 @@ void main() {
 
     vec3 radiance = vec3(0.0);
 
+    // The specular lobe's directional albedo (split-sum table): the probes' environment
+    // "Fresnel", and the diffuse's energy-conservation weight (lighting.glsl).
+    float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
+    vec2 env = vec2(0.0);
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT) env = texture(envBrdfTable, envBrdfTableCoord(NoV, gloss)).rg;
+    float cavity = 1.0;
+
     // The one primary light, times its shadow.
     if (draw.primaryLight != NO_INDEX) {
         GpuLight light = lights[draw.primaryLight];
@@ -189,7 +197,8 @@ void main() {
             float runtime = viewDistance < radius ? runtimeShadow(light, p, geometricNormal, s.l) : 1.0;
             float shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
                                        frame.shadowParams.y);
-            radiance += surfaceReflectance(MATERIAL_CLASS, albedo, f0, gloss, d) * s.illuminance * shadow;
+            radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, env,
+                                           cavity, d) * s.illuminance * shadow;
         }
     }
 
@@ -197,12 +206,14 @@ void main() {
     if (MATERIAL_CLASS != MATERIAL_METAL) {
         for (uint i = 0u; i < frame.counts.x; ++i) {
             LightSample s = evaluateGpuLight(frame.effectOmnis[i], p);
-            radiance += diffuseReflectance(albedo, brdfDots(n, v, s.l)) * s.illuminance;
+            radiance += diffuseReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, env,
+                                           cavity, brdfDots(n, v, s.l)) * s.illuminance;
         }
     }
     if (frame.counts.y != 0u) {
         LightSample s = evaluateGpuLight(frame.effectSpot, p);
-        radiance += surfaceReflectance(MATERIAL_CLASS, albedo, f0, gloss, brdfDots(n, v, s.l)) * s.illuminance;
+        radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, env, cavity,
+                                       brdfDots(n, v, s.l)) * s.illuminance;
     }
 
     // Baked secondary lighting: diffuse from the lightmap or grid, specular from the probes
@@ -211,13 +222,10 @@ void main() {
     float ao = 1.0;
     if (hasTexture(m, TEXTURE_OCCLUSION))
         ao = occlusion_fromTexel(texture(occlusionTexture, inUv0).r, m.params.w);
-    float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
     vec3 probeSample = vec3(0.0);
-    vec2 env = vec2(0.0);
     float so = 1.0;
     if (MATERIAL_CLASS != MATERIAL_LAMBERT) {
         probeSample = probeRadiance(p, reflect(-v, n), gloss);
-        env = texture(envBrdfTable, vec2(NoV, gloss)).rg;
         so = specularOcclusion(NoV, ao, ggxAlpha_fromGloss(gloss));
     }
     radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, ao, so, probeSample);

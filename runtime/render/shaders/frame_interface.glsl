@@ -38,8 +38,9 @@ layout(set = 0, binding = BINDING_PROBE_CELLS, std430) readonly buffer ProbeCell
 layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer Materials {
     GpuMaterial materials[];
 };
-// EnvBRDF_Fit(NoV, gloss) tabulated at texel centres (rg = scale, bias): one fetch instead of the
-// 27-term fit per pixel.
+// The split-sum table (shaders/lighting.glsl, env_brdf_table.hpp; rg = scale, bias), read at
+// envBrdfTableCoord(NoV, gloss): the probes' environment "Fresnel" and the diffuse's energy
+// weight in one fetch.
 layout(set = 0, binding = BINDING_ENV_BRDF) uniform sampler2D envBrdfTable;
 // The level's sky image (equirectangular, linear, x frame.sky.rgb), a black texel without one.
 layout(set = 0, binding = BINDING_SKY) uniform sampler2D skyImage;
