@@ -11,11 +11,13 @@
 #include "bake/lightmap/imported_lightmap.hpp"
 #include "bake/lightmap/texel_placement.hpp"
 #include "bake/probes/probe_placement.hpp"
+#include "bake/textures/texture_stage.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/error.hpp"
 #include "world/light_grid_sample.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_writer.hpp"
+#include "world/package/texture_section.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -114,11 +116,23 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     report.shardIndex = options.shardIndex;
     report.shardCount = options.shardCount;
 
-    // 1. The Embree scene of the static world, shared by every stage.
+    // 0. The texture stage: every mip the runtime uploads and the bake samples (whole in every
+    // shard; it is deterministic).
     auto start = std::chrono::steady_clock::now();
+    result.textures = processLevelTextures(source, source.glossMips);
+    const TextureStageReport textures = textureStageReport(result.textures);
+    report.stages.push_back({"textures", secondsSince(start), {}, textures.textures.size()});
+    report.textureBytes = textures.totalBytes;
+    for (const ProcessedTextureRow& row : textures.textures)
+        report.textures.push_back({row.name, texelFormatName(row.format), row.width, row.height,
+                                   row.mipCount, row.bytes});
+
+    // 1. The Embree scene of the static world, shared by every stage.
+    start = std::chrono::steady_clock::now();
     const EmbreeDevice device;
     const world::SplitLevel split = world::splitStaticDynamic(source);
-    const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(source));
+    const BakeScene scene(device, split.staticGeometry,
+                          processedSceneMaterials(source, result.textures));
     const BakeLights lights =
         makeLevelLights(scene, source, options.lightSizes, options.skyRadiance);
     report.stages.push_back({"scene", secondsSince(start), {}, scene.triangleCount()});
@@ -371,8 +385,10 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
 }
 
 std::vector<uint8_t> packageBytes(const world::CompiledLevel& level,
-                                  const world::BakedLighting& baked) {
-    const std::vector<package::RawSection> sections = package::encodeBakedSections(baked);
+                                  const world::BakedLighting& baked,
+                                  const world::ProcessedTextures& textures) {
+    std::vector<package::RawSection> sections = package::encodeBakedSections(baked);
+    sections.push_back(package::encodeTextureSection(textures));
     return package::serializePackage(level, sections);
 }
 

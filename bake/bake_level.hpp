@@ -71,6 +71,7 @@ struct BakeOptions {
 
 struct BakeResult {
     world::CompiledLevel level;
+    world::ProcessedTextures textures;  // the texture stage's (bake/textures/texture_stage.hpp)
     world::CompileStats compileStats;
     world::BakedLighting baked;  // finished (dilated) when shardCount == 1
     BakeReport report;
@@ -107,8 +108,10 @@ void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting
                                                       std::vector<world::BakedLighting> parts,
                                                       const std::vector<std::string>& names = {});
 
-/// The package bytes of a bake result.
+/// The package bytes of a bake result: the compiled level, its baked lighting and the texture
+/// stage's mip chains.
 [[nodiscard]] std::vector<uint8_t> packageBytes(const world::CompiledLevel& level,
-                                                const world::BakedLighting& baked);
+                                                const world::BakedLighting& baked,
+                                                const world::ProcessedTextures& textures);
 
 }  // namespace onelight::bake

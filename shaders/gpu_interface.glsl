@@ -43,7 +43,8 @@ const int TEXTURE_METALLIC_ROUGHNESS = 1;
 const int TEXTURE_NORMAL = 2;
 const int TEXTURE_OCCLUSION = 3;
 const int TEXTURE_EMISSIVE = 4;
-const int TEXTURE_SLOT_COUNT = 5;
+const int TEXTURE_CAVITY = 5;  // R8, made from the normal map by the texture stage
+const int TEXTURE_SLOT_COUNT = 6;
 
 // The tonemap pass's set 0.
 const int BINDING_TONEMAP_HDR = 0;  // sampler2D, the resolved pre-exposed frame

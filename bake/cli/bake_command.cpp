@@ -136,7 +136,8 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
         BakeResult result = bakeLevel(source, options);
         noteStage("writing the package");
         package::placeImagesForPackage(result.level, output);
-        const std::vector<uint8_t> bytes = packageBytes(result.level, result.baked);
+        const std::vector<uint8_t> bytes =
+            packageBytes(result.level, result.baked, result.textures);
         package::writeFileAtomically(output, bytes);
         if (!reportPath.empty()) {
             result.report.packageBytes = bytes.size();

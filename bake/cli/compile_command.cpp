@@ -7,11 +7,13 @@
 
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
+#include "bake/textures/texture_stage.hpp"
 #include "world/compile/compile_level.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
 #include "world/import/level_import.hpp"
 #include "world/package/package_writer.hpp"
+#include "world/package/texture_section.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -120,7 +122,13 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
         world::refuseOutputOverInput(output, source.inputFiles);
         world::CompileResult result = world::compileLevel(source, options);
         package::placeImagesForPackage(result.level, output);
-        const std::vector<uint8_t> bytes = package::serializePackage(result.level);
+        // The texture stage's mips: a compiled package plays with placeholder lighting, and its
+        // textures are what the bake would give it.
+        const world::ProcessedTextures textures =
+            bake::processLevelTextures(source, source.glossMips);
+        const std::vector<package::RawSection> sections = {
+            package::encodeTextureSection(textures)};
+        const std::vector<uint8_t> bytes = package::serializePackage(result.level, sections);
         package::writeFileAtomically(output, bytes);
         printSummary(output, result.stats, bytes.size());
         for (const std::string& note : source.importNotes)

@@ -10,6 +10,7 @@
 #include "world/file_read.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
+#include "world/package/texture_section.hpp"
 
 namespace onelight::bake {
 
@@ -45,6 +46,8 @@ int runMergeCommand(const std::vector<std::string>& arguments) {
         world::CompiledLevel level;
         std::vector<uint8_t> firstCore;
         std::vector<world::BakedLighting> parts;
+        world::ProcessedTextures textures;
+        std::vector<uint8_t> firstTextures;
         for (const std::string& path : inputs) {
             package::PackageContents read = package::readPackageFile(path);
             const std::vector<uint8_t> core = package::serializePackage(read.level);
@@ -58,9 +61,20 @@ int runMergeCommand(const std::vector<std::string>& arguments) {
                 package::decodeBakedSections(read.bakedSections, read.level, path);
             if (!baked.present) throw world::Error(path + ": no baked lighting");
             parts.push_back(std::move(baked.baked));
+            // Every shard runs the whole (deterministic) texture stage: the parts agree.
+            package::TextureContents made =
+                package::decodeTextureSection(read.bakedSections, read.level, path);
+            if (!made.present) throw world::Error(path + ": no textures section (38)");
+            const std::vector<uint8_t> bytes = package::encodeTextureSection(made.textures).bytes;
+            if (firstTextures.empty()) {
+                firstTextures = bytes;
+                textures = std::move(made.textures);
+            } else if (bytes != firstTextures) {
+                throw world::Error(path + ": textures differ from " + inputs[0] + "'s");
+            }
         }
         const world::BakedLighting merged = mergeBakedLighting(level, std::move(parts), inputs);
-        const std::vector<uint8_t> bytes = packageBytes(level, merged);
+        const std::vector<uint8_t> bytes = packageBytes(level, merged, textures);
         package::writeFileAtomically(output, bytes);
         std::printf("merged %zu parts into %s (%zu bytes)\n", inputs.size(), output.c_str(),
                     bytes.size());

@@ -108,6 +108,42 @@ BakeTexture makeBakeTexture(const world::DecodedImage& image, bool srgb,
     return t;
 }
 
+BakeTexture makeBakeTexture(const world::ProcessedTexture& processed) {
+    BakeTexture t;
+    t.width = processed.width;
+    t.height = processed.height;
+    t.mipCount = processed.mipCount;
+    t.wrapS = processed.sampler.wrapS;
+    t.wrapT = processed.sampler.wrapT;
+    t.magNearest = processed.sampler.magFilter == kNearest;
+    uint64_t total = 0;
+    for (uint32_t m = 0; m < t.mipCount; ++m) {
+        t.mipOffset.push_back(total);
+        total += uint64_t(std::max(t.width >> m, 1u)) * std::max(t.height >> m, 1u);
+    }
+    t.texels.resize(total);
+    const std::array<float, 256>& decode = srgbTable();
+    const uint8_t* p = processed.texels.data();
+    const uint32_t stride = world::bytesPerTexel(processed.format);
+    if (uint64_t(processed.texels.size()) != total * stride) return BakeTexture{};
+    for (uint64_t i = 0; i < total; ++i, p += stride) {
+        switch (processed.format) {
+            case world::TexelFormat::kRgba8Srgb:  // alpha is linear in every format
+                t.texels[i] =
+                    glm::vec4(decode[p[0]], decode[p[1]], decode[p[2]], float(p[3]) / 255.0f);
+                break;
+            case world::TexelFormat::kRgba8Unorm:
+                t.texels[i] =
+                    glm::vec4(float(p[0]), float(p[1]), float(p[2]), float(p[3])) / 255.0f;
+                break;
+            case world::TexelFormat::kR8Unorm:  // as the GPU reads R8: (r, 0, 0, 1)
+                t.texels[i] = glm::vec4(float(p[0]) / 255.0f, 0.0f, 0.0f, 1.0f);
+                break;
+        }
+    }
+    return t;
+}
+
 glm::vec4 sampleTexture(const BakeTexture& texture, glm::vec2 uv, float lod) {
     if (texture.texels.empty()) return glm::vec4(1.0f);
     const float top = float(texture.mipCount - 1);

@@ -16,6 +16,7 @@
 
 #include "world/compiled_level.hpp"
 #include "world/images/image_decode.hpp"
+#include "world/processed_textures.hpp"
 
 namespace onelight::bake {
 
@@ -32,6 +33,11 @@ struct BakeTexture {
 /// The texture of `image` as sampled through `sampler`, sRGB-decoded when `srgb`.
 [[nodiscard]] BakeTexture makeBakeTexture(const world::DecodedImage& image, bool srgb,
                                           const world::Sampler& sampler);
+
+/// A texture the texture stage made (bake/textures), its mips as stored: what the runtime uploads,
+/// in float (sRGB-decoded for kRgba8Srgb; an R8 texel reads (r, 0, 0, 1) as on the GPU). Empty
+/// when its texel bytes do not match its size (the package reader checks them).
+[[nodiscard]] BakeTexture makeBakeTexture(const world::ProcessedTexture& processed);
 
 /// The texture at texture coordinate `uv` (glTF: v down) and level of detail `lod` (0 = mip 0;
 /// clamped to the chain): bilinear in the two mips around it, linearly blended (trilinear).

@@ -60,6 +60,31 @@ SceneMaterials loadSceneMaterials(const world::SourceLevel& level) {
     return out;
 }
 
+SceneMaterials processedSceneMaterials(const world::SourceLevel& level,
+                                       const world::ProcessedTextures& processed) {
+    SceneMaterials out = factorMaterials(level.materials, level.diffuseModel);
+    out.textures.reserve(processed.textures.size());
+    for (const world::ProcessedTexture& texture : processed.textures)
+        out.textures.push_back(makeBakeTexture(texture));
+    for (size_t m = 0; m < out.materials.size() && m < processed.materials.size(); ++m) {
+        const world::MaterialTextureSlots& slots = processed.materials[m];
+        const auto index = [&](uint32_t slot) {
+            return slot < out.textures.size() && !out.textures[slot].texels.empty()
+                       ? slot
+                       : world::kNoIndex;
+        };
+        MaterialTextureSet& set = out.textureSets[m];
+        set.baseColor = index(slots.baseColor);
+        set.metallicRoughness = index(slots.metallicRoughness);
+        set.normal = index(slots.normal);
+        set.occlusion = index(slots.occlusion);
+        set.emissive = index(slots.emissive);
+        set.cavity = index(slots.cavity);
+        set.processed = slots;
+    }
+    return out;
+}
+
 uint64_t textureBytes(const SceneMaterials& materials) {
     uint64_t bytes = 0;
     for (const BakeTexture& t : materials.textures) bytes += textureBytes(t);

@@ -7,6 +7,7 @@
 
 #include "bake/materials/bake_textures.hpp"
 #include "world/compiled_level.hpp"
+#include "world/processed_textures.hpp"
 #include "world/source_level.hpp"
 
 namespace onelight::bake {
@@ -18,8 +19,11 @@ struct MaterialTextureSet {
     uint32_t normal = world::kNoIndex;             // linear
     uint32_t occlusion = world::kNoIndex;          // linear
     uint32_t emissive = world::kNoIndex;           // sRGB
+    uint32_t cavity = world::kNoIndex;             // linear, R
+    world::MaterialTextureSlots processed;         // the stage's slots (factorsFolded), when any
     [[nodiscard]] bool any() const {
-        return (baseColor & metallicRoughness & normal & occlusion & emissive) != world::kNoIndex;
+        return (baseColor & metallicRoughness & normal & occlusion & emissive & cavity) !=
+               world::kNoIndex;
     }
 };
 
@@ -39,6 +43,11 @@ struct SceneMaterials {
 /// read from their files (uri as the importer resolved it). Throws world::Error naming an image
 /// that cannot be read or decoded.
 [[nodiscard]] SceneMaterials loadSceneMaterials(const world::SourceLevel& level);
+
+/// The level's materials reading the texture stage's mip chains, `processed` (one texture set
+/// per material, as the runtime binds them).
+[[nodiscard]] SceneMaterials processedSceneMaterials(const world::SourceLevel& level,
+                                                     const world::ProcessedTextures& processed);
 
 /// Bytes the decoded textures hold.
 [[nodiscard]] uint64_t textureBytes(const SceneMaterials& materials);

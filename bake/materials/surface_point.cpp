@@ -69,8 +69,12 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
     const MaterialTextureSet& set = materials.textureSets[material];
     const float width = footprint / std::max(std::fabs(cosine), 1e-3f);
     const glm::vec4 base = m.baseColor * texel(materials, set.baseColor, a, width);
+    // Factors the texture stage folded into the textures read as 1 (as the runtime reads them).
+    const world::TextureFactors factors = world::textureFactors(m, set.processed);
+    const float metallic = factors.metallic, roughness = factors.roughness,
+                normalScale = factors.normalScale;
     const glm::vec2 mr =
-        glsl::metallicRoughness_fromTexel(int(m.materialClass), m.metallic, m.roughness,
+        glsl::metallicRoughness_fromTexel(int(m.materialClass), metallic, roughness,
                                           set.metallicRoughness == world::kNoIndex
                                               ? glm::vec4(1.0f)
                                               : texel(materials, set.metallicRoughness, a, width));
@@ -97,7 +101,7 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
         const float tl = glm::length(t);
         if (tl > 1e-6f)
             n = glsl::normal_fromTangentSpace(glm::vec3(texel(materials, set.normal, a, width)),
-                                              m.normalScale, n, t / tl, a.tangent.w);
+                                              normalScale, n, t / tl, a.tangent.w);
     }
     s.shadingNormal = n;
     return s;

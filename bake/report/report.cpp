@@ -74,6 +74,15 @@ std::string reportJson(const BakeReport& r) {
                        {"clusters", r.visibilityClusters},
                        {"rows", r.visibilityRows},
                        {"mean_visible_fraction", r.visibilityMeanFraction}};
+    nlohmann::json textures = nlohmann::json::array();
+    for (const TextureReport& t : r.textures)
+        textures.push_back({{"name", t.name},
+                            {"format", t.format},
+                            {"width", t.width},
+                            {"height", t.height},
+                            {"mips", t.mips},
+                            {"bytes", t.bytes}});
+    j["textures"] = {{"count", r.textures.size()}, {"bytes", r.textureBytes}, {"list", textures}};
     j["warnings"] = r.warnings;
     return j.dump(2) + "\n";
 }
@@ -126,6 +135,12 @@ std::string reportSummary(const BakeReport& r) {
                       static_cast<unsigned long long>(r.probesBaked),
                       static_cast<unsigned long long>(r.probesTotal), r.probeFaceSize,
                       r.probeSamplesPerTexel, double(r.probeBytes) / 1024.0);
+        s += line;
+    }
+    if (!r.textures.empty()) {
+        std::snprintf(line, sizeof line,
+                      "  textures   %zu with every mip, %.1f MiB (report.json lists each)\n",
+                      r.textures.size(), double(r.textureBytes) / (1024.0 * 1024.0));
         s += line;
     }
     if (r.visibilityCells) {

@@ -17,6 +17,13 @@ struct StageReport {
     uint64_t items = 0;  // texels, cells, ... the stage worked on
 };
 
+/// One texture the texture stage made, as the package stores it.
+struct TextureReport {
+    std::string name, format;
+    uint32_t width = 0, height = 0, mips = 0;
+    uint64_t bytes = 0;  // every mip
+};
+
 struct BakeReport {
     std::string level;
     std::string quality;
@@ -38,7 +45,9 @@ struct BakeReport {
     double lightmapDenoisedRelativeNoise = 0.0;  // the same after the denoiser
     uint64_t probesTotal = 0, probesBaked = 0;   // placed in the level; captured by this run
     uint32_t probeFaceSize = 0, probeSamplesPerTexel = 0;
-    uint64_t probeBytes = 0;  // section 35 bytes of the probes this run baked
+    uint64_t probeBytes = 0;              // section 35 bytes of the probes this run baked
+    std::vector<TextureReport> textures;  // the texture stage's, with their memory
+    uint64_t textureBytes = 0;            // their texels, every mip
     // The potentially visible set: view cells, leaf clusters, distinct rows, and the mean
     // fraction of the clusters a cell's set holds (0 cells: none baked).
     uint32_t visibilityCells = 0, visibilityClusters = 0, visibilityRows = 0;

@@ -7,6 +7,7 @@
 #include "world/error.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
+#include "world/package/texture_section.hpp"
 
 namespace onelight::assets {
 
@@ -24,6 +25,10 @@ LoadedLevel loadLevel(const std::string& path) {
                            "with `onelight-bake merge`)");
     out.hasBakedLighting = baked.present;
     if (baked.present) out.baked = std::move(baked.baked);
+    package::TextureContents processed =
+        package::decodeTextureSection(read.bakedSections, out.level, path);
+    out.hasProcessedTextures = processed.present;
+    if (processed.present) out.processedTextures = std::move(processed.textures);
     out.images.reserve(out.level.images.size());
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
     // RGBA8 texels and float RGB sky texels, charged before each image is decoded.
@@ -32,6 +37,10 @@ LoadedLevel loadLevel(const std::string& path) {
         const world::Image& image = out.level.images[i];
         const std::string where = path + ": image " + std::to_string(i) + " '" + image.name + "'";
         const bool sky = i == out.level.settings.skyImage;
+        if (!sky && out.hasProcessedTextures) {  // the stage's mips replace the image
+            out.images.emplace_back();
+            continue;
+        }
         if (!image.encodedBytes.empty()) {
             if (sky) {
                 out.sky = world::decodeHdrImage(image.encodedBytes.data(),

@@ -22,16 +22,35 @@ namespace {
 
 namespace glsl = onelight::glsl;
 
-// A material's texture indices by slot (TEXTURE_* of gpu_interface.glsl).
+// A material's texture indices by slot (TEXTURE_* of gpu_interface.glsl): into the package's
+// processed textures when it holds them (the texture stage's mips), else into level.textures.
 using TextureSlots = std::array<uint32_t, size_t(glsl::TEXTURE_SLOT_COUNT)>;
 TextureSlots textureSlotsOf(const world::Material& m) {
-    TextureSlots slots{};
+    TextureSlots slots;
+    slots.fill(world::kNoIndex);
     slots[glsl::TEXTURE_BASE_COLOR] = m.baseColorTexture;
     slots[glsl::TEXTURE_METALLIC_ROUGHNESS] = m.metallicRoughnessTexture;
     slots[glsl::TEXTURE_NORMAL] = m.normalTexture;
     slots[glsl::TEXTURE_OCCLUSION] = m.occlusionTexture;
     slots[glsl::TEXTURE_EMISSIVE] = m.emissiveTexture;
     return slots;
+}
+
+TextureSlots processedSlotsOf(const world::MaterialTextureSlots& m) {
+    TextureSlots slots;
+    slots[glsl::TEXTURE_BASE_COLOR] = m.baseColor;
+    slots[glsl::TEXTURE_METALLIC_ROUGHNESS] = m.metallicRoughness;
+    slots[glsl::TEXTURE_NORMAL] = m.normal;
+    slots[glsl::TEXTURE_OCCLUSION] = m.occlusion;
+    slots[glsl::TEXTURE_EMISSIVE] = m.emissive;
+    slots[glsl::TEXTURE_CAVITY] = m.cavity;
+    return slots;
+}
+
+TextureSlots materialSlots(const assets::LoadedLevel& loaded, size_t material) {
+    if (loaded.hasProcessedTextures)
+        return processedSlotsOf(loaded.processedTextures.materials.at(material));
+    return textureSlotsOf(loaded.level.materials.at(material));
 }
 
 // Every slot's placeholder: white, a flat normal for the normal map.
@@ -167,6 +186,39 @@ uint32_t textureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_
     return index;
 }
 
+VkFormat formatOf(world::TexelFormat format) {
+    switch (format) {
+        case world::TexelFormat::kRgba8Srgb:
+            return VK_FORMAT_R8G8B8A8_SRGB;
+        case world::TexelFormat::kRgba8Unorm:
+            return VK_FORMAT_R8G8B8A8_UNORM;
+        case world::TexelFormat::kR8Unorm:
+            return VK_FORMAT_R8_UNORM;
+    }
+    return VK_FORMAT_R8G8B8A8_UNORM;
+}
+
+// The processed texture `index` uploaded with its own mips (the package checked their sizes),
+// once.
+uint32_t processedTextureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_t index) {
+    const uint64_t key = (uint64_t(1) << 63) | index;
+    auto found = s.textureIndex.find(key);
+    if (found != s.textureIndex.end()) return found->second;
+    const world::ProcessedTexture& texture = loaded.processedTextures.textures.at(index);
+    vk::ImageDesc desc;
+    desc.format = formatOf(texture.format);
+    desc.width = texture.width;
+    desc.height = texture.height;
+    desc.mipLevels = texture.mipCount;
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    s.textures.emplace_back();
+    vk::createImage(*s.ctx, s.textures.back(), desc);
+    vk::uploadImageMips(*s.ctx, s.textures.back(), texture.texels);
+    const uint32_t uploaded = uint32_t(s.textures.size() - 1);
+    s.textureIndex[key] = uploaded;
+    return uploaded;
+}
+
 VkSampler samplerFor(RendererState& s, const world::Sampler& sampler) {
     const uint64_t key = uint64_t(sampler.magFilter) | uint64_t(sampler.minFilter) << 16 |
                          uint64_t(sampler.wrapS) << 32 | uint64_t(sampler.wrapT) << 48;
@@ -261,8 +313,14 @@ void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
         g.f0Gloss = glm::vec4(m.specularColor, m.gloss);
         g.emissive = glm::vec4(m.emissive, m.alphaCutoff);
         g.params = glm::vec4(m.metallic, m.roughness, m.normalScale, m.occlusionStrength);
+        // Factors the texture stage folded into the textures read as 1.
+        if (loaded.hasProcessedTextures) {
+            const world::TextureFactors f =
+                world::textureFactors(m, loaded.processedTextures.materials.at(i));
+            g.params = glm::vec4(f.metallic, f.roughness, f.normalScale, m.occlusionStrength);
+        }
         uint32_t bits = 0;
-        const TextureSlots slots = textureSlotsOf(m);
+        const TextureSlots slots = materialSlots(loaded, i);
         for (uint32_t t = 0; t < slots.size(); ++t)
             if (slots[t] != world::kNoIndex) bits |= 1u << t;
         g.textures = glm::uvec4(bits, 0u, 0u, 0u);
@@ -568,11 +626,17 @@ void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
 
     // Material textures: (image, sampler) per slot, placeholders where absent.
     s.materialTextures.clear();
-    for (const world::Material& m : level.materials) {
-        const TextureSlots slots = textureSlotsOf(m);
+    for (size_t i = 0; i < level.materials.size(); ++i) {
+        const TextureSlots slots = materialSlots(loaded, i);
         MaterialTextures bound = placeholderTextures(s);
         for (uint32_t t = 0; t < slots.size(); ++t) {
             if (slots[t] == world::kNoIndex) continue;
+            if (loaded.hasProcessedTextures) {
+                const uint32_t image = processedTextureFor(s, loaded, slots[t]);
+                bound[t] = {s.textures[image].view,
+                            samplerFor(s, loaded.processedTextures.textures[slots[t]].sampler)};
+                continue;
+            }
             const bool srgb =
                 int(t) == glsl::TEXTURE_BASE_COLOR || int(t) == glsl::TEXTURE_EMISSIVE;
             const uint32_t image = textureFor(s, loaded, slots[t], srgb);

@@ -476,12 +476,12 @@ TEST(AlphaTransport, BlendCoverageIsAlphaAndTheSameOnEveryRunAndThread) {
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
         const BakeResult r = bakeLevel(level, options);
-        one = packageBytes(r.level, r.baked);
+        one = packageBytes(r.level, r.baked, r.textures);
     }
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
         const BakeResult r = bakeLevel(level, options);
-        two = packageBytes(r.level, r.baked);
+        two = packageBytes(r.level, r.baked, r.textures);
     }
     EXPECT_TRUE(one == two);
 }

@@ -40,12 +40,12 @@ TEST_P(BakeDeterminism, OneAndTwoThreadsGiveIdenticalBytes) {
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
         const BakeResult r = bakeLevel(level, test::fastBakeOptions());
-        one = packageBytes(r.level, r.baked);
+        one = packageBytes(r.level, r.baked, r.textures);
     }
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
         const BakeResult r = bakeLevel(level, test::fastBakeOptions());
-        two = packageBytes(r.level, r.baked);
+        two = packageBytes(r.level, r.baked, r.textures);
     }
     ASSERT_EQ(one.size(), two.size());
     EXPECT_TRUE(one == two);
@@ -73,7 +73,7 @@ TEST_P(BakeDeterminism, ShardsMergedEqualAWholeBake) {
         BakeResult part = bakeLevel(level, o);
         package::placeImagesForPackage(part.level, packagePath);
         // Through the package, as `merge` reads it.
-        const std::vector<uint8_t> bytes = packageBytes(part.level, part.baked);
+        const std::vector<uint8_t> bytes = packageBytes(part.level, part.baked, part.textures);
         const package::PackageContents read = package::parsePackage(bytes, "part");
         const package::BakedContents baked =
             package::decodeBakedSections(read.bakedSections, read.level, "part");
@@ -84,7 +84,8 @@ TEST_P(BakeDeterminism, ShardsMergedEqualAWholeBake) {
     const world::BakedLighting merged = mergeBakedLighting(compiled, parts);
     world::CompiledLevel wholeLevel = whole.level;
     package::placeImagesForPackage(wholeLevel, packagePath);
-    EXPECT_TRUE(packageBytes(compiled, merged) == packageBytes(wholeLevel, whole.baked));
+    EXPECT_TRUE(packageBytes(compiled, merged, whole.textures) ==
+                packageBytes(wholeLevel, whole.baked, whole.textures));
     EXPECT_TRUE(test::allFiniteNonNegative(merged));
 
     // A shard whose grid has another origin, with the same counts: named, not merged.

@@ -108,7 +108,8 @@ TEST(ImportedLightmap, ShardsMergeToTheWholeBake) {
         parts.push_back(bakeLevel(source, options).baked);
     }
     const world::BakedLighting merged = mergeBakedLighting(whole.level, parts);
-    EXPECT_EQ(packageBytes(whole.level, merged), packageBytes(whole.level, whole.baked));
+    EXPECT_EQ(packageBytes(whole.level, merged, whole.textures),
+              packageBytes(whole.level, whole.baked, whole.textures));
 }
 
 TEST(ImportedLightmap, Section36RoundTripsAndIsCheckedAgainstTheAtlases) {

@@ -157,22 +157,21 @@ TEST(HostileCommandLine, ReplaysPastTheirLimitsAndNonFilesEndQuickly) {
     EXPECT_LT(r.output.size(), 2000u);
 }
 
+// The runtime reads one image by its uri beside the package: the sky's (material textures come
+// from the package's textures section). A FIFO there is refused, not waited on.
 TEST(HostileCommandLine, AnImageBesideThePackageThatIsAFifoDoesNotHang) {
     const std::filesystem::path folder = hostileFolder("fifo-image");
     std::filesystem::create_directories(folder / "src");
-    std::ofstream(folder / "src" / "tex.png") << "not read at compile";
+    std::ofstream(folder / "src" / "sky.hdr") << "not read at compile";
     const std::string level = shellQuoted(writeTriangleLevel(folder / "src", [](nlohmann::json& j) {
-        j["images"] = {{{"uri", "tex.png"}}};
-        j["textures"] = {{{"source", 0}}};
-        j["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
-        j["meshes"][0]["primitives"][0]["material"] = 0;
+        j["nodes"][0]["extras"] = {{"onelight", {{"sky", "sky.hdr"}}}};
     }));
     const std::string package = shellQuoted(folder / "src" / "level.olpak");
     ASSERT_EQ(run(kBake + " compile " + level + " -o " + package).exitCode, 0);
-    std::filesystem::remove(folder / "src" / "tex.png");
-    ASSERT_EQ(::mkfifo((folder / "src" / "tex.png").c_str(), 0600), 0);
+    std::filesystem::remove(folder / "src" / "sky.hdr");
+    ASSERT_EQ(::mkfifo((folder / "src" / "sky.hdr").c_str(), 0600), 0);
     expectFailure(run(kOnelight + " " + package + " --headless --size 32x32"),
-                  {"tex.png", "is a FIFO"});
+                  {"sky.hdr", "is a FIFO"});
 }
 
 }  // namespace

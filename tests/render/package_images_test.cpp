@@ -33,9 +33,14 @@ TEST(PackageImages, ImageReferencesFollowThePackageFromAnyWorkingFolder) {
             " '" + relative.string() + "' -o '" + package.string() + "'" +
             (command.empty() ? " --quality draft --quiet" : "") + " > /dev/null";
         ASSERT_EQ(std::system(line.c_str()), 0) << line;
+        // The texture stage read every image from the level's folder, whatever the working
+        // folder: its mips are in the package, one set per material.
         const assets::LoadedLevel level = assets::loadLevel(package.string());
-        ASSERT_FALSE(level.images.empty());
-        for (const world::DecodedImage& image : level.images) EXPECT_GT(image.width, 0u);
+        ASSERT_TRUE(level.hasProcessedTextures) << command;
+        ASSERT_FALSE(level.processedTextures.textures.empty());
+        EXPECT_EQ(level.processedTextures.materials.size(), level.level.materials.size());
+        for (const world::ProcessedTexture& texture : level.processedTextures.textures)
+            EXPECT_GT(texture.width, 0u) << texture.name;
     }
 }
 

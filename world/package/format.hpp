@@ -63,7 +63,9 @@ enum SectionId : uint32_t {
     kSectionProbes = 35,            // prefiltered, normalised environment probes
     kSectionImportedLightmap = 36,  // the source format's own bake at the same texels
     kSectionVisibility = 37,        // potentially visible sets: view cells -> clusters of surfaces
-    kSectionIdLimit = 48,           // ids at or above this are invalid
+    // Textures made by the texture stage: mip chains and per-material slots; kept raw too.
+    kSectionProcessedTextures = 38,
+    kSectionIdLimit = 48,  // ids at or above this are invalid
 };
 
 struct FileHeader {
@@ -425,5 +427,67 @@ struct DiskVisibilityHeader {
     uint32_t reserved;      // 0
 };
 static_assert(sizeof(DiskVisibilityHeader) == 48);
+
+// ---------------------------------------------------------------------------------------------
+// Processed textures (id 38, optional), written by the texture stage (bake/textures/
+// texture_stage; world/processed_textures.hpp in memory, package/texture_section.hpp reads it).
+//
+// uint8_t[]: one DiskProcessedTexturesHeader, then
+//   DiskProcessedTexture[textureCount]
+//   DiskMaterialTextureSlots[materialCount]   one per level material, in order
+//   char names[nameBytes]                     the textures' names in order, no terminators
+//   zero padding to a multiple of kProcessedTexelAlignment (counted from the section's start)
+//   texels[texelBytes]                        the textures' mip chains in texture order, each
+//                                             followed by zero padding to a multiple of
+//                                             kProcessedTexelAlignment
+// A chain holds every mip of its texture, the largest first, each mip's rows top to bottom,
+// tightly packed (world::mipChainBytes). Nothing follows the last chain's padding: the section
+// is exactly its records, names and texels.
+
+inline constexpr uint32_t kProcessedTexelAlignment = 8;         // bytes; where each chain starts
+inline constexpr uint32_t kMaxProcessedTextureNameBytes = 256;  // per texture name
+
+struct DiskProcessedTexturesHeader {
+    uint32_t textureCount;   // DiskProcessedTexture records after the header
+    uint32_t materialCount;  // DiskMaterialTextureSlots records after them; == level materials
+    uint32_t nameBytes;      // bytes of names after the slots; == the sum of the name lengths
+    uint8_t method;          // world::GlossMipMethod the normal and gloss mips were made by:
+                             // 0 blit, 1 Black Ops, 2 WWII
+    uint8_t reserved[3];     // 0
+    uint64_t texelBytes;     // bytes from the first chain to the section's end, padding
+                             // included; <= world::kMaxDecodedImageBytes
+};
+static_assert(sizeof(DiskProcessedTexturesHeader) == 24);
+
+struct DiskProcessedTexture {
+    uint32_t nameOffset;  // bytes into the section's names, == the previous names' lengths
+    uint32_t nameLength;  // bytes, <= kMaxProcessedTextureNameBytes; what it was made from
+    uint8_t format;       // world::TexelFormat: 0 RGBA8 sRGB, 1 RGBA8 UNORM, 2 R8 UNORM
+    uint8_t reserved[3];  // 0
+    uint32_t width;       // texels of mip 0, 1..world::kMaxImageExtent (16384)
+    uint32_t height;      // texels of mip 0, 1..world::kMaxImageExtent
+    uint32_t mipCount;    // world::fullMipCount(width, height): down to 1x1
+    uint16_t magFilter;   // glTF/GL enum: 0 unset, 9728, 9729, 9984..9987
+    uint16_t minFilter;   // as magFilter
+    uint16_t wrapS;       // 10497 repeat, 33071 clamp, 33648 mirrored
+    uint16_t wrapT;       // as wrapS
+    uint64_t firstByte;   // from the section's start: after the names' padding and the previous
+                          // chain's, a multiple of kProcessedTexelAlignment
+    uint64_t byteCount;   // world::mipChainBytes(format, width, height, mipCount)
+};
+static_assert(sizeof(DiskProcessedTexture) == 48);
+
+struct DiskMaterialTextureSlots {
+    uint32_t baseColor;          // into the section's textures (RGBA8 sRGB) or kNoIndex
+    uint32_t metallicRoughness;  // RGBA8 UNORM (G roughness, B metallic) or kNoIndex
+    uint32_t normal;             // RGBA8 UNORM (tangent space) or kNoIndex
+    uint32_t occlusion;          // RGBA8 UNORM (R) or kNoIndex
+    uint32_t emissive;           // RGBA8 sRGB or kNoIndex
+    uint32_t cavity;             // R8 UNORM (made from the normal map) or kNoIndex
+    uint8_t factorsFolded;       // 0 or 1: the material's metallic and roughness factors and
+                                 // normal scale are already in its textures
+    uint8_t reserved[3];         // 0
+};
+static_assert(sizeof(DiskMaterialTextureSlots) == 28);
 
 }  // namespace onelight::package

@@ -184,7 +184,7 @@ void main() {
     float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
     vec2 env = vec2(0.0);
     if (MATERIAL_CLASS != MATERIAL_LAMBERT) env = texture(envBrdfTable, envBrdfTableCoord(NoV, gloss)).rg;
-    float cavity = 1.0;
+    float cavity = hasTexture(m, TEXTURE_CAVITY) ? texture(cavityTexture, inUv0).r : 1.0;
 
     // The one primary light, times its shadow.
     if (draw.primaryLight != NO_INDEX) {
