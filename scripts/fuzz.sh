@@ -6,6 +6,9 @@
 #   scripts/fuzz.sh --runs N        N executions per target (the benchmark: 10000000)
 #   scripts/fuzz.sh ... --only T,U  only the targets named (fuzz_gltf, fuzz_q3, fuzz_package,
 #                                   fuzz_replay, fuzz_command_line)
+#   scripts/fuzz.sh ... --timeout S one input running longer than S wall seconds is a finding
+#                                   (20; raise it on a loaded machine, where a starved process
+#                                   can take that long over an input that needs 0.05 s)
 # Prints, per target, its executions and the result; exits non-zero on any finding (the
 # reproducer is left in build-fuzz/findings/TARGET/).
 set -euo pipefail
@@ -13,12 +16,14 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$root/build-fuzz
 limit=(-max_total_time=60)
 targets="fuzz_gltf fuzz_q3 fuzz_package fuzz_replay fuzz_command_line"
-usage="usage: scripts/fuzz.sh [--seconds S | --runs N] [--only TARGET,...]"
+timeout=20
+usage="usage: scripts/fuzz.sh [--seconds S | --runs N] [--only TARGET,...] [--timeout S]"
 while [ $# -gt 0 ]; do
   case "$1" in
     --seconds) limit=(-max_total_time="$2"); shift 2 ;;
     --runs) limit=(-runs="$2"); shift 2 ;;
     --only) targets=${2//,/ }; shift 2 ;;
+    --timeout) timeout=$2; shift 2 ;;
     *) echo "$usage" >&2; exit 2 ;;
   esac
 done
@@ -80,7 +85,7 @@ for target in $targets; do
   seeds=$(ls "$corpus/$target" | wc -l)
   if (cd "$findings" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-      "$build/bin/$target" "${limit[@]}" "${extra[@]}" -rss_limit_mb=4096 -timeout=20 \
+      "$build/bin/$target" "${limit[@]}" "${extra[@]}" -rss_limit_mb=4096 -timeout="$timeout" \
       -max_len=4000000 -print_final_stats=1 "$build/work/$target" "$corpus/$target" >"$log" 2>&1); then
     result="no finding"
   else
