@@ -109,8 +109,9 @@ vec2 envBrdfTableCoord(float NoV, float gloss) {
 
 // Specular occlusion from an ambient occlusion `ao` (Lagarde and de Rousiers 2014, "Moving
 // Frostbite to PBR", listing 26): saturate((NoV + ao)^(2^(-16 alpha - 1)) - 1 + ao). It is 1
-// where ao is 1, ao at normal incidence on a rough surface, and tends to 1 at grazing angles
-// on a glossy one, where the reflection leaves the occluded hemisphere.
+// where ao is 1 and about ao on a rough surface; on a glossy one it rises towards normal view
+// and falls towards grazing view, where the reflection leaves low over the horizon that the
+// occluders hide (tests/lab/specular_occlusion_test measures it against a visibility cone).
 float specularOcclusion(float NoV, float ao, float alpha) {
     return saturate(pow(NoV + ao, exp2(-16.0f * alpha - 1.0f)) - 1.0f + ao);
 }
