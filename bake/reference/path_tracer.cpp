@@ -25,10 +25,10 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
     const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
     const float aspect = float(width) / float(height);
     const float tanHalf = std::tan(0.5f * camera.yfov);
-    // A pixel's footprint: its angle (perspective) or its width (orthographic).
-    const RayCone pixelCone = camera.orthographic
-                                  ? RayCone{2.0f * camera.ymag / float(height), 0.0f}
-                                  : RayCone{0.0f, 2.0f * tanHalf / float(height)};
+    // Camera rays read textures at full resolution (a footprint of 0: mip 0): the paths, jittered
+    // over the pixel, average the full-resolution shading over it, which is the ground truth the
+    // runtime's mips approximate (docs/materials.md). Later bounces keep their cones.
+    const RayCone pixelCone{0.0f, 0.0f};
     tbb::enumerable_thread_specific<RayCounts> counts;
     bake::parallelFor(tbb::blocked_range<uint32_t>(0, height), [&](const auto& rows) {
         RayCounts& local = counts.local();

@@ -1,0 +1,235 @@
+// Normal and gloss mips in a whole frame: a glossy, bump-mapped floor to the horizon under a low
+// sun, in front of the camera so that the bumps' glints run out towards the horizon. The level is
+// baked twice, its mips made by a plain box filter (`gloss_mips: blit`, what a linear blit of the
+// textures gives) and by WWII's average normal length, rendered headless, and path traced by
+// `onelight-bake reference`, whose camera rays read the full-resolution normal map and whose 512
+// jittered paths per pixel average it over the pixel: the ground truth (docs/materials.md).
+// The relative RMS error of 4x2-pixel blocks' luminance against the reference is printed per
+// distance band; in the far bands (many texels per pixel) WWII's must be at most half the blit's.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "capture/capture.hpp"
+#include "render/camera.hpp"
+#include "test_scene.hpp"
+#include "world/gltf/gltf_builder.hpp"
+
+namespace {
+
+using namespace onelight;
+using nlohmann::json;
+
+constexpr uint32_t kWidth = 256, kHeight = 160;
+constexpr uint32_t kReferenceSpp = 512;
+constexpr uint32_t kBumpTexels = 64;   // the normal map's size
+constexpr float kTileMetres = 0.5f;    // one repeat of the normal map
+constexpr float kCameraHeight = 1.7f;  // metres above the floor
+constexpr uint32_t kBlockW = 4, kBlockH = 2;
+
+json vec(glm::vec3 v) {
+    return json::array({v.x, v.y, v.z});
+}
+
+// Egg-crate bumps, one period per tile: slopes (dh/dx, dh/dy) = s (cos 2 pi u sin 2 pi v,
+// sin 2 pi u cos 2 pi v) with s = 0.5 (up to 27 degrees), as a tangent-space normal map.
+void writeBumpNormalMap(const std::string& path) {
+    std::vector<uint8_t> rgba(size_t(kBumpTexels) * kBumpTexels * 4, 255);
+    constexpr double kSlope = 0.5;
+    for (uint32_t y = 0; y < kBumpTexels; ++y)
+        for (uint32_t x = 0; x < kBumpTexels; ++x) {
+            const double u = 2.0 * M_PI * (double(x) + 0.5) / kBumpTexels;
+            const double v = 2.0 * M_PI * (double(y) + 0.5) / kBumpTexels;
+            const glm::dvec3 n = glm::normalize(glm::dvec3(
+                -kSlope * std::cos(u) * std::sin(v), -kSlope * std::sin(u) * std::cos(v), 1.0));
+            uint8_t* p = &rgba[(size_t(y) * kBumpTexels + x) * 4];
+            for (int c = 0; c < 3; ++c)
+                p[c] = uint8_t(std::lround(std::clamp(0.5 + 0.5 * n[c], 0.0, 1.0) * 255.0));
+        }
+    capture::writePng(path, kBumpTexels, kBumpTexels, rgba);
+}
+
+std::string writeFloor(const std::string& folder, const char* glossMips) {
+    world::GltfBuilder g;
+    g.document()["images"] = json::array({{{"uri", "bumps.png"}}});
+    g.document()["textures"] = json::array({{{"source", 0}}});
+    const int floorMaterial = g.addMaterial({{"name", "glossy_bumps"},
+                                             {"pbrMetallicRoughness",
+                                              {{"baseColorFactor", {0.1f, 0.1f, 0.1f, 1.0f}},
+                                               {"metallicFactor", 0.0f},
+                                               {"roughnessFactor", 0.2f}}},
+                                             {"normalTexture", {{"index", 0}}}});
+    world::MeshData floor;
+    floor.name = "floor";
+    const float x0 = -150.0f, x1 = 150.0f, z0 = -500.0f, z1 = 10.0f;
+    floor.positions = {{x0, 0.0f, z0}, {x1, 0.0f, z0}, {x1, 0.0f, z1}, {x0, 0.0f, z1}};
+    floor.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
+    for (const glm::vec3& p : floor.positions)
+        floor.uv0.push_back({p.x / kTileMetres, p.z / kTileMetres});
+    floor.indices = {0, 2, 1, 0, 3, 2};
+    floor.material = floorMaterial;
+    g.addNode({{"name", "floor"}, {"mesh", g.addMesh(floor)}});
+    // The sun 8 degrees above the horizon, ahead of the camera: its light travels towards +z.
+    const float elevation = glm::radians(8.0f);
+    const int sun = g.addLight({{"type", "directional"}, {"intensity", 20000.0f}});
+    // -z (a light's forward) turned about +x by pi + elevation: (0, -sin e, cos e).
+    const glm::quat sunTurn = glm::angleAxis(float(M_PI) + elevation, glm::vec3(1.0f, 0.0f, 0.0f));
+    g.addNode({{"name", "sun"},
+               {"rotation", {sunTurn.x, sunTurn.y, sunTurn.z, sunTurn.w}},
+               {"extensions", {{"KHR_lights_punctual", {{"light", sun}}}}}});
+    g.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"gloss_mips", glossMips}}}}}});
+    const int camera = g.addCamera({{"name", "view"},
+                                    {"type", "perspective"},
+                                    {"perspective",
+                                     {{"yfov", 0.25f},
+                                      {"znear", 0.05f},
+                                      {"zfar", 1000.0f},
+                                      {"aspectRatio", float(kWidth) / float(kHeight)}}}});
+    const glm::quat look = glm::angleAxis(glm::radians(-6.5f), glm::vec3(1.0f, 0.0f, 0.0f));
+    g.addNode({{"name", "view"},
+               {"translation", vec({0.0f, kCameraHeight, 5.0f})},
+               {"rotation", {look.x, look.y, look.z, look.w}},
+               {"camera", camera},
+               {"extras", {{"onelight", {{"exposure", 9.0f}}}}}});
+    return g.write(folder, std::string("floor_") + glossMips);
+}
+
+// Metres along the floor from the camera to what pixel (x, y) sees at its centre; 0 above the
+// horizon.
+float floorDistance(const render::Camera& camera, float x, float y) {
+    const glm::mat4 inv =
+        glm::inverse(render::projectionMatrix(camera, float(kWidth) / float(kHeight), 1000.0f) *
+                     render::viewMatrix(camera));
+    const glm::vec4 far = inv * glm::vec4(2.0f * x / float(kWidth) - 1.0f,
+                                          2.0f * y / float(kHeight) - 1.0f, 1.0f, 1.0f);
+    const glm::vec3 d = glm::normalize(glm::vec3(far) / far.w - camera.position);
+    if (d.y >= -1e-4f) return 0.0f;
+    return camera.position.y / -d.y;
+}
+
+double luminance(const std::vector<float>& image, size_t pixel, size_t channels) {
+    return 0.2126 * double(image[pixel * channels]) + 0.7152 * double(image[pixel * channels + 1]) +
+           0.0722 * double(image[pixel * channels + 2]);
+}
+
+struct Band {
+    float near, far;  // metres
+};
+const Band kBands[] = {{4, 8}, {8, 16}, {16, 32}, {32, 64}, {64, 128}, {128, 400}};
+constexpr size_t kFarBand = 3;  // bands from here on have many texels per pixel
+
+struct BandError {
+    double rms = 0.0;  // sqrt(mean (L - L_ref)^2) / mean L_ref over the band's blocks
+    size_t blocks = 0;
+};
+
+// Blocks of kBlockW x kBlockH pixels whose pixels all see the band, compared by mean luminance.
+BandError bandError(const render::Camera& camera, const std::vector<float>& frame,
+                    const std::vector<float>& reference, const Band& band) {
+    double sumSq = 0.0, sumRef = 0.0;
+    BandError out;
+    for (uint32_t by = 0; by + kBlockH <= kHeight; by += kBlockH)
+        for (uint32_t bx = 0; bx + kBlockW <= kWidth; bx += kBlockW) {
+            double got = 0.0, want = 0.0;
+            bool inside = true;
+            for (uint32_t y = by; y < by + kBlockH && inside; ++y)
+                for (uint32_t x = bx; x < bx + kBlockW && inside; ++x) {
+                    const float d = floorDistance(camera, float(x) + 0.5f, float(y) + 0.5f);
+                    inside = d >= band.near && d < band.far;
+                    got += luminance(frame, size_t(y) * kWidth + x, 4);
+                    want += luminance(reference, size_t(y) * kWidth + x, 3);
+                }
+            if (!inside) continue;
+            sumSq += (got - want) * (got - want);
+            sumRef += want;
+            ++out.blocks;
+        }
+    if (out.blocks == 0 || sumRef <= 0.0) return out;
+    const double n = double(out.blocks);
+    out.rms = std::sqrt(sumSq / n) / (sumRef / n);
+    return out;
+}
+
+// reference | blit | wwii, each scaled by one exposure and the x/(1+x) curve.
+void writeComparison(const std::string& path, const std::vector<float>& reference,
+                     const std::vector<float>& blit, const std::vector<float>& wwii) {
+    double mean = 0.0;
+    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) mean += luminance(reference, i, 3);
+    const float scale = float(0.4 / std::max(mean / double(kWidth * kHeight), 1e-9));
+    std::vector<uint8_t> rgba(size_t(3 * kWidth) * kHeight * 4, 255);
+    const std::vector<float>* images[3] = {&reference, &blit, &wwii};
+    for (int k = 0; k < 3; ++k)
+        for (uint32_t y = 0; y < kHeight; ++y)
+            for (uint32_t x = 0; x < kWidth; ++x) {
+                const size_t channels = k == 0 ? 3 : 4, i = size_t(y) * kWidth + x;
+                for (size_t c = 0; c < 3; ++c) {
+                    const float v = (*images[k])[i * channels + c] * scale;
+                    const float display = std::pow(v / (1.0f + v), 1.0f / 2.2f);
+                    rgba[((size_t(y) * 3 * kWidth) + size_t(k) * kWidth + x) * 4 + c] =
+                        uint8_t(std::lround(255.0f * std::clamp(display, 0.0f, 1.0f)));
+                }
+            }
+    capture::writePng(path, 3 * kWidth, kHeight, rgba);
+}
+
+TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
+    const std::string folder = test::outputDir() + "/material_mips";
+    std::filesystem::create_directories(folder);
+    writeBumpNormalMap(folder + "/bumps.png");
+    const std::string blitGltf = writeFloor(folder, "blit");
+    const std::string wwiiGltf = writeFloor(folder, "wwii");
+
+    const std::string referencePath = folder + "/reference.exr";
+    const std::string command =
+        std::string(ONELIGHT_BAKE_PATH) + " reference " + wwiiGltf + " --camera view --size " +
+        std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --spp " +
+        std::to_string(kReferenceSpp) + " -o " + referencePath + " > /dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    const capture::FloatImage image = capture::readExr(referencePath);
+    ASSERT_EQ(image.width, kWidth);
+    ASSERT_EQ(image.height, kHeight);
+    std::vector<float> reference;
+    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i)
+        reference.insert(reference.end(),
+                         {image.rgba[i * 4], image.rgba[i * 4 + 1], image.rgba[i * 4 + 2]});
+
+    std::vector<float> frames[2];
+    render::Camera camera;
+    const std::string gltfs[2] = {blitGltf, wwiiGltf};
+    for (int k = 0; k < 2; ++k) {
+        const assets::LoadedLevel level =
+            test::bakeAndLoad(gltfs[k], folder + "/floor_" + std::to_string(k) + ".olpak");
+        ASSERT_TRUE(level.hasProcessedTextures);
+        render::FrameInputs inputs;
+        inputs.camera = render::cameraFromLevel(level.level.cameras.at(0));
+        camera = inputs.camera;
+        render::RendererOptions options;
+        options.width = kWidth;
+        options.height = kHeight;
+        const test::RenderedFrame rendered = test::renderOnce(level, options, inputs);
+        EXPECT_EQ(rendered.validationErrors, 0u);
+        frames[k] = rendered.frame.linearRgba;
+    }
+    writeComparison(folder + "/comparison.png", reference, frames[0], frames[1]);
+
+    for (size_t b = 0; b < std::size(kBands); ++b) {
+        const BandError blit = bandError(camera, frames[0], reference, kBands[b]);
+        const BandError wwii = bandError(camera, frames[1], reference, kBands[b]);
+        std::printf(
+            "[ mips ] %5.0f..%3.0f m: relative RMS error blit %.3f, wwii %.3f (%zu blocks)\n",
+            double(kBands[b].near), double(kBands[b].far), blit.rms, wwii.rms, blit.blocks);
+        ASSERT_GE(blit.blocks, 8u) << "band " << b;
+        if (b >= kFarBand) {
+            EXPECT_LE(wwii.rms, 0.5 * blit.rms) << "band " << b;
+        }
+    }
+}
+
+}  // namespace
