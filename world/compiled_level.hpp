@@ -239,7 +239,8 @@ struct LevelSettings {
     glm::vec3 skyRadiance{0.0f};   // cd/m^2, RGB: the uniform sky (0 = none), or skyImage's scale
     uint32_t skyImage = kNoIndex;  // into images: an equirectangular HDR sky (shaders/sky.glsl)
     DiffuseModel diffuseModel = DiffuseModel::kLambert;  // extras.onelight.diffuse
-    GlossMipMethod glossMips = GlossMipMethod::kWwii;    // extras.onelight.gloss_mips
+    // extras.onelight.gloss_mips: by default the method of lower error (docs/materials.md)
+    GlossMipMethod glossMips = GlossMipMethod::kBlackOps;
 };
 
 struct CompiledLevel {

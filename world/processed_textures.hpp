@@ -80,7 +80,7 @@ struct TextureFactors {
 }
 
 struct ProcessedTextures {
-    GlossMipMethod method = GlossMipMethod::kWwii;  // how the normal and gloss mips were made
+    GlossMipMethod method = GlossMipMethod::kBlackOps;  // how the normal and gloss mips were made
     std::vector<ProcessedTexture> textures;
     std::vector<MaterialTextureSlots> materials;  // one per level material, in order
 };
