@@ -138,11 +138,13 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
         package::placeImagesForPackage(result.level, output);
         const std::vector<uint8_t> bytes =
             packageBytes(result.level, result.baked, result.textures);
-        package::writeFileAtomically(output, bytes);
         if (!reportPath.empty()) {
             result.report.packageBytes = bytes.size();
             writeReport(reportPath, result.report);
         }
+        // The package last, and whole: an interrupt from here on is ignored (interrupt.hpp).
+        ignoreInterrupts();
+        package::writeFileAtomically(output, bytes);
         std::printf("baked %s (%zu bytes, quality %s%s)\n", output.c_str(), bytes.size(),
                     qualityName(options.quality),
                     options.shardCount > 1 ? (", shard " + std::to_string(options.shardIndex) +

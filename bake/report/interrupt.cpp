@@ -53,6 +53,14 @@ void installInterruptHandler(const char* tool) {
     ::sigaction(SIGTERM, &action, nullptr);
 }
 
+void ignoreInterrupts() {
+    struct sigaction action {};
+    action.sa_handler = SIG_IGN;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGINT, &action, nullptr);
+    ::sigaction(SIGTERM, &action, nullptr);
+}
+
 void noteStage(const char* stage) {
     StageName& name = stageName();
     const int idle = 1 - name.current.load();

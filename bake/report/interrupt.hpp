@@ -9,6 +9,11 @@ namespace onelight::bake {
 /// Installs the handler for SIGINT and SIGTERM; `tool` starts its message ("onelight-bake").
 void installInterruptHandler(const char* tool);
 
+/// From here on SIGINT and SIGTERM are ignored: called just before the package is written, so
+/// that a package renamed into place is never followed by "no package was written". Writing the
+/// package, once begun, finishes.
+void ignoreInterrupts();
+
 /// Records the stage now running; `stage` must outlive the process (a string literal, or a
 /// Progress's own name, which this copies).
 void noteStage(const char* stage);
