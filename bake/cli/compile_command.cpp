@@ -126,8 +126,7 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
         // textures are what the bake would give it.
         const world::ProcessedTextures textures =
             bake::processLevelTextures(source, source.glossMips);
-        const std::vector<package::RawSection> sections = {
-            package::encodeTextureSection(textures)};
+        const std::vector<package::RawSection> sections = {package::encodeTextureSection(textures)};
         const std::vector<uint8_t> bytes = package::serializePackage(result.level, sections);
         package::writeFileAtomically(output, bytes);
         printSummary(output, result.stats, bytes.size());

@@ -282,8 +282,7 @@ FloorAgreement normalMappedFloor(bool glossy) {
         // The diffuse weighted for energy conservation by the split-sum table (lighting.glsl).
         const glm::vec2 env = glsl::sampleEnvBrdfTable(glsl::envBrdfTableCoord(d.NoV, gloss));
         const float weight = glossy ? std::max(0.0f, 1.0f - (f0 * env.x + env.y)) : 1.0f;
-        return double(sun.intensity) *
-               (double(albedo * weight * d.NoL) / M_PI + double(specular));
+        return double(sun.intensity) * (double(albedo * weight * d.NoL) / M_PI + double(specular));
     };
     FloorAgreement out;
     for (uint32_t y = 0; y < size; ++y)

@@ -1,7 +1,7 @@
 // libFuzzer target: the .olpak reader, as the runtime reads a package: the core sections, then
-// the baked ones (lightmaps, shadow masks, grid, probes, visibility) and the texture stage's. Checksums are part of the
-// format, so most mutations stop at a CRC; the seed corpus's packages reach the deeper checks,
-// and `-use_value_profile=1` helps the fuzzer past the CRC comparisons.
+// the baked ones (lightmaps, shadow masks, grid, probes, visibility) and the texture stage's.
+// Checksums are part of the format, so most mutations stop at a CRC; the seed corpus's packages
+// reach the deeper checks, and `-use_value_profile=1` helps the fuzzer past the CRC comparisons.
 #include <cstddef>
 #include <cstdint>
 #include <span>

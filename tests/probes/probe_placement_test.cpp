@@ -12,7 +12,7 @@
 #include "world/compile/static_split.hpp"
 #include "world/error.hpp"
 
-    using namespace onelight;
+using namespace onelight;
 using namespace onelight::bake;
 
 namespace {

@@ -773,8 +773,8 @@ TEST(RenderBaked, GlossyFloorReadsTheProbeMipOfItsGlossTimesItsIrradiance) {
         const glm::vec3 c = (1.0f - t) * mipColour[below] + t * mipColour[std::min(below + 1, 2)];
         const glm::vec2 env = glsl::sampleEnvBrdfTable(glsl::envBrdfTableCoord(NoV, gloss));
         const float specularAlbedo = 0.04f * env.x + env.y;
-        const glm::vec3 want = (1.0f - specularAlbedo) * 0.05f * scene.sky +
-                               specularAlbedo * c * glsl::PI * scene.sky;
+        const glm::vec3 want =
+            (1.0f - specularAlbedo) * 0.05f * scene.sky + specularAlbedo * c * glsl::PI * scene.sky;
         const glm::vec3 got = pixel(linear, at.x, at.y);
         const float tolerance = 0.015f * std::max({want.x, want.y, want.z});
         for (int ch = 0; ch < 3; ++ch)
