@@ -158,28 +158,6 @@ BandError bandError(const render::Camera& camera, const std::vector<float>& fram
     return out;
 }
 
-// reference | blit | wwii, each scaled by one exposure and the x/(1+x) curve.
-void writeComparison(const std::string& path, const std::vector<float>& reference,
-                     const std::vector<float>& blit, const std::vector<float>& wwii) {
-    double mean = 0.0;
-    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i) mean += luminance(reference, i, 3);
-    const float scale = float(0.4 / std::max(mean / double(kWidth * kHeight), 1e-9));
-    std::vector<uint8_t> rgba(size_t(3 * kWidth) * kHeight * 4, 255);
-    const std::vector<float>* images[3] = {&reference, &blit, &wwii};
-    for (int k = 0; k < 3; ++k)
-        for (uint32_t y = 0; y < kHeight; ++y)
-            for (uint32_t x = 0; x < kWidth; ++x) {
-                const size_t channels = k == 0 ? 3 : 4, i = size_t(y) * kWidth + x;
-                for (size_t c = 0; c < 3; ++c) {
-                    const float v = (*images[k])[i * channels + c] * scale;
-                    const float display = std::pow(v / (1.0f + v), 1.0f / 2.2f);
-                    rgba[((size_t(y) * 3 * kWidth) + size_t(k) * kWidth + x) * 4 + c] =
-                        uint8_t(std::lround(255.0f * std::clamp(display, 0.0f, 1.0f)));
-                }
-            }
-    capture::writePng(path, 3 * kWidth, kHeight, rgba);
-}
-
 TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
     const std::string folder = test::outputDir() + "/material_mips";
     std::filesystem::create_directories(folder);
@@ -217,7 +195,9 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
         EXPECT_EQ(rendered.validationErrors, 0u);
         frames[k] = rendered.frame.linearRgba;
     }
-    writeComparison(folder + "/comparison.png", reference, frames[0], frames[2]);
+    // reference | blit | black ops | wwii
+    test::writeReferenceComparison(folder + "/comparison.png", kWidth, kHeight, reference,
+                                   {&frames[0], &frames[1], &frames[2]}, 0.4f);
 
     for (size_t b = 0; b < std::size(kBands); ++b) {
         const BandError blit = bandError(camera, frames[0], reference, kBands[b]);

@@ -185,30 +185,6 @@ StripError stripError(const render::Camera& camera, const std::vector<float>& fr
     return e;
 }
 
-// reference | with the probe | without, side by side, x / (1 + x) after a common scale, sRGB
-// gamma: a picture of where the errors are.
-void writeComparison(const std::string& path, const std::vector<float>& reference,
-                     const std::vector<float>& with, const std::vector<float>& without) {
-    double mean = 0.0;
-    for (size_t i = 0; i < size_t(kWidth) * kHeight; ++i)
-        mean += double(luminance(reference, i, 3));
-    const float scale = float(0.5 / std::max(mean / double(kWidth * kHeight), 1e-9));
-    std::vector<uint8_t> rgba(size_t(3 * kWidth) * kHeight * 4, 255);
-    const std::vector<float>* images[3] = {&reference, &with, &without};
-    for (int k = 0; k < 3; ++k)
-        for (uint32_t y = 0; y < kHeight; ++y)
-            for (uint32_t x = 0; x < kWidth; ++x) {
-                const size_t channels = k == 0 ? 3 : 4, i = size_t(y) * kWidth + x;
-                for (size_t c = 0; c < 3; ++c) {
-                    const float v = (*images[k])[i * channels + c] * scale;
-                    const float display = std::pow(v / (1.0f + v), 1.0f / 2.2f);
-                    rgba[((size_t(y) * 3 * kWidth) + size_t(k) * kWidth + x) * 4 + c] =
-                        uint8_t(std::lround(255.0f * std::clamp(display, 0.0f, 1.0f)));
-                }
-            }
-    capture::writePng(path, 3 * kWidth, kHeight, rgba);
-}
-
 TEST(RenderProbes, GlossyFloorIsCloserToThePathTracerWithTheProbe) {
     const std::string folder = test::outputDir() + "/probe_room";
     std::filesystem::create_directories(folder);
@@ -244,8 +220,8 @@ TEST(RenderProbes, GlossyFloorIsCloserToThePathTracerWithTheProbe) {
     const test::RenderedFrame without = test::renderOnce(level, options, inputs);
     EXPECT_EQ(with.validationErrors, 0u);
     EXPECT_EQ(without.validationErrors, 0u);
-    writeComparison(folder + "/comparison.png", reference, with.frame.linearRgba,
-                    without.frame.linearRgba);
+    test::writeReferenceComparison(folder + "/comparison.png", kWidth, kHeight, reference,
+                                   {&with.frame.linearRgba, &without.frame.linearRgba});
 
     for (int strip = 0; strip < 3; ++strip) {
         const StripError a = stripError(inputs.camera, with.frame.linearRgba, reference, strip);

@@ -2,6 +2,8 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -11,6 +13,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include "capture/capture.hpp"
 #include "vk/context.hpp"
 
 namespace onelight::test {
@@ -338,6 +341,35 @@ RenderedFrame renderOnce(const assets::LoadedLevel& level, const render::Rendere
     vk::destroyContext(ctx);
     result.validationErrors = ctx.validationCounts.errors.load();
     return result;
+}
+
+void writeReferenceComparison(const std::string& path, uint32_t width, uint32_t height,
+                              const std::vector<float>& reference,
+                              const std::vector<const std::vector<float>*>& frames, float mean) {
+    const size_t pixels = size_t(width) * height;
+    const auto luminanceOf = [](const std::vector<float>& image, size_t pixel, size_t channels) {
+        return 0.2126 * double(image[pixel * channels]) +
+               0.7152 * double(image[pixel * channels + 1]) +
+               0.0722 * double(image[pixel * channels + 2]);
+    };
+    double sum = 0.0;
+    for (size_t i = 0; i < pixels; ++i) sum += luminanceOf(reference, i, 3);
+    const float scale = float(double(mean) / std::max(sum / double(pixels), 1e-9));
+    const uint32_t columns = uint32_t(frames.size() + 1);
+    std::vector<uint8_t> rgba(size_t(columns) * pixels * 4, 255);
+    for (uint32_t k = 0; k < columns; ++k) {
+        const std::vector<float>& image = k == 0 ? reference : *frames[k - 1];
+        const size_t channels = k == 0 ? 3 : 4;
+        for (uint32_t y = 0; y < height; ++y)
+            for (uint32_t x = 0; x < width; ++x)
+                for (size_t c = 0; c < 3; ++c) {
+                    const float v = image[(size_t(y) * width + x) * channels + c] * scale;
+                    const float display = std::pow(v / (1.0f + v), 1.0f / 2.2f);
+                    rgba[((size_t(y) * columns * width) + size_t(k) * width + x) * 4 + c] =
+                        uint8_t(std::lround(255.0f * std::clamp(display, 0.0f, 1.0f)));
+                }
+    }
+    capture::writePng(path, columns * width, height, rgba);
 }
 
 }  // namespace onelight::test

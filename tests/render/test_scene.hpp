@@ -98,4 +98,12 @@ struct RenderedFrame {
 RenderedFrame renderOnce(const assets::LoadedLevel& level, const render::RendererOptions& options,
                          const render::FrameInputs& inputs, int frames = 1);
 
+/// The reference (linear RGB, 3 floats a pixel) and frames (linear RGBA, 4 floats) of
+/// `width` x `height` side by side in one PNG: a common scale putting the reference's mean
+/// luminance at `mean`, then x / (1 + x) and sRGB gamma: a picture of where the errors are.
+void writeReferenceComparison(const std::string& path, uint32_t width, uint32_t height,
+                              const std::vector<float>& reference,
+                              const std::vector<const std::vector<float>*>& frames,
+                              float mean = 0.5f);
+
 }  // namespace onelight::test
