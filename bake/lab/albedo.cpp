@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "reflection_dots.hpp"
 #include "shading.hpp"
 
 namespace onelight::lab {
@@ -12,11 +13,7 @@ using namespace onelight::glsl;
 
 // f NoL (F = 1) of the shared float BRDF for one reflection.
 double sharedLobe(const SpecularModel& model, float gloss, const Reflection& r) {
-    BrdfDots d;
-    d.NoV = clamp(float(r.NoV), MIN_NOV, 1.0f);
-    d.NoL = float(r.NoL);
-    d.LoH = float(r.VoH);
-    d.NxH2 = float(r.sin2H);
+    const BrdfDots d = dotsOf(r);
     double D = specularD(model.ndf, d.NxH2, gloss);
     double V = specularV(model.ndf, model.vis, d.NoV, d.NoL, d.LoH, gloss);
     return 0.25 * D * V * r.NoL;

@@ -12,6 +12,7 @@
 
 #include "albedo.hpp"
 #include "models.hpp"
+#include "reflection_dots.hpp"
 #include "shading.hpp"
 
 using namespace onelight::lab;
@@ -24,11 +25,7 @@ double coneShare(double mu, double gloss, double ao) {
     const SpecularModel& ggx = findModel("ggx_smith");
     const double cosCone = std::sqrt(std::max(0.0, 1.0 - ao));
     const auto sums = integrateHalfVectors<2>(mu, lobeWidth(ggx, gloss), [&](const Reflection& r) {
-        BrdfDots d;
-        d.NoV = clamp(float(r.NoV), MIN_NOV, 1.0f);
-        d.NoL = float(r.NoL);
-        d.LoH = float(r.VoH);
-        d.NxH2 = float(r.sin2H);
+        const BrdfDots d = dotsOf(r);
         const double lobe = double(specularLobe(NDF_GGX, VIS_SMITH_CORRELATED, FRESNEL_NONE,
                                                 glm::vec3(1.0f), float(gloss), d)
                                        .x) *

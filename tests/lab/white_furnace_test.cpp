@@ -11,6 +11,7 @@
 #include "albedo.hpp"
 #include "env_brdf_table.hpp"
 #include "models.hpp"
+#include "reflection_dots.hpp"
 #include "shading.hpp"
 
 using namespace onelight::lab;
@@ -29,11 +30,7 @@ double furnace(int materialClass, int diffuseModel, double f0, double gloss, dou
                               ? sampleEnvBrdfTable(envBrdfTableCoord(float(mu), g))
                               : glm::vec2(0.0f);
     const auto total = integrateHalfVectors<1>(mu, lobeWidth(ggx, gloss), [&](const Reflection& r) {
-        BrdfDots d;
-        d.NoV = clamp(float(r.NoV), MIN_NOV, 1.0f);
-        d.NoL = float(r.NoL);
-        d.LoH = float(r.VoH);
-        d.NxH2 = float(r.sin2H);
+        const BrdfDots d = dotsOf(r);
         const glm::vec3 f = surfaceReflectance(materialClass, diffuseModel, glm::vec3(1.0f),
                                                glm::vec3(float(f0)), g, env, 1.0f, d);
         return Vec<1>{double(f.x) * 4.0 * r.VoH};
