@@ -20,6 +20,9 @@ std::string usage() {
         {"--capture out/NAME", "write NAME.png, NAME.exr and NAME.json (default: none)"},
         {"--msaa N",
          "samples, the nearest supported is used (default: " + std::to_string(d.msaa) + ")"},
+        {"--anisotropy N",
+         "material textures' anisotropic filtering, 1 (off)..16 taps, clamped to the device's "
+         "(default: " + std::to_string(d.anisotropy) + ")"},
         {"--render-scale S",
          "window only: draw at S (0.25..1) of the window's size and scale up to it (default: "
          "0.5 on a CPU device such as lavapipe, else 1)"},
@@ -137,6 +140,10 @@ CommandLine parseCommandLine(int argc, char** argv) {
         } else if (a == "--msaa" && hasValue) {
             if (!parseUnsigned(argv[++i], 1, 64, out.msaa))
                 throw world::Error(std::string("--msaa '") + argv[i] + "': expected 1, 2, 4 or 8");
+        } else if (a == "--anisotropy" && hasValue) {
+            if (!parseUnsigned(argv[++i], 1, 16, out.anisotropy))
+                throw world::Error(std::string("--anisotropy '") + argv[i] +
+                                   "': expected an integer in [1, 16]");
 
         } else if (a == "--frames" && hasValue) {
             if (!parseUnsigned(argv[++i], 1, 1u << 30, out.frames))

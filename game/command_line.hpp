@@ -15,6 +15,7 @@ struct CommandLine {
     std::string camera;   // NAME or x,y,z,yaw,pitch; empty = the level's first or automatic
     std::string capture;  // out/NAME: writes NAME.png, NAME.exr, NAME.json
     uint32_t msaa = 2;
+    uint32_t anisotropy = 1;        // material textures' anisotropic filtering taps, 1 = off
     float renderScale = 0.0f;       // --render-scale: the window's frame at this fraction of its
                                     // size; 0 = automatic (0.5 on a CPU device, else 1)
     uint32_t frames = 0;            // window: quit after this many frames (0 = until Esc)

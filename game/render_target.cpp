@@ -55,6 +55,7 @@ void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::Load
             options.height = scaled(t.window.swapchain.extent.height, t.renderScale);
         }
         options.requestedMsaa = cl.msaa;
+        options.anisotropy = float(cl.anisotropy);
         options.visibilityCulling = cl.visibilityCulling;
         t.frameWidth = options.width;
         t.frameHeight = options.height;

@@ -32,6 +32,7 @@ std::string referenceUsage() {
           "720 rows at the camera's aspect, else 1280x720"},
          {"--sky CD_PER_M2", "a uniform sky's radiance", "the level's extras.onelight.sky, or 0"},
          {"--threads N", "worker threads", "every core"},
+         {"--seed N", "the paths' seed, 0..2^32-1: another seed, an independent estimate", "0"},
          patchLevelOption(),
          {"-h, --help", "this help", ""}});
 }
@@ -39,7 +40,7 @@ std::string referenceUsage() {
 int runReferenceCommand(const std::vector<std::string>& arguments) {
     if (printedHelp(arguments, referenceUsage())) return 0;
     std::string input, output, cameraName;
-    uint32_t width = 0, height = 0, spp = 0;
+    uint32_t width = 0, height = 0, spp = 0, seed = 0;
     int threads = 0;
     float sky = -1.0f;  // < 0: the level's sky
     world::Quake3Options quake3;
@@ -63,6 +64,12 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
                 spp = static_cast<uint32_t>(std::stoul(arguments[++i]));
             } else if (a == "--threads" && hasValue) {
                 threads = std::stoi(arguments[++i]);
+            } else if (a == "--seed" && hasValue) {
+                double v = 0.0;
+                if (!parseNumber(arguments[++i], 0, 4294967295.0, v) || v != std::floor(v))
+                    throw std::invalid_argument("--seed " + arguments[i] +
+                                                "; expected an integer in [0, 2^32 - 1]");
+                seed = static_cast<uint32_t>(v);
             } else if (a == "--sky" && hasValue) {
                 sky = std::stof(arguments[++i]);
                 if (!(sky >= 0.0f) || !std::isfinite(sky)) throw std::invalid_argument("--sky");
@@ -118,7 +125,7 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
         RayCounts rays;
         Progress progress("reference", height, true);
         const ReferenceImage image =
-            renderReference(scene, lights, *camera, width, height, spp, {}, &progress, rays);
+            renderReference(scene, lights, *camera, width, height, spp, {}, &progress, rays, seed);
         progress.finish();
         writeExr(output, image);
         std::printf("reference %s: %ux%u, %u spp, %llu rays, %.2f Mrays/s\n", output.c_str(), width,

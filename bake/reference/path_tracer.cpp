@@ -17,7 +17,7 @@ constexpr uint32_t kReferenceIrradiancePass = 5;
 ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
                                const world::Camera& camera, uint32_t width, uint32_t height,
                                uint32_t spp, const TransportSettings& transport, Progress* progress,
-                               RayCounts& rays) {
+                               RayCounts& rays, uint32_t seed) {
     ReferenceImage image;
     image.width = width;
     image.height = height;
@@ -34,7 +34,7 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
         RayCounts& local = counts.local();
         for (uint32_t y = rows.begin(); y != rows.end(); ++y) {
             for (uint32_t x = 0; x < width; ++x) {
-                Rng rng{seedFrom(x, y, 0, kReferencePass)};
+                Rng rng{seedFrom(x, y, seed, kReferencePass)};
                 glm::dvec3 sum(0.0);
                 for (uint32_t s = 0; s < spp; ++s) {
                     const float sx = (float(x) + rng.next()) / float(width) * 2.0f - 1.0f;

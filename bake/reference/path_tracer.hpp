@@ -23,7 +23,8 @@ struct ReferenceImage {
 };
 
 /// Renders `camera`'s view with `spp` jittered paths per pixel; pixel (x, y) seeds its own
-/// stream, so the image does not depend on threads.
+/// stream from (x, y, seed), so the image does not depend on threads, and two seeds give two
+/// independent estimates (their difference measures the reference's own noise).
 /*
    L(pixel) = (1 / A) int_pixel L(camera, w(s)) ds,  s uniform in the pixel (pdf 1 / A):
                       +---------------------------------------------+
@@ -34,7 +35,7 @@ struct ReferenceImage {
                                              const world::Camera& camera, uint32_t width,
                                              uint32_t height, uint32_t spp,
                                              const TransportSettings& transport, Progress* progress,
-                                             RayCounts& rays);
+                                             RayCounts& rays, uint32_t seed = 0);
 
 /// Irradiance (lux, RGB) at a surface point with every light at full strength: the reference
 /// the lightmaps are checked against. An estimator independent of the lightmap's: uniform

@@ -123,6 +123,7 @@ vk::ContextOptions renderContextOptions(RenderDeviceFeatures& features,
     features.vulkan13.dynamicRendering = VK_TRUE;
     options.features.imageCubeArray = VK_TRUE;  // the probes' cube array
     options.features.depthBiasClamp = VK_TRUE;  // the sun shadow map's bias limit
+    options.features.samplerAnisotropy = VK_TRUE;  // material textures at grazing view
     options.featureChain = &features.vulkan13;
     return options;
 }

@@ -132,6 +132,15 @@ struct RendererOptions {
     // Static surfaces outside the camera cell's potentially visible set are not drawn
     // (world/visibility.hpp). The frame is the same either way (a test checks it).
     bool visibilityCulling = true;
+    // Anisotropic filtering of the material textures (1: off, else up to 16 taps along a
+    // footprint's long axis, clamped to the device's limit). At grazing view a pixel's footprint
+    // on the surface is long and thin: an isotropic mip is chosen by its long axis and blurs
+    // across it. Off by default: with 16 taps from a finer mip, the spread of the normals along
+    // the long axis is averaged into a renormalized normal and lost from the gloss, so a bumpy
+    // glossy floor turns back into a mirror (onelight_render_material_mips_test: 2-6x the
+    // isotropic error in every band). It pays once the shader folds the filtered normal's
+    // shortening into gloss (docs/materials.md, "Anisotropic filtering").
+    float anisotropy = 1.0f;
 };
 
 /// What the renderer settled on.

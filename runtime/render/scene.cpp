@@ -224,7 +224,12 @@ VkSampler samplerFor(RendererState& s, const world::Sampler& sampler) {
                          uint64_t(sampler.wrapS) << 32 | uint64_t(sampler.wrapT) << 48;
     auto found = s.samplers.find(key);
     if (found != s.samplers.end()) return found->second;
-    VkSampler created = vk::createSampler(*s.ctx, samplerDesc(sampler));
+    vk::SamplerDesc desc = samplerDesc(sampler);
+    // Anisotropy only where there are mips to choose from (NEAREST and LINEAR have none).
+    if (desc.maxLod != 0.0f)
+        desc.maxAnisotropy = std::min(s.options.anisotropy,
+                                      s.ctx->properties.limits.maxSamplerAnisotropy);
+    VkSampler created = vk::createSampler(*s.ctx, desc);
     s.samplers[key] = created;
     return created;
 }

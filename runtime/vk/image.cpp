@@ -266,6 +266,8 @@ VkSampler createSampler(const Context& ctx, const SamplerDesc& desc) {
     info.addressModeU = desc.addressU;
     info.addressModeV = desc.addressV;
     info.addressModeW = desc.addressW;
+    info.anisotropyEnable = desc.maxAnisotropy > 1.0f ? VK_TRUE : VK_FALSE;
+    info.maxAnisotropy = std::max(desc.maxAnisotropy, 1.0f);
     info.compareEnable = desc.compare ? VK_TRUE : VK_FALSE;
     info.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     info.minLod = 0.0f;

@@ -116,6 +116,9 @@ struct SamplerDesc {
     VkSamplerAddressMode addressW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
     bool compare = false;  // a depth-compare (shadow) sampler, LESS_OR_EQUAL
     float maxLod = VK_LOD_CLAMP_NONE;
+    // Anisotropic filtering's most taps along the footprint's long axis; <= 1 is off (the
+    // device feature samplerAnisotropy must be enabled for more).
+    float maxAnisotropy = 1.0f;
 };
 [[nodiscard]] VkSampler createSampler(const Context& ctx, const SamplerDesc& desc);
 
