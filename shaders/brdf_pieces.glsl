@@ -6,8 +6,9 @@
 
 #include "brdf.glsl"
 #include "env_brdf_fit.glsl"
+#include "material.glsl"
 
-#define BRDF_PIECE_COUNT 25
+#define BRDF_PIECE_COUNT 28
 
 float brdfPiece(int piece, vec4 dots, vec4 params) {
     float NoV = dots.x;
@@ -48,6 +49,9 @@ float brdfPiece(int piece, vec4 dots, vec4 params) {
         case 22: return specularLobe(NDF_BECKMANN, VIS_SMITH_CORRELATED, FRESNEL_SCHLICK, vec3(f0), gloss, d).x;
         case 23: return specularLobe(NDF_GGX, VIS_SMITH_CORRELATED, FRESNEL_SCHLICK, vec3(f0), gloss, d).x;
         case 24: return Fd_Chan(NoV, NoL, LoH, NxH2, gloss);
+        case 25: return ggxExcessArea(ggxAlpha_fromGloss(gloss));
+        case 26: return gloss_fromAverageNormalDistance(NxH2);
+        case 27: return gloss_withFilteredNormal(gloss, vec3(NoV, NoL, LoH) * 0.57735f);
     }
     return 0.0f;
 }

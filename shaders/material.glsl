@@ -78,4 +78,52 @@ vec3 normal_fromTangentSpace(vec3 texel, float scale, vec3 n, vec3 t, float tang
     return mapped * inversesqrt(len2);
 }
 
+// The GGX lobe's microsurface area per unit projected area, minus 1 (Chan 2018, "Material
+// Advances in Call of Duty: WWII", sec. 2.1: the lobe's area-weighted average normal has length
+// 1 / A). Closed form of A, the integral of D_GGX over the hemisphere, for alpha <= 1:
+/*
+   A = alpha^2 int_0^inf sqrt(1 + u) / (alpha^2 + u)^2 du        (u = tan^2 theta_m)
+     = 1 + alpha^2 atanh(b) / b,   b = sqrt(1 - alpha^2),  atanh(b) = log((1 + b) / alpha)
+                      +-----------------------------------------------+
+                      | A - 1 = alpha^2 log((1 + b) / alpha) / b      |
+                      +-----------------------------------------------+
+*/
+// (1 - b^2 = alpha^2 removes the cancellation of (1 + b) / (1 - b)); atanh(b) / b = 1 + b^2 / 3 +
+// O(b^4) near alpha = 1 (gloss 0: A = 2). Matches bake::ggxLobeStatistics's quadrature to 2e-12.
+float ggxExcessArea(float alpha) {
+    float b = sqrt(max(1.0f - alpha * alpha, 0.0f));
+    float ratio = b < 1e-3f ? 1.0f + b * b * (1.0f / 3.0f) : log((1.0f + b) / alpha) / b;
+    return alpha * alpha * ratio;
+}
+
+// Chan 2018, sec. 2.1 and 3: the gloss whose GGX lobe has the average normal length 1 - d. The
+// rational fit of bake::averageNormalLengthFit, P3 / Q2 in x = (-log2 d - 1) / 13.2809 (the
+// table's range, gloss 0 to 1), max error 4.6e-4 in gloss (tests/textures checks these numbers
+// against the fit). d = 0 gives 1; NaN gives 0 (a broken fetch should not sparkle).
+float gloss_fromAverageNormalDistance(float d) {
+    if (!(d >= 0.0f)) return 0.0f;
+    if (d == 0.0f) return 1.0f;
+    float x = saturate((-log2(d) - 1.0f) * (1.0f / 13.280911336918688f));
+    float p = 4.55163588e-4f + x * (4.26408704f + x * (50.6270528f + x * 93.4651985f));
+    float q = 1.0f + x * (27.6837885f + x * 119.638839f);
+    return saturate(p / q);
+}
+
+// Toksvig 2005, "Mipmapping Normal Maps", in Chan 2018's terms: a filtered normal-map fetch
+// (bilinear, trilinear or anisotropic) averages unit texels n_i with weights w_i into a vector
+// shorter than 1 by their spread. Each texel's lobe has the average normal n_i / A, so the
+// mixture's has length |sum w_i n_i| / A: its distance from a mirror is
+//   d = 1 - (1 - u) / A = (e + u) / (1 + e),   e = A - 1,  u = 1 - |n_f|,
+// and the gloss becomes that of the lobe with this distance (never glossier). `filtered` is the
+// fetched texel decoded to [-1, 1] (before the normal scale). An 8-bit texel decodes to a vector
+// whose length misses 1 by up to (|x| + |y| + |z|) / 255 (each component rounds by up to 1/255):
+// that much shortening is quantization, not spread, and is not counted.
+float gloss_withFilteredNormal(float gloss, vec3 filtered) {
+    float quantization = (abs(filtered.x) + abs(filtered.y) + abs(filtered.z)) * (1.0f / 255.0f);
+    float u = 1.0f - length(filtered) - quantization;
+    if (!(u > 0.0f)) return gloss;
+    float e = ggxExcessArea(ggxAlpha_fromGloss(gloss));
+    return min(gloss, gloss_fromAverageNormalDistance((e + u) / (1.0f + e)));
+}
+
 #endif

@@ -99,9 +99,12 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
         const glm::vec3 tangent(a.tangent);
         const glm::vec3 t = tangent - n * glm::dot(n, tangent);
         const float tl = glm::length(t);
+        const glm::vec3 normalTexel(texel(materials, set.normal, a, width));
         if (tl > 1e-6f)
-            n = glsl::normal_fromTangentSpace(glm::vec3(texel(materials, set.normal, a, width)),
-                                              normalScale, n, t / tl, a.tangent.w);
+            n = glsl::normal_fromTangentSpace(normalTexel, normalScale, n, t / tl, a.tangent.w);
+        // The filter's spread of the normals folds into the gloss, as forward.frag does.
+        if (m.materialClass != world::MaterialClass::kLambert)
+            s.bsdf.gloss = glsl::gloss_withFilteredNormal(s.bsdf.gloss, normalTexel * 2.0f - 1.0f);
     }
     s.shadingNormal = n;
     return s;

@@ -60,7 +60,10 @@ const char* pieceName(int piece) {
                                         "lobe BlinnPhong/SchlickSmith/Schlick",
                                         "lobe Beckmann/SmithCorrelated/Schlick",
                                         "lobe GGX/SmithCorrelated/Schlick",
-                                        "Fd_Chan"};
+                                        "Fd_Chan",
+                                        "ggxExcessArea",
+                                        "gloss_fromAverageNormalDistance",
+                                        "gloss_withFilteredNormal"};
     return piece < int(std::size(names)) ? names[piece] : "?";
 }
 

@@ -261,6 +261,80 @@ TEST(GlossTables, RationalFits) {
     EXPECT_LT(worst, 5e-4);
 }
 
+// The runtime's fold of a filtered normal-map fetch into gloss (shaders/material.glsl), in float,
+// against the double tables and closed forms of bake/textures.
+TEST(GlossTables, ShaderFoldOfAFilteredNormal) {
+    // The shader's excess area against the closed form; its fit against the fit.
+    double worstArea = 0.0, worstFit = 0.0;
+    for (int i = 0; i <= 1000; ++i) {
+        const double g = i / 1000.0;
+        const double area = double(glsl::ggxExcessArea(glsl::ggxAlpha_fromGloss(float(g))));
+        worstArea = std::max(worstArea, std::abs(area / excessAreaClosedForm(g) - 1.0));
+        const double d = std::exp2(-16.0 * g);  // 1 .. 2^-16, past both ends of the table
+        worstFit = std::max(worstFit,
+                            std::abs(double(glsl::gloss_fromAverageNormalDistance(float(d))) -
+                                     bake::gloss_fromDistance(bake::averageNormalLengthFit(), d)));
+    }
+    std::printf("  ggxExcessArea: max relative error %.2e; fit in float: max %.2e in gloss\n",
+                worstArea, worstFit);
+    EXPECT_LT(worstArea, 2e-5);  // float alpha (exp2, sqrt) and log: a few ulps of alpha^2
+    EXPECT_LT(worstFit, 2e-5);   // the same P3/Q2 in float
+    EXPECT_EQ(glsl::gloss_fromAverageNormalDistance(0.0f), 1.0f);
+    EXPECT_EQ(glsl::gloss_fromAverageNormalDistance(std::nanf("")), 0.0f);
+
+    Random random{17};
+    // Unit normals rounded to 8-bit texels, as the normal textures hold them, keep their gloss.
+    for (int i = 0; i < 20000; ++i) {
+        const double z = random.next(), phi = 2.0 * kPi * random.next();
+        const double r = std::sqrt(1.0 - z * z);
+        const glm::dvec3 n(r * std::cos(phi), r * std::sin(phi), z);
+        glm::vec3 texel;
+        for (int c = 0; c < 3; ++c)
+            texel[c] = float(std::lround((0.5 + 0.5 * n[c]) * 255.0)) / 255.0f * 2.0f - 1.0f;
+        const float g = float(random.next());
+        ASSERT_EQ(glsl::gloss_withFilteredNormal(g, texel), g) << "texel " << i;
+    }
+    // A fetch that averages spread normals: the gloss of the lobe whose average normal is the
+    // mixture's (the double tables), never glossier; and the offline WWII mip of the same texels
+    // agrees where the spread is far above the quantization allowance.
+    double worstTable = 0.0, worstMip = 0.0;
+    for (int i = 0; i < 2000; ++i) {
+        const float g = float(random.next());
+        const double spread = 0.05 + 0.6 * random.next();  // slopes
+        NormalGlossLevel level{2, 2, {}, {}};
+        for (int k = 0; k < 4; ++k) {
+            const double phi = 2.0 * kPi * random.next();
+            level.normals.push_back(glm::normalize(glm::vec3(
+                glm::dvec3(spread * std::cos(phi), spread * std::sin(phi), 1.0))));
+            level.gloss.push_back(g);
+        }
+        const glm::vec3 mean =
+            0.25f * (level.normals[0] + level.normals[1] + level.normals[2] + level.normals[3]);
+        const float folded = glsl::gloss_withFilteredNormal(g, mean);
+        EXPECT_LE(folded, g);
+        const double allowance =
+            double(std::abs(mean.x) + std::abs(mean.y) + std::abs(mean.z)) / 255.0;
+        const double u = 1.0 - glm::length(glm::dvec3(mean)) - allowance;
+        if (u > 0.0) {
+            const double length = (1.0 - u) * bake::averageNormalLength_fromGloss(g);
+            worstTable = std::max(
+                worstTable, std::abs(double(folded) - bake::gloss_fromAverageNormalLength(length)));
+        }
+        if (1.0 - glm::length(glm::dvec3(mean)) > 10.0 * allowance) {
+            const bake::NormalGlossChain chain = bake::buildNormalGlossMips(level, MipMethod::Wwii);
+            worstMip = std::max(worstMip, std::abs(double(folded) - double(chain[1].gloss[0])));
+        }
+    }
+    std::printf("  fold against the tables: max %.2e in gloss; against the offline WWII mip "
+                "(spread > 10x the allowance): max %.2e\n",
+                worstTable, worstMip);
+    EXPECT_LT(worstTable, 1e-3);  // the fit's 4.6e-4 and float
+    // The allowance shortens d by at most a tenth: log2 of 0.9 over the table's slope of about
+    // 13.3 units per gloss gives 0.011, with the fit's error 0.012.
+    EXPECT_LT(worstMip, 0.012);
+}
+
+
 // ---------------------------------------------------------------------------------------------
 // Mip chains
 

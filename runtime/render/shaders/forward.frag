@@ -169,9 +169,10 @@ void main() {
     if (hasTexture(m, TEXTURE_NORMAL)) {
         vec3 t = inTangent.xyz - geometricNormal * dot(geometricNormal, inTangent.xyz);
         float tl = length(t);
-        if (tl > 1e-6)
-            n = normal_fromTangentSpace(texture(normalTexture, inUv0).rgb, m.params.z, geometricNormal,
-                                        t / tl, inTangent.w);
+        vec3 texel = texture(normalTexture, inUv0).rgb;
+        if (tl > 1e-6) n = normal_fromTangentSpace(texel, m.params.z, geometricNormal, t / tl, inTangent.w);
+        // The filter's spread of the normals under this pixel folds into its gloss.
+        if (MATERIAL_CLASS != MATERIAL_LAMBERT) gloss = gloss_withFilteredNormal(gloss, texel * 2.0 - 1.0);
     }
     vec3 toCamera = frame.cameraPosition.xyz - p;
     float viewDistance = length(toCamera);
