@@ -102,8 +102,9 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
         const glm::vec3 normalTexel(texel(materials, set.normal, a, width));
         if (tl > 1e-6f)
             n = glsl::normal_fromTangentSpace(normalTexel, normalScale, n, t / tl, a.tangent.w);
-        // The filter's spread of the normals folds into the gloss, as forward.frag does.
-        if (m.materialClass != world::MaterialClass::kLambert)
+        // The filter's spread of the normals folds into the gloss, as forward.frag does; a point
+        // sample (the reference's camera rays, footprint 0) sees one normal, no mixture.
+        if (m.materialClass != world::MaterialClass::kLambert && width > 0.0f)
             s.bsdf.gloss = glsl::gloss_withFilteredNormal(s.bsdf.gloss, normalTexel * 2.0f - 1.0f);
     }
     s.shadingNormal = n;
