@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <span>
 
@@ -201,6 +202,7 @@ std::optional<MergeStamp> readMergeStamp(const WorkFolder& work) {
 }
 
 std::string hostName() {
+    if (const char* node = std::getenv("SLURMD_NODENAME"); node && *node) return node;
     char name[256] = {};
     if (gethostname(name, sizeof name - 1) != 0) return "unknown";
     return name;

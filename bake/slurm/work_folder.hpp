@@ -81,7 +81,7 @@ void writeShardStamp(const WorkFolder& work, const Manifest& manifest, uint32_t 
 void writeMergeStamp(const WorkFolder& work, const MergeStamp& stamp);
 [[nodiscard]] std::optional<MergeStamp> readMergeStamp(const WorkFolder& work);
 
-/// The name of the machine this runs on (for stamps and messages).
+/// The node this runs on, as Slurm names it (SLURMD_NODENAME), else the host name.
 [[nodiscard]] std::string hostName();
 
 }  // namespace onelight::bake::slurm

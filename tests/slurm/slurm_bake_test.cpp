@@ -151,7 +151,7 @@ TEST_F(SlurmBake, RetriesResubmitAShardThatFailedOnce) {
     EXPECT_TRUE(fileBytes(folder_ / "slurm.olpak") == localBake());
 }
 
-TEST_F(SlurmBake, NoWaitReturnsTheJobIdsAndARerunWaitsForTheResult) {
+TEST_F(SlurmBake, NoWaitReturnsTheJobIdsAndTheMergeStillWritesThePackage) {
     const CommandResult submitted = slurmBake("--slurm 2 --no-wait");
     ASSERT_EQ(submitted.exitCode, 0) << submitted.output;
     EXPECT_NE(submitted.output.find("as array job"), std::string::npos) << submitted.output;
