@@ -91,13 +91,21 @@ ProbeCaptureSettings probeSettings(const BakeOptions& options) {
     return p;
 }
 
-ShardRange shardRange(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
-                      uint32_t count) {
+ShardRange shardRange(const std::vector<TexelSample>& samples, uint64_t texels, uint64_t cells,
+                      uint64_t probes, uint32_t index, uint32_t count) {
     ShardRange r;
     r.probeBegin = probes * index / count;
     r.probeEnd = probes * (index + 1) / count;
-    r.texelBegin = texels * index / count;
-    r.texelEnd = texels * (index + 1) / count;
+    // Shard i starts at its first placed texel; the first starts at 0 and the last ends at the
+    // end, so that every texel, placed or not, belongs to exactly one shard.
+    auto cut = [&](uint32_t i) -> uint64_t {
+        if (i == 0) return 0;
+        if (i == count) return texels;
+        const size_t first = samples.size() * i / count;
+        return first < samples.size() ? samples[first].texel : texels;
+    };
+    r.texelBegin = cut(index);
+    r.texelEnd = cut(index + 1);
     r.cellBegin = cells * index / count;
     r.cellEnd = cells * (index + 1) / count;
     return r;
@@ -197,7 +205,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
                 "' at (" + std::to_string(p.position.x) + ", " + std::to_string(p.position.y) +
                 ", " + std::to_string(p.position.z) +
                 ") is inside solid geometry: its reflections will be dark; move it into the open");
-    const ShardRange range = shardRange(texelCount, grid.cells.size(), placements.size(),
+    const ShardRange range = shardRange(samples, texelCount, grid.cells.size(), placements.size(),
                                         options.shardIndex, options.shardCount);
     world::BakedLighting& baked = result.baked;
     baked.texels.assign(texelCount, world::LightmapTexel{});
@@ -366,9 +374,10 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         partOfShard[p.shardIndex] = i;
     }
     world::BakedLighting merged = parts[0];
+    const std::vector<TexelSample> samples = placeTexels(level);
     for (uint32_t i = 0; i < count; ++i) {
         const world::BakedLighting& p = *byIndex[i];
-        const ShardRange r = shardRange(texels, p.grid.cells.size(), 0, i, count);
+        const ShardRange r = shardRange(samples, texels, p.grid.cells.size(), 0, i, count);
         for (uint64_t t = r.texelBegin; t < r.texelEnd; ++t) {
             merged.texels[t] = p.texels[t];
             merged.shadowMask[t] = p.shadowMask[t];

@@ -87,8 +87,14 @@ struct ShardRange {
     uint64_t cellBegin = 0, cellEnd = 0;
     uint64_t probeBegin = 0, probeEnd = 0;
 };
-[[nodiscard]] ShardRange shardRange(uint64_t texels, uint64_t cells, uint64_t probes,
-                                    uint32_t index, uint32_t count);
+/// The shard's ranges. Texels are cut by estimated cost, not by index: each shard owns an equal
+/// share of the placed texels (`samples`, placeTexels of the level, in texel order), since an
+/// atlas's untouched texels cost nothing and a placed one costs the same final gather wherever
+/// it is (its paths, and its shadow rays to lights drawn by importance). Cells and probes are cut
+/// by count. The bake and the merge compute it alike from the compiled level.
+[[nodiscard]] ShardRange shardRange(const std::vector<TexelSample>& samples, uint64_t texels,
+                                    uint64_t cells, uint64_t probes, uint32_t index,
+                                    uint32_t count);
 
 /// E_avg of each probe (probe_capture.hpp): ambientCubeAverage of the light grid sampled at the
 /// capture point exactly as world::sampleLightGrid samples the finished grid. Only the corner
