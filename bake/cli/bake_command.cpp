@@ -55,7 +55,7 @@ std::string bakeUsage() {
           "fewer texels on charts whose light a pilot pass finds smooth"},
          {"--quiet", "no progress bars", "bars on a terminal"},
          {"--slurm N", "bake on a Slurm cluster as N shards (its options: --slurm 1 --help)",
-          "here"},
+          "this machine"},
          {"-h, --help", "this help", ""}});
 }
 

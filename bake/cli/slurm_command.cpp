@@ -22,8 +22,8 @@
 #include "bake/slurm/shard_reports.hpp"
 #include "bake/slurm/work_folder.hpp"
 #include "world/error.hpp"
-#include "world/import/level_import.hpp"
 #include "world/file_read.hpp"
+#include "world/import/level_import.hpp"
 #include "world/level_names.hpp"
 
 namespace onelight::bake {
@@ -73,7 +73,7 @@ bool parseSlurmCommandLine(const std::vector<std::string>& arguments, SlurmComma
         } else if (a == "--slurm") {
             if (!parseNumber(arguments[++i], 1, 10000, v) || v != double(int(v)))
                 return refuse("--slurm '" + arguments[i] +
-                                   "'; expected a number of shards in [1, 10000]");
+                              "'; expected a number of shards in [1, 10000]");
             line.shards = uint32_t(v);
             sawShards = true;
         } else if (a == "--partition" && hasValue) {
@@ -83,7 +83,7 @@ bool parseSlurmCommandLine(const std::vector<std::string>& arguments, SlurmComma
             if (line.job.timeLimit.find_first_not_of("0123456789:-") != std::string::npos ||
                 line.job.timeLimit.empty())
                 return refuse("--time '" + line.job.timeLimit +
-                                   "'; expected a Slurm time limit such as 30, 1:00:00 or 1-0");
+                              "'; expected a Slurm time limit such as 30, 1:00:00 or 1-0");
         } else if (a == "--cpus-per-task" && hasValue) {
             if (!parseNumber(arguments[++i], 1, 1024, v) || v != double(int(v)))
                 return refuse("--cpus-per-task '" + arguments[i] + "'; expected 1..1024");
@@ -99,8 +99,9 @@ bool parseSlurmCommandLine(const std::vector<std::string>& arguments, SlurmComma
         } else if (a == "--no-wait") {
             line.wait = false;
         } else if (a == "--shard") {
-            return refuse("--shard with --slurm; expected one or the other (--slurm N bakes "
-                               "every shard)");
+            return refuse(
+                "--shard with --slurm; expected one or the other (--slurm N bakes "
+                "every shard)");
         } else if ((a == "--partition" || a == "--time" || a == "--cpus-per-task" ||
                     a == "--retries" || a == "--work" || a == "--emit-scripts") &&
                    !hasValue) {
@@ -160,8 +161,8 @@ std::pair<std::string, std::string> submit(const WorkFolder& work,
     std::string array;
     std::vector<std::string> mergeArguments;
     if (!shards.empty()) {
-        array = slurm::submitJob({"--array=" + slurm::arraySpec(shards)},
-                                 work.scripts() + "/shard.sh");
+        array =
+            slurm::submitJob({"--array=" + slurm::arraySpec(shards)}, work.scripts() + "/shard.sh");
         mergeArguments = {"--dependency=afterok:" + array, "--kill-on-invalid-dep=yes"};
     }
     const std::string merge = slurm::submitJob(mergeArguments, work.scripts() + "/merge.sh");
@@ -198,6 +199,11 @@ void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Ma
 int waitForBake(const SlurmCommandLine& line, const WorkFolder& work, const Manifest& manifest,
                 std::vector<uint32_t> shards, std::pair<std::string, std::string> jobs) {
     const auto start = std::chrono::steady_clock::now();
+    if (line.bake.options.showProgress)
+        std::fprintf(
+            stderr,
+            "onelight-bake: waiting for the jobs; Ctrl-C stops waiting, the jobs go on and "
+            "rerunning the same command resumes\n");
     Progress progress("shards", shards.size(), line.bake.options.showProgress);
     for (uint32_t attempt = 0; !shards.empty(); ++attempt) {
         std::vector<slurm::ShardFailure> failures = slurm::watchShardArray(
@@ -209,10 +215,8 @@ int waitForBake(const SlurmCommandLine& line, const WorkFolder& work, const Mani
         shards.clear();
         for (const slurm::ShardFailure& f : failures) shards.push_back(f.shard);
         // The merge was cancelled by the failure (--kill-on-invalid-dep); make sure of it.
-        const slurm::JobDetails merge =
-            slurm::waitForJob(jobs.second, kCancelledMergeWaitSeconds);
-        if (!merge.state.empty() && !slurm::finalState(merge.state))
-            slurm::cancelJob(jobs.second);
+        const slurm::JobDetails merge = slurm::waitForJob(jobs.second, kCancelledMergeWaitSeconds);
+        if (!merge.state.empty() && !slurm::finalState(merge.state)) slurm::cancelJob(jobs.second);
         if (attempt < line.retries) {
             jobs = submit(work, shards);
             std::fprintf(stderr,
@@ -242,8 +246,9 @@ int waitForBake(const SlurmCommandLine& line, const WorkFolder& work, const Mani
                            (merge.log.empty() ? "" : "; its log: " + merge.log) +
                            "; no package was written");
     if (!stamp || stamp->output != line.bake.output)
-        throw world::Error(work.mergeStamp() + ": missing or for another output after the merge "
-                                               "job " +
+        throw world::Error(work.mergeStamp() +
+                           ": missing or for another output after the merge "
+                           "job " +
                            jobs.second + "; expected " + line.bake.output);
     printSummary(line, work, manifest, jobs.second,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -253,8 +258,9 @@ int waitForBake(const SlurmCommandLine& line, const WorkFolder& work, const Mani
 int runSlurmBake(SlurmCommandLine& line) {
     line.bake.output = absolutePath(line.bake.output);
     const WorkFolder work{absolutePath(
-        line.work.empty() ? std::filesystem::path(line.bake.output).replace_extension(".slurm").string()
-                          : line.work)};
+        line.work.empty()
+            ? std::filesystem::path(line.bake.output).replace_extension(".slurm").string()
+            : line.work)};
     if (line.emitScripts.empty()) slurm::requireSlurmClients();
 
     noteStage("importing the level");
@@ -286,11 +292,11 @@ int runSlurmBake(SlurmCommandLine& line) {
     slurm::writeBatchScripts(work.scripts(), scripts);
     if (!line.emitScripts.empty()) {
         slurm::writeBatchScripts(line.emitScripts, scripts);
-        std::printf("wrote %s/shard.sh, merge.sh and submit.sh (%s of %u to bake); submit them "
-                    "with %s/submit.sh\n",
-                    line.emitScripts.c_str(),
-                    missing.empty() ? "no shard" : shardList(missing).c_str(), manifest.shardCount,
-                    line.emitScripts.c_str());
+        std::printf(
+            "wrote %s/shard.sh, merge.sh and submit.sh (%s of %u to bake); submit them "
+            "with %s/submit.sh\n",
+            line.emitScripts.c_str(), missing.empty() ? "no shard" : shardList(missing).c_str(),
+            manifest.shardCount, line.emitScripts.c_str());
         return 0;
     }
 
@@ -309,9 +315,10 @@ int runSlurmBake(SlurmCommandLine& line) {
                     jobs.second.c_str());
     std::fflush(stdout);
     if (!line.wait) {
-        std::printf("not waiting (--no-wait): the logs are in %s; rerun without --no-wait to "
-                    "resume\n",
-                    work.logs().c_str());
+        std::printf(
+            "not waiting (--no-wait): the logs are in %s; rerun without --no-wait to "
+            "resume\n",
+            work.logs().c_str());
         return 0;
     }
     return waitForBake(line, work, manifest, missing, jobs);

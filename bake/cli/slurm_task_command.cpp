@@ -74,17 +74,16 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
                            std::to_string(manifest.shardCount) + " shards; expected 0.." +
                            std::to_string(manifest.shardCount - 1));
     failOnPurposeIfAsked(work, shard);
-    std::vector<std::string> arguments = {manifest.level,
-                                          "-o",
-                                          work.shardPackage(shard),
-                                          "--shard",
-                                          std::to_string(shard) + "/" +
-                                              std::to_string(manifest.shardCount),
-                                          "--report",
-                                          work.shardReport(shard),
-                                          "--quiet"};
-    arguments.insert(arguments.end(), manifest.bakeArguments.begin(),
-                     manifest.bakeArguments.end());
+    std::vector<std::string> arguments = {
+        manifest.level,
+        "-o",
+        work.shardPackage(shard),
+        "--shard",
+        std::to_string(shard) + "/" + std::to_string(manifest.shardCount),
+        "--report",
+        work.shardReport(shard),
+        "--quiet"};
+    arguments.insert(arguments.end(), manifest.bakeArguments.begin(), manifest.bakeArguments.end());
     BakeCommandLine line;
     if (!parseBakeCommandLine(arguments, line)) return 2;
     line.imagesBeside = manifest.output;
@@ -93,7 +92,8 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
     const world::SourceLevel source = world::importLevel(line.input, line.quake3);
     const uint64_t levelHash = slurm::hashFiles(source.inputFiles);
     if (levelHash != manifest.levelHash)
-        throw world::Error(manifest.level + ": changed since the bake was submitted (content hash " +
+        throw world::Error(manifest.level +
+                           ": changed since the bake was submitted (content hash " +
                            slurm::hashHex(levelHash) + ", the work folder's " +
                            slurm::hashHex(manifest.levelHash) +
                            "); expected the level the manifest hashed: run onelight-bake --slurm "
@@ -127,7 +127,8 @@ int mergeShards(const WorkFolder& work, const std::string& output) {
 }
 
 int badArgument(const std::string& what) {
-    std::fprintf(stderr, "onelight-bake slurm-task: %s\n%s", what.c_str(), slurmTaskUsage().c_str());
+    std::fprintf(stderr, "onelight-bake slurm-task: %s\n%s", what.c_str(),
+                 slurmTaskUsage().c_str());
     return 2;
 }
 
@@ -141,7 +142,7 @@ std::string slurmTaskUsage() {
         {{"--work DIR", "the work folder of the Slurm bake", kRequired},
          {"--shard I", "bake shard I (the array task's index)", "none"},
          {"--merge", "merge every verified shard", "none"},
-         {"-o PATH", "the package the merge writes", "required with --merge"},
+         {"-o PATH", "the package the merge writes (required with --merge)", ""},
          {"-h, --help", "this help", ""}});
 }
 
@@ -173,9 +174,8 @@ int runSlurmTaskCommand(const std::vector<std::string>& arguments) {
     if (merge == hasShard) return badArgument("expected one of --shard I and --merge");
     if (merge && output.empty()) return badArgument("--merge needs -o OUT");
     const WorkFolder work{std::filesystem::absolute(workPath).lexically_normal().string()};
-    return runReportingErrors(work.root, [&] {
-        return merge ? mergeShards(work, output) : bakeShard(work, shard);
-    });
+    return runReportingErrors(
+        work.root, [&] { return merge ? mergeShards(work, output) : bakeShard(work, shard); });
 }
 
 }  // namespace onelight::bake

@@ -66,18 +66,19 @@ BatchScripts batchScripts(const WorkFolder& work, const std::string& bake,
               "exec " +
               shellQuoted(bake) + " slurm-task --work " + shellQuoted(work.root) + " --merge -o " +
               shellQuoted(output) + "\n";
-    s.submit = "#!/bin/bash\n"
-               "# Submits the shards as a job array and the merge after them; a failed shard\n"
-               "# cancels the merge. Prints the two job ids.\n"
-               "set -eu\n"
-               "here=$(cd \"$(dirname \"$0\")\" && pwd)\n"
-               "array=$(sbatch --parsable --array=" +
-               arraySpec(shards) +
-               " \"$here/shard.sh\")\n"
-               "array=${array%%;*}\n"
-               "merge=$(sbatch --parsable --dependency=afterok:$array --kill-on-invalid-dep=yes "
-               "\"$here/merge.sh\")\n"
-               "echo \"shards: job array $array; merge: job ${merge%%;*}\"\n";
+    s.submit =
+        "#!/bin/bash\n"
+        "# Submits the shards as a job array and the merge after them; a failed shard\n"
+        "# cancels the merge. Prints the two job ids.\n"
+        "set -eu\n"
+        "here=$(cd \"$(dirname \"$0\")\" && pwd)\n"
+        "array=$(sbatch --parsable --array=" +
+        arraySpec(shards) +
+        " \"$here/shard.sh\")\n"
+        "array=${array%%;*}\n"
+        "merge=$(sbatch --parsable --dependency=afterok:$array --kill-on-invalid-dep=yes "
+        "\"$here/merge.sh\")\n"
+        "echo \"shards: job array $array; merge: job ${merge%%;*}\"\n";
     return s;
 }
 

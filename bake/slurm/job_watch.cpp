@@ -33,23 +33,27 @@ std::vector<ShardFailure> watchShardArray(const WorkFolder& work, const Manifest
         for (const TaskState& t : queryArrayTasks(arrayId)) listed[t.shard] = t;
         for (auto it = waiting.begin(); it != waiting.end();) {
             const uint32_t shard = it->first;
+            uint32_t& patience = it->second;
             const auto task = listed.find(shard);
             const std::string state = task == listed.end() ? "" : task->second.state;
-            ++it;  // `fail` and the erase below may remove the current entry
-            if (state == "COMPLETED" || (state.empty() && verifiedShard(work, manifest, shard))) {
+            ++it;  // `fail` and the erase below remove the shard's entry, never the next one
+            // A task that ended well, or one the controller has forgotten, is baked when its
+            // stamp verifies; a shared filesystem may show the stamp a little after the task
+            // ends, so both wait kForgottenPolls polls before they count as failed.
+            if (state == "COMPLETED" || state.empty()) {
                 if (verifiedShard(work, manifest, shard)) {
                     baked(shard);
                     waiting.erase(shard);
-                } else {
-                    fail(shard, "COMPLETED, but its package does not verify (checksum, level or "
-                                "settings)");
+                } else if (++patience >= kForgottenPolls) {
+                    fail(shard, state.empty()
+                                    ? "lost: the controller no longer lists its task"
+                                    : "COMPLETED, but its package does not verify (checksum, "
+                                      "level or settings)");
                 }
             } else if (failedState(state)) {
                 fail(shard, state);
-            } else if (state.empty() && ++waiting[shard] >= kForgottenPolls) {
-                fail(shard, "lost: the controller no longer lists its task");
-            } else if (!state.empty()) {
-                waiting[shard] = 0;
+            } else {
+                patience = 0;
             }
         }
         if (!waiting.empty()) sleepOnePoll();
@@ -71,8 +75,8 @@ JobDetails waitForJob(const std::string& jobId, double limitSeconds) {
 std::string describeFailure(const ShardFailure& f) {
     std::string text = "shard " + std::to_string(f.shard) + " (job " + f.jobId + ") failed";
     text += f.details.node.empty() ? "" : " on node " + f.details.node;
-    text += " (" + f.state + (f.details.exitCode.empty() ? "" : ", exit " + f.details.exitCode) +
-            ")";
+    text +=
+        " (" + f.state + (f.details.exitCode.empty() ? "" : ", exit " + f.details.exitCode) + ")";
     text += f.details.log.empty() ? "" : "; its log: " + f.details.log;
     return text;
 }

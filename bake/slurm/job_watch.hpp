@@ -16,14 +16,15 @@ namespace onelight::bake::slurm {
 
 /// Seconds between two polls of the scheduler.
 constexpr double kPollSeconds = 1.0;
-/// Polls in a row that a task may be missing from squeue before it counts as lost.
+/// Polls in a row that a task may be missing from squeue, or have completed without a stamp
+/// that verifies yet, before it counts as failed.
 constexpr uint32_t kForgottenPolls = 10;
 
 /// A shard whose task ended without a verified package.
 struct ShardFailure {
     uint32_t shard = 0;
-    std::string jobId;  // ARRAY_INDEX
-    std::string state;  // FAILED, TIMEOUT, ..., or what else went wrong
+    std::string jobId;   // ARRAY_INDEX
+    std::string state;   // FAILED, TIMEOUT, ..., or what else went wrong
     JobDetails details;  // from scontrol: node, exit code, log (empty fields when forgotten)
 };
 

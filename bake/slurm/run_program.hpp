@@ -19,7 +19,6 @@ struct ProgramResult {
 /// Runs `argv` (argv[0] looked up on PATH) with no standard input and waits at most
 /// `timeoutSeconds` for it to exit. Throws world::Error when it cannot start or does not exit in
 /// time (it is then killed).
-[[nodiscard]] ProgramResult runProgram(const std::vector<std::string>& argv,
-                                       double timeoutSeconds);
+[[nodiscard]] ProgramResult runProgram(const std::vector<std::string>& argv, double timeoutSeconds);
 
 }  // namespace onelight::bake::slurm

@@ -63,9 +63,9 @@ std::vector<TaskState> parseTaskStates(const std::string& text) {
 }
 
 std::vector<TaskState> queryArrayTasks(const std::string& jobId) {
-    const ProgramResult r = runProgram(
-        {"squeue", "-h", "-r", "--states=all", "-j", jobId, "-o", "%K|%T|%N"},
-        kSchedulerTimeoutSeconds);
+    const ProgramResult r =
+        runProgram({"squeue", "-h", "-r", "--states=all", "-j", jobId, "-o", "%K|%T|%N"},
+                   kSchedulerTimeoutSeconds);
     // A job the controller has forgotten: squeue says "Invalid job id" and exits non-zero.
     if (r.exitCode != 0) return {};
     return parseTaskStates(r.out);
@@ -79,11 +79,16 @@ JobDetails parseJobDetails(const std::string& text) {
         const size_t eq = word.find('=');
         if (eq == std::string::npos) continue;
         const std::string key = word.substr(0, eq), value = word.substr(eq + 1);
-        if (key == "JobState") d.state = value;
-        else if (key == "Reason") d.reason = value;
-        else if (key == "ExitCode") d.exitCode = value;
-        else if (key == "NodeList") d.node = value == "(null)" ? "" : value;
-        else if (key == "StdOut") d.log = value;
+        if (key == "JobState")
+            d.state = value;
+        else if (key == "Reason")
+            d.reason = value;
+        else if (key == "ExitCode")
+            d.exitCode = value;
+        else if (key == "NodeList")
+            d.node = value == "(null)" ? "" : value;
+        else if (key == "StdOut")
+            d.log = value;
     }
     return d;
 }
@@ -102,7 +107,9 @@ bool failedState(const std::string& state) {
     return false;
 }
 
-bool finalState(const std::string& state) { return state == "COMPLETED" || failedState(state); }
+bool finalState(const std::string& state) {
+    return state == "COMPLETED" || failedState(state);
+}
 
 void cancelJob(const std::string& jobId) {
     (void)runProgram({"scancel", jobId}, kSchedulerTimeoutSeconds);

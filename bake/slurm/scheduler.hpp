@@ -23,9 +23,9 @@ void requireSlurmClients();
 
 /// One task of an array job as squeue lists it.
 struct TaskState {
-    uint32_t shard = 0;     // the array index
-    std::string state;      // PENDING, RUNNING, COMPLETED, FAILED, CANCELLED, TIMEOUT, ...
-    std::string node;       // where it runs or ran; empty while pending
+    uint32_t shard = 0;  // the array index
+    std::string state;   // PENDING, RUNNING, COMPLETED, FAILED, CANCELLED, TIMEOUT, ...
+    std::string node;    // where it runs or ran; empty while pending
 };
 
 /// Parses `squeue -h -r --states=all -o "%K|%T|%N"` lines; skips lines that do not parse.

@@ -131,11 +131,12 @@ std::string shardTimeLines(const std::vector<ShardStamp>& stamps,
     for (size_t i = 0; i < stamps.size(); ++i) {
         const ShardStamp& s = stamps[i];
         const BakeReport* r = i < reports.size() ? &reports[i] : nullptr;
-        std::snprintf(line, sizeof line,
-                      "  shard %-4u %-12s %8.2f s (lightmaps %.2f s, grid %.2f s, probes %.2f s)%s\n",
-                      s.shard, s.node.c_str(), s.seconds, r ? stageSeconds(*r, "lightmaps") : 0.0,
-                      r ? stageSeconds(*r, "grid") : 0.0, r ? stageSeconds(*r, "probes") : 0.0,
-                      s.seconds == slowest && stamps.size() > 1 ? "  slowest" : "");
+        std::snprintf(
+            line, sizeof line,
+            "  shard %-4u %-12s %8.2f s (lightmaps %.2f s, grid %.2f s, probes %.2f s)%s\n",
+            s.shard, s.node.c_str(), s.seconds, r ? stageSeconds(*r, "lightmaps") : 0.0,
+            r ? stageSeconds(*r, "grid") : 0.0, r ? stageSeconds(*r, "probes") : 0.0,
+            s.seconds == slowest && stamps.size() > 1 ? "  slowest" : "");
         text += line;
     }
     if (!stamps.empty() && sum > 0.0) {

@@ -92,8 +92,7 @@ void writeManifest(const WorkFolder& work, const Manifest& m) {
 }
 
 std::optional<Manifest> readManifest(const WorkFolder& work) {
-    const std::optional<nlohmann::json> json =
-        readJson(work.manifest(), "a Slurm bake's manifest");
+    const std::optional<nlohmann::json> json = readJson(work.manifest(), "a Slurm bake's manifest");
     if (!json) return std::nullopt;
     const nlohmann::json& j = *json;
     if (j.value("format", "") != kManifestFormat || !j.contains("level") ||

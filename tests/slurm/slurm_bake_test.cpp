@@ -40,8 +40,8 @@ bool slurmInstalled() {
 /// `lamps` point lights (1 or 2). Written to the same path whatever `lamps` is.
 std::string writeLevel(int lamps) {
     onelight::test::GltfBuilder gltf;
-    gltf.addNode(
-        {{"name", "floor"}, {"mesh", gltf.addMesh(onelight::test::gridMesh("floor", 6, 6.0, 0.0))}});
+    gltf.addNode({{"name", "floor"},
+                  {"mesh", gltf.addMesh(onelight::test::gridMesh("floor", 6, 6.0, 0.0))}});
     onelight::test::MeshData box =
         onelight::test::boxMesh("box", glm::vec3(-0.5f, 0.0f, -0.5f), glm::vec3(0.5f), 2, true);
     box.material = gltf.addMaterial(
@@ -91,14 +91,15 @@ protected:
     /// A local bake of the level: what every Slurm bake must equal byte for byte.
     std::vector<char> localBake() {
         const fs::path out = folder_ / "local.olpak";
-        const CommandResult r =
-            runCommand(kBake + " " + level_ + " -o " + out.string() + " --quality draft --uniform-density --quiet");
+        const CommandResult r = runCommand(kBake + " " + level_ + " -o " + out.string() +
+                                           " --quality draft --uniform-density --quiet");
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return fileBytes(out);
     }
     CommandResult slurmBake(const std::string& extra, const std::string& environment = "") {
         return runCommand(environment + " " + kBake + " " + level_ + " -o " +
-                          (folder_ / "slurm.olpak").string() + " --quality draft --uniform-density --quiet --work " +
+                          (folder_ / "slurm.olpak").string() +
+                          " --quality draft --uniform-density --quiet --work " +
                           (folder_ / "work").string() + " " + extra);
     }
 
@@ -136,7 +137,8 @@ TEST_F(SlurmBake, AFailedShardCancelsTheMergeAndARerunBakesOnlyIt) {
     EXPECT_FALSE(fs::exists(folder_ / "slurm.olpak"));
     const size_t merge = failed.output.find("the merge as job ");
     ASSERT_NE(merge, std::string::npos) << failed.output;
-    const std::string mergeJob = failed.output.substr(merge + 17, failed.output.find(' ', merge + 17) - merge - 17);
+    const std::string mergeJob =
+        failed.output.substr(merge + 17, failed.output.find(' ', merge + 17) - merge - 17);
     const CommandResult state = runCommand("scontrol show job -o " + mergeJob);
     EXPECT_NE(state.output.find("JobState=CANCELLED"), std::string::npos) << state.output;
     // The failed task's log says why.
@@ -197,9 +199,9 @@ TEST_F(SlurmBake, AChangedLevelIsRefusedWithTheReason) {
         << changed.output;
     EXPECT_NE(changed.output.find("remove it or pass another --work"), std::string::npos)
         << changed.output;
-    const CommandResult settings = runCommand(
-        kBake + " " + level_ + " -o " + (folder_ / "slurm.olpak").string() +
-        " --quality default --slurm 2 --work " + (folder_ / "work").string());
+    const CommandResult settings =
+        runCommand(kBake + " " + level_ + " -o " + (folder_ / "slurm.olpak").string() +
+                   " --quality default --slurm 2 --work " + (folder_ / "work").string());
     EXPECT_EQ(settings.exitCode, 1) << settings.output;
 }
 

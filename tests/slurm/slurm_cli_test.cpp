@@ -48,8 +48,7 @@ TEST(SlurmCommandLine, JobOptionsAreChecked) {
 
 TEST(SlurmCommandLine, MissingSbatchIsNamed) {
     const onelight::test::CommandResult r = onelight::test::runCommand(
-        "env PATH=/nonexistent " + kBake + " " + level() + " -o " + level() +
-        ".olpak --slurm 2");
+        "env PATH=/nonexistent " + kBake + " " + level() + " -o " + level() + ".olpak --slurm 2");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("sbatch: not found on PATH"), std::string::npos) << r.output;
 }
@@ -68,8 +67,14 @@ TEST(SlurmCommandLine, HelpListsEveryOption) {
     const onelight::test::CommandResult r = bake("level.gltf --slurm 1 --help");
     EXPECT_EQ(r.exitCode, 0) << r.output;
     for (const char* option : {"--slurm N", "--partition P", "--time T", "--cpus-per-task C",
-                               "--work DIR", "--retries K", "--no-wait", "--emit-scripts DIR"})
-        EXPECT_NE(r.output.find(option), std::string::npos) << option << "\n" << r.output;
+                               "--work DIR", "--retries K", "--no-wait", "--emit-scripts DIR"}) {
+        const size_t at = r.output.find(std::string("  ") + option);
+        ASSERT_NE(at, std::string::npos) << option << "\n" << r.output;
+        const std::string line = r.output.substr(at, r.output.find('\n', at) - at);
+        EXPECT_TRUE(line.find("(default: ") != std::string::npos ||
+                    line.find("(required)") != std::string::npos)
+            << line;
+    }
     const onelight::test::CommandResult task = bake("slurm-task --help");
     EXPECT_EQ(task.exitCode, 0) << task.output;
 }
@@ -78,7 +83,8 @@ TEST(SlurmCommandLine, TheTaskRefusesAFolderWithoutManifest) {
     const std::filesystem::path folder = onelight::test::freshFolder("slurm-no-manifest");
     expectRefused("slurm-task --work " + folder.string() + " --shard 0", 1,
                   (folder / "manifest.json").string() + ": missing");
-    expectRefused("slurm-task --work " + folder.string(), 2, "expected one of --shard I and --merge");
+    expectRefused("slurm-task --work " + folder.string(), 2,
+                  "expected one of --shard I and --merge");
 }
 
 TEST(SlurmCommandLine, EmittedScriptsSubmitTheArrayThenTheMerge) {

@@ -20,8 +20,9 @@ namespace onelight::bake::slurm {
 namespace {
 
 std::filesystem::path freshFolder(const std::string& label) {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() /
-                                         ("onelight-slurm-" + label + "-" + std::to_string(getpid()));
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() /
+        ("onelight-slurm-" + label + "-" + std::to_string(getpid()));
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);
     return folder;
@@ -48,9 +49,9 @@ TEST(SlurmArraySpec, JoinsRunsOfShards) {
 }
 
 TEST(SlurmScheduler, ParsesOneLinePerArrayTask) {
-    const std::vector<TaskState> tasks =
-        parseTaskStates("0|COMPLETED|node1\n1|RUNNING|node2\n2|PENDING|\n3|FAILED|node1 \n"
-                        "garbage\n[4-7]|PENDING|\n");
+    const std::vector<TaskState> tasks = parseTaskStates(
+        "0|COMPLETED|node1\n1|RUNNING|node2\n2|PENDING|\n3|FAILED|node1 \n"
+        "garbage\n[4-7]|PENDING|\n");
     ASSERT_EQ(tasks.size(), 4u);
     EXPECT_EQ(tasks[0].shard, 0u);
     EXPECT_EQ(tasks[0].state, "COMPLETED");
@@ -74,8 +75,8 @@ TEST(SlurmScheduler, ParsesScontrolsJobLine) {
 }
 
 TEST(SlurmScheduler, TellsFailedFromFinalStates) {
-    for (const char* s : {"FAILED", "CANCELLED", "CANCELLED+", "TIMEOUT", "NODE_FAIL",
-                          "OUT_OF_MEMORY"})
+    for (const char* s :
+         {"FAILED", "CANCELLED", "CANCELLED+", "TIMEOUT", "NODE_FAIL", "OUT_OF_MEMORY"})
         EXPECT_TRUE(failedState(s)) << s;
     for (const char* s : {"COMPLETED", "PENDING", "RUNNING", "COMPLETING", ""})
         EXPECT_FALSE(failedState(s)) << s;
