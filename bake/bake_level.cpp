@@ -381,6 +381,10 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         for (uint64_t t = r.texelBegin; t < r.texelEnd; ++t) {
             merged.texels[t] = p.texels[t];
             merged.shadowMask[t] = p.shadowMask[t];
+            // A part read from a package marks its imported texels with its own texels' flags
+            // (baked_sections.cpp): only its range. The whole's dilation needs every range's.
+            if (!merged.importedTexels.empty())
+                merged.importedTexels[t].flags = p.importedTexels[t].flags;
         }
         for (uint64_t c = r.cellBegin; c < r.cellEnd; ++c) merged.grid.cells[c] = p.grid.cells[c];
     }
