@@ -17,9 +17,11 @@ quality=${2:-draft}
 bake=$root/build/bin/onelight-bake
 [ -x "$bake" ] || { echo "slurm-benchmark: $bake is missing; build first (scripts/setup.sh)" >&2; exit 1; }
 out=$(mktemp -d /tmp/onelight-slurm-bench.XXXXXX)
+chmod 755 "$out"  # munged's socket folder must be reachable by all
 cluster=$out/cluster
 trap '"$root/tests/slurm/local_slurm.sh" stop "$cluster"' EXIT
-export SLURM_CONF=$("$root/tests/slurm/local_slurm.sh" start "$cluster")
+conf=$("$root/tests/slurm/local_slurm.sh" start "$cluster")
+export SLURM_CONF=$conf
 cores=$(nproc)
 now() { date +%s.%N; }
 calc() { awk "BEGIN { printf \"%.6f\", $1 }"; }

@@ -181,7 +181,9 @@ void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Ma
     BakeReport whole = slurm::combineShardReports(reports);
     const std::optional<slurm::MergeStamp> merge = slurm::readMergeStamp(work);
     whole.packageBytes = merge ? merge->packageBytes : 0;
-    if (!line.bake.reportPath.empty()) writeReport(line.bake.reportPath, whole);
+    if (!line.bake.reportPath.empty())
+        slurm::writeSlurmReport(line.bake.reportPath, whole, stamps, reports,
+                                merge.value_or(slurm::MergeStamp{}), wallSeconds);
     std::printf("baked %s (%llu bytes, quality %s, %u shards on Slurm, merge job %s)\n",
                 line.bake.output.c_str(), static_cast<unsigned long long>(whole.packageBytes),
                 qualityName(line.bake.options.quality), manifest.shardCount, mergeJob.c_str());

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <span>
 
 #include <nlohmann/json.hpp>
 
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/package/package_writer.hpp"
 
 namespace onelight::bake::slurm {
 namespace {
@@ -145,6 +147,28 @@ std::string shardTimeLines(const std::vector<ShardStamp>& stamps,
         text += line;
     }
     return text;
+}
+
+void writeSlurmReport(const std::string& path, const BakeReport& whole,
+                      const std::vector<ShardStamp>& stamps, const std::vector<BakeReport>& reports,
+                      const MergeStamp& merge, double wallSeconds) {
+    nlohmann::ordered_json json = nlohmann::ordered_json::parse(reportJson(whole));
+    nlohmann::ordered_json shards = nlohmann::ordered_json::array();
+    for (size_t i = 0; i < stamps.size(); ++i) {
+        nlohmann::ordered_json stages = nlohmann::ordered_json::object();
+        if (i < reports.size())
+            for (const StageReport& s : reports[i].stages) stages[s.name] = s.seconds;
+        shards.push_back({{"index", stamps[i].shard},
+                          {"node", stamps[i].node},
+                          {"seconds", stamps[i].seconds},
+                          {"stage_seconds", stages}});
+    }
+    json["shards"] = shards;
+    json["merge"] = {{"node", merge.node}, {"seconds", merge.seconds}};
+    json["wall_seconds"] = wallSeconds;
+    const std::string text = json.dump(2) + "\n";
+    package::writeFileAtomically(
+        path, std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
 }
 
 }  // namespace onelight::bake::slurm

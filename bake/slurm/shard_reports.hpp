@@ -24,4 +24,11 @@ namespace onelight::bake::slurm {
 [[nodiscard]] std::string shardTimeLines(const std::vector<ShardStamp>& stamps,
                                          const std::vector<BakeReport>& reports);
 
+/// The --report of a Slurm bake: the whole bake's report.json (combineShardReports), then
+/// "shards" (each shard's node, wall seconds and seconds per stage), "merge" (node, seconds) and
+/// "wall_seconds" from submission to the package. Written atomically. Throws world::Error.
+void writeSlurmReport(const std::string& path, const BakeReport& whole,
+                      const std::vector<ShardStamp>& stamps, const std::vector<BakeReport>& reports,
+                      const MergeStamp& merge, double wallSeconds);
+
 }  // namespace onelight::bake::slurm

@@ -39,7 +39,8 @@ for tool in munged slurmctld slurmd sbatch squeue scontrol; do
   command -v "$tool" >/dev/null || { echo "local_slurm.sh: $tool not found (packages slurmctld slurmd slurm-client munge)" >&2; exit 3; }
 done
 mkdir -p "$dir/munge" "$dir/state" "$dir/spool" "$dir/log"
-chmod 0755 "$dir/munge"
+# munged wants its socket's folder, and every folder above it, open to all (execute).
+chmod 0755 "$dir" "$dir/munge"
 # munged refuses a key that others can read; 1 KiB of random bytes, as mungekey makes.
 head -c 1024 /dev/urandom > "$dir/munge/munge.key"
 chmod 0600 "$dir/munge/munge.key"
@@ -81,7 +82,7 @@ munged --socket="$socket" --key-file="$dir/munge/munge.key" --pid-file="$dir/mun
   > "$dir/log/munged.out" 2>&1 &
 echo $! > "$dir/munged.pid"
 for _ in $(seq 100); do [ -S "$socket" ] && break; sleep 0.1; done
-[ -S "$socket" ] || { echo "local_slurm.sh: munged did not start; see $dir/log/munged.log" >&2; exit 1; }
+[ -S "$socket" ] || { echo "local_slurm.sh: munged did not start: $(tail -n 1 "$dir/log/munged.out" 2>/dev/null)" >&2; exit 1; }
 
 slurmctld -D -f "$dir/slurm.conf" > "$dir/log/slurmctld.out" 2>&1 &
 echo $! > "$dir/slurmctld.pid"
