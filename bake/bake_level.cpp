@@ -290,6 +290,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
 
     // 7. Finish (a whole bake only; parts are finished by merge).
     start = std::chrono::steady_clock::now();
+    finishImportedLightmap(level, baked);  // whole in every part: each finishes its copy
     if (options.shardCount == 1) finishBakedLighting(level, baked);
     report.stages.push_back({"dilate", secondsSince(start), {}, texelCount});
     report.peakMemoryBytes = peakMemoryBytes();
@@ -319,15 +320,17 @@ std::vector<glm::vec3> probeAverageIrradiance(const BakeScene& scene, const Bake
     return average;
 }
 
+void finishImportedLightmap(const world::CompiledLevel& level, world::BakedLighting& baked) {
+    if (baked.importedTexels.empty()) return;
+    world::BakedLighting imported;
+    imported.texels = std::move(baked.importedTexels);
+    imported.shadowMask.assign(imported.texels.size(), 0);
+    dilateLightmaps(level, imported);
+    baked.importedTexels = std::move(imported.texels);
+}
+
 void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked) {
     dilateLightmaps(level, baked);
-    if (!baked.importedTexels.empty()) {
-        world::BakedLighting imported;
-        imported.texels = std::move(baked.importedTexels);
-        imported.shadowMask.assign(imported.texels.size(), 0);
-        dilateLightmaps(level, imported);
-        baked.importedTexels = std::move(imported.texels);
-    }
     baked.shardIndex = 0;
     baked.shardCount = 1;
 }
@@ -381,13 +384,10 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         for (uint64_t t = r.texelBegin; t < r.texelEnd; ++t) {
             merged.texels[t] = p.texels[t];
             merged.shadowMask[t] = p.shadowMask[t];
-            // A part read from a package marks its imported texels with its own texels' flags
-            // (baked_sections.cpp): only its range. The whole's dilation needs every range's.
-            if (!merged.importedTexels.empty())
-                merged.importedTexels[t].flags = p.importedTexels[t].flags;
         }
         for (uint64_t c = r.cellBegin; c < r.cellEnd; ++c) merged.grid.cells[c] = p.grid.cells[c];
     }
+    // The imported lightmap is parts[0]'s, finished in its shard (each part holds all of it).
     // Each part holds its contiguous range of the probes: in shard order they are the whole list.
     merged.probes.clear();
     for (uint32_t i = 0; i < count; ++i)

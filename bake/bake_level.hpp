@@ -104,7 +104,13 @@ struct ShardRange {
     const BakeScene& scene, const BakeLights& lights, const GridSettings& settings,
     const world::LightGrid& layout, const std::vector<ProbePlacement>& probes, RayCounts& rays);
 
-/// The steps after every texel is baked: dilation. Makes a part complete (shard 0 of 1).
+/// Dilates the source format's own lightmap (importedTexels), which every part holds whole and
+/// finishes itself: a package keeps only its light, not which texels were sampled, so a merge
+/// could not dilate it as the whole bake does.
+void finishImportedLightmap(const world::CompiledLevel& level, world::BakedLighting& baked);
+
+/// The steps after every texel is baked: dilation of the lightmaps. Makes a part complete
+/// (shard 0 of 1).
 void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked);
 
 /// Joins the parts of a sharded bake (any order) into the unfinished whole, then finishes it.

@@ -19,14 +19,22 @@
 namespace onelight::bake::slurm {
 namespace {
 
-std::filesystem::path freshFolder(const std::string& label) {
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() /
-        ("onelight-slurm-" + label + "-" + std::to_string(getpid()));
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-    return folder;
-}
+/// A fresh empty folder under the system temp folder, removed again at the end of the test.
+struct TempFolder {
+    std::filesystem::path path;
+    explicit TempFolder(const std::string& label)
+        : path(std::filesystem::temp_directory_path() /
+               ("onelight-slurm-" + label + "-" + std::to_string(getpid()))) {
+        std::filesystem::remove_all(path);
+        std::filesystem::create_directories(path);
+    }
+    ~TempFolder() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path, ignored);
+    }
+    TempFolder(const TempFolder&) = delete;
+    TempFolder& operator=(const TempFolder&) = delete;
+};
 
 void writeText(const std::string& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
@@ -107,7 +115,8 @@ TEST(SlurmScripts, TheMergeWaitsForEveryShardAndDiesWithAFailedOne) {
 }
 
 TEST(SlurmWorkFolder, ManifestRoundTripsAndNamesWhatChanged) {
-    const WorkFolder work{freshFolder("manifest").string()};
+    const TempFolder folder("manifest");
+    const WorkFolder work{folder.path.string()};
     makeWorkFolder(work);
     EXPECT_FALSE(readManifest(work).has_value());
     const Manifest m = testManifest();
@@ -135,7 +144,8 @@ TEST(SlurmWorkFolder, ManifestRoundTripsAndNamesWhatChanged) {
 }
 
 TEST(SlurmWorkFolder, AShardVerifiesOnlyWithItsPackageLevelAndSettings) {
-    const WorkFolder work{freshFolder("stamp").string()};
+    const TempFolder folder("stamp");
+    const WorkFolder work{folder.path.string()};
     makeWorkFolder(work);
     const Manifest m = testManifest();
     EXPECT_FALSE(verifiedShard(work, m, 1).has_value());  // nothing baked
@@ -163,7 +173,8 @@ TEST(SlurmWorkFolder, AShardVerifiesOnlyWithItsPackageLevelAndSettings) {
 }
 
 TEST(SlurmContentHash, DependsOnEveryByteAndTheOrderOfFiles) {
-    const std::filesystem::path folder = freshFolder("hash");
+    const TempFolder temp("hash");
+    const std::filesystem::path& folder = temp.path;
     writeText((folder / "a").string(), "abc");
     writeText((folder / "b").string(), "abd");
     const uint64_t ab = hashFiles({(folder / "a").string(), (folder / "b").string()});
