@@ -274,8 +274,9 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
             report.probeBytes = package::encodeProbeSection(baked.probes).bytes.size();
     }
 
-    // 6. The potentially visible set, whole in every shard (it is cheap and deterministic).
-    if (options.visibility) {
+    // 6. The potentially visible set: whole, in the first shard only (it is not split, and it is
+    // a large part of a small shard's time); the merge takes it from there.
+    if (options.visibility && options.shardIndex == 0) {
         start = std::chrono::steady_clock::now();
         const BakeScene levelScene(device, level);
         VisibilityStats stats;
@@ -370,9 +371,10 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
             throw world::Error("merge: " + shard + ": its light grid's origin, cell size or " +
                                "samples differ from " + name(0) +
                                "'s; expected the same grid (baked with other settings?)");
-        if (!(p.visibility == parts[0].visibility))
-            throw world::Error("merge: " + shard + ": its visibility differs from " + name(0) +
-                               "'s (baked from another level or with other settings)");
+        if (p.shardIndex != 0 && !p.visibility.empty())
+            throw world::Error("merge: " + shard +
+                               " holds a visibility set; expected one in shard 0 only (a part "
+                               "of another version's bake?)");
         byIndex[p.shardIndex] = &p;
         partOfShard[p.shardIndex] = i;
     }
@@ -387,6 +389,7 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         }
         for (uint64_t c = r.cellBegin; c < r.cellEnd; ++c) merged.grid.cells[c] = p.grid.cells[c];
     }
+    merged.visibility = byIndex[0]->visibility;
     // The imported lightmap is parts[0]'s, finished in its shard (each part holds all of it).
     // Each part holds its contiguous range of the probes: in shard order they are the whole list.
     merged.probes.clear();

@@ -1,8 +1,9 @@
 // The bake pipeline: import -> Embree scene of the static world -> world compile with the
 // shadowed dominant-primary function -> lightmap texels (shadow masks + directional secondary
 // irradiance) -> light grid -> environment probes -> dilation -> package. Sharding bakes a
-// contiguous part of the texels, of the grid cells and of the probes; merge joins the parts
-// and finishes them exactly as a whole bake does, so the package is byte-identical.
+// contiguous part of the texels, of the grid cells and of the probes (shard 0 also bakes the
+// whole visibility set); merge joins the parts and finishes them exactly as a whole bake does,
+// so the package is byte-identical.
 #pragma once
 
 #include <cstdint>
