@@ -109,7 +109,8 @@ protected:
 };
 
 TEST_F(SlurmBake, FourShardsEqualALocalBake) {
-    const CommandResult r = slurmBake("--slurm 4");
+    const fs::path report = folder_ / "report.json";
+    const CommandResult r = slurmBake("--slurm 4 --report " + report.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("submitted shards 0-3 of 4 as array job"), std::string::npos)
         << r.output;
@@ -117,6 +118,15 @@ TEST_F(SlurmBake, FourShardsEqualALocalBake) {
     for (const char* line : {"lightmaps", "total", "shard 0", "shard 3", "balance", "merge"})
         EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
     EXPECT_TRUE(fileBytes(folder_ / "slurm.olpak") == localBake());
+    // The report gives each shard's node and time, and the merge's.
+    const std::vector<char> json = fileBytes(report);
+    const std::string text(json.begin(), json.end());
+    size_t nodes = 0;
+    for (size_t at = 0; (at = text.find("\"node\": \"localhost\"", at)) != std::string::npos; ++at)
+        ++nodes;
+    EXPECT_EQ(nodes, 5u) << text;  // four shards and the merge
+    for (const char* key : {"\"shards\"", "\"stage_seconds\"", "\"merge\"", "\"wall_seconds\""})
+        EXPECT_NE(text.find(key), std::string::npos) << key;
     for (int i = 0; i < 4; ++i)
         EXPECT_TRUE(fs::exists(folder_ / "work" / "shards" /
                                ("shard-" + std::to_string(i) + ".stamp.json")));
