@@ -4,9 +4,11 @@
 // manifest; shards already baked and verified there are skipped, so rerunning the same command
 // resumes. Waits with a progress bar over the shards (ETA from the finished ones) and prints the
 // summary a local bake prints, each shard's node and time, and the merge's.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -166,7 +168,26 @@ std::pair<std::string, std::string> submit(const WorkFolder& work,
         mergeArguments = {"--dependency=afterok:" + array, "--kill-on-invalid-dep=yes"};
     }
     const std::string merge = slurm::submitJob(mergeArguments, work.scripts() + "/merge.sh");
+    slurm::writeSubmittedJobs(work, {array, merge, shards});
     return {array, merge};
+}
+
+/// The last submission when it is still going, has failed nowhere and covers every shard still
+/// to bake: its merge job queued or running, none of its array tasks failed. A rerun (after
+/// --no-wait, or an interrupted wait) then waits for it instead of submitting again.
+std::optional<slurm::SubmittedJobs> submissionInFlight(const WorkFolder& work,
+                                                       const std::vector<uint32_t>& missing) {
+    const std::optional<slurm::SubmittedJobs> jobs = slurm::readSubmittedJobs(work);
+    if (!jobs) return std::nullopt;
+    for (const uint32_t shard : missing)
+        if (std::find(jobs->shards.begin(), jobs->shards.end(), shard) == jobs->shards.end())
+            return std::nullopt;
+    const slurm::JobDetails merge = slurm::queryJob(jobs->mergeJob);
+    if (merge.state.empty() || slurm::finalState(merge.state)) return std::nullopt;
+    if (!jobs->arrayJob.empty())
+        for (const slurm::TaskState& t : slurm::queryArrayTasks(jobs->arrayJob))
+            if (slurm::failedState(t.state)) return std::nullopt;
+    return jobs;
 }
 
 void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Manifest& manifest,
@@ -302,24 +323,35 @@ int runSlurmBake(SlurmCommandLine& line) {
         return 0;
     }
 
-    std::error_code error;
-    std::filesystem::remove(work.mergeStamp(), error);  // a previous run's: not this merge's
     if (missing.size() < manifest.shardCount)
         std::printf("%u of %u shards already baked and verified in %s\n",
                     manifest.shardCount - uint32_t(missing.size()), manifest.shardCount,
                     work.root.c_str());
-    const std::pair<std::string, std::string> jobs = submit(work, missing);
-    if (missing.empty())
-        std::printf("submitted the merge as job %s\n", jobs.second.c_str());
-    else
-        std::printf("submitted %s of %u as array job %s, the merge as job %s (after them)\n",
-                    shardList(missing).c_str(), manifest.shardCount, jobs.first.c_str(),
-                    jobs.second.c_str());
+    std::pair<std::string, std::string> jobs;
+    if (const std::optional<slurm::SubmittedJobs> earlier = submissionInFlight(work, missing)) {
+        jobs = {earlier->arrayJob, earlier->mergeJob};
+        std::printf(
+            "the jobs of an earlier run are still queued or running: %s%s, the merge "
+            "job %s; waiting for them\n",
+            missing.empty() ? "no shard" : shardList(missing).c_str(),
+            jobs.first.empty() ? "" : (" in array job " + jobs.first).c_str(), jobs.second.c_str());
+    } else {
+        std::error_code error;
+        std::filesystem::remove(work.mergeStamp(), error);  // a previous run's: not this merge's
+        jobs = submit(work, missing);
+        if (missing.empty())
+            std::printf("submitted the merge as job %s\n", jobs.second.c_str());
+        else
+            std::printf("submitted %s of %u as array job %s, the merge as job %s (after them)\n",
+                        shardList(missing).c_str(), manifest.shardCount, jobs.first.c_str(),
+                        jobs.second.c_str());
+    }
     std::fflush(stdout);
     if (!line.wait) {
         std::printf(
-            "not waiting (--no-wait): the logs are in %s; rerun without --no-wait to "
-            "resume\n",
+            "not waiting (--no-wait): the logs are in %s; rerun the same command without "
+            "--no-wait to wait for these jobs (it submits nothing while they are queued or "
+            "running)\n",
             work.logs().c_str());
         return 0;
     }

@@ -180,6 +180,29 @@ std::optional<ShardStamp> verifiedShard(const WorkFolder& work, const Manifest& 
     return s;
 }
 
+void writeSubmittedJobs(const WorkFolder& work, const SubmittedJobs& jobs) {
+    nlohmann::ordered_json json;
+    json["array_job"] = jobs.arrayJob;
+    json["merge_job"] = jobs.mergeJob;
+    json["shards"] = jobs.shards;
+    writeJson(work.jobs(), json);
+}
+
+std::optional<SubmittedJobs> readSubmittedJobs(const WorkFolder& work) {
+    try {
+        const std::optional<nlohmann::json> json = readJson(work.jobs(), "a record of jobs");
+        if (!json) return std::nullopt;
+        SubmittedJobs jobs;
+        jobs.arrayJob = json->value("array_job", "");
+        jobs.mergeJob = json->value("merge_job", "");
+        jobs.shards = json->value("shards", std::vector<uint32_t>{});
+        if (jobs.mergeJob.empty()) return std::nullopt;
+        return jobs;
+    } catch (const std::exception&) {
+        return std::nullopt;  // damaged: the rerun submits afresh
+    }
+}
+
 void writeMergeStamp(const WorkFolder& work, const MergeStamp& stamp) {
     nlohmann::ordered_json json;
     json["node"] = stamp.node;

@@ -9,6 +9,7 @@
 //   WORK/shards/shard-I.json           its bake report (seconds per stage)
 //   WORK/shards/shard-I.stamp.json     its checksum, level and settings hashes, node, seconds
 //   WORK/merge.stamp.json              the merge's node, seconds and output
+//   WORK/jobs.json                     the last submission's array job, merge job and shards
 //   WORK/logs/shard-I.job-J.log, merge.job-J.log
 #pragma once
 
@@ -28,6 +29,7 @@ struct WorkFolder {
     [[nodiscard]] std::string shardReport(uint32_t shard) const;
     [[nodiscard]] std::string shardStamp(uint32_t shard) const;
     [[nodiscard]] std::string mergeStamp() const { return root + "/merge.stamp.json"; }
+    [[nodiscard]] std::string jobs() const { return root + "/jobs.json"; }
 };
 
 /// What a work folder bakes. Two runs share a work folder only when their manifests are equal.
@@ -57,6 +59,14 @@ struct MergeStamp {
     uint64_t packageBytes = 0;
 };
 
+/// The jobs of the last submission: a rerun waits for them instead of submitting again while
+/// they are still queued or running.
+struct SubmittedJobs {
+    std::string arrayJob;  // empty when only the merge was submitted
+    std::string mergeJob;
+    std::vector<uint32_t> shards;  // the array's indices
+};
+
 /// Makes the folder and its sub-folders (scripts, shards, logs). Throws world::Error.
 void makeWorkFolder(const WorkFolder& work);
 
@@ -77,6 +87,10 @@ void writeShardStamp(const WorkFolder& work, const Manifest& manifest, uint32_t 
 /// The shard's stamp when its package exists and the stamp verifies against `manifest`.
 [[nodiscard]] std::optional<ShardStamp> verifiedShard(const WorkFolder& work,
                                                       const Manifest& manifest, uint32_t shard);
+
+void writeSubmittedJobs(const WorkFolder& work, const SubmittedJobs& jobs);
+/// The last submission, or nothing when there is none or its record is damaged.
+[[nodiscard]] std::optional<SubmittedJobs> readSubmittedJobs(const WorkFolder& work);
 
 void writeMergeStamp(const WorkFolder& work, const MergeStamp& stamp);
 [[nodiscard]] std::optional<MergeStamp> readMergeStamp(const WorkFolder& work);

@@ -56,7 +56,16 @@ std::string writeLevel(int lamps) {
     return gltf.write(onelight::test::freshFolder("slurm-level"), "room");
 }
 
-/// How many jobs (array tasks count one each) the controller knows.
+/// How many submissions the controller knows: an array job counts once, whatever its tasks.
+int submissionCount() {
+    const CommandResult r = runCommand(
+        "scontrol show job -o | awk '{ id = \"\"; for (i = 1; i <= NF; ++i) { if ($i ~ "
+        "/^ArrayJobId=/) id = $i; if (id == \"\" && $i ~ /^JobId=/) id = $i } print id }' | "
+        "sort -u | wc -l");
+    return std::atoi(r.output.c_str());
+}
+
+/// How many jobs (array tasks count one each, once they run) the controller knows.
 int jobCount() {
     const CommandResult r = runCommand("scontrol show job -o | grep -c '^JobId='");
     return std::atoi(r.output.c_str());
@@ -185,15 +194,28 @@ TEST_F(SlurmBake, RetriesResubmitAShardThatFailedOnce) {
     EXPECT_TRUE(fileBytes(folder_ / "slurm.olpak") == localBake());
 }
 
-TEST_F(SlurmBake, NoWaitReturnsTheJobIdsAndTheMergeStillWritesThePackage) {
+TEST_F(SlurmBake, NoWaitReturnsTheJobIdsAndARerunWaitsForThemWithoutSubmitting) {
+    // The node drained: the jobs stay queued until the rerun below is waiting for them.
+    const CommandResult drained =
+        runCommand("scontrol update NodeName=localhost State=DRAIN Reason=onelight-test");
+    ASSERT_EQ(drained.exitCode, 0) << drained.output;
     const CommandResult submitted = slurmBake("--slurm 2 --no-wait");
     ASSERT_EQ(submitted.exitCode, 0) << submitted.output;
-    EXPECT_NE(submitted.output.find("as array job"), std::string::npos) << submitted.output;
+    EXPECT_NE(submitted.output.find("submitted shards 0-1 of 2 as array job"), std::string::npos)
+        << submitted.output;
     EXPECT_NE(submitted.output.find("not waiting (--no-wait)"), std::string::npos)
         << submitted.output;
-    // Wait (bounded) for the package the merge job writes.
-    for (int i = 0; i < 600 && !fs::exists(folder_ / "slurm.olpak"); ++i) usleep(100000);
-    ASSERT_TRUE(fs::exists(folder_ / "slurm.olpak"));
+    EXPECT_FALSE(fs::exists(folder_ / "slurm.olpak"));
+    const int submissionsBefore = submissionCount();
+    ASSERT_EQ(submissionsBefore, 2) << "the array and the merge";
+    const CommandResult rerun =
+        slurmBake("--slurm 2",
+                  "(sleep 2; scontrol update NodeName=localhost State=RESUME) >/dev/null 2>&1 &");
+    ASSERT_EQ(rerun.exitCode, 0) << rerun.output;
+    EXPECT_NE(rerun.output.find("the jobs of an earlier run are still queued or running"),
+              std::string::npos)
+        << rerun.output;
+    EXPECT_EQ(submissionCount(), submissionsBefore) << "the rerun submitted jobs\n" << rerun.output;
     EXPECT_TRUE(fileBytes(folder_ / "slurm.olpak") == localBake());
 }
 
