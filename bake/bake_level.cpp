@@ -91,13 +91,21 @@ ProbeCaptureSettings probeSettings(const BakeOptions& options) {
     return p;
 }
 
-ShardRange shardRange(uint64_t texels, uint64_t cells, uint64_t probes, uint32_t index,
-                      uint32_t count) {
+ShardRange shardRange(const std::vector<TexelSample>& samples, uint64_t texels, uint64_t cells,
+                      uint64_t probes, uint32_t index, uint32_t count) {
     ShardRange r;
     r.probeBegin = probes * index / count;
     r.probeEnd = probes * (index + 1) / count;
-    r.texelBegin = texels * index / count;
-    r.texelEnd = texels * (index + 1) / count;
+    // Shard i starts at its first placed texel; the first starts at 0 and the last ends at the
+    // end, so that every texel, placed or not, belongs to exactly one shard.
+    auto cut = [&](uint32_t i) -> uint64_t {
+        if (i == 0) return 0;
+        if (i == count) return texels;
+        const size_t first = samples.size() * i / count;
+        return first < samples.size() ? samples[first].texel : texels;
+    };
+    r.texelBegin = cut(index);
+    r.texelEnd = cut(index + 1);
     r.cellBegin = cells * index / count;
     r.cellEnd = cells * (index + 1) / count;
     return r;
@@ -197,7 +205,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
                 "' at (" + std::to_string(p.position.x) + ", " + std::to_string(p.position.y) +
                 ", " + std::to_string(p.position.z) +
                 ") is inside solid geometry: its reflections will be dark; move it into the open");
-    const ShardRange range = shardRange(texelCount, grid.cells.size(), placements.size(),
+    const ShardRange range = shardRange(samples, texelCount, grid.cells.size(), placements.size(),
                                         options.shardIndex, options.shardCount);
     world::BakedLighting& baked = result.baked;
     baked.texels.assign(texelCount, world::LightmapTexel{});
@@ -266,8 +274,9 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
             report.probeBytes = package::encodeProbeSection(baked.probes).bytes.size();
     }
 
-    // 6. The potentially visible set, whole in every shard (it is cheap and deterministic).
-    if (options.visibility) {
+    // 6. The potentially visible set: whole, in the first shard only (it is not split, and it is
+    // a large part of a small shard's time); the merge takes it from there.
+    if (options.visibility && options.shardIndex == 0) {
         start = std::chrono::steady_clock::now();
         const BakeScene levelScene(device, level);
         VisibilityStats stats;
@@ -282,6 +291,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
 
     // 7. Finish (a whole bake only; parts are finished by merge).
     start = std::chrono::steady_clock::now();
+    finishImportedLightmap(level, baked);  // whole in every part: each finishes its copy
     if (options.shardCount == 1) finishBakedLighting(level, baked);
     report.stages.push_back({"dilate", secondsSince(start), {}, texelCount});
     report.peakMemoryBytes = peakMemoryBytes();
@@ -311,15 +321,17 @@ std::vector<glm::vec3> probeAverageIrradiance(const BakeScene& scene, const Bake
     return average;
 }
 
+void finishImportedLightmap(const world::CompiledLevel& level, world::BakedLighting& baked) {
+    if (baked.importedTexels.empty()) return;
+    world::BakedLighting imported;
+    imported.texels = std::move(baked.importedTexels);
+    imported.shadowMask.assign(imported.texels.size(), 0);
+    dilateLightmaps(level, imported);
+    baked.importedTexels = std::move(imported.texels);
+}
+
 void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked) {
     dilateLightmaps(level, baked);
-    if (!baked.importedTexels.empty()) {
-        world::BakedLighting imported;
-        imported.texels = std::move(baked.importedTexels);
-        imported.shadowMask.assign(imported.texels.size(), 0);
-        dilateLightmaps(level, imported);
-        baked.importedTexels = std::move(imported.texels);
-    }
     baked.shardIndex = 0;
     baked.shardCount = 1;
 }
@@ -359,22 +371,26 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
             throw world::Error("merge: " + shard + ": its light grid's origin, cell size or " +
                                "samples differ from " + name(0) +
                                "'s; expected the same grid (baked with other settings?)");
-        if (!(p.visibility == parts[0].visibility))
-            throw world::Error("merge: " + shard + ": its visibility differs from " + name(0) +
-                               "'s (baked from another level or with other settings)");
+        if (p.shardIndex != 0 && !p.visibility.empty())
+            throw world::Error("merge: " + shard +
+                               " holds a visibility set; expected one in shard 0 only (a part "
+                               "of another version's bake?)");
         byIndex[p.shardIndex] = &p;
         partOfShard[p.shardIndex] = i;
     }
     world::BakedLighting merged = parts[0];
+    const std::vector<TexelSample> samples = placeTexels(level);
     for (uint32_t i = 0; i < count; ++i) {
         const world::BakedLighting& p = *byIndex[i];
-        const ShardRange r = shardRange(texels, p.grid.cells.size(), 0, i, count);
+        const ShardRange r = shardRange(samples, texels, p.grid.cells.size(), 0, i, count);
         for (uint64_t t = r.texelBegin; t < r.texelEnd; ++t) {
             merged.texels[t] = p.texels[t];
             merged.shadowMask[t] = p.shadowMask[t];
         }
         for (uint64_t c = r.cellBegin; c < r.cellEnd; ++c) merged.grid.cells[c] = p.grid.cells[c];
     }
+    merged.visibility = byIndex[0]->visibility;
+    // The imported lightmap is parts[0]'s, finished in its shard (each part holds all of it).
     // Each part holds its contiguous range of the probes: in shard order they are the whole list.
     merged.probes.clear();
     for (uint32_t i = 0; i < count; ++i)

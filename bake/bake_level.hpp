@@ -1,8 +1,9 @@
 // The bake pipeline: import -> Embree scene of the static world -> world compile with the
 // shadowed dominant-primary function -> lightmap texels (shadow masks + directional secondary
 // irradiance) -> light grid -> environment probes -> dilation -> package. Sharding bakes a
-// contiguous part of the texels, of the grid cells and of the probes; merge joins the parts
-// and finishes them exactly as a whole bake does, so the package is byte-identical.
+// contiguous part of the texels, of the grid cells and of the probes (shard 0 also bakes the
+// whole visibility set); merge joins the parts and finishes them exactly as a whole bake does,
+// so the package is byte-identical.
 #pragma once
 
 #include <cstdint>
@@ -87,8 +88,14 @@ struct ShardRange {
     uint64_t cellBegin = 0, cellEnd = 0;
     uint64_t probeBegin = 0, probeEnd = 0;
 };
-[[nodiscard]] ShardRange shardRange(uint64_t texels, uint64_t cells, uint64_t probes,
-                                    uint32_t index, uint32_t count);
+/// The shard's ranges. Texels are cut by estimated cost, not by index: each shard owns an equal
+/// share of the placed texels (`samples`, placeTexels of the level, in texel order), since an
+/// atlas's untouched texels cost nothing and a placed one costs the same final gather wherever
+/// it is (its paths, and its shadow rays to lights drawn by importance). Cells and probes are cut
+/// by count. The bake and the merge compute it alike from the compiled level.
+[[nodiscard]] ShardRange shardRange(const std::vector<TexelSample>& samples, uint64_t texels,
+                                    uint64_t cells, uint64_t probes, uint32_t index,
+                                    uint32_t count);
 
 /// E_avg of each probe (probe_capture.hpp): ambientCubeAverage of the light grid sampled at the
 /// capture point exactly as world::sampleLightGrid samples the finished grid. Only the corner
@@ -98,7 +105,13 @@ struct ShardRange {
     const BakeScene& scene, const BakeLights& lights, const GridSettings& settings,
     const world::LightGrid& layout, const std::vector<ProbePlacement>& probes, RayCounts& rays);
 
-/// The steps after every texel is baked: dilation. Makes a part complete (shard 0 of 1).
+/// Dilates the source format's own lightmap (importedTexels), which every part holds whole and
+/// finishes itself: a package keeps only its light, not which texels were sampled, so a merge
+/// could not dilate it as the whole bake does.
+void finishImportedLightmap(const world::CompiledLevel& level, world::BakedLighting& baked);
+
+/// The steps after every texel is baked: dilation of the lightmaps. Makes a part complete
+/// (shard 0 of 1).
 void finishBakedLighting(const world::CompiledLevel& level, world::BakedLighting& baked);
 
 /// Joins the parts of a sharded bake (any order) into the unfinished whole, then finishes it.

@@ -22,8 +22,23 @@ if [ ${#missing[@]} -gt 0 ]; then
     exit 1
   fi
   echo "onelight: installing ${#missing[@]} missing packages: ${missing[*]}" >&2
+  # munge and Slurm's daemons (for the slurm tests, which start their own on localhost) must not
+  # start as system services when installed: Debian's policy-rc.d denies it for the install,
+  # unless the machine has a policy of its own.
+  policy=/usr/sbin/policy-rc.d
+  made_policy=0
+  if [ ! -e "$policy" ]; then
+    made_policy=1
+    printf '#!/bin/sh\n# onelight setup.sh: no service starts while it installs packages\nexit 101\n' > "$policy"
+    chmod 755 "$policy"
+    trap 'rm -f "$policy"' EXIT
+  fi
   apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $line >/dev/null
+  if [ "$made_policy" = 1 ]; then
+    rm -f "$policy"
+    trap - EXIT
+  fi
 fi
 
 if [ ! -f "$build/CMakeCache.txt" ]; then

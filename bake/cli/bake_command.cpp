@@ -10,6 +10,7 @@
 #include <tbb/global_control.h>
 
 #include "bake/bake_level.hpp"
+#include "bake/cli/bake_command_line.hpp"
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "bake/report/interrupt.hpp"
@@ -53,59 +54,59 @@ std::string bakeUsage() {
          {"--uniform-density", "every chart at the requested density",
           "fewer texels on charts whose light a pilot pass finds smooth"},
          {"--quiet", "no progress bars", "bars on a terminal"},
+         {"--slurm N", "bake on a Slurm cluster as N shards (its options: --slurm 1 --help)",
+          "this machine"},
          {"-h, --help", "this help", ""}});
 }
 
-int runBakeCommand(const std::vector<std::string>& arguments) {
-    if (printedHelp(arguments, bakeUsage())) return 0;
-    std::string input, output, reportPath;
-    BakeOptions options;
+bool parseBakeCommandLine(const std::vector<std::string>& arguments, BakeCommandLine& line) {
+    auto bad = [](const std::string& what) {
+        (void)badArgument(what);
+        return false;
+    };
+    BakeOptions& options = line.options;
     options.adaptiveDensity = true;
-    world::Quake3Options quake3;
-    int threads = 0;
     for (size_t i = 0; i < arguments.size(); ++i) {
         const std::string& a = arguments[i];
         const bool hasValue = i + 1 < arguments.size();
         double v = 0.0;
         if (a == "-o" && hasValue) {
-            output = arguments[++i];
+            line.output = arguments[++i];
         } else if (a == "--quality" && hasValue) {
             if (!parseQuality(arguments[++i], options.quality))
-                return badArgument("--quality '" + arguments[i] +
-                                   "'; expected draft, default or high");
+                return bad("--quality '" + arguments[i] + "'; expected draft, default or high");
         } else if (a == "--threads" && hasValue) {
             if (!parseNumber(arguments[++i], 1, 1024, v))
-                return badArgument("--threads '" + arguments[i] + "'; expected 1..1024");
-            threads = static_cast<int>(v);
+                return bad("--threads '" + arguments[i] + "'; expected 1..1024");
+            line.threads = static_cast<int>(v);
         } else if (a == "--report" && hasValue) {
-            reportPath = arguments[++i];
+            line.reportPath = arguments[++i];
         } else if (a == "--shard" && hasValue) {
             const std::string s = arguments[++i];
             const size_t slash = s.find('/');
             double index = 0, count = 0;
             if (slash == std::string::npos || !parseNumber(s.substr(0, slash), 0, 65535, index) ||
                 !parseNumber(s.substr(slash + 1), 1, 65536, count) || index >= count)
-                return badArgument("--shard '" + s + "'; expected i/N with 0 <= i < N");
+                return bad("--shard '" + s + "'; expected i/N with 0 <= i < N");
             options.shardIndex = static_cast<uint32_t>(index);
             options.shardCount = static_cast<uint32_t>(count);
         } else if (a == "--sky" && hasValue) {
             if (!parseNumber(arguments[++i], 0, 1e9, v))
-                return badArgument("--sky '" + arguments[i] + "'; expected cd/m^2 >= 0");
+                return bad("--sky '" + arguments[i] + "'; expected cd/m^2 >= 0");
             options.skyRadiance = glm::vec3(static_cast<float>(v));
         } else if (a == "--grid-cell" && hasValue) {
             if (!parseNumber(arguments[++i], 0.05, 1000, v))
-                return badArgument("--grid-cell '" + arguments[i] + "'; expected metres");
+                return bad("--grid-cell '" + arguments[i] + "'; expected metres");
             options.gridCellSize = static_cast<float>(v);
         } else if (a == "--texels-per-metre" && hasValue) {
             if (!parseNumber(arguments[++i], 0.01, 1024, v))
-                return badArgument("--texels-per-metre '" + arguments[i] +
-                                   "'; expected a number in [0.01, 1024]");
+                return bad("--texels-per-metre '" + arguments[i] +
+                           "'; expected a number in [0.01, 1024]");
             options.compile.charts.texelsPerMetre = v;
             options.compile.charts.densityFromCommandLine = true;
         } else if (a == "--patch-level" && hasValue) {
-            if (!parsePatchLevel(arguments[++i], quake3))
-                return badArgument("--patch-level '" + arguments[i] +
-                                   "'; expected an integer in [1, 64]");
+            if (!parsePatchLevel(arguments[++i], line.quake3))
+                return bad("--patch-level '" + arguments[i] + "'; expected an integer in [1, 64]");
         } else if (a == "--quiet") {
             options.showProgress = false;
         } else if (a == "--all-lights") {
@@ -116,45 +117,58 @@ int runBakeCommand(const std::vector<std::string>& arguments) {
             options.noDenoise = true;
         } else if (a == "--uniform-density") {
             options.adaptiveDensity = false;
-        } else if (!a.empty() && a[0] != '-' && input.empty()) {
-            input = a;
+        } else if (!a.empty() && a[0] != '-' && line.input.empty()) {
+            line.input = a;
         } else {
-            return badArgument("unexpected argument '" + a + "'");
+            return bad("unexpected argument '" + a + "'");
         }
     }
-    if (input.empty()) return badArgument("no level given");
-    if (output.empty()) output = world::defaultPackagePath(input);
+    if (line.input.empty()) return bad("no level given");
+    if (line.output.empty()) line.output = world::defaultPackagePath(line.input);
+    return true;
+}
+
+BakeReport bakeAndWritePackage(const world::SourceLevel& source, const BakeCommandLine& line) {
+    const BakeOptions& options = line.options;
+    world::refuseOutputOverInput(line.output, source.inputFiles);
+    noteStage("compiling the level");
+    BakeResult result = bakeLevel(source, options);
+    noteStage("writing the package");
+    package::placeImagesForPackage(result.level,
+                                   line.imagesBeside.empty() ? line.output : line.imagesBeside);
+    const std::vector<uint8_t> bytes = packageBytes(result.level, result.baked, result.textures);
+    result.report.packageBytes = bytes.size();
+    if (!line.reportPath.empty()) writeReport(line.reportPath, result.report);
+    // The package last, and whole: an interrupt from here on is ignored (interrupt.hpp).
+    ignoreInterrupts();
+    package::writeFileAtomically(line.output, bytes);
+    std::printf("baked %s (%zu bytes, quality %s%s)\n", line.output.c_str(), bytes.size(),
+                qualityName(options.quality),
+                options.shardCount > 1 ? (", shard " + std::to_string(options.shardIndex) + "/" +
+                                          std::to_string(options.shardCount))
+                                             .c_str()
+                                       : "");
+    std::printf("%s", reportSummary(result.report).c_str());
+    for (const std::string& warning : result.report.warnings)
+        std::fprintf(stderr, "onelight-bake: warning: %s: %s\n", line.input.c_str(),
+                     warning.c_str());
+    return result.report;
+}
+
+int runBakeCommand(const std::vector<std::string>& arguments) {
+    for (const std::string& a : arguments)
+        if (a == "--slurm") return runSlurmBakeCommand(arguments);
+    if (printedHelp(arguments, bakeUsage())) return 0;
+    BakeCommandLine line;
+    if (!parseBakeCommandLine(arguments, line)) return 2;
     std::unique_ptr<tbb::global_control> limit;
-    if (threads > 0)
+    if (line.threads > 0)
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      static_cast<size_t>(threads));
-    return runReportingErrors(input, [&] {
+                                                      static_cast<size_t>(line.threads));
+    return runReportingErrors(line.input, [&] {
         noteStage("importing the level");
-        const world::SourceLevel source = world::importLevel(input, quake3);
-        world::refuseOutputOverInput(output, source.inputFiles);
-        noteStage("compiling the level");
-        BakeResult result = bakeLevel(source, options);
-        noteStage("writing the package");
-        package::placeImagesForPackage(result.level, output);
-        const std::vector<uint8_t> bytes =
-            packageBytes(result.level, result.baked, result.textures);
-        if (!reportPath.empty()) {
-            result.report.packageBytes = bytes.size();
-            writeReport(reportPath, result.report);
-        }
-        // The package last, and whole: an interrupt from here on is ignored (interrupt.hpp).
-        ignoreInterrupts();
-        package::writeFileAtomically(output, bytes);
-        std::printf("baked %s (%zu bytes, quality %s%s)\n", output.c_str(), bytes.size(),
-                    qualityName(options.quality),
-                    options.shardCount > 1 ? (", shard " + std::to_string(options.shardIndex) +
-                                              "/" + std::to_string(options.shardCount))
-                                                 .c_str()
-                                           : "");
-        std::printf("%s", reportSummary(result.report).c_str());
-        for (const std::string& warning : result.report.warnings)
-            std::fprintf(stderr, "onelight-bake: warning: %s: %s\n", input.c_str(),
-                         warning.c_str());
+        const world::SourceLevel source = world::importLevel(line.input, line.quake3);
+        (void)bakeAndWritePackage(source, line);
         return 0;
     });
 }

@@ -18,11 +18,12 @@ constexpr Subcommand kSubcommands[] = {
     {"compile", &onelight::bake::runCompileCommand, &onelight::bake::compileUsage},
     {"reference", &onelight::bake::runReferenceCommand, &onelight::bake::referenceUsage},
     {"merge", &onelight::bake::runMergeCommand, &onelight::bake::mergeUsage},
+    {"slurm-task", &onelight::bake::runSlurmTaskCommand, &onelight::bake::slurmTaskUsage},
 };
 
 // Every command's help: the bake, then each subcommand.
 std::string usage() {
-    std::string text = onelight::bake::bakeUsage();
+    std::string text = onelight::bake::bakeUsage() + '\n' + onelight::bake::slurmUsage();
     for (const Subcommand& s : kSubcommands) {
         text += '\n';
         text += s.usage();

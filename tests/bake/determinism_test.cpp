@@ -108,5 +108,31 @@ INSTANTIATE_TEST_SUITE_P(Levels, BakeDeterminism, ::testing::Values(false, true)
                              return level.param ? "Textured" : "Plain";
                          });
 
+// Shards own equal shares of the placed texels, not of the atlases: placed texels crowd the
+// first tenth of a 1000-texel atlas, and the cut follows them, while every texel, placed or not,
+// still belongs to exactly one shard.
+TEST(BakeShards, TexelsAreCutIntoEqualSharesOfThePlacedTexels) {
+    std::vector<TexelSample> samples;
+    for (uint64_t t = 0; t < 100; ++t) samples.push_back({t});
+    for (uint64_t t = 100; t < 1000; t += 10) samples.push_back({t});  // 190 placed in all
+    for (const uint32_t count : {1u, 2u, 4u, 7u, 300u}) {
+        uint64_t next = 0;
+        for (uint32_t i = 0; i < count; ++i) {
+            const ShardRange r = shardRange(samples, 1000, 10, 0, i, count);
+            EXPECT_EQ(r.texelBegin, next) << i << "/" << count;
+            EXPECT_LE(r.texelBegin, r.texelEnd) << i << "/" << count;
+            next = r.texelEnd;
+            size_t owned = 0;
+            for (const TexelSample& s : samples)
+                owned += s.texel >= r.texelBegin && s.texel < r.texelEnd;
+            EXPECT_LE(owned, samples.size() / count + 1) << i << "/" << count;
+            EXPECT_GE(owned, samples.size() / count) << i << "/" << count;
+        }
+        EXPECT_EQ(next, 1000u) << count;
+    }
+    // Two shards: the first owns 95 of the crowded first 100 texels, not half the atlas.
+    EXPECT_EQ(shardRange(samples, 1000, 10, 0, 0, 2).texelEnd, 95u);
+}
+
 }  // namespace
 }  // namespace onelight::bake

@@ -13,6 +13,7 @@
 #include "tests/support/error_message.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/format.hpp"
+#include "world/package/package_reader.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -110,6 +111,28 @@ TEST(ImportedLightmap, ShardsMergeToTheWholeBake) {
     const world::BakedLighting merged = mergeBakedLighting(whole.level, parts);
     EXPECT_EQ(packageBytes(whole.level, merged, whole.textures),
               packageBytes(whole.level, whole.baked, whole.textures));
+}
+
+// As `merge` reads them: each part through its package, whose section 36 keeps only the light
+// (the texels' flags come from the part's own texels, so from its range alone).
+TEST(ImportedLightmap, ShardsReadFromTheirPackagesMergeToTheWholeBake) {
+    const world::SourceLevel source = importedLevel();
+    BakeOptions options = test::fastBakeOptions();
+    const BakeResult whole = bakeLevel(source, options);
+    std::vector<world::BakedLighting> parts;
+    world::CompiledLevel compiled;
+    for (uint32_t i = 0; i < 2; ++i) {
+        options.shardIndex = i;
+        options.shardCount = 2;
+        const BakeResult part = bakeLevel(source, options);
+        const package::PackageContents read =
+            package::parsePackage(packageBytes(part.level, part.baked, part.textures), "part");
+        parts.push_back(package::decodeBakedSections(read.bakedSections, read.level, "part").baked);
+        compiled = read.level;
+    }
+    const world::BakedLighting merged = mergeBakedLighting(compiled, parts);
+    EXPECT_TRUE(packageBytes(compiled, merged, whole.textures) ==
+                packageBytes(whole.level, whole.baked, whole.textures));
 }
 
 TEST(ImportedLightmap, Section36RoundTripsAndIsCheckedAgainstTheAtlases) {

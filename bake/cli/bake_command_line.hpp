@@ -1,0 +1,35 @@
+// The default bake's command line (onelight-bake LEVEL [-o LEVEL.olpak] [OPTIONS]) as data, and
+// the bake it runs: shared by the bake itself, the Slurm submission (which checks the options a
+// shard will be given before it submits anything) and the Slurm shard task.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bake/bake_level.hpp"
+#include "world/import/q3/q3_import.hpp"
+#include "world/source_level.hpp"
+
+namespace onelight::bake {
+
+struct BakeCommandLine {
+    std::string input, output, reportPath;  // output: LEVEL with .olpak when -o is not given
+    // Where the level's images are placed relative to (package::placeImagesForPackage): the
+    // package the merge will write, for a shard of a Slurm bake; empty: `output`.
+    std::string imagesBeside;
+    BakeOptions options;
+    world::Quake3Options quake3;
+    int threads = 0;  // 0: every core
+};
+
+/// Parses the bake's arguments. On a bad one prints "onelight-bake: WHAT" and the usage on
+/// stderr and returns false (the command then exits 2).
+[[nodiscard]] bool parseBakeCommandLine(const std::vector<std::string>& arguments,
+                                        BakeCommandLine& line);
+
+/// Bakes the imported `source` as `line` says, writes the report (if asked) and the package
+/// atomically, prints the summary on stdout and the warnings on stderr; returns the report.
+/// Throws world::Error on bad input.
+BakeReport bakeAndWritePackage(const world::SourceLevel& source, const BakeCommandLine& line);
+
+}  // namespace onelight::bake

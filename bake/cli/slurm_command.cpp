@@ -1,0 +1,387 @@
+// onelight-bake LEVEL -o OUT --slurm N [OPTIONS]: the bake as a Slurm job array of N shard
+// tasks and a merge job that runs after them (afterok, --kill-on-invalid-dep=yes: a failed shard
+// cancels it). The level is imported here once, to check it and hash it into the work folder's
+// manifest; shards already baked and verified there are skipped, so rerunning the same command
+// resumes. Waits with a progress bar over the shards (ETA from the finished ones) and prints the
+// summary a local bake prints, each shard's node and time, and the merge's.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bake/cli/bake_command_line.hpp"
+#include "bake/cli/cli_common.hpp"
+#include "bake/cli/subcommands.hpp"
+#include "bake/report/interrupt.hpp"
+#include "bake/report/progress.hpp"
+#include "bake/slurm/batch_scripts.hpp"
+#include "bake/slurm/content_hash.hpp"
+#include "bake/slurm/job_watch.hpp"
+#include "bake/slurm/scheduler.hpp"
+#include "bake/slurm/shard_reports.hpp"
+#include "bake/slurm/work_folder.hpp"
+#include "world/error.hpp"
+#include "world/file_read.hpp"
+#include "world/import/level_import.hpp"
+#include "world/level_names.hpp"
+
+namespace onelight::bake {
+namespace {
+
+using slurm::Manifest;
+using slurm::WorkFolder;
+
+/// How long the merge job may take to end once the shards have: the merge itself is short,
+/// and a merge cancelled by a failed shard ends within seconds.
+constexpr double kMergeWaitSeconds = 3600.0;
+constexpr double kCancelledMergeWaitSeconds = 120.0;
+
+struct SlurmCommandLine {
+    uint32_t shards = 0;
+    slurm::JobOptions job;
+    std::string work, emitScripts;
+    uint32_t retries = 0;
+    bool wait = true;
+    BakeCommandLine bake;
+    std::vector<std::string> bakeArguments;  // the options that change the shards' bytes
+};
+
+/// Prints a bad argument with the usage; false, for the parser to return.
+bool refuse(const std::string& what) {
+    std::fprintf(stderr, "onelight-bake: %s\n%s", what.c_str(), slurmUsage().c_str());
+    return false;
+}
+
+bool takesValue(const std::string& option) {
+    for (const char* o : {"-o", "--quality", "--threads", "--report", "--shard", "--sky",
+                          "--grid-cell", "--texels-per-metre", "--patch-level"})
+        if (option == o) return true;
+    return false;
+}
+
+/// Splits the Slurm options from the bake's; false (after printing why) on a bad one.
+bool parseSlurmCommandLine(const std::vector<std::string>& arguments, SlurmCommandLine& line) {
+    std::vector<std::string> bake;
+    bool sawShards = false;
+    for (size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& a = arguments[i];
+        const bool hasValue = i + 1 < arguments.size();
+        double v = 0.0;
+        if (a == "--slurm" && !hasValue) {
+            return refuse("--slurm needs a value: the number of shards, 1..10000");
+        } else if (a == "--slurm") {
+            if (!parseNumber(arguments[++i], 1, 10000, v) || v != double(int(v)))
+                return refuse("--slurm '" + arguments[i] +
+                              "'; expected a number of shards in [1, 10000]");
+            line.shards = uint32_t(v);
+            sawShards = true;
+        } else if (a == "--partition" && hasValue) {
+            line.job.partition = arguments[++i];
+        } else if (a == "--time" && hasValue) {
+            line.job.timeLimit = arguments[++i];
+            if (line.job.timeLimit.find_first_not_of("0123456789:-") != std::string::npos ||
+                line.job.timeLimit.empty())
+                return refuse("--time '" + line.job.timeLimit +
+                              "'; expected a Slurm time limit such as 30, 1:00:00 or 1-0");
+        } else if (a == "--cpus-per-task" && hasValue) {
+            if (!parseNumber(arguments[++i], 1, 1024, v) || v != double(int(v)))
+                return refuse("--cpus-per-task '" + arguments[i] + "'; expected 1..1024");
+            line.job.cpusPerTask = uint32_t(v);
+        } else if (a == "--retries" && hasValue) {
+            if (!parseNumber(arguments[++i], 0, 100, v) || v != double(int(v)))
+                return refuse("--retries '" + arguments[i] + "'; expected 0..100");
+            line.retries = uint32_t(v);
+        } else if (a == "--work" && hasValue) {
+            line.work = arguments[++i];
+        } else if (a == "--emit-scripts" && hasValue) {
+            line.emitScripts = arguments[++i];
+        } else if (a == "--no-wait") {
+            line.wait = false;
+        } else if (a == "--shard") {
+            return refuse(
+                "--shard with --slurm; expected one or the other (--slurm N bakes "
+                "every shard)");
+        } else if ((a == "--partition" || a == "--time" || a == "--cpus-per-task" ||
+                    a == "--retries" || a == "--work" || a == "--emit-scripts") &&
+                   !hasValue) {
+            return refuse(a + " needs a value");
+        } else {
+            bake.push_back(a);
+        }
+    }
+    if (!sawShards) return refuse("--slurm N is required");
+    if (!parseBakeCommandLine(bake, line.bake)) return false;
+    // What every shard bakes with: all but the level, where the output goes, the report, the
+    // threads (they do not change the bytes) and --quiet.
+    for (size_t i = 0; i < bake.size(); ++i) {
+        const std::string& a = bake[i];
+        const bool local = a == "-o" || a == "--report" || a == "--threads";
+        if (takesValue(a) && i + 1 < bake.size()) {
+            if (!local) line.bakeArguments.insert(line.bakeArguments.end(), {a, bake[i + 1]});
+            ++i;
+        } else if (a != "--quiet" && a != line.bake.input) {
+            line.bakeArguments.push_back(a);
+        }
+    }
+    return true;
+}
+
+std::string absolutePath(const std::string& path) {
+    return std::filesystem::absolute(path).lexically_normal().string();
+}
+
+/// The level as every node names it: a file's absolute path; PAK.pk3:maps/NAME.bsp with the
+/// pk3's absolute path; an installed map's NAME as it is.
+std::string levelForNodes(const std::string& level) {
+    std::error_code error;
+    if (std::filesystem::exists(level, error)) return absolutePath(level);
+    const size_t colon = level.find(':');
+    if (colon != std::string::npos && std::filesystem::exists(level.substr(0, colon), error))
+        return absolutePath(level.substr(0, colon)) + level.substr(colon);
+    return level;
+}
+
+std::string selfExecutable() {
+    std::error_code error;
+    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (error) throw world::Error("/proc/self/exe: cannot find onelight-bake's own path");
+    return self.string();
+}
+
+std::string shardList(const std::vector<uint32_t>& shards) {
+    return shards.size() == 1 ? "shard " + slurm::arraySpec(shards)
+                              : "shards " + slurm::arraySpec(shards);
+}
+
+/// Submits the array of `shards` and the merge after it; returns {array job, merge job} (the
+/// array job empty when there is no shard to bake).
+std::pair<std::string, std::string> submit(const WorkFolder& work,
+                                           const std::vector<uint32_t>& shards) {
+    std::string array;
+    std::vector<std::string> mergeArguments;
+    if (!shards.empty()) {
+        array =
+            slurm::submitJob({"--array=" + slurm::arraySpec(shards)}, work.scripts() + "/shard.sh");
+        mergeArguments = {"--dependency=afterok:" + array, "--kill-on-invalid-dep=yes"};
+    }
+    const std::string merge = slurm::submitJob(mergeArguments, work.scripts() + "/merge.sh");
+    slurm::writeSubmittedJobs(work, {array, merge, shards});
+    return {array, merge};
+}
+
+/// The last submission when it is still going, has failed nowhere and covers every shard still
+/// to bake: its merge job queued or running, none of its array tasks failed. A rerun (after
+/// --no-wait, or an interrupted wait) then waits for it instead of submitting again.
+std::optional<slurm::SubmittedJobs> submissionInFlight(const WorkFolder& work,
+                                                       const std::vector<uint32_t>& missing) {
+    const std::optional<slurm::SubmittedJobs> jobs = slurm::readSubmittedJobs(work);
+    if (!jobs) return std::nullopt;
+    for (const uint32_t shard : missing)
+        if (std::find(jobs->shards.begin(), jobs->shards.end(), shard) == jobs->shards.end())
+            return std::nullopt;
+    const slurm::JobDetails merge = slurm::queryJob(jobs->mergeJob);
+    if (merge.state.empty() || slurm::finalState(merge.state)) return std::nullopt;
+    if (!jobs->arrayJob.empty())
+        for (const slurm::TaskState& t : slurm::queryArrayTasks(jobs->arrayJob))
+            if (slurm::failedState(t.state)) return std::nullopt;
+    return jobs;
+}
+
+void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Manifest& manifest,
+                  const std::string& mergeJob, double wallSeconds) {
+    std::vector<BakeReport> reports;
+    std::vector<slurm::ShardStamp> stamps;
+    for (uint32_t i = 0; i < manifest.shardCount; ++i) {
+        reports.push_back(slurm::readReport(work.shardReport(i)));
+        const std::optional<slurm::ShardStamp> stamp = slurm::verifiedShard(work, manifest, i);
+        if (stamp) stamps.push_back(*stamp);
+    }
+    BakeReport whole = slurm::combineShardReports(reports);
+    const std::optional<slurm::MergeStamp> merge = slurm::readMergeStamp(work);
+    whole.packageBytes = merge ? merge->packageBytes : 0;
+    if (!line.bake.reportPath.empty())
+        slurm::writeSlurmReport(line.bake.reportPath, whole, stamps, reports,
+                                merge.value_or(slurm::MergeStamp{}), wallSeconds);
+    std::printf("baked %s (%llu bytes, quality %s, %u shards on Slurm, merge job %s)\n",
+                line.bake.output.c_str(), static_cast<unsigned long long>(whole.packageBytes),
+                qualityName(line.bake.options.quality), manifest.shardCount, mergeJob.c_str());
+    std::printf("%s", reportSummary(whole).c_str());
+    std::printf("  (stage seconds and rays are summed over the shards)\n");
+    std::printf("%s", slurm::shardTimeLines(stamps, reports).c_str());
+    if (merge) std::printf("  merge      %-12s %8.2f s\n", merge->node.c_str(), merge->seconds);
+    std::printf("  wall       %.2f s from submission to the package\n", wallSeconds);
+    for (const std::string& warning : whole.warnings)
+        std::fprintf(stderr, "onelight-bake: warning: %s: %s\n", manifest.level.c_str(),
+                     warning.c_str());
+}
+
+/// Waits for the rounds of shard tasks (a first one, then one per retry) and the merge.
+int waitForBake(const SlurmCommandLine& line, const WorkFolder& work, const Manifest& manifest,
+                std::vector<uint32_t> shards, std::pair<std::string, std::string> jobs) {
+    const auto start = std::chrono::steady_clock::now();
+    if (line.bake.options.showProgress)
+        std::fprintf(
+            stderr,
+            "onelight-bake: waiting for the jobs; Ctrl-C stops waiting, the jobs go on and "
+            "rerunning the same command resumes\n");
+    Progress progress("shards", shards.size(), line.bake.options.showProgress);
+    for (uint32_t attempt = 0; !shards.empty(); ++attempt) {
+        std::vector<slurm::ShardFailure> failures = slurm::watchShardArray(
+            work, manifest, jobs.first, shards, [&](uint32_t) { progress.advance(1); },
+            [&](const slurm::ShardFailure& f) {
+                std::fprintf(stderr, "\nonelight-bake: %s\n", slurm::describeFailure(f).c_str());
+            });
+        if (failures.empty()) break;
+        shards.clear();
+        for (const slurm::ShardFailure& f : failures) shards.push_back(f.shard);
+        // The merge was cancelled by the failure (--kill-on-invalid-dep); make sure of it.
+        const slurm::JobDetails merge = slurm::waitForJob(jobs.second, kCancelledMergeWaitSeconds);
+        if (!merge.state.empty() && !slurm::finalState(merge.state)) slurm::cancelJob(jobs.second);
+        if (attempt < line.retries) {
+            jobs = submit(work, shards);
+            std::fprintf(stderr,
+                         "onelight-bake: resubmitted %s (retry %u of %u) as array job %s, the "
+                         "merge as job %s\n",
+                         shardList(shards).c_str(), attempt + 1, line.retries, jobs.first.c_str(),
+                         jobs.second.c_str());
+            continue;
+        }
+        std::string message = std::to_string(failures.size()) + " of " +
+                              std::to_string(manifest.shardCount) + " shards failed: ";
+        for (size_t i = 0; i < failures.size(); ++i)
+            message += (i ? "; " : "") + slurm::describeFailure(failures[i]);
+        throw world::Error(message + "; the merge job " + jobs.second + " was " +
+                           (merge.state.empty() ? "ended" : "cancelled") +
+                           " and no package was written; rerun the same command to bake only "
+                           "the missing shards");
+    }
+    progress.finish();
+    const slurm::JobDetails merge = slurm::waitForJob(jobs.second, kMergeWaitSeconds);
+    const std::optional<slurm::MergeStamp> stamp = slurm::readMergeStamp(work);
+    if (merge.state != "COMPLETED" && !(merge.state.empty() && stamp))
+        throw world::Error("the merge job " + jobs.second + " ended " +
+                           (merge.state.empty() ? "unseen" : merge.state) +
+                           (merge.node.empty() ? "" : " on node " + merge.node) +
+                           (merge.exitCode.empty() ? "" : " (exit " + merge.exitCode + ")") +
+                           (merge.log.empty() ? "" : "; its log: " + merge.log) +
+                           "; no package was written");
+    if (!stamp || stamp->output != line.bake.output)
+        throw world::Error(work.mergeStamp() +
+                           ": missing or for another output after the merge "
+                           "job " +
+                           jobs.second + "; expected " + line.bake.output);
+    printSummary(line, work, manifest, jobs.second,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return 0;
+}
+
+int runSlurmBake(SlurmCommandLine& line) {
+    line.bake.output = absolutePath(line.bake.output);
+    const WorkFolder work{absolutePath(
+        line.work.empty()
+            ? std::filesystem::path(line.bake.output).replace_extension(".slurm").string()
+            : line.work)};
+    if (line.emitScripts.empty()) slurm::requireSlurmClients();
+
+    noteStage("importing the level");
+    const world::SourceLevel source = world::importLevel(line.bake.input, line.bake.quake3);
+    world::refuseOutputOverInput(line.bake.output, source.inputFiles);
+    Manifest manifest;
+    manifest.level = levelForNodes(line.bake.input);
+    manifest.levelHash = slurm::hashFiles(source.inputFiles);
+    manifest.output = line.bake.output;
+    manifest.bakeArguments = line.bakeArguments;
+    manifest.shardCount = line.shards;
+
+    slurm::makeWorkFolder(work);
+    if (const std::optional<Manifest> found = slurm::readManifest(work)) {
+        if (!slurm::sameBake(*found, manifest))
+            throw world::Error(work.root + ": the work folder of another bake: " +
+                               slurm::describeChange(*found, manifest) +
+                               "; it is left as it is (its jobs may still run): remove it or "
+                               "pass another --work");
+    } else {
+        slurm::writeManifest(work, manifest);
+    }
+    std::vector<uint32_t> missing;
+    for (uint32_t i = 0; i < manifest.shardCount; ++i)
+        if (!slurm::verifiedShard(work, manifest, i)) missing.push_back(i);
+
+    const slurm::BatchScripts scripts =
+        slurm::batchScripts(work, selfExecutable(), line.bake.output, line.job, missing);
+    slurm::writeBatchScripts(work.scripts(), scripts);
+    if (!line.emitScripts.empty()) {
+        slurm::writeBatchScripts(line.emitScripts, scripts);
+        std::printf(
+            "wrote %s/shard.sh, merge.sh and submit.sh (%s of %u to bake); submit them "
+            "with %s/submit.sh\n",
+            line.emitScripts.c_str(), missing.empty() ? "no shard" : shardList(missing).c_str(),
+            manifest.shardCount, line.emitScripts.c_str());
+        return 0;
+    }
+
+    if (missing.size() < manifest.shardCount)
+        std::printf("%u of %u shards already baked and verified in %s\n",
+                    manifest.shardCount - uint32_t(missing.size()), manifest.shardCount,
+                    work.root.c_str());
+    std::pair<std::string, std::string> jobs;
+    if (const std::optional<slurm::SubmittedJobs> earlier = submissionInFlight(work, missing)) {
+        jobs = {earlier->arrayJob, earlier->mergeJob};
+        std::printf(
+            "the jobs of an earlier run are still queued or running: %s%s, the merge "
+            "job %s; waiting for them\n",
+            missing.empty() ? "no shard" : shardList(missing).c_str(),
+            jobs.first.empty() ? "" : (" in array job " + jobs.first).c_str(), jobs.second.c_str());
+    } else {
+        std::error_code error;
+        std::filesystem::remove(work.mergeStamp(), error);  // a previous run's: not this merge's
+        jobs = submit(work, missing);
+        if (missing.empty())
+            std::printf("submitted the merge as job %s\n", jobs.second.c_str());
+        else
+            std::printf("submitted %s of %u as array job %s, the merge as job %s (after them)\n",
+                        shardList(missing).c_str(), manifest.shardCount, jobs.first.c_str(),
+                        jobs.second.c_str());
+    }
+    std::fflush(stdout);
+    if (!line.wait) {
+        std::printf(
+            "not waiting (--no-wait): the logs are in %s; rerun the same command without "
+            "--no-wait to wait for these jobs (it submits nothing while they are queued or "
+            "running)\n",
+            work.logs().c_str());
+        return 0;
+    }
+    return waitForBake(line, work, manifest, missing, jobs);
+}
+
+}  // namespace
+
+std::string slurmUsage() {
+    return formatUsage(
+        "onelight-bake LEVEL -o OUT.olpak --slurm N [OPTIONS] [BAKE OPTIONS]",
+        "bakes LEVEL on a Slurm cluster: a job array of N shards and a merge job after them, "
+        "with\n  the bake's options (above); rerunning the same command resumes (docs/slurm.md)",
+        {{"--slurm N", "shards, one array task each, 1..10000", kRequired},
+         {"--partition P", "the partition of every job", "the cluster's default"},
+         {"--time T", "each job's time limit (30, 1:00:00, 1-0)", "the partition's"},
+         {"--cpus-per-task C", "cores of each job (its bake's threads)", "the cluster's default"},
+         {"--work DIR", "the work folder, on a filesystem the nodes share", "OUT with .slurm"},
+         {"--retries K", "resubmit failed shards up to K times, 0..100", "0"},
+         {"--no-wait", "print the job ids and return", "wait, with progress"},
+         {"--emit-scripts DIR", "only write the batch scripts (shard, merge, submit) to DIR",
+          "submit"},
+         {"-h, --help", "this help", ""}});
+}
+
+int runSlurmBakeCommand(const std::vector<std::string>& arguments) {
+    if (printedHelp(arguments, slurmUsage())) return 0;
+    SlurmCommandLine line;
+    if (!parseSlurmCommandLine(arguments, line)) return 2;
+    return runReportingErrors(line.bake.input, [&] { return runSlurmBake(line); });
+}
+
+}  // namespace onelight::bake

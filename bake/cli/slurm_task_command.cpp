@@ -1,0 +1,181 @@
+// onelight-bake slurm-task --work DIR (--shard I | --merge -o OUT): what the jobs of a Slurm
+// bake run (their batch scripts call it, bake/slurm/batch_scripts.hpp). A shard task bakes part
+// I of the level in the work folder's manifest, after checking that the level is still the one
+// the manifest hashed, and stamps the part (work_folder.hpp); the merge task merges the parts
+// after verifying every stamp. ONELIGHT_SLURM_FAIL_SHARD=I makes shard I fail before it bakes:
+// the tests' fault injection (sbatch passes the submitting environment on to the tasks).
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <tbb/global_control.h>
+
+#include "bake/cli/bake_command_line.hpp"
+#include "bake/cli/cli_common.hpp"
+#include "bake/cli/subcommands.hpp"
+#include "bake/report/interrupt.hpp"
+#include "bake/slurm/content_hash.hpp"
+#include "bake/slurm/work_folder.hpp"
+#include "world/error.hpp"
+#include "world/import/level_import.hpp"
+
+namespace onelight::bake {
+namespace {
+
+using slurm::Manifest;
+using slurm::WorkFolder;
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+Manifest requireManifest(const WorkFolder& work) {
+    const std::optional<Manifest> manifest = slurm::readManifest(work);
+    if (!manifest)
+        throw world::Error(work.manifest() +
+                           ": missing; expected the work folder of onelight-bake --slurm");
+    return *manifest;
+}
+
+/// The threads Slurm gave the task (--cpus-per-task), or every core.
+std::unique_ptr<tbb::global_control> limitThreadsToAllocation() {
+    const char* cpus = std::getenv("SLURM_CPUS_PER_TASK");
+    double count = 0.0;
+    if (!cpus || !parseNumber(cpus, 1, 1024, count)) return nullptr;
+    return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                 static_cast<size_t>(count));
+}
+
+/// The tests' fault injection: ONELIGHT_SLURM_FAIL_SHARD=I fails shard I each time it runs;
+/// I,once only the first time (a marker in the work folder remembers it).
+void failOnPurposeIfAsked(const WorkFolder& work, uint32_t shard) {
+    const char* value = std::getenv("ONELIGHT_SLURM_FAIL_SHARD");
+    if (!value) return;
+    const std::string fail = value, index = std::to_string(shard);
+    if (fail != index && fail != index + ",once") return;
+    if (fail != index) {
+        const std::string marker = work.root + "/fault-injected-" + index;
+        if (std::filesystem::exists(marker)) return;
+        std::FILE* file = std::fopen(marker.c_str(), "w");
+        if (file) std::fclose(file);
+    }
+    throw world::Error("shard " + index + ": failing on purpose (ONELIGHT_SLURM_FAIL_SHARD=" +
+                       fail + ", the tests' fault injection)");
+}
+
+int bakeShard(const WorkFolder& work, uint32_t shard) {
+    const auto start = std::chrono::steady_clock::now();
+    const Manifest manifest = requireManifest(work);
+    if (shard >= manifest.shardCount)
+        throw world::Error("--shard " + std::to_string(shard) + ": " + work.root + " bakes " +
+                           std::to_string(manifest.shardCount) + " shards; expected 0.." +
+                           std::to_string(manifest.shardCount - 1));
+    failOnPurposeIfAsked(work, shard);
+    std::vector<std::string> arguments = {
+        manifest.level,
+        "-o",
+        work.shardPackage(shard),
+        "--shard",
+        std::to_string(shard) + "/" + std::to_string(manifest.shardCount),
+        "--report",
+        work.shardReport(shard),
+        "--quiet"};
+    arguments.insert(arguments.end(), manifest.bakeArguments.begin(), manifest.bakeArguments.end());
+    BakeCommandLine line;
+    if (!parseBakeCommandLine(arguments, line)) return 2;
+    line.imagesBeside = manifest.output;
+    const std::unique_ptr<tbb::global_control> limit = limitThreadsToAllocation();
+    noteStage("importing the level");
+    const world::SourceLevel source = world::importLevel(line.input, line.quake3);
+    const uint64_t levelHash = slurm::hashFiles(source.inputFiles);
+    if (levelHash != manifest.levelHash)
+        throw world::Error(manifest.level +
+                           ": changed since the bake was submitted (content hash " +
+                           slurm::hashHex(levelHash) + ", the work folder's " +
+                           slurm::hashHex(manifest.levelHash) +
+                           "); expected the level the manifest hashed: run onelight-bake --slurm "
+                           "again with another --work");
+    (void)bakeAndWritePackage(source, line);
+    slurm::writeShardStamp(work, manifest, shard, slurm::hostName(), secondsSince(start));
+    return 0;
+}
+
+int mergeShards(const WorkFolder& work, const std::string& output) {
+    const auto start = std::chrono::steady_clock::now();
+    const Manifest manifest = requireManifest(work);
+    if (std::filesystem::absolute(output).lexically_normal() != manifest.output)
+        throw world::Error("-o " + output + ": " + work.root + " bakes " + manifest.output +
+                           "; expected that package (the shards placed its images for it)");
+    std::vector<std::string> arguments = {"-o", output};
+    for (uint32_t i = 0; i < manifest.shardCount; ++i) {
+        if (!slurm::verifiedShard(work, manifest, i))
+            throw world::Error(work.shardStamp(i) + ": shard " + std::to_string(i) + " of " +
+                               std::to_string(manifest.shardCount) +
+                               " is missing or does not verify (checksum, level or settings); "
+                               "expected every shard baked before the merge");
+        arguments.push_back(work.shardPackage(i));
+    }
+    const int code = runMergeCommand(arguments);
+    if (code != 0) return code;
+    std::error_code error;
+    slurm::writeMergeStamp(work, {slurm::hostName(), output, secondsSince(start),
+                                  std::filesystem::file_size(output, error)});
+    return 0;
+}
+
+int badArgument(const std::string& what) {
+    std::fprintf(stderr, "onelight-bake slurm-task: %s\n%s", what.c_str(),
+                 slurmTaskUsage().c_str());
+    return 2;
+}
+
+}  // namespace
+
+std::string slurmTaskUsage() {
+    return formatUsage(
+        "onelight-bake slurm-task --work DIR (--shard I | --merge -o OUT)",
+        "what the jobs of onelight-bake --slurm run (their batch scripts call it): bake shard I "
+        "of the work folder's level, or merge its verified shards into OUT",
+        {{"--work DIR", "the work folder of the Slurm bake", kRequired},
+         {"--shard I", "bake shard I (the array task's index)", "none"},
+         {"--merge", "merge every verified shard", "none"},
+         {"-o PATH", "the package the merge writes (required with --merge)", ""},
+         {"-h, --help", "this help", ""}});
+}
+
+int runSlurmTaskCommand(const std::vector<std::string>& arguments) {
+    if (printedHelp(arguments, slurmTaskUsage())) return 0;
+    std::string workPath, output;
+    bool merge = false, hasShard = false;
+    uint32_t shard = 0;
+    for (size_t i = 0; i < arguments.size(); ++i) {
+        const std::string& a = arguments[i];
+        const bool hasValue = i + 1 < arguments.size();
+        double v = 0.0;
+        if (a == "--work" && hasValue) {
+            workPath = arguments[++i];
+        } else if (a == "-o" && hasValue) {
+            output = arguments[++i];
+        } else if (a == "--shard" && hasValue) {
+            if (!parseNumber(arguments[++i], 0, 65535, v) || v != double(uint32_t(v)))
+                return badArgument("--shard '" + arguments[i] + "'; expected an index 0..65535");
+            shard = uint32_t(v);
+            hasShard = true;
+        } else if (a == "--merge") {
+            merge = true;
+        } else {
+            return badArgument("unexpected argument '" + a + "'");
+        }
+    }
+    if (workPath.empty()) return badArgument("--work DIR is required");
+    if (merge == hasShard) return badArgument("expected one of --shard I and --merge");
+    if (merge && output.empty()) return badArgument("--merge needs -o OUT");
+    const WorkFolder work{std::filesystem::absolute(workPath).lexically_normal().string()};
+    return runReportingErrors(
+        work.root, [&] { return merge ? mergeShards(work, output) : bakeShard(work, shard); });
+}
+
+}  // namespace onelight::bake
