@@ -22,7 +22,8 @@ std::string usage() {
          "samples, the nearest supported is used (default: " + std::to_string(d.msaa) + ")"},
         {"--anisotropy N",
          "material textures' anisotropic filtering, 1 (off)..16 taps, clamped to the device's "
-         "(default: " + std::to_string(d.anisotropy) + ")"},
+         "(default: " +
+             std::to_string(d.anisotropy) + ")"},
         {"--render-scale S",
          "window only: draw at S (0.25..1) of the window's size and scale up to it (default: "
          "0.5 on a CPU device such as lavapipe, else 1)"},

@@ -56,6 +56,7 @@ const int SPEC_ALPHA_MASK = 1;      // 1: discard below the cutoff
 const int SPEC_FLAT_SHADING = 2;    // 1: constant colour (the benchmark floor)
 const int SPEC_BAKED_LIGHTING = 3;  // 1: fetch the baked lighting (or its placeholders)
 const int SPEC_DIFFUSE_MODEL = 4;   // DIFFUSE_* of lighting.glsl: the level's diffuse model
+const int SPEC_MATERIAL_PIPELINE = 5;  // 0: without the material pipeline's pieces (benchmark)
 
 // ---------------------------------------------------------------------------------------------
 // Records

@@ -121,8 +121,8 @@ vk::ContextOptions renderContextOptions(RenderDeviceFeatures& features,
     features.vulkan13 = {};
     features.vulkan13.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES;
     features.vulkan13.dynamicRendering = VK_TRUE;
-    options.features.imageCubeArray = VK_TRUE;  // the probes' cube array
-    options.features.depthBiasClamp = VK_TRUE;  // the sun shadow map's bias limit
+    options.features.imageCubeArray = VK_TRUE;     // the probes' cube array
+    options.features.depthBiasClamp = VK_TRUE;     // the sun shadow map's bias limit
     options.features.samplerAnisotropy = VK_TRUE;  // material textures at grazing view
     options.featureChain = &features.vulkan13;
     return options;

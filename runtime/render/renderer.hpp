@@ -141,6 +141,10 @@ struct RendererOptions {
     // isotropic error in every band). It pays once the shader folds the filtered normal's
     // shortening into gloss (docs/materials.md, "Anisotropic filtering").
     float anisotropy = 1.0f;
+    // false: the forward pass without the material pipeline's runtime pieces (the fold of the
+    // filter's spread, the cavity, the direct lights' energy weight), to measure their cost
+    // (onelight-bench-render). The frame is then not the level's.
+    bool materialPipeline = true;
 };
 
 /// What the renderer settled on.

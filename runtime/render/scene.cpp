@@ -227,8 +227,8 @@ VkSampler samplerFor(RendererState& s, const world::Sampler& sampler) {
     vk::SamplerDesc desc = samplerDesc(sampler);
     // Anisotropy only where there are mips to choose from (NEAREST and LINEAR have none).
     if (desc.maxLod != 0.0f)
-        desc.maxAnisotropy = std::min(s.options.anisotropy,
-                                      s.ctx->properties.limits.maxSamplerAnisotropy);
+        desc.maxAnisotropy =
+            std::min(s.options.anisotropy, s.ctx->properties.limits.maxSamplerAnisotropy);
     VkSampler created = vk::createSampler(*s.ctx, desc);
     s.samplers[key] = created;
     return created;

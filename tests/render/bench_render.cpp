@@ -2,18 +2,22 @@
 // spheres and boxes of all four material classes, a sun, a spot and an omni primary). Reports
 // median frame times, the full-PBR / Lambert-only permutation ratio on the same frame (goal
 // <= 1.15), the full-frame / flat-shaded-floor ratio with the same geometry and MSAA (goal <= 1.3)
-// and resident memory; then the probes' cost on a baked level (`onelight-bench-render
+// and resident memory; the material pipeline's runtime pieces on and off (goal <= 1.1); then the
+// probes' cost on a baked level (`onelight-bench-render
 // [PACKAGE]`, default the demo's draft package) and its frame loop with and without frames in
 // flight. Compare ratios from one run only
 // (docs/toolchain.md, "Timing things": timings are noisy).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "bumpy_floor.hpp"
+#include "render/camera.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
 
@@ -189,6 +193,46 @@ void benchLevelScale(vk::Context& ctx) {
         median(gpu[1]) / median(gpu[0]), median(gpu[3]) / median(gpu[2]));
 }
 
+// The material pipeline's runtime pieces (the fold of a filtered normal into gloss, the cavity,
+// the direct lights' energy weight; docs/materials.md) against the same frame without them
+// (RendererOptions::materialPipeline), frames interleaved: on a bump-mapped glossy floor that
+// fills the view (every pixel normal-mapped, its worst case) and on a baked level.
+void benchMaterialPipeline(vk::Context& ctx, const std::string& package) {
+    const std::string folder = test::outputDir() + "/bench_material_pipeline";
+    std::filesystem::create_directories(folder);
+    const std::string floorGltf = test::writeBumpyGlossyFloor(folder, "black_ops", 16.0f / 9.0f);
+    struct Level {
+        const char* name;
+        assets::LoadedLevel level;
+        render::FrameInputs inputs;
+    };
+    std::vector<Level> levels;
+    levels.push_back(
+        {"bump-mapped glossy floor", test::bakeAndLoad(floorGltf, folder + "/floor.olpak"), {}});
+    levels.back().inputs.camera = render::cameraFromLevel(levels.back().level.level.cameras.at(0));
+    levels.push_back({"baked level", assets::loadLevel(package), {}});
+    levels.back().inputs.camera = render::cameraFromYawPitch({-6.0f, 1.7f, 0.0f}, -90.0f, -3.0f);
+    for (Level& l : levels) {
+        std::vector<render::Renderer> renderers(2);  // with the pipeline, without
+        for (size_t c = 0; c < 2; ++c) {
+            render::RendererOptions o;
+            o.materialPipeline = c == 0;
+            render::createRenderer(renderers[c], ctx, l.level, o);
+            for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderers[c], l.inputs, waited);
+        }
+        std::vector<double> gpu[2];
+        for (int i = 0; i < kFrames; ++i)
+            for (size_t c = 0; c < 2; ++c)
+                gpu[c].push_back(render::drawFrame(renderers[c], l.inputs, waited).gpuMs);
+        for (auto it = renderers.rbegin(); it != renderers.rend(); ++it)
+            render::destroyRenderer(*it);
+        std::printf(
+            "  material pipeline, %s: %.2f ms GPU with it, %.2f without, ratio %.3f (goal <= "
+            "1.1)\n",
+            l.name, median(gpu[0]), median(gpu[1]), median(gpu[0]) / median(gpu[1]));
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -244,6 +288,7 @@ int main(int argc, char** argv) {
         for (auto it = renderers.rbegin(); it != renderers.rend(); ++it)
             render::destroyRenderer(*it);
         benchLevelScale(ctx);
+        benchMaterialPipeline(ctx, argc > 1 ? argv[1] : ONELIGHT_DEMO_PACKAGE);
         benchProbes(ctx, argc > 1 ? argv[1] : ONELIGHT_DEMO_PACKAGE);
         benchFrameLoop(ctx, argc > 1 ? argv[1] : ONELIGHT_DEMO_PACKAGE);
         vk::destroyContext(ctx);

@@ -20,89 +20,19 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "bumpy_floor.hpp"
 #include "capture/capture.hpp"
 #include "render/camera.hpp"
 #include "test_scene.hpp"
-#include "world/gltf/gltf_builder.hpp"
 
 namespace {
 
 using namespace onelight;
-using nlohmann::json;
+using test::kCameraHeight;
 
 constexpr uint32_t kWidth = 256, kHeight = 160;
 constexpr uint32_t kReferenceSpp = 512;
-constexpr uint32_t kBumpTexels = 64;   // the normal map's size
-constexpr float kTileMetres = 0.5f;    // one repeat of the normal map
-constexpr float kCameraHeight = 1.7f;  // metres above the floor
 constexpr uint32_t kBlockW = 4, kBlockH = 2;
-
-json vec(glm::vec3 v) {
-    return json::array({v.x, v.y, v.z});
-}
-
-// Egg-crate bumps, one period per tile: slopes (dh/dx, dh/dy) = s (cos 2 pi u sin 2 pi v,
-// sin 2 pi u cos 2 pi v) with s = 0.5 (up to 27 degrees), as a tangent-space normal map.
-void writeBumpNormalMap(const std::string& path) {
-    std::vector<uint8_t> rgba(size_t(kBumpTexels) * kBumpTexels * 4, 255);
-    constexpr double kSlope = 0.5;
-    for (uint32_t y = 0; y < kBumpTexels; ++y)
-        for (uint32_t x = 0; x < kBumpTexels; ++x) {
-            const double u = 2.0 * M_PI * (double(x) + 0.5) / kBumpTexels;
-            const double v = 2.0 * M_PI * (double(y) + 0.5) / kBumpTexels;
-            const glm::dvec3 n = glm::normalize(glm::dvec3(
-                -kSlope * std::cos(u) * std::sin(v), -kSlope * std::sin(u) * std::cos(v), 1.0));
-            uint8_t* p = &rgba[(size_t(y) * kBumpTexels + x) * 4];
-            for (int c = 0; c < 3; ++c)
-                p[c] = uint8_t(std::lround(std::clamp(0.5 + 0.5 * n[c], 0.0, 1.0) * 255.0));
-        }
-    capture::writePng(path, kBumpTexels, kBumpTexels, rgba);
-}
-
-std::string writeFloor(const std::string& folder, const char* glossMips) {
-    world::GltfBuilder g;
-    g.document()["images"] = json::array({{{"uri", "bumps.png"}}});
-    g.document()["textures"] = json::array({{{"source", 0}}});
-    const int floorMaterial = g.addMaterial({{"name", "glossy_bumps"},
-                                             {"pbrMetallicRoughness",
-                                              {{"baseColorFactor", {0.1f, 0.1f, 0.1f, 1.0f}},
-                                               {"metallicFactor", 0.0f},
-                                               {"roughnessFactor", 0.2f}}},
-                                             {"normalTexture", {{"index", 0}}}});
-    world::MeshData floor;
-    floor.name = "floor";
-    const float x0 = -150.0f, x1 = 150.0f, z0 = -500.0f, z1 = 10.0f;
-    floor.positions = {{x0, 0.0f, z0}, {x1, 0.0f, z0}, {x1, 0.0f, z1}, {x0, 0.0f, z1}};
-    floor.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
-    for (const glm::vec3& p : floor.positions)
-        floor.uv0.push_back({p.x / kTileMetres, p.z / kTileMetres});
-    floor.indices = {0, 2, 1, 0, 3, 2};
-    floor.material = floorMaterial;
-    g.addNode({{"name", "floor"}, {"mesh", g.addMesh(floor)}});
-    // The sun 8 degrees above the horizon, ahead of the camera: its light travels towards +z.
-    const float elevation = glm::radians(8.0f);
-    const int sun = g.addLight({{"type", "directional"}, {"intensity", 20000.0f}});
-    // -z (a light's forward) turned about +x by pi + elevation: (0, -sin e, cos e).
-    const glm::quat sunTurn = glm::angleAxis(float(M_PI) + elevation, glm::vec3(1.0f, 0.0f, 0.0f));
-    g.addNode({{"name", "sun"},
-               {"rotation", {sunTurn.x, sunTurn.y, sunTurn.z, sunTurn.w}},
-               {"extensions", {{"KHR_lights_punctual", {{"light", sun}}}}}});
-    g.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"gloss_mips", glossMips}}}}}});
-    const int camera = g.addCamera({{"name", "view"},
-                                    {"type", "perspective"},
-                                    {"perspective",
-                                     {{"yfov", 0.25f},
-                                      {"znear", 0.05f},
-                                      {"zfar", 1000.0f},
-                                      {"aspectRatio", float(kWidth) / float(kHeight)}}}});
-    const glm::quat look = glm::angleAxis(glm::radians(-6.5f), glm::vec3(1.0f, 0.0f, 0.0f));
-    g.addNode({{"name", "view"},
-               {"translation", vec({0.0f, kCameraHeight, 5.0f})},
-               {"rotation", {look.x, look.y, look.z, look.w}},
-               {"camera", camera},
-               {"extras", {{"onelight", {{"exposure", 9.0f}}}}}});
-    return g.write(folder, std::string("floor_") + glossMips);
-}
 
 // Metres along the floor from the camera to what pixel (x, y) sees at its centre; 0 above the
 // horizon.
@@ -163,11 +93,11 @@ BandError bandError(const render::Camera& camera, const std::vector<float>& fram
 // The reference at `seed`, RGB floats.
 std::vector<float> renderReference(const std::string& gltf, const std::string& path,
                                    uint32_t seed) {
-    const std::string command =
-        std::string(ONELIGHT_BAKE_PATH) + " reference " + gltf + " --camera view --size " +
-        std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --spp " +
-        std::to_string(kReferenceSpp) + " --seed " + std::to_string(seed) + " -o " + path +
-        " > /dev/null 2>&1";
+    const std::string command = std::string(ONELIGHT_BAKE_PATH) + " reference " + gltf +
+                                " --camera view --size " + std::to_string(kWidth) + "x" +
+                                std::to_string(kHeight) + " --spp " +
+                                std::to_string(kReferenceSpp) + " --seed " + std::to_string(seed) +
+                                " -o " + path + " > /dev/null 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     const capture::FloatImage image = capture::readExr(path);
     EXPECT_EQ(image.width, kWidth);
@@ -181,10 +111,10 @@ std::vector<float> renderReference(const std::string& gltf, const std::string& p
 TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
     const std::string folder = test::outputDir() + "/material_mips";
     std::filesystem::create_directories(folder);
-    writeBumpNormalMap(folder + "/bumps.png");
     const char* methods[3] = {"blit", "black_ops", "wwii"};
     std::string gltfs[3];
-    for (int m = 0; m < 3; ++m) gltfs[m] = writeFloor(folder, methods[m]);
+    for (int m = 0; m < 3; ++m)
+        gltfs[m] = test::writeBumpyGlossyFloor(folder, methods[m], float(kWidth) / float(kHeight));
 
     // Two independent references (seeds 0 and 1); the frames are compared with their mean, whose
     // own noise is half the RMS of their difference (each has variance s^2: the difference 2 s^2,
@@ -238,10 +168,11 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
             halfDifference[i * 4 + c] =
                 reference[i * 3 + c] + 0.5f * (reference0[i * 3 + c] - reference1[i * 3 + c]);
 
-    std::printf("[ mips ] relative RMS error of %ux%u-pixel blocks against the reference (%u x 2 "
-                "paths per pixel)\n[ mips ] band       reference noise | isotropic: blit, black "
-                "ops, wwii | 16x anisotropic: blit, black ops, wwii\n",
-                kBlockW, kBlockH, kReferenceSpp);
+    std::printf(
+        "[ mips ] relative RMS error of %ux%u-pixel blocks against the reference (%u x 2 "
+        "paths per pixel)\n[ mips ] band       reference noise | isotropic: blit, black "
+        "ops, wwii | 16x anisotropic: blit, black ops, wwii\n",
+        kBlockW, kBlockH, kReferenceSpp);
     for (size_t b = 0; b < std::size(kBands); ++b) {
         BandError e[6];
         for (size_t c = 0; c < configs.size(); ++c)
@@ -249,8 +180,8 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
         const BandError noise = bandError(camera, halfDifference, reference, kBands[b]);
         std::printf(
             "[ mips ] %3.0f..%3.0f m: %.3f | %.3f %.3f %.3f | %.3f %.3f %.3f (%zu blocks)\n",
-            double(kBands[b].near), double(kBands[b].far), noise.rms, e[0].rms, e[1].rms,
-            e[2].rms, e[3].rms, e[4].rms, e[5].rms, e[0].blocks);
+            double(kBands[b].near), double(kBands[b].far), noise.rms, e[0].rms, e[1].rms, e[2].rms,
+            e[3].rms, e[4].rms, e[5].rms, e[0].blocks);
         ASSERT_GE(e[0].blocks, 8u) << "band " << b;
         // The reference's noise must be well below the errors it measures.
         EXPECT_LE(noise.rms, 0.25 * e[1].rms) << "band " << b;

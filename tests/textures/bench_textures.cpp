@@ -78,13 +78,13 @@ void benchLevel(const std::string& spec) {
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double mt = megatexels(out);
-        std::printf("  %-9s %7.3f s for %6.2f megatexels of level 0 (%zu textures): %7.1f ms per "
-                    "megatexel\n",
-                    m.name, seconds, mt, out.textures.size(), mt > 0.0 ? 1e3 * seconds / mt : 0.0);
+        std::printf(
+            "  %-9s %7.3f s for %6.2f megatexels of level 0 (%zu textures): %7.1f ms per "
+            "megatexel\n",
+            m.name, seconds, mt, out.textures.size(), mt > 0.0 ? 1e3 * seconds / mt : 0.0);
         if (m.method == level.glossMips) last = out;
     }
-    std::printf("  memory (the level's method, %s):\n",
-                kMethods[size_t(level.glossMips)].name);
+    std::printf("  memory (the level's method, %s):\n", kMethods[size_t(level.glossMips)].name);
     printMemory(last);
 }
 
@@ -93,16 +93,16 @@ void benchLevel(const std::string& spec) {
 int main(int argc, char** argv) {
     std::vector<std::string> levels(argv + 1, argv + argc);
     if (levels.empty()) {
-        const std::filesystem::path sample =
-            std::filesystem::path(ONELIGHT_SHARED_ASSETS) /
-            "NormalTangentTest/glTF/NormalTangentTest.gltf";
+        const std::filesystem::path sample = std::filesystem::path(ONELIGHT_SHARED_ASSETS) /
+                                             "NormalTangentTest/glTF/NormalTangentTest.gltf";
         if (std::filesystem::exists(sample)) levels.push_back(sample.lexically_normal());
         if (std::filesystem::exists("/usr/share/games/openarena/baseoa"))
             levels.insert(levels.end(), {"aggressor", "kaos"});
     }
     if (levels.empty()) {
-        std::fprintf(stderr, "onelight-bench-textures: no level given and none of the default ones "
-                             "found (usage: onelight-bench-textures [LEVEL ...])\n");
+        std::fprintf(stderr,
+                     "onelight-bench-textures: no level given and none of the default ones "
+                     "found (usage: onelight-bench-textures [LEVEL ...])\n");
         return 2;
     }
     std::printf("onelight-bench-textures: the texture stage per level and method, %u threads\n",

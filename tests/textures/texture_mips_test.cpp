@@ -304,8 +304,8 @@ TEST(GlossTables, ShaderFoldOfAFilteredNormal) {
         NormalGlossLevel level{2, 2, {}, {}};
         for (int k = 0; k < 4; ++k) {
             const double phi = 2.0 * kPi * random.next();
-            level.normals.push_back(glm::normalize(glm::vec3(
-                glm::dvec3(spread * std::cos(phi), spread * std::sin(phi), 1.0))));
+            level.normals.push_back(glm::normalize(
+                glm::vec3(glm::dvec3(spread * std::cos(phi), spread * std::sin(phi), 1.0))));
             level.gloss.push_back(g);
         }
         const glm::vec3 mean =
@@ -325,15 +325,15 @@ TEST(GlossTables, ShaderFoldOfAFilteredNormal) {
             worstMip = std::max(worstMip, std::abs(double(folded) - double(chain[1].gloss[0])));
         }
     }
-    std::printf("  fold against the tables: max %.2e in gloss; against the offline WWII mip "
-                "(spread > 10x the allowance): max %.2e\n",
-                worstTable, worstMip);
+    std::printf(
+        "  fold against the tables: max %.2e in gloss; against the offline WWII mip "
+        "(spread > 10x the allowance): max %.2e\n",
+        worstTable, worstMip);
     EXPECT_LT(worstTable, 1e-3);  // the fit's 4.6e-4 and float
     // The allowance shortens d by at most a tenth: log2 of 0.9 over the table's slope of about
     // 13.3 units per gloss gives 0.011, with the fit's error 0.012.
     EXPECT_LT(worstMip, 0.012);
 }
-
 
 // ---------------------------------------------------------------------------------------------
 // Mip chains

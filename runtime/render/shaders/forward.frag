@@ -15,6 +15,10 @@ layout(constant_id = SPEC_FLAT_SHADING) const int FLAT_SHADING = 0;  // 1: const
 // lux, no baked shadow, a uniform environment of normalised radiance 1 / pi) without any fetch.
 layout(constant_id = SPEC_BAKED_LIGHTING) const int BAKED_LIGHTING = 1;
 layout(constant_id = SPEC_DIFFUSE_MODEL) const int DIFFUSE_MODEL = DIFFUSE_LAMBERT;
+// 0: the frame as it was before the material pipeline (docs/materials.md), for its cost in
+// onelight-bench-render only: no fold of the filter's spread into gloss, no cavity fetch, no
+// energy-conservation weight on the direct lights.
+layout(constant_id = SPEC_MATERIAL_PIPELINE) const int MATERIAL_PIPELINE = 1;
 
 layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
@@ -172,7 +176,8 @@ void main() {
         vec3 texel = texture(normalTexture, inUv0).rgb;
         if (tl > 1e-6) n = normal_fromTangentSpace(texel, m.params.z, geometricNormal, t / tl, inTangent.w);
         // The filter's spread of the normals under this pixel folds into its gloss.
-        if (MATERIAL_CLASS != MATERIAL_LAMBERT) gloss = gloss_withFilteredNormal(gloss, texel * 2.0 - 1.0);
+        if (MATERIAL_PIPELINE == 1 && MATERIAL_CLASS != MATERIAL_LAMBERT)
+            gloss = gloss_withFilteredNormal(gloss, texel * 2.0 - 1.0);
     }
     vec3 toCamera = frame.cameraPosition.xyz - p;
     float viewDistance = length(toCamera);
@@ -185,7 +190,8 @@ void main() {
     float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
     vec2 env = vec2(0.0);
     if (MATERIAL_CLASS != MATERIAL_LAMBERT) env = texture(envBrdfTable, envBrdfTableCoord(NoV, gloss)).rg;
-    float cavity = hasTexture(m, TEXTURE_CAVITY) ? texture(cavityTexture, inUv0).r : 1.0;
+    float cavity = MATERIAL_PIPELINE == 1 && hasTexture(m, TEXTURE_CAVITY) ? texture(cavityTexture, inUv0).r : 1.0;
+    vec2 directEnv = MATERIAL_PIPELINE == 1 ? env : vec2(0.0);  // the direct lights' energy weight
 
     // The one primary light, times its shadow.
     if (draw.primaryLight != NO_INDEX) {
@@ -198,7 +204,7 @@ void main() {
             float runtime = viewDistance < radius ? runtimeShadow(light, p, geometricNormal, s.l) : 1.0;
             float shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
                                        frame.shadowParams.y);
-            radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, env,
+            radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
                                            cavity, d) * s.illuminance * shadow;
         }
     }
@@ -207,13 +213,13 @@ void main() {
     if (MATERIAL_CLASS != MATERIAL_METAL) {
         for (uint i = 0u; i < frame.counts.x; ++i) {
             LightSample s = evaluateGpuLight(frame.effectOmnis[i], p);
-            radiance += diffuseReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, env,
+            radiance += diffuseReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
                                            cavity, brdfDots(n, v, s.l)) * s.illuminance;
         }
     }
     if (frame.counts.y != 0u) {
         LightSample s = evaluateGpuLight(frame.effectSpot, p);
-        radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, env, cavity,
+        radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity,
                                        brdfDots(n, v, s.l)) * s.illuminance;
     }
 
