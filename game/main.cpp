@@ -187,7 +187,7 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
     try {
         game::FreeFly fly = game::freeFlyFrom(camera);
         auto last = std::chrono::steady_clock::now();
-        const uint32_t frames = cl.headless ? 1 : cl.frames;
+        const uint32_t frames = cl.headless ? std::max(cl.frames, 1u) : cl.frames;
         for (uint32_t frame = 0; !game::targetWantsToClose(target); ++frame) {
             const auto now = std::chrono::steady_clock::now();
             const float dt = std::chrono::duration<float>(now - last).count();
