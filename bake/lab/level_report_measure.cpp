@@ -1,0 +1,227 @@
+// level-report's measurements: the level's cameras, a reference per camera (two seeds), and per
+// setting a bake (when it changes the baker's arguments) and a timed frame per camera. The
+// baker and the runtime run as child processes found beside onelight-lab.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "bake/report/progress.hpp"
+#include "block_error.hpp"
+#include "child_process.hpp"
+#include "level_report.hpp"
+#include "pareto.hpp"
+#include "world/error.hpp"
+#include "world/import/level_import.hpp"
+
+namespace onelight::lab {
+
+namespace {
+
+constexpr double kDefaultTexelsPerMetre = 16.0;  // world/charts/chart_build.hpp's default
+
+nlohmann::json readJson(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(path + ": cannot read");
+    try {
+        return nlohmann::json::parse(in);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(path + ": not JSON: " + e.what());
+    }
+}
+
+double finiteNumber(const nlohmann::json& j, const char* key, const std::string& path) {
+    if (!j.contains(key) || !j[key].is_number())
+        throw std::runtime_error(path + ": no number '" + key + "'");
+    const double v = j[key].get<double>();
+    if (!std::isfinite(v)) throw std::runtime_error(path + ": '" + key + "' is not finite");
+    return v;
+}
+
+struct Runner {
+    std::string bakeExe, runtimeExe, work, log;
+};
+
+void mustRun(const Runner& r, const std::vector<std::string>& argv) {
+    const ChildRun run = runChild(argv, r.log);
+    if (run.exitCode != 0) {
+        std::string line;
+        for (const std::string& a : argv) line += (line.empty() ? "" : " ") + a;
+        throw std::runtime_error(line + " exited with " + std::to_string(run.exitCode) + ": " +
+                                 tailOfFile(r.log, 3));
+    }
+}
+
+std::string sizeText(const LevelReportOptions& o) {
+    return std::to_string(o.width) + "x" + std::to_string(o.height);
+}
+
+// The cameras to measure: all of the level's, or those named (each must exist).
+std::vector<std::string> chosenCameras(const LevelReportOptions& o,
+                                       const world::SourceLevel& level) {
+    std::vector<std::string> all;
+    for (const world::Camera& c : level.cameras) all.push_back(c.name);
+    if (all.empty())
+        throw world::Error(o.level + ": the level has no cameras; level-report measures from them");
+    if (o.cameras.empty()) return all;
+    std::string names;
+    for (const std::string& n : all) names += (names.empty() ? "" : ", ") + n;
+    for (const std::string& want : o.cameras)
+        if (std::find(all.begin(), all.end(), want) == all.end())
+            throw std::invalid_argument("--cameras: no camera '" + want + "' in " + o.level +
+                                        "; expected all or some of: " + names);
+    return o.cameras;
+}
+
+struct Bake {
+    std::string package;
+    double seconds = 0.0;
+    uint64_t bytes = 0;
+};
+
+Bake bake(const Runner& r, const LevelReportOptions& o, const KnobSetting& s, size_t index) {
+    Bake b;
+    b.package = r.work + "/bake" + std::to_string(index) + ".olpak";
+    const std::string json = r.work + "/bake" + std::to_string(index) + ".json";
+    std::vector<std::string> argv = {r.bakeExe,  o.level, "-o",     b.package,
+                                     "--report", json,    "--quiet"};
+    for (const std::string& a : baselineBakeArgs()) argv.push_back(a);
+    for (const std::string& a : s.bakeArgs) argv.push_back(a);
+    mustRun(r, argv);
+    const nlohmann::json j = readJson(json);
+    b.seconds = finiteNumber(j, "seconds_total", json);
+    b.bytes = uint64_t(finiteNumber(j, "package_bytes", json));
+    return b;
+}
+
+// One timed frame: its capture's EXR, GPU ms, MSAA in use and exposure.
+ReportRow frame(const Runner& r, const LevelReportOptions& o, const std::string& package,
+                const std::string& camera, const std::string& base, const KnobSetting& s,
+                std::string& device) {
+    std::vector<std::string> argv = {r.runtimeExe, package,     "--headless",
+                                     "--size",     sizeText(o), "--camera",
+                                     camera,       "--frames",  std::to_string(kFramesPerRun),
+                                     "--capture",  base};
+    for (const std::string& a : s.frameArgs) argv.push_back(a);
+    mustRun(r, argv);
+    const std::string json = base + ".json";
+    const nlohmann::json j = readJson(json);
+    ReportRow row;
+    row.setting = s;
+    row.frameExr = base + ".exr";
+    if (!j.contains("timings_ms") || !j["timings_ms"].is_object())
+        throw std::runtime_error(json + ": no timings_ms");
+    row.frameMs = finiteNumber(j["timings_ms"], "gpu", json);
+    row.msaaInUse = uint32_t(finiteNumber(j["msaa"], "in_use", json));
+    row.ev100 = float(finiteNumber(j["camera"], "ev100", json));
+    if (j.contains("device") && j["device"].is_string()) device = j["device"].get<std::string>();
+    return row;
+}
+
+double minutesSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.0;
+}
+
+}  // namespace
+
+LevelReport measureLevel(const LevelReportOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    LevelReport report;
+    report.options = o;
+    const world::SourceLevel level = world::importLevel(o.level);
+    const std::vector<std::string> cameras = chosenCameras(o, level);
+    const double texelsPerMetre =
+        level.texelsPerMetre > 0.0f ? double(level.texelsPerMetre) : kDefaultTexelsPerMetre;
+    const std::vector<KnobSetting> settings = levelKnobs(texelsPerMetre, o.quick);
+    report.settingsPlanned = settings.size();
+
+    Runner r;
+    r.bakeExe = siblingExecutable("onelight-bake");
+    r.runtimeExe = siblingExecutable("onelight");
+    r.work = o.output + "/work";
+    std::filesystem::create_directories(r.work);
+    r.log = r.work + "/children.log";
+    std::filesystem::remove(r.log);
+
+    size_t bakes = 0;
+    for (const KnobSetting& s : settings) bakes += s.bakeArgs.empty() ? 0 : 1;
+    bake::Progress progress("level-report", cameras.size() * (2 + settings.size()) + bakes + 1,
+                            true);
+
+    const auto referencesStart = std::chrono::steady_clock::now();
+    for (size_t c = 0; c < cameras.size(); ++c) {
+        CameraReport cam;
+        cam.name = cameras[c];
+        std::string seeds[2];
+        for (int seed = 0; seed < 2; ++seed) {
+            seeds[seed] = r.work + "/cam" + std::to_string(c) + "_reference_seed" +
+                          std::to_string(seed) + ".exr";
+            mustRun(r, {r.bakeExe, "reference", o.level, "--camera", cam.name, "--spp",
+                        std::to_string(o.spp), "--size", sizeText(o), "--seed",
+                        std::to_string(seed), "-o", seeds[seed]});
+            progress.advance(1);
+        }
+        cam.referenceExr = seeds[0];
+        cam.referenceNoise =
+            blockErrors(capture::readExr(seeds[1]), capture::readExr(seeds[0])).mean;
+        report.cameras.push_back(cam);
+    }
+    report.referenceSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - referencesStart).count();
+
+    Bake baseline;
+    for (size_t i = 0; i < settings.size(); ++i) {
+        const KnobSetting& s = settings[i];
+        // The baseline always; every other setting while the budget lasts.
+        if (i > 0 && o.budgetMinutes > 0.0 && minutesSince(start) >= o.budgetMinutes) {
+            report.stoppedByBudget = true;
+            break;
+        }
+        const bool ownBake = i == 0 || !s.bakeArgs.empty();
+        const Bake b = ownBake ? bake(r, o, s, i) : baseline;
+        if (ownBake) progress.advance(1);
+        if (i == 0) baseline = b;
+        for (size_t c = 0; c < cameras.size(); ++c) {
+            CameraReport& cam = report.cameras[c];
+            const std::string base =
+                r.work + "/cam" + std::to_string(c) + "_setting" + std::to_string(i);
+            ReportRow row = frame(r, o, b.package, cam.name, base, s, report.device);
+            row.bakeSeconds = b.seconds;
+            row.packageBytes = b.bytes;
+            row.error =
+                blockErrors(capture::readExr(row.frameExr), capture::readExr(cam.referenceExr))
+                    .mean;
+            cam.rows.push_back(row);
+            progress.advance(1);
+        }
+        if (ownBake && i > 0) std::filesystem::remove(b.package);
+        ++report.settingsMeasured;
+    }
+    progress.finish();
+    for (CameraReport& cam : report.cameras) {
+        std::vector<Costs> costs;
+        for (const ReportRow& row : cam.rows)
+            costs.push_back({row.frameMs, row.bakeSeconds, row.error});
+        const std::vector<bool> front = paretoFront(costs);
+        for (size_t k = 0; k < cam.rows.size(); ++k) cam.rows[k].front = front[k];
+    }
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+int levelReport(const LevelReportOptions& options) {
+    const LevelReport report = measureLevel(options);
+    writeLevelReport(report);
+    std::printf("wrote %s/README.md: %zu cameras, %zu of %zu settings in %.1f s%s\n",
+                options.output.c_str(), report.cameras.size(), report.settingsMeasured,
+                report.settingsPlanned, report.seconds,
+                report.stoppedByBudget ? " (stopped by --budget-minutes)" : "");
+    return 0;
+}
+
+}  // namespace onelight::lab
