@@ -26,7 +26,7 @@ std::vector<std::string> baselineBakeArgs() {
 
 std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, bool quick) {
     std::vector<KnobSetting> out;
-    out.push_back({"baseline", "draft bake, runtime defaults", {}, {}});
+    out.push_back({"baseline", "draft bake; runtime defaults", {}, {}});
     // The runtime's knobs: the baseline's package, one onelight option changed.
     for (const std::string& v : pick({"1", "4"}, quick))
         out.push_back({"MSAA", v + "x", {}, {"--msaa", v}});

@@ -27,6 +27,7 @@ constexpr uint32_t kFramesPerRun = 3;  // the runtime draws these and times the 
 struct ReportRow {
     KnobSetting setting;
     double frameMs = 0.0;      // GPU ms of the last of kFramesPerRun frames (capture JSON)
+    bool gpuTimed = true;      // false: the device gave no timestamps, frameMs is CPU ms
     double bakeSeconds = 0.0;  // the bake report's seconds_total (the baseline's for a runtime
                                // knob: same package)
     uint64_t packageBytes = 0;

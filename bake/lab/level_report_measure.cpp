@@ -35,11 +35,17 @@ nlohmann::json readJson(const std::string& path) {
 }
 
 double finiteNumber(const nlohmann::json& j, const char* key, const std::string& path) {
-    if (!j.contains(key) || !j[key].is_number())
+    if (!j.is_object() || !j.contains(key) || !j[key].is_number())
         throw std::runtime_error(path + ": no number '" + key + "'");
     const double v = j[key].get<double>();
     if (!std::isfinite(v)) throw std::runtime_error(path + ": '" + key + "' is not finite");
     return v;
+}
+
+const nlohmann::json& member(const nlohmann::json& j, const char* key, const std::string& path) {
+    if (!j.is_object() || !j.contains(key) || !j[key].is_object())
+        throw std::runtime_error(path + ": no object '" + key + "'");
+    return j[key];
 }
 
 struct Runner {
@@ -113,11 +119,12 @@ ReportRow frame(const Runner& r, const LevelReportOptions& o, const std::string&
     ReportRow row;
     row.setting = s;
     row.frameExr = base + ".exr";
-    if (!j.contains("timings_ms") || !j["timings_ms"].is_object())
-        throw std::runtime_error(json + ": no timings_ms");
-    row.frameMs = finiteNumber(j["timings_ms"], "gpu", json);
-    row.msaaInUse = uint32_t(finiteNumber(j["msaa"], "in_use", json));
-    row.ev100 = float(finiteNumber(j["camera"], "ev100", json));
+    const nlohmann::json& timings = member(j, "timings_ms", json);
+    row.gpuTimed = timings.contains("gpu_timestamps") && timings["gpu_timestamps"].is_boolean() &&
+                   timings["gpu_timestamps"].get<bool>();
+    row.frameMs = finiteNumber(timings, row.gpuTimed ? "gpu" : "cpu", json);
+    row.msaaInUse = uint32_t(finiteNumber(member(j, "msaa", json), "in_use", json));
+    row.ev100 = float(finiteNumber(member(j, "camera", json), "ev100", json));
     if (j.contains("device") && j["device"].is_string()) device = j["device"].get<std::string>();
     return row;
 }

@@ -130,7 +130,8 @@ std::string markdown(const LevelReport& report) {
         " frames that `onelight PKG --headless --camera NAME --frames " +
         std::to_string(kFramesPerRun) +
         " --capture` draws; one run, so a few percent of "
-        "noise. The MSAA column is the sample count in use (the renderer takes the nearest "
+        "noise (`(CPU)` marks a device without timestamps: the CPU time instead). The MSAA column "
+        "is the sample count in use (the renderer takes the nearest "
         "the device supports to the request; lavapipe offers 1x and 4x).\n";
     md +=
         "- **bake s** and **bytes**: the bake report's `seconds_total` and `package_bytes`. "
@@ -162,10 +163,10 @@ std::string markdown(const LevelReport& report) {
         md += "|---|---|---:|---:|---:|---:|---:|---:|---|\n";
         for (const ReportRow& row : cam.rows)
             md += "| " + row.setting.knob + " | " + row.setting.value + " | " +
-                  fixed(row.frameMs, 2) + " | " + std::to_string(row.msaaInUse) + "x | " +
-                  fixed(row.bakeSeconds, 2) + " | " + std::to_string(row.packageBytes) + " | " +
-                  fixed(row.error, 4) + " | " + fixed(cam.referenceNoise, 4) + " | " +
-                  (row.front ? "yes" : "no") + " |\n";
+                  fixed(row.frameMs, 2) + (row.gpuTimed ? "" : " (CPU)") + " | " +
+                  std::to_string(row.msaaInUse) + "x | " + fixed(row.bakeSeconds, 2) + " | " +
+                  std::to_string(row.packageBytes) + " | " + fixed(row.error, 4) + " | " +
+                  fixed(cam.referenceNoise, 4) + " | " + (row.front ? "yes" : "no") + " |\n";
         md += "\n![error against frame ms](" + stem + "_error_vs_frame_ms.png)\n";
         md += "![error against bake seconds](" + stem + "_error_vs_bake_s.png)\n\n";
         md += "Contact sheet: [" + stem + "_sheet.png](" + stem + "_sheet.png)\n\n";

@@ -1,5 +1,7 @@
 #include "pareto.hpp"
 
+#include <cstddef>
+
 namespace onelight::lab {
 
 bool dominates(const Costs& a, const Costs& b) {
