@@ -21,12 +21,12 @@ struct LevelReportOptions {
     bool quick = false;          // one value per knob
 };
 
-constexpr uint32_t kFramesPerRun = 3;  // the runtime draws these and times the last
+constexpr uint32_t kFramesPerRun = 9;  // the runtime draws these; their median GPU time
 
 // One setting seen from one camera.
 struct ReportRow {
     KnobSetting setting;
-    double frameMs = 0.0;      // GPU ms of the last of kFramesPerRun frames (capture JSON)
+    double frameMs = 0.0;      // median GPU ms of kFramesPerRun frames (capture JSON)
     bool gpuTimed = true;      // false: the device gave no timestamps, frameMs is CPU ms
     double bakeSeconds = 0.0;  // the bake report's seconds_total (the baseline's for a runtime
                                // knob: same package)

@@ -122,7 +122,7 @@ ReportRow frame(const Runner& r, const LevelReportOptions& o, const std::string&
     const nlohmann::json& timings = member(j, "timings_ms", json);
     row.gpuTimed = timings.contains("gpu_timestamps") && timings["gpu_timestamps"].is_boolean() &&
                    timings["gpu_timestamps"].get<bool>();
-    row.frameMs = finiteNumber(timings, row.gpuTimed ? "gpu" : "cpu", json);
+    row.frameMs = finiteNumber(timings, row.gpuTimed ? "gpu_median" : "cpu", json);
     row.msaaInUse = uint32_t(finiteNumber(member(j, "msaa", json), "in_use", json));
     row.ev100 = float(finiteNumber(member(j, "camera", json), "ev100", json));
     if (j.contains("device") && j["device"].is_string()) device = j["device"].get<std::string>();

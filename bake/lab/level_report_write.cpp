@@ -124,13 +124,14 @@ std::string markdown(const LevelReport& report) {
         "and grid, and `onelight`'s defaults (MSAA 2x requested, anisotropy 1, probes on, "
         "1024-texel shadow maps, 40 m of runtime shadows). Each other row changes one knob.\n";
     md +=
-        "- **frame ms**: the GPU time (timestamp queries, `timings_ms.gpu` of the capture "
-        "JSON) of the last of " +
+        "- **frame ms**: the median GPU time (timestamp queries, `timings_ms.gpu_median` of "
+        "the capture JSON) of the " +
         std::to_string(kFramesPerRun) +
         " frames that `onelight PKG --headless --camera NAME --frames " +
         std::to_string(kFramesPerRun) +
-        " --capture` draws; one run, so a few percent of "
-        "noise (`(CPU)` marks a device without timestamps: the CPU time instead). The MSAA column "
+        " --capture` draws; one run, so expect some noise "
+        "on a busy machine (`(CPU)` marks a device without timestamps: the last frame's CPU "
+        "time instead). The MSAA column "
         "is the sample count in use (the renderer takes the nearest "
         "the device supports to the request; lavapipe offers 1x and 4x).\n";
     md +=
