@@ -24,7 +24,8 @@ std::vector<std::string> baselineBakeArgs() {
     return {"--quality", "draft"};
 }
 
-std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, bool quick) {
+std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, const std::string& levelGlossMips,
+                                    bool patchable, bool quick) {
     std::vector<KnobSetting> out;
     out.push_back({"baseline", "draft bake; runtime defaults", {}, {}});
     // The runtime's knobs: the baseline's package, one onelight option changed.
@@ -46,6 +47,16 @@ std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, bool quick) {
     }
     for (const std::string& v : pick({"2", "0.5", "4"}, quick))
         out.push_back({"grid cell m", v, {"--grid-cell", v}, {}});
+    // The material pipeline's per-level choice: a patched copy of the glTF, a bake each.
+    if (patchable) {
+        std::vector<std::string> others;
+        for (const char* v : {"blit", "wwii", "black_ops"})
+            if (v != levelGlossMips) others.push_back(v);
+        for (const std::string& v : pick(others, quick)) {
+            KnobSetting s{"gloss mips", v, {}, {}, "gloss_mips", v};
+            out.push_back(s);
+        }
+    }
     return out;
 }
 
@@ -59,9 +70,9 @@ std::vector<MissingKnob> missingKnobs() {
         {"probe count and face size",
          "not a command-line choice of the baker yet: the count follows the level's "
          "extras.onelight.probe_spacing, the face size the quality preset"},
-        {"material pipeline (gloss_mips, diffuse)",
-         "per-level extras.onelight keys; not measured here yet (a patched copy of the glTF "
-         "would measure them)"},
+        {"diffuse model (extras.onelight.diffuse)",
+         "a change of the BRDF itself, not an approximation of one: the reference follows it, "
+         "so there is no fixed truth to measure against"},
     };
 }
 

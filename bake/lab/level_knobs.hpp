@@ -13,6 +13,9 @@ struct KnobSetting {
     std::string value;                   // as the table shows it, e.g. "8"
     std::vector<std::string> bakeArgs;   // added to the baseline's onelight-bake arguments
     std::vector<std::string> frameArgs;  // added to the baseline's onelight arguments
+    // A level-wide extras.onelight key and value that a patched copy of the glTF bakes with
+    // (gltf_patch.hpp); empty: the level as it is.
+    std::string levelKey, levelValue;
 };
 
 // The baseline's arguments: the baker at draft quality and the level's own density, the
@@ -20,9 +23,12 @@ struct KnobSetting {
 [[nodiscard]] std::vector<std::string> baselineBakeArgs();
 
 // The baseline, then the runtime's knobs (no new bake), then the baker's. `levelTexelsPerMetre`
-// is the level's own density (its extras, else the baker's default); `quick` keeps one value per
-// knob (tests).
-[[nodiscard]] std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, bool quick);
+// is the level's own density (its extras, else the baker's default); `levelGlossMips` its
+// extras.onelight.gloss_mips; `patchable` whether a patched copy can be made (a .gltf), else the
+// per-level knobs are left out; `quick` keeps one value per knob (tests).
+[[nodiscard]] std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre,
+                                                  const std::string& levelGlossMips, bool patchable,
+                                                  bool quick);
 
 // Knobs the issue names that are not a choice the engine offers yet, each with why: the report
 // lists them instead of measuring them.

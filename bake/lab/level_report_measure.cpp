@@ -13,6 +13,7 @@
 #include "bake/report/progress.hpp"
 #include "block_error.hpp"
 #include "child_process.hpp"
+#include "gltf_patch.hpp"
 #include "level_report.hpp"
 #include "pareto.hpp"
 #include "world/error.hpp"
@@ -129,6 +130,23 @@ ReportRow frame(const Runner& r, const LevelReportOptions& o, const std::string&
     return row;
 }
 
+// A setting that changes the bake rather than only the runtime.
+bool ownBake(const KnobSetting& s) {
+    return !s.bakeArgs.empty() || !s.levelKey.empty();
+}
+
+std::string glossMipsName(world::GlossMipMethod m) {
+    switch (m) {
+        case world::GlossMipMethod::kBlit:
+            return "blit";
+        case world::GlossMipMethod::kWwii:
+            return "wwii";
+        case world::GlossMipMethod::kBlackOps:
+            break;
+    }
+    return "black_ops";
+}
+
 double minutesSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.0;
 }
@@ -143,7 +161,8 @@ LevelReport measureLevel(const LevelReportOptions& o) {
     const std::vector<std::string> cameras = chosenCameras(o, level);
     const double texelsPerMetre =
         level.texelsPerMetre > 0.0f ? double(level.texelsPerMetre) : kDefaultTexelsPerMetre;
-    const std::vector<KnobSetting> settings = levelKnobs(texelsPerMetre, o.quick);
+    const std::vector<KnobSetting> settings =
+        levelKnobs(texelsPerMetre, glossMipsName(level.glossMips), canPatchLevel(o.level), o.quick);
     report.settingsPlanned = settings.size();
 
     Runner r;
@@ -155,7 +174,7 @@ LevelReport measureLevel(const LevelReportOptions& o) {
     std::filesystem::remove(r.log);
 
     size_t bakes = 0;
-    for (const KnobSetting& s : settings) bakes += s.bakeArgs.empty() ? 0 : 1;
+    for (const KnobSetting& s : settings) bakes += ownBake(s) ? 1 : 0;
     bake::Progress progress("level-report", cameras.size() * (2 + settings.size()) + bakes + 1,
                             true);
 
@@ -188,9 +207,9 @@ LevelReport measureLevel(const LevelReportOptions& o) {
             report.stoppedByBudget = true;
             break;
         }
-        const bool ownBake = i == 0 || !s.bakeArgs.empty();
-        const Bake b = ownBake ? bake(r, o, s, i) : baseline;
-        if (ownBake) progress.advance(1);
+        const bool baked = i == 0 || ownBake(s);
+        const Bake b = baked ? bake(r, o, s, i) : baseline;
+        if (baked) progress.advance(1);
         if (i == 0) baseline = b;
         for (size_t c = 0; c < cameras.size(); ++c) {
             CameraReport& cam = report.cameras[c];
@@ -205,7 +224,7 @@ LevelReport measureLevel(const LevelReportOptions& o) {
             cam.rows.push_back(row);
             progress.advance(1);
         }
-        if (ownBake && i > 0) std::filesystem::remove(b.package);
+        if (baked && i > 0) std::filesystem::remove(b.package);
         ++report.settingsMeasured;
     }
     progress.finish();

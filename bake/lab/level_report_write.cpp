@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 #include "block_error.hpp"
 #include "display_image.hpp"
@@ -48,8 +49,17 @@ void renameInto(const std::string& tmp, const std::string& path) {
                                  std::generic_category().message(errno));
 }
 
-std::string settingText(const ReportRow& row) {
-    return row.setting.knob + " " + row.setting.value;
+// A row as the plot's legend shows it: short enough for its column (about 22 characters).
+std::string legendText(const ReportRow& row) {
+    const std::pair<const char*, const char*> shortNames[] = {
+        {"shadow-map size", "shadow map"}, {"shadow distance m", "shadow m"},
+        {"bake quality", "quality"},       {"texels per metre", "texels/m"},
+        {"grid cell m", "grid m"},         {"anisotropy", "aniso"}};
+    if (row.setting.knob == "baseline") return "baseline";
+    std::string knob = row.setting.knob;
+    for (const auto& [longName, shortName] : shortNames)
+        if (knob == longName) knob = shortName;
+    return knob + " " + row.setting.value;
 }
 
 void writePlots(const CameraReport& cam, const std::string& dir, const std::string& stem) {
@@ -61,7 +71,7 @@ void writePlots(const CameraReport& cam, const std::string& dir, const std::stri
         int colour = 0;
         for (const ReportRow& row : cam.rows) {
             PlotSeries s;
-            s.label = settingText(row) + (row.front ? " *" : "");
+            s.label = legendText(row) + (row.front ? " *" : "");
             s.color = seriesColor(colour++);
             s.points = {{againstFrame ? row.frameMs : row.bakeSeconds, row.error}};
             plot.series.push_back(s);

@@ -149,7 +149,7 @@ TEST_F(LevelReport, ARowPerKnobWithFiniteCostsAndConsistentParetoFlags) {
     const std::vector<Row> rows = readCsv(out / "level_report.csv");
     for (const char* knob :
          {"baseline", "MSAA", "anisotropy", "probes", "shadow-map size", "shadow distance m",
-          "bake quality", "texels per metre", "grid cell m"}) {
+          "bake quality", "texels per metre", "grid cell m", "gloss mips"}) {
         int found = 0;
         for (const Row& row : rows) found += row.knob == knob ? 1 : 0;
         EXPECT_EQ(found, 1) << knob;
@@ -194,6 +194,8 @@ TEST_F(LevelReport, ARowPerKnobWithFiniteCostsAndConsistentParetoFlags) {
     EXPECT_EQ(sheet.height, kHeight * rows.size());
     for (const auto& entry : fs::directory_iterator(out))
         EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
+    for (const auto& entry : fs::directory_iterator(folder_))  // the patched copies are gone
+        EXPECT_EQ(entry.path().string().find(".level-report-"), std::string::npos) << entry.path();
 }
 
 TEST_F(LevelReport, TheBudgetStopsAfterTheBaselineAndSaysSo) {
