@@ -1,6 +1,7 @@
 #include "level_knobs.hpp"
 
 #include <cstdio>
+#include <utility>
 
 namespace onelight::lab {
 
@@ -18,6 +19,16 @@ std::vector<std::string> pick(std::vector<std::string> values, bool quick) {
     return values;
 }
 
+KnobSetting setting(std::string knob, std::string value, std::vector<std::string> bakeArgs,
+                    std::vector<std::string> frameArgs) {
+    KnobSetting s;
+    s.knob = std::move(knob);
+    s.value = std::move(value);
+    s.bakeArgs = std::move(bakeArgs);
+    s.frameArgs = std::move(frameArgs);
+    return s;
+}
+
 }  // namespace
 
 std::vector<std::string> baselineBakeArgs() {
@@ -27,33 +38,35 @@ std::vector<std::string> baselineBakeArgs() {
 std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, const std::string& levelGlossMips,
                                     bool patchable, bool quick) {
     std::vector<KnobSetting> out;
-    out.push_back({"baseline", "draft bake; runtime defaults", {}, {}});
+    out.push_back(setting("baseline", "draft bake; runtime defaults", {}, {}));
     // The runtime's knobs: the baseline's package, one onelight option changed.
     for (const std::string& v : pick({"1", "4"}, quick))
-        out.push_back({"MSAA", v + "x", {}, {"--msaa", v}});
+        out.push_back(setting("MSAA", v + "x", {}, {"--msaa", v}));
     for (const std::string& v : pick({"16", "4"}, quick))
-        out.push_back({"anisotropy", v, {}, {"--anisotropy", v}});
-    out.push_back({"probes", "off", {}, {"--no-probes"}});
+        out.push_back(setting("anisotropy", v, {}, {"--anisotropy", v}));
+    out.push_back(setting("probes", "off", {}, {"--no-probes"}));
     for (const std::string& v : pick({"256", "512", "2048"}, quick))
-        out.push_back({"shadow-map size", v, {}, {"--shadow-map-size", v}});
+        out.push_back(setting("shadow-map size", v, {}, {"--shadow-map-size", v}));
     for (const std::string& v : pick({"10", "20", "80"}, quick))
-        out.push_back({"shadow distance m", v, {}, {"--shadow-distance", v}});
+        out.push_back(setting("shadow distance m", v, {}, {"--shadow-distance", v}));
     // The baker's knobs: a bake each.
     for (const std::string& v : pick({"default", "high"}, quick))
-        out.push_back({"bake quality", v, {"--quality", v}, {}});
+        out.push_back(setting("bake quality", v, {"--quality", v}, {}));
     for (double f : quick ? std::vector<double>{0.5} : std::vector<double>{0.25, 0.5, 2.0}) {
         const std::string v = number(levelTexelsPerMetre * f);
-        out.push_back({"texels per metre", v, {"--texels-per-metre", v}, {}});
+        out.push_back(setting("texels per metre", v, {"--texels-per-metre", v}, {}));
     }
     for (const std::string& v : pick({"2", "0.5", "4"}, quick))
-        out.push_back({"grid cell m", v, {"--grid-cell", v}, {}});
+        out.push_back(setting("grid cell m", v, {"--grid-cell", v}, {}));
     // The material pipeline's per-level choice: a patched copy of the glTF, a bake each.
     if (patchable) {
         std::vector<std::string> others;
         for (const char* v : {"blit", "wwii", "black_ops"})
             if (v != levelGlossMips) others.push_back(v);
         for (const std::string& v : pick(others, quick)) {
-            KnobSetting s{"gloss mips", v, {}, {}, "gloss_mips", v};
+            KnobSetting s = setting("gloss mips", v, {}, {});
+            s.levelKey = "gloss_mips";
+            s.levelValue = v;
             out.push_back(s);
         }
     }
