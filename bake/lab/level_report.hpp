@@ -50,9 +50,10 @@ struct LevelReport {
     std::vector<CameraReport> cameras;
     size_t settingsPlanned = 0, settingsMeasured = 0;
     bool stoppedByBudget = false;
-    double referenceSeconds = 0.0;  // wall time of the references, all cameras and seeds
-    double seconds = 0.0;           // wall time of the whole run
-    std::string device;             // the runtime's Vulkan device, from its capture JSON
+    double referenceSeconds = 0.0;      // wall time of the references, all cameras and seeds
+    double seconds = 0.0;               // wall time of the whole run
+    std::string device;                 // the runtime's Vulkan device, from its capture JSON
+    std::string loadBefore, loadAfter;  // /proc/loadavg's 1-minute figure at start and end
 };
 
 // Checks the options and the level (throws std::invalid_argument or world::Error naming the

@@ -147,6 +147,13 @@ std::string glossMipsName(world::GlossMipMethod m) {
     return "black_ops";
 }
 
+// The 1-minute load average, as /proc/loadavg gives it ("?" where there is none).
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    std::string first;
+    return in >> first ? first : "?";
+}
+
 double minutesSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 60.0;
 }
@@ -157,6 +164,7 @@ LevelReport measureLevel(const LevelReportOptions& o) {
     const auto start = std::chrono::steady_clock::now();
     LevelReport report;
     report.options = o;
+    report.loadBefore = loadAverage();
     const world::SourceLevel level = world::importLevel(o.level);
     const std::vector<std::string> cameras = chosenCameras(o, level);
     const double texelsPerMetre =
@@ -235,6 +243,7 @@ LevelReport measureLevel(const LevelReportOptions& o) {
         const std::vector<bool> front = paretoFront(costs);
         for (size_t k = 0; k < cam.rows.size(); ++k) cam.rows[k].front = front[k];
     }
+    report.loadAfter = loadAverage();
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

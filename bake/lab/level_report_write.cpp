@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
+#include <thread>
 #include <utility>
 
 #include "block_error.hpp"
@@ -122,7 +123,12 @@ std::string markdown(const LevelReport& report) {
     md += "Made by `onelight-lab level-report` (docs/level-report.md) in " +
           fixed(report.seconds, 1) + " s (references " + fixed(report.referenceSeconds, 1) +
           " s), frames of " + std::to_string(o.width) + "x" + std::to_string(o.height) + " on " +
-          (report.device.empty() ? std::string("the runtime's device") : report.device) + ".\n\n";
+          (report.device.empty() ? std::string("the runtime's device") : report.device) + ", " +
+          std::to_string(std::thread::hardware_concurrency()) + " cores, load average " +
+          report.loadBefore + " at the start and " + report.loadAfter +
+          " at the end. Each row's frame ms is its own run: on a busy machine runs of one "
+          "setting spread up to 1.6x (docs/toolchain.md, \"Timing things\"), so read small "
+          "differences in frame ms as noise.\n\n";
     if (report.stoppedByBudget)
         md += "**Stopped by --budget-minutes " + fixed(o.budgetMinutes, 2) + ":** " +
               std::to_string(report.settingsMeasured) + " of " +
