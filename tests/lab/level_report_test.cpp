@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <glm/gtc/quaternion.hpp>
 
 #include "capture/capture.hpp"
@@ -126,7 +128,9 @@ bool dominates(const Row& a, const Row& b) {
 class LevelReport : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        folder_ = fs::temp_directory_path() / "onelight_level_report_test";
+        // One folder per process: ctest runs each test as its own process, in parallel.
+        folder_ = fs::temp_directory_path() /
+                  ("onelight_level_report_test_" + std::to_string(::getpid()));
         fs::remove_all(folder_);
         fs::create_directories(folder_);
         level_ = writeTinyLevel(folder_);
