@@ -19,6 +19,7 @@ struct LevelReportOptions {
     uint32_t width = 320, height = 180;
     double budgetMinutes = 0.0;  // 0: no limit
     bool quick = false;          // one value per knob
+    uint32_t timingRuns = 3;     // rounds of frame timing over all settings; the least counts
 };
 
 constexpr uint32_t kFramesPerRun = 9;  // the runtime draws these; their median GPU time
@@ -26,7 +27,8 @@ constexpr uint32_t kFramesPerRun = 9;  // the runtime draws these; their median 
 // One setting seen from one camera.
 struct ReportRow {
     KnobSetting setting;
-    double frameMs = 0.0;      // median GPU ms of kFramesPerRun frames (capture JSON)
+    double frameMs = 0.0;      // median GPU ms of kFramesPerRun frames (capture JSON), the least
+                               // of the timing rounds
     bool gpuTimed = true;      // false: the device gave no timestamps, frameMs is CPU ms
     double bakeSeconds = 0.0;  // the bake report's seconds_total (the baseline's for a runtime
                                // knob: same package)
@@ -50,9 +52,10 @@ struct LevelReport {
     std::vector<CameraReport> cameras;
     size_t settingsPlanned = 0, settingsMeasured = 0;
     bool stoppedByBudget = false;
-    double referenceSeconds = 0.0;      // wall time of the references, all cameras and seeds
-    double seconds = 0.0;               // wall time of the whole run
-    std::string device;                 // the runtime's Vulkan device, from its capture JSON
+    uint32_t timingRuns = 0;        // rounds of frame timing done (fewer than asked: the budget)
+    double referenceSeconds = 0.0;  // wall time of the references, all cameras and seeds
+    double seconds = 0.0;           // wall time of the whole run
+    std::string device;             // the runtime's Vulkan device, from its capture JSON
     std::string loadBefore, loadAfter;  // /proc/loadavg's 1-minute figure at start and end
 };
 

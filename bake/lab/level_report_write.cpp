@@ -144,10 +144,11 @@ std::string markdown(const LevelReport& report) {
         "the capture JSON) of the " +
         std::to_string(kFramesPerRun) +
         " frames that `onelight PKG --headless --camera NAME --frames " +
-        std::to_string(kFramesPerRun) +
-        " --capture` draws; one run, so expect some noise "
-        "on a busy machine (`(CPU)` marks a device without timestamps: the last frame's CPU "
-        "time instead). The MSAA column "
+        std::to_string(kFramesPerRun) + " --capture` draws, the least over " +
+        std::to_string(report.timingRuns) + " run(s) of every setting in turn (" +
+        std::to_string(o.timingRuns) +
+        " asked; load only adds time, and the rounds interleave the settings). `(CPU)` marks a "
+        "device without timestamps: the CPU time instead. The MSAA column "
         "is the sample count in use (the renderer takes the nearest "
         "the device supports to the request; lavapipe offers 1x and 4x).\n";
     md +=

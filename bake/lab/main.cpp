@@ -4,7 +4,7 @@
 //   onelight-lab env-fit [-o FILE]                                  fits shaders/env_brdf_fit.glsl
 //   onelight-lab env-table [-o FILE]                          integrates shaders/env_brdf_table.inc
 //   onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH]
-//                             [--budget-minutes M] [--quick] -o DIR
+//                             [--budget-minutes M] [--timing-runs N] [--quick] -o DIR
 //                                             speed against error per camera and knob
 //   onelight-lab sheet -o OUT.png --ev100 E[,E...] --images A.exr,B.exr [--rect x,y,w,h]
 //                      [--columns N]
@@ -31,7 +31,7 @@ constexpr const char* kUsage =
     "       onelight-lab env-fit [-o FILE]\n"
     "       onelight-lab env-table [-o FILE]\n"
     "       onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH] "
-    "[--budget-minutes M] [--quick] -o DIR\n"
+    "[--budget-minutes M] [--timing-runs N] [--quick] -o DIR\n"
     "       onelight-lab sheet -o OUT.png --ev100 E[,E per row...] --images A.exr,B.exr[,...] "
     "[--rect x,y,w,h] [--columns N]\n"
     "models: bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith; mu in (0,1]; gloss in "
@@ -125,8 +125,9 @@ uint32_t wholeNumber(const std::string& option, const std::string& text, double 
 int levelReportCommand(int argc, char** argv) {
     if (argc < 3 || argv[2][0] == '-')
         throw std::invalid_argument("LEVEL: expected a level (a .gltf or .glb) after level-report");
-    Options o = parseOptions(argc, argv, {"-o", "--cameras", "--spp", "--size", "--budget-minutes"},
-                             {"--quick"}, 3);
+    Options o = parseOptions(
+        argc, argv, {"-o", "--cameras", "--spp", "--size", "--budget-minutes", "--timing-runs"},
+        {"--quick"}, 3);
     LevelReportOptions r;
     r.level = argv[2];
     r.output = required(o, "-o");
@@ -151,6 +152,8 @@ int levelReportCommand(int argc, char** argv) {
     if (o.has("--budget-minutes"))
         r.budgetMinutes =
             parseNumberList("--budget-minutes", o.get("--budget-minutes"), 0.0, 1e5, true).at(0);
+    if (o.has("--timing-runs"))
+        r.timingRuns = wholeNumber("--timing-runs", o.get("--timing-runs"), 1, 20);
     r.quick = o.has("--quick");
     return levelReport(r);
 }

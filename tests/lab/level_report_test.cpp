@@ -145,8 +145,8 @@ protected:
 
 TEST_F(LevelReport, ARowPerKnobWithFiniteCostsAndConsistentParetoFlags) {
     const fs::path out = folder_ / "report";
-    const onelight::test::CommandResult r =
-        lab("level-report " + level_ + " --quick" + sizeArgs() + " -o " + out.string());
+    const onelight::test::CommandResult r = lab(
+        "level-report " + level_ + " --quick --timing-runs 2" + sizeArgs() + " -o " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("level-report ["), std::string::npos) << "no progress bar\n"
                                                                   << r.output;
@@ -185,6 +185,7 @@ TEST_F(LevelReport, ARowPerKnobWithFiniteCostsAndConsistentParetoFlags) {
 
     const std::string readme = readText(out / "README.md");
     EXPECT_NE(readme.find("## Camera view"), std::string::npos) << readme;
+    EXPECT_NE(readme.find("the least over 2 run(s)"), std::string::npos) << readme;
     EXPECT_NE(readme.find("| knob | value | frame ms |"), std::string::npos) << readme;
     EXPECT_NE(readme.find("not a runtime choice yet"), std::string::npos) << readme;
     for (const char* notANumber : {"| nan", "| -nan", "| inf", "| -inf"})
@@ -223,6 +224,7 @@ TEST_F(LevelReport, BadInputGivesOneLineNamingTheArgument) {
         {"level-report " + level_ + " --size 64" + o, "--size: '64' is not WxH"},
         {"level-report " + level_ + " --size 64x0" + o, "--size: '0'"},
         {"level-report " + level_ + " --budget-minutes -1" + o, "--budget-minutes: '-1'"},
+        {"level-report " + level_ + " --timing-runs 0" + o, "--timing-runs: '0'"},
         {"level-report " + level_, "missing option -o"},
         {"level-report -o x", "LEVEL: expected a level"},
     };
