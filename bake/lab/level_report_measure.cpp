@@ -130,6 +130,40 @@ ReportRow frame(const Runner& r, const LevelReportOptions& o, const std::string&
     return row;
 }
 
+// Per camera, the references of seeds 0 and 1 and the noise between them.
+std::vector<CameraReport> references(const Runner& r, const LevelReportOptions& o,
+                                     const std::vector<std::string>& cameras,
+                                     bake::Progress& progress) {
+    std::vector<CameraReport> out;
+    for (size_t c = 0; c < cameras.size(); ++c) {
+        CameraReport cam;
+        cam.name = cameras[c];
+        std::string seeds[2];
+        for (int seed = 0; seed < 2; ++seed) {
+            seeds[seed] = r.work + "/cam" + std::to_string(c) + "_reference_seed" +
+                          std::to_string(seed) + ".exr";
+            mustRun(r, {r.bakeExe, "reference", o.level, "--camera", cam.name, "--spp",
+                        std::to_string(o.spp), "--size", sizeText(o), "--seed",
+                        std::to_string(seed), "-o", seeds[seed]});
+            progress.advance(1);
+        }
+        cam.referenceExr = seeds[0];
+        cam.referenceNoise =
+            blockErrors(capture::readExr(seeds[1]), capture::readExr(seeds[0])).mean;
+        out.push_back(cam);
+    }
+    return out;
+}
+
+// Each row's Pareto flag among its camera's rows.
+void markFront(CameraReport& cam) {
+    std::vector<Costs> costs;
+    for (const ReportRow& row : cam.rows)
+        costs.push_back({row.frameMs, row.bakeSeconds, row.error});
+    const std::vector<bool> front = paretoFront(costs);
+    for (size_t k = 0; k < cam.rows.size(); ++k) cam.rows[k].front = front[k];
+}
+
 // One more timing round: every measured setting's frame again, in the table's order (so the
 // rounds interleave the settings); each row keeps its least median GPU time.
 void retime(const Runner& r, const LevelReportOptions& o, const std::vector<KnobSetting>& settings,
@@ -198,27 +232,11 @@ LevelReport measureLevel(const LevelReportOptions& o) {
 
     size_t bakes = 0;
     for (const KnobSetting& s : settings) bakes += ownBake(s) ? 1 : 0;
-    bake::Progress progress("level-report", cameras.size() * (2 + settings.size()) + bakes + 1,
-                            true);
+    const size_t frames = settings.size() * std::max(o.timingRuns, 1u);
+    bake::Progress progress("level-report", cameras.size() * (2 + frames) + bakes + 1, true);
 
     const auto referencesStart = std::chrono::steady_clock::now();
-    for (size_t c = 0; c < cameras.size(); ++c) {
-        CameraReport cam;
-        cam.name = cameras[c];
-        std::string seeds[2];
-        for (int seed = 0; seed < 2; ++seed) {
-            seeds[seed] = r.work + "/cam" + std::to_string(c) + "_reference_seed" +
-                          std::to_string(seed) + ".exr";
-            mustRun(r, {r.bakeExe, "reference", o.level, "--camera", cam.name, "--spp",
-                        std::to_string(o.spp), "--size", sizeText(o), "--seed",
-                        std::to_string(seed), "-o", seeds[seed]});
-            progress.advance(1);
-        }
-        cam.referenceExr = seeds[0];
-        cam.referenceNoise =
-            blockErrors(capture::readExr(seeds[1]), capture::readExr(seeds[0])).mean;
-        report.cameras.push_back(cam);
-    }
+    report.cameras = references(r, o, cameras, progress);
     report.referenceSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - referencesStart).count();
 
@@ -260,13 +278,7 @@ LevelReport measureLevel(const LevelReportOptions& o) {
     progress.finish();
     for (const Bake& b : packages)
         if (b.package != baseline.package) std::filesystem::remove(b.package);
-    for (CameraReport& cam : report.cameras) {
-        std::vector<Costs> costs;
-        for (const ReportRow& row : cam.rows)
-            costs.push_back({row.frameMs, row.bakeSeconds, row.error});
-        const std::vector<bool> front = paretoFront(costs);
-        for (size_t k = 0; k < cam.rows.size(); ++k) cam.rows[k].front = front[k];
-    }
+    for (CameraReport& cam : report.cameras) markFront(cam);
     report.loadAfter = loadAverage();
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
