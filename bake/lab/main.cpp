@@ -114,11 +114,16 @@ int envTableCommand(int argc, char** argv) {
 
 // One whole number in [lo, hi].
 uint32_t wholeNumber(const std::string& option, const std::string& text, double lo, double hi) {
-    const std::vector<double> v = parseNumberList(option, text, lo, hi, false);
-    if (v.size() != 1 || v[0] != double(uint32_t(v[0])))
-        throw std::invalid_argument(option + ": '" + text + "' is not a whole number in [" +
-                                    std::to_string(uint32_t(lo)) + ", " +
-                                    std::to_string(uint32_t(hi)) + "]");
+    const std::string expected = option + ": '" + text + "' is not a whole number in [" +
+                                 std::to_string(uint32_t(lo)) + ", " +
+                                 std::to_string(uint32_t(hi)) + "]";
+    std::vector<double> v;
+    try {
+        v = parseNumberList(option, text, lo, hi, false);
+    } catch (const std::invalid_argument&) {
+        throw std::invalid_argument(expected);
+    }
+    if (v.size() != 1 || v[0] != double(uint32_t(v[0]))) throw std::invalid_argument(expected);
     return uint32_t(v[0]);
 }
 
