@@ -24,10 +24,20 @@ std::string usage() {
          "material textures' anisotropic filtering, 1 (off)..16 taps, clamped to the device's "
          "(default: " +
              std::to_string(d.anisotropy) + ")"},
+        {"--shadow-map-size N", "texels per side of every shadow map layer, 64..8192 (default: " +
+                                    std::to_string(d.shadowMapSize) + ")"},
+        {"--shadow-distance M",
+         "metres from the camera with runtime shadows, beyond them the baked ones, 1..10000 "
+         "(default: " +
+             std::to_string(int(d.shadowDistance)) + ")"},
+        {"--no-probes",
+         "ignore the package's probes, a uniform environment instead (default: "
+         "the probes)"},
         {"--render-scale S",
          "window only: draw at S (0.25..1) of the window's size and scale up to it (default: "
          "0.5 on a CPU device such as lavapipe, else 1)"},
-        {"--frames N", "quit after N frames (default: until Esc; headless 1)"},
+        {"--frames N",
+         "quit after N frames, headless capturing the last (default: until Esc; headless 1)"},
         {"--flashlight", "the spot effect light at the camera (default: off)"},
         {"--replay SCRIPT", "play a replay script on the fixed tick (default: none)"},
         {"--capture-dir DIR", "where a replay's captures go (default: captures/)"},
@@ -146,6 +156,25 @@ CommandLine parseCommandLine(int argc, char** argv) {
                 throw world::Error(std::string("--anisotropy '") + argv[i] +
                                    "': expected an integer in [1, 16]");
 
+        } else if (a == "--shadow-map-size" && hasValue) {
+            if (!parseUnsigned(argv[++i], 64, 8192, out.shadowMapSize))
+                throw world::Error(std::string("--shadow-map-size '") + argv[i] +
+                                   "': expected an integer in [64, 8192]");
+        } else if (a == "--shadow-distance" && hasValue) {
+            const std::string v = argv[++i];
+            bool valid = false;
+            try {
+                size_t used = 0;
+                out.shadowDistance = std::stof(v, &used);
+                valid = used == v.size() && out.shadowDistance >= 1.0f &&
+                        out.shadowDistance <= 10000.0f;
+            } catch (const std::exception&) {
+            }
+            if (!valid)
+                throw world::Error("--shadow-distance '" + v +
+                                   "': expected metres, a number in [1, 10000]");
+        } else if (a == "--no-probes") {
+            out.probes = false;
         } else if (a == "--frames" && hasValue) {
             if (!parseUnsigned(argv[++i], 1, 1u << 30, out.frames))
                 throw world::Error(std::string("--frames '") + argv[i] +

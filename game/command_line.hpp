@@ -16,9 +16,14 @@ struct CommandLine {
     std::string capture;  // out/NAME: writes NAME.png, NAME.exr, NAME.json
     uint32_t msaa = 2;
     uint32_t anisotropy = 1;        // material textures' anisotropic filtering taps, 1 = off
+    uint32_t shadowMapSize = 1024;  // --shadow-map-size: texels per side, every shadow layer
+    float shadowDistance = 40.0f;   // --shadow-distance: metres from the camera with runtime
+                                    // shadows (RendererOptions::shadowRadius)
+    bool probes = true;             // --no-probes: the package's probes ignored
     float renderScale = 0.0f;       // --render-scale: the window's frame at this fraction of its
                                     // size; 0 = automatic (0.5 on a CPU device, else 1)
-    uint32_t frames = 0;            // window: quit after this many frames (0 = until Esc)
+    uint32_t frames = 0;            // quit after this many frames (0: window until Esc,
+                                    // headless 1); headless captures the last
     bool flashlight = false;        // the spot effect light at the camera
     std::string replay;             // a replay script to run (game mode, fixed tick)
     std::string captureDir;         // where a replay's captures go (default: captures/)

@@ -6,6 +6,7 @@
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -97,9 +98,19 @@ render::EffectLights effectsFor(const game::CommandLine& cl, const render::Camer
     return fx;
 }
 
+// The median of the frames' GPU times (0 when none was timed).
+double medianMs(std::vector<double> ms) {
+    if (ms.empty()) return 0.0;
+    std::sort(ms.begin(), ms.end());
+    const size_t n = ms.size();
+    return n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
+}
+
+// `gpuMs`: every drawn frame's GPU time, the last one included.
 nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& level,
                        const render::Renderer& renderer, const render::Camera& camera,
-                       const render::FrameStats& stats, const char* backend) {
+                       const render::FrameStats& stats, const char* backend,
+                       const std::vector<double>& gpuMs) {
     const render::RendererInfo& info = render::rendererInfo(renderer);
     const glm::vec3 f = render::forwardOf(camera);
     nlohmann::json j;
@@ -121,7 +132,9 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
                        {"gpu_shadows", stats.gpuShadowMs},
                        {"gpu_forward", stats.gpuForwardMs},
                        {"gpu_tonemap", stats.gpuTonemapMs},
-                       {"gpu_timestamps", stats.gpuTimestamps}};
+                       {"gpu_timestamps", stats.gpuTimestamps},
+                       {"frames", gpuMs.size()},
+                       {"gpu_median", medianMs(gpuMs)}};
     j["frame"] = {{"surfaces_drawn", stats.surfacesDrawn},
                   {"draws", stats.draws},
                   {"surfaces_culled", stats.surfacesCulled},
@@ -187,7 +200,8 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
     try {
         game::FreeFly fly = game::freeFlyFrom(camera);
         auto last = std::chrono::steady_clock::now();
-        const uint32_t frames = cl.headless ? 1 : cl.frames;
+        const uint32_t frames = cl.headless ? std::max(cl.frames, 1u) : cl.frames;
+        std::vector<double> gpuMs;  // each frame's, for the capture's median (bounded runs only)
         for (uint32_t frame = 0; !game::targetWantsToClose(target); ++frame) {
             const auto now = std::chrono::steady_clock::now();
             const float dt = std::chrono::duration<float>(now - last).count();
@@ -203,13 +217,14 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
             const bool readback = lastFrame && !cl.capture.empty();
             const render::FrameStats stats = game::drawToTarget(
                 target, inputs, readback || cl.headless, readback && !cl.headless);
-            if (cl.headless)
+            if (frames > 0 && stats.gpuTimestamps) gpuMs.push_back(double(stats.gpuMs));
+            if (cl.headless && lastFrame)
                 std::printf(", %.2f ms CPU, %.2f ms GPU, %u surfaces\n", stats.cpuMs, stats.gpuMs,
                             stats.surfacesDrawn);
             if (readback) {
                 const render::CapturedFrame& captured = render::capturedFrame(target.renderer);
                 writeCapture(cl.capture, captured,
-                             sidecar(cl, level, target.renderer, camera, stats, backend));
+                             sidecar(cl, level, target.renderer, camera, stats, backend, gpuMs));
                 if (!cl.headless)
                     capture::writePng(
                         cl.capture + "_window.png", target.window.swapchain.extent.width,

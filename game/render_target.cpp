@@ -57,6 +57,9 @@ void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::Load
         options.requestedMsaa = cl.msaa;
         options.anisotropy = float(cl.anisotropy);
         options.visibilityCulling = cl.visibilityCulling;
+        options.shadowMapSize = cl.shadowMapSize;
+        options.shadowRadius = cl.shadowDistance;
+        options.probes = cl.probes;
         t.frameWidth = options.width;
         t.frameHeight = options.height;
         render::createRenderer(t.renderer, t.ctx, level, options);

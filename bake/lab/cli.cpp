@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace onelight::lab {
@@ -18,6 +19,17 @@ std::vector<std::string> parseWordList(std::string_view text) {
     return words;
 }
 
+namespace {
+
+// `value` as the shortest text that reads it back ("%g": 0, 0.25, 10000).
+std::string shortest(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+}  // namespace
+
 std::vector<double> parseNumberList(std::string_view option, std::string_view text, double lo,
                                     double hi, bool loOpen) {
     std::vector<double> values;
@@ -28,8 +40,7 @@ std::vector<double> parseNumberList(std::string_view option, std::string_view te
         if (word.empty() || ec != std::errc() || end != word.data() + word.size() || !inRange) {
             throw std::invalid_argument(std::string(option) + ": '" + word +
                                         "' is not a number in " + (loOpen ? "(" : "[") +
-                                        std::to_string(lo).substr(0, 3) + ", " +
-                                        std::to_string(hi).substr(0, 3) + "]");
+                                        shortest(lo) + ", " + shortest(hi) + "]");
         }
         values.push_back(x);
     }

@@ -3,6 +3,9 @@
 //   onelight-lab brdf-report -o DIR                                 tables, CSVs and plots
 //   onelight-lab env-fit [-o FILE]                                  fits shaders/env_brdf_fit.glsl
 //   onelight-lab env-table [-o FILE]                          integrates shaders/env_brdf_table.inc
+//   onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH]
+//                             [--budget-minutes M] [--timing-runs N] [--quick] -o DIR
+//                                             speed against error per camera and knob
 //   onelight-lab sheet -o OUT.png --ev100 E[,E...] --images A.exr,B.exr [--rect x,y,w,h]
 //                      [--columns N]
 //                                                                   EXRs side by side, tonemapped
@@ -17,6 +20,7 @@
 #include "albedo.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
+#include "level_report.hpp"
 
 namespace onelight::lab {
 namespace {
@@ -26,6 +30,8 @@ constexpr const char* kUsage =
     "       onelight-lab brdf-report -o DIR [--quick]\n"
     "       onelight-lab env-fit [-o FILE]\n"
     "       onelight-lab env-table [-o FILE]\n"
+    "       onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH] "
+    "[--budget-minutes M] [--timing-runs N] [--quick] -o DIR\n"
     "       onelight-lab sheet -o OUT.png --ev100 E[,E per row...] --images A.exr,B.exr[,...] "
     "[--rect x,y,w,h] [--columns N]\n"
     "models: bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith; mu in (0,1]; gloss in "
@@ -46,10 +52,11 @@ struct Options {
     }
 };
 
+// `first`: the index of the first option (after the subcommand and its positional arguments).
 Options parseOptions(int argc, char** argv, std::vector<std::string_view> known,
-                     std::vector<std::string_view> flags) {
+                     std::vector<std::string_view> flags, int first = 2) {
     Options o;
-    for (int i = 2; i < argc; ++i) {
+    for (int i = first; i < argc; ++i) {
         std::string_view a = argv[i];
         bool isFlag = std::find(flags.begin(), flags.end(), a) != flags.end();
         if (!isFlag && std::find(known.begin(), known.end(), a) == known.end())
@@ -105,6 +112,57 @@ int envTableCommand(int argc, char** argv) {
     return envTable(o.get("-o"));
 }
 
+// One whole number in [lo, hi].
+uint32_t wholeNumber(const std::string& option, const std::string& text, double lo, double hi) {
+    const std::string expected = option + ": '" + text + "' is not a whole number in [" +
+                                 std::to_string(uint32_t(lo)) + ", " +
+                                 std::to_string(uint32_t(hi)) + "]";
+    std::vector<double> v;
+    try {
+        v = parseNumberList(option, text, lo, hi, false);
+    } catch (const std::invalid_argument&) {
+        throw std::invalid_argument(expected);
+    }
+    if (v.size() != 1 || v[0] != double(uint32_t(v[0]))) throw std::invalid_argument(expected);
+    return uint32_t(v[0]);
+}
+
+int levelReportCommand(int argc, char** argv) {
+    if (argc < 3 || argv[2][0] == '-')
+        throw std::invalid_argument("LEVEL: expected a level (a .gltf or .glb) after level-report");
+    Options o = parseOptions(
+        argc, argv, {"-o", "--cameras", "--spp", "--size", "--budget-minutes", "--timing-runs"},
+        {"--quick"}, 3);
+    LevelReportOptions r;
+    r.level = argv[2];
+    r.output = required(o, "-o");
+    if (r.output.empty()) throw std::invalid_argument("-o: expected a folder");
+    const std::string cameras = o.get("--cameras", "all");
+    if (cameras != "all") {
+        r.cameras = parseWordList(cameras);
+        for (const std::string& c : r.cameras)
+            if (c.empty())
+                throw std::invalid_argument("--cameras: an empty name in '" + cameras +
+                                            "'; expected all or NAME,NAME...");
+    }
+    if (o.has("--spp")) r.spp = wholeNumber("--spp", o.get("--spp"), 1, 65536);
+    if (o.has("--size")) {
+        const std::string s = o.get("--size");
+        const size_t x = s.find('x');
+        if (x == std::string::npos)
+            throw std::invalid_argument("--size: '" + s + "' is not WxH, e.g. 320x180");
+        r.width = wholeNumber("--size", s.substr(0, x), 8, 8192);
+        r.height = wholeNumber("--size", s.substr(x + 1), 8, 8192);
+    }
+    if (o.has("--budget-minutes"))
+        r.budgetMinutes =
+            parseNumberList("--budget-minutes", o.get("--budget-minutes"), 0.0, 1e5, true).at(0);
+    if (o.has("--timing-runs"))
+        r.timingRuns = wholeNumber("--timing-runs", o.get("--timing-runs"), 1, 20);
+    r.quick = o.has("--quick");
+    return levelReport(r);
+}
+
 int sheetCommand(int argc, char** argv) {
     Options o = parseOptions(argc, argv, {"-o", "--ev100", "--images", "--rect", "--columns"}, {});
     std::vector<float> ev;
@@ -141,6 +199,7 @@ int main(int argc, char** argv) {
         if (command == "env-fit") return envFitCommand(argc, argv);
         if (command == "env-table") return envTableCommand(argc, argv);
         if (command == "sheet") return sheetCommand(argc, argv);
+        if (command == "level-report") return levelReportCommand(argc, argv);
         std::fprintf(stderr, "onelight-lab: unknown command '%s'\n%s", argv[1], kUsage);
         return 1;
     } catch (const std::exception& e) {

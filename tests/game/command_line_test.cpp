@@ -18,7 +18,8 @@ TEST(GameCommandLine, HelpExitsZeroAndListsEveryOptionWithItsDefault) {
         for (const char* flag :
              {"--headless", "--size WxH", "--camera", "--capture out/NAME", "--msaa N",
               "--frames N", "--flashlight", "--replay SCRIPT", "--capture-dir DIR", "--free-fly",
-              "--view onelight|q3map2", "--ev100 EV"}) {
+              "--view onelight|q3map2", "--ev100 EV", "--shadow-map-size N", "--shadow-distance M",
+              "--no-probes"}) {
             const size_t at = r.output.find(std::string("\n  ") + flag);
             ASSERT_NE(at, std::string::npos) << flag << " is not listed\n" << r.output;
             const size_t next = r.output.find("\n  -", at + 1);
@@ -50,7 +51,15 @@ TEST(GameCommandLine, AViewOrExposureOutOfRangeIsNamed) {
          {std::pair<std::string, std::string>{"x.olpak --view radiant",
                                               "--view 'radiant': expected onelight or q3map2"},
           {"x.olpak --ev100 99", "--ev100 '99': expected a number in [-10, 30]"},
-          {"x.olpak --ev100 nan", "--ev100 'nan': expected a number in [-10, 30]"}}) {
+          {"x.olpak --ev100 nan", "--ev100 'nan': expected a number in [-10, 30]"},
+          {"x.olpak --shadow-map-size 32",
+           "--shadow-map-size '32': expected an integer in [64, 8192]"},
+          {"x.olpak --shadow-map-size 1k",
+           "--shadow-map-size '1k': expected an integer in [64, 8192]"},
+          {"x.olpak --shadow-distance 0.5",
+           "--shadow-distance '0.5': expected metres, a number in [1, 10000]"},
+          {"x.olpak --shadow-distance inf",
+           "--shadow-distance 'inf': expected metres, a number in [1, 10000]"}}) {
         const onelight::test::CommandResult r =
             onelight::test::runCommand(kOnelight + " " + arguments);
         EXPECT_EQ(r.exitCode, 1) << r.output;

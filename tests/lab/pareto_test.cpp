@@ -1,0 +1,55 @@
+// level-report's arithmetic: the Pareto rule and the 8x8-block error, on hand-made inputs.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "block_error.hpp"
+#include "pareto.hpp"
+
+namespace {
+
+using onelight::lab::Costs;
+
+TEST(LevelReportPareto, ARowIsOnTheFrontUnlessAnotherIsNoWorseAndBetterInOne) {
+    const std::vector<Costs> rows = {
+        {10.0, 5.0, 0.20},  // 0: front (fastest frame)
+        {12.0, 5.0, 0.10},  // 1: front (lowest error)
+        {12.0, 5.0, 0.20},  // 2: dominated by 0 and 1
+        {10.0, 5.0, 0.20},  // 3: equal to 0: neither dominates, both on the front
+        {11.0, 1.0, 0.30},  // 4: front (cheapest bake)
+        {13.0, 6.0, 0.25},  // 5: dominated
+    };
+    const std::vector<bool> front = onelight::lab::paretoFront(rows);
+    EXPECT_EQ(front, (std::vector<bool>{true, true, false, true, true, false}));
+    EXPECT_FALSE(onelight::lab::dominates(rows[0], rows[3]));
+    EXPECT_TRUE(onelight::lab::dominates(rows[1], rows[2]));
+}
+
+onelight::capture::FloatImage flat(uint32_t w, uint32_t h, float value) {
+    return {w, h, std::vector<float>(size_t(w) * h * 4, value)};
+}
+
+TEST(LevelReportBlockError, MeanRelativeErrorOfBlockLuminance) {
+    onelight::capture::FloatImage reference = flat(16, 8, 2.0f), frame = flat(16, 8, 2.0f);
+    // The right block 50% too bright: errors 0 and 0.5, mean 0.25.
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 8; x < 16; ++x)
+            for (int c = 0; c < 3; ++c) frame.rgba[(y * 16 + x) * 4 + c] = 3.0f;
+    const onelight::lab::BlockErrors e = onelight::lab::blockErrors(frame, reference);
+    ASSERT_EQ(e.columns, 2u);
+    ASSERT_EQ(e.rows, 1u);
+    EXPECT_DOUBLE_EQ(e.relative[0], 0.0);
+    EXPECT_NEAR(e.relative[1], 0.5, 1e-12);
+    EXPECT_NEAR(e.mean, 0.25, 1e-12);
+    // A black reference block is measured against the floor, not divided by zero.
+    onelight::capture::FloatImage dark = reference;
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 0; x < 8; ++x)
+            for (int c = 0; c < 3; ++c) dark.rgba[(y * 16 + x) * 4 + c] = 0.0f;
+    const double floor = onelight::lab::kErrorFloor * 1.0;  // 5% of the mean luminance 1
+    EXPECT_NEAR(onelight::lab::blockErrors(reference, dark).relative[0], 2.0 / floor, 1e-9);
+    EXPECT_THROW((void)onelight::lab::blockErrors(flat(8, 8, 1.0f), reference),
+                 std::invalid_argument);
+}
+
+}  // namespace
