@@ -6,6 +6,7 @@
 
 #include <tbb/global_control.h>
 
+#include "bake/budget/error_budget.hpp"
 #include "bake/dominant/dominant_primary.hpp"
 #include "bake/embree/bake_scene.hpp"
 #include "bake/lightmap/imported_lightmap.hpp"
@@ -164,11 +165,15 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     // 2b. Density per chart: a pilot pass over the texels at the requested density, then the
     // charts compiled again with the coarser densities it chose (their shapes do not change).
     RayCounts pilotRays;
-    if (options.adaptiveDensity) {
+    const bool budgeted = options.errorBudget > 0.0f;
+    const ChartDensitySettings densitySettings =
+        budgeted ? chartDensityForBudget(options.errorBudget, result.level)
+                 : ChartDensitySettings{};
+    if (options.adaptiveDensity || budgeted) {
         const std::vector<TexelSample> pilotSamples = placeTexels(result.level);
         ChartDensityStats density;
         std::vector<float> scales = chartDensityScales(scene, lights, result.level, pilotSamples,
-                                                       ChartDensitySettings{}, &density);
+                                                       densitySettings, &density);
         pilotRays = density.rays;
         report.texelsBeforeDensity = pilotSamples.size();
         report.chartsReduced = density.chartsReduced;
@@ -190,10 +195,13 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     const LightmapSettings lm = lightmapSettings(options);
     const std::vector<TexelSample> samples = placeTexels(level);
     const uint64_t texelCount = totalTexels(level);
-    world::LightGrid grid = layoutLightGrid(level, gridSettings(options));
+    bool gridReduced = false;
+    world::LightGrid grid = budgeted ? budgetGridLayout(level, gridSettings(options), gridReduced)
+                                     : layoutLightGrid(level, gridSettings(options));
     const world::LightGrid gridLayout = grid;
-    const std::vector<ProbePlacement> placements =
-        placeProbes(level, scene, ProbePlacementSettings{options.probeSpacing});
+    std::vector<ProbePlacement> placements = placeProbes(
+        level, scene,
+        ProbePlacementSettings{options.probeSpacing, options.probeSpacingOverridesLevel});
     checkProbeBudget(placements.size(), probeSettings(options).faceSize);
     report.warnings.insert(report.warnings.end(), source.importNotes.begin(),
                            source.importNotes.end());
@@ -237,6 +245,19 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     report.texelsTotal = texelCount;
     report.shadowSamplesPerLight = lm.shadowSamples;
     report.indirectSamplesPerTexel = lm.indirectSamples;
+
+    // 3b. The error budget's choices (a whole bake only: the CLI refuses shards).
+    if (budgeted) {
+        start = std::chrono::steady_clock::now();
+        TransportSettings transport;
+        if (!bounceCache.empty()) transport.cache = &bounceCache;
+        RayCounts rays;
+        chooseWithinBudget(scene, lights, transport, level, options.errorBudget, densitySettings,
+                           gridSettings(options), gridReduced, grid, placements, rays, report);
+        baked.budget = report.budget;
+        report.stages.push_back(
+            {"budget", secondsSince(start), rays, report.budget.viewsPredicted});
+    }
 
     // 4. Light grid.
     start = std::chrono::steady_clock::now();

@@ -39,6 +39,7 @@ struct BakeOptions {
     std::optional<glm::vec3> skyRadiance;  // cd/m^2, uniform sky; unset: the level's
     float gridCellSize = 1.0f;             // metres
     float probeSpacing = 8.0f;  // metres between automatic probes unless the level sets it
+    bool probeSpacingOverridesLevel = false;  // --probe-spacing: wins over the level's
     uint32_t shardIndex = 0, shardCount = 1;
     bool showProgress = true;
     // Every light at every point with its own shadow rays, instead of lights drawn by
@@ -61,6 +62,10 @@ struct BakeOptions {
     // Overrides of the quality preset; 0 keeps the preset.
     uint32_t shadowSamples = 0, indirectSamples = 0, gridSamples = 0;
     uint32_t probeFaceSize = 0, probeSamples = 0;  // a power of two; paths per texel
+    // --error-budget E (bake/budget/): 0 bakes everything; in (0, 1] leaves out what the
+    // level's views are predicted not to need (probes, texels, grid cells) for a mean block
+    // error of at most E. A whole bake only (no shards).
+    float errorBudget = 0.0f;
 };
 
 /// Sample counts of a quality preset, overrides applied.

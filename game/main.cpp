@@ -106,6 +106,20 @@ double medianMs(std::vector<double> ms) {
     return n % 2 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
 }
 
+// What the package's error budget left out (onelight-bake --error-budget): the renderer honours
+// it by what the package holds (no probe: the shader permutation without probes).
+void printErrorBudget(const assets::LoadedLevel& level) {
+    const world::ErrorBudgetChoices& b = level.baked.budget;
+    if (!(b.budget > 0.0f)) return;
+    const bool dropped = (b.flags & world::kBudgetProbesDropped) != 0;
+    std::printf(
+        "onelight: baked with an error budget of %.1f%% (predicted %.2f%%): probes %s, %u of %u "
+        "lightmap texels, %u of %u grid cells\n",
+        100.0 * double(b.budget), 100.0 * double(b.predictedError),
+        dropped ? "dropped (a uniform environment)" : (b.probesPlaced ? "kept" : "none"),
+        b.texelsSampled, b.texelsRequested, b.gridCells, b.gridCellsFull);
+}
+
 // `gpuMs`: every drawn frame's GPU time, the last one included.
 nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& level,
                        const render::Renderer& renderer, const render::Camera& camera,
@@ -144,6 +158,17 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
                   {"triangles", stats.trianglesDrawn}};
     j["permutations"] = info.permutations;
     j["placeholder_ambient_lux"] = info.ambientLux;
+    j["probes_in_use"] = info.probes;
+    const world::ErrorBudgetChoices& budget = level.baked.budget;
+    if (budget.budget > 0.0f)
+        j["error_budget"] = {{"budget", budget.budget},
+                             {"probes_dropped", (budget.flags & world::kBudgetProbesDropped) != 0},
+                             {"probe_error", budget.probeError},
+                             {"grid_cells", budget.gridCells},
+                             {"grid_cells_full", budget.gridCellsFull},
+                             {"texels_sampled", budget.texelsSampled},
+                             {"texels_requested", budget.texelsRequested},
+                             {"predicted_error", budget.predictedError}};
     return j;
 }
 
@@ -249,6 +274,7 @@ int run(int argc, char** argv) {
     }
     assets::LoadedLevel level = assets::loadLevel(game::resolveLevelPackage(cl.level, cl.quality));
     game::applyLightingView(level, cl.view);
+    printErrorBudget(level);
     if (!cl.replay.empty()) return game::runReplay(cl, level);
     if (!cl.headless && !cl.freeFly && cl.camera.empty()) return game::runPlay(cl, level);
     return runViewer(cl, level, resolveCamera(cl, level));

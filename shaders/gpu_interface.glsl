@@ -57,6 +57,7 @@ const int SPEC_FLAT_SHADING = 2;    // 1: constant colour (the benchmark floor)
 const int SPEC_BAKED_LIGHTING = 3;  // 1: fetch the baked lighting (or its placeholders)
 const int SPEC_DIFFUSE_MODEL = 4;   // DIFFUSE_* of lighting.glsl: the level's diffuse model
 const int SPEC_MATERIAL_PIPELINE = 5;  // 0: without the material pipeline's pieces (benchmark)
+const int SPEC_PROBES = 6;  // 0: a uniform environment, no probe fetched (none in use)
 
 // ---------------------------------------------------------------------------------------------
 // Records

@@ -1,5 +1,5 @@
 // Baked lighting in memory: what the baker produces and what the runtime reads back from the
-// package's sections 32..37 (their on-disk twins are in package/format.hpp). Plain data.
+// package's sections 32..39 (their on-disk twins are in package/format.hpp). Plain data.
 #pragma once
 
 #include <array>
@@ -53,6 +53,32 @@ struct LightGrid {
     std::vector<LightGridCell> cells;  // x fastest
 };
 
+/// What `onelight-bake --error-budget E` chose to leave out of a level, and the error each
+/// choice is predicted to cost (section 39; bake/budget/ decides, docs/level-report.md "Error
+/// budget"). Errors are the level report's measure: the mean relative error of 8x8-pixel blocks
+/// over the level's views. The runtime honours the choices (probesDropped: the shader
+/// permutation without probes).
+enum ErrorBudgetFlags : uint32_t {
+    kBudgetProbesDropped = 1u << 0,  // no probe baked: a uniform environment instead
+    kBudgetGridReduced = 1u << 1,    // the grid covers only where dynamic objects can go
+};
+inline constexpr uint32_t kAllErrorBudgetFlags = kBudgetProbesDropped | kBudgetGridReduced;
+
+struct ErrorBudgetChoices {
+    float budget = 0.0f;            // E in (0, 1]; 0: baked without a budget
+    uint32_t flags = 0;             // ErrorBudgetFlags
+    float probeError = 0.0f;        // predicted cost of a uniform environment, [0, inf)
+    uint32_t probesPlaced = 0;      // probes the level would have had
+    float densityTolerance = 0.0f;  // the chart density's curvature tolerance used
+    float lightmapError = 0.0f;     // predicted cost of the coarser charts (tolerance / 8)
+    uint32_t texelsRequested = 0;   // texels at the requested density
+    uint32_t texelsSampled = 0;     // texels sampled after the charts' choice
+    uint32_t gridCellsFull = 0;     // cells over the whole level
+    uint32_t gridCells = 0;         // cells baked
+    uint32_t viewsPredicted = 0;    // views (cameras, else spawns) the errors come from
+    float predictedError = 0.0f;    // probeError + lightmapError
+};
+
 /// One baked environment probe in memory (DiskProbe's twin): its prefiltered, normalised
 /// radiance as RGB9E5 texels, mips from the largest, each 6 faces of rows from the top.
 struct EnvironmentProbe {
@@ -73,6 +99,7 @@ struct BakedLighting {
     std::vector<LightmapTexel> importedTexels;  // section 36: the source's own bake (q3map2's)
                                                 // at the same texels; empty when it has none
     uint32_t shardIndex = 0, shardCount = 1;    // shardCount > 1: an unmerged part
+    ErrorBudgetChoices budget;                  // section 39, when budget > 0
 };
 
 /// Offset of atlas `atlas`'s first texel in BakedLighting::texels.

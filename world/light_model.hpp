@@ -9,6 +9,12 @@
 
 namespace onelight::world {
 
+/// The runtime's default reach of per-pixel shadows from the camera (RendererOptions::
+/// shadowRadius) and the band inside it over which they blend into the baked shadow mask: a
+/// surface shows its baked mask only beyond kRuntimeShadowRadius - kRuntimeShadowBand metres.
+inline constexpr float kRuntimeShadowRadius = 40.0f;  // metres
+inline constexpr float kRuntimeShadowBand = 8.0f;     // metres
+
 /// What a light delivers at a point, before any shadowing.
 struct LightAtPoint {
     glm::vec3 toLight{0.0f, 0.0f, 1.0f};  // unit, from the point towards the light

@@ -1,6 +1,7 @@
 // onelight-bake LEVEL -o LEVEL.olpak [OPTIONS] (bakeUsage lists them with their defaults).
 // Compiles and bakes in one go: progress bars with ETA on stderr, a summary on stdout. --sky
 // overrides the level's uniform sky (extras.onelight.sky).
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -46,6 +47,14 @@ std::string bakeUsage() {
          {"--texels-per-metre N", "lightmap density, 0.01..1024",
           "the level's, or " + formatNumber(charts.texelsPerMetre)},
          patchLevelOption(),
+         {"--probe-spacing M", "metres between automatic probes, 0.25..1000",
+          "the level's extras.onelight.probe_spacing, or " + formatNumber(d.probeSpacing)},
+         {"--probe-face-size N", "texels per probe cube face, a power of two 4..512",
+          "draft 32, default 64, high 128"},
+         {"--error-budget E",
+          "leave out what the level's views are predicted not to need for a "
+          "mean 8x8-block error of at most E, a fraction in (0, 1] or a percentage (5%)",
+          "everything baked"},
          {"--all-lights", "every light with its own shadow rays at every point (slow)",
           "lights drawn by importance"},
          {"--paths-only", "whole paths for the indirect light, no cached bounces (slow)",
@@ -107,6 +116,26 @@ bool parseBakeCommandLine(const std::vector<std::string>& arguments, BakeCommand
         } else if (a == "--patch-level" && hasValue) {
             if (!parsePatchLevel(arguments[++i], line.quake3))
                 return bad("--patch-level '" + arguments[i] + "'; expected an integer in [1, 64]");
+        } else if (a == "--probe-spacing" && hasValue) {
+            if (!parseNumber(arguments[++i], 0.25, 1000, v))
+                return bad("--probe-spacing '" + arguments[i] +
+                           "'; expected metres in [0.25, 1000]");
+            options.probeSpacing = static_cast<float>(v);
+            options.probeSpacingOverridesLevel = true;
+        } else if (a == "--probe-face-size" && hasValue) {
+            if (!parseNumber(arguments[++i], 4, 512, v) || v != std::floor(v) ||
+                (uint32_t(v) & (uint32_t(v) - 1)) != 0)
+                return bad("--probe-face-size '" + arguments[i] +
+                           "'; expected a power of two in [4, 512]");
+            options.probeFaceSize = static_cast<uint32_t>(v);
+        } else if (a == "--error-budget" && hasValue) {
+            std::string text = arguments[++i];
+            const bool percentage = !text.empty() && text.back() == '%';
+            if (percentage) text.pop_back();
+            if (!parseNumber(text, 0, percentage ? 100 : 1, v) || !(v > 0.0))
+                return bad("--error-budget '" + arguments[i] +
+                           "'; expected a fraction in (0, 1] or a percentage in (0%, 100%]");
+            options.errorBudget = static_cast<float>(percentage ? v / 100.0 : v);
         } else if (a == "--quiet") {
             options.showProgress = false;
         } else if (a == "--all-lights") {
@@ -124,6 +153,10 @@ bool parseBakeCommandLine(const std::vector<std::string>& arguments, BakeCommand
         }
     }
     if (line.input.empty()) return bad("no level given");
+    if (options.errorBudget > 0.0f && options.shardCount > 1)
+        return bad(
+            "--error-budget with --shard: a budget's choices need the whole level; bake "
+            "it whole");
     if (line.output.empty()) line.output = world::defaultPackagePath(line.input);
     return true;
 }

@@ -92,6 +92,10 @@ world::LightGrid layoutLightGrid(const world::CompiledLevel& level, const GridSe
         lo = level.features.gridMin;
         hi = level.features.gridMax;
     }
+    return layoutLightGridOver(lo, hi, settings);
+}
+
+world::LightGrid layoutLightGridOver(glm::vec3 lo, glm::vec3 hi, const GridSettings& settings) {
     world::LightGrid grid;
     const float requested = std::max(settings.cellSize, 1e-3f);
     for (int c = 0; c < 3; ++c) {

@@ -26,6 +26,9 @@ struct GridSettings {
 /// level has them, else over the static geometry's bounds.
 [[nodiscard]] world::LightGrid layoutLightGrid(const world::CompiledLevel& level,
                                                const GridSettings& settings);
+/// The same over the box [boxMin, boxMax].
+[[nodiscard]] world::LightGrid layoutLightGridOver(glm::vec3 boxMin, glm::vec3 boxMax,
+                                                   const GridSettings& settings);
 
 struct GridStats {
     RayCounts rays;

@@ -58,6 +58,14 @@ std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, const std::strin
     }
     for (const std::string& v : pick({"2", "0.5", "4"}, quick))
         out.push_back(setting("grid cell m", v, {"--grid-cell", v}, {}));
+    for (const std::string& v : pick({"4", "2", "16"}, quick))
+        out.push_back(setting("probe spacing m", v, {"--probe-spacing", v}, {}));
+    for (const std::string& v : pick({"16", "64"}, quick))
+        out.push_back(setting("probe face size", v, {"--probe-face-size", v}, {}));
+    // The error budget's choices (bake/budget/), each with the error it predicts: the report
+    // sets the prediction against the measured error.
+    for (const std::string& v : pick({"5%", "2%", "10%"}, quick))
+        out.push_back(setting("error budget", v, {"--error-budget", v}, {}));
     // The material pipeline's per-level choice: a patched copy of the glTF, a bake each.
     if (patchable) {
         std::vector<std::string> others;
@@ -80,9 +88,6 @@ std::vector<MissingKnob> missingKnobs() {
          "lab's brdf-report measures the candidates on their own)"},
         {"environment BRDF (fit or table)",
          "not a runtime choice yet: one is compiled in (brdf-report measures both)"},
-        {"probe count and face size",
-         "not a command-line choice of the baker yet: the count follows the level's "
-         "extras.onelight.probe_spacing, the face size the quality preset"},
         {"diffuse model (extras.onelight.diffuse)",
          "a change of the BRDF itself, not an approximation of one: the reference follows it, "
          "so there is no fixed truth to measure against"},

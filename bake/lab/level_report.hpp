@@ -38,6 +38,11 @@ struct ReportRow {
     bool front = false;  // on this camera's Pareto front
     std::string frameExr;
     float ev100 = 0.0f;  // the exposure the runtime chose (for pictures only)
+    // An error budget's bake: the error its choices are predicted to cost from this camera
+    // (the bake report's lightmap_error, plus the probes' predicted error from this view when
+    // it dropped them); -1 for other settings.
+    double predictedError = -1.0;
+    double budget = 0.0;
 };
 
 struct CameraReport {

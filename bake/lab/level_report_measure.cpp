@@ -84,11 +84,30 @@ std::vector<std::string> chosenCameras(const LevelReportOptions& o,
     return o.cameras;
 }
 
+// The index of camera `name` among the level's cameras.
+size_t cameraIndex(const world::SourceLevel& level, const std::string& name) {
+    for (size_t i = 0; i < level.cameras.size(); ++i)
+        if (level.cameras[i].name == name) return i;
+    return level.cameras.size();
+}
+
 struct Bake {
     std::string package;
     double seconds = 0.0;
     uint64_t bytes = 0;
+    nlohmann::json budget;  // the bake report's error_budget, when it had one
 };
+
+// The error a budget's bake predicts from camera `index` of the level's (budgetViews: the
+// level's cameras in order), or -1 without a budget.
+double predictedError(const nlohmann::json& budget, size_t index) {
+    if (!budget.is_object()) return -1.0;
+    double e = budget.value("lightmap_error", 0.0);
+    const nlohmann::json& views = budget["probe_error_per_view"];
+    if (budget.value("probes_dropped", false) && views.is_array() && index < views.size())
+        e += views[index].get<double>();
+    return e;
+}
 
 Bake bake(const Runner& r, const LevelReportOptions& o, const KnobSetting& s, size_t index) {
     Bake b;
@@ -102,6 +121,7 @@ Bake bake(const Runner& r, const LevelReportOptions& o, const KnobSetting& s, si
     const nlohmann::json j = readJson(json);
     b.seconds = finiteNumber(j, "seconds_total", json);
     b.bytes = uint64_t(finiteNumber(j, "package_bytes", json));
+    if (j.contains("error_budget")) b.budget = j["error_budget"];
     return b;
 }
 
@@ -260,6 +280,8 @@ LevelReport measureLevel(const LevelReportOptions& o) {
             ReportRow row = frame(r, o, b.package, cam.name, base, s, report.device);
             row.bakeSeconds = b.seconds;
             row.packageBytes = b.bytes;
+            row.predictedError = predictedError(b.budget, cameraIndex(level, cam.name));
+            row.budget = b.budget.is_object() ? b.budget.value("budget", 0.0) : 0.0;
             row.error =
                 blockErrors(capture::readExr(row.frameExr), capture::readExr(cam.referenceExr))
                     .mean;

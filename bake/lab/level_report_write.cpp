@@ -117,6 +117,27 @@ std::string csv(const LevelReport& report) {
     return out;
 }
 
+// The error-budget rows of a camera: what the bake predicted its choices cost against the error
+// measured over the baseline's, and whether the frame met the budget.
+std::string budgetTable(const CameraReport& cam) {
+    std::string md;
+    double baseline = -1.0;
+    for (const ReportRow& row : cam.rows)
+        if (row.setting.knob == "baseline") baseline = row.error;
+    for (const ReportRow& row : cam.rows) {
+        if (row.predictedError < 0.0) continue;
+        if (md.empty())
+            md = "\nError budgets (`onelight-bake --error-budget E`): what the bake predicted its "
+                 "choices would add, against what they added over the baseline's error, and "
+                 "whether the frame met the budget.\n\n| budget | predicted | measured over "
+                 "the baseline | error | met |\n|---:|---:|---:|---:|---|\n";
+        md += "| " + fixed(100.0 * row.budget, 1) + "% | " + fixed(row.predictedError, 4) + " | " +
+              (baseline >= 0.0 ? fixed(row.error - baseline, 4) : std::string("?")) + " | " +
+              fixed(row.error, 4) + " | " + (row.error <= row.budget ? "yes" : "**no**") + " |\n";
+    }
+    return md;
+}
+
 std::string markdown(const LevelReport& report) {
     const LevelReportOptions& o = report.options;
     std::string md = "# Level report: " + o.level + "\n\n";
@@ -185,6 +206,7 @@ std::string markdown(const LevelReport& report) {
                   std::to_string(row.msaaInUse) + "x | " + fixed(row.bakeSeconds, 2) + " | " +
                   std::to_string(row.packageBytes) + " | " + fixed(row.error, 4) + " | " +
                   fixed(cam.referenceNoise, 4) + " | " + (row.front ? "yes" : "no") + " |\n";
+        md += budgetTable(cam);
         md += "\n![error against frame ms](" + stem + "_error_vs_frame_ms.png)\n";
         md += "![error against bake seconds](" + stem + "_error_vs_bake_s.png)\n\n";
         md += "Contact sheet: [" + stem + "_sheet.png](" + stem + "_sheet.png)\n\n";

@@ -6,6 +6,8 @@
 //   onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH]
 //                             [--budget-minutes M] [--timing-runs N] [--quick] -o DIR
 //                                             speed against error per camera and knob
+//   onelight-lab frame-error FRAME.exr REFERENCE.exr
+//                                             mean relative 8x8-block error of a frame
 //   onelight-lab sheet -o OUT.png --ev100 E[,E...] --images A.exr,B.exr [--rect x,y,w,h]
 //                      [--columns N]
 //                                                                   EXRs side by side, tonemapped
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "albedo.hpp"
+#include "block_error.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "level_report.hpp"
@@ -32,6 +35,7 @@ constexpr const char* kUsage =
     "       onelight-lab env-table [-o FILE]\n"
     "       onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH] "
     "[--budget-minutes M] [--timing-runs N] [--quick] -o DIR\n"
+    "       onelight-lab frame-error FRAME.exr REFERENCE.exr\n"
     "       onelight-lab sheet -o OUT.png --ev100 E[,E per row...] --images A.exr,B.exr[,...] "
     "[--rect x,y,w,h] [--columns N]\n"
     "models: bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith; mu in (0,1]; gloss in "
@@ -183,6 +187,17 @@ int sheetCommand(int argc, char** argv) {
     return sheet(required(o, "-o"), ev, parseWordList(required(o, "--images")), rect, columns);
 }
 
+// frame-error FRAME.exr REFERENCE.exr: the level report's error measure for two linear images
+// of one size (block_error.hpp), as "error=E blocks=N worst=W" on stdout.
+int frameErrorCommand(int argc, char** argv) {
+    if (argc != 4) throw std::invalid_argument("expected two EXR files: FRAME.exr REFERENCE.exr");
+    const BlockErrors e = blockErrors(capture::readExr(argv[2]), capture::readExr(argv[3]));
+    double worst = 0.0;
+    for (double v : e.relative) worst = std::max(worst, v);
+    std::printf("error=%.6f blocks=%zu worst=%.6f\n", e.mean, e.relative.size(), worst);
+    return 0;
+}
+
 }  // namespace
 }  // namespace onelight::lab
 
@@ -199,6 +214,7 @@ int main(int argc, char** argv) {
         if (command == "env-fit") return envFitCommand(argc, argv);
         if (command == "env-table") return envTableCommand(argc, argv);
         if (command == "sheet") return sheetCommand(argc, argv);
+        if (command == "frame-error") return frameErrorCommand(argc, argv);
         if (command == "level-report") return levelReportCommand(argc, argv);
         std::fprintf(stderr, "onelight-lab: unknown command '%s'\n%s", argv[1], kUsage);
         return 1;

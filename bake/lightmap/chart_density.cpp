@@ -16,7 +16,9 @@ constexpr uint32_t kDistancePass = 97;  // the pilot's own random stream, apart 
 
 /// What the pilot measures at one texel.
 struct Pilot {
-    float light = 0.0f;  // lux, the direct light's luminance
+    float light = 0.0f;     // lux, the direct light's luminance
+    float ownLight = 0.0f;  // lux, of it the own primary's (shadowed)
+    glm::vec3 position{0.0f};
     float harmonicDistance = std::numeric_limits<float>::infinity();  // metres
     bool valid = false;
 };
@@ -27,7 +29,9 @@ Pilot measure(const BakeScene& scene, const BakeLights& lights, const world::Com
     Pilot p;
     const TexelEstimate e = estimateTexelDirect(scene, lights, level, s, direct, rays);
     if (e.moved) return p;
-    p.light = luminance(e.ownDirect) + float(e.directLuminance);
+    p.ownLight = luminance(e.ownDirect);
+    p.light = p.ownLight + float(e.directLuminance);
+    p.position = s.position;
     const Frame frame = frameAround(s.normal);
     Rng rng{seedFrom(s.atlas, s.x, s.y, kDistancePass)};
     const float s0 = rng.next(), s1 = rng.next();
@@ -86,16 +90,30 @@ std::vector<float> chartDensityScales(const BakeScene& scene, const BakeLights& 
                                chart.x + uint32_t(x);
             return sampleOf[t] == ~0u ? nullptr : &pilots[sampleOf[t]];
         };
-        float brightest = 0.0f, nearest = std::numeric_limits<float>::infinity(), texelSize = 0.0f;
-        uint32_t count = 0;
+        // Whether any view sees the chart's shadow mask (beyond the runtime's shadows).
+        bool maskSeen = settings.views.empty();
+        for (uint32_t y = 0; y < h && !maskSeen; ++y)
+            for (uint32_t x = 0; x < w && !maskSeen; ++x)
+                if (const Pilot* p = at(int32_t(x), int32_t(y)))
+                    for (const glm::vec3& v : settings.views)
+                        maskSeen =
+                            maskSeen || glm::distance(v, p->position) > settings.maskDistance;
+        const auto lightOf = [&](const Pilot& p) {
+            return maskSeen ? p.light : p.light - p.ownLight;
+        };
+        float brightest = 0.0f, texelSize = 0.0f;
+        std::vector<float> distances;
         for (uint32_t y = 0; y < h; ++y)
             for (uint32_t x = 0; x < w; ++x)
                 if (const Pilot* p = at(int32_t(x), int32_t(y))) {
-                    brightest = std::max(brightest, p->light);
-                    nearest = std::min(nearest, p->harmonicDistance);
-                    ++count;
+                    brightest = std::max(brightest, lightOf(*p));
+                    distances.push_back(p->harmonicDistance);
                 }
-        if (count == 0 || chart.texelsPerMetre <= 0.0f) return;
+        if (distances.empty() || chart.texelsPerMetre <= 0.0f) return;
+        const size_t skipped = std::min(
+            distances.size() - 1, size_t(settings.distanceQuantile * float(distances.size())));
+        std::nth_element(distances.begin(), distances.begin() + long(skipped), distances.end());
+        const float nearest = distances[skipped];
         texelSize = 1.0f / chart.texelsPerMetre;
         const float floor = std::max(0.01f * brightest, 1e-6f);
         const auto smooth = [&](int32_t k) {
@@ -105,12 +123,13 @@ std::vector<float> chartDensityScales(const BakeScene& scene, const BakeLights& 
                 for (int32_t x = 0; x < int32_t(w); ++x) {
                     const Pilot* p = at(x, y);
                     if (!p) continue;
-                    const float limit = settings.curvatureTolerance * std::max(p->light, floor);
+                    const float limit = settings.curvatureTolerance * std::max(lightOf(*p), floor);
                     const Pilot* pairs[2][2] = {{at(x - k, y), at(x + k, y)},
                                                 {at(x, y - k), at(x, y + k)}};
                     for (const auto& pair : pairs)
                         if (pair[0] && pair[1] &&
-                            std::fabs(pair[0]->light + pair[1]->light - 2.0f * p->light) > limit)
+                            std::fabs(lightOf(*pair[0]) + lightOf(*pair[1]) - 2.0f * lightOf(*p)) >
+                                limit)
                             return false;
                 }
             return true;

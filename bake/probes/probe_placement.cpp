@@ -229,8 +229,9 @@ std::vector<ProbePlacement> placeProbes(const world::CompiledLevel& level, const
         return {centre};
     }
 
-    float spacing =
-        level.settings.probeSpacing > 0.0f ? level.settings.probeSpacing : settings.spacing;
+    float spacing = level.settings.probeSpacing > 0.0f && !settings.overridesLevel
+                        ? level.settings.probeSpacing
+                        : settings.spacing;
     assert(std::isfinite(spacing) && spacing > 0.0f && "probe spacing must be metres > 0");
     // Without asserts, a bad spacing (0 would never let the cap's growth end) gets the default.
     if (!(std::isfinite(spacing) && spacing > 0.0f)) spacing = ProbePlacementSettings{}.spacing;

@@ -14,7 +14,8 @@
 namespace onelight::bake {
 
 struct ProbePlacementSettings {
-    float spacing = 8.0f;  // metres, lattice step requested when the level sets none; > 0
+    float spacing = 8.0f;         // metres, lattice step requested when the level sets none; > 0
+    bool overridesLevel = false;  // true: `spacing` wins over the level's (--probe-spacing)
 };
 
 /// Lattice points at most; a finer lattice grows its spacing until it fits. 256 bounds what

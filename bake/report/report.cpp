@@ -83,6 +83,23 @@ std::string reportJson(const BakeReport& r) {
                             {"mips", t.mips},
                             {"bytes", t.bytes}});
     j["textures"] = {{"count", r.textures.size()}, {"bytes", r.textureBytes}, {"list", textures}};
+    if (r.budget.budget > 0.0f) {
+        nlohmann::json choices = nlohmann::json::array();
+        for (const BudgetChoiceReport& c : r.budgetChoices)
+            choices.push_back({{"feature", c.feature},
+                               {"choice", c.choice},
+                               {"predicted_error", c.predictedError},
+                               {"why", c.why}});
+        j["error_budget"] = {
+            {"budget", r.budget.budget},
+            {"predicted_error", r.budget.predictedError},
+            {"probes_dropped", (r.budget.flags & world::kBudgetProbesDropped) != 0},
+            {"probe_error", r.budget.probeError},
+            {"lightmap_error", r.budget.lightmapError},
+            {"views", r.budget.viewsPredicted},
+            {"probe_error_per_view", r.probeErrorPerView},
+            {"choices", choices}};
+    }
     j["warnings"] = r.warnings;
     return j.dump(2) + "\n";
 }
@@ -142,6 +159,15 @@ std::string reportSummary(const BakeReport& r) {
                       "  textures   %zu with every mip, %.1f MiB (report.json lists each)\n",
                       r.textures.size(), double(r.textureBytes) / (1024.0 * 1024.0));
         s += line;
+    }
+    if (r.budget.budget > 0.0f) {
+        std::snprintf(line, sizeof line,
+                      "  budget     %.1f%% mean block error; the choices are predicted to cost "
+                      "%.2f%%:\n",
+                      100.0 * double(r.budget.budget), 100.0 * double(r.budget.predictedError));
+        s += line;
+        for (const BudgetChoiceReport& c : r.budgetChoices)
+            s += "    " + c.feature + ": " + c.choice + " (" + c.why + ")\n";
     }
     if (r.visibilityCells) {
         std::snprintf(

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bake/embree/bake_scene.hpp"
+#include "world/baked_lighting.hpp"
 
 namespace onelight::bake {
 
@@ -22,6 +23,13 @@ struct TextureReport {
     std::string name, format;
     uint32_t width = 0, height = 0, mips = 0;
     uint64_t bytes = 0;  // every mip
+};
+
+/// One choice of --error-budget: what was left out (or kept), the error it is predicted to
+/// cost, and why.
+struct BudgetChoiceReport {
+    std::string feature, choice, why;
+    double predictedError = 0.0;
 };
 
 struct BakeReport {
@@ -52,7 +60,11 @@ struct BakeReport {
     // fraction of the clusters a cell's set holds (0 cells: none baked).
     uint32_t visibilityCells = 0, visibilityClusters = 0, visibilityRows = 0;
     double visibilityMeanFraction = 0.0;
-    std::vector<std::string> warnings;  // one line each, naming the thing and what to change
+    // --error-budget (budget.budget > 0): the choices, as the package stores them and as lines.
+    world::ErrorBudgetChoices budget;
+    std::vector<BudgetChoiceReport> budgetChoices;
+    std::vector<double> probeErrorPerView;  // the probes' predicted error from each view
+    std::vector<std::string> warnings;      // one line each, naming the thing and what to change
     uint64_t peakMemoryBytes = 0;
     uint64_t packageBytes = 0;
 };

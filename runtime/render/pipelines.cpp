@@ -114,7 +114,8 @@ void createForwardPipelines(RendererState& s) {
                             {glsl::SPEC_FLAT_SHADING, 0},
                             {glsl::SPEC_BAKED_LIGHTING, bakedLighting},
                             {glsl::SPEC_DIFFUSE_MODEL, s.diffuseModel},
-                            {glsl::SPEC_MATERIAL_PIPELINE, s.options.materialPipeline ? 1 : 0}}}};
+                            {glsl::SPEC_MATERIAL_PIPELINE, s.options.materialPipeline ? 1 : 0},
+                            {glsl::SPEC_PROBES, s.info.probes > 0 ? 1 : 0}}}};
         s.forwardPipelines[key] = vk::createGraphicsPipeline(ctx, s.forwardLayout, forward);
         s.info.permutations.push_back(std::string(kClassNames[materialClass]) +
                                       (doubleSided ? "+double-sided" : "") +

@@ -26,6 +26,7 @@
 #include "render/gpu_types.hpp"
 #include "vk/context.hpp"
 #include "vk/swapchain.hpp"
+#include "world/light_model.hpp"
 
 namespace onelight::render {
 
@@ -110,11 +111,13 @@ struct CapturedFrame {
 
 struct RendererOptions {
     uint32_t width = 1280, height = 720;
-    uint32_t requestedMsaa = 2;           // Black Ops' choice; the nearest supported is used
-    uint32_t shadowMapSize = 1024;        // texels, every shadow layer
-    uint32_t maxShadowLayers = 48;        // sun 1, spot 1, omni 6 layers
-    float shadowRadius = 40.0f;           // metres from the camera with runtime shadows
-    float shadowBand = 8.0f;              // metres over which they blend into the baked ones
+    uint32_t requestedMsaa = 2;     // Black Ops' choice; the nearest supported is used
+    uint32_t shadowMapSize = 1024;  // texels, every shadow layer
+    uint32_t maxShadowLayers = 48;  // sun 1, spot 1, omni 6 layers
+    float shadowRadius =
+        world::kRuntimeShadowRadius;  // metres from the camera with runtime shadows
+    float shadowBand =
+        world::kRuntimeShadowBand;        // metres over which they blend into the baked ones
     float placeholderAmbientLux = -1.0f;  // constant ambient without baked lighting; < 0 = auto
     int forceMaterialClass = -1;          // >= 0: every material in this class (benchmarks)
     bool flatShading = false;             // constant colour, no shadows (benchmark floor)

@@ -151,9 +151,9 @@ TEST_F(LevelReport, ARowPerKnobWithFiniteCostsAndConsistentParetoFlags) {
     EXPECT_NE(r.output.find("level-report ["), std::string::npos) << "no progress bar\n"
                                                                   << r.output;
     const std::vector<Row> rows = readCsv(out / "level_report.csv");
-    for (const char* knob :
-         {"baseline", "MSAA", "anisotropy", "probes", "shadow-map size", "shadow distance m",
-          "bake quality", "texels per metre", "grid cell m", "gloss mips"}) {
+    for (const char* knob : {"baseline", "MSAA", "anisotropy", "probes", "shadow-map size",
+                             "shadow distance m", "bake quality", "texels per metre", "grid cell m",
+                             "probe spacing m", "probe face size", "error budget", "gloss mips"}) {
         int found = 0;
         for (const Row& row : rows) found += row.knob == knob ? 1 : 0;
         EXPECT_EQ(found, 1) << knob;
@@ -188,6 +188,11 @@ TEST_F(LevelReport, ARowPerKnobWithFiniteCostsAndConsistentParetoFlags) {
     EXPECT_NE(readme.find("the least over 2 run(s)"), std::string::npos) << readme;
     EXPECT_NE(readme.find("| knob | value | frame ms |"), std::string::npos) << readme;
     EXPECT_NE(readme.find("not a runtime choice yet"), std::string::npos) << readme;
+    // The budget's row is checked against its prediction.
+    EXPECT_NE(readme.find("| budget | predicted | measured over the baseline | error | met |"),
+              std::string::npos)
+        << readme;
+    EXPECT_NE(readme.find("| 5.0% | "), std::string::npos) << readme;
     for (const char* notANumber : {"| nan", "| -nan", "| inf", "| -inf"})
         EXPECT_EQ(readme.find(notANumber), std::string::npos) << notANumber << "\n" << readme;
     for (const char* png : {"cam0_view_error_vs_frame_ms.png", "cam0_view_error_vs_bake_s.png"}) {

@@ -1,6 +1,11 @@
 #include "world/features/feature_analysis.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
+
+#include "world/entity_transform.hpp"
 
 namespace onelight::world {
 
@@ -67,6 +72,35 @@ Features analyseFeatures(const CompiledLevel& level, bool hasAuthoredGrid,
         f.gridMax = level.settings.boundsMax + glm::vec3(gridMargin);
     }
     return f;
+}
+
+bool dynamicObjectReach(const CompiledLevel& level, glm::vec3& boxMin, glm::vec3& boxMax) {
+    boxMin = glm::vec3(std::numeric_limits<float>::max());
+    boxMax = glm::vec3(std::numeric_limits<float>::lowest());
+    bool any = false;
+    for (const Entity& e : level.entities) {
+        if (!(e.flags & kEntityDynamic)) continue;
+        const glm::vec3 ends[2] = {e.position, e.position + e.moverOffset};
+        for (int end = 0; end < ((e.flags & kEntityMover) ? 2 : 1); ++end) {
+            const glm::mat4 world = worldFromObject(e, ends[end]);
+            for (uint32_t m = e.firstDynamicMesh;
+                 m < e.firstDynamicMesh + e.dynamicMeshCount && m < level.dynamicMeshes.size();
+                 ++m) {
+                const DynamicMesh& mesh = level.dynamicMeshes[m];
+                for (uint32_t v = mesh.firstVertex;
+                     v < mesh.firstVertex + mesh.vertexCount && v < level.dynamicVertices.size();
+                     ++v) {
+                    const glm::vec3 p =
+                        glm::vec3(world * glm::vec4(level.dynamicVertices[v].position, 1.0f));
+                    if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))) continue;
+                    boxMin = glm::min(boxMin, p);
+                    boxMax = glm::max(boxMax, p);
+                    any = true;
+                }
+            }
+        }
+    }
+    return any;
 }
 
 }  // namespace onelight::world

@@ -13,4 +13,11 @@ namespace onelight::world {
                                        const glm::vec3& authoredGridMin,
                                        const glm::vec3& authoredGridMax, float gridMargin = 1.0f);
 
+/// Where the level's dynamic objects can go: the world box of every dynamic entity's meshes at
+/// its place and, for a mover, at the far end of its path (its triangle wave goes between the
+/// two, and the box of a straight move is the union of its ends' boxes). False when the level
+/// has no dynamic entity with a vertex.
+[[nodiscard]] bool dynamicObjectReach(const CompiledLevel& level, glm::vec3& boxMin,
+                                      glm::vec3& boxMax);
+
 }  // namespace onelight::world

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "world/error.hpp"
+#include "world/package/budget_section.hpp"
 #include "world/package/format.hpp"
 #include "world/package/probe_section.hpp"
 #include "world/package/records.hpp"
@@ -117,6 +118,7 @@ std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
         out.push_back(std::move(imported));
     }
     if (!baked.visibility.empty()) out.push_back(encodeVisibilitySection(baked.visibility));
+    if (baked.budget.budget > 0.0f) out.push_back(encodeBudgetSection(baked.budget));
     return out;
 }
 
@@ -124,13 +126,14 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
                                   const world::CompiledLevel& level, const std::string& name) {
     BakedContents result;
     const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr, *imported = nullptr,
-                     *visibility = nullptr;
+                     *visibility = nullptr, *budget = nullptr;
     for (const RawSection& s : sections) {
         const RawSection** slot = s.id == kSectionLightmapTexels     ? &texels
                                   : s.id == kSectionShadowMasks      ? &masks
                                   : s.id == kSectionLightGrid        ? &grid
                                   : s.id == kSectionImportedLightmap ? &imported
                                   : s.id == kSectionVisibility       ? &visibility
+                                  : s.id == kSectionErrorBudget      ? &budget
                                                                      : nullptr;
         if (!slot) continue;
         if (*slot) {
@@ -141,11 +144,12 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
     if (!texels && !masks && !grid) {
         for (const RawSection& s : sections)
             if (s.id == kSectionProbes || s.id == kSectionImportedLightmap ||
-                s.id == kSectionVisibility)
+                s.id == kSectionVisibility || s.id == kSectionErrorBudget)
                 throw world::Error(name + ": section " +
-                                   (s.id == kSectionProbes       ? "probes"
-                                    : s.id == kSectionVisibility ? "visibility"
-                                                                 : "imported_lightmap") +
+                                   (s.id == kSectionProbes        ? "probes"
+                                    : s.id == kSectionVisibility  ? "visibility"
+                                    : s.id == kSectionErrorBudget ? "error_budget"
+                                                                  : "imported_lightmap") +
                                    " present without baked lighting; expected "
                                    "sections lightmap_texels, shadow_masks and light_grid too");
         return result;  // no baked lighting
@@ -257,6 +261,7 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
     // Environment probes (optional: only levels with glossy materials have them).
     baked.probes = decodeProbeSection(sections, level, name).probes;
     if (visibility) baked.visibility = decodeVisibilitySection(*visibility, level, name);
+    if (budget) baked.budget = decodeBudgetSection(*budget, baked.grid.cells.size(), name);
     return result;
 }
 

@@ -65,7 +65,8 @@ enum SectionId : uint32_t {
     kSectionVisibility = 37,        // potentially visible sets: view cells -> clusters of surfaces
     // Textures made by the texture stage: mip chains and per-material slots; kept raw too.
     kSectionProcessedTextures = 38,
-    kSectionIdLimit = 48,  // ids at or above this are invalid
+    kSectionErrorBudget = 39,  // DiskErrorBudget[1]: what --error-budget left out, and why
+    kSectionIdLimit = 48,      // ids at or above this are invalid
 };
 
 struct FileHeader {
@@ -489,5 +490,26 @@ struct DiskMaterialTextureSlots {
     uint8_t reserved[3];         // 0
 };
 static_assert(sizeof(DiskMaterialTextureSlots) == 28);
+
+// ---------------------------------------------------------------------------------------------
+// Error budget (id 39, optional, only with 32..34), written by `onelight-bake --error-budget E`
+// (bake/budget/; world::ErrorBudgetChoices in memory). One record. Errors are mean relative
+// errors of 8x8-pixel blocks (docs/level-report.md), finite and >= 0.
+
+struct DiskErrorBudget {
+    float budget;            // E, in (0, 1]
+    uint32_t flags;          // world::ErrorBudgetFlags; no other bits
+    float probeError;        // predicted cost of dropping the probes
+    uint32_t probesPlaced;   // probes the level would have had
+    float densityTolerance;  // chart density's curvature tolerance, in (0, 8]
+    float lightmapError;     // predicted cost of the coarser charts
+    uint32_t texelsRequested;
+    uint32_t texelsSampled;   // <= texelsRequested
+    uint32_t gridCellsFull;   // >= gridCells
+    uint32_t gridCells;       // == the light grid section's cells
+    uint32_t viewsPredicted;  // views the predictions come from
+    float predictedError;     // probeError (when dropped) + lightmapError
+};
+static_assert(sizeof(DiskErrorBudget) == 48);
 
 }  // namespace onelight::package

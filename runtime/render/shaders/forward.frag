@@ -19,6 +19,9 @@ layout(constant_id = SPEC_DIFFUSE_MODEL) const int DIFFUSE_MODEL = DIFFUSE_LAMBE
 // onelight-bench-render only: no fold of the filter's spread into gloss, no cavity fetch, no
 // energy-conservation weight on the direct lights.
 layout(constant_id = SPEC_MATERIAL_PIPELINE) const int MATERIAL_PIPELINE = 1;
+// 0: no probe in use (the package has none, e.g. an error budget dropped them, or --no-probes):
+// the uniform environment of normalised radiance 1 / pi without walking or fetching anything.
+layout(constant_id = SPEC_PROBES) const int PROBES = 1;
 
 layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
@@ -232,7 +235,7 @@ void main() {
     vec3 probeSample = vec3(0.0);
     float so = 1.0;
     if (MATERIAL_CLASS != MATERIAL_LAMBERT) {
-        probeSample = probeRadiance(p, reflect(-v, n), gloss);
+        probeSample = PROBES == 1 ? probeRadiance(p, reflect(-v, n), gloss) : vec3(INV_PI);
         so = specularOcclusion(NoV, ao, ggxAlpha_fromGloss(gloss));
     }
     radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, ao, so, probeSample);
