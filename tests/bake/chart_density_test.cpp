@@ -79,5 +79,38 @@ TEST(ChartDensity, AHardShadowKeepsItsChartsDensity) {
     EXPECT_EQ(chartDensityScales(scene.scene, scene.lights, full.level, samples, {}), scales);
 }
 
+// An error budget judges the floor from its views: seen only within the runtime's shadow reach,
+// the plate's shadow on it is the runtime's shadow map's, not the mask's, so the floor may
+// coarsen (its lightmap holds the sun's bounce off the plate's underside, smooth at this
+// tolerance); seen from farther, the mask shows and the floor keeps its density.
+TEST(ChartDensity, ABudgetJudgesAShadowByWhetherAnyViewSeesItsMask) {
+    const world::SourceLevel level = openFloor(true);
+    BakeOptions options = adaptive(8.0f);
+    options.adaptiveDensity = false;
+    const BakeResult full = bakeLevel(level, options);
+    const test::LevelScene scene(level);
+    const std::vector<TexelSample> samples = placeTexels(full.level);
+    size_t floor = 0;
+    for (size_t c = 0; c < full.level.charts.size(); ++c)
+        if (full.level.charts[c].width * full.level.charts[c].height >
+            full.level.charts[floor].width * full.level.charts[floor].height)
+            floor = c;
+    ChartDensitySettings near;
+    near.curvatureTolerance = 0.1f;
+    near.distanceQuantile = 0.02f;
+    near.views = {glm::vec3(0.0f, -3.0f, 1.7f)};  // 3 m from the plate; the floor within 22 m
+    near.maskDistance = 32.0f;
+    ChartDensitySettings far = near;
+    far.views.push_back(glm::vec3(60.0f, 0.0f, 10.0f));  // 45 m and more from the floor
+    const float nearScale =
+        chartDensityScales(scene.scene, scene.lights, full.level, samples, near)[floor];
+    const float farScale =
+        chartDensityScales(scene.scene, scene.lights, full.level, samples, far)[floor];
+    std::printf("floor's density scale: %g seen near, %g seen from afar\n", double(nearScale),
+                double(farScale));
+    EXPECT_LT(nearScale, 1.0f);
+    EXPECT_EQ(farScale, 1.0f);
+}
+
 }  // namespace
 }  // namespace onelight::bake

@@ -1,9 +1,12 @@
-// Hostile packages: image uris that point anywhere but beside the package, and light grids whose
-// dimensions overflow or are empty, all with valid checksums, so that only the reader's checks
+// Hostile packages: image uris that point anywhere but beside the package, light grids whose
+// dimensions overflow or are empty, and error-budget records out of range, all with valid
+// checksums, so that only the reader's checks
 // stand between them and the runtime.
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +16,7 @@
 #include "world/baked_lighting.hpp"
 #include "world/light_grid_sample.hpp"
 #include "world/package/baked_sections.hpp"
+#include "world/package/budget_section.hpp"
 #include "world/package/format.hpp"
 #include "world/package/package_reader.hpp"
 #include "world/package/package_writer.hpp"
@@ -122,6 +126,82 @@ TEST(HostilePackage, SamplingAGridWhoseCellsDoNotMatchItsDimsReadsNothing) {
     grid.cells[0].ambientCube[0] = glm::vec3(1.0f);
     const world::LightGridSample s = world::sampleLightGrid(grid, glm::vec3(1e6f, 2e6f, 3e6f));
     for (const glm::vec3& face : s.ambientCube) EXPECT_EQ(face, glm::vec3(0.0f));
+}
+
+// The triangle level's bake with an error budget's choices.
+world::ErrorBudgetChoices budgetChoices() {
+    world::ErrorBudgetChoices c;
+    c.budget = 0.05f;
+    c.flags = world::kBudgetProbesDropped | world::kBudgetGridReduced;
+    c.probeError = 0.004f;
+    c.probesPlaced = 12;
+    c.densityTolerance = 0.1f;
+    c.lightmapError = 0.0125f;
+    c.texelsRequested = 900;
+    c.texelsSampled = 30;
+    c.gridCellsFull = 64;
+    c.gridCells = 1;
+    c.viewsPredicted = 4;
+    c.predictedError = 0.0165f;
+    return c;
+}
+
+// decodeBakedSections' message for the budget section made from `choices`.
+std::string budgetError(const world::ErrorBudgetChoices& choices) {
+    std::vector<package::RawSection> sections = bakedSections();
+    sections.push_back(package::encodeBudgetSection(choices));
+    return errorMessage(
+        [&] { (void)package::decodeBakedSections(sections, triangleLevel(), "budget.olpak"); });
+}
+
+TEST(HostilePackage, ErrorBudgetChoicesRoundTripAndBadOnesAreRejected) {
+    std::vector<package::RawSection> sections = bakedSections();
+    sections.push_back(package::encodeBudgetSection(budgetChoices()));
+    const world::ErrorBudgetChoices back =
+        package::decodeBakedSections(sections, triangleLevel(), "budget.olpak").baked.budget;
+    const world::ErrorBudgetChoices want = budgetChoices();
+    EXPECT_EQ(std::memcmp(&back, &want, sizeof back), 0) << "the choices changed on the way";
+
+    struct Case {
+        void (*edit)(world::ErrorBudgetChoices&);
+        const char* mustSay;
+    } cases[] = {
+        {[](world::ErrorBudgetChoices& c) { c.budget = 1.5f; }, "budget = 1.5"},
+        {[](world::ErrorBudgetChoices& c) { c.budget = std::nanf(""); }, "budget = nan"},
+        {[](world::ErrorBudgetChoices& c) { c.flags = 8; }, "flags = 8; expected no bits but"},
+        {[](world::ErrorBudgetChoices& c) {
+             c.probeError = std::numeric_limits<float>::infinity();
+         },
+         "probeError = inf; expected a finite error >= 0"},
+        {[](world::ErrorBudgetChoices& c) { c.lightmapError = -0.1f; }, "lightmapError = -0.1"},
+        {[](world::ErrorBudgetChoices& c) { c.densityTolerance = 0.0f; }, "densityTolerance = 0"},
+        {[](world::ErrorBudgetChoices& c) { c.texelsSampled = 901; },
+         "texelsSampled = 901; expected at most texelsRequested (900)"},
+        {[](world::ErrorBudgetChoices& c) { c.gridCells = 2; },
+         "gridCells = 2; expected the light grid's 1 cells"},
+        {[](world::ErrorBudgetChoices& c) { c.gridCellsFull = 0; }, "gridCellsFull = 0"},
+    };
+    for (const Case& k : cases) {
+        world::ErrorBudgetChoices c = budgetChoices();
+        k.edit(c);
+        const std::string error = budgetError(c);
+        EXPECT_NE(error.find("budget.olpak: section error_budget: "), std::string::npos) << error;
+        EXPECT_NE(error.find(k.mustSay), std::string::npos) << error;
+    }
+    // A truncated record, and the section without baked lighting.
+    package::RawSection cut = package::encodeBudgetSection(budgetChoices());
+    cut.bytes.resize(20);
+    std::vector<package::RawSection> truncated = bakedSections();
+    truncated.push_back(cut);
+    EXPECT_NE(errorMessage([&] {
+                  (void)package::decodeBakedSections(truncated, triangleLevel(), "cut.olpak");
+              }).find("cut.olpak: section error_budget: element size 48, count 1, 20 bytes"),
+              std::string::npos);
+    const std::vector<package::RawSection> alone = {package::encodeBudgetSection(budgetChoices())};
+    EXPECT_NE(errorMessage([&] {
+                  (void)package::decodeBakedSections(alone, triangleLevel(), "alone.olpak");
+              }).find("section error_budget present without baked lighting"),
+              std::string::npos);
 }
 
 }  // namespace

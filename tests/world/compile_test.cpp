@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "tests/world/level_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/bsp/bsp_query.hpp"
 #include "world/error.hpp"
+#include "world/features/feature_analysis.hpp"
 #include "world/package/package_reader.hpp"
 #include "world/package/package_writer.hpp"
 
@@ -158,6 +161,46 @@ TEST(Compile, GeneratedLevelFeatures) {
     EXPECT_EQ(movers, 4u);
     EXPECT_EQ(result.stats.dynamicTriangles, 8u * 6u * 8u);
     expectRoundTrip(level);
+}
+
+// Where dynamic objects can go (an error budget's grid): a scaled, turned mover's mesh at both
+// ends of its path, a still one at its place; non-dynamic entities and bad indices ignored.
+TEST(Compile, DynamicObjectReachCoversEveryMoversPath) {
+    CompiledLevel level;
+    glm::vec3 lo, hi;
+    EXPECT_FALSE(dynamicObjectReach(level, lo, hi)) << "no dynamic entity";
+    for (glm::vec3 p : {glm::vec3(-1.0f, 0.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f)}) {
+        Vertex v;
+        v.position = p;
+        level.dynamicVertices.push_back(v);
+    }
+    DynamicMesh mesh;
+    mesh.vertexCount = 2;
+    level.dynamicMeshes = {mesh};
+    Entity mover;
+    mover.flags = kEntityDynamic | kEntityMover;
+    mover.position = glm::vec3(10.0f, 2.0f, 0.0f);
+    mover.scale = glm::vec3(2.0f);
+    mover.rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(0.0f, 0.0f, 1.0f));  // x -> y
+    mover.dynamicMeshCount = 1;
+    mover.moverOffset = glm::vec3(0.0f, 0.0f, -6.0f);
+    Entity still = mover;
+    still.flags = kEntityDynamic;
+    still.position = glm::vec3(-3.0f, 0.0f, 0.0f);
+    still.rotation = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+    Entity spawn = still;
+    spawn.flags = kEntitySpawn;
+    spawn.position = glm::vec3(100.0f);
+    Entity broken = still;
+    broken.firstDynamicMesh = 7;  // past the meshes: nothing
+    level.entities = {mover, still, spawn, broken};
+    ASSERT_TRUE(dynamicObjectReach(level, lo, hi));
+    // The mover's mesh spans y 0..4 at x 10, z 0 and z -6; the still one x -5..-1 at y 0, z 0.
+    const glm::vec3 wantLo(-5.0f, 0.0f, -6.0f), wantHi(10.0f, 4.0f, 0.0f);
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(lo[a], wantLo[a], 1e-5f) << a;
+        EXPECT_NEAR(hi[a], wantHi[a], 1e-5f) << a;
+    }
 }
 
 TEST(CompileAssets, NormalTangentTestCompilesAndRoundTrips) {
