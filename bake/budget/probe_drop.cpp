@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/gtc/quaternion.hpp>
 #include <tbb/enumerable_thread_specific.h>
+#include <glm/gtc/quaternion.hpp>
 
 #include "bake/lighting/sampling.hpp"
 #include "bake/parallel_for.hpp"
+#include "bake/reference/path_tracer.hpp"
 #include "env_brdf_table.hpp"
 #include "shading.hpp"
 
@@ -28,8 +29,8 @@ struct BlockSums {
 // returns the direction and its weight (0: skipped).
 template <class Draw>
 glm::vec3 meanRadiance(const BakeScene& scene, const BakeLights& lights,
-                       const TransportSettings& transport, const glm::vec3& origin,
-                       uint32_t count, Draw draw, Rng& rng, RayCounts& rays) {
+                       const TransportSettings& transport, const glm::vec3& origin, uint32_t count,
+                       Draw draw, Rng& rng, RayCounts& rays) {
     glm::vec3 sum(0.0f);
     float weight = 0.0f;
     for (uint32_t i = 0; i < count; ++i) {
@@ -48,10 +49,9 @@ float secondarySpecularChange(const BakeScene& scene, const BakeLights& lights,
                               RayCounts& rays, bool& glossy) {
     const glm::vec3 geometricNormal = hit.backFace ? -hit.normal : hit.normal;
     const glm::vec3 v = -dir;
-    const MaterialSample m =
-        sampleMaterial(scene.materials(), scene.materialIndexOf(hit.triangle),
-                       scene.attributesAt(hit), geometricNormal, hit.backFace, 0.0f,
-                       glm::dot(geometricNormal, v));
+    const MaterialSample m = sampleMaterial(scene.materials(), scene.materialIndexOf(hit.triangle),
+                                            scene.attributesAt(hit), geometricNormal, hit.backFace,
+                                            0.0f, glm::dot(geometricNormal, v));
     glossy = m.bsdf.materialClass != MATERIAL_LAMBERT;
     if (!glossy) return 0.0f;
     const glm::vec3 n = m.shadingNormal;
@@ -100,14 +100,11 @@ float secondarySpecularChange(const BakeScene& scene, const BakeLights& lights,
 
 double viewError(const BakeScene& scene, const BakeLights& lights,
                  const TransportSettings& transport, const world::Camera& camera,
-                 uint32_t viewIndex, const ProbeDropSettings& settings,
-                 ProbeDropPrediction& out) {
+                 uint32_t viewIndex, const ProbeDropSettings& settings, ProbeDropPrediction& out) {
     const float aspect = camera.aspectRatio > 0.0f ? camera.aspectRatio : 16.0f / 9.0f;
     const uint32_t across = std::max(1u, settings.blocksAcross);
     const uint32_t down = std::max(1u, uint32_t(std::lround(float(across) / aspect)));
     const uint32_t side = std::max(1u, settings.samplesPerSide);
-    const glm::mat3 rotation = glm::mat3_cast(glm::normalize(camera.rotation));
-    const float tanHalf = std::tan(0.5f * camera.yfov);
     std::vector<BlockSums> blocks(size_t(across) * down);
     tbb::enumerable_thread_specific<RayCounts> counts;
     tbb::enumerable_thread_specific<std::pair<uint64_t, uint64_t>> hits;
@@ -122,18 +119,12 @@ double viewError(const BakeScene& scene, const BakeLights& lights,
                 const float fx = (float(bx * side + s % side) + rng.next()) / float(across * side);
                 const float fy = (float(by * side + s / side) + rng.next()) / float(down * side);
                 const float sx = 2.0f * fx - 1.0f, sy = 1.0f - 2.0f * fy;
-                glm::vec3 origin = camera.position, dir;
-                if (camera.orthographic) {
-                    origin += rotation * glm::vec3(sx * camera.xmag, sy * camera.ymag, 0.0f);
-                    dir = rotation * glm::vec3(0.0f, 0.0f, -1.0f);
-                } else {
-                    dir = glm::normalize(rotation *
-                                         glm::vec3(sx * tanHalf * aspect, sy * tanHalf, -1.0f));
-                }
+                const CameraRay ray = cameraRay(camera, aspect, sx, sy);
+                const glm::vec3 origin = ray.origin, dir = ray.dir;
                 glm::vec3 pixel(0.0f);
                 for (uint32_t p = 0; p < settings.pixelPaths; ++p)
-                    pixel += traceRadiance(scene, lights, transport, origin, dir, RayCone{}, rng,
-                                           local);
+                    pixel +=
+                        traceRadiance(scene, lights, transport, origin, dir, RayCone{}, rng, local);
                 sums.radiance +=
                     double(glsl::luminance(pixel) / float(std::max(1u, settings.pixelPaths)));
                 ++sums.samples;
@@ -194,7 +185,8 @@ std::vector<world::Camera> budgetViews(const world::CompiledLevel& level) {
             c.name = e.name + " heading " + std::to_string(90 * k);
             c.yfov = 1.0f;
             c.position = e.position + glm::vec3(0.0f, kEyeHeight, 0.0f);
-            c.rotation = glm::angleAxis(glm::radians(90.0f * float(k)), glm::vec3(0.0f, 1.0f, 0.0f));
+            c.rotation =
+                glm::angleAxis(glm::radians(90.0f * float(k)), glm::vec3(0.0f, 1.0f, 0.0f));
             views.push_back(c);
         }
     }

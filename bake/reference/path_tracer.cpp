@@ -14,6 +14,20 @@ constexpr uint32_t kReferencePass = 4;
 constexpr uint32_t kReferenceIrradiancePass = 5;
 }  // namespace
 
+CameraRay cameraRay(const world::Camera& camera, float aspect, float sx, float sy) {
+    const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
+    CameraRay ray;
+    ray.origin = camera.position;
+    if (camera.orthographic) {
+        ray.origin += rotation * glm::vec3(sx * camera.xmag, sy * camera.ymag, 0.0f);
+        ray.dir = rotation * glm::vec3(0.0f, 0.0f, -1.0f);
+    } else {
+        const float tanHalf = std::tan(0.5f * camera.yfov);
+        ray.dir = glm::normalize(rotation * glm::vec3(sx * tanHalf * aspect, sy * tanHalf, -1.0f));
+    }
+    return ray;
+}
+
 ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
                                const world::Camera& camera, uint32_t width, uint32_t height,
                                uint32_t spp, const TransportSettings& transport, Progress* progress,
@@ -22,9 +36,7 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
     image.width = width;
     image.height = height;
     image.rgb.assign(size_t(width) * height * 3, 0.0f);
-    const glm::mat3 rotation = glm::mat3_cast(camera.rotation);
     const float aspect = float(width) / float(height);
-    const float tanHalf = std::tan(0.5f * camera.yfov);
     // Camera rays read textures at full resolution (a footprint of 0: mip 0): the paths, jittered
     // over the pixel, average the full-resolution shading over it, which is the ground truth the
     // runtime's mips approximate (docs/materials.md). Later bounces keep their cones.
@@ -39,15 +51,8 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
                 for (uint32_t s = 0; s < spp; ++s) {
                     const float sx = (float(x) + rng.next()) / float(width) * 2.0f - 1.0f;
                     const float sy = 1.0f - (float(y) + rng.next()) / float(height) * 2.0f;
-                    glm::vec3 origin = camera.position, dir;
-                    if (camera.orthographic) {
-                        origin += rotation * glm::vec3(sx * camera.xmag, sy * camera.ymag, 0.0f);
-                        dir = rotation * glm::vec3(0.0f, 0.0f, -1.0f);
-                    } else {
-                        dir = glm::normalize(rotation *
-                                             glm::vec3(sx * tanHalf * aspect, sy * tanHalf, -1.0f));
-                    }
-                    sum += glm::dvec3(traceRadiance(scene, lights, transport, origin, dir,
+                    const CameraRay ray = cameraRay(camera, aspect, sx, sy);
+                    sum += glm::dvec3(traceRadiance(scene, lights, transport, ray.origin, ray.dir,
                                                     pixelCone, rng, local));
                 }
                 const glm::vec3 l = glm::vec3(sum / double(std::max(1u, spp)));

@@ -22,6 +22,14 @@ struct ReferenceImage {
     std::vector<float> rgb;  // cd/m^2, row-major from the top, 3 floats per pixel
 };
 
+/// The ray through film point (sx, sy) of `camera` (each in [-1, 1], y up) for a frame of
+/// width / height `aspect`: from the eye for a perspective camera, from the film plane along the
+/// view for an orthographic one. `dir` is unit.
+struct CameraRay {
+    glm::vec3 origin{0.0f}, dir{0.0f, 0.0f, -1.0f};
+};
+[[nodiscard]] CameraRay cameraRay(const world::Camera& camera, float aspect, float sx, float sy);
+
 /// Renders `camera`'s view with `spp` jittered paths per pixel; pixel (x, y) seeds its own
 /// stream from (x, y, seed), so the image does not depend on threads, and two seeds give two
 /// independent estimates (their difference measures the reference's own noise).

@@ -29,6 +29,16 @@ world::SourceLevel openFloor(bool plate) {
     return level;
 }
 
+// The index of the chart with the most texels.
+size_t largestChart(const world::CompiledLevel& level) {
+    size_t largest = 0;
+    for (size_t c = 0; c < level.charts.size(); ++c)
+        if (level.charts[c].width * level.charts[c].height >
+            level.charts[largest].width * level.charts[largest].height)
+            largest = c;
+    return largest;
+}
+
 BakeOptions adaptive(float texelsPerMetre) {
     BakeOptions o = test::testOptions(texelsPerMetre, BakeQuality::kDraft);
     o.compile.charts.atlasSize = 1024;
@@ -67,12 +77,7 @@ TEST(ChartDensity, AHardShadowKeepsItsChartsDensity) {
     const std::vector<float> scales =
         chartDensityScales(scene.scene, scene.lights, full.level, samples, {});
     ASSERT_EQ(scales.size(), full.level.charts.size());
-    // The floor is the largest chart.
-    size_t floor = 0;
-    for (size_t c = 0; c < full.level.charts.size(); ++c)
-        if (full.level.charts[c].width * full.level.charts[c].height >
-            full.level.charts[floor].width * full.level.charts[floor].height)
-            floor = c;
+    const size_t floor = largestChart(full.level);  // the floor
     EXPECT_EQ(scales[floor], 1.0f);
     // And the same scales on one thread.
     const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
@@ -90,11 +95,7 @@ TEST(ChartDensity, ABudgetJudgesAShadowByWhetherAnyViewSeesItsMask) {
     const BakeResult full = bakeLevel(level, options);
     const test::LevelScene scene(level);
     const std::vector<TexelSample> samples = placeTexels(full.level);
-    size_t floor = 0;
-    for (size_t c = 0; c < full.level.charts.size(); ++c)
-        if (full.level.charts[c].width * full.level.charts[c].height >
-            full.level.charts[floor].width * full.level.charts[floor].height)
-            floor = c;
+    const size_t floor = largestChart(full.level);
     ChartDensitySettings near;
     near.curvatureTolerance = 0.1f;
     near.distanceQuantile = 0.02f;
