@@ -1,6 +1,7 @@
 // level-report's outputs: README.md with a table per camera, a CSV of every row, per camera a
 // plot of error against frame ms and against bake seconds, and a contact sheet of
 // reference | frame | error heat map per setting. Each written to a temporary name and renamed.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -50,17 +51,20 @@ void renameInto(const std::string& tmp, const std::string& path) {
                                  std::generic_category().message(errno));
 }
 
-// A row as the plot's legend shows it: short enough for its column (about 22 characters).
-std::string legendText(const ReportRow& row) {
+// A knob as the plot's legend shows it: short enough for its column (about 22 characters).
+std::string knobLegend(const std::string& knob) {
     const std::pair<const char*, const char*> shortNames[] = {
-        {"shadow-map size", "shadow map"}, {"shadow distance m", "shadow m"},
-        {"bake quality", "quality"},       {"texels per metre", "texels/m"},
-        {"grid cell m", "grid m"},         {"anisotropy", "aniso"}};
-    if (row.setting.knob == "baseline") return "baseline";
-    std::string knob = row.setting.knob;
+        {"shadow-map size", "shadow map"},
+        {"shadow distance m", "shadow m"},
+        {"bake quality", "quality"},
+        {"texels per metre", "texels/m"},
+        {"grid cell m", "grid m"},
+        {"anisotropy", "aniso"},
+        {"probe spacing m", "probe spacing m"},
+        {"probe face size", "probe face"}};
     for (const auto& [longName, shortName] : shortNames)
-        if (knob == longName) knob = shortName;
-    return knob + " " + row.setting.value;
+        if (knob == longName) return shortName;
+    return knob;
 }
 
 void writePlots(const CameraReport& cam, const std::string& dir, const std::string& stem) {
@@ -69,12 +73,26 @@ void writePlots(const CameraReport& cam, const std::string& dir, const std::stri
         plot.title = cam.name + ": error against " + (againstFrame ? "frame ms" : "bake seconds");
         plot.xLabel = againstFrame ? "GPU ms per frame" : "bake seconds";
         plot.yLabel = "mean relative 8x8-block error";
-        int colour = 0;
+        // One colour and legend entry per knob; each point labelled with its value (`*`: on
+        // the front), so that every row stays readable however many there are.
+        std::vector<std::string> knobs;
         for (const ReportRow& row : cam.rows) {
+            auto known = std::find(knobs.begin(), knobs.end(), row.setting.knob);
+            const int colour = int(known - knobs.begin());
+            if (known == knobs.end()) {
+                knobs.push_back(row.setting.knob);
+                PlotSeries legend;
+                legend.label = knobLegend(row.setting.knob);
+                legend.color = seriesColor(colour);
+                plot.series.push_back(legend);
+            }
             PlotSeries s;
-            s.label = legendText(row) + (row.front ? " *" : "");
-            s.color = seriesColor(colour++);
+            s.label = (row.setting.knob == "baseline" ? std::string("base") : row.setting.value) +
+                      (row.front ? " *" : "");
+            s.color = seriesColor(colour);
             s.points = {{againstFrame ? row.frameMs : row.bakeSeconds, row.error}};
+            s.labelPoints = true;
+            s.inLegend = false;
             plot.series.push_back(s);
         }
         const std::string path =

@@ -121,8 +121,9 @@ std::string tickLabel(double v, bool log) {
 std::array<uint8_t, 3> seriesColor(int i) {
     static const Rgb palette[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
                                   {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127},
-                                  {188, 189, 34},  {23, 190, 207}};
-    return palette[i % 10];
+                                  {188, 189, 34},  {23, 190, 207}, {0, 0, 0},       {128, 0, 0},
+                                  {0, 90, 90},     {230, 180, 0}};
+    return palette[i % 14];
 }
 
 void writePlotPng(const std::string& path, const Plot& plot) {
@@ -164,6 +165,7 @@ void writePlotPng(const std::string& path, const Plot& plot) {
             c.disc(x, y, s.line ? 3.0 : 6.0, s.color);
             if (s.labelPoints) c.text(x + 9, y - 7, s.label, s.color);
         }
+        if (!s.inLegend) continue;
         c.rect(x1 + 15, legendY + 2, x1 + 29, legendY + 16, s.color);
         c.text(x1 + 35, legendY + 2, s.label, black);
         legendY += 24;

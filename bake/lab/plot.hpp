@@ -16,6 +16,7 @@ struct PlotSeries {
     std::vector<std::pair<double, double>> points;  // (x, y)
     bool line = false;                              // joined by a line; otherwise dots
     bool labelPoints = false;                       // write the series label beside each dot
+    bool inLegend = true;                           // false: no legend entry
 };
 
 struct Plot {
