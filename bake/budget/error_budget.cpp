@@ -128,8 +128,9 @@ void chooseWithinBudget(const BakeScene& scene, const BakeLights& lights,
         {"light grid",
          std::to_string(c.gridCells) + " cells of " + std::to_string(c.gridCellsFull) +
              ", error +0.00% on the static world",
-         dynamic ? "it lights dynamic objects only: cells where they can go, one cell around"
-                 : "no dynamic object: coarse cells for the exposure meter alone",
+         !gridReduced ? "kept whole: dynamic objects can go anywhere in it"
+         : dynamic    ? "it lights dynamic objects only: cells where they can go, one cell around"
+                      : "no dynamic object: coarse cells for the exposure meter alone",
          0.0});
 
     c.predictedError =
