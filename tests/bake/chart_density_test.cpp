@@ -3,6 +3,7 @@
 // them all, and the choice does not depend on threads.
 #include <algorithm>
 #include <cstdint>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -46,6 +47,18 @@ BakeOptions adaptive(float texelsPerMetre) {
     return o;
 }
 
+// The floor with its plate, baked at the requested density, and its texels.
+struct PlateOverFloor {
+    world::SourceLevel level = openFloor(true);
+    BakeResult full = bakeLevel(level, [] {
+        BakeOptions options = adaptive(8.0f);
+        options.adaptiveDensity = false;
+        return options;
+    }());
+    test::LevelScene scene{level};
+    std::vector<TexelSample> samples = placeTexels(full.level);
+};
+
 // The open floor's light is the same everywhere (the sun, unshadowed; nothing to bounce off):
 // its chart gets the largest reduction, 32 per axis, so ~1/1000 of the texels, and every texel
 // still holds the exact answer: the mask 255 and no secondary light.
@@ -68,12 +81,8 @@ TEST(ChartDensity, AnOpenFloorUnderTheSunGetsAThousandthOfTheTexels) {
 // second difference of the whole light), while the plate's own charts, uniformly lit (its top)
 // or dark (its underside, lit only by the floor's bounce, whose distance is 1 m), may coarsen.
 TEST(ChartDensity, AHardShadowKeepsItsChartsDensity) {
-    const world::SourceLevel level = openFloor(true);
-    BakeOptions options = adaptive(8.0f);
-    options.adaptiveDensity = false;
-    const BakeResult full = bakeLevel(level, options);
-    const test::LevelScene scene(level);
-    const std::vector<TexelSample> samples = placeTexels(full.level);
+    const PlateOverFloor p;
+    const auto& [level, full, scene, samples] = std::tie(p.level, p.full, p.scene, p.samples);
     const std::vector<float> scales =
         chartDensityScales(scene.scene, scene.lights, full.level, samples, {});
     ASSERT_EQ(scales.size(), full.level.charts.size());
@@ -89,12 +98,8 @@ TEST(ChartDensity, AHardShadowKeepsItsChartsDensity) {
 // coarsen (its lightmap holds the sun's bounce off the plate's underside, smooth at this
 // tolerance); seen from farther, the mask shows and the floor keeps its density.
 TEST(ChartDensity, ABudgetJudgesAShadowByWhetherAnyViewSeesItsMask) {
-    const world::SourceLevel level = openFloor(true);
-    BakeOptions options = adaptive(8.0f);
-    options.adaptiveDensity = false;
-    const BakeResult full = bakeLevel(level, options);
-    const test::LevelScene scene(level);
-    const std::vector<TexelSample> samples = placeTexels(full.level);
+    const PlateOverFloor p;
+    const auto& [level, full, scene, samples] = std::tie(p.level, p.full, p.scene, p.samples);
     const size_t floor = largestChart(full.level);
     ChartDensitySettings near;
     near.curvatureTolerance = 0.1f;
