@@ -51,13 +51,13 @@ const int BINDING_TONEMAP_HDR = 0;  // sampler2D, the resolved pre-exposed frame
 const int BINDING_TONEMAP_LUT = 1;  // sampler3D, the colour LUT
 
 // Specialization constants of forward.frag.
-const int SPEC_MATERIAL_CLASS = 0;  // MATERIAL_* of lighting.glsl
-const int SPEC_ALPHA_MASK = 1;      // 1: discard below the cutoff
-const int SPEC_FLAT_SHADING = 2;    // 1: constant colour (the benchmark floor)
-const int SPEC_BAKED_LIGHTING = 3;  // 1: fetch the baked lighting (or its placeholders)
-const int SPEC_DIFFUSE_MODEL = 4;   // DIFFUSE_* of lighting.glsl: the level's diffuse model
+const int SPEC_MATERIAL_CLASS = 0;     // MATERIAL_* of lighting.glsl
+const int SPEC_ALPHA_MASK = 1;         // 1: discard below the cutoff
+const int SPEC_FLAT_SHADING = 2;       // 1: constant colour (the benchmark floor)
+const int SPEC_BAKED_LIGHTING = 3;     // 1: fetch the baked lighting (or its placeholders)
+const int SPEC_DIFFUSE_MODEL = 4;      // DIFFUSE_* of lighting.glsl: the level's diffuse model
 const int SPEC_MATERIAL_PIPELINE = 5;  // 0: without the material pipeline's pieces (benchmark)
-const int SPEC_PROBES = 6;  // 0: a uniform environment, no probe fetched (none in use)
+const int SPEC_PROBES = 6;             // 0: a uniform environment, no probe fetched (none in use)
 
 // ---------------------------------------------------------------------------------------------
 // Records

@@ -13,7 +13,7 @@
 namespace onelight::bake {
 
 struct ProbeDropSettings {
-    uint32_t blocksAcross = 16;  // error blocks across a view (down: by its aspect)
+    uint32_t blocksAcross = 16;   // error blocks across a view (down: by its aspect)
     uint32_t samplesPerSide = 4;  // jittered samples per block side
     uint32_t pixelPaths = 2;      // full paths per sample for the pixel's radiance
     uint32_t lobeRays = 16;       // paths in the specular lobe about the reflection

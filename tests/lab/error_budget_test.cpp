@@ -54,9 +54,8 @@ void addCamera(onelight::world::GltfBuilder& g, glm::vec3 position, float pitchD
          {"type", "perspective"},
          {"perspective",
           {{"yfov", 1.0}, {"znear", 0.05}, {"aspectRatio", double(kWidth) / double(kHeight)}}}});
-    const glm::quat look =
-        glm::angleAxis(glm::radians(yawDegrees), glm::vec3(0.0f, 1.0f, 0.0f)) *
-        glm::angleAxis(glm::radians(pitchDegrees), glm::vec3(1.0f, 0.0f, 0.0f));
+    const glm::quat look = glm::angleAxis(glm::radians(yawDegrees), glm::vec3(0.0f, 1.0f, 0.0f)) *
+                           glm::angleAxis(glm::radians(pitchDegrees), glm::vec3(1.0f, 0.0f, 0.0f));
     g.addNode({{"name", "view"},
                {"translation", vec(position)},
                {"rotation", {look.x, look.y, look.z, look.w}},
@@ -144,8 +143,8 @@ json readJson(const fs::path& path) {
 }
 
 double frameError(const fs::path& frame, const fs::path& reference) {
-    const CommandResult r =
-        runCommand(exe(ONELIGHT_LAB_EXE) + "frame-error " + frame.string() + " " + reference.string());
+    const CommandResult r = runCommand(exe(ONELIGHT_LAB_EXE) + "frame-error " + frame.string() +
+                                       " " + reference.string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
     double error = -1.0;
     EXPECT_EQ(std::sscanf(r.output.c_str(), "error=%lf", &error), 1) << r.output;
@@ -161,7 +160,8 @@ struct Baked {
 class ErrorBudget : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        folder_ = fs::temp_directory_path() / ("onelight_error_budget_test_" + std::to_string(::getpid()));
+        folder_ = fs::temp_directory_path() /
+                  ("onelight_error_budget_test_" + std::to_string(::getpid()));
         fs::remove_all(folder_);
         fs::create_directories(folder_);
     }
@@ -174,16 +174,17 @@ protected:
     static Baked bakeAndMeasure(const std::string& level, const std::string& name,
                                 const std::string& bakeArgs) {
         const fs::path package = folder_ / (name + ".olpak"), report = folder_ / (name + ".json");
-        const CommandResult bake = runCommand(exe(ONELIGHT_BAKE_EXE) + level + " -o " +
-                                              package.string() + " --quality draft --quiet" +
-                                              " --report " + report.string() + bakeArgs);
+        const CommandResult bake =
+            runCommand(exe(ONELIGHT_BAKE_EXE) + level + " -o " + package.string() +
+                       " --quality draft --quiet" + " --report " + report.string() + bakeArgs);
         EXPECT_EQ(bake.exitCode, 0) << bake.output;
-        const std::string size = " --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight);
+        const std::string size =
+            " --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight);
         const fs::path reference = fs::path(level).replace_extension(".reference.exr");
         if (!fs::exists(reference)) {
-            const CommandResult r = runCommand(
-                exe(ONELIGHT_BAKE_EXE) + "reference " + level + " --camera view --spp " +
-                std::to_string(kReferenceSpp) + size + " -o " + reference.string());
+            const CommandResult r =
+                runCommand(exe(ONELIGHT_BAKE_EXE) + "reference " + level + " --camera view --spp " +
+                           std::to_string(kReferenceSpp) + size + " -o " + reference.string());
             EXPECT_EQ(r.exitCode, 0) << r.output;
         }
         const fs::path capture = folder_ / (name + "_frame");
@@ -208,7 +209,8 @@ TEST_F(ErrorBudget, AnOpenRoughLevelDropsItsProbesAndMostTexelsAndMeetsTheBudget
     const std::string level = writeOpenLevel(folder_);
     const Baked full = bakeAndMeasure(level, "open_full", "");
     const Baked budget = bakeAndMeasure(level, "open_budget", " --error-budget 5%");
-    ASSERT_GT(full.report["probes"]["placed"].get<int>(), 0) << "the level must have probes to drop";
+    ASSERT_GT(full.report["probes"]["placed"].get<int>(), 0)
+        << "the level must have probes to drop";
     EXPECT_GT(full.capture["probes_in_use"].get<int>(), 0);
 
     const json& choices = budget.report["error_budget"];
@@ -253,13 +255,13 @@ TEST_F(ErrorBudget, AGlossyRoomKeepsItsProbesAndMeetsTheBudget) {
 
     // And the prediction is right that they matter: the same package drawn without them.
     const fs::path capture = folder_ / "room_no_probes";
-    const CommandResult frame = runCommand(
-        exe(ONELIGHT_EXE) + (folder_ / "room_budget.olpak").string() +
-        " --headless --camera view --no-probes --size " + std::to_string(kWidth) + "x" +
-        std::to_string(kHeight) + " --capture " + capture.string());
+    const CommandResult frame =
+        runCommand(exe(ONELIGHT_EXE) + (folder_ / "room_budget.olpak").string() +
+                   " --headless --camera view --no-probes --size " + std::to_string(kWidth) + "x" +
+                   std::to_string(kHeight) + " --capture " + capture.string());
     ASSERT_EQ(frame.exitCode, 0) << frame.output;
-    const double withoutProbes = frameError(capture.string() + ".exr",
-                                            fs::path(level).replace_extension(".reference.exr"));
+    const double withoutProbes =
+        frameError(capture.string() + ".exr", fs::path(level).replace_extension(".reference.exr"));
     std::printf("glossy room without probes: error %.4f (predicted cost %.4f)\n", withoutProbes,
                 probeError);
     EXPECT_GT(withoutProbes, budget.error + kBudget / 4);
@@ -268,9 +270,9 @@ TEST_F(ErrorBudget, AGlossyRoomKeepsItsProbesAndMeetsTheBudget) {
 TEST_F(ErrorBudget, BadBudgetsAreRefusedNamingTheArgument) {
     const std::string level = writeOpenLevel(folder_);
     for (const char* bad : {"0", "1.5", "-0.1", "abc", "0%", "150%", "nan"}) {
-        const CommandResult r = runCommand(exe(ONELIGHT_BAKE_EXE) + level + " -o " +
-                                           (folder_ / "bad.olpak").string() + " --error-budget " +
-                                           bad);
+        const CommandResult r =
+            runCommand(exe(ONELIGHT_BAKE_EXE) + level + " -o " + (folder_ / "bad.olpak").string() +
+                       " --error-budget " + bad);
         EXPECT_EQ(r.exitCode, 2) << bad << "\n" << r.output;
         EXPECT_NE(r.output.find("--error-budget '" + std::string(bad) + "'"), std::string::npos)
             << r.output;

@@ -9,10 +9,10 @@
 namespace onelight::package {
 
 RawSection encodeBudgetSection(const world::ErrorBudgetChoices& c) {
-    const DiskErrorBudget d{c.budget,          c.flags,           c.probeError,
-                            c.probesPlaced,    c.densityTolerance, c.lightmapError,
-                            c.texelsRequested, c.texelsSampled,   c.gridCellsFull,
-                            c.gridCells,       c.viewsPredicted,  c.predictedError};
+    const DiskErrorBudget d{
+        c.budget,           c.flags,         c.probeError,      c.probesPlaced,
+        c.densityTolerance, c.lightmapError, c.texelsRequested, c.texelsSampled,
+        c.gridCellsFull,    c.gridCells,     c.viewsPredicted,  c.predictedError};
     RawSection s;
     s.id = kSectionErrorBudget;
     s.elementSize = sizeof(DiskErrorBudget);
@@ -27,10 +27,10 @@ world::ErrorBudgetChoices decodeBudgetSection(const RawSection& section, uint64_
     const std::string at = name + ": section error_budget: ";
     if (section.elementSize != sizeof(DiskErrorBudget) || section.count != 1 ||
         section.bytes.size() != sizeof(DiskErrorBudget))
-        throw world::Error(at + "element size " + std::to_string(section.elementSize) +
-                           ", count " + std::to_string(section.count) + ", " +
-                           std::to_string(section.bytes.size()) + " bytes; expected one record of " +
-                           std::to_string(sizeof(DiskErrorBudget)) + " bytes");
+        throw world::Error(
+            at + "element size " + std::to_string(section.elementSize) + ", count " +
+            std::to_string(section.count) + ", " + std::to_string(section.bytes.size()) +
+            " bytes; expected one record of " + std::to_string(sizeof(DiskErrorBudget)) + " bytes");
     DiskErrorBudget d;
     std::memcpy(&d, section.bytes.data(), sizeof(d));
     auto bad = [&](const std::string& field, const std::string& value, const std::string& want) {
