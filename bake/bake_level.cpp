@@ -195,8 +195,8 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     const LightmapSettings lm = lightmapSettings(options);
     const std::vector<TexelSample> samples = placeTexels(level);
     const uint64_t texelCount = totalTexels(level);
-    bool gridReduced = false;
-    world::LightGrid grid = budgeted ? budgetGridLayout(level, gridSettings(options), gridReduced)
+    BudgetGridChoice gridChoice;
+    world::LightGrid grid = budgeted ? budgetGridLayout(level, gridSettings(options), gridChoice)
                                      : layoutLightGrid(level, gridSettings(options));
     const world::LightGrid gridLayout = grid;
     std::vector<ProbePlacement> placements = placeProbes(
@@ -253,7 +253,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
         if (!bounceCache.empty()) transport.cache = &bounceCache;
         RayCounts rays;
         chooseWithinBudget(scene, lights, transport, level, options.errorBudget, densitySettings,
-                           gridSettings(options), gridReduced, grid, placements, rays, report);
+                           grid, gridChoice, placements, rays, report);
         baked.budget = report.budget;
         report.stages.push_back(
             {"budget", secondsSince(start), rays, report.budget.viewsPredicted});

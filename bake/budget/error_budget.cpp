@@ -30,20 +30,21 @@ float predictedLightmapError(const ChartDensitySettings& settings) {
 }
 
 world::LightGrid budgetGridLayout(const world::CompiledLevel& level, const GridSettings& settings,
-                                  bool& reduced) {
-    const world::LightGrid full = layoutLightGrid(level, settings);
+                                  BudgetGridChoice& choice) {
+    world::LightGrid full = layoutLightGrid(level, settings);
+    choice.fullCells = full.cells.size();
     glm::vec3 lo, hi;
+    choice.followsDynamicObjects = world::dynamicObjectReach(level, lo, hi);
     world::LightGrid grid;
-    if (world::dynamicObjectReach(level, lo, hi)) {
-        const glm::vec3 margin = full.cellSize;
-        grid = layoutLightGridOver(lo - margin, hi + margin, settings);
+    if (choice.followsDynamicObjects) {
+        grid = layoutLightGridOver(lo - full.cellSize, hi + full.cellSize, settings);
     } else {
         GridSettings coarse = settings;
         coarse.cellSize = std::max(settings.cellSize, kBudgetEmptyGridCell);
         grid = layoutLightGrid(level, coarse);
     }
-    reduced = grid.cells.size() < full.cells.size();
-    return reduced ? grid : full;
+    choice.reduced = grid.cells.size() < full.cells.size();
+    return choice.reduced ? grid : full;
 }
 
 namespace {
@@ -59,9 +60,9 @@ std::string percent(double fraction) {
 void chooseWithinBudget(const BakeScene& scene, const BakeLights& lights,
                         const TransportSettings& transport, const world::CompiledLevel& level,
                         float budget, const ChartDensitySettings& density,
-                        const GridSettings& gridSettings, bool gridReduced,
-                        const world::LightGrid& grid, std::vector<ProbePlacement>& placements,
-                        RayCounts& rays, BakeReport& report) {
+                        const world::LightGrid& grid, const BudgetGridChoice& gridChoice,
+                        std::vector<ProbePlacement>& placements, RayCounts& rays,
+                        BakeReport& report) {
     world::ErrorBudgetChoices& c = report.budget;
     c.budget = budget;
     const std::vector<world::Camera> views = budgetViews(level);
@@ -119,18 +120,17 @@ void chooseWithinBudget(const BakeScene& scene, const BakeLights& lights,
                                     densityWhy, c.lightmapError});
 
     // Light grid.
-    c.gridCellsFull = uint32_t(layoutLightGrid(level, gridSettings).cells.size());
+    c.gridCellsFull = uint32_t(gridChoice.fullCells);
     c.gridCells = uint32_t(grid.cells.size());
-    if (gridReduced) c.flags |= world::kBudgetGridReduced;
-    glm::vec3 lo, hi;
-    const bool dynamic = world::dynamicObjectReach(level, lo, hi);
+    if (gridChoice.reduced) c.flags |= world::kBudgetGridReduced;
     report.budgetChoices.push_back(
         {"light grid",
          std::to_string(c.gridCells) + " cells of " + std::to_string(c.gridCellsFull) +
              ", error +0.00% on the static world",
-         !gridReduced ? "kept whole: dynamic objects can go anywhere in it"
-         : dynamic    ? "it lights dynamic objects only: cells where they can go, one cell around"
-                      : "no dynamic object: coarse cells for the exposure meter alone",
+         !gridChoice.reduced ? "kept whole: dynamic objects can go anywhere in it"
+         : gridChoice.followsDynamicObjects
+             ? "it lights dynamic objects only: cells where they can go, one cell around"
+             : "no dynamic object: coarse cells for the exposure meter alone",
          0.0});
 
     c.predictedError =

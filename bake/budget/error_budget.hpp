@@ -37,22 +37,26 @@ inline constexpr float kBudgetDistanceQuantile = 0.02f;
 
 /// The light grid of a budget: only where dynamic objects can go (world::dynamicObjectReach,
 /// grown by one cell), or, with none, one cell per `kBudgetEmptyGridCell` metres over the
-/// level, for the game's exposure metering. `reduced` says whether it differs from the full
-/// layout.
+/// level, for the game's exposure metering; the full layout when that is not smaller.
 inline constexpr float kBudgetEmptyGridCell = 8.0f;
+struct BudgetGridChoice {
+    uint64_t fullCells = 0;              // cells of the full layout
+    bool reduced = false;                // the layout is smaller than the full one
+    bool followsDynamicObjects = false;  // the level has dynamic objects
+};
 [[nodiscard]] world::LightGrid budgetGridLayout(const world::CompiledLevel& level,
-                                                const GridSettings& settings, bool& reduced);
+                                                const GridSettings& settings,
+                                                BudgetGridChoice& choice);
 
 /// The budget's choices once the lightmaps are baked (`report` holds their texel counts):
 /// predicts the probes' cost from budgetViews (probe_drop.hpp) and clears `placements` when it is
 /// within kBudgetProbeShare x budget; fills report.budget, report.budgetChoices and
-/// report.probeErrorPerView. `grid` is the layout the bake uses, `gridReduced` whether
-/// budgetGridLayout reduced it from the full layout of `gridSettings`.
+/// report.probeErrorPerView. `grid` and `gridChoice` are budgetGridLayout's.
 void chooseWithinBudget(const BakeScene& scene, const BakeLights& lights,
                         const TransportSettings& transport, const world::CompiledLevel& level,
                         float budget, const ChartDensitySettings& density,
-                        const GridSettings& gridSettings, bool gridReduced,
-                        const world::LightGrid& grid, std::vector<ProbePlacement>& placements,
-                        RayCounts& rays, BakeReport& report);
+                        const world::LightGrid& grid, const BudgetGridChoice& gridChoice,
+                        std::vector<ProbePlacement>& placements, RayCounts& rays,
+                        BakeReport& report);
 
 }  // namespace onelight::bake
