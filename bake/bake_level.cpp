@@ -1,6 +1,7 @@
 #include "bake/bake_level.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <iterator>
 #include <stdexcept>
 
@@ -92,88 +93,69 @@ ProbeCaptureSettings probeSettings(const BakeOptions& options) {
     return p;
 }
 
-ShardRange shardRange(const std::vector<TexelSample>& samples, uint64_t texels, uint64_t cells,
-                      uint64_t probes, uint32_t index, uint32_t count) {
-    ShardRange r;
-    r.probeBegin = probes * index / count;
-    r.probeEnd = probes * (index + 1) / count;
-    // Shard i starts at its first placed texel; the first starts at 0 and the last ends at the
-    // end, so that every texel, placed or not, belongs to exactly one shard.
-    auto cut = [&](uint32_t i) -> uint64_t {
-        if (i == 0) return 0;
-        if (i == count) return texels;
-        const size_t first = samples.size() * i / count;
-        return first < samples.size() ? samples[first].texel : texels;
-    };
-    r.texelBegin = cut(index);
-    r.texelEnd = cut(index + 1);
-    r.cellBegin = cells * index / count;
-    r.cellEnd = cells * (index + 1) / count;
-    return r;
-}
-
-BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options) {
+BakeReport startReport(const world::SourceLevel& source, const BakeOptions& options) {
     if (options.shardCount == 0 || options.shardIndex >= options.shardCount)
         throw std::runtime_error("shard " + std::to_string(options.shardIndex) + "/" +
                                  std::to_string(options.shardCount) + "; expected index < count");
-    BakeResult result;
-    BakeReport& report = result.report;
+    BakeReport report;
     report.level = source.sourcePath;
     report.quality = qualityName(options.quality);
     report.threads = static_cast<uint32_t>(
         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
     report.shardIndex = options.shardIndex;
     report.shardCount = options.shardCount;
+    return report;
+}
 
-    // 0. The texture stage: every mip the runtime uploads and the bake samples (whole in every
-    // shard; it is deterministic).
-    auto start = std::chrono::steady_clock::now();
-    result.textures = processLevelTextures(source, source.glossMips);
-    const TextureStageReport textures = textureStageReport(result.textures);
-    report.stages.push_back({"textures", secondsSince(start), {}, textures.textures.size()});
-    report.textureBytes = textures.totalBytes;
-    for (const ProcessedTextureRow& row : textures.textures)
+world::ProcessedTextures bakeTextures(const world::SourceLevel& source, BakeReport& report) {
+    const auto start = std::chrono::steady_clock::now();
+    world::ProcessedTextures textures = processLevelTextures(source, source.glossMips);
+    const TextureStageReport stage = textureStageReport(textures);
+    report.stages.push_back({"textures", secondsSince(start), {}, stage.textures.size()});
+    report.textureBytes = stage.totalBytes;
+    for (const ProcessedTextureRow& row : stage.textures)
         report.textures.push_back({row.name, texelFormatName(row.format), row.width, row.height,
                                    row.mipCount, row.bytes});
+    return textures;
+}
 
-    // 1. The Embree scene of the static world, shared by every stage.
-    start = std::chrono::steady_clock::now();
-    const EmbreeDevice device;
-    const world::SplitLevel split = world::splitStaticDynamic(source);
-    const BakeScene scene(device, split.staticGeometry,
-                          processedSceneMaterials(source, result.textures));
-    const BakeLights lights =
-        makeLevelLights(scene, source, options.lightSizes, options.skyRadiance);
-    report.stages.push_back({"scene", secondsSince(start), {}, scene.triangleCount()});
+BakeWorld::BakeWorld(const world::SourceLevel& source, const world::ProcessedTextures& textures,
+                     const BakeOptions& options, BakeReport& report)
+    : scene(device, world::splitStaticDynamic(source).staticGeometry,
+            processedSceneMaterials(source, textures)),
+      lights(makeLevelLights(scene, source, options.lightSizes, options.skyRadiance)) {
     report.triangles = scene.triangleCount();
     for (const world::Light& l : source.lights)
         (l.role == world::LightRole::kPrimary ? report.primaryLights : report.bakedLights) += 1;
     report.emissiveTriangles = uint32_t(lights.emitters.triangles.size());
+    report.stages.push_back({"scene", secondsSince(startedAt), {}, scene.triangleCount()});
+}
 
-    // 2. World compile; its region splitter asks the shadowed dominant primary.
-    start = std::chrono::steady_clock::now();
+CompiledForBake compileForBake(const world::SourceLevel& source, const BakeWorld& world,
+                               const BakeOptions& options, BakeReport& report) {
+    const auto start = std::chrono::steady_clock::now();
+    CompiledForBake result;
     AtomicRayCount dominantRays;
-    const world::PrimaryIlluminanceFn dominant =
-        makeShadowedPrimaryIlluminance(scene, lights, kDominantShadowSamples, &dominantRays);
+    const world::PrimaryIlluminanceFn dominant = makeShadowedPrimaryIlluminance(
+        world.scene, world.lights, kDominantShadowSamples, &dominantRays);
     {
         Progress progress("compile", 1, options.showProgress);
         world::CompileResult compiled = world::compileLevel(source, options.compile, &dominant);
         result.level = std::move(compiled.level);
-        result.compileStats = compiled.stats;
+        result.stats = compiled.stats;
         progress.advance(1);
     }
-    // 2b. Density per chart: a pilot pass over the texels at the requested density, then the
+    // Density per chart: a pilot pass over the texels at the requested density, then the
     // charts compiled again with the coarser densities it chose (their shapes do not change).
     RayCounts pilotRays;
     const bool budgeted = options.errorBudget > 0.0f;
-    const ChartDensitySettings densitySettings =
-        budgeted ? chartDensityForBudget(options.errorBudget, result.level)
-                 : ChartDensitySettings{};
+    result.density = budgeted ? chartDensityForBudget(options.errorBudget, result.level)
+                              : ChartDensitySettings{};
     if (options.adaptiveDensity || budgeted) {
         const std::vector<TexelSample> pilotSamples = placeTexels(result.level);
         ChartDensityStats density;
-        std::vector<float> scales = chartDensityScales(scene, lights, result.level, pilotSamples,
-                                                       densitySettings, &density);
+        std::vector<float> scales = chartDensityScales(world.scene, world.lights, result.level,
+                                                       pilotSamples, result.density, &density);
         pilotRays = density.rays;
         report.texelsBeforeDensity = pilotSamples.size();
         report.chartsReduced = density.chartsReduced;
@@ -182,14 +164,24 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
             coarser.charts.densityScale = std::move(scales);
             world::CompileResult compiled = world::compileLevel(source, coarser, &dominant);
             result.level = std::move(compiled.level);
-            result.compileStats = compiled.stats;
+            result.stats = compiled.stats;
         }
     }
-    StageReport compileStage{"compile", secondsSince(start), pilotRays,
-                             result.level.surfaces.size()};
-    compileStage.rays.shadow += dominantRays.shadow.load();
-    report.stages.push_back(compileStage);
-    const world::CompiledLevel& level = result.level;
+    StageReport stage{"compile", secondsSince(start), pilotRays, result.level.surfaces.size()};
+    stage.rays.shadow += dominantRays.shadow.load();
+    report.stages.push_back(stage);
+    report.warnings.insert(report.warnings.end(), source.importNotes.begin(),
+                           source.importNotes.end());
+    return result;
+}
+
+world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWorld& world,
+                                  const CompiledForBake& compiled, const BakeOptions& options,
+                                  BakeReport& report) {
+    const BakeScene& scene = world.scene;
+    const BakeLights& lights = world.lights;
+    const world::CompiledLevel& level = compiled.level;
+    const bool budgeted = options.errorBudget > 0.0f;
 
     // 3. Lightmaps.
     const LightmapSettings lm = lightmapSettings(options);
@@ -203,8 +195,6 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
         level, scene,
         ProbePlacementSettings{options.probeSpacing, options.probeSpacingOverridesLevel});
     checkProbeBudget(placements.size(), probeSettings(options).faceSize);
-    report.warnings.insert(report.warnings.end(), source.importNotes.begin(),
-                           source.importNotes.end());
     for (const ProbePlacement& p : placements)
         if (p.insideSolid)
             report.warnings.push_back(
@@ -213,17 +203,30 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
                 "' at (" + std::to_string(p.position.x) + ", " + std::to_string(p.position.y) +
                 ", " + std::to_string(p.position.z) +
                 ") is inside solid geometry: its reflections will be dark; move it into the open");
-    const ShardRange range = shardRange(samples, texelCount, grid.cells.size(), placements.size(),
-                                        options.shardIndex, options.shardCount);
-    world::BakedLighting& baked = result.baked;
-    baked.texels.assign(texelCount, world::LightmapTexel{});
-    baked.shadowMask.assign(texelCount, 0);
+    world::BakedLighting baked;
     baked.shardIndex = options.shardIndex;
     baked.shardCount = options.shardCount;
+    baked.shardRange.texelEnd = texelCount;
+    baked.shardRange.cellEnd = grid.cells.size();
+    baked.shardRange.probeEnd = baked.shardRange.probeTotal = placements.size();
+    if (options.shardCount > 1) {
+        const ShardCosts costs =
+            estimateShardCosts(lights, samples, grid, placements.size(), lm,
+                               gridSettings(options), probeSettings(options));
+        baked.shardRange =
+            shardRange(costs, samples, texelCount, options.shardIndex, options.shardCount);
+        report.shardCost = shardCost(costs, samples, baked.shardRange);
+        report.shardCostTotal = shardCost(
+            costs, samples,
+            {0, texelCount, 0, grid.cells.size(), 0, placements.size(), placements.size()});
+    }
+    const world::ShardRange& range = baked.shardRange;
+    baked.texels.assign(texelCount, world::LightmapTexel{});
+    baked.shadowMask.assign(texelCount, 0);
     // The source's own bake at the same texels (every shard holds all of it; it is cheap).
     baked.importedTexels =
-        resampleImportedLightmap(device.handle(), level, samples, source.importedLightmap);
-    start = std::chrono::steady_clock::now();
+        resampleImportedLightmap(world.device.handle(), level, samples, source.importedLightmap);
+    auto start = std::chrono::steady_clock::now();
     // The lightmaps' cached bounces, which the grid and the probes read too.
     RadianceCache bounceCache;
     {
@@ -252,7 +255,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
         TransportSettings transport;
         if (!bounceCache.empty()) transport.cache = &bounceCache;
         RayCounts rays;
-        chooseWithinBudget(scene, lights, transport, level, options.errorBudget, densitySettings,
+        chooseWithinBudget(scene, lights, transport, level, options.errorBudget, compiled.density,
                            grid, gridChoice, placements, rays, report);
         baked.budget = report.budget;
         report.stages.push_back(
@@ -275,15 +278,22 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     }
     baked.grid = std::move(grid);
 
-    // 5. Environment probes (only where the level has them: placeProbes decides).
+    // 5. Environment probes (only where the level has them: placeProbes decides), this part's.
     start = std::chrono::steady_clock::now();
     if (!placements.empty()) {
         ProbeCaptureSettings ps = probeSettings(options);
         GridSettings gs = gridSettings(options);
         if (!bounceCache.empty()) gs.transport.cache = ps.transport.cache = &bounceCache;
         RayCounts rays;
-        const std::vector<glm::vec3> average =
-            probeAverageIrradiance(scene, lights, gs, gridLayout, placements, rays);
+        // E_avg of this part's probes only (each probe's is independent of the others').
+        const std::vector<ProbePlacement> owned(placements.begin() + long(range.probeBegin),
+                                                placements.begin() + long(range.probeEnd));
+        const std::vector<glm::vec3> ownedAverage =
+            probeAverageIrradiance(scene, lights, gs, gridLayout, owned, rays);
+        std::vector<glm::vec3> average(placements.size(), glm::vec3(0.0f));
+        std::copy(ownedAverage.begin(), ownedAverage.end(),
+                  average.begin() + long(range.probeBegin));
+        // Each probe is seeded by its index among all the level's.
         baked.probes = bakeProbes(scene, lights, placements, average, ps, range.probeBegin,
                                   range.probeEnd, options.showProgress, rays);
         report.stages.push_back({"probes", secondsSince(start), rays, baked.probes.size()});
@@ -299,7 +309,7 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     // a large part of a small shard's time); the merge takes it from there.
     if (options.visibility && options.shardIndex == 0) {
         start = std::chrono::steady_clock::now();
-        const BakeScene levelScene(device, level);
+        const BakeScene levelScene(world.device, level);
         VisibilityStats stats;
         baked.visibility = bakeVisibility(levelScene, level, options.visibilitySettings,
                                           options.showProgress, &stats);
@@ -316,6 +326,18 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     if (options.shardCount == 1) finishBakedLighting(level, baked);
     report.stages.push_back({"dilate", secondsSince(start), {}, texelCount});
     report.peakMemoryBytes = peakMemoryBytes();
+    return baked;
+}
+
+BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options) {
+    BakeResult result;
+    result.report = startReport(source, options);
+    result.textures = bakeTextures(source, result.report);
+    const BakeWorld world(source, result.textures, options, result.report);
+    CompiledForBake compiled = compileForBake(source, world, options, result.report);
+    result.baked = bakeLighting(source, world, compiled, options, result.report);
+    result.level = std::move(compiled.level);
+    result.compileStats = compiled.stats;
     return result;
 }
 
@@ -399,11 +421,38 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         byIndex[p.shardIndex] = &p;
         partOfShard[p.shardIndex] = i;
     }
+    // The parts' ranges (section 40) must tile every texel, cell and probe, in shard order.
+    world::ShardRange next;
+    next.probeTotal = byIndex[0]->shardRange.probeTotal;
+    for (uint32_t i = 0; i < count; ++i) {
+        const world::ShardRange& r = byIndex[i]->shardRange;
+        if (r.texelBegin != next.texelEnd || r.cellBegin != next.cellEnd ||
+            r.probeBegin != next.probeEnd || r.probeTotal != next.probeTotal)
+            throw world::Error(
+                "merge: " + name(partOfShard[i]) + " (shard " + std::to_string(i) + "/" +
+                std::to_string(count) + ") holds texels [" + std::to_string(r.texelBegin) + ", " +
+                std::to_string(r.texelEnd) + "), cells [" + std::to_string(r.cellBegin) + ", " +
+                std::to_string(r.cellEnd) + "), probes [" + std::to_string(r.probeBegin) + ", " +
+                std::to_string(r.probeEnd) + ") of " + std::to_string(r.probeTotal) +
+                "; expected to start " +
+                (i == 0 ? std::string("at 0") : "where shard " + std::to_string(i - 1) + " ends") +
+                " (texel " +
+                std::to_string(next.texelEnd) + ", cell " + std::to_string(next.cellEnd) +
+                ", probe " + std::to_string(next.probeEnd) + " of " +
+                std::to_string(next.probeTotal) + "): parts of one bake?");
+        next = r;
+    }
+    if (next.texelEnd != texels || next.cellEnd != grid0.cells.size() ||
+        next.probeEnd != next.probeTotal)
+        throw world::Error("merge: the last shard ends at texel " + std::to_string(next.texelEnd) +
+                           ", cell " + std::to_string(next.cellEnd) + ", probe " +
+                           std::to_string(next.probeEnd) + "; expected " + std::to_string(texels) +
+                           ", " + std::to_string(grid0.cells.size()) + " and " +
+                           std::to_string(next.probeTotal) + " (every one baked by some shard)");
     world::BakedLighting merged = parts[0];
-    const std::vector<TexelSample> samples = placeTexels(level);
     for (uint32_t i = 0; i < count; ++i) {
         const world::BakedLighting& p = *byIndex[i];
-        const ShardRange r = shardRange(samples, texels, p.grid.cells.size(), 0, i, count);
+        const world::ShardRange& r = p.shardRange;
         for (uint64_t t = r.texelBegin; t < r.texelEnd; ++t) {
             merged.texels[t] = p.texels[t];
             merged.shadowMask[t] = p.shadowMask[t];
@@ -418,6 +467,7 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         merged.probes.insert(merged.probes.end(), byIndex[i]->probes.begin(),
                              byIndex[i]->probes.end());
     finishBakedLighting(level, merged);
+    merged.shardRange = {0, texels, 0, grid0.cells.size(), 0, next.probeTotal, next.probeTotal};
     return merged;
 }
 

@@ -1,11 +1,13 @@
-// The bake pipeline: import -> Embree scene of the static world -> world compile with the
-// shadowed dominant-primary function -> lightmap texels (shadow masks + directional secondary
-// irradiance) -> light grid -> environment probes -> dilation -> package. Sharding bakes a
-// contiguous part of the texels, of the grid cells and of the probes (shard 0 also bakes the
-// whole visibility set); merge joins the parts and finishes them exactly as a whole bake does,
-// so the package is byte-identical.
+// The bake pipeline: import -> texture stage -> Embree scene of the static world -> world
+// compile with the shadowed dominant-primary function -> lightmap texels (shadow masks +
+// directional secondary irradiance) -> light grid -> environment probes -> dilation -> package.
+// Sharding bakes a contiguous part of the texels, of the grid cells and of the probes, cut by
+// estimated cost (shard_plan.hpp; shard 0 also bakes the whole visibility set); merge joins the
+// parts and finishes them exactly as a whole bake does, so the package is byte-identical. A
+// Slurm bake runs stages 0 to 2 once and its shards read the compiled level (bake/slurm/).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -13,12 +15,14 @@
 
 #include <glm/glm.hpp>
 
+#include "bake/embree/bake_scene.hpp"
 #include "bake/grid/light_grid.hpp"
 #include "bake/lighting/lights.hpp"
 #include "bake/lightmap/chart_density.hpp"
 #include "bake/lightmap/lightmap_bake.hpp"
 #include "bake/probes/probe_capture.hpp"
 #include "bake/report/report.hpp"
+#include "bake/shard_plan.hpp"
 #include "bake/visibility/visibility_bake.hpp"
 #include "world/baked_lighting.hpp"
 #include "world/compile/compile_level.hpp"
@@ -75,6 +79,49 @@ struct BakeOptions {
 /// paths per texel 16, 64, 256; overrides applied.
 [[nodiscard]] ProbeCaptureSettings probeSettings(const BakeOptions& options);
 
+/// Stage 0, the texture stage: every mip the runtime uploads and the bake samples (whole in
+/// every part of a sharded bake: it is deterministic). Adds its stage to `report`.
+[[nodiscard]] world::ProcessedTextures bakeTextures(const world::SourceLevel& source,
+                                                    BakeReport& report);
+
+/// Stage 1: the Embree scene of the source's static world, shaded with the texture stage's
+/// mips, and everything the bake lights with. Built once per bake (once per part) and traced
+/// by every later stage. Adds the "scene" stage and the light counts to `report`.
+struct BakeWorld {
+    BakeWorld(const world::SourceLevel& source, const world::ProcessedTextures& textures,
+              const BakeOptions& options, BakeReport& report);
+    std::chrono::steady_clock::time_point startedAt = std::chrono::steady_clock::now();
+    EmbreeDevice device;
+    BakeScene scene;
+    BakeLights lights;
+};
+
+/// What stage 2, the world compile, makes: the compiled level (its charts at the densities
+/// the pilot pass chose) and the pilot's settings, which the error budget reads again.
+struct CompiledForBake {
+    world::CompiledLevel level;
+    world::CompileStats stats;
+    ChartDensitySettings density;
+};
+
+/// Stage 2: the world compile, its region splitter asking the shadowed dominant primary, then
+/// the density pilot and the charts compiled again at its densities. Adds the "compile" stage,
+/// the pilot's figures and the import's notes to `report`.
+[[nodiscard]] CompiledForBake compileForBake(const world::SourceLevel& source,
+                                             const BakeWorld& world, const BakeOptions& options,
+                                             BakeReport& report);
+
+/// Stages 3 to 7 over `compiled` (a part of it for a shard): lightmaps, the error budget's
+/// choices, light grid, probes, visibility set, dilation (a whole bake only). Adds each stage
+/// to `report`.
+[[nodiscard]] world::BakedLighting bakeLighting(const world::SourceLevel& source,
+                                                const BakeWorld& world,
+                                                const CompiledForBake& compiled,
+                                                const BakeOptions& options, BakeReport& report);
+
+/// The report a bake starts with: the level, quality, threads and shard.
+[[nodiscard]] BakeReport startReport(const world::SourceLevel& source, const BakeOptions& options);
+
 struct BakeResult {
     world::CompiledLevel level;
     world::ProcessedTextures textures;  // the texture stage's (bake/textures/texture_stage.hpp)
@@ -83,24 +130,9 @@ struct BakeResult {
     BakeReport report;
 };
 
-/// Compiles and bakes `source` (or its shard). Throws world::Error on bad input and
-/// std::runtime_error on Embree failures.
+/// Compiles and bakes `source` (or its shard): every stage above. Throws world::Error on bad
+/// input and std::runtime_error on Embree failures.
 [[nodiscard]] BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options);
-
-/// Texels, cells and probes [begin, end) that shard i of n owns: contiguous ranges.
-struct ShardRange {
-    uint64_t texelBegin = 0, texelEnd = 0;
-    uint64_t cellBegin = 0, cellEnd = 0;
-    uint64_t probeBegin = 0, probeEnd = 0;
-};
-/// The shard's ranges. Texels are cut by estimated cost, not by index: each shard owns an equal
-/// share of the placed texels (`samples`, placeTexels of the level, in texel order), since an
-/// atlas's untouched texels cost nothing and a placed one costs the same final gather wherever
-/// it is (its paths, and its shadow rays to lights drawn by importance). Cells and probes are cut
-/// by count. The bake and the merge compute it alike from the compiled level.
-[[nodiscard]] ShardRange shardRange(const std::vector<TexelSample>& samples, uint64_t texels,
-                                    uint64_t cells, uint64_t probes, uint32_t index,
-                                    uint32_t count);
 
 /// E_avg of each probe (probe_capture.hpp): ambientCubeAverage of the light grid sampled at the
 /// capture point exactly as world::sampleLightGrid samples the finished grid. Only the corner

@@ -90,6 +90,17 @@ struct EnvironmentProbe {
     std::vector<uint32_t> texels;          // RGB9E5, 6 * sum_m (face_size >> m)^2
 };
 
+/// What an unmerged part of a sharded bake holds (section 40): the texels, light grid cells and
+/// probes [begin, end) it baked, each a contiguous range cut by estimated cost
+/// (bake/shard_plan.hpp); the merge checks that the parts tile every range.
+struct ShardRange {
+    uint64_t texelBegin = 0, texelEnd = 0;
+    uint64_t cellBegin = 0, cellEnd = 0;
+    uint64_t probeBegin = 0, probeEnd = 0;
+    uint64_t probeTotal = 0;  // probes of the whole level
+    bool operator==(const ShardRange&) const = default;
+};
+
 struct BakedLighting {
     std::vector<LightmapTexel> texels;  // every atlas in order, row-major
     std::vector<uint8_t> shadowMask;    // same order: own primary's visibility 0..255
@@ -99,6 +110,7 @@ struct BakedLighting {
     std::vector<LightmapTexel> importedTexels;  // section 36: the source's own bake (q3map2's)
                                                 // at the same texels; empty when it has none
     uint32_t shardIndex = 0, shardCount = 1;    // shardCount > 1: an unmerged part
+    ShardRange shardRange;                      // section 40, in an unmerged part only
     ErrorBudgetChoices budget;                  // section 39, when budget > 0
 };
 

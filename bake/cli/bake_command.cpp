@@ -162,16 +162,22 @@ bool parseBakeCommandLine(const std::vector<std::string>& arguments, BakeCommand
 }
 
 BakeReport bakeAndWritePackage(const world::SourceLevel& source, const BakeCommandLine& line) {
-    const BakeOptions& options = line.options;
     world::refuseOutputOverInput(line.output, source.inputFiles);
     noteStage("compiling the level");
-    BakeResult result = bakeLevel(source, options);
+    BakeResult result = bakeLevel(source, line.options);
     noteStage("writing the package");
-    package::placeImagesForPackage(result.level,
-                                   line.imagesBeside.empty() ? line.output : line.imagesBeside);
-    const std::vector<uint8_t> bytes = packageBytes(result.level, result.baked, result.textures);
-    result.report.packageBytes = bytes.size();
-    if (!line.reportPath.empty()) writeReport(line.reportPath, result.report);
+    package::placeImagesForPackage(result.level, line.output);
+    writeBakedPackage(line, result.level, result.baked, result.textures, result.report);
+    return result.report;
+}
+
+void writeBakedPackage(const BakeCommandLine& line, const world::CompiledLevel& level,
+                       const world::BakedLighting& baked,
+                       const world::ProcessedTextures& textures, BakeReport& report) {
+    const BakeOptions& options = line.options;
+    const std::vector<uint8_t> bytes = packageBytes(level, baked, textures);
+    report.packageBytes = bytes.size();
+    if (!line.reportPath.empty()) writeReport(line.reportPath, report);
     // The package last, and whole: an interrupt from here on is ignored (interrupt.hpp).
     ignoreInterrupts();
     package::writeFileAtomically(line.output, bytes);
@@ -181,11 +187,10 @@ BakeReport bakeAndWritePackage(const world::SourceLevel& source, const BakeComma
                                           std::to_string(options.shardCount))
                                              .c_str()
                                        : "");
-    std::printf("%s", reportSummary(result.report).c_str());
-    for (const std::string& warning : result.report.warnings)
+    std::printf("%s", reportSummary(report).c_str());
+    for (const std::string& warning : report.warnings)
         std::fprintf(stderr, "onelight-bake: warning: %s: %s\n", line.input.c_str(),
                      warning.c_str());
-    return result.report;
 }
 
 int runBakeCommand(const std::vector<std::string>& arguments) {

@@ -14,9 +14,6 @@ namespace onelight::bake {
 
 struct BakeCommandLine {
     std::string input, output, reportPath;  // output: LEVEL with .olpak when -o is not given
-    // Where the level's images are placed relative to (package::placeImagesForPackage): the
-    // package the merge will write, for a shard of a Slurm bake; empty: `output`.
-    std::string imagesBeside;
     BakeOptions options;
     world::Quake3Options quake3;
     int threads = 0;  // 0: every core
@@ -27,9 +24,14 @@ struct BakeCommandLine {
 [[nodiscard]] bool parseBakeCommandLine(const std::vector<std::string>& arguments,
                                         BakeCommandLine& line);
 
-/// Bakes the imported `source` as `line` says, writes the report (if asked) and the package
-/// atomically, prints the summary on stdout and the warnings on stderr; returns the report.
+/// Bakes the imported `source` as `line` says, then writeBakedPackage; returns the report.
 /// Throws world::Error on bad input.
 BakeReport bakeAndWritePackage(const world::SourceLevel& source, const BakeCommandLine& line);
+
+/// Writes the report (if asked) and the package of `level` (its images already placed for
+/// line.output) atomically, prints the summary on stdout and the warnings on stderr.
+void writeBakedPackage(const BakeCommandLine& line, const world::CompiledLevel& level,
+                       const world::BakedLighting& baked,
+                       const world::ProcessedTextures& textures, BakeReport& report);
 
 }  // namespace onelight::bake

@@ -1,8 +1,8 @@
 // onelight-bake LEVEL -o OUT --slurm N [OPTIONS]: the bake as a Slurm job array of N shard
 // tasks and a merge job that runs after them (afterok, --kill-on-invalid-dep=yes: a failed shard
 // cancels it). The level is imported here once, to check it and hash it into the work folder's
-// manifest; shards already baked and verified there are skipped, so rerunning the same command
-// resumes. Waits with a progress bar over the shards (ETA from the finished ones) and prints the
+// manifest, and compiled here once into the work folder, which every shard bakes from; shards
+// already baked and verified there are skipped, so rerunning the same command resumes. Waits with a progress bar over the shards (ETA from the finished ones) and prints the
 // summary a local bake prints, each shard's node and time, and the merge's.
 #include <algorithm>
 #include <chrono>
@@ -27,6 +27,8 @@
 #include "world/file_read.hpp"
 #include "world/import/level_import.hpp"
 #include "world/level_names.hpp"
+#include "world/package/package_writer.hpp"
+#include "world/package/texture_section.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -199,23 +201,65 @@ void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Ma
         const std::optional<slurm::ShardStamp> stamp = slurm::verifiedShard(work, manifest, i);
         if (stamp) stamps.push_back(*stamp);
     }
-    BakeReport whole = slurm::combineShardReports(reports);
+    const std::optional<slurm::ShardStamp> compiled = slurm::verifiedCompiled(work, manifest);
+    BakeReport whole =
+        slurm::combineShardReports(slurm::readReport(work.compiledReport()), reports);
     const std::optional<slurm::MergeStamp> merge = slurm::readMergeStamp(work);
     whole.packageBytes = merge ? merge->packageBytes : 0;
     if (!line.bake.reportPath.empty())
-        slurm::writeSlurmReport(line.bake.reportPath, whole, stamps, reports,
+        slurm::writeSlurmReport(line.bake.reportPath, whole,
+                                compiled.value_or(slurm::ShardStamp{}), stamps, reports,
                                 merge.value_or(slurm::MergeStamp{}), wallSeconds);
     std::printf("baked %s (%llu bytes, quality %s, %u shards on Slurm, merge job %s)\n",
                 line.bake.output.c_str(), static_cast<unsigned long long>(whole.packageBytes),
                 qualityName(line.bake.options.quality), manifest.shardCount, mergeJob.c_str());
     std::printf("%s", reportSummary(whole).c_str());
     std::printf("  (stage seconds and rays are summed over the shards)\n");
+    if (compiled)
+        std::printf("  compile    %-12s %8.2f s, once, before the shards\n",
+                    compiled->node.c_str(), compiled->seconds);
     std::printf("%s", slurm::shardTimeLines(stamps, reports).c_str());
     if (merge) std::printf("  merge      %-12s %8.2f s\n", merge->node.c_str(), merge->seconds);
     std::printf("  wall       %.2f s from submission to the package\n", wallSeconds);
     for (const std::string& warning : whole.warnings)
         std::fprintf(stderr, "onelight-bake: warning: %s: %s\n", manifest.level.c_str(),
                      warning.c_str());
+}
+
+/// Compiles the level once into the work folder (stages 0 to 2 of the bake: the texture
+/// stage, the scene, the compile with its density pilot), its images placed for the output, and
+/// stamps it; every shard then bakes from it. Skipped when its stamp already verifies.
+void compileIntoWorkFolder(const world::SourceLevel& source, const SlurmCommandLine& line,
+                           const WorkFolder& work, const Manifest& manifest) {
+    if (const std::optional<slurm::ShardStamp> done = slurm::verifiedCompiled(work, manifest)) {
+        std::printf("the compiled level in %s verifies: not compiled again\n",
+                    work.compiled().c_str());
+        return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    noteStage("compiling the level");
+    BakeOptions options = line.bake.options;
+    options.shardIndex = 0;
+    options.shardCount = 1;
+    BakeReport report = startReport(source, options);
+    const world::ProcessedTextures textures = bakeTextures(source, report);
+    CompiledForBake compiled;
+    {
+        const BakeWorld bakeWorld(source, textures, options, report);
+        compiled = compileForBake(source, bakeWorld, options, report);
+    }
+    package::placeImagesForPackage(compiled.level, manifest.output);
+    const std::vector<package::RawSection> sections = {package::encodeTextureSection(textures)};
+    const std::vector<uint8_t> bytes = package::serializePackage(compiled.level, sections);
+    report.peakMemoryBytes = peakMemoryBytes();
+    writeReport(work.compiledReport(), report);
+    package::writeFileAtomically(work.compiled(), bytes);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    slurm::writeCompiledStamp(work, manifest, slurm::hostName(), seconds);
+    std::printf("compiled the level once into %s (%.2f s; %zu surfaces, %llu texels to bake)\n",
+                work.compiled().c_str(), seconds, compiled.level.surfaces.size(),
+                static_cast<unsigned long long>(totalTexels(compiled.level)));
 }
 
 /// Waits for the rounds of shard tasks (a first one, then one per retry) and the merge.
@@ -309,6 +353,7 @@ int runSlurmBake(SlurmCommandLine& line) {
     std::vector<uint32_t> missing;
     for (uint32_t i = 0; i < manifest.shardCount; ++i)
         if (!slurm::verifiedShard(work, manifest, i)) missing.push_back(i);
+    if (!missing.empty()) compileIntoWorkFolder(source, line, work, manifest);
 
     const slurm::BatchScripts scripts =
         slurm::batchScripts(work, selfExecutable(), line.bake.output, line.job, missing);

@@ -1,8 +1,8 @@
 // onelight-bake slurm-task --work DIR (--shard I | --merge -o OUT): what the jobs of a Slurm
 // bake run (their batch scripts call it, bake/slurm/batch_scripts.hpp). A shard task bakes part
-// I of the level in the work folder's manifest, after checking that the level is still the one
-// the manifest hashed, and stamps the part (work_folder.hpp); the merge task merges the parts
-// after verifying every stamp. ONELIGHT_SLURM_FAIL_SHARD=I makes shard I fail before it bakes:
+// I of the work folder's compiled level (made once by the submitting command, its stamp
+// verified), after checking that the level is still the one the manifest hashed, and stamps the
+// part (work_folder.hpp); the merge task merges the parts after verifying every stamp. ONELIGHT_SLURM_FAIL_SHARD=I makes shard I fail before it bakes:
 // the tests' fault injection (sbatch passes the submitting environment on to the tasks).
 #include <chrono>
 #include <cstdio>
@@ -21,6 +21,8 @@
 #include "bake/slurm/work_folder.hpp"
 #include "world/error.hpp"
 #include "world/import/level_import.hpp"
+#include "world/package/package_reader.hpp"
+#include "world/package/texture_section.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -86,8 +88,23 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
     arguments.insert(arguments.end(), manifest.bakeArguments.begin(), manifest.bakeArguments.end());
     BakeCommandLine line;
     if (!parseBakeCommandLine(arguments, line)) return 2;
-    line.imagesBeside = manifest.output;
     const std::unique_ptr<tbb::global_control> limit = limitThreadsToAllocation();
+    // The compiled level, made once by the submitting command: the shard does not compile.
+    if (!slurm::verifiedCompiled(work, manifest))
+        throw world::Error(work.compiled() +
+                           ": missing or does not verify (checksum, level or settings); expected "
+                           "the compiled level that onelight-bake --slurm writes before it "
+                           "submits: run that command again");
+    noteStage("reading the compiled level");
+    const package::PackageContents read = package::readPackageFile(work.compiled());
+    CompiledForBake compiled{read.level, {}, {}};
+    const package::TextureContents textures =
+        package::decodeTextureSection(read.bakedSections, read.level, work.compiled());
+    if (!textures.present)
+        throw world::Error(work.compiled() +
+                           ": no textures section (38); expected the texture stage's mips");
+    // The source still gives the Embree scene and the lights: the scene is the source's static
+    // geometry, as in a whole bake, so that the parts equal it byte for byte.
     noteStage("importing the level");
     const world::SourceLevel source = world::importLevel(line.input, line.quake3);
     const uint64_t levelHash = slurm::hashFiles(source.inputFiles);
@@ -98,7 +115,13 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
                            slurm::hashHex(manifest.levelHash) +
                            "); expected the level the manifest hashed: run onelight-bake --slurm "
                            "again with another --work");
-    (void)bakeAndWritePackage(source, line);
+    noteStage("baking the shard");
+    BakeReport report = startReport(source, line.options);
+    const BakeWorld bakeWorld(source, textures.textures, line.options, report);
+    const world::BakedLighting baked =
+        bakeLighting(source, bakeWorld, compiled, line.options, report);
+    noteStage("writing the shard");
+    writeBakedPackage(line, compiled.level, baked, textures.textures, report);
     slurm::writeShardStamp(work, manifest, shard, slurm::hostName(), secondsSince(start));
     return 0;
 }

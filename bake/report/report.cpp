@@ -22,7 +22,10 @@ std::string reportJson(const BakeReport& r) {
     j["level"] = r.level;
     j["quality"] = r.quality;
     j["threads"] = r.threads;
-    j["shard"] = {{"index", r.shardIndex}, {"count", r.shardCount}};
+    j["shard"] = {{"index", r.shardIndex},
+                  {"count", r.shardCount},
+                  {"estimated_rays", r.shardCost},
+                  {"estimated_rays_all_shards", r.shardCostTotal}};
     double seconds = 0.0;
     RayCounts all;
     nlohmann::ordered_json stages = nlohmann::ordered_json::array();

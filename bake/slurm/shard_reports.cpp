@@ -36,6 +36,12 @@ BakeReport readReport(const std::string& path) {
         r.level = j.value("level", "");
         r.quality = j.value("quality", "");
         r.threads = j.value("threads", 0u);
+        if (j.contains("shard") && j["shard"].is_object()) {
+            r.shardIndex = j["shard"].value("index", 0u);
+            r.shardCount = j["shard"].value("count", 1u);
+            r.shardCost = j["shard"].value("estimated_rays", 0.0);
+            r.shardCostTotal = j["shard"].value("estimated_rays_all_shards", 0.0);
+        }
         for (const nlohmann::json& s : j["stages"]) {
             StageReport stage;
             stage.name = s.value("name", "");
@@ -86,9 +92,29 @@ BakeReport readReport(const std::string& path) {
     }
 }
 
-BakeReport combineShardReports(const std::vector<BakeReport>& shards) {
-    if (shards.empty()) return {};
+BakeReport combineShardReports(const BakeReport& compile, const std::vector<BakeReport>& shards) {
+    if (shards.empty()) return compile;
     BakeReport whole = shards[0];
+    // The compile's stages first (the texture stage, its scene, the compile), then the shards'.
+    std::vector<StageReport> stages = compile.stages;
+    for (const StageReport& s : whole.stages) {
+        auto found = std::find_if(stages.begin(), stages.end(),
+                                  [&](const StageReport& c) { return c.name == s.name; });
+        if (found == stages.end()) {
+            stages.push_back(s);
+        } else {
+            found->seconds += s.seconds;
+            found->rays += s.rays;
+        }
+    }
+    whole.stages = std::move(stages);
+    whole.texelsBeforeDensity = compile.texelsBeforeDensity;
+    whole.chartsReduced = compile.chartsReduced;
+    whole.textures = compile.textures;
+    whole.textureBytes = compile.textureBytes;
+    whole.warnings.insert(whole.warnings.begin(), compile.warnings.begin(),
+                          compile.warnings.end());
+    whole.shardCost = whole.shardCostTotal;
     whole.shardIndex = 0;
     whole.shardCount = uint32_t(shards.size());
     double noise = whole.lightmapMeanRelativeNoise * double(whole.texelsSampled);
@@ -133,11 +159,14 @@ std::string shardTimeLines(const std::vector<ShardStamp>& stamps,
     for (size_t i = 0; i < stamps.size(); ++i) {
         const ShardStamp& s = stamps[i];
         const BakeReport* r = i < reports.size() ? &reports[i] : nullptr;
+        const double share =
+            r && r->shardCostTotal > 0.0 ? 100.0 * r->shardCost / r->shardCostTotal : 0.0;
         std::snprintf(
             line, sizeof line,
-            "  shard %-4u %-12s %8.2f s (lightmaps %.2f s, grid %.2f s, probes %.2f s)%s\n",
+            "  shard %-4u %-12s %8.2f s (lightmaps %.2f s, grid %.2f s, probes %.2f s; "
+            "%.1f%% of the divided work by estimate)%s\n",
             s.shard, s.node.c_str(), s.seconds, r ? stageSeconds(*r, "lightmaps") : 0.0,
-            r ? stageSeconds(*r, "grid") : 0.0, r ? stageSeconds(*r, "probes") : 0.0,
+            r ? stageSeconds(*r, "grid") : 0.0, r ? stageSeconds(*r, "probes") : 0.0, share,
             s.seconds == slowest && stamps.size() > 1 ? "  slowest" : "");
         text += line;
     }
@@ -150,8 +179,9 @@ std::string shardTimeLines(const std::vector<ShardStamp>& stamps,
 }
 
 void writeSlurmReport(const std::string& path, const BakeReport& whole,
-                      const std::vector<ShardStamp>& stamps, const std::vector<BakeReport>& reports,
-                      const MergeStamp& merge, double wallSeconds) {
+                      const ShardStamp& compile, const std::vector<ShardStamp>& stamps,
+                      const std::vector<BakeReport>& reports, const MergeStamp& merge,
+                      double wallSeconds) {
     nlohmann::ordered_json json = nlohmann::ordered_json::parse(reportJson(whole));
     nlohmann::ordered_json shards = nlohmann::ordered_json::array();
     for (size_t i = 0; i < stamps.size(); ++i) {
@@ -161,8 +191,10 @@ void writeSlurmReport(const std::string& path, const BakeReport& whole,
         shards.push_back({{"index", stamps[i].shard},
                           {"node", stamps[i].node},
                           {"seconds", stamps[i].seconds},
-                          {"stage_seconds", stages}});
+                          {"stage_seconds", stages},
+                          {"estimated_rays", i < reports.size() ? reports[i].shardCost : 0.0}});
     }
+    json["compile"] = {{"node", compile.node}, {"seconds", compile.seconds}};
     json["shards"] = shards;
     json["merge"] = {{"node", merge.node}, {"seconds", merge.seconds}};
     json["wall_seconds"] = wallSeconds;

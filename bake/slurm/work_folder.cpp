@@ -132,10 +132,13 @@ std::string describeChange(const Manifest& found, const Manifest& wanted) {
            joined(wanted.bakeArguments) + ")";
 }
 
-void writeShardStamp(const WorkFolder& work, const Manifest& manifest, uint32_t shard,
-                     const std::string& node, double seconds) {
-    const std::vector<uint8_t> bytes =
-        world::readRegularFile(work.shardPackage(shard), "a shard's package");
+namespace {
+
+/// The stamp of `package` (shard `shard`, or kCompiledStamp) at `stampPath`.
+void writeStamp(const std::string& stampPath, const std::string& package, const char* what,
+                const Manifest& manifest, uint32_t shard, const std::string& node,
+                double seconds) {
+    const std::vector<uint8_t> bytes = world::readRegularFile(package, what);
     nlohmann::ordered_json json;
     json["shard"] = shard;
     json["shards"] = manifest.shardCount;
@@ -145,21 +148,22 @@ void writeShardStamp(const WorkFolder& work, const Manifest& manifest, uint32_t 
     json["package_bytes"] = bytes.size();
     json["node"] = node;
     json["seconds"] = seconds;
-    writeJson(work.shardStamp(shard), json);
+    writeJson(stampPath, json);
 }
 
-std::optional<ShardStamp> verifiedShard(const WorkFolder& work, const Manifest& manifest,
+std::optional<ShardStamp> verifiedStamp(const std::string& stampPath, const std::string& package,
+                                        const char* what, const Manifest& manifest,
                                         uint32_t shard) {
     std::optional<nlohmann::json> json;
     try {
-        json = readJson(work.shardStamp(shard), "a shard's stamp");
+        json = readJson(stampPath, "a stamp");
     } catch (const world::Error&) {
-        return std::nullopt;  // a damaged stamp: the shard is baked again
+        return std::nullopt;  // a damaged stamp: the work is done again
     }
     if (!json) return std::nullopt;
     const nlohmann::json& j = *json;
     ShardStamp s;
-    s.shard = j.value("shard", uint32_t(~0u));
+    s.shard = j.value("shard", uint32_t(~0u) - 1);
     s.shardCount = j.value("shards", 0u);
     s.levelHash = parseHex(j.value("level_hash", nlohmann::json()));
     s.settingsHash = parseHex(j.value("settings_hash", nlohmann::json()));
@@ -171,13 +175,36 @@ std::optional<ShardStamp> verifiedShard(const WorkFolder& work, const Manifest& 
         s.levelHash != manifest.levelHash || s.settingsHash != manifest.settingsHash())
         return std::nullopt;
     std::error_code error;
-    const std::string package = work.shardPackage(shard);
     if (!std::filesystem::is_regular_file(package, error) ||
         std::filesystem::file_size(package, error) != s.packageBytes)
         return std::nullopt;
-    if (hashBytes(world::readRegularFile(package, "a shard's package")) != s.packageChecksum)
-        return std::nullopt;
+    if (hashBytes(world::readRegularFile(package, what)) != s.packageChecksum) return std::nullopt;
     return s;
+}
+
+}  // namespace
+
+void writeCompiledStamp(const WorkFolder& work, const Manifest& manifest, const std::string& node,
+                        double seconds) {
+    writeStamp(work.compiledStamp(), work.compiled(), "the compiled level", manifest,
+               kCompiledStamp, node, seconds);
+}
+
+std::optional<ShardStamp> verifiedCompiled(const WorkFolder& work, const Manifest& manifest) {
+    return verifiedStamp(work.compiledStamp(), work.compiled(), "the compiled level", manifest,
+                         kCompiledStamp);
+}
+
+void writeShardStamp(const WorkFolder& work, const Manifest& manifest, uint32_t shard,
+                     const std::string& node, double seconds) {
+    writeStamp(work.shardStamp(shard), work.shardPackage(shard), "a shard's package", manifest,
+               shard, node, seconds);
+}
+
+std::optional<ShardStamp> verifiedShard(const WorkFolder& work, const Manifest& manifest,
+                                        uint32_t shard) {
+    return verifiedStamp(work.shardStamp(shard), work.shardPackage(shard), "a shard's package",
+                         manifest, shard);
 }
 
 void writeSubmittedJobs(const WorkFolder& work, const SubmittedJobs& jobs) {

@@ -4,6 +4,10 @@
 // checksum, and the level and settings it was baked from, equal the manifest's.
 //
 //   WORK/manifest.json                 the level, its content hash, the bake's arguments, N
+//   WORK/compiled.olpak                the compiled level and its textures, made once by the
+//                                      submitting command; every shard bakes from it
+//   WORK/compiled.json                 the compile's report (texture stage, scene, compile)
+//   WORK/compiled.stamp.json           its checksum, level and settings hashes, node, seconds
 //   WORK/scripts/{shard,merge,submit}.sh
 //   WORK/shards/shard-I.olpak          part I of N (written to a temporary name, then renamed)
 //   WORK/shards/shard-I.json           its bake report (seconds per stage)
@@ -23,6 +27,9 @@ namespace onelight::bake::slurm {
 struct WorkFolder {
     std::string root;  // absolute
     [[nodiscard]] std::string manifest() const { return root + "/manifest.json"; }
+    [[nodiscard]] std::string compiled() const { return root + "/compiled.olpak"; }
+    [[nodiscard]] std::string compiledReport() const { return root + "/compiled.json"; }
+    [[nodiscard]] std::string compiledStamp() const { return root + "/compiled.stamp.json"; }
     [[nodiscard]] std::string scripts() const { return root + "/scripts"; }
     [[nodiscard]] std::string logs() const { return root + "/logs"; }
     [[nodiscard]] std::string shardPackage(uint32_t shard) const;
@@ -80,6 +87,16 @@ void writeManifest(const WorkFolder& work, const Manifest& manifest);
 /// A one-line account of what differs between `found` and `wanted` when !sameBake ("the level's
 /// content changed (hash A, now B)", "the settings changed: ...").
 [[nodiscard]] std::string describeChange(const Manifest& found, const Manifest& wanted);
+
+/// Hashes the compiled level (compiled.olpak) and writes its stamp (atomically); the stamp's
+/// shard is kCompiledStamp.
+void writeCompiledStamp(const WorkFolder& work, const Manifest& manifest, const std::string& node,
+                        double seconds);
+/// The compiled level's stamp when compiled.olpak exists and the stamp verifies against
+/// `manifest` (checksum, size, level and settings).
+[[nodiscard]] std::optional<ShardStamp> verifiedCompiled(const WorkFolder& work,
+                                                         const Manifest& manifest);
+inline constexpr uint32_t kCompiledStamp = 0xffffffffu;
 
 /// Hashes the shard's package and writes its stamp (atomically).
 void writeShardStamp(const WorkFolder& work, const Manifest& manifest, uint32_t shard,

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -97,6 +98,16 @@ TEST_P(BakeDeterminism, ShardsMergedEqualAWholeBake) {
     EXPECT_NE(originError.find("second.olpak (shard "), std::string::npos) << originError;
     EXPECT_NE(originError.find("light grid's origin"), std::string::npos) << originError;
 
+    // Parts whose ranges overlap (one texel baked twice, one never): named, not merged.
+    std::vector<world::BakedLighting> overlapping = parts;
+    for (world::BakedLighting& p : overlapping)
+        if (p.shardIndex == 1) p.shardRange.texelBegin -= 1;
+    const std::string overlapError = onelight::test::errorMessage([&] {
+        (void)mergeBakedLighting(compiled, overlapping, {"first.olpak", "second.olpak"});
+    });
+    EXPECT_NE(overlapError.find("expected to start where shard 0 ends"), std::string::npos)
+        << overlapError;
+
     parts.pop_back();
     const std::string error =
         onelight::test::errorMessage([&] { (void)mergeBakedLighting(compiled, parts); });
@@ -108,30 +119,122 @@ INSTANTIATE_TEST_SUITE_P(Levels, BakeDeterminism, ::testing::Values(false, true)
                              return level.param ? "Textured" : "Plain";
                          });
 
-// Shards own equal shares of the placed texels, not of the atlases: placed texels crowd the
-// first tenth of a 1000-texel atlas, and the cut follows them, while every texel, placed or not,
-// still belongs to exactly one shard.
+// Every texel (placed or not), cell and probe belongs to exactly one shard, in order, and each
+// shard's estimated cost is its equal share to within one item.
+void expectTiling(const ShardCosts& costs, const std::vector<TexelSample>& samples,
+                  uint64_t texels, uint32_t count) {
+    world::ShardRange next;
+    double total = 0.0, largest = 0.0;
+    for (const auto* list : {&costs.texels, &costs.cells, &costs.probes})
+        for (const double c : *list) {
+            total += c;
+            largest = std::max(largest, c);
+        }
+    for (uint32_t i = 0; i < count; ++i) {
+        const world::ShardRange r = shardRange(costs, samples, texels, i, count);
+        EXPECT_EQ(r.texelBegin, next.texelEnd) << i << "/" << count;
+        EXPECT_EQ(r.cellBegin, next.cellEnd) << i << "/" << count;
+        EXPECT_EQ(r.probeBegin, next.probeEnd) << i << "/" << count;
+        EXPECT_LE(r.texelBegin, r.texelEnd);
+        EXPECT_LE(r.cellBegin, r.cellEnd);
+        EXPECT_LE(r.probeBegin, r.probeEnd);
+        EXPECT_EQ(r.probeTotal, costs.probes.size());
+        EXPECT_NEAR(shardCost(costs, samples, r), total / count, largest + 1e-9)
+            << i << "/" << count;
+        next = r;
+    }
+    EXPECT_EQ(next.texelEnd, texels) << count;
+    EXPECT_EQ(next.cellEnd, costs.cells.size()) << count;
+    EXPECT_EQ(next.probeEnd, costs.probes.size()) << count;
+}
+
+// Shards own equal shares of the placed texels' cost, not of the atlases: placed texels crowd
+// the first tenth of a 1000-texel atlas, and the cut follows them.
 TEST(BakeShards, TexelsAreCutIntoEqualSharesOfThePlacedTexels) {
     std::vector<TexelSample> samples;
     for (uint64_t t = 0; t < 100; ++t) samples.push_back({t});
     for (uint64_t t = 100; t < 1000; t += 10) samples.push_back({t});  // 190 placed in all
-    for (const uint32_t count : {1u, 2u, 4u, 7u, 300u}) {
-        uint64_t next = 0;
-        for (uint32_t i = 0; i < count; ++i) {
-            const ShardRange r = shardRange(samples, 1000, 10, 0, i, count);
-            EXPECT_EQ(r.texelBegin, next) << i << "/" << count;
-            EXPECT_LE(r.texelBegin, r.texelEnd) << i << "/" << count;
-            next = r.texelEnd;
-            size_t owned = 0;
-            for (const TexelSample& s : samples)
-                owned += s.texel >= r.texelBegin && s.texel < r.texelEnd;
-            EXPECT_LE(owned, samples.size() / count + 1) << i << "/" << count;
-            EXPECT_GE(owned, samples.size() / count) << i << "/" << count;
-        }
-        EXPECT_EQ(next, 1000u) << count;
-    }
+    ShardCosts costs;
+    costs.texels.assign(samples.size(), 128.0);
+    for (const uint32_t count : {1u, 2u, 4u, 7u, 300u}) expectTiling(costs, samples, 1000, count);
     // Two shards: the first owns 95 of the crowded first 100 texels, not half the atlas.
-    EXPECT_EQ(shardRange(samples, 1000, 10, 0, 0, 2).texelEnd, 95u);
+    EXPECT_EQ(shardRange(costs, samples, 1000, 0, 2).texelEnd, 95u);
+}
+
+// Texels, cells and probes are laid end to end and cut by cost: costly texels (many lights)
+// get fewer per shard, and a probe worth many cells takes a shard's share alone.
+TEST(BakeShards, CostlyItemsAreSpreadOverMoreShards) {
+    std::vector<TexelSample> samples;
+    for (uint64_t t = 0; t < 400; ++t) samples.push_back({t * 2});
+    ShardCosts costs;
+    for (size_t i = 0; i < samples.size(); ++i) costs.texels.push_back(i < 100 ? 700.0 : 100.0);
+    costs.cells.assign(300, 200.0);
+    costs.probes.assign(2, 6.0 * 16 * 16 * 16);  // 24576 each
+    // Total 70000 + 30000 + 60000 + 49152 = 209152.
+    for (const uint32_t count : {1u, 2u, 3u, 5u, 8u, 64u}) expectTiling(costs, samples, 800, count);
+    // Four shards: the first quarter (52288) is 74 of the costly texels, not 100 texels.
+    const world::ShardRange first = shardRange(costs, samples, 800, 0, 4);
+    EXPECT_EQ(first.texelEnd, samples[75].texel);
+    EXPECT_EQ(first.cellEnd, 0u);
+    const world::ShardRange last = shardRange(costs, samples, 800, 3, 4);
+    EXPECT_EQ(last.probeEnd - last.probeBegin, 2u);
+    // No cost at all (an empty level's zero paths): cut by count.
+    ShardCosts none;
+    none.cells.assign(10, 0.0);
+    expectTiling(none, {}, 0, 3);
+    EXPECT_EQ(shardRange(none, {}, 0, 1, 3).cellBegin, 3u);
+}
+
+// A cell that more lights reach costs more shadow rays; a texel pays for them only without the
+// cached bounces (--paths-only), where its gathering paths shade their hits.
+TEST(BakeShards, CostsFollowTheLightsThatReachEachPoint) {
+    world::Light near;
+    near.type = world::LightType::kPoint;
+    near.role = world::LightRole::kBaked;
+    near.position = glm::vec3(0.5f, 0.5f, 0.5f);
+    near.range = 2.0f;
+    world::Light sun;
+    sun.type = world::LightType::kDirectional;
+    sun.role = world::LightRole::kBaked;
+    BakeLights lights = makePunctualLights({near, sun}, LightSizes{}, glm::vec3(0.0f));
+    // The point light in light cells over the 16 m row, the sun everywhere, as makeBakeLights
+    // lays them over a scene.
+    lights.localLights = {0};
+    lights.directionalLights = {1};
+    lights.lightCells =
+        layoutLightCells(1, glm::vec3(0.0f), glm::vec3(16.0f, 1.0f, 1.0f));
+    fillLightCells(lights.lightCells, {lightBoundOf(lights.lights[0])});
+    world::LightGrid grid;
+    grid.origin = glm::vec3(0.0f);
+    grid.cellSize = glm::vec3(1.0f);
+    grid.dims = glm::uvec3(16, 1, 1);
+    grid.cells.resize(16);
+    std::vector<TexelSample> samples(2);
+    samples[0].position = glm::vec3(0.5f);
+    samples[1] = {1};
+    samples[1].position = glm::vec3(15.5f, 0.5f, 0.5f);
+    LightmapSettings lm;
+    lm.indirectSamples = 128;
+    lm.bouncePasses = 3;
+    GridSettings gs;
+    gs.samples = 128;
+    gs.shadowSamples = 8;
+    ProbeCaptureSettings ps;
+    ps.faceSize = 16;
+    ps.samplesPerTexel = 4;
+    const ShardCosts cached = estimateShardCosts(lights, samples, grid, 1, lm, gs, ps);
+    EXPECT_GE(lightsReaching(lights, glm::vec3(0.5f)), 2u);
+    EXPECT_EQ(lightsReaching(lights, glm::vec3(15.5f, 0.5f, 0.5f)), 1u);
+    EXPECT_DOUBLE_EQ(cached.cells[15], 128.0 + 8.0 * 1);
+    EXPECT_GT(cached.cells[0], cached.cells[15]);
+    EXPECT_DOUBLE_EQ(cached.texels[0], 128.0);
+    EXPECT_DOUBLE_EQ(cached.texels[1], 128.0);
+    EXPECT_DOUBLE_EQ(cached.probes[0], 6.0 * 16 * 16 * 4);
+    lm.bouncePasses = 0;
+    const ShardCosts paths = estimateShardCosts(lights, samples, grid, 0, lm, gs, ps);
+    EXPECT_DOUBLE_EQ(paths.texels[1], 128.0 * 2);
+    EXPECT_GT(paths.texels[0], paths.texels[1]);
+    EXPECT_TRUE(paths.probes.empty());
 }
 
 }  // namespace

@@ -119,14 +119,59 @@ std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
     }
     if (!baked.visibility.empty()) out.push_back(encodeVisibilitySection(baked.visibility));
     if (baked.budget.budget > 0.0f) out.push_back(encodeBudgetSection(baked.budget));
+    if (baked.shardCount > 1) {
+        const world::ShardRange& r = baked.shardRange;
+        RawSection range;
+        range.id = kSectionShardRange;
+        range.elementSize = sizeof(DiskShardRange);
+        range.count = 1;
+        appendBytes(range.bytes, DiskShardRange{r.texelBegin, r.texelEnd, r.cellBegin, r.cellEnd,
+                                                r.probeBegin, r.probeEnd, r.probeTotal, 0});
+        out.push_back(std::move(range));
+    }
     return out;
 }
+
+namespace {
+
+/// Section 40 of a part holding `texels` texels, `cells` grid cells and `probes` probes.
+world::ShardRange decodeShardRange(const RawSection& section, uint64_t texels, uint64_t cells,
+                                   uint64_t probes, const std::string& name) {
+    const std::string at = name + ": section shard_range: ";
+    if (section.elementSize != sizeof(DiskShardRange) || section.count != 1 ||
+        section.bytes.size() != sizeof(DiskShardRange))
+        throw world::Error(at + "element size " + std::to_string(section.elementSize) + ", count " +
+                           std::to_string(section.count) + ", " +
+                           std::to_string(section.bytes.size()) + " bytes; expected one record of " +
+                           std::to_string(sizeof(DiskShardRange)) + " bytes");
+    const auto d = readRecord<DiskShardRange>(section.bytes, 0);
+    auto range = [&](const char* what, uint64_t begin, uint64_t end, uint64_t total,
+                     const std::string& totalName) {
+        if (begin > end || end > total)
+            throw world::Error(at + what + " [" + std::to_string(begin) + ", " +
+                               std::to_string(end) + "); expected begin <= end <= " +
+                               std::to_string(total) + " (" + totalName + ")");
+    };
+    range("texels", d.texelBegin, d.texelEnd, texels, "the atlases' texels");
+    range("cells", d.cellBegin, d.cellEnd, cells, "the light grid's cells");
+    range("probes", d.probeBegin, d.probeEnd, d.probeTotal, "probeTotal");
+    if (d.probeEnd - d.probeBegin != probes)
+        throw world::Error(at + "probes [" + std::to_string(d.probeBegin) + ", " +
+                           std::to_string(d.probeEnd) + ") but the probe section holds " +
+                           std::to_string(probes) + "; expected as many as the range");
+    if (d.reserved != 0)
+        throw world::Error(at + "reserved = " + std::to_string(d.reserved) + "; expected 0");
+    return {d.texelBegin, d.texelEnd, d.cellBegin, d.cellEnd,
+            d.probeBegin, d.probeEnd, d.probeTotal};
+}
+
+}  // namespace
 
 BakedContents decodeBakedSections(std::span<const RawSection> sections,
                                   const world::CompiledLevel& level, const std::string& name) {
     BakedContents result;
     const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr, *imported = nullptr,
-                     *visibility = nullptr, *budget = nullptr;
+                     *visibility = nullptr, *budget = nullptr, *shardRange = nullptr;
     for (const RawSection& s : sections) {
         const RawSection** slot = s.id == kSectionLightmapTexels     ? &texels
                                   : s.id == kSectionShadowMasks      ? &masks
@@ -134,6 +179,7 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
                                   : s.id == kSectionImportedLightmap ? &imported
                                   : s.id == kSectionVisibility       ? &visibility
                                   : s.id == kSectionErrorBudget      ? &budget
+                                  : s.id == kSectionShardRange       ? &shardRange
                                                                      : nullptr;
         if (!slot) continue;
         if (*slot) {
@@ -144,11 +190,13 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
     if (!texels && !masks && !grid) {
         for (const RawSection& s : sections)
             if (s.id == kSectionProbes || s.id == kSectionImportedLightmap ||
-                s.id == kSectionVisibility || s.id == kSectionErrorBudget)
+                s.id == kSectionVisibility || s.id == kSectionErrorBudget ||
+                s.id == kSectionShardRange)
                 throw world::Error(name + ": section " +
                                    (s.id == kSectionProbes        ? "probes"
                                     : s.id == kSectionVisibility  ? "visibility"
                                     : s.id == kSectionErrorBudget ? "error_budget"
+                                    : s.id == kSectionShardRange  ? "shard_range"
                                                                   : "imported_lightmap") +
                                    " present without baked lighting; expected "
                                    "sections lightmap_texels, shadow_masks and light_grid too");
@@ -262,6 +310,15 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
     baked.probes = decodeProbeSection(sections, level, name).probes;
     if (visibility) baked.visibility = decodeVisibilitySection(*visibility, level, name);
     if (budget) baked.budget = decodeBudgetSection(*budget, baked.grid.cells.size(), name);
+    if ((baked.shardCount > 1) != (shardRange != nullptr))
+        throw world::Error(name + ": section shard_range " +
+                           (shardRange ? "present" : "missing") + " with light_grid's shard " +
+                           std::to_string(baked.shardIndex) + "/" +
+                           std::to_string(baked.shardCount) +
+                           "; expected it in an unmerged part (shard count > 1) only");
+    if (shardRange)
+        baked.shardRange = decodeShardRange(*shardRange, expectedTexels, baked.grid.cells.size(),
+                                            baked.probes.size(), name);
     return result;
 }
 

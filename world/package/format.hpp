@@ -66,6 +66,7 @@ enum SectionId : uint32_t {
     // Textures made by the texture stage: mip chains and per-material slots; kept raw too.
     kSectionProcessedTextures = 38,
     kSectionErrorBudget = 39,  // DiskErrorBudget[1]: what --error-budget left out, and why
+    kSectionShardRange = 40,   // DiskShardRange[1]: what an unmerged part of a sharded bake holds
     kSectionIdLimit = 48,      // ids at or above this are invalid
 };
 
@@ -511,5 +512,22 @@ struct DiskErrorBudget {
     float predictedError;     // probeError (when dropped) + lightmapError
 };
 static_assert(sizeof(DiskErrorBudget) == 48);
+
+// ---------------------------------------------------------------------------------------------
+// Shard range (id 40), in an unmerged part of a sharded bake only (light_grid's shardCount > 1;
+// never in a whole package; world::ShardRange in memory). One record: the texels, light grid
+// cells and probes the part baked, each [begin, end), cut by estimated cost
+// (bake/shard_plan.hpp). texelEnd <= the atlases' texels, cellEnd <= the grid's cells, probeEnd
+// <= probeTotal, and the part's probe section holds exactly probeEnd - probeBegin probes. The
+// merge checks that its parts tile [0, total) of each.
+
+struct DiskShardRange {
+    uint64_t texelBegin, texelEnd;
+    uint64_t cellBegin, cellEnd;
+    uint64_t probeBegin, probeEnd;
+    uint64_t probeTotal;
+    uint64_t reserved;  // 0
+};
+static_assert(sizeof(DiskShardRange) == 64);
 
 }  // namespace onelight::package

@@ -1,0 +1,102 @@
+#include "bake/shard_plan.hpp"
+
+#include <algorithm>
+
+#include "bake/lighting/direct_light.hpp"
+
+namespace onelight::bake {
+namespace {
+
+/// Shadow-ray terms a point pays for: estimateVisibilities spends S rays on each of at most 8
+/// lights, and about 2 x 8 S over more (direct_light.hpp).
+constexpr uint32_t kShadowTermCap = 16;
+
+}  // namespace
+
+uint32_t lightsReaching(const BakeLights& lights, const glm::vec3& position) {
+    const auto near = static_cast<uint32_t>(lightsNear(lights, position).size());
+    return near + (lights.emitters.triangles.empty() ? 0u : 1u);
+}
+
+ShardCosts estimateShardCosts(const BakeLights& lights, const std::vector<TexelSample>& samples,
+                              const world::LightGrid& grid, size_t probes,
+                              const LightmapSettings& lightmap, const GridSettings& gridSettings,
+                              const ProbeCaptureSettings& probe) {
+    ShardCosts costs;
+    const bool cached = lightmap.bouncePasses > 0;
+    auto terms = [&](const glm::vec3& p) { return double(std::min(lightsReaching(lights, p), kShadowTermCap)); };
+    costs.texels.resize(samples.size());
+    for (size_t i = 0; i < samples.size(); ++i) {
+        const double paths = lightmap.indirectSamples;
+        costs.texels[i] = cached ? paths : paths * (1.0 + terms(samples[i].position));
+    }
+    costs.cells.resize(grid.cells.size());
+    for (size_t i = 0; i < grid.cells.size(); ++i) {
+        const uint32_t x = static_cast<uint32_t>(i % grid.dims.x);
+        const uint32_t y = static_cast<uint32_t>((i / grid.dims.x) % grid.dims.y);
+        const uint32_t z = static_cast<uint32_t>(i / (uint64_t(grid.dims.x) * grid.dims.y));
+        const glm::vec3 centre = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
+        const double t = terms(centre), paths = gridSettings.samples;
+        costs.cells[i] = (cached ? paths : paths * (1.0 + t)) + gridSettings.shadowSamples * t;
+    }
+    const double perProbe =
+        6.0 * double(probe.faceSize) * probe.faceSize * double(probe.samplesPerTexel);
+    costs.probes.assign(probes, perProbe);
+    return costs;
+}
+
+world::ShardRange shardRange(const ShardCosts& costs, const std::vector<TexelSample>& samples,
+                             uint64_t texels, uint32_t index, uint32_t count) {
+    const size_t placed = costs.texels.size(), cells = costs.cells.size(),
+                 probes = costs.probes.size(), items = placed + cells + probes;
+    // prefix[k]: the cost of the items before k, texels then cells then probes.
+    std::vector<double> prefix(items + 1, 0.0);
+    for (size_t k = 0; k < items; ++k) {
+        const double c = k < placed           ? costs.texels[k]
+                         : k < placed + cells ? costs.cells[k - placed]
+                                              : costs.probes[k - placed - cells];
+        prefix[k + 1] = prefix[k] + c;
+    }
+    const double total = prefix[items];
+    // The first item of part i: where the running cost reaches i / count of the total.
+    auto cut = [&](uint32_t i) -> size_t {
+        if (i == 0) return 0;
+        if (i >= count) return items;
+        if (!(total > 0.0)) return size_t(uint64_t(items) * i / count);
+        const double target = total * double(i) / double(count);
+        return size_t(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
+    };
+    const size_t begin = std::min(cut(index), items), end = std::min(cut(index + 1), items);
+    // An item cut maps to a texel (the placed texel it starts at), a cell and a probe.
+    auto texel = [&](size_t k) -> uint64_t {
+        if (k == 0) return 0;
+        return k < placed ? samples[k].texel : texels;
+    };
+    auto within = [](size_t k, size_t first, size_t size) -> uint64_t {
+        return k <= first ? 0 : std::min(k - first, size);
+    };
+    world::ShardRange r;
+    r.texelBegin = texel(begin);
+    r.texelEnd = index + 1 >= count ? texels : texel(end);
+    r.cellBegin = within(begin, placed, cells);
+    r.cellEnd = within(end, placed, cells);
+    r.probeBegin = within(begin, placed + cells, probes);
+    r.probeEnd = within(end, placed + cells, probes);
+    r.probeTotal = probes;
+    return r;
+}
+
+double shardCost(const ShardCosts& costs, const std::vector<TexelSample>& samples,
+                 const world::ShardRange& range) {
+    double sum = 0.0;
+    for (size_t k = 0; k < samples.size() && k < costs.texels.size(); ++k)
+        if (samples[k].texel >= range.texelBegin && samples[k].texel < range.texelEnd)
+            sum += costs.texels[k];
+    for (uint64_t c = range.cellBegin; c < range.cellEnd && c < costs.cells.size(); ++c)
+        sum += costs.cells[c];
+    for (uint64_t p = range.probeBegin; p < range.probeEnd && p < costs.probes.size(); ++p)
+        sum += costs.probes[p];
+    return sum;
+}
+
+}  // namespace onelight::bake

@@ -1,0 +1,61 @@
+// How a sharded bake (--shard i/N, --slurm N) divides its work: each part bakes one contiguous
+// range of the placed lightmap texels, then of the light grid's cells, then of the probes, cut
+// where the estimated cost of the work that a part does alone reaches an equal share. What
+// every part does whole (the texture stage, the scene, the direct light and the cached bounce
+// passes over every texel, shard 0's visibility set) is not divided and not counted.
+//
+// The estimate, in rays, with S shadow rays per light, T the lights that reach the point (its
+// light cell's, the suns, and the emitters as one) and min(T, 16) the shadow-ray budget of
+// estimateVisibilities (at most 8 terms: S rays each; more: about 2 x 8 S in all):
+//   texel   P_lm gathering rays (their hits read the cached bounces); --paths-only: each
+//           gathering path also shades its hit with min(T, 16) shadow rays
+//   cell    P_grid gathering rays + S min(T, 16) shadow rays for its direct light (the same
+//           extra per path with --paths-only); a cell inside solid costs the same (not known
+//           before it is traced)
+//   probe   6 f^2 paths of spp rays (f: the face size)
+// The parts record their ranges (section 40), so that the merge needs neither the lights nor
+// the settings to join them.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bake/grid/light_grid.hpp"
+#include "bake/lighting/lights.hpp"
+#include "bake/lightmap/lightmap_bake.hpp"
+#include "bake/lightmap/texel_placement.hpp"
+#include "bake/probes/probe_capture.hpp"
+#include "world/baked_lighting.hpp"
+
+namespace onelight::bake {
+
+/// The estimated rays of each item in the divided work.
+struct ShardCosts {
+    std::vector<double> texels;  // per placed texel, in the order of `samples` (texel order)
+    std::vector<double> cells;   // per light grid cell
+    std::vector<double> probes;  // per probe
+};
+
+/// The lights whose light reaches `position` as the direct-light estimate weighs them.
+[[nodiscard]] uint32_t lightsReaching(const BakeLights& lights, const glm::vec3& position);
+
+[[nodiscard]] ShardCosts estimateShardCosts(const BakeLights& lights,
+                                            const std::vector<TexelSample>& samples,
+                                            const world::LightGrid& grid, size_t probes,
+                                            const LightmapSettings& lightmap,
+                                            const GridSettings& gridSettings,
+                                            const ProbeCaptureSettings& probe);
+
+/// Part `index` of `count`: texels, cells and probes laid end to end in that order, cut where
+/// the running cost reaches index / count of the total (by count when every cost is 0). Every
+/// texel of the atlases (`texels`, placed or not), cell and probe belongs to exactly one part;
+/// part 0 starts at texel 0 and the last ends at `texels`.
+[[nodiscard]] world::ShardRange shardRange(const ShardCosts& costs,
+                                           const std::vector<TexelSample>& samples,
+                                           uint64_t texels, uint32_t index, uint32_t count);
+
+/// The estimated cost of `range`'s items, for the report.
+[[nodiscard]] double shardCost(const ShardCosts& costs, const std::vector<TexelSample>& samples,
+                               const world::ShardRange& range);
+
+}  // namespace onelight::bake
