@@ -98,18 +98,19 @@ protected:
         fs::remove_all(fs::path(level_).parent_path());
     }
     /// A local bake of the level: what every Slurm bake must equal byte for byte.
-    std::vector<char> localBake() {
+    /// `density`: --uniform-density (fast) or "" (the density pilot, which runs in the compile).
+    std::vector<char> localBake(const std::string& density = "--uniform-density") {
         const fs::path out = folder_ / "local.olpak";
         const CommandResult r = runCommand(kBake + " " + level_ + " -o " + out.string() +
-                                           " --quality draft --uniform-density --quiet");
+                                           " --quality draft --quiet " + density);
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return fileBytes(out);
     }
-    CommandResult slurmBake(const std::string& extra, const std::string& environment = "") {
+    CommandResult slurmBake(const std::string& extra, const std::string& environment = "",
+                            const std::string& density = "--uniform-density") {
         return runCommand(environment + " " + kBake + " " + level_ + " -o " +
-                          (folder_ / "slurm.olpak").string() +
-                          " --quality draft --uniform-density --quiet --work " +
-                          (folder_ / "work").string() + " " + extra);
+                          (folder_ / "slurm.olpak").string() + " --quality draft --quiet " +
+                          density + " --work " + (folder_ / "work").string() + " " + extra);
     }
 
     fs::path cluster_, folder_;
@@ -117,24 +118,56 @@ protected:
     bool started_ = false;
 };
 
+std::string fileText(const fs::path& path) {
+    const std::vector<char> bytes = fileBytes(path);
+    return {bytes.begin(), bytes.end()};
+}
+
+// With the density pilot, which the compile runs: the level is compiled once, here, and the
+// shards bake from the work folder's compiled level without compiling it again.
 TEST_F(SlurmBake, FourShardsEqualALocalBake) {
     const fs::path report = folder_ / "report.json";
-    const CommandResult r = slurmBake("--slurm 4 --report " + report.string());
+    const CommandResult r = slurmBake("--slurm 4 --report " + report.string(), "", "");
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("compiled the level once into " + (folder_ / "work").string() +
+                            "/compiled.olpak"),
+              std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find("submitted shards 0-3 of 4 as array job"), std::string::npos)
         << r.output;
-    // The local bake's summary, and each shard's node and time.
-    for (const char* line : {"lightmaps", "total", "shard 0", "shard 3", "balance", "merge"})
+    // The local bake's summary, the compile, and each shard's node, time and estimated share.
+    for (const char* line : {"lightmaps", "total", "s, once, before the shards", "shard 0", "shard 3",
+                             "of the divided work by estimate", "balance", "merge"})
         EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
-    EXPECT_TRUE(fileBytes(folder_ / "slurm.olpak") == localBake());
-    // The report gives each shard's node and time, and the merge's.
-    const std::vector<char> json = fileBytes(report);
-    const std::string text(json.begin(), json.end());
+    EXPECT_TRUE(fileBytes(folder_ / "slurm.olpak") == localBake(""));
+    // The compile's report holds the texture stage and the compile; no shard's does.
+    EXPECT_NE(fileText(folder_ / "work" / "compiled.json").find("\"name\": \"compile\""),
+              std::string::npos);
+    double estimated = 0.0, all = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        const std::string shard =
+            fileText(folder_ / "work" / "shards" / ("shard-" + std::to_string(i) + ".json"));
+        EXPECT_EQ(shard.find("\"name\": \"compile\""), std::string::npos) << shard;
+        EXPECT_EQ(shard.find("\"name\": \"textures\""), std::string::npos) << shard;
+        const size_t at = shard.find("\"estimated_rays\": ");
+        ASSERT_NE(at, std::string::npos) << shard;
+        estimated += std::atof(shard.c_str() + at + 18);
+        const size_t total = shard.find("\"estimated_rays_all_shards\": ");
+        ASSERT_NE(total, std::string::npos) << shard;
+        all = std::atof(shard.c_str() + total + 29);
+    }
+    // The shards' estimated shares add up to the whole divided work.
+    EXPECT_GT(all, 0.0);
+    EXPECT_NEAR(estimated, all, 1e-6 * all);
+    // The report gives the compile's node and time, each shard's, and the merge's.
+    const std::string text = fileText(report);
     size_t nodes = 0;
     for (size_t at = 0; (at = text.find("\"node\": \"localhost\"", at)) != std::string::npos; ++at)
         ++nodes;
-    EXPECT_EQ(nodes, 5u) << text;  // four shards and the merge
-    for (const char* key : {"\"shards\"", "\"stage_seconds\"", "\"merge\"", "\"wall_seconds\""})
+    EXPECT_EQ(nodes, 5u) << text;  // four shards and the merge; the compile ran here
+    EXPECT_NE(text.find("\"compile\": {\n    \"node\": \""), std::string::npos) << text;
+    for (const char* key : {"\"compile\"", "\"shards\"", "\"stage_seconds\"", "\"merge\"",
+                            "\"wall_seconds\"", "\"estimated_rays\""})
         EXPECT_NE(text.find(key), std::string::npos) << key;
     for (int i = 0; i < 4; ++i)
         EXPECT_TRUE(fs::exists(folder_ / "work" / "shards" /
@@ -174,6 +207,8 @@ TEST_F(SlurmBake, AFailedShardCancelsTheMergeAndARerunBakesOnlyIt) {
     // local bake's.
     const fs::path stamp0 = folder_ / "work" / "shards" / "shard-0.stamp.json";
     const fs::file_time_type stamp0Time = fs::last_write_time(stamp0);
+    const fs::path compiled = folder_ / "work" / "compiled.olpak";
+    const fs::file_time_type compiledTime = fs::last_write_time(compiled);
     const int jobsBefore = jobCount();
     const CommandResult rerun = slurmBake("--slurm 4");
     ASSERT_EQ(rerun.exitCode, 0) << rerun.output;
@@ -183,6 +218,11 @@ TEST_F(SlurmBake, AFailedShardCancelsTheMergeAndARerunBakesOnlyIt) {
         << rerun.output;
     EXPECT_EQ(jobCount() - jobsBefore, 2) << "one shard task and the merge";
     EXPECT_TRUE(fs::last_write_time(stamp0) == stamp0Time) << "shard 0 was baked again";
+    EXPECT_NE(rerun.output.find("the compiled level in " + compiled.string() +
+                                " verifies: not compiled again"),
+              std::string::npos)
+        << rerun.output;
+    EXPECT_TRUE(fs::last_write_time(compiled) == compiledTime) << "compiled again";
     EXPECT_TRUE(fileBytes(folder_ / "slurm.olpak") == localBake());
 }
 

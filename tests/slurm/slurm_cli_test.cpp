@@ -1,6 +1,8 @@
 // onelight-bake --slurm's bad input: each gets a one-line error naming the argument and what
 // was expected, and a non-zero exit, before anything is submitted (no cluster needed).
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -98,7 +100,50 @@ TEST(SlurmCommandLine, EmittedScriptsSubmitTheArrayThenTheMerge) {
     for (const char* name : {"shard.sh", "merge.sh", "submit.sh"})
         EXPECT_TRUE(std::filesystem::exists(folder / "scripts" / name)) << name;
     EXPECT_TRUE(std::filesystem::exists(folder / "work" / "manifest.json"));
+    EXPECT_TRUE(std::filesystem::exists(folder / "work" / "compiled.olpak"));
     EXPECT_FALSE(std::filesystem::exists(folder / "out.olpak"));
+}
+
+std::string fileText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The tasks run by hand, as a user who submits the emitted scripts would, without Slurm: the
+// level compiled once by the command, each shard baked from it, the merge equal to a local bake
+// byte for byte. A compiled level that no longer verifies fails the shard, named.
+TEST(SlurmCommandLine, ShardsRunByHandBakeTheCompiledLevelAndMergeToTheLocalBake) {
+    namespace fs = std::filesystem;
+    const fs::path folder = onelight::test::freshFolder("slurm-by-hand");
+    const std::string work = (folder / "work").string(), out = (folder / "out.olpak").string();
+    const onelight::test::CommandResult emitted = onelight::test::runCommand(
+        "env PATH=/nonexistent " + kBake + " " + level() + " -o " + out +
+        " --slurm 3 --quality draft --quiet --work " + work + " --emit-scripts " +
+        (folder / "scripts").string());
+    ASSERT_EQ(emitted.exitCode, 0) << emitted.output;
+    EXPECT_NE(emitted.output.find("compiled the level once"), std::string::npos)
+        << emitted.output;
+    for (int shard : {2, 0, 1}) {
+        const onelight::test::CommandResult r =
+            bake("slurm-task --work " + work + " --shard " + std::to_string(shard));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    const onelight::test::CommandResult merged =
+        bake("slurm-task --work " + work + " --merge -o " + out);
+    ASSERT_EQ(merged.exitCode, 0) << merged.output;
+    const std::string local = (folder / "local.olpak").string();
+    ASSERT_EQ(bake(level() + " -o " + local + " --quality draft --quiet").exitCode, 0);
+    EXPECT_TRUE(fileText(out) == fileText(local)) << "the merged package differs";
+
+    // A compiled level changed after its stamp: the shard refuses it.
+    {
+        std::fstream file(folder / "work" / "compiled.olpak",
+                          std::ios::in | std::ios::out | std::ios::binary);
+        file.seekp(200);
+        file.put('\x5a');
+    }
+    expectRefused("slurm-task --work " + work + " --shard 1", 1,
+                  work + "/compiled.olpak: missing or does not verify");
 }
 
 }  // namespace
