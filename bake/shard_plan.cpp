@@ -11,6 +11,13 @@ namespace {
 /// lights, and about 2 x 8 S over more (direct_light.hpp).
 constexpr uint32_t kShadowTermCap = 16;
 
+// Measured costs, seconds on one core (shard_plan.hpp).
+constexpr double kTexelPathSeconds = 1.5e-6;
+constexpr double kCellPathSeconds = 0.45e-6;
+constexpr double kShadowRaySeconds = 0.1e-6;
+constexpr double kProbePathSeconds = 1.9e-6;
+constexpr double kUncachedPathFactor = 2.0;
+
 }  // namespace
 
 uint32_t lightsReaching(const BakeLights& lights, const glm::vec3& position) {
@@ -23,25 +30,20 @@ ShardCosts estimateShardCosts(const BakeLights& lights, const std::vector<TexelS
                               const LightmapSettings& lightmap, const GridSettings& gridSettings,
                               const ProbeCaptureSettings& probe) {
     ShardCosts costs;
-    const bool cached = lightmap.bouncePasses > 0;
-    auto terms = [&](const glm::vec3& p) { return double(std::min(lightsReaching(lights, p), kShadowTermCap)); };
-    costs.texels.resize(samples.size());
-    for (size_t i = 0; i < samples.size(); ++i) {
-        const double paths = lightmap.indirectSamples;
-        costs.texels[i] = cached ? paths : paths * (1.0 + terms(samples[i].position));
-    }
+    const double path = lightmap.bouncePasses > 0 ? 1.0 : kUncachedPathFactor;
+    costs.texels.assign(samples.size(), lightmap.indirectSamples * path * kTexelPathSeconds);
     costs.cells.resize(grid.cells.size());
     for (size_t i = 0; i < grid.cells.size(); ++i) {
         const uint32_t x = static_cast<uint32_t>(i % grid.dims.x);
         const uint32_t y = static_cast<uint32_t>((i / grid.dims.x) % grid.dims.y);
         const uint32_t z = static_cast<uint32_t>(i / (uint64_t(grid.dims.x) * grid.dims.y));
         const glm::vec3 centre = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
-        const double t = terms(centre), paths = gridSettings.samples;
-        costs.cells[i] = (cached ? paths : paths * (1.0 + t)) + gridSettings.shadowSamples * t;
+        const double terms = std::min(lightsReaching(lights, centre), kShadowTermCap);
+        costs.cells[i] = gridSettings.samples * path * kCellPathSeconds +
+                         gridSettings.shadowSamples * terms * kShadowRaySeconds;
     }
-    const double perProbe =
-        6.0 * double(probe.faceSize) * probe.faceSize * double(probe.samplesPerTexel);
-    costs.probes.assign(probes, perProbe);
+    costs.probes.assign(probes, 6.0 * double(probe.faceSize) * probe.faceSize *
+                                    double(probe.samplesPerTexel) * kProbePathSeconds);
     return costs;
 }
 

@@ -4,15 +4,19 @@
 // every part does whole (the texture stage, the scene, the direct light and the cached bounce
 // passes over every texel, shard 0's visibility set) is not divided and not counted.
 //
-// The estimate, in rays, with S shadow rays per light, T the lights that reach the point (its
-// light cell's, the suns, and the emitters as one) and min(T, 16) the shadow-ray budget of
-// estimateVisibilities (at most 8 terms: S rays each; more: about 2 x 8 S in all):
-//   texel   P_lm gathering rays (their hits read the cached bounces); --paths-only: each
-//           gathering path also shades its hit with min(T, 16) shadow rays
-//   cell    P_grid gathering rays + S min(T, 16) shadow rays for its direct light (the same
-//           extra per path with --paths-only); a cell inside solid costs the same (not known
-//           before it is traced)
-//   probe   6 f^2 paths of spp rays (f: the face size)
+// The estimate is in core-seconds, from per-item costs measured on one core of the reference
+// machine (docs/slurm.md, "Shard balance": aggressor at draft and default, the demo at draft;
+// only their ratios matter for the cut). S is the shadow rays per light, T the lights that reach
+// the point (its light cell's, the suns, the emitters as one), min(T, 16) the shadow-ray budget
+// of estimateVisibilities (at most 8 terms: S rays each; more: about 2 x 8 S in all):
+//   texel   1.5 us per gathering path (P_lm): its hit reads the cached bounces, glossy hits are
+//           traced on, and the denoiser's window costs its share. Its lights do not count here:
+//           the direct light of every texel is computed whole in every part
+//   cell    0.45 us per gathering path (P_grid; from the open, cheaper than a texel's) and
+//           0.1 us per shadow ray, S min(T, 16), of its direct light
+//   probe   1.9 us per path, 6 f^2 spp of them (f: the face size), prefiltering included
+//   without cached bounces (--paths-only) every gathering path costs twice as much (a whole
+//   path: measured 2.2x for texels, 1.8x for cells)
 // The parts record their ranges (section 40), so that the merge needs neither the lights nor
 // the settings to join them.
 #pragma once
@@ -29,7 +33,7 @@
 
 namespace onelight::bake {
 
-/// The estimated rays of each item in the divided work.
+/// The estimated core-seconds of each item in the divided work.
 struct ShardCosts {
     std::vector<double> texels;  // per placed texel, in the order of `samples` (texel order)
     std::vector<double> cells;   // per light grid cell
@@ -54,7 +58,7 @@ struct ShardCosts {
                                            const std::vector<TexelSample>& samples,
                                            uint64_t texels, uint32_t index, uint32_t count);
 
-/// The estimated cost of `range`'s items, for the report.
+/// The estimated core-seconds of `range`'s items, for the report.
 [[nodiscard]] double shardCost(const ShardCosts& costs, const std::vector<TexelSample>& samples,
                                const world::ShardRange& range);
 

@@ -24,8 +24,8 @@ std::string reportJson(const BakeReport& r) {
     j["threads"] = r.threads;
     j["shard"] = {{"index", r.shardIndex},
                   {"count", r.shardCount},
-                  {"estimated_rays", r.shardCost},
-                  {"estimated_rays_all_shards", r.shardCostTotal}};
+                  {"estimated_core_seconds", r.shardCost},
+                  {"estimated_core_seconds_all_shards", r.shardCostTotal}};
     double seconds = 0.0;
     RayCounts all;
     nlohmann::ordered_json stages = nlohmann::ordered_json::array();

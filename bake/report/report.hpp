@@ -37,8 +37,8 @@ struct BakeReport {
     std::string quality;
     uint32_t threads = 0;
     uint32_t shardIndex = 0, shardCount = 1;
-    // A part of a sharded bake: the estimated rays of the work it bakes alone, and of all the
-    // parts' (bake/shard_plan.hpp); 0 for a whole bake.
+    // A part of a sharded bake: the estimated core-seconds of the work it bakes alone, and of
+    // all the parts' (bake/shard_plan.hpp); 0 for a whole bake.
     double shardCost = 0.0, shardCostTotal = 0.0;
     std::vector<StageReport> stages;
     uint64_t triangles = 0;

@@ -39,8 +39,8 @@ BakeReport readReport(const std::string& path) {
         if (j.contains("shard") && j["shard"].is_object()) {
             r.shardIndex = j["shard"].value("index", 0u);
             r.shardCount = j["shard"].value("count", 1u);
-            r.shardCost = j["shard"].value("estimated_rays", 0.0);
-            r.shardCostTotal = j["shard"].value("estimated_rays_all_shards", 0.0);
+            r.shardCost = j["shard"].value("estimated_core_seconds", 0.0);
+            r.shardCostTotal = j["shard"].value("estimated_core_seconds_all_shards", 0.0);
         }
         for (const nlohmann::json& s : j["stages"]) {
             StageReport stage;
@@ -192,7 +192,7 @@ void writeSlurmReport(const std::string& path, const BakeReport& whole,
                           {"node", stamps[i].node},
                           {"seconds", stamps[i].seconds},
                           {"stage_seconds", stages},
-                          {"estimated_rays", i < reports.size() ? reports[i].shardCost : 0.0}});
+                          {"estimated_core_seconds", i < reports.size() ? reports[i].shardCost : 0.0}});
     }
     json["compile"] = {{"node", compile.node}, {"seconds", compile.seconds}};
     json["shards"] = shards;

@@ -29,7 +29,7 @@ namespace onelight::bake::slurm {
 
 /// The --report of a Slurm bake: the whole bake's report.json (combineShardReports), then
 /// "compile" (node, seconds), "shards" (each shard's node, wall seconds, seconds per stage and
-/// estimated rays), "merge" (node, seconds) and "wall_seconds" from submission to the package.
+/// estimated core-seconds), "merge" (node, seconds) and "wall_seconds" from submission to the package.
 /// Written atomically. Throws world::Error.
 void writeSlurmReport(const std::string& path, const BakeReport& whole,
                       const ShardStamp& compile, const std::vector<ShardStamp>& stamps,

@@ -149,12 +149,14 @@ TEST_F(SlurmBake, FourShardsEqualALocalBake) {
             fileText(folder_ / "work" / "shards" / ("shard-" + std::to_string(i) + ".json"));
         EXPECT_EQ(shard.find("\"name\": \"compile\""), std::string::npos) << shard;
         EXPECT_EQ(shard.find("\"name\": \"textures\""), std::string::npos) << shard;
-        const size_t at = shard.find("\"estimated_rays\": ");
+        const std::string key = "\"estimated_core_seconds\": ",
+                          allKey = "\"estimated_core_seconds_all_shards\": ";
+        const size_t at = shard.find(key);
         ASSERT_NE(at, std::string::npos) << shard;
-        estimated += std::atof(shard.c_str() + at + 18);
-        const size_t total = shard.find("\"estimated_rays_all_shards\": ");
+        estimated += std::atof(shard.c_str() + at + key.size());
+        const size_t total = shard.find(allKey);
         ASSERT_NE(total, std::string::npos) << shard;
-        all = std::atof(shard.c_str() + total + 29);
+        all = std::atof(shard.c_str() + total + allKey.size());
     }
     // The shards' estimated shares add up to the whole divided work.
     EXPECT_GT(all, 0.0);
@@ -167,7 +169,7 @@ TEST_F(SlurmBake, FourShardsEqualALocalBake) {
     EXPECT_EQ(nodes, 5u) << text;  // four shards and the merge; the compile ran here
     EXPECT_NE(text.find("\"compile\": {\n    \"node\": \""), std::string::npos) << text;
     for (const char* key : {"\"compile\"", "\"shards\"", "\"stage_seconds\"", "\"merge\"",
-                            "\"wall_seconds\"", "\"estimated_rays\""})
+                            "\"wall_seconds\"", "\"estimated_core_seconds\""})
         EXPECT_NE(text.find(key), std::string::npos) << key;
     for (int i = 0; i < 4; ++i)
         EXPECT_TRUE(fs::exists(folder_ / "work" / "shards" /
