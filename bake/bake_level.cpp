@@ -305,14 +305,15 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
             report.probeBytes = package::encodeProbeSection(baked.probes).bytes.size();
     }
 
-    // 6. The potentially visible set: whole, in the first shard only (it is not split, and it is
-    // a large part of a small shard's time); the merge takes it from there.
-    if (options.visibility && options.shardIndex == 0) {
+    // 6. The potentially visible set: a shard samples every N-th view cell (interleaved); the
+    // merge joins the parts' cells and finishes them.
+    if (options.visibility) {
         start = std::chrono::steady_clock::now();
         const BakeScene levelScene(world.device, level);
         VisibilityStats stats;
-        baked.visibility = bakeVisibility(levelScene, level, options.visibilitySettings,
-                                          options.showProgress, &stats);
+        baked.visibility =
+            bakeVisibility(levelScene, level, options.visibilitySettings, options.showProgress,
+                           &stats, options.shardIndex, options.shardCount);
         report.stages.push_back({"visibility", secondsSince(start), stats.rays, stats.cells});
         report.visibilityCells = stats.cells;
         report.visibilityClusters = stats.clusters;
@@ -414,10 +415,14 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
             throw world::Error("merge: " + shard + ": its light grid's origin, cell size or " +
                                "samples differ from " + name(0) +
                                "'s; expected the same grid (baked with other settings?)");
-        if (p.shardIndex != 0 && !p.visibility.empty())
-            throw world::Error("merge: " + shard +
-                               " holds a visibility set; expected one in shard 0 only (a part "
-                               "of another version's bake?)");
+        const world::Visibility &v = p.visibility, &v0 = parts[0].visibility;
+        if (v.empty() != v0.empty() || v.dims != v0.dims || v.origin != v0.origin ||
+            v.cellSize != v0.cellSize || v.clusterCount != v0.clusterCount ||
+            v.surfaceCluster != v0.surfaceCluster)
+            throw world::Error("merge: " + shard + ": its visibility set's " +
+                               (v.empty() != v0.empty() ? "presence" : "cells or clusters") +
+                               " differ from " + name(0) +
+                               "'s; expected the same view cells (baked with other settings?)");
         byIndex[p.shardIndex] = &p;
         partOfShard[p.shardIndex] = i;
     }
@@ -459,7 +464,9 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         }
         for (uint64_t c = r.cellBegin; c < r.cellEnd; ++c) merged.grid.cells[c] = p.grid.cells[c];
     }
-    merged.visibility = byIndex[0]->visibility;
+    std::vector<const world::Visibility*> visibility;
+    for (uint32_t i = 0; i < count; ++i) visibility.push_back(&byIndex[i]->visibility);
+    merged.visibility = mergeVisibilityParts(visibility);
     // The imported lightmap is parts[0]'s, finished in its shard (each part holds all of it).
     // Each part holds its contiguous range of the probes: in shard order they are the whole list.
     merged.probes.clear();

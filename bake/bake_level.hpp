@@ -2,7 +2,7 @@
 // compile with the shadowed dominant-primary function -> lightmap texels (shadow masks +
 // directional secondary irradiance) -> light grid -> environment probes -> dilation -> package.
 // Sharding bakes a contiguous part of the texels, of the grid cells and of the probes, cut by
-// estimated cost (shard_plan.hpp; shard 0 also bakes the whole visibility set); merge joins the
+// estimated cost (shard_plan.hpp), and every N-th view cell of the visibility set; merge joins the
 // parts and finishes them exactly as a whole bake does, so the package is byte-identical. A
 // Slurm bake runs stages 0 to 2 once and its shards read the compiled level (bake/slurm/).
 #pragma once

@@ -2,7 +2,8 @@
 // range of the placed lightmap texels, then of the light grid's cells, then of the probes, cut
 // where the estimated cost of the work that a part does alone reaches an equal share. What
 // every part does whole (the texture stage, the scene, the direct light and the cached bounce
-// passes over every texel, shard 0's visibility set) is not divided and not counted.
+// passes over every texel) is not divided and not counted; the visibility set's view cells are
+// divided apart, every N-th cell to each part (bake/visibility/visibility_bake.hpp).
 //
 // The estimate is in core-seconds, from per-item costs measured on one core of the reference
 // machine (docs/slurm.md, "Shard balance": aggressor at draft and default, the demo at draft;

@@ -172,13 +172,19 @@ std::string reportSummary(const BakeReport& r) {
         for (const BudgetChoiceReport& c : r.budgetChoices)
             s += "    " + c.feature + ": " + c.choice + " (" + c.why + ")\n";
     }
-    if (r.visibilityCells) {
+    if (r.visibilityCells && r.visibilityRows) {
         std::snprintf(
             line, sizeof line,
             "  visibility %u cells, %u clusters of surfaces, %u distinct sets; an open cell "
             "sees %.1f%% of the clusters on average\n",
             r.visibilityCells, r.visibilityClusters, r.visibilityRows,
             100.0 * r.visibilityMeanFraction);
+        s += line;
+    } else if (r.visibilityCells) {  // parts of a sharded bake: the merge joins the sets
+        std::snprintf(line, sizeof line,
+                      "  visibility %u cells sampled, %u clusters of surfaces (the sets are "
+                      "joined by the merge)\n",
+                      r.visibilityCells, r.visibilityClusters);
         s += line;
     }
     return s;

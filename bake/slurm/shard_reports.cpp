@@ -15,7 +15,7 @@ namespace {
 
 /// Stages that every shard runs whole (the rest are split between the shards).
 bool wholeInEveryShard(const std::string& stage) {
-    return stage != "lightmaps" && stage != "grid" && stage != "probes";
+    return stage != "lightmaps" && stage != "grid" && stage != "probes" && stage != "visibility";
 }
 
 double stageSeconds(const BakeReport& report, const char* name) {
@@ -115,6 +115,9 @@ BakeReport combineShardReports(const BakeReport& compile, const std::vector<Bake
     whole.warnings.insert(whole.warnings.begin(), compile.warnings.begin(),
                           compile.warnings.end());
     whole.shardCost = whole.shardCostTotal;
+    // Each part's visibility rows are its own cells' sets: the whole's are only known merged.
+    whole.visibilityRows = 0;
+    whole.visibilityMeanFraction = 0.0;
     whole.shardIndex = 0;
     whole.shardCount = uint32_t(shards.size());
     double noise = whole.lightmapMeanRelativeNoise * double(whole.texelsSampled);
@@ -135,6 +138,7 @@ BakeReport combineShardReports(const BakeReport& compile, const std::vector<Bake
         whole.texelsSampled += r.texelsSampled;
         whole.texelsMoved += r.texelsMoved;
         whole.probesBaked += r.probesBaked;
+        whole.visibilityCells += r.visibilityCells;
         whole.probeBytes += r.probeBytes;
         whole.peakMemoryBytes = std::max(whole.peakMemoryBytes, r.peakMemoryBytes);
         noise += r.lightmapMeanRelativeNoise * double(r.texelsSampled);

@@ -171,7 +171,8 @@ std::vector<uint32_t> clusterSurfaces(const world::CompiledLevel& level,
 
 world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLevel& level,
                                  const VisibilitySettings& settings, bool showProgress,
-                                 VisibilityStats* stats) {
+                                 VisibilityStats* stats, uint32_t part, uint32_t parts) {
+    parts = std::max(parts, 1u);
     world::Visibility v;
     if (level.indices.empty() || level.surfaces.empty() || level.bspLeaves.empty()) return v;
     v.surfaceCluster = clusterSurfaces(level, settings, v.clusterCount);
@@ -203,10 +204,14 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
 
     const float reach = scene.sceneDiameter();
     tbb::enumerable_thread_specific<RayCounts> rays;
-    Progress progress("visibility", cellCount, showProgress);
-    bake::parallelFor(tbb::blocked_range<uint32_t>(0, cellCount, 1), [&](const auto& range) {
+    // Part `part` of `parts` bakes every parts-th cell from `part` (interleaved: solid and open
+    // cells spread evenly over the parts).
+    const uint32_t owned = cellCount > part ? (cellCount - part + parts - 1) / parts : 0;
+    Progress progress("visibility", owned, showProgress);
+    bake::parallelFor(tbb::blocked_range<uint32_t>(0, owned, 1), [&](const auto& range) {
         RayCounts& local = rays.local();
-        for (uint32_t cell = range.begin(); cell != range.end(); ++cell) {
+        for (uint32_t nth = range.begin(); nth != range.end(); ++nth) {
+            const uint32_t cell = part + nth * parts;
             const glm::uvec3 c(cell % v.dims.x, (cell / v.dims.x) % v.dims.y,
                                cell / (v.dims.x * v.dims.y));
             const glm::vec3 cellMin = v.origin + glm::vec3(c) * v.cellSize;
@@ -284,8 +289,39 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
     });
     progress.finish();
 
+    if (stats) {
+        for (const RayCounts& r : rays) stats->rays += r;
+        stats->cells = owned;
+        stats->clusters = v.clusterCount;
+    }
+    if (parts > 1) {
+        // A part: its cells' own sets, rows deduplicated, kNoIndex for the rest; the merge
+        // joins the parts' and finishes them (finishVisibility).
+        std::map<std::vector<uint32_t>, uint32_t> rowOf;
+        v.cellRow.assign(cellCount, kNoIndex);
+        for (uint32_t nth = 0; nth < owned; ++nth) {
+            const uint32_t cell = part + nth * parts;
+            if (!openCell[cell]) continue;
+            const std::vector<uint32_t> row(raw.begin() + long(size_t(cell) * words),
+                                            raw.begin() + long(size_t(cell + 1) * words));
+            const auto [it, inserted] = rowOf.try_emplace(row, uint32_t(rowOf.size()));
+            if (inserted) v.rows.insert(v.rows.end(), row.begin(), row.end());
+            v.cellRow[cell] = it->second;
+        }
+        if (stats) stats->rows = v.rowCount();
+        return v;
+    }
+    v = finishVisibility(std::move(v), raw, openCell, stats);
+    return v;
+}
+
+world::Visibility finishVisibility(world::Visibility v, const std::vector<uint32_t>& raw,
+                                   const std::vector<uint8_t>& openCell, VisibilityStats* stats) {
     // 4. Each cell's set: the union over it and its 26 neighbours; rows deduplicated.
+    const uint32_t cellCount = v.dims.x * v.dims.y * v.dims.z;
+    const uint32_t words = v.wordsPerRow();
     std::map<std::vector<uint32_t>, uint32_t> rowOf;
+    v.rows.clear();
     v.cellRow.assign(cellCount, 0u);
     std::vector<uint32_t> merged(words);
     double visible = 0.0;
@@ -318,14 +354,31 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
         v.cellRow[cell] = it->second;
     }
     if (stats) {
-        for (const RayCounts& r : rays) stats->rays += r;
-        stats->cells = cellCount;
-        stats->clusters = v.clusterCount;
         stats->rows = v.rowCount();
         stats->openCells = openCells;
         stats->meanVisibleFraction = openCells ? visible / double(openCells) : 1.0;
     }
     return v;
+}
+
+world::Visibility mergeVisibilityParts(const std::vector<const world::Visibility*>& parts) {
+    const uint32_t count = uint32_t(parts.size());
+    if (count == 0 || parts[0]->empty()) return count ? *parts[0] : world::Visibility{};
+    world::Visibility v = *parts[0];
+    const uint32_t cellCount = v.dims.x * v.dims.y * v.dims.z;
+    const uint32_t words = v.wordsPerRow();
+    std::vector<uint32_t> raw(size_t(cellCount) * words, 0u);
+    std::vector<uint8_t> openCell(cellCount, 0);
+    for (uint32_t cell = 0; cell < cellCount; ++cell) {
+        const world::Visibility& p = *parts[cell % count];
+        const uint32_t row = p.cellRow[cell];
+        if (row == kNoIndex) continue;
+        openCell[cell] = 1;
+        std::copy(p.rows.begin() + long(size_t(row) * words),
+                  p.rows.begin() + long(size_t(row + 1) * words),
+                  raw.begin() + long(size_t(cell) * words));
+    }
+    return finishVisibility(std::move(v), raw, openCell, nullptr);
 }
 
 }  // namespace onelight::bake

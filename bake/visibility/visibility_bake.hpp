@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "bake/embree/bake_scene.hpp"
 #include "world/compiled_level.hpp"
@@ -48,10 +49,26 @@ struct VisibilityStats {
 };
 
 /// The visibility of `level`, whose static triangles `scene` holds in the level's own order
-/// (BakeScene(device, level)). Empty for a level without static triangles.
+/// (BakeScene(device, level)). Empty for a level without static triangles. With parts > 1, part
+/// `part` of a sharded bake: only every parts-th cell from `part` is sampled (interleaved, so
+/// that solid and open cells spread evenly), and the result holds those cells' own sets (step
+/// 3, rows deduplicated; kNoIndex for every other cell) for mergeVisibilityParts.
 [[nodiscard]] world::Visibility bakeVisibility(const BakeScene& scene,
                                                const world::CompiledLevel& level,
                                                const VisibilitySettings& settings,
-                                               bool showProgress, VisibilityStats* stats = nullptr);
+                                               bool showProgress, VisibilityStats* stats = nullptr,
+                                               uint32_t part = 0, uint32_t parts = 1);
+
+/// Step 4 over the cells' own sets (`raw`, wordsPerRow words per cell; `openCell` per cell):
+/// each open cell's set is the union of its own and its 26 neighbours', rows deduplicated.
+[[nodiscard]] world::Visibility finishVisibility(world::Visibility v,
+                                                 const std::vector<uint32_t>& raw,
+                                                 const std::vector<uint8_t>& openCell,
+                                                 VisibilityStats* stats);
+
+/// The parts of a sharded bake's visibility, in shard order (parts[i] from bakeVisibility with
+/// part i of parts.size()), joined and finished exactly as a whole bake finishes its own.
+[[nodiscard]] world::Visibility mergeVisibilityParts(
+    const std::vector<const world::Visibility*>& parts);
 
 }  // namespace onelight::bake

@@ -238,6 +238,30 @@ TEST(Visibility, TheSetDoesNotDependOnThreads) {
     EXPECT_TRUE(one == two);
 }
 
+// Parts of a sharded bake sample every N-th view cell; joined in shard order they equal the
+// whole set byte for byte, and each part samples its share of the cells.
+TEST(Visibility, PartsJoinedEqualTheWholeSet) {
+    const EmbreeDevice device;
+    const Baked whole = bake(chicaneHall(), device);
+    const BakeScene scene(device, whole.level);
+    for (const uint32_t count : {2u, 3u, 7u}) {
+        std::vector<world::Visibility> parts(count);
+        std::vector<const world::Visibility*> pointers;
+        uint32_t sampled = 0;
+        for (uint32_t i = 0; i < count; ++i) {
+            VisibilityStats stats;
+            parts[i] = bakeVisibility(scene, whole.level, {}, false, &stats, i, count);
+            sampled += stats.cells;
+            EXPECT_LE(stats.cells, whole.stats.cells / count + 1) << i << "/" << count;
+            pointers.push_back(&parts[i]);
+        }
+        EXPECT_EQ(sampled, whole.stats.cells) << count;
+        EXPECT_TRUE(mergeVisibilityParts(pointers) == whole.visibility) << count;
+        // A part holds only its own cells' sets: not the whole.
+        EXPECT_FALSE(parts[0] == whole.visibility) << count;
+    }
+}
+
 // The section round-trips, and the reader rejects a cluster or row index out of range, bits
 // past the cluster count, a surface count that is not the level's and a truncated section.
 TEST(Visibility, TheSectionRoundTripsAndRejectsLyingIndices) {
