@@ -38,29 +38,31 @@ for n in 2 8; do
   wall=$(calc "$(now) - $start")
   cmp -s "$out/local.olpak" "$out/slurm$n.olpak" || { echo "slurm-benchmark: --slurm $n differs from the local bake" >&2; exit 1; }
   printf -- '--slurm %s: %.1f s wall, identical to the local bake\n' "$n" "$wall"
-  grep -E '^  (shard|balance|merge) ' "$out/slurm$n.txt"
-  # The shards other than 0 (shard 0 also bakes the visibility set): their median time.
-  median=$(awk '$1 == "shard" && $2 != 0 { print $4 }' "$out/slurm$n.txt" | sort -n |
+  grep -E '^  (compile|shard|balance|merge) ' "$out/slurm$n.txt"
+  # The shards' median time (every shard bakes its share of each stage, the visibility set too).
+  median=$(awk '$1 == "shard" { print $4 }' "$out/slurm$n.txt" | sort -n |
     awk '{ v[NR] = $1 } END { printf "%.3f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
-  first=$(awk '$1 == "shard" && $2 == 0 { print $4 }' "$out/slurm$n.txt")
   sum=$(awk '$1 == "shard" { s += $4 } END { printf "%.3f", s }' "$out/slurm$n.txt")
   slowest=$(awk '$1 == "shard" && $4 > m { m = $4 } END { printf "%.3f", m }' "$out/slurm$n.txt")
   merge=$(awk '$1 == "merge" { print $3 }' "$out/slurm$n.txt")
-  eval "median$n=$median first$n=$first sum$n=$sum slowest$n=$slowest merge$n=$merge wall$n=$wall"
+  compile=$(awk '$1 == "compile" && $4 == "s," { print $3 }' "$out/slurm$n.txt")
+  eval "median$n=$median sum$n=$sum slowest$n=$slowest merge$n=$merge wall$n=$wall compile$n=${compile:-0}"
 done
 
-# On paper, 64 nodes run every shard at once: a shard takes F + W/N (F: what every shard runs
-# whole, W: the split work), fitted through the median shard at N = 2 and 8; shard 0 takes its
-# extra (the visibility set) on top, as measured at N = 8; then the merge, and the scheduling
-# overhead measured at N = 8 (its wall time less the shards, run one after another, and the merge).
+# On paper, 64 nodes run every shard at once: the compile (once, before the shards), then a
+# shard takes F + W/N (F: what every shard runs whole, W: the divided work), fitted through the
+# median shard at N = 2 and 8, times the slowest-to-median spread measured at N = 8; then the
+# merge, and the scheduling overhead measured at N = 8 (its wall time less the compile, the
+# shards, run one after another, and the merge).
 w=$(calc "($median2 - $median8) / (1/2 - 1/8)")
 f=$(calc "$median8 - $w / 8")
-extra=$(calc "$first8 - $median8")
-overhead=$(calc "$wall8 - $sum8 - $merge8")
-printf 'model: shard = %.2f s + %.2f s / N; shard 0 + %.2f s (visibility); merge %.2f s; overhead %.2f s\n' \
-  "$f" "$w" "$extra" "$merge8" "$overhead"
+spread=$(calc "$slowest8 / $median8")
+overhead=$(calc "$wall8 - $compile8 - $sum8 - $merge8")
+printf 'model: compile %.2f s; shard = %.2f s + %.2f s / N, slowest %.2f x the median; merge %.2f s; overhead %.2f s\n' \
+  "$compile8" "$f" "$w" "$spread" "$merge8" "$overhead"
 printf '64 nodes, on paper: %.1f s (local %.1f s; 2 nodes on paper %.1f s, 8 nodes %.1f s)\n' \
-  "$(calc "$f + $w / 64 + $extra + $merge8 + $overhead")" "$local_s" \
-  "$(calc "$slowest2 + $merge2 + $overhead")" "$(calc "$slowest8 + $merge8 + $overhead")"
+  "$(calc "$compile8 + ($f + $w / 64) * $spread + $merge8 + $overhead")" "$local_s" \
+  "$(calc "$compile2 + $slowest2 + $merge2 + $overhead")" \
+  "$(calc "$compile8 + $slowest8 + $merge8 + $overhead")"
 rm -rf "$out/work2" "$out/work8"
 echo "slurm-benchmark: outputs in $out"

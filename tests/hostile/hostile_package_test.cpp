@@ -204,5 +204,75 @@ TEST(HostilePackage, ErrorBudgetChoicesRoundTripAndBadOnesAreRejected) {
               std::string::npos);
 }
 
+// A part of a sharded bake of the triangle level with `range`: shard 1 of 2.
+std::string shardRangeError(const world::ShardRange& range, bool part = true) {
+    const world::CompiledLevel& level = triangleLevel();
+    uint64_t texels = 0;
+    for (const world::Atlas& a : level.atlases) texels += uint64_t(a.width) * a.height;
+    world::BakedLighting baked;
+    baked.texels.resize(texels);
+    for (world::LightmapTexel& t : baked.texels) t.normalWeight = 1.0f;
+    baked.shadowMask.assign(texels, 0);
+    baked.grid.dims = glm::uvec3(1);
+    baked.grid.cells.resize(1);
+    baked.shardIndex = part ? 1 : 0;
+    baked.shardCount = part ? 2 : 1;
+    baked.shardRange = range;
+    std::vector<package::RawSection> sections = package::encodeBakedSections(baked);
+    if (!part) {  // a whole package given a part's range section anyway
+        baked.shardCount = 2;
+        for (const package::RawSection& s : package::encodeBakedSections(baked))
+            if (s.id == package::kSectionShardRange) sections.push_back(s);
+    }
+    return errorMessage(
+        [&] { (void)package::decodeBakedSections(sections, level, "part.olpak"); });
+}
+
+TEST(HostilePackage, AShardsRangeThatLiesIsRejected) {
+    const uint64_t texels = [] {
+        uint64_t n = 0;
+        for (const world::Atlas& a : triangleLevel().atlases) n += uint64_t(a.width) * a.height;
+        return n;
+    }();
+    const world::ShardRange good{texels / 2, texels, 0, 1, 0, 0, 0};
+    EXPECT_EQ(shardRangeError(good), "") << "the unedited range is valid";
+    struct Case {
+        world::ShardRange range;
+        const char* mustSay;
+    } cases[] = {
+        {{texels / 2, texels + 1, 0, 1, 0, 0, 0}, "section shard_range: texels ["},
+        {{5, 4, 0, 1, 0, 0, 0}, "texels [5, 4); expected begin <= end"},
+        {{0, texels, 0, 2, 0, 0, 0}, "cells [0, 2); expected begin <= end <= 1"},
+        {{0, texels, 0, 1, 0, 1, 1}, "probes [0, 1) but the probe section holds 0"},
+        {{0, texels, 0, 1, 0, 3, 2}, "probes [0, 3); expected begin <= end <= 2 (probeTotal)"},
+    };
+    for (const Case& k : cases) {
+        const std::string error = shardRangeError(k.range);
+        EXPECT_NE(error.find("part.olpak: section shard_range: "), std::string::npos) << error;
+        EXPECT_NE(error.find(k.mustSay), std::string::npos) << error;
+    }
+    // A part without the section, and a whole package with one.
+    std::vector<package::RawSection> missing;
+    {
+        world::BakedLighting baked;
+        baked.texels.resize(texels);
+        for (world::LightmapTexel& t : baked.texels) t.normalWeight = 1.0f;
+        baked.shadowMask.assign(texels, 0);
+        baked.grid.dims = glm::uvec3(1);
+        baked.grid.cells.resize(1);
+        baked.shardIndex = 1;
+        baked.shardCount = 2;
+        for (const package::RawSection& s : package::encodeBakedSections(baked))
+            if (s.id != package::kSectionShardRange) missing.push_back(s);
+    }
+    EXPECT_NE(errorMessage([&] {
+                  (void)package::decodeBakedSections(missing, triangleLevel(), "part.olpak");
+              }).find("section shard_range missing with light_grid's shard 1/2"),
+              std::string::npos);
+    EXPECT_NE(shardRangeError(good, false).find("section shard_range present with light_grid's "
+                                                "shard 0/1; expected it in an unmerged part"),
+              std::string::npos);
+}
+
 }  // namespace
 }  // namespace onelight::test
