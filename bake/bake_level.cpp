@@ -1,7 +1,7 @@
 #include "bake/bake_level.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <iterator>
 #include <stdexcept>
 
@@ -210,9 +210,8 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
     baked.shardRange.cellEnd = grid.cells.size();
     baked.shardRange.probeEnd = baked.shardRange.probeTotal = placements.size();
     if (options.shardCount > 1) {
-        const ShardCosts costs =
-            estimateShardCosts(lights, samples, grid, placements.size(), lm,
-                               gridSettings(options), probeSettings(options));
+        const ShardCosts costs = estimateShardCosts(lights, samples, grid, placements.size(), lm,
+                                                    gridSettings(options), probeSettings(options));
         baked.shardRange =
             shardRange(costs, samples, texelCount, options.shardIndex, options.shardCount);
         report.shardCost = shardCost(costs, samples, baked.shardRange);
@@ -441,9 +440,8 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
                 std::to_string(r.probeEnd) + ") of " + std::to_string(r.probeTotal) +
                 "; expected to start " +
                 (i == 0 ? std::string("at 0") : "where shard " + std::to_string(i - 1) + " ends") +
-                " (texel " +
-                std::to_string(next.texelEnd) + ", cell " + std::to_string(next.cellEnd) +
-                ", probe " + std::to_string(next.probeEnd) + " of " +
+                " (texel " + std::to_string(next.texelEnd) + ", cell " +
+                std::to_string(next.cellEnd) + ", probe " + std::to_string(next.probeEnd) + " of " +
                 std::to_string(next.probeTotal) + "): parts of one bake?");
         next = r;
     }

@@ -56,8 +56,8 @@ struct ShardCosts {
 /// texel of the atlases (`texels`, placed or not), cell and probe belongs to exactly one part;
 /// part 0 starts at texel 0 and the last ends at `texels`.
 [[nodiscard]] world::ShardRange shardRange(const ShardCosts& costs,
-                                           const std::vector<TexelSample>& samples,
-                                           uint64_t texels, uint32_t index, uint32_t count);
+                                           const std::vector<TexelSample>& samples, uint64_t texels,
+                                           uint32_t index, uint32_t count);
 
 /// The estimated core-seconds of `range`'s items, for the report.
 [[nodiscard]] double shardCost(const ShardCosts& costs, const std::vector<TexelSample>& samples,

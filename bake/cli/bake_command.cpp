@@ -172,8 +172,8 @@ BakeReport bakeAndWritePackage(const world::SourceLevel& source, const BakeComma
 }
 
 void writeBakedPackage(const BakeCommandLine& line, const world::CompiledLevel& level,
-                       const world::BakedLighting& baked,
-                       const world::ProcessedTextures& textures, BakeReport& report) {
+                       const world::BakedLighting& baked, const world::ProcessedTextures& textures,
+                       BakeReport& report) {
     const BakeOptions& options = line.options;
     const std::vector<uint8_t> bytes = packageBytes(level, baked, textures);
     report.packageBytes = bytes.size();

@@ -31,7 +31,7 @@ BakeReport bakeAndWritePackage(const world::SourceLevel& source, const BakeComma
 /// Writes the report (if asked) and the package of `level` (its images already placed for
 /// line.output) atomically, prints the summary on stdout and the warnings on stderr.
 void writeBakedPackage(const BakeCommandLine& line, const world::CompiledLevel& level,
-                       const world::BakedLighting& baked,
-                       const world::ProcessedTextures& textures, BakeReport& report);
+                       const world::BakedLighting& baked, const world::ProcessedTextures& textures,
+                       BakeReport& report);
 
 }  // namespace onelight::bake

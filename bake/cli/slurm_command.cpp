@@ -2,8 +2,9 @@
 // tasks and a merge job that runs after them (afterok, --kill-on-invalid-dep=yes: a failed shard
 // cancels it). The level is imported here once, to check it and hash it into the work folder's
 // manifest, and compiled here once into the work folder, which every shard bakes from; shards
-// already baked and verified there are skipped, so rerunning the same command resumes. Waits with a progress bar over the shards (ETA from the finished ones) and prints the
-// summary a local bake prints, each shard's node and time, and the merge's.
+// already baked and verified there are skipped, so rerunning the same command resumes. Waits with a
+// progress bar over the shards (ETA from the finished ones) and prints the summary a local bake
+// prints, each shard's node and time, and the merge's.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -207,17 +208,16 @@ void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Ma
     const std::optional<slurm::MergeStamp> merge = slurm::readMergeStamp(work);
     whole.packageBytes = merge ? merge->packageBytes : 0;
     if (!line.bake.reportPath.empty())
-        slurm::writeSlurmReport(line.bake.reportPath, whole,
-                                compiled.value_or(slurm::ShardStamp{}), stamps, reports,
-                                merge.value_or(slurm::MergeStamp{}), wallSeconds);
+        slurm::writeSlurmReport(line.bake.reportPath, whole, compiled.value_or(slurm::ShardStamp{}),
+                                stamps, reports, merge.value_or(slurm::MergeStamp{}), wallSeconds);
     std::printf("baked %s (%llu bytes, quality %s, %u shards on Slurm, merge job %s)\n",
                 line.bake.output.c_str(), static_cast<unsigned long long>(whole.packageBytes),
                 qualityName(line.bake.options.quality), manifest.shardCount, mergeJob.c_str());
     std::printf("%s", reportSummary(whole).c_str());
     std::printf("  (stage seconds and rays are summed over the shards)\n");
     if (compiled)
-        std::printf("  compile    %-12s %8.2f s, once, before the shards\n",
-                    compiled->node.c_str(), compiled->seconds);
+        std::printf("  compile    %-12s %8.2f s, once, before the shards\n", compiled->node.c_str(),
+                    compiled->seconds);
     std::printf("%s", slurm::shardTimeLines(stamps, reports).c_str());
     if (merge) std::printf("  merge      %-12s %8.2f s\n", merge->node.c_str(), merge->seconds);
     std::printf("  wall       %.2f s from submission to the package\n", wallSeconds);

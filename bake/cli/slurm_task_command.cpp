@@ -2,8 +2,9 @@
 // bake run (their batch scripts call it, bake/slurm/batch_scripts.hpp). A shard task bakes part
 // I of the work folder's compiled level (made once by the submitting command, its stamp
 // verified), after checking that the level is still the one the manifest hashed, and stamps the
-// part (work_folder.hpp); the merge task merges the parts after verifying every stamp. ONELIGHT_SLURM_FAIL_SHARD=I makes shard I fail before it bakes:
-// the tests' fault injection (sbatch passes the submitting environment on to the tasks).
+// part (work_folder.hpp); the merge task merges the parts after verifying every stamp.
+// ONELIGHT_SLURM_FAIL_SHARD=I makes shard I fail before it bakes: the tests' fault injection
+// (sbatch passes the submitting environment on to the tasks).
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>

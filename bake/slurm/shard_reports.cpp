@@ -112,8 +112,7 @@ BakeReport combineShardReports(const BakeReport& compile, const std::vector<Bake
     whole.chartsReduced = compile.chartsReduced;
     whole.textures = compile.textures;
     whole.textureBytes = compile.textureBytes;
-    whole.warnings.insert(whole.warnings.begin(), compile.warnings.begin(),
-                          compile.warnings.end());
+    whole.warnings.insert(whole.warnings.begin(), compile.warnings.begin(), compile.warnings.end());
     whole.shardCost = whole.shardCostTotal;
     // Each part's visibility rows are its own cells' sets: the whole's are only known merged.
     whole.visibilityRows = 0;
@@ -165,13 +164,12 @@ std::string shardTimeLines(const std::vector<ShardStamp>& stamps,
         const BakeReport* r = i < reports.size() ? &reports[i] : nullptr;
         const double share =
             r && r->shardCostTotal > 0.0 ? 100.0 * r->shardCost / r->shardCostTotal : 0.0;
-        std::snprintf(
-            line, sizeof line,
-            "  shard %-4u %-12s %8.2f s (lightmaps %.2f s, grid %.2f s, probes %.2f s; "
-            "%.1f%% of the divided work by estimate)%s\n",
-            s.shard, s.node.c_str(), s.seconds, r ? stageSeconds(*r, "lightmaps") : 0.0,
-            r ? stageSeconds(*r, "grid") : 0.0, r ? stageSeconds(*r, "probes") : 0.0, share,
-            s.seconds == slowest && stamps.size() > 1 ? "  slowest" : "");
+        std::snprintf(line, sizeof line,
+                      "  shard %-4u %-12s %8.2f s (lightmaps %.2f s, grid %.2f s, probes %.2f s; "
+                      "%.1f%% of the divided work by estimate)%s\n",
+                      s.shard, s.node.c_str(), s.seconds, r ? stageSeconds(*r, "lightmaps") : 0.0,
+                      r ? stageSeconds(*r, "grid") : 0.0, r ? stageSeconds(*r, "probes") : 0.0,
+                      share, s.seconds == slowest && stamps.size() > 1 ? "  slowest" : "");
         text += line;
     }
     if (!stamps.empty() && sum > 0.0) {
@@ -182,21 +180,21 @@ std::string shardTimeLines(const std::vector<ShardStamp>& stamps,
     return text;
 }
 
-void writeSlurmReport(const std::string& path, const BakeReport& whole,
-                      const ShardStamp& compile, const std::vector<ShardStamp>& stamps,
-                      const std::vector<BakeReport>& reports, const MergeStamp& merge,
-                      double wallSeconds) {
+void writeSlurmReport(const std::string& path, const BakeReport& whole, const ShardStamp& compile,
+                      const std::vector<ShardStamp>& stamps, const std::vector<BakeReport>& reports,
+                      const MergeStamp& merge, double wallSeconds) {
     nlohmann::ordered_json json = nlohmann::ordered_json::parse(reportJson(whole));
     nlohmann::ordered_json shards = nlohmann::ordered_json::array();
     for (size_t i = 0; i < stamps.size(); ++i) {
         nlohmann::ordered_json stages = nlohmann::ordered_json::object();
         if (i < reports.size())
             for (const StageReport& s : reports[i].stages) stages[s.name] = s.seconds;
-        shards.push_back({{"index", stamps[i].shard},
-                          {"node", stamps[i].node},
-                          {"seconds", stamps[i].seconds},
-                          {"stage_seconds", stages},
-                          {"estimated_core_seconds", i < reports.size() ? reports[i].shardCost : 0.0}});
+        shards.push_back(
+            {{"index", stamps[i].shard},
+             {"node", stamps[i].node},
+             {"seconds", stamps[i].seconds},
+             {"stage_seconds", stages},
+             {"estimated_core_seconds", i < reports.size() ? reports[i].shardCost : 0.0}});
     }
     json["compile"] = {{"node", compile.node}, {"seconds", compile.seconds}};
     json["shards"] = shards;

@@ -29,11 +29,10 @@ namespace onelight::bake::slurm {
 
 /// The --report of a Slurm bake: the whole bake's report.json (combineShardReports), then
 /// "compile" (node, seconds), "shards" (each shard's node, wall seconds, seconds per stage and
-/// estimated core-seconds), "merge" (node, seconds) and "wall_seconds" from submission to the package.
-/// Written atomically. Throws world::Error.
-void writeSlurmReport(const std::string& path, const BakeReport& whole,
-                      const ShardStamp& compile, const std::vector<ShardStamp>& stamps,
-                      const std::vector<BakeReport>& reports, const MergeStamp& merge,
-                      double wallSeconds);
+/// estimated core-seconds), "merge" (node, seconds) and "wall_seconds" from submission to the
+/// package. Written atomically. Throws world::Error.
+void writeSlurmReport(const std::string& path, const BakeReport& whole, const ShardStamp& compile,
+                      const std::vector<ShardStamp>& stamps, const std::vector<BakeReport>& reports,
+                      const MergeStamp& merge, double wallSeconds);
 
 }  // namespace onelight::bake::slurm

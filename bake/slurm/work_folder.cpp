@@ -136,8 +136,7 @@ namespace {
 
 /// The stamp of `package` (shard `shard`, or kCompiledStamp) at `stampPath`.
 void writeStamp(const std::string& stampPath, const std::string& package, const char* what,
-                const Manifest& manifest, uint32_t shard, const std::string& node,
-                double seconds) {
+                const Manifest& manifest, uint32_t shard, const std::string& node, double seconds) {
     const std::vector<uint8_t> bytes = world::readRegularFile(package, what);
     nlohmann::ordered_json json;
     json["shard"] = shard;

@@ -121,8 +121,8 @@ INSTANTIATE_TEST_SUITE_P(Levels, BakeDeterminism, ::testing::Values(false, true)
 
 // Every texel (placed or not), cell and probe belongs to exactly one shard, in order, and each
 // shard's estimated cost is its equal share to within one item.
-void expectTiling(const ShardCosts& costs, const std::vector<TexelSample>& samples,
-                  uint64_t texels, uint32_t count) {
+void expectTiling(const ShardCosts& costs, const std::vector<TexelSample>& samples, uint64_t texels,
+                  uint32_t count) {
     world::ShardRange next;
     double total = 0.0, largest = 0.0;
     for (const auto* list : {&costs.texels, &costs.cells, &costs.probes})

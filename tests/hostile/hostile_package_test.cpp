@@ -224,8 +224,7 @@ std::string shardRangeError(const world::ShardRange& range, bool part = true) {
         for (const package::RawSection& s : package::encodeBakedSections(baked))
             if (s.id == package::kSectionShardRange) sections.push_back(s);
     }
-    return errorMessage(
-        [&] { (void)package::decodeBakedSections(sections, level, "part.olpak"); });
+    return errorMessage([&] { (void)package::decodeBakedSections(sections, level, "part.olpak"); });
 }
 
 TEST(HostilePackage, AShardsRangeThatLiesIsRejected) {
@@ -269,8 +268,9 @@ TEST(HostilePackage, AShardsRangeThatLiesIsRejected) {
                   (void)package::decodeBakedSections(missing, triangleLevel(), "part.olpak");
               }).find("section shard_range missing with light_grid's shard 1/2"),
               std::string::npos);
-    EXPECT_NE(shardRangeError(good, false).find("section shard_range present with light_grid's "
-                                                "shard 0/1; expected it in an unmerged part"),
+    EXPECT_NE(shardRangeError(good, false)
+                  .find("section shard_range present with light_grid's "
+                        "shard 0/1; expected it in an unmerged part"),
               std::string::npos);
 }
 

@@ -136,8 +136,8 @@ TEST_F(SlurmBake, FourShardsEqualALocalBake) {
     EXPECT_NE(r.output.find("submitted shards 0-3 of 4 as array job"), std::string::npos)
         << r.output;
     // The local bake's summary, the compile, and each shard's node, time and estimated share.
-    for (const char* line : {"lightmaps", "total", "s, once, before the shards", "shard 0", "shard 3",
-                             "of the divided work by estimate", "balance", "merge"})
+    for (const char* line : {"lightmaps", "total", "s, once, before the shards", "shard 0",
+                             "shard 3", "of the divided work by estimate", "balance", "merge"})
         EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
     EXPECT_TRUE(fileBytes(folder_ / "slurm.olpak") == localBake(""));
     // The compile's report holds the texture stage and the compile; no shard's does.

@@ -116,13 +116,12 @@ TEST(SlurmCommandLine, ShardsRunByHandBakeTheCompiledLevelAndMergeToTheLocalBake
     namespace fs = std::filesystem;
     const fs::path folder = onelight::test::freshFolder("slurm-by-hand");
     const std::string work = (folder / "work").string(), out = (folder / "out.olpak").string();
-    const onelight::test::CommandResult emitted = onelight::test::runCommand(
-        "env PATH=/nonexistent " + kBake + " " + level() + " -o " + out +
-        " --slurm 3 --quality draft --quiet --work " + work + " --emit-scripts " +
-        (folder / "scripts").string());
+    const onelight::test::CommandResult emitted =
+        onelight::test::runCommand("env PATH=/nonexistent " + kBake + " " + level() + " -o " + out +
+                                   " --slurm 3 --quality draft --quiet --work " + work +
+                                   " --emit-scripts " + (folder / "scripts").string());
     ASSERT_EQ(emitted.exitCode, 0) << emitted.output;
-    EXPECT_NE(emitted.output.find("compiled the level once"), std::string::npos)
-        << emitted.output;
+    EXPECT_NE(emitted.output.find("compiled the level once"), std::string::npos) << emitted.output;
     for (int shard : {2, 0, 1}) {
         const onelight::test::CommandResult r =
             bake("slurm-task --work " + work + " --shard " + std::to_string(shard));

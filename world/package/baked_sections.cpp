@@ -140,17 +140,17 @@ world::ShardRange decodeShardRange(const RawSection& section, uint64_t texels, u
     const std::string at = name + ": section shard_range: ";
     if (section.elementSize != sizeof(DiskShardRange) || section.count != 1 ||
         section.bytes.size() != sizeof(DiskShardRange))
-        throw world::Error(at + "element size " + std::to_string(section.elementSize) + ", count " +
-                           std::to_string(section.count) + ", " +
-                           std::to_string(section.bytes.size()) + " bytes; expected one record of " +
-                           std::to_string(sizeof(DiskShardRange)) + " bytes");
+        throw world::Error(
+            at + "element size " + std::to_string(section.elementSize) + ", count " +
+            std::to_string(section.count) + ", " + std::to_string(section.bytes.size()) +
+            " bytes; expected one record of " + std::to_string(sizeof(DiskShardRange)) + " bytes");
     const auto d = readRecord<DiskShardRange>(section.bytes, 0);
     auto range = [&](const char* what, uint64_t begin, uint64_t end, uint64_t total,
                      const std::string& totalName) {
         if (begin > end || end > total)
-            throw world::Error(at + what + " [" + std::to_string(begin) + ", " +
-                               std::to_string(end) + "); expected begin <= end <= " +
-                               std::to_string(total) + " (" + totalName + ")");
+            throw world::Error(
+                at + what + " [" + std::to_string(begin) + ", " + std::to_string(end) +
+                "); expected begin <= end <= " + std::to_string(total) + " (" + totalName + ")");
     };
     range("texels", d.texelBegin, d.texelEnd, texels, "the atlases' texels");
     range("cells", d.cellBegin, d.cellEnd, cells, "the light grid's cells");
@@ -311,9 +311,8 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
     if (visibility) baked.visibility = decodeVisibilitySection(*visibility, level, name);
     if (budget) baked.budget = decodeBudgetSection(*budget, baked.grid.cells.size(), name);
     if ((baked.shardCount > 1) != (shardRange != nullptr))
-        throw world::Error(name + ": section shard_range " +
-                           (shardRange ? "present" : "missing") + " with light_grid's shard " +
-                           std::to_string(baked.shardIndex) + "/" +
+        throw world::Error(name + ": section shard_range " + (shardRange ? "present" : "missing") +
+                           " with light_grid's shard " + std::to_string(baked.shardIndex) + "/" +
                            std::to_string(baked.shardCount) +
                            "; expected it in an unmerged part (shard count > 1) only");
     if (shardRange)
