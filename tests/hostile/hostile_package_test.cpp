@@ -76,18 +76,27 @@ TEST(HostilePackage, ImagesOutsideThePackagesFolderAreEmbedded) {
     EXPECT_EQ(errorMessage([&] { (void)package::parsePackage(bytes, "embedded.olpak"); }), "");
 }
 
-// A complete bake's sections for the triangle level: every texel, a 1x1x1 grid.
-std::vector<package::RawSection> bakedSections() {
-    const world::CompiledLevel& level = triangleLevel();
+uint64_t triangleLevelTexels() {
     uint64_t texels = 0;
-    for (const world::Atlas& a : level.atlases) texels += uint64_t(a.width) * a.height;
+    for (const world::Atlas& a : triangleLevel().atlases) texels += uint64_t(a.width) * a.height;
+    return texels;
+}
+
+// A complete bake of the triangle level: every texel, a 1x1x1 grid.
+world::BakedLighting triangleBake() {
+    const uint64_t texels = triangleLevelTexels();
     world::BakedLighting baked;
     baked.texels.resize(texels);
     for (world::LightmapTexel& t : baked.texels) t.normalWeight = 1.0f;
     baked.shadowMask.assign(texels, 0);
     baked.grid.dims = glm::uvec3(1);
     baked.grid.cells.resize(1);
-    return package::encodeBakedSections(baked);
+    return baked;
+}
+
+// Its sections.
+std::vector<package::RawSection> bakedSections() {
+    return package::encodeBakedSections(triangleBake());
 }
 
 // The light grid section with its header's dims and cell count replaced.
@@ -204,35 +213,25 @@ TEST(HostilePackage, ErrorBudgetChoicesRoundTripAndBadOnesAreRejected) {
               std::string::npos);
 }
 
-// A part of a sharded bake of the triangle level with `range`: shard 1 of 2.
+// A part of a sharded bake of the triangle level with `range`: shard 1 of 2; with !part, a
+// whole package given a part's range section anyway.
 std::string shardRangeError(const world::ShardRange& range, bool part = true) {
-    const world::CompiledLevel& level = triangleLevel();
-    uint64_t texels = 0;
-    for (const world::Atlas& a : level.atlases) texels += uint64_t(a.width) * a.height;
-    world::BakedLighting baked;
-    baked.texels.resize(texels);
-    for (world::LightmapTexel& t : baked.texels) t.normalWeight = 1.0f;
-    baked.shadowMask.assign(texels, 0);
-    baked.grid.dims = glm::uvec3(1);
-    baked.grid.cells.resize(1);
+    world::BakedLighting baked = triangleBake();
     baked.shardIndex = part ? 1 : 0;
     baked.shardCount = part ? 2 : 1;
     baked.shardRange = range;
     std::vector<package::RawSection> sections = package::encodeBakedSections(baked);
-    if (!part) {  // a whole package given a part's range section anyway
+    if (!part) {
         baked.shardCount = 2;
         for (const package::RawSection& s : package::encodeBakedSections(baked))
             if (s.id == package::kSectionShardRange) sections.push_back(s);
     }
-    return errorMessage([&] { (void)package::decodeBakedSections(sections, level, "part.olpak"); });
+    return errorMessage(
+        [&] { (void)package::decodeBakedSections(sections, triangleLevel(), "part.olpak"); });
 }
 
 TEST(HostilePackage, AShardsRangeThatLiesIsRejected) {
-    const uint64_t texels = [] {
-        uint64_t n = 0;
-        for (const world::Atlas& a : triangleLevel().atlases) n += uint64_t(a.width) * a.height;
-        return n;
-    }();
+    const uint64_t texels = triangleLevelTexels();
     const world::ShardRange good{texels / 2, texels, 0, 1, 0, 0, 0};
     EXPECT_EQ(shardRangeError(good), "") << "the unedited range is valid";
     struct Case {
@@ -251,19 +250,12 @@ TEST(HostilePackage, AShardsRangeThatLiesIsRejected) {
         EXPECT_NE(error.find(k.mustSay), std::string::npos) << error;
     }
     // A part without the section, and a whole package with one.
+    world::BakedLighting part = triangleBake();
+    part.shardIndex = 1;
+    part.shardCount = 2;
     std::vector<package::RawSection> missing;
-    {
-        world::BakedLighting baked;
-        baked.texels.resize(texels);
-        for (world::LightmapTexel& t : baked.texels) t.normalWeight = 1.0f;
-        baked.shadowMask.assign(texels, 0);
-        baked.grid.dims = glm::uvec3(1);
-        baked.grid.cells.resize(1);
-        baked.shardIndex = 1;
-        baked.shardCount = 2;
-        for (const package::RawSection& s : package::encodeBakedSections(baked))
-            if (s.id != package::kSectionShardRange) missing.push_back(s);
-    }
+    for (const package::RawSection& s : package::encodeBakedSections(part))
+        if (s.id != package::kSectionShardRange) missing.push_back(s);
     EXPECT_NE(errorMessage([&] {
                   (void)package::decodeBakedSections(missing, triangleLevel(), "part.olpak");
               }).find("section shard_range missing with light_grid's shard 1/2"),
