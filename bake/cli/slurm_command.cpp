@@ -9,9 +9,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <tbb/global_control.h>
 
 #include "bake/cli/bake_command_line.hpp"
 #include "bake/cli/cli_common.hpp"
@@ -414,6 +417,7 @@ std::string slurmUsage() {
          {"--partition P", "the partition of every job", "the cluster's default"},
          {"--time T", "each job's time limit (30, 1:00:00, 1-0)", "the partition's"},
          {"--cpus-per-task C", "cores of each job (its bake's threads)", "the cluster's default"},
+         {"--threads N", "the threads of the compile, which runs here once", "every core"},
          {"--work DIR", "the work folder, on a filesystem the nodes share", "OUT with .slurm"},
          {"--retries K", "resubmit failed shards up to K times, 0..100", "0"},
          {"--no-wait", "print the job ids and return", "wait, with progress"},
@@ -426,6 +430,11 @@ int runSlurmBakeCommand(const std::vector<std::string>& arguments) {
     if (printedHelp(arguments, slurmUsage())) return 0;
     SlurmCommandLine line;
     if (!parseSlurmCommandLine(arguments, line)) return 2;
+    // --threads: the compile's on this machine (the shards take --cpus-per-task).
+    std::unique_ptr<tbb::global_control> limit;
+    if (line.bake.threads > 0)
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      static_cast<size_t>(line.bake.threads));
     return runReportingErrors(line.bake.input, [&] { return runSlurmBake(line); });
 }
 
