@@ -137,6 +137,7 @@ BakeReport combineShardReports(const BakeReport& compile, const std::vector<Bake
         whole.texelsSampled += r.texelsSampled;
         whole.texelsMoved += r.texelsMoved;
         whole.probesBaked += r.probesBaked;
+        whole.gridCellsInside += r.gridCellsInside;
         whole.visibilityCells += r.visibilityCells;
         whole.probeBytes += r.probeBytes;
         whole.peakMemoryBytes = std::max(whole.peakMemoryBytes, r.peakMemoryBytes);

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -183,6 +184,37 @@ TEST(SlurmContentHash, DependsOnEveryByteAndTheOrderOfFiles) {
     EXPECT_EQ(hashHex(0xab), "00000000000000ab");
     const std::string error = test::errorMessage([&] { (void)hashFiles({"/no/such/level.gltf"}); });
     EXPECT_NE(error.find("/no/such/level.gltf"), std::string::npos) << error;
+    // Any one bit flipped anywhere in a file of three megabytes and a bit (it is read a
+    // megabyte at a time, eight bytes at a step): the top bit of a word, a byte at a chunk's
+    // edge, the loose bytes at the end.
+    std::vector<uint8_t> big(3 * (1 << 20) + 5);
+    for (size_t i = 0; i < big.size(); ++i) big[i] = uint8_t(i * 131u >> 3);
+    const std::string path = (folder / "big").string();
+    auto hashOf = [&](const std::vector<uint8_t>& bytes) {
+        std::FILE* file = std::fopen(path.c_str(), "wb");
+        std::fwrite(bytes.data(), 1, bytes.size(), file);
+        std::fclose(file);
+        return hashFiles({path});
+    };
+    const uint64_t original = hashOf(big);
+    EXPECT_EQ(original, hashOf(big));
+    for (const auto& [at, bit] : {std::pair<size_t, int>{7, 7},
+                                  {8, 0},
+                                  {(1 << 20) - 1, 7},
+                                  {1 << 20, 0},
+                                  {2 * (1 << 20) + 15, 7},
+                                  {big.size() - 1, 3}}) {
+        std::vector<uint8_t> changed = big;
+        changed[at] ^= uint8_t(1u << bit);
+        EXPECT_NE(hashOf(changed), original) << "byte " << at << " bit " << bit;
+    }
+    // One byte longer, with the same leading bytes.
+    std::vector<uint8_t> longer = big;
+    longer.push_back(0);
+    EXPECT_NE(hashOf(longer), original);
+    // Not a regular file: refused by name, never read.
+    const std::string dir = test::errorMessage([&] { (void)hashFiles({folder.string()}); });
+    EXPECT_NE(dir.find(folder.string()), std::string::npos) << dir;
 }
 
 TEST(SlurmRunProgram, AProgramThatDoesNotAnswerIsKilledInTime) {
