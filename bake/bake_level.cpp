@@ -206,20 +206,18 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
     world::BakedLighting baked;
     baked.shardIndex = options.shardIndex;
     baked.shardCount = options.shardCount;
-    baked.shardRange.texelEnd = texelCount;
-    baked.shardRange.cellEnd = grid.cells.size();
-    baked.shardRange.probeEnd = baked.shardRange.probeTotal = placements.size();
+    baked.shardRange = {
+        0, level.charts.size(), 0, grid.cells.size(), 0, placements.size(), placements.size()};
     if (options.shardCount > 1) {
-        const ShardCosts costs = estimateShardCosts(lights, samples, grid, placements.size(), lm,
-                                                    gridSettings(options), probeSettings(options));
-        baked.shardRange =
-            shardRange(costs, samples, texelCount, options.shardIndex, options.shardCount);
-        report.shardCost = shardCost(costs, samples, baked.shardRange);
-        report.shardCostTotal = shardCost(
-            costs, samples,
-            {0, texelCount, 0, grid.cells.size(), 0, placements.size(), placements.size()});
+        const ShardCosts costs =
+            estimateShardCosts(lights, level, samples, grid, placements.size(), lm,
+                               gridSettings(options), probeSettings(options));
+        report.shardCostTotal = shardCost(costs, baked.shardRange);
+        baked.shardRange = shardRange(costs, options.shardIndex, options.shardCount);
+        report.shardCost = shardCost(costs, baked.shardRange);
     }
     const world::ShardRange& range = baked.shardRange;
+    const std::vector<uint32_t> ownedSamples = samplesOfRange(level, samples, range);
     baked.texels.assign(texelCount, world::LightmapTexel{});
     baked.shadowMask.assign(texelCount, 0);
     // The source's own bake at the same texels (every shard holds all of it; it is cheap).
@@ -229,14 +227,10 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
     // The lightmaps' cached bounces, which the grid and the probes read too.
     RadianceCache bounceCache;
     {
-        uint64_t owned = 0;
-        for (const TexelSample& s : samples)
-            owned += s.texel >= range.texelBegin && s.texel < range.texelEnd;
-        Progress progress("lightmaps", lightmapWorkUnits(samples.size(), owned, lm),
+        Progress progress("lightmaps", lightmapWorkUnits(samples.size(), ownedSamples.size(), lm),
                           options.showProgress);
-        const LightmapStats stats =
-            bakeLightmapTexels(scene, lights, level, samples, lm, range.texelBegin, range.texelEnd,
-                               baked, &progress, &bounceCache);
+        const LightmapStats stats = bakeLightmapTexels(
+            scene, lights, level, samples, lm, ownedSamples, baked, &progress, &bounceCache);
         progress.finish();
         report.stages.push_back({"lightmaps", secondsSince(start), stats.rays, stats.texelsBaked});
         report.texelsSampled = stats.texelsBaked;
@@ -425,40 +419,49 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         byIndex[p.shardIndex] = &p;
         partOfShard[p.shardIndex] = i;
     }
-    // The parts' ranges (section 40) must tile every texel, cell and probe, in shard order.
+    // The parts' ranges (section 40) must tile every chart, cell and probe, in shard order.
     world::ShardRange next;
     next.probeTotal = byIndex[0]->shardRange.probeTotal;
     for (uint32_t i = 0; i < count; ++i) {
         const world::ShardRange& r = byIndex[i]->shardRange;
-        if (r.texelBegin != next.texelEnd || r.cellBegin != next.cellEnd ||
+        if (r.chartBegin != next.chartEnd || r.cellBegin != next.cellEnd ||
             r.probeBegin != next.probeEnd || r.probeTotal != next.probeTotal)
             throw world::Error(
                 "merge: " + name(partOfShard[i]) + " (shard " + std::to_string(i) + "/" +
-                std::to_string(count) + ") holds texels [" + std::to_string(r.texelBegin) + ", " +
-                std::to_string(r.texelEnd) + "), cells [" + std::to_string(r.cellBegin) + ", " +
+                std::to_string(count) + ") holds charts [" + std::to_string(r.chartBegin) + ", " +
+                std::to_string(r.chartEnd) + "), cells [" + std::to_string(r.cellBegin) + ", " +
                 std::to_string(r.cellEnd) + "), probes [" + std::to_string(r.probeBegin) + ", " +
                 std::to_string(r.probeEnd) + ") of " + std::to_string(r.probeTotal) +
                 "; expected to start " +
                 (i == 0 ? std::string("at 0") : "where shard " + std::to_string(i - 1) + " ends") +
-                " (texel " + std::to_string(next.texelEnd) + ", cell " +
+                " (chart " + std::to_string(next.chartEnd) + ", cell " +
                 std::to_string(next.cellEnd) + ", probe " + std::to_string(next.probeEnd) + " of " +
                 std::to_string(next.probeTotal) + "): parts of one bake?");
         next = r;
     }
-    if (next.texelEnd != texels || next.cellEnd != grid0.cells.size() ||
+    if (next.chartEnd != level.charts.size() || next.cellEnd != grid0.cells.size() ||
         next.probeEnd != next.probeTotal)
-        throw world::Error("merge: the last shard ends at texel " + std::to_string(next.texelEnd) +
+        throw world::Error("merge: the last shard ends at chart " + std::to_string(next.chartEnd) +
                            ", cell " + std::to_string(next.cellEnd) + ", probe " +
-                           std::to_string(next.probeEnd) + "; expected " + std::to_string(texels) +
-                           ", " + std::to_string(grid0.cells.size()) + " and " +
+                           std::to_string(next.probeEnd) + "; expected " +
+                           std::to_string(level.charts.size()) + ", " +
+                           std::to_string(grid0.cells.size()) + " and " +
                            std::to_string(next.probeTotal) + " (every one baked by some shard)");
     world::BakedLighting merged = parts[0];
     for (uint32_t i = 0; i < count; ++i) {
         const world::BakedLighting& p = *byIndex[i];
         const world::ShardRange& r = p.shardRange;
-        for (uint64_t t = r.texelBegin; t < r.texelEnd; ++t) {
-            merged.texels[t] = p.texels[t];
-            merged.shadowMask[t] = p.shadowMask[t];
+        // Every texel of the part's charts' rectangles (padding included).
+        for (uint64_t c = r.chartBegin; c < r.chartEnd; ++c) {
+            const world::Chart& chart = level.charts[c];
+            const uint64_t base = world::atlasTexelOffset(level, chart.atlas);
+            const uint32_t width = level.atlases[chart.atlas].width;
+            for (uint32_t y = chart.y; y < chart.y + chart.height; ++y)
+                for (uint32_t x = chart.x; x < chart.x + chart.width; ++x) {
+                    const uint64_t t = base + uint64_t(y) * width + x;
+                    merged.texels[t] = p.texels[t];
+                    merged.shadowMask[t] = p.shadowMask[t];
+                }
         }
         for (uint64_t c = r.cellBegin; c < r.cellEnd; ++c) merged.grid.cells[c] = p.grid.cells[c];
     }
@@ -472,7 +475,8 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         merged.probes.insert(merged.probes.end(), byIndex[i]->probes.begin(),
                              byIndex[i]->probes.end());
     finishBakedLighting(level, merged);
-    merged.shardRange = {0, texels, 0, grid0.cells.size(), 0, next.probeTotal, next.probeTotal};
+    merged.shardRange = {
+        0, level.charts.size(), 0, grid0.cells.size(), 0, next.probeTotal, next.probeTotal};
     return merged;
 }
 

@@ -25,13 +25,19 @@ uint32_t lightsReaching(const BakeLights& lights, const glm::vec3& position) {
     return near + (lights.emitters.triangles.empty() ? 0u : 1u);
 }
 
-ShardCosts estimateShardCosts(const BakeLights& lights, const std::vector<TexelSample>& samples,
-                              const world::LightGrid& grid, size_t probes,
-                              const LightmapSettings& lightmap, const GridSettings& gridSettings,
-                              const ProbeCaptureSettings& probe) {
+ShardCosts estimateShardCosts(const BakeLights& lights, const world::CompiledLevel& level,
+                              const std::vector<TexelSample>& samples, const world::LightGrid& grid,
+                              size_t probes, const LightmapSettings& lightmap,
+                              const GridSettings& gridSettings, const ProbeCaptureSettings& probe) {
     ShardCosts costs;
     const double path = lightmap.bouncePasses > 0 ? 1.0 : kUncachedPathFactor;
-    costs.texels.assign(samples.size(), lightmap.indirectSamples * path * kTexelPathSeconds);
+    costs.charts.assign(level.charts.size(), 0.0);
+    for (const TexelSample& s : samples) {
+        const uint32_t chart =
+            s.surface < level.surfaces.size() ? level.surfaces[s.surface].chart : world::kNoIndex;
+        if (chart < costs.charts.size())
+            costs.charts[chart] += lightmap.indirectSamples * path * kTexelPathSeconds;
+    }
     costs.cells.resize(grid.cells.size());
     for (size_t i = 0; i < grid.cells.size(); ++i) {
         const uint32_t x = static_cast<uint32_t>(i % grid.dims.x);
@@ -47,16 +53,15 @@ ShardCosts estimateShardCosts(const BakeLights& lights, const std::vector<TexelS
     return costs;
 }
 
-world::ShardRange shardRange(const ShardCosts& costs, const std::vector<TexelSample>& samples,
-                             uint64_t texels, uint32_t index, uint32_t count) {
-    const size_t placed = costs.texels.size(), cells = costs.cells.size(),
-                 probes = costs.probes.size(), items = placed + cells + probes;
-    // prefix[k]: the cost of the items before k, texels then cells then probes.
+world::ShardRange shardRange(const ShardCosts& costs, uint32_t index, uint32_t count) {
+    const size_t charts = costs.charts.size(), cells = costs.cells.size(),
+                 probes = costs.probes.size(), items = charts + cells + probes;
+    // prefix[k]: the cost of the items before k, charts then cells then probes.
     std::vector<double> prefix(items + 1, 0.0);
     for (size_t k = 0; k < items; ++k) {
-        const double c = k < placed           ? costs.texels[k]
-                         : k < placed + cells ? costs.cells[k - placed]
-                                              : costs.probes[k - placed - cells];
+        const double c = k < charts           ? costs.charts[k]
+                         : k < charts + cells ? costs.cells[k - charts]
+                                              : costs.probes[k - charts - cells];
         prefix[k + 1] = prefix[k] + c;
     }
     const double total = prefix[items];
@@ -69,36 +74,42 @@ world::ShardRange shardRange(const ShardCosts& costs, const std::vector<TexelSam
         return size_t(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
     };
     const size_t begin = std::min(cut(index), items), end = std::min(cut(index + 1), items);
-    // An item cut maps to a texel (the placed texel it starts at), a cell and a probe.
-    auto texel = [&](size_t k) -> uint64_t {
-        if (k == 0) return 0;
-        return k < placed ? samples[k].texel : texels;
-    };
     auto within = [](size_t k, size_t first, size_t size) -> uint64_t {
         return k <= first ? 0 : std::min(k - first, size);
     };
     world::ShardRange r;
-    r.texelBegin = texel(begin);
-    r.texelEnd = index + 1 >= count ? texels : texel(end);
-    r.cellBegin = within(begin, placed, cells);
-    r.cellEnd = within(end, placed, cells);
-    r.probeBegin = within(begin, placed + cells, probes);
-    r.probeEnd = within(end, placed + cells, probes);
+    r.chartBegin = within(begin, 0, charts);
+    r.chartEnd = within(end, 0, charts);
+    r.cellBegin = within(begin, charts, cells);
+    r.cellEnd = within(end, charts, cells);
+    r.probeBegin = within(begin, charts + cells, probes);
+    r.probeEnd = within(end, charts + cells, probes);
     r.probeTotal = probes;
     return r;
 }
 
-double shardCost(const ShardCosts& costs, const std::vector<TexelSample>& samples,
-                 const world::ShardRange& range) {
+double shardCost(const ShardCosts& costs, const world::ShardRange& range) {
     double sum = 0.0;
-    for (size_t k = 0; k < samples.size() && k < costs.texels.size(); ++k)
-        if (samples[k].texel >= range.texelBegin && samples[k].texel < range.texelEnd)
-            sum += costs.texels[k];
+    for (uint64_t c = range.chartBegin; c < range.chartEnd && c < costs.charts.size(); ++c)
+        sum += costs.charts[c];
     for (uint64_t c = range.cellBegin; c < range.cellEnd && c < costs.cells.size(); ++c)
         sum += costs.cells[c];
     for (uint64_t p = range.probeBegin; p < range.probeEnd && p < costs.probes.size(); ++p)
         sum += costs.probes[p];
     return sum;
+}
+
+std::vector<uint32_t> samplesOfRange(const world::CompiledLevel& level,
+                                     const std::vector<TexelSample>& samples,
+                                     const world::ShardRange& range) {
+    std::vector<uint32_t> owned;
+    for (uint32_t i = 0; i < samples.size(); ++i) {
+        const uint32_t surface = samples[i].surface;
+        const uint32_t chart =
+            surface < level.surfaces.size() ? level.surfaces[surface].chart : world::kNoIndex;
+        if (chart >= range.chartBegin && chart < range.chartEnd) owned.push_back(i);
+    }
+    return owned;
 }
 
 }  // namespace onelight::bake

@@ -1,6 +1,8 @@
 // How a sharded bake (--shard i/N, --slurm N) divides its work: each part bakes one contiguous
-// range of the placed lightmap texels, then of the light grid's cells, then of the probes, cut
-// where the estimated cost of the work that a part does alone reaches an equal share. What
+// range of the lightmap charts (whole charts, so that the denoiser's windows, which a part must
+// gather whole, cross into other parts' texels only at seams; a band of atlas rows would cut
+// every chart it crosses), then of the light grid's cells, then of the probes, cut where the
+// estimated cost of the work that a part does alone reaches an equal share. What
 // every part does whole (the texture stage, the scene, the direct light and the cached bounce
 // passes over every texel) is not divided and not counted; the visibility set's view cells are
 // divided apart, every N-th cell to each part (bake/visibility/visibility_bake.hpp).
@@ -10,9 +12,10 @@
 // only their ratios matter for the cut). S is the shadow rays per light, T the lights that reach
 // the point (its light cell's, the suns, the emitters as one), min(T, 16) the shadow-ray budget
 // of estimateVisibilities (at most 8 terms: S rays each; more: about 2 x 8 S in all):
-//   texel   1.5 us per gathering path (P_lm): its hit reads the cached bounces, glossy hits are
-//           traced on, and the denoiser's window costs its share. Its lights do not count here:
-//           the direct light of every texel is computed whole in every part
+//   chart   1.5 us per gathering path (P_lm) of each of its placed texels: a path's hit reads
+//           the cached bounces, glossy hits are traced on, and the denoiser's window costs its
+//           share. Its lights do not count here: the direct light of every texel is computed
+//           whole in every part
 //   cell    0.45 us per gathering path (P_grid; from the open, cheaper than a texel's) and
 //           0.1 us per shadow ray, S min(T, 16), of its direct light
 //   probe   1.9 us per path, 6 f^2 spp of them (f: the face size), prefiltering included
@@ -36,7 +39,7 @@ namespace onelight::bake {
 
 /// The estimated core-seconds of each item in the divided work.
 struct ShardCosts {
-    std::vector<double> texels;  // per placed texel, in the order of `samples` (texel order)
+    std::vector<double> charts;  // per chart of the compiled level
     std::vector<double> cells;   // per light grid cell
     std::vector<double> probes;  // per probe
 };
@@ -45,22 +48,24 @@ struct ShardCosts {
 [[nodiscard]] uint32_t lightsReaching(const BakeLights& lights, const glm::vec3& position);
 
 [[nodiscard]] ShardCosts estimateShardCosts(const BakeLights& lights,
+                                            const world::CompiledLevel& level,
                                             const std::vector<TexelSample>& samples,
                                             const world::LightGrid& grid, size_t probes,
                                             const LightmapSettings& lightmap,
                                             const GridSettings& gridSettings,
                                             const ProbeCaptureSettings& probe);
 
-/// Part `index` of `count`: texels, cells and probes laid end to end in that order, cut where
+/// Part `index` of `count`: charts, cells and probes laid end to end in that order, cut where
 /// the running cost reaches index / count of the total (by count when every cost is 0). Every
-/// texel of the atlases (`texels`, placed or not), cell and probe belongs to exactly one part;
-/// part 0 starts at texel 0 and the last ends at `texels`.
-[[nodiscard]] world::ShardRange shardRange(const ShardCosts& costs,
-                                           const std::vector<TexelSample>& samples, uint64_t texels,
-                                           uint32_t index, uint32_t count);
+/// chart, cell and probe belongs to exactly one part.
+[[nodiscard]] world::ShardRange shardRange(const ShardCosts& costs, uint32_t index, uint32_t count);
 
 /// The estimated core-seconds of `range`'s items, for the report.
-[[nodiscard]] double shardCost(const ShardCosts& costs, const std::vector<TexelSample>& samples,
-                               const world::ShardRange& range);
+[[nodiscard]] double shardCost(const ShardCosts& costs, const world::ShardRange& range);
+
+/// The samples (indices into `samples`, increasing) whose charts `range` holds.
+[[nodiscard]] std::vector<uint32_t> samplesOfRange(const world::CompiledLevel& level,
+                                                   const std::vector<TexelSample>& samples,
+                                                   const world::ShardRange& range);
 
 }  // namespace onelight::bake

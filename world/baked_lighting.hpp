@@ -90,11 +90,12 @@ struct EnvironmentProbe {
     std::vector<uint32_t> texels;          // RGB9E5, 6 * sum_m (face_size >> m)^2
 };
 
-/// What an unmerged part of a sharded bake holds (section 40): the texels, light grid cells and
-/// probes [begin, end) it baked, each a contiguous range cut by estimated cost
-/// (bake/shard_plan.hpp); the merge checks that the parts tile every range.
+/// What an unmerged part of a sharded bake holds (section 40): the lightmap charts (every texel
+/// of their rectangles), light grid cells and probes [begin, end) it baked, each a contiguous
+/// range cut by estimated cost (bake/shard_plan.hpp); the merge checks that the parts tile every
+/// range.
 struct ShardRange {
-    uint64_t texelBegin = 0, texelEnd = 0;
+    uint64_t chartBegin = 0, chartEnd = 0;
     uint64_t cellBegin = 0, cellEnd = 0;
     uint64_t probeBegin = 0, probeEnd = 0;
     uint64_t probeTotal = 0;  // probes of the whole level

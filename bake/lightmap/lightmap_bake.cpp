@@ -285,24 +285,33 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
                                  const LightmapSettings& settings, uint64_t texelBegin,
                                  uint64_t texelEnd, world::BakedLighting& baked, Progress* progress,
                                  RadianceCache* cacheOut) {
-    const auto lower = [&](uint64_t texel) {
-        return static_cast<size_t>(
-            std::lower_bound(samples.begin(), samples.end(), texel,
-                             [](const TexelSample& s, uint64_t t) { return s.texel < t; }) -
-            samples.begin());
-    };
+    std::vector<uint32_t> owned;
+    for (uint32_t i = 0; i < samples.size(); ++i)
+        if (samples[i].texel >= texelBegin && samples[i].texel < texelEnd) owned.push_back(i);
+    return bakeLightmapTexels(scene, lights, level, samples, settings, owned, baked, progress,
+                              cacheOut);
+}
+
+LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& lights,
+                                 const world::CompiledLevel& level,
+                                 const std::vector<TexelSample>& samples,
+                                 const LightmapSettings& settings,
+                                 const std::vector<uint32_t>& ownedSamples,
+                                 world::BakedLighting& baked, Progress* progress,
+                                 RadianceCache* cacheOut) {
     const size_t n = samples.size();
-    const size_t ownedBegin = lower(texelBegin), ownedEnd = lower(texelEnd);
-    const auto owned = [&](size_t i) { return i >= ownedBegin && i < ownedEnd; };
+    std::vector<uint8_t> isOwned(n, 0);
+    for (const uint32_t i : ownedSamples) isOwned[i] = 1;
+    const auto owned = [&](size_t i) { return isOwned[i] != 0; };
     // The denoiser reads neighbours up to its largest window away, in world space (across
     // seams into other charts): estimate those texels too. Every texel's estimate depends only
     // on its identity, so a neighbour gets the same value in whichever shard computes it.
     const TexelHash hash = makeTexelHash(samples);
     std::vector<uint8_t> needed(n, 0);
     if (settings.denoise.enabled)
-        markDenoiseFootprint(hash, samples, ownedBegin, ownedEnd, needed);
+        markDenoiseFootprint(hash, samples, ownedSamples, needed);
     else
-        std::fill(needed.begin() + long(ownedBegin), needed.begin() + long(ownedEnd), 1);
+        needed = isOwned;
     // Direct light: of every texel when the bounces are cached (every pass reads them all,
     // so every shard computes them all), else of the needed texels.
     const bool cached = settings.bouncePasses > 0;
@@ -337,15 +346,16 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
         if (progress) progress->advance(units);
     });
 
-    std::vector<double> denoisedNoise(ownedEnd - ownedBegin, 0.0);
-    bake::parallelFor(tbb::blocked_range<size_t>(ownedBegin, ownedEnd, 64), [&](const auto& r) {
+    std::vector<double> denoisedNoise(ownedSamples.size(), 0.0);
+    bake::parallelFor(tbb::blocked_range<size_t>(0, ownedSamples.size(), 64), [&](const auto& r) {
         RayCounts& local = rays.local();
-        for (size_t i = r.begin(); i != r.end(); ++i) {
+        for (size_t k = r.begin(); k != r.end(); ++k) {
+            const size_t i = ownedSamples[k];
             const TexelSample& s = samples[i];
             const TexelEstimate& e = estimates[i];
             const DenoisedIndirect d =
                 denoiseTexel(scene, hash, samples, estimates, i, settings.denoise, local);
-            denoisedNoise[i - ownedBegin] = d.noise;
+            denoisedNoise[k] = d.noise;
             world::LightmapTexel t;
             const double luminanceSum = e.directLuminance + d.indirectLuminance;
             t.irradiance = glm::max(glm::vec3(e.direct + d.indirect), glm::vec3(0.0f));
@@ -366,12 +376,12 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
     if (cacheOut) *cacheOut = std::move(cache);
     LightmapStats stats;
     for (const RayCounts& r : rays) stats.rays += r;
-    stats.texelsBaked = ownedEnd - ownedBegin;
+    stats.texelsBaked = ownedSamples.size();
     double noiseSum = 0.0, denoisedSum = 0.0, valueSum = 0.0;
-    for (size_t i = ownedBegin; i < ownedEnd; ++i) {
-        const TexelEstimate& e = estimates[i];
+    for (size_t k = 0; k < ownedSamples.size(); ++k) {
+        const TexelEstimate& e = estimates[ownedSamples[k]];
         noiseSum += e.noise;
-        denoisedSum += denoisedNoise[i - ownedBegin];
+        denoisedSum += denoisedNoise[k];
         valueSum += e.directLuminance + e.indirectLuminance;
         stats.texelsMoved += e.moved ? 1 : 0;
     }

@@ -56,6 +56,15 @@ struct LightmapStats {
                                                uint64_t texelBegin, uint64_t texelEnd,
                                                world::BakedLighting& baked, Progress* progress,
                                                RadianceCache* cache = nullptr);
+/// The same for the samples `ownedSamples` (indices into `samples`, increasing): a shard's
+/// charts (bake/shard_plan.hpp).
+[[nodiscard]] LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& lights,
+                                               const world::CompiledLevel& level,
+                                               const std::vector<TexelSample>& samples,
+                                               const LightmapSettings& settings,
+                                               const std::vector<uint32_t>& ownedSamples,
+                                               world::BakedLighting& baked, Progress* progress,
+                                               RadianceCache* cache = nullptr);
 
 /// The progress units bakeLightmapTexels advances by for `allSamples` texels of which it owns
 /// `ownedSamples`.

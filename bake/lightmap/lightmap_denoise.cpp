@@ -154,9 +154,9 @@ TexelHash makeTexelHash(const std::vector<TexelSample>& samples) {
 }
 
 void markDenoiseFootprint(const TexelHash& hash, const std::vector<TexelSample>& samples,
-                          size_t ownedBegin, size_t ownedEnd, std::vector<uint8_t>& needed) {
+                          const std::vector<uint32_t>& owned, std::vector<uint8_t>& needed) {
     needed.resize(samples.size(), 0);
-    for (size_t i = ownedBegin; i < ownedEnd; ++i) {
+    for (const uint32_t i : owned) {
         needed[i] = 1;
         forEachNear(hash, samples, samples[i].centre, maxReach(hash, samples[i]),
                     [&](uint32_t j) { needed[j] = 1; });

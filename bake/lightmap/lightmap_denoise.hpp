@@ -35,9 +35,10 @@ struct TexelHash {
 [[nodiscard]] TexelHash makeTexelHash(const std::vector<TexelSample>& samples);
 
 /// Marks in `needed` (one flag per sample) every texel whose estimate the denoised texels
-/// [ownedBegin, ownedEnd) may read: themselves and every texel within the largest window.
+/// `owned` (indices into samples) may read: themselves and every texel within the largest
+/// window.
 void markDenoiseFootprint(const TexelHash& hash, const std::vector<TexelSample>& samples,
-                          size_t ownedBegin, size_t ownedEnd, std::vector<uint8_t>& needed);
+                          const std::vector<uint32_t>& owned, std::vector<uint8_t>& needed);
 
 /// Texel i's indirect part, filtered.
 struct DenoisedIndirect {

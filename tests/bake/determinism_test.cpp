@@ -98,10 +98,10 @@ TEST_P(BakeDeterminism, ShardsMergedEqualAWholeBake) {
     EXPECT_NE(originError.find("second.olpak (shard "), std::string::npos) << originError;
     EXPECT_NE(originError.find("light grid's origin"), std::string::npos) << originError;
 
-    // Parts whose ranges overlap (one texel baked twice, one never): named, not merged.
+    // Parts whose ranges do not meet (a cell baked by neither): named, not merged.
     std::vector<world::BakedLighting> overlapping = parts;
     for (world::BakedLighting& p : overlapping)
-        if (p.shardIndex == 1) p.shardRange.texelBegin -= 1;
+        if (p.shardIndex == 1) p.shardRange.cellBegin += 1;
     const std::string overlapError = onelight::test::errorMessage([&] {
         (void)mergeBakedLighting(compiled, overlapping, {"first.olpak", "second.olpak"});
     });
@@ -119,70 +119,70 @@ INSTANTIATE_TEST_SUITE_P(Levels, BakeDeterminism, ::testing::Values(false, true)
                              return level.param ? "Textured" : "Plain";
                          });
 
-// Every texel (placed or not), cell and probe belongs to exactly one shard, in order, and each
-// shard's estimated cost is its equal share to within one item.
-void expectTiling(const ShardCosts& costs, const std::vector<TexelSample>& samples, uint64_t texels,
-                  uint32_t count) {
+// Every chart, cell and probe belongs to exactly one shard, in order, and each shard's estimated
+// cost is its equal share to within one item.
+void expectTiling(const ShardCosts& costs, uint32_t count) {
     world::ShardRange next;
     double total = 0.0, largest = 0.0;
-    for (const auto* list : {&costs.texels, &costs.cells, &costs.probes})
+    for (const auto* list : {&costs.charts, &costs.cells, &costs.probes})
         for (const double c : *list) {
             total += c;
             largest = std::max(largest, c);
         }
     for (uint32_t i = 0; i < count; ++i) {
-        const world::ShardRange r = shardRange(costs, samples, texels, i, count);
-        EXPECT_EQ(r.texelBegin, next.texelEnd) << i << "/" << count;
+        const world::ShardRange r = shardRange(costs, i, count);
+        EXPECT_EQ(r.chartBegin, next.chartEnd) << i << "/" << count;
         EXPECT_EQ(r.cellBegin, next.cellEnd) << i << "/" << count;
         EXPECT_EQ(r.probeBegin, next.probeEnd) << i << "/" << count;
-        EXPECT_LE(r.texelBegin, r.texelEnd);
+        EXPECT_LE(r.chartBegin, r.chartEnd);
         EXPECT_LE(r.cellBegin, r.cellEnd);
         EXPECT_LE(r.probeBegin, r.probeEnd);
         EXPECT_EQ(r.probeTotal, costs.probes.size());
-        EXPECT_NEAR(shardCost(costs, samples, r), total / count, largest + 1e-9)
-            << i << "/" << count;
+        EXPECT_NEAR(shardCost(costs, r), total / count, largest + 1e-9) << i << "/" << count;
         next = r;
     }
-    EXPECT_EQ(next.texelEnd, texels) << count;
+    EXPECT_EQ(next.chartEnd, costs.charts.size()) << count;
     EXPECT_EQ(next.cellEnd, costs.cells.size()) << count;
     EXPECT_EQ(next.probeEnd, costs.probes.size()) << count;
 }
 
-// Shards own equal shares of the placed texels' cost, not of the atlases: placed texels crowd
-// the first tenth of a 1000-texel atlas, and the cut follows them.
-TEST(BakeShards, TexelsAreCutIntoEqualSharesOfThePlacedTexels) {
-    std::vector<TexelSample> samples;
-    for (uint64_t t = 0; t < 100; ++t) samples.push_back({t});
-    for (uint64_t t = 100; t < 1000; t += 10) samples.push_back({t});  // 190 placed in all
+// Charts, cells and probes are laid end to end and cut by cost: a chart of many texels takes a
+// larger share than one of few, and a probe worth many cells takes a shard's share alone.
+TEST(BakeShards, ChartsCellsAndProbesAreCutIntoEqualShares) {
     ShardCosts costs;
-    costs.texels.assign(samples.size(), 128.0);
-    for (const uint32_t count : {1u, 2u, 4u, 7u, 300u}) expectTiling(costs, samples, 1000, count);
-    // Two shards: the first owns 95 of the crowded first 100 texels, not half the atlas.
-    EXPECT_EQ(shardRange(costs, samples, 1000, 0, 2).texelEnd, 95u);
-}
-
-// Texels, cells and probes are laid end to end and cut by cost: costly texels (many lights)
-// get fewer per shard, and a probe worth many cells takes a shard's share alone.
-TEST(BakeShards, CostlyItemsAreSpreadOverMoreShards) {
-    std::vector<TexelSample> samples;
-    for (uint64_t t = 0; t < 400; ++t) samples.push_back({t * 2});
-    ShardCosts costs;
-    for (size_t i = 0; i < samples.size(); ++i) costs.texels.push_back(i < 100 ? 700.0 : 100.0);
+    for (int c = 0; c < 40; ++c) costs.charts.push_back(c < 10 ? 7000.0 : 1000.0);
     costs.cells.assign(300, 200.0);
-    costs.probes.assign(2, 6.0 * 16 * 16 * 16);  // 24576 each
+    costs.probes.assign(2, 24576.0);
     // Total 70000 + 30000 + 60000 + 49152 = 209152.
-    for (const uint32_t count : {1u, 2u, 3u, 5u, 8u, 64u}) expectTiling(costs, samples, 800, count);
-    // Four shards: the first quarter (52288) is 74 of the costly texels, not 100 texels.
-    const world::ShardRange first = shardRange(costs, samples, 800, 0, 4);
-    EXPECT_EQ(first.texelEnd, samples[75].texel);
+    for (const uint32_t count : {1u, 2u, 3u, 5u, 8u, 64u, 500u}) expectTiling(costs, count);
+    // Four shards: the first quarter (52288) is 8 of the costly charts (56000 reaches it).
+    const world::ShardRange first = shardRange(costs, 0, 4);
+    EXPECT_EQ(first.chartEnd, 8u);
     EXPECT_EQ(first.cellEnd, 0u);
-    const world::ShardRange last = shardRange(costs, samples, 800, 3, 4);
+    const world::ShardRange last = shardRange(costs, 3, 4);
     EXPECT_EQ(last.probeEnd - last.probeBegin, 2u);
     // No cost at all (an empty level's zero paths): cut by count.
     ShardCosts none;
     none.cells.assign(10, 0.0);
-    expectTiling(none, {}, 0, 3);
-    EXPECT_EQ(shardRange(none, {}, 0, 1, 3).cellBegin, 3u);
+    expectTiling(none, 3);
+    EXPECT_EQ(shardRange(none, 1, 3).cellBegin, 3u);
+}
+
+// A shard owns the placed texels of its charts, whatever their place in the atlas.
+TEST(BakeShards, AShardOwnsTheTexelsOfItsCharts) {
+    world::CompiledLevel level;
+    level.charts.resize(3);
+    level.surfaces.resize(3);
+    for (uint32_t s = 0; s < 3; ++s) level.surfaces[s].chart = 2 - s;
+    std::vector<TexelSample> samples;
+    for (uint32_t t = 0; t < 9; ++t) {
+        samples.push_back({t});
+        samples.back().surface = t % 3;  // charts 2, 1, 0, 2, 1, 0, ... interleaved in rows
+    }
+    EXPECT_EQ(samplesOfRange(level, samples, {0, 1, 0, 0, 0, 0, 0}),
+              (std::vector<uint32_t>{2, 5, 8}));
+    EXPECT_EQ(samplesOfRange(level, samples, {1, 3, 0, 0, 0, 0, 0}),
+              (std::vector<uint32_t>{0, 1, 3, 4, 6, 7}));
 }
 
 // A cell that more lights reach costs more shadow rays; a texel's lights do not count (its
@@ -213,6 +213,12 @@ TEST(BakeShards, CostsFollowPathsAndTheLightsThatReachEachCell) {
     samples[0].position = glm::vec3(0.5f);
     samples[1] = {1};
     samples[1].position = glm::vec3(15.5f, 0.5f, 0.5f);
+    samples[1].surface = 1;
+    world::CompiledLevel level;  // the two texels on charts 0 and 1
+    level.charts.resize(2);
+    level.surfaces.resize(2);
+    level.surfaces[0].chart = 0;
+    level.surfaces[1].chart = 1;
     LightmapSettings lm;
     lm.indirectSamples = 128;
     lm.bouncePasses = 3;
@@ -222,18 +228,18 @@ TEST(BakeShards, CostsFollowPathsAndTheLightsThatReachEachCell) {
     ProbeCaptureSettings ps;
     ps.faceSize = 16;
     ps.samplesPerTexel = 4;
-    const ShardCosts cached = estimateShardCosts(lights, samples, grid, 1, lm, gs, ps);
+    const ShardCosts cached = estimateShardCosts(lights, level, samples, grid, 1, lm, gs, ps);
     EXPECT_EQ(lightsReaching(lights, glm::vec3(0.5f)), 2u);
     EXPECT_EQ(lightsReaching(lights, glm::vec3(15.5f, 0.5f, 0.5f)), 1u);
     // 128 paths at 0.45 us, 8 shadow rays per light at 0.1 us.
     EXPECT_NEAR(cached.cells[15], 128 * 0.45e-6 + 8 * 1 * 0.1e-6, 1e-12);
     EXPECT_NEAR(cached.cells[0], 128 * 0.45e-6 + 8 * 2 * 0.1e-6, 1e-12);
-    EXPECT_NEAR(cached.texels[0], 128 * 1.5e-6, 1e-12);
-    EXPECT_EQ(cached.texels[0], cached.texels[1]);
+    EXPECT_NEAR(cached.charts[0], 128 * 1.5e-6, 1e-12);
+    EXPECT_EQ(cached.charts[0], cached.charts[1]);
     EXPECT_NEAR(cached.probes[0], 6.0 * 16 * 16 * 4 * 1.9e-6, 1e-12);
     lm.bouncePasses = 0;
-    const ShardCosts paths = estimateShardCosts(lights, samples, grid, 0, lm, gs, ps);
-    EXPECT_NEAR(paths.texels[1], 2 * cached.texels[1], 1e-12);
+    const ShardCosts paths = estimateShardCosts(lights, level, samples, grid, 0, lm, gs, ps);
+    EXPECT_NEAR(paths.charts[1], 2 * cached.charts[1], 1e-12);
     EXPECT_NEAR(paths.cells[15], 128 * 0.9e-6 + 8 * 1 * 0.1e-6, 1e-12);
     EXPECT_TRUE(paths.probes.empty());
 }

@@ -231,18 +231,19 @@ std::string shardRangeError(const world::ShardRange& range, bool part = true) {
 }
 
 TEST(HostilePackage, AShardsRangeThatLiesIsRejected) {
-    const uint64_t texels = triangleLevelTexels();
-    const world::ShardRange good{texels / 2, texels, 0, 1, 0, 0, 0};
+    const uint64_t charts = triangleLevel().charts.size();
+    ASSERT_GE(charts, 1u);
+    const world::ShardRange good{0, charts, 0, 1, 0, 0, 0};
     EXPECT_EQ(shardRangeError(good), "") << "the unedited range is valid";
     struct Case {
         world::ShardRange range;
         const char* mustSay;
     } cases[] = {
-        {{texels / 2, texels + 1, 0, 1, 0, 0, 0}, "section shard_range: texels ["},
-        {{5, 4, 0, 1, 0, 0, 0}, "texels [5, 4); expected begin <= end"},
-        {{0, texels, 0, 2, 0, 0, 0}, "cells [0, 2); expected begin <= end <= 1"},
-        {{0, texels, 0, 1, 0, 1, 1}, "probes [0, 1) but the probe section holds 0"},
-        {{0, texels, 0, 1, 0, 3, 2}, "probes [0, 3); expected begin <= end <= 2 (probeTotal)"},
+        {{0, charts + 1, 0, 1, 0, 0, 0}, "section shard_range: charts [0, "},
+        {{5, 4, 0, 1, 0, 0, 0}, "charts [5, 4); expected begin <= end"},
+        {{0, charts, 0, 2, 0, 0, 0}, "cells [0, 2); expected begin <= end <= 1"},
+        {{0, charts, 0, 1, 0, 1, 1}, "probes [0, 1) but the probe section holds 0"},
+        {{0, charts, 0, 1, 0, 3, 2}, "probes [0, 3); expected begin <= end <= 2 (probeTotal)"},
     };
     for (const Case& k : cases) {
         const std::string error = shardRangeError(k.range);

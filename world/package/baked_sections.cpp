@@ -125,7 +125,7 @@ std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
         range.id = kSectionShardRange;
         range.elementSize = sizeof(DiskShardRange);
         range.count = 1;
-        appendBytes(range.bytes, DiskShardRange{r.texelBegin, r.texelEnd, r.cellBegin, r.cellEnd,
+        appendBytes(range.bytes, DiskShardRange{r.chartBegin, r.chartEnd, r.cellBegin, r.cellEnd,
                                                 r.probeBegin, r.probeEnd, r.probeTotal, 0});
         out.push_back(std::move(range));
     }
@@ -134,8 +134,9 @@ std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
 
 namespace {
 
-/// Section 40 of a part holding `texels` texels, `cells` grid cells and `probes` probes.
-world::ShardRange decodeShardRange(const RawSection& section, uint64_t texels, uint64_t cells,
+/// Section 40 of a part of a level of `charts` charts holding `cells` grid cells and `probes`
+/// probes.
+world::ShardRange decodeShardRange(const RawSection& section, uint64_t charts, uint64_t cells,
                                    uint64_t probes, const std::string& name) {
     const std::string at = name + ": section shard_range: ";
     if (section.elementSize != sizeof(DiskShardRange) || section.count != 1 ||
@@ -152,7 +153,7 @@ world::ShardRange decodeShardRange(const RawSection& section, uint64_t texels, u
                 at + what + " [" + std::to_string(begin) + ", " + std::to_string(end) +
                 "); expected begin <= end <= " + std::to_string(total) + " (" + totalName + ")");
     };
-    range("texels", d.texelBegin, d.texelEnd, texels, "the atlases' texels");
+    range("charts", d.chartBegin, d.chartEnd, charts, "the level's charts");
     range("cells", d.cellBegin, d.cellEnd, cells, "the light grid's cells");
     range("probes", d.probeBegin, d.probeEnd, d.probeTotal, "probeTotal");
     if (d.probeEnd - d.probeBegin != probes)
@@ -161,7 +162,7 @@ world::ShardRange decodeShardRange(const RawSection& section, uint64_t texels, u
                            std::to_string(probes) + "; expected as many as the range");
     if (d.reserved != 0)
         throw world::Error(at + "reserved = " + std::to_string(d.reserved) + "; expected 0");
-    return {d.texelBegin, d.texelEnd, d.cellBegin, d.cellEnd,
+    return {d.chartBegin, d.chartEnd, d.cellBegin, d.cellEnd,
             d.probeBegin, d.probeEnd, d.probeTotal};
 }
 
@@ -316,8 +317,8 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
                            std::to_string(baked.shardCount) +
                            "; expected it in an unmerged part (shard count > 1) only");
     if (shardRange)
-        baked.shardRange = decodeShardRange(*shardRange, expectedTexels, baked.grid.cells.size(),
-                                            baked.probes.size(), name);
+        baked.shardRange = decodeShardRange(*shardRange, level.charts.size(),
+                                            baked.grid.cells.size(), baked.probes.size(), name);
     return result;
 }
 

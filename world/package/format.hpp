@@ -515,14 +515,14 @@ static_assert(sizeof(DiskErrorBudget) == 48);
 
 // ---------------------------------------------------------------------------------------------
 // Shard range (id 40), in an unmerged part of a sharded bake only (light_grid's shardCount > 1;
-// never in a whole package; world::ShardRange in memory). One record: the texels, light grid
-// cells and probes the part baked, each [begin, end), cut by estimated cost
-// (bake/shard_plan.hpp). texelEnd <= the atlases' texels, cellEnd <= the grid's cells, probeEnd
-// <= probeTotal, and the part's probe section holds exactly probeEnd - probeBegin probes. The
-// merge checks that its parts tile [0, total) of each.
+// never in a whole package; world::ShardRange in memory). One record: the lightmap charts (the
+// texels of their rectangles), light grid cells and probes the part baked, each [begin, end),
+// cut by estimated cost (bake/shard_plan.hpp). chartEnd <= the level's charts, cellEnd <= the
+// grid's cells, probeEnd <= probeTotal, and the part's probe section holds exactly
+// probeEnd - probeBegin probes. The merge checks that its parts tile [0, total) of each.
 
 struct DiskShardRange {
-    uint64_t texelBegin, texelEnd;
+    uint64_t chartBegin, chartEnd;
     uint64_t cellBegin, cellEnd;
     uint64_t probeBegin, probeEnd;
     uint64_t probeTotal;
