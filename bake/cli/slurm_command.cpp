@@ -411,8 +411,9 @@ int runSlurmBake(SlurmCommandLine& line) {
 std::string slurmUsage() {
     return formatUsage(
         "onelight-bake LEVEL -o OUT.olpak --slurm N [OPTIONS] [BAKE OPTIONS]",
-        "bakes LEVEL on a Slurm cluster: a job array of N shards and a merge job after them, "
-        "with\n  the bake's options (above); rerunning the same command resumes (docs/slurm.md)",
+        "bakes LEVEL on a Slurm cluster: compiles it once here, then a job array of N shards and a "
+        "merge\n  job after them, with the bake's options (above); rerunning the same command "
+        "resumes (docs/slurm.md)",
         {{"--slurm N", "shards, one array task each, 1..10000", kRequired},
          {"--partition P", "the partition of every job", "the cluster's default"},
          {"--time T", "each job's time limit (30, 1:00:00, 1-0)", "the partition's"},
