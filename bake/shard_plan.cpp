@@ -40,11 +40,8 @@ ShardCosts estimateShardCosts(const BakeLights& lights, const world::CompiledLev
     }
     costs.cells.resize(grid.cells.size());
     for (size_t i = 0; i < grid.cells.size(); ++i) {
-        const uint32_t x = static_cast<uint32_t>(i % grid.dims.x);
-        const uint32_t y = static_cast<uint32_t>((i / grid.dims.x) % grid.dims.y);
-        const uint32_t z = static_cast<uint32_t>(i / (uint64_t(grid.dims.x) * grid.dims.y));
-        const glm::vec3 centre = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
-        const double terms = std::min(lightsReaching(lights, centre), kShadowTermCap);
+        const double terms =
+            std::min(lightsReaching(lights, world::lightGridCellCentre(grid, i)), kShadowTermCap);
         costs.cells[i] = gridSettings.samples * path * kCellPathSeconds +
                          gridSettings.shadowSamples * terms * kShadowRaySeconds;
     }

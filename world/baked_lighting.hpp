@@ -53,6 +53,14 @@ struct LightGrid {
     std::vector<LightGridCell> cells;  // x fastest
 };
 
+/// The centre of cell `cell` (x fastest) of `grid`, metres, world.
+[[nodiscard]] inline glm::vec3 lightGridCellCentre(const LightGrid& grid, uint64_t cell) {
+    const auto x = static_cast<uint32_t>(cell % grid.dims.x);
+    const auto y = static_cast<uint32_t>((cell / grid.dims.x) % grid.dims.y);
+    const auto z = static_cast<uint32_t>(cell / (uint64_t(grid.dims.x) * grid.dims.y));
+    return grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
+}
+
 /// What `onelight-bake --error-budget E` chose to leave out of a level, and the error each
 /// choice is predicted to cost (section 39; bake/budget/ decides, docs/level-report.md "Error
 /// budget"). Errors are the level report's measure: the mean relative error of 8x8-pixel blocks

@@ -119,10 +119,7 @@ GridStats bakeLightGrid(const BakeScene& scene, const BakeLights& lights,
     bake::parallelFor(tbb::blocked_range<uint64_t>(cellBegin, cellEnd, 4), [&](const auto& r) {
         RayCounts& local = rays.local();
         for (uint64_t i = r.begin(); i != r.end(); ++i) {
-            const uint32_t x = static_cast<uint32_t>(i % grid.dims.x);
-            const uint32_t y = static_cast<uint32_t>((i / grid.dims.x) % grid.dims.y);
-            const uint32_t z = static_cast<uint32_t>(i / (uint64_t(grid.dims.x) * grid.dims.y));
-            const glm::vec3 centre = grid.origin + (glm::vec3(x, y, z) + 0.5f) * grid.cellSize;
+            const glm::vec3 centre = world::lightGridCellCentre(grid, i);
             grid.cells[i] =
                 bakeCell(scene, lights, settings, centre, static_cast<uint32_t>(i), local);
         }
