@@ -234,6 +234,7 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
         progress.finish();
         report.stages.push_back({"lightmaps", secondsSince(start), stats.rays, stats.texelsBaked});
         report.texelsSampled = stats.texelsBaked;
+        report.texelsGathered = stats.texelsGathered;
         report.texelsMoved = stats.texelsMoved;
         report.lightmapMeanRelativeNoise = stats.meanRelativeNoise;
         report.lightmapDenoisedRelativeNoise = stats.meanRelativeNoiseDenoised;
@@ -448,12 +449,13 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
                            std::to_string(grid0.cells.size()) + " and " +
                            std::to_string(next.probeTotal) + " (every one baked by some shard)");
     world::BakedLighting merged = parts[0];
+    const std::vector<uint32_t> chartOrder = chartSpaceOrder(level);
     for (uint32_t i = 0; i < count; ++i) {
         const world::BakedLighting& p = *byIndex[i];
         const world::ShardRange& r = p.shardRange;
         // Every texel of the part's charts' rectangles (padding included).
-        for (uint64_t c = r.chartBegin; c < r.chartEnd; ++c) {
-            const world::Chart& chart = level.charts[c];
+        for (uint64_t k = r.chartBegin; k < r.chartEnd; ++k) {
+            const world::Chart& chart = level.charts[chartOrder[k]];
             const uint64_t base = world::atlasTexelOffset(level, chart.atlas);
             const uint32_t width = level.atlases[chart.atlas].width;
             for (uint32_t y = chart.y; y < chart.y + chart.height; ++y)

@@ -1,6 +1,9 @@
 #include "bake/shard_plan.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
 
 #include "bake/lighting/direct_light.hpp"
 
@@ -18,7 +21,51 @@ constexpr double kShadowRaySeconds = 0.1e-6;
 constexpr double kProbePathSeconds = 1.9e-6;
 constexpr double kUncachedPathFactor = 2.0;
 
+/// Spreads the low 21 bits of v to every third bit.
+uint64_t spreadBits(uint64_t v) {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffull;
+    v = (v | v << 16) & 0x1f0000ff0000ffull;
+    v = (v | v << 8) & 0x100f00f00f00f00full;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+    v = (v | v << 2) & 0x1249249249249249ull;
+    return v;
+}
+
 }  // namespace
+
+std::vector<uint32_t> chartSpaceOrder(const world::CompiledLevel& level) {
+    const size_t charts = level.charts.size();
+    const double infinity = std::numeric_limits<double>::infinity();
+    std::vector<glm::dvec3> low(charts, glm::dvec3(infinity)), high(charts, glm::dvec3(-infinity));
+    glm::dvec3 levelLow(infinity), levelHigh(-infinity);
+    for (const world::Surface& s : level.surfaces) {
+        if (s.chart >= charts) continue;
+        low[s.chart] = glm::min(low[s.chart], glm::dvec3(s.boundsMin));
+        high[s.chart] = glm::max(high[s.chart], glm::dvec3(s.boundsMax));
+        levelLow = glm::min(levelLow, glm::dvec3(s.boundsMin));
+        levelHigh = glm::max(levelHigh, glm::dvec3(s.boundsMax));
+    }
+    // Each chart's centre, quantised to 21 bits per axis of the level's bounds; a chart without
+    // a surface (or with bounds that are not finite) sorts first.
+    const glm::dvec3 extent = levelHigh - levelLow;
+    std::vector<std::pair<uint64_t, uint32_t>> keys(charts);
+    for (uint32_t c = 0; c < charts; ++c) {
+        uint64_t code = 0;
+        const glm::dvec3 centre = 0.5 * (low[c] + high[c]);
+        for (int axis = 0; axis < 3; ++axis) {
+            const double t =
+                extent[axis] > 0.0 ? (centre[axis] - levelLow[axis]) / extent[axis] : 0.0;
+            const double clamped = std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0;
+            code |= spreadBits(uint64_t(clamped * double(0x1fffff))) << axis;
+        }
+        keys[c] = {code, c};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<uint32_t> order(charts);
+    for (uint32_t k = 0; k < charts; ++k) order[k] = keys[k].second;
+    return order;
+}
 
 uint32_t lightsReaching(const BakeLights& lights, const glm::vec3& position) {
     const auto near = static_cast<uint32_t>(lightsNear(lights, position).size());
@@ -31,13 +78,14 @@ ShardCosts estimateShardCosts(const BakeLights& lights, const world::CompiledLev
                               const GridSettings& gridSettings, const ProbeCaptureSettings& probe) {
     ShardCosts costs;
     const double path = lightmap.bouncePasses > 0 ? 1.0 : kUncachedPathFactor;
-    costs.charts.assign(level.charts.size(), 0.0);
+    std::vector<double> byChart(level.charts.size(), 0.0);
     for (const TexelSample& s : samples) {
         const uint32_t chart =
             s.surface < level.surfaces.size() ? level.surfaces[s.surface].chart : world::kNoIndex;
-        if (chart < costs.charts.size())
-            costs.charts[chart] += lightmap.indirectSamples * path * kTexelPathSeconds;
+        if (chart < byChart.size())
+            byChart[chart] += lightmap.indirectSamples * path * kTexelPathSeconds;
     }
+    for (const uint32_t chart : chartSpaceOrder(level)) costs.charts.push_back(byChart[chart]);
     costs.cells.resize(grid.cells.size());
     for (size_t i = 0; i < grid.cells.size(); ++i) {
         const double terms =
@@ -99,12 +147,16 @@ double shardCost(const ShardCosts& costs, const world::ShardRange& range) {
 std::vector<uint32_t> samplesOfRange(const world::CompiledLevel& level,
                                      const std::vector<TexelSample>& samples,
                                      const world::ShardRange& range) {
+    std::vector<uint8_t> inRange(level.charts.size(), 0);
+    const std::vector<uint32_t> order = chartSpaceOrder(level);
+    for (uint64_t k = range.chartBegin; k < range.chartEnd && k < order.size(); ++k)
+        inRange[order[k]] = 1;
     std::vector<uint32_t> owned;
     for (uint32_t i = 0; i < samples.size(); ++i) {
         const uint32_t surface = samples[i].surface;
         const uint32_t chart =
             surface < level.surfaces.size() ? level.surfaces[surface].chart : world::kNoIndex;
-        if (chart >= range.chartBegin && chart < range.chartEnd) owned.push_back(i);
+        if (chart < inRange.size() && inRange[chart]) owned.push_back(i);
     }
     return owned;
 }

@@ -1,8 +1,9 @@
 // How a sharded bake (--shard i/N, --slurm N) divides its work: each part bakes one contiguous
-// range of the lightmap charts (whole charts, so that the denoiser's windows, which a part must
-// gather whole, cross into other parts' texels only at seams; a band of atlas rows would cut
-// every chart it crosses), then of the light grid's cells, then of the probes, cut where the
-// estimated cost of the work that a part does alone reaches an equal share. What
+// range of the lightmap charts, then of the light grid's cells, then of the probes, cut where the
+// estimated cost of the work that a part does alone reaches an equal share. The charts are taken
+// whole and in space order (chartSpaceOrder): the denoiser reads every texel within its largest
+// window in world space, and a part must gather those texels too, so a part's charts are kept
+// together in space, where their windows overlap one another rather than other parts' charts. What
 // every part does whole (the texture stage, the scene, the direct light and the cached bounce
 // passes over every texel) is not divided and not counted; the visibility set's view cells are
 // divided apart, every N-th cell to each part (bake/visibility/visibility_bake.hpp).
@@ -37,9 +38,15 @@
 
 namespace onelight::bake {
 
+/// The level's charts in space order: along a Morton curve through the centres of their
+/// surfaces' bounds, over the level's bounds (ties by index). A shard's chart range
+/// [chartBegin, chartEnd) is of positions in this order. Depends on the compiled level alone,
+/// so that the parts and the merge agree.
+[[nodiscard]] std::vector<uint32_t> chartSpaceOrder(const world::CompiledLevel& level);
+
 /// The estimated core-seconds of each item in the divided work.
 struct ShardCosts {
-    std::vector<double> charts;  // per chart of the compiled level
+    std::vector<double> charts;  // per chart, in chartSpaceOrder
     std::vector<double> cells;   // per light grid cell
     std::vector<double> probes;  // per probe
 };
@@ -63,7 +70,8 @@ struct ShardCosts {
 /// The estimated core-seconds of `range`'s items, for the report.
 [[nodiscard]] double shardCost(const ShardCosts& costs, const world::ShardRange& range);
 
-/// The samples (indices into `samples`, increasing) whose charts `range` holds.
+/// The samples (indices into `samples`, increasing) whose charts `range` holds (positions in
+/// chartSpaceOrder).
 [[nodiscard]] std::vector<uint32_t> samplesOfRange(const world::CompiledLevel& level,
                                                    const std::vector<TexelSample>& samples,
                                                    const world::ShardRange& range);

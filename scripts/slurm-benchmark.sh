@@ -38,7 +38,7 @@ for n in 2 8; do
   wall=$(calc "$(now) - $start")
   cmp -s "$out/local.olpak" "$out/slurm$n.olpak" || { echo "slurm-benchmark: --slurm $n differs from the local bake" >&2; exit 1; }
   printf -- '--slurm %s: %.1f s wall, identical to the local bake\n' "$n" "$wall"
-  grep -E '^  (compile|shard|balance|merge) ' "$out/slurm$n.txt"
+  grep -E '^  (compile|shard|balance|gathers|merge) ' "$out/slurm$n.txt"
   # The shards' median time (every shard bakes its share of each stage, the visibility set too).
   median=$(awk '$1 == "shard" { print $4 }' "$out/slurm$n.txt" | sort -n |
     awk '{ v[NR] = $1 } END { printf "%.3f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }')

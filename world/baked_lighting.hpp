@@ -99,9 +99,9 @@ struct EnvironmentProbe {
 };
 
 /// What an unmerged part of a sharded bake holds (section 40): the lightmap charts (every texel
-/// of their rectangles), light grid cells and probes [begin, end) it baked, each a contiguous
-/// range cut by estimated cost (bake/shard_plan.hpp); the merge checks that the parts tile every
-/// range.
+/// of their rectangles; positions in the charts' space order), light grid cells and probes
+/// [begin, end) it baked, each a contiguous range cut by estimated cost (bake/shard_plan.hpp);
+/// the merge checks that the parts tile every range.
 struct ShardRange {
     uint64_t chartBegin = 0, chartEnd = 0;
     uint64_t cellBegin = 0, cellEnd = 0;

@@ -377,6 +377,7 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
     LightmapStats stats;
     for (const RayCounts& r : rays) stats.rays += r;
     stats.texelsBaked = ownedSamples.size();
+    for (const uint8_t flag : needed) stats.texelsGathered += flag;
     double noiseSum = 0.0, denoisedSum = 0.0, valueSum = 0.0;
     for (size_t k = 0; k < ownedSamples.size(); ++k) {
         const TexelEstimate& e = estimates[ownedSamples[k]];

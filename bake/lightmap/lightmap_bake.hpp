@@ -29,7 +29,8 @@ struct LightmapSettings {
 struct LightmapStats {
     RayCounts rays;
     uint64_t texelsBaked = 0;
-    uint64_t texelsMoved = 0;  // sample points moved out of geometry
+    uint64_t texelsGathered = 0;  // final gathers: the texels baked and their denoiser windows'
+    uint64_t texelsMoved = 0;     // sample points moved out of geometry
     // Estimated standard error / value, luminance-weighted: of the texels' own estimates, and
     // after the denoiser (from its windows' weights; bias not included).
     double meanRelativeNoise = 0.0;

@@ -58,6 +58,7 @@ std::string reportJson(const BakeReport& r) {
                    {"emissive_triangles", r.emissiveTriangles}};
     j["lightmap"] = {{"texels_total", r.texelsTotal},
                      {"texels_sampled", r.texelsSampled},
+                     {"texels_gathered", r.texelsGathered},
                      {"texels_moved_out_of_geometry", r.texelsMoved},
                      {"charts_with_fewer_texels", r.chartsReduced},
                      {"texels_sampled_at_requested_density", r.texelsBeforeDensity},

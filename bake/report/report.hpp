@@ -44,6 +44,9 @@ struct BakeReport {
     uint64_t triangles = 0;
     uint32_t primaryLights = 0, bakedLights = 0, emissiveTriangles = 0;
     uint64_t texelsTotal = 0, texelsSampled = 0, texelsMoved = 0;
+    // Texels whose final gather ran: those sampled and the ones their denoiser windows read. A
+    // whole bake gathers each texel once; parts gather their neighbours' edges again.
+    uint64_t texelsGathered = 0;
     // The pilot pass of adaptive density: charts given fewer texels, and the sampled texels at
     // the requested density (0 when no pilot ran).
     uint32_t chartsReduced = 0;

@@ -59,6 +59,7 @@ BakeReport readReport(const std::string& path) {
         const nlohmann::json& lm = j.at("lightmap");
         r.texelsTotal = lm.value("texels_total", uint64_t(0));
         r.texelsSampled = lm.value("texels_sampled", uint64_t(0));
+        r.texelsGathered = lm.value("texels_gathered", uint64_t(0));
         r.chartsReduced = lm.value("charts_with_fewer_texels", 0u);
         r.texelsBeforeDensity = lm.value("texels_sampled_at_requested_density", uint64_t(0));
         r.indirectSamplesPerTexel = lm.value("indirect_samples_per_texel", 0u);
@@ -135,6 +136,7 @@ BakeReport combineShardReports(const BakeReport& compile, const std::vector<Bake
             if (!wholeInEveryShard(s.name)) found->items += s.items;
         }
         whole.texelsSampled += r.texelsSampled;
+        whole.texelsGathered += r.texelsGathered;
         whole.texelsMoved += r.texelsMoved;
         whole.probesBaked += r.probesBaked;
         whole.gridCellsInside += r.gridCellsInside;
@@ -176,6 +178,19 @@ std::string shardTimeLines(const std::vector<ShardStamp>& stamps,
     if (!stamps.empty() && sum > 0.0) {
         std::snprintf(line, sizeof line, "  balance    slowest shard %.2f x the mean (%.2f s)\n",
                       slowest / (sum / double(stamps.size())), sum / double(stamps.size()));
+        text += line;
+    }
+    uint64_t sampled = 0, gathered = 0;
+    for (const BakeReport& r : reports) {
+        sampled += r.texelsSampled;
+        gathered += r.texelsGathered;
+    }
+    if (sampled > 0 && gathered > 0) {
+        std::snprintf(line, sizeof line,
+                      "  gathers    %.2f x a whole bake's final gathers (%llu texels for %llu: "
+                      "each part also gathers the texels its denoiser windows read)\n",
+                      double(gathered) / double(sampled), static_cast<unsigned long long>(gathered),
+                      static_cast<unsigned long long>(sampled));
         text += line;
     }
     return text;

@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <random>
 #include <string>
 
+#include "bake/lightmap/lightmap_denoise.hpp"
+#include "bake/shard_plan.hpp"
 #include "bake_scenes.hpp"
 #include "shading.hpp"
 #include "tests/support/error_message.hpp"
@@ -168,21 +171,128 @@ TEST(BakeShards, ChartsCellsAndProbesAreCutIntoEqualShares) {
     EXPECT_EQ(shardRange(none, 1, 3).cellBegin, 3u);
 }
 
-// A shard owns the placed texels of its charts, whatever their place in the atlas.
+// A shard owns the placed texels of its charts, whatever their place in the atlas; its range is
+// of positions in the charts' space order.
 TEST(BakeShards, AShardOwnsTheTexelsOfItsCharts) {
     world::CompiledLevel level;
     level.charts.resize(3);
     level.surfaces.resize(3);
-    for (uint32_t s = 0; s < 3; ++s) level.surfaces[s].chart = 2 - s;
+    // Surface s is on chart 2 - s; the charts lie along x at 10 m (chart 0), 0 m (chart 1) and
+    // 5 m (chart 2): in space order 1, 2, 0.
+    const float chartX[3] = {10.0f, 0.0f, 5.0f};
+    for (uint32_t s = 0; s < 3; ++s) {
+        level.surfaces[s].chart = 2 - s;
+        level.surfaces[s].boundsMin = glm::vec3(chartX[2 - s], 0.0f, 0.0f);
+        level.surfaces[s].boundsMax = glm::vec3(chartX[2 - s] + 1.0f, 0.0f, 1.0f);
+    }
+    EXPECT_EQ(chartSpaceOrder(level), (std::vector<uint32_t>{1, 2, 0}));
     std::vector<TexelSample> samples;
     for (uint32_t t = 0; t < 9; ++t) {
         samples.push_back({t});
         samples.back().surface = t % 3;  // charts 2, 1, 0, 2, 1, 0, ... interleaved in rows
     }
     EXPECT_EQ(samplesOfRange(level, samples, {0, 1, 0, 0, 0, 0, 0}),
-              (std::vector<uint32_t>{2, 5, 8}));
+              (std::vector<uint32_t>{1, 4, 7}));
     EXPECT_EQ(samplesOfRange(level, samples, {1, 3, 0, 0, 0, 0, 0}),
-              (std::vector<uint32_t>{0, 1, 3, 4, 6, 7}));
+              (std::vector<uint32_t>{0, 2, 3, 5, 6, 8}));
+}
+
+// The space order is a permutation of the charts that follows a Morton curve: a chart without a
+// surface or without finite bounds first, equal centres by index, huge coordinates no trouble.
+TEST(BakeShards, TheChartsSpaceOrderIsAPermutationAlongAMortonCurve) {
+    EXPECT_TRUE(chartSpaceOrder(world::CompiledLevel{}).empty());
+    world::CompiledLevel level;
+    level.charts.resize(7);
+    // Charts 0..3 at the corners of a square 1e7 m from the origin, in the order (1,1), (0,0),
+    // (1,0), (0,1); chart 4 has no surface; charts 5 and 6 share chart 1's centre; chart 0's
+    // second surface widens it without moving its centre.
+    const glm::vec2 corner[4] = {{1, 1}, {0, 0}, {1, 0}, {0, 1}};
+    const glm::vec3 far(1.0e7f, -1.0e7f, 3.0e6f);
+    const auto add = [&](uint32_t chart, glm::vec3 low, glm::vec3 high) {
+        world::Surface s;
+        s.chart = chart;
+        s.boundsMin = low;
+        s.boundsMax = high;
+        level.surfaces.push_back(s);
+    };
+    for (uint32_t c = 0; c < 4; ++c) {
+        const glm::vec3 at = far + 100.0f * glm::vec3(corner[c], 0.0f);
+        add(c, at - glm::vec3(1.0f), at + glm::vec3(1.0f));
+    }
+    add(0, far + glm::vec3(99.0f, 99.0f, -1.0f), far + glm::vec3(101.0f, 101.0f, 1.0f));
+    add(5, far - glm::vec3(1.0f), far + glm::vec3(1.0f));
+    add(6, far - glm::vec3(0.5f), far + glm::vec3(0.5f));
+    add(world::kNoIndex, glm::vec3(-1e30f), glm::vec3(1e30f));  // on no chart: not counted
+    // Morton order interleaves x in the lowest bit: (0,0), (1,0), (0,1), (1,1).
+    EXPECT_EQ(chartSpaceOrder(level), (std::vector<uint32_t>{4, 1, 5, 6, 2, 3, 0}));
+}
+
+// What the space order is for: a part gathers its own texels and those its denoiser windows read
+// in other parts' charts. On a floor of 32 x 32 small charts numbered at random, cutting the index
+// order in four makes every part gather most of the floor; the space order's quarters gather
+// their own quarter and a band of window reach along two edges.
+TEST(BakeShards, PartsInSpaceOrderGatherLittleBeyondTheirOwnTexels) {
+    constexpr uint32_t kCharts = 32, kTexels = 8;  // per side; a chart is 8 x 8 texels
+    constexpr float kTexelSize = 0.25f;
+    world::CompiledLevel level;
+    level.charts.resize(kCharts * kCharts);
+    std::vector<uint32_t> shuffled(kCharts * kCharts);
+    for (uint32_t c = 0; c < shuffled.size(); ++c) shuffled[c] = c;
+    std::mt19937 random(7);
+    std::shuffle(shuffled.begin(), shuffled.end(), random);
+    std::vector<TexelSample> samples;
+    for (uint32_t cy = 0; cy < kCharts; ++cy)
+        for (uint32_t cx = 0; cx < kCharts; ++cx) {
+            const uint32_t surface = uint32_t(level.surfaces.size());
+            world::Surface s;
+            s.chart = shuffled[cy * kCharts + cx];
+            s.boundsMin = glm::vec3(cx, cy, 0.0f) * (kTexels * kTexelSize);
+            s.boundsMax = s.boundsMin + glm::vec3(kTexels * kTexelSize, kTexels * kTexelSize, 0.0f);
+            level.surfaces.push_back(s);
+            for (uint32_t y = 0; y < kTexels; ++y)
+                for (uint32_t x = 0; x < kTexels; ++x) {
+                    TexelSample t;
+                    t.texel = samples.size();
+                    t.surface = surface;
+                    t.centre = t.position =
+                        s.boundsMin + kTexelSize * glm::vec3(x + 0.5f, y + 0.5f, 0.0f);
+                    t.normal = glm::vec3(0.0f, 0.0f, 1.0f);
+                    t.texelSize = kTexelSize;
+                    t.centreInside = true;
+                    samples.push_back(t);
+                }
+        }
+    const TexelHash hash = makeTexelHash(samples);
+    const auto gathered = [&](const std::vector<uint32_t>& owned) {
+        std::vector<uint8_t> needed;
+        markDenoiseFootprint(hash, samples, owned, needed);
+        return double(std::count(needed.begin(), needed.end(), uint8_t(1)));
+    };
+    ShardCosts costs;
+    costs.charts.assign(level.charts.size(), 1.0);
+    double inSpaceOrder = 0.0, inIndexOrder = 0.0;
+    for (uint32_t part = 0; part < 4; ++part) {
+        const world::ShardRange range = shardRange(costs, part, 4);
+        ASSERT_EQ(range.chartEnd - range.chartBegin, 256u);
+        inSpaceOrder += gathered(samplesOfRange(level, samples, range));
+        std::vector<uint32_t> byIndex;
+        for (uint32_t i = 0; i < samples.size(); ++i) {
+            const uint32_t chart = level.surfaces[samples[i].surface].chart;
+            if (chart >= range.chartBegin && chart < range.chartEnd) byIndex.push_back(i);
+        }
+        inIndexOrder += gathered(byIndex);
+    }
+    inSpaceOrder /= double(samples.size());
+    inIndexOrder /= double(samples.size());
+    std::printf(
+        "[ shards   ] 4 parts gather %.3f x the texels in space order, %.3f x in index "
+        "order\n",
+        inSpaceOrder, inIndexOrder);
+    // Each quarter is 128 x 128 texels: a band of 5.5 texels (the largest window) along two of
+    // its edges adds 2 x 5.5 / 128 = 8.6%, a little more at the corner.
+    EXPECT_LT(inSpaceOrder, 1.1);
+    EXPECT_GT(inSpaceOrder, 1.0);
+    EXPECT_GT(inIndexOrder, 2.5);
 }
 
 // A cell that more lights reach costs more shadow rays; a texel's lights do not count (its

@@ -516,8 +516,9 @@ static_assert(sizeof(DiskErrorBudget) == 48);
 // ---------------------------------------------------------------------------------------------
 // Shard range (id 40), in an unmerged part of a sharded bake only (light_grid's shardCount > 1;
 // never in a whole package; world::ShardRange in memory). One record: the lightmap charts (the
-// texels of their rectangles), light grid cells and probes the part baked, each [begin, end),
-// cut by estimated cost (bake/shard_plan.hpp). chartEnd <= the level's charts, cellEnd <= the
+// texels of their rectangles; positions in the level's space order of charts,
+// bake::chartSpaceOrder), light grid cells and probes the part baked, each [begin, end), cut by
+// estimated cost (bake/shard_plan.hpp). chartEnd <= the level's charts, cellEnd <= the
 // grid's cells, probeEnd <= probeTotal, and the part's probe section holds exactly
 // probeEnd - probeBegin probes. The merge checks that its parts tile [0, total) of each.
 
