@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "run_command.hpp"
 #include "tests/world/world_test_support.hpp"
@@ -171,6 +172,18 @@ TEST_F(SlurmBake, FourShardsEqualALocalBake) {
     for (const char* key : {"\"compile\"", "\"shards\"", "\"stage_seconds\"", "\"merge\"",
                             "\"wall_seconds\"", "\"estimated_core_seconds\""})
         EXPECT_NE(text.find(key), std::string::npos) << key;
+    // The parts gathered every texel they sampled and some of their neighbours' (the denoiser's
+    // windows across their edges), and the summary says how many against a whole bake.
+    const nlohmann::json whole = nlohmann::json::parse(text);
+    const uint64_t sampled = whole["lightmap"]["texels_sampled"],
+                   gathered = whole["lightmap"]["texels_gathered"];
+    EXPECT_GT(sampled, 0u);
+    EXPECT_GT(gathered, sampled);
+    EXPECT_LT(gathered, 4 * sampled);
+    EXPECT_NE(r.output.find("x a whole bake's final gathers (" + std::to_string(gathered) +
+                            " texels for " + std::to_string(sampled)),
+              std::string::npos)
+        << r.output;
     for (int i = 0; i < 4; ++i)
         EXPECT_TRUE(fs::exists(folder_ / "work" / "shards" /
                                ("shard-" + std::to_string(i) + ".stamp.json")));
