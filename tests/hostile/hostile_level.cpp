@@ -1,8 +1,8 @@
 #include "hostile_level.hpp"
 
-#include <unistd.h>
-
 #include <fstream>
+
+#include "tests/support/scratch_folder.hpp"
 
 namespace onelight::test {
 
@@ -44,12 +44,7 @@ std::string writeTriangleLevel(const std::filesystem::path& folder,
 }
 
 std::filesystem::path hostileFolder(const std::string& name) {
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() /
-        ("onelight-hostile-" + name + "-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-    return folder;
+    return scratchFolder("onelight-hostile-" + name);
 }
 
 }  // namespace onelight::test

@@ -1,9 +1,8 @@
 #include "tests/world/world_test_support.hpp"
 
-#include <unistd.h>
-
 #include <filesystem>
 
+#include "tests/support/scratch_folder.hpp"
 #include "world/import/gltf_import.hpp"
 
 namespace onelight::test {
@@ -32,12 +31,7 @@ std::string writeTwoLampFloor(const std::string& label, int cells, double size, 
 }
 
 std::filesystem::path freshFolder(const std::string& label) {
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() /
-        ("onelight-world-" + label + "-" + std::to_string(getpid()));
-    std::filesystem::remove_all(folder);
-    std::filesystem::create_directories(folder);
-    return folder;
+    return scratchFolder("onelight-world-" + label);
 }
 
 }  // namespace onelight::test
