@@ -208,16 +208,17 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
     baked.shardCount = options.shardCount;
     baked.shardRange = {
         0, level.charts.size(), 0, grid.cells.size(), 0, placements.size(), placements.size()};
+    const std::vector<uint32_t> chartOrder = chartSpaceOrder(level);
     if (options.shardCount > 1) {
         const ShardCosts costs =
-            estimateShardCosts(lights, level, samples, grid, placements.size(), lm,
+            estimateShardCosts(lights, level, chartOrder, samples, grid, placements.size(), lm,
                                gridSettings(options), probeSettings(options));
         report.shardCostTotal = shardCost(costs, baked.shardRange);
         baked.shardRange = shardRange(costs, options.shardIndex, options.shardCount);
         report.shardCost = shardCost(costs, baked.shardRange);
     }
     const world::ShardRange& range = baked.shardRange;
-    const std::vector<uint32_t> ownedSamples = samplesOfRange(level, samples, range);
+    const std::vector<uint32_t> ownedSamples = samplesOfRange(level, chartOrder, samples, range);
     baked.texels.assign(texelCount, world::LightmapTexel{});
     baked.shadowMask.assign(texelCount, 0);
     // The source's own bake at the same texels (every shard holds all of it; it is cheap).

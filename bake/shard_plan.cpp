@@ -73,6 +73,7 @@ uint32_t lightsReaching(const BakeLights& lights, const glm::vec3& position) {
 }
 
 ShardCosts estimateShardCosts(const BakeLights& lights, const world::CompiledLevel& level,
+                              const std::vector<uint32_t>& chartOrder,
                               const std::vector<TexelSample>& samples, const world::LightGrid& grid,
                               size_t probes, const LightmapSettings& lightmap,
                               const GridSettings& gridSettings, const ProbeCaptureSettings& probe) {
@@ -85,7 +86,8 @@ ShardCosts estimateShardCosts(const BakeLights& lights, const world::CompiledLev
         if (chart < byChart.size())
             byChart[chart] += lightmap.indirectSamples * path * kTexelPathSeconds;
     }
-    for (const uint32_t chart : chartSpaceOrder(level)) costs.charts.push_back(byChart[chart]);
+    for (const uint32_t chart : chartOrder)
+        costs.charts.push_back(chart < byChart.size() ? byChart[chart] : 0.0);
     costs.cells.resize(grid.cells.size());
     for (size_t i = 0; i < grid.cells.size(); ++i) {
         const double terms =
@@ -145,12 +147,12 @@ double shardCost(const ShardCosts& costs, const world::ShardRange& range) {
 }
 
 std::vector<uint32_t> samplesOfRange(const world::CompiledLevel& level,
+                                     const std::vector<uint32_t>& chartOrder,
                                      const std::vector<TexelSample>& samples,
                                      const world::ShardRange& range) {
     std::vector<uint8_t> inRange(level.charts.size(), 0);
-    const std::vector<uint32_t> order = chartSpaceOrder(level);
-    for (uint64_t k = range.chartBegin; k < range.chartEnd && k < order.size(); ++k)
-        inRange[order[k]] = 1;
+    for (uint64_t k = range.chartBegin; k < range.chartEnd && k < chartOrder.size(); ++k)
+        if (chartOrder[k] < inRange.size()) inRange[chartOrder[k]] = 1;
     std::vector<uint32_t> owned;
     for (uint32_t i = 0; i < samples.size(); ++i) {
         const uint32_t surface = samples[i].surface;

@@ -41,12 +41,13 @@ namespace onelight::bake {
 /// The level's charts in space order: along a Morton curve through the centres of their
 /// surfaces' bounds, over the level's bounds (ties by index). A shard's chart range
 /// [chartBegin, chartEnd) is of positions in this order. Depends on the compiled level alone,
-/// so that the parts and the merge agree.
+/// so that the parts and the merge agree; a bake computes it once and hands it to the two
+/// functions below.
 [[nodiscard]] std::vector<uint32_t> chartSpaceOrder(const world::CompiledLevel& level);
 
 /// The estimated core-seconds of each item in the divided work.
 struct ShardCosts {
-    std::vector<double> charts;  // per chart, in chartSpaceOrder
+    std::vector<double> charts;  // per chart, in the order given to estimateShardCosts
     std::vector<double> cells;   // per light grid cell
     std::vector<double> probes;  // per probe
 };
@@ -54,13 +55,12 @@ struct ShardCosts {
 /// The lights whose light reaches `position` as the direct-light estimate weighs them.
 [[nodiscard]] uint32_t lightsReaching(const BakeLights& lights, const glm::vec3& position);
 
-[[nodiscard]] ShardCosts estimateShardCosts(const BakeLights& lights,
-                                            const world::CompiledLevel& level,
-                                            const std::vector<TexelSample>& samples,
-                                            const world::LightGrid& grid, size_t probes,
-                                            const LightmapSettings& lightmap,
-                                            const GridSettings& gridSettings,
-                                            const ProbeCaptureSettings& probe);
+/// The costs of the level's charts (laid in `chartOrder`, chartSpaceOrder's), cells and probes.
+[[nodiscard]] ShardCosts estimateShardCosts(
+    const BakeLights& lights, const world::CompiledLevel& level,
+    const std::vector<uint32_t>& chartOrder, const std::vector<TexelSample>& samples,
+    const world::LightGrid& grid, size_t probes, const LightmapSettings& lightmap,
+    const GridSettings& gridSettings, const ProbeCaptureSettings& probe);
 
 /// Part `index` of `count`: charts, cells and probes laid end to end in that order, cut where
 /// the running cost reaches index / count of the total (by count when every cost is 0). Every
@@ -71,8 +71,9 @@ struct ShardCosts {
 [[nodiscard]] double shardCost(const ShardCosts& costs, const world::ShardRange& range);
 
 /// The samples (indices into `samples`, increasing) whose charts `range` holds (positions in
-/// chartSpaceOrder).
+/// `chartOrder`, chartSpaceOrder's).
 [[nodiscard]] std::vector<uint32_t> samplesOfRange(const world::CompiledLevel& level,
+                                                   const std::vector<uint32_t>& chartOrder,
                                                    const std::vector<TexelSample>& samples,
                                                    const world::ShardRange& range);
 

@@ -191,9 +191,10 @@ TEST(BakeShards, AShardOwnsTheTexelsOfItsCharts) {
         samples.push_back({t});
         samples.back().surface = t % 3;  // charts 2, 1, 0, 2, 1, 0, ... interleaved in rows
     }
-    EXPECT_EQ(samplesOfRange(level, samples, {0, 1, 0, 0, 0, 0, 0}),
+    const std::vector<uint32_t> order = chartSpaceOrder(level);
+    EXPECT_EQ(samplesOfRange(level, order, samples, {0, 1, 0, 0, 0, 0, 0}),
               (std::vector<uint32_t>{1, 4, 7}));
-    EXPECT_EQ(samplesOfRange(level, samples, {1, 3, 0, 0, 0, 0, 0}),
+    EXPECT_EQ(samplesOfRange(level, order, samples, {1, 3, 0, 0, 0, 0, 0}),
               (std::vector<uint32_t>{0, 2, 3, 5, 6, 8}));
 }
 
@@ -270,11 +271,12 @@ TEST(BakeShards, PartsInSpaceOrderGatherLittleBeyondTheirOwnTexels) {
     };
     ShardCosts costs;
     costs.charts.assign(level.charts.size(), 1.0);
+    const std::vector<uint32_t> order = chartSpaceOrder(level);
     double inSpaceOrder = 0.0, inIndexOrder = 0.0;
     for (uint32_t part = 0; part < 4; ++part) {
         const world::ShardRange range = shardRange(costs, part, 4);
         ASSERT_EQ(range.chartEnd - range.chartBegin, 256u);
-        inSpaceOrder += gathered(samplesOfRange(level, samples, range));
+        inSpaceOrder += gathered(samplesOfRange(level, order, samples, range));
         std::vector<uint32_t> byIndex;
         for (uint32_t i = 0; i < samples.size(); ++i) {
             const uint32_t chart = level.surfaces[samples[i].surface].chart;
@@ -338,7 +340,9 @@ TEST(BakeShards, CostsFollowPathsAndTheLightsThatReachEachCell) {
     ProbeCaptureSettings ps;
     ps.faceSize = 16;
     ps.samplesPerTexel = 4;
-    const ShardCosts cached = estimateShardCosts(lights, level, samples, grid, 1, lm, gs, ps);
+    const std::vector<uint32_t> order = chartSpaceOrder(level);
+    const ShardCosts cached =
+        estimateShardCosts(lights, level, order, samples, grid, 1, lm, gs, ps);
     EXPECT_EQ(lightsReaching(lights, glm::vec3(0.5f)), 2u);
     EXPECT_EQ(lightsReaching(lights, glm::vec3(15.5f, 0.5f, 0.5f)), 1u);
     // 128 paths at 0.45 us, 8 shadow rays per light at 0.1 us.
@@ -348,7 +352,7 @@ TEST(BakeShards, CostsFollowPathsAndTheLightsThatReachEachCell) {
     EXPECT_EQ(cached.charts[0], cached.charts[1]);
     EXPECT_NEAR(cached.probes[0], 6.0 * 16 * 16 * 4 * 1.9e-6, 1e-12);
     lm.bouncePasses = 0;
-    const ShardCosts paths = estimateShardCosts(lights, level, samples, grid, 0, lm, gs, ps);
+    const ShardCosts paths = estimateShardCosts(lights, level, order, samples, grid, 0, lm, gs, ps);
     EXPECT_NEAR(paths.charts[1], 2 * cached.charts[1], 1e-12);
     EXPECT_NEAR(paths.cells[15], 128 * 0.9e-6 + 8 * 1 * 0.1e-6, 1e-12);
     EXPECT_TRUE(paths.probes.empty());
