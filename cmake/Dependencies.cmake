@@ -11,8 +11,6 @@ find_package(TinyGLTF REQUIRED)
 find_package(glm REQUIRED)
 find_package(TBB REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
-find_package(GTest REQUIRED)
-find_package(benchmark REQUIRED)
 # pk3 archives (Quake 3 maps). Through pkg-config: Debian 12's libzip CMake config names the
 # zipcmp/zipmerge/ziptool programs, which libzip-dev does not install, and fails without them.
 find_package(PkgConfig REQUIRED)

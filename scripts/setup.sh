@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
-# Shared by ./play and ./test: install missing Debian packages, configure, build (Release, -j2).
-# Idempotent: a second run installs nothing, configures nothing and builds only what changed.
-# Usage: scripts/setup.sh [BUILD_DIR [extra cmake args...]]; ONELIGHT_TEST_PACKAGES=1 adds the
-# packages of scripts/test-packages.txt (./test sets it).
+# Shared by ./play and ./test: install missing Debian packages, configure (Ninja, Release, ccache),
+# build with -j2. Idempotent: a second run installs nothing, configures nothing and builds only
+# what changed.
+# Usage: scripts/setup.sh [BUILD_DIR [extra cmake args...]]
+#   ONELIGHT_TEST_PACKAGES=1   adds the packages of scripts/test-packages.txt and configures the
+#                              tests, benchmarks and lab (./test sets it)
+#   ONELIGHT_TARGETS="a b"     builds only those targets (./play: the game, the baker, the demo
+#                              level); the default is everything
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-$root/build}
@@ -41,7 +45,20 @@ if [ ${#missing[@]} -gt 0 ]; then
   fi
 fi
 
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cache=$build/CMakeCache.txt
+# A build folder made by another generator (the Makefiles of older checkouts) is configured anew.
+if [ -f "$cache" ] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' "$cache"; then
+  echo "onelight: $build was not configured for Ninja; configuring it again" >&2
+  rm -rf "$cache" "$build/CMakeFiles"
 fi
-cmake --build "$build" -j2
+tests=OFF
+[ "${ONELIGHT_TEST_PACKAGES:-0}" = 1 ] && tests=ON
+if [ ! -f "$cache" ]; then
+  args=(-G Ninja -DCMAKE_BUILD_TYPE=Release)
+  [ "$tests" = ON ] && args+=(-DONELIGHT_TESTS=ON)
+  cmake -S "$root" -B "$build" "${args[@]}" "$@" >/dev/null
+elif [ "$tests" = ON ] && grep -q '^ONELIGHT_TESTS:BOOL=OFF$' "$cache"; then
+  cmake -S "$root" -B "$build" -DONELIGHT_TESTS=ON "$@" >/dev/null
+fi
+read -r -a targets <<< "${ONELIGHT_TARGETS:-all}"
+cmake --build "$build" -j2 --target "${targets[@]}"
