@@ -34,7 +34,7 @@ for target in $targets; do
   esac
 done
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  CC=clang CXX=clang++ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DONELIGHT_FUZZ=ON >/dev/null
 fi
 cmake --build "$build" -j2 --target onelight_fuzzers

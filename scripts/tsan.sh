@@ -7,8 +7,9 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$root/build-tsan
 if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DONELIGHT_TSAN=ON >/dev/null
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DONELIGHT_TESTS=ON \
+    -DONELIGHT_TSAN=ON >/dev/null
 fi
-cmake --build "$build" -j2 --target onelight_bake_unit_tests onelight_bake_visibility_tests
+cmake --build "$build" -j2 --target onelight_bake_tests
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$root/tests/sanitizers/tsan.supp"
 ctest --test-dir "$build" --output-on-failure -R "BakeDeterminism|LightGrid|DominantPrimary|Visibility" "$@"

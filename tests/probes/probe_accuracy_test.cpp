@@ -18,7 +18,7 @@ using namespace onelight::bake::test;
 // the brute-force integral of the lobe over the sphere (the same bilinear source, sub-texels
 // at most alpha / 3 across) within 1% of the mip's peak, at the default options. Mip 1's lobe
 // (alpha 0.008) is narrower than its texels, so it is the source seen at that resolution.
-TEST(ProbePrefilter, BrightSourceMatchesTheIntegratedLobe) {
+TEST(ProbePrefilterAccuracy, BrightSourceMatchesTheIntegratedLobe) {
     Cubemap src = filled(64, brightSource);
     Cubemap c = prefilterGGX(src);
     for (int m = 2; m < c.mipCount(); ++m) {
