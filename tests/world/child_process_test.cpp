@@ -107,8 +107,7 @@ TEST(ChildProcess, ATimeLimitKillsItAndSaysSo) {
     EXPECT_EQ(r.exitCode, -1);
     EXPECT_LT(seconds, 5.0);
     EXPECT_GE(seconds, 0.25);
-    EXPECT_NE(describeEnd(r, options).find("no answer within 0.3 s"), std::string::npos)
-        << describeEnd(r, options);
+    EXPECT_EQ(describeEnd(r), "killed at its time limit");
 }
 
 // Whether process `pid` still runs (neither gone nor a zombie waiting to be reaped).

@@ -247,13 +247,9 @@ ChildResult runChild(const std::vector<std::string>& argv, const ChildOptions& o
     return result;
 }
 
-std::string describeEnd(const ChildResult& result, const ChildOptions& options) {
+std::string describeEnd(const ChildResult& result) {
     if (!result.started) return "could not be started";
-    if (result.timedOut) {
-        std::ostringstream seconds;
-        seconds << options.timeLimitSeconds;
-        return "no answer within " + seconds.str() + " s (killed)";
-    }
+    if (result.timedOut) return "killed at its time limit";
     if (result.signal != 0)
         return "killed by signal " + std::to_string(result.signal) + " (" +
                strsignal(result.signal) + ")";

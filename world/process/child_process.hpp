@@ -43,9 +43,9 @@ struct ChildResult {
 [[nodiscard]] ChildResult runChild(const std::vector<std::string>& argv,
                                    const ChildOptions& options = {});
 
-/// How the run ended, for a message: "exit 3", "killed by signal 9 (Killed)", "no answer within
-/// 2 s (killed)", "could not be started".
-[[nodiscard]] std::string describeEnd(const ChildResult& result, const ChildOptions& options = {});
+/// How the run ended, for a message: "exit 3", "killed by signal 9 (Killed)", "killed at its
+/// time limit", "could not be started".
+[[nodiscard]] std::string describeEnd(const ChildResult& result);
 
 /// Whether `name` is an executable file in one of PATH's folders.
 [[nodiscard]] bool onPath(const std::string& name);
