@@ -1,7 +1,5 @@
 #include "level_source.hpp"
 
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -11,6 +9,7 @@
 
 #include "world/error.hpp"
 #include "world/level_names.hpp"
+#include "world/process/child_process.hpp"
 
 namespace onelight::game {
 
@@ -22,41 +21,6 @@ std::string lowerExtension(const fs::path& path) {
     std::string ext = path.extension().string();
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
     return ext;
-}
-
-fs::path bakeExecutable() {
-    std::error_code ec;
-    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    return ec ? fs::path("onelight-bake") : self.parent_path() / "onelight-bake";
-}
-
-// Runs argv with stdout (and stderr unless `passStderr`) captured; returns the exit code (-1
-// when it did not run).
-int runCaptured(const std::vector<std::string>& argv, std::string& output,
-                bool passStderr = false) {
-    int fds[2];
-    if (pipe(fds) != 0) return -1;
-    const pid_t pid = fork();
-    if (pid < 0) return -1;
-    if (pid == 0) {
-        dup2(fds[1], STDOUT_FILENO);
-        if (!passStderr) dup2(fds[1], STDERR_FILENO);
-        close(fds[0]);
-        close(fds[1]);
-        std::vector<char*> args;
-        for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-        args.push_back(nullptr);
-        execv(args[0], args.data());
-        _exit(127);
-    }
-    close(fds[1]);
-    char buffer[4096];
-    ssize_t n = 0;
-    while ((n = read(fds[0], buffer, sizeof(buffer))) > 0) output.append(buffer, size_t(n));
-    close(fds[0]);
-    int status = 0;
-    if (waitpid(pid, &status, 0) < 0) return -1;
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 // The compiler's error line without its own prefix, or the first line of its output.
@@ -79,25 +43,28 @@ std::string compilerError(const std::string& output) {
 // with the baker's progress bars on stderr when a person watches it (a terminal).
 void compileAndBake(const std::string& level, const std::string& package, const fs::path& bake,
                     const std::vector<std::string>& bakeOptions, const std::string& why) {
-    std::string output;
-    int code = runCaptured({bake.string(), "compile", level, "-o", package}, output);
-    if (code != 0) {
-        const std::string error = compilerError(output);
-        throw world::Error(error.empty() ? level + ": onelight-bake compile failed (exit " +
-                                               std::to_string(code) + ")"
+    world::ChildOptions merged;
+    merged.err = world::ChildStream::kIntoStdout;
+    world::ChildResult run =
+        world::runChild({bake.string(), "compile", level, "-o", package}, merged);
+    if (run.exitCode != 0) {
+        const std::string error = compilerError(run.out);
+        throw world::Error(error.empty() ? level + ": onelight-bake compile failed (" +
+                                               world::describeEnd(run) + ")"
                                          : error);
     }
     const bool watched = isatty(STDERR_FILENO) != 0;
     if (watched) std::fprintf(stderr, "onelight: baking %s (%s)\n", level.c_str(), why.c_str());
-    output.clear();
     std::vector<std::string> argv = {bake.string(), level, "-o", package};
     argv.insert(argv.end(), bakeOptions.begin(), bakeOptions.end());
-    code = runCaptured(argv, output, watched);
-    if (code != 0) {
-        const std::string error = compilerError(output);
-        throw world::Error(error.empty() ? level + ": onelight-bake failed (exit " +
-                                               std::to_string(code) + ")"
-                                         : error);
+    world::ChildOptions options = merged;
+    if (watched) options.err = world::ChildStream::kInherit;  // its progress bars
+    run = world::runChild(argv, options);
+    if (run.exitCode != 0) {
+        const std::string error = compilerError(run.out);
+        throw world::Error(error.empty()
+                               ? level + ": onelight-bake failed (" + world::describeEnd(run) + ")"
+                               : error);
     }
 }
 
@@ -124,7 +91,7 @@ std::string resolveQuake3Package(const std::string& level, const std::string& ba
 }  // namespace
 
 std::string resolveLevelPackage(const std::string& level, const std::string& quality) {
-    return resolveLevelPackageWith(level, bakeExecutable().string(), quality);
+    return resolveLevelPackageWith(level, world::executableBeside("onelight-bake"), quality);
 }
 
 std::string resolveLevelPackageWith(const std::string& level, const std::string& baker,

@@ -33,6 +33,7 @@
 #include "world/level_names.hpp"
 #include "world/package/package_writer.hpp"
 #include "world/package/texture_section.hpp"
+#include "world/process/child_process.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -148,13 +149,6 @@ std::string levelForNodes(const std::string& level) {
     if (colon != std::string::npos && std::filesystem::exists(level.substr(0, colon), error))
         return absolutePath(level.substr(0, colon)) + level.substr(colon);
     return level;
-}
-
-std::string selfExecutable() {
-    std::error_code error;
-    const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (error) throw world::Error("/proc/self/exe: cannot find onelight-bake's own path");
-    return self.string();
 }
 
 std::string shardList(const std::vector<uint32_t>& shards) {
@@ -359,7 +353,7 @@ int runSlurmBake(SlurmCommandLine& line) {
     if (!missing.empty()) compileIntoWorkFolder(source, line, work, manifest);
 
     const slurm::BatchScripts scripts =
-        slurm::batchScripts(work, selfExecutable(), line.bake.output, line.job, missing);
+        slurm::batchScripts(work, world::ownExecutable(), line.bake.output, line.job, missing);
     slurm::writeBatchScripts(work.scripts(), scripts);
     if (!line.emitScripts.empty()) {
         slurm::writeBatchScripts(line.emitScripts, scripts);

@@ -1,6 +1,8 @@
 // level-report's measurements: the level's cameras, a reference per camera (two seeds), and per
 // setting a bake (when it changes the baker's arguments) and a timed frame per camera. The
 // baker and the runtime run as child processes found beside onelight-lab.
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -8,16 +10,17 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 
 #include "bake/report/progress.hpp"
 #include "block_error.hpp"
-#include "child_process.hpp"
 #include "gltf_patch.hpp"
 #include "level_report.hpp"
 #include "pareto.hpp"
 #include "world/error.hpp"
 #include "world/import/level_import.hpp"
+#include "world/process/child_process.hpp"
 
 namespace onelight::lab {
 
@@ -53,14 +56,38 @@ struct Runner {
     std::string bakeExe, runtimeExe, work, log;
 };
 
+// The last `count` lines of `text`, joined by " | ", for an error message.
+std::string lastLines(const std::string& text, size_t count) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    std::string out;
+    for (size_t i = lines.size() > count ? lines.size() - count : 0; i < lines.size(); ++i)
+        out += (out.empty() ? "" : " | ") + lines[i];
+    return out;
+}
+
+// Runs `argv` (argv[0] a path) with its stdout and stderr appended to the log; throws when it
+// does not exit with 0.
 void mustRun(const Runner& r, const std::vector<std::string>& argv) {
-    const ChildRun run = runChild(argv, r.log);
+    world::ChildOptions merged;
+    merged.err = world::ChildStream::kIntoStdout;
+    const world::ChildResult run = world::runChild(argv, merged);
+    std::ofstream(r.log, std::ios::app | std::ios::binary) << run.out;
     if (run.exitCode != 0) {
         std::string line;
         for (const std::string& a : argv) line += (line.empty() ? "" : " ") + a;
-        throw std::runtime_error(line + " exited with " + std::to_string(run.exitCode) + ": " +
-                                 tailOfFile(r.log, 3));
+        throw std::runtime_error(line + " ended with " + world::describeEnd(run) + ": " +
+                                 lastLines(run.out, 3));
     }
+}
+
+// `name` beside onelight-lab, where the build and an install put the engine's programs.
+std::string besideTheLab(const std::string& name) {
+    const std::string path = world::executableBeside(name);
+    if (::access(path.c_str(), X_OK) != 0)
+        throw std::runtime_error(path + ": not found beside onelight-lab (build it)");
+    return path;
 }
 
 std::string sizeText(const LevelReportOptions& o) {
@@ -243,8 +270,8 @@ LevelReport measureLevel(const LevelReportOptions& o) {
     report.settingsPlanned = settings.size();
 
     Runner r;
-    r.bakeExe = siblingExecutable("onelight-bake");
-    r.runtimeExe = siblingExecutable("onelight");
+    r.bakeExe = besideTheLab("onelight-bake");
+    r.runtimeExe = besideTheLab("onelight");
     r.work = o.output + "/work";
     std::filesystem::create_directories(r.work);
     r.log = r.work + "/children.log";

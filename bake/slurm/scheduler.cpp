@@ -2,7 +2,6 @@
 
 #include <sstream>
 
-#include "bake/slurm/run_program.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
 
@@ -18,17 +17,32 @@ std::string firstLine(const std::string& text) {
 
 void requireSlurmClients() {
     for (const char* tool : {"sbatch", "squeue", "scontrol", "scancel"})
-        if (!onPath(tool))
+        if (!world::onPath(tool))
             throw world::Error(std::string(tool) +
                                ": not found on PATH; --slurm needs Slurm's client commands "
                                "(sbatch, squeue, scontrol, scancel: Debian's slurm-client)");
+}
+
+world::ChildResult runSchedulerCommand(const std::vector<std::string>& argv,
+                                       double timeoutSeconds) {
+    world::ChildOptions options;
+    options.timeLimitSeconds = timeoutSeconds;
+    world::ChildResult r = world::runChild(argv, options);
+    if (!r.started)
+        throw world::Error(firstLine(r.err) +
+                           "; expected Slurm's client commands on PATH (package slurm-client)");
+    if (r.timedOut)
+        throw world::Error(argv[0] + ": no answer within " +
+                           std::to_string(static_cast<int>(timeoutSeconds)) +
+                           " s; is the Slurm controller up (scontrol ping)?");
+    return r;
 }
 
 std::string submitJob(const std::vector<std::string>& arguments, const std::string& script) {
     std::vector<std::string> argv = {"sbatch", "--parsable"};
     argv.insert(argv.end(), arguments.begin(), arguments.end());
     argv.push_back(script);
-    const ProgramResult r = runProgram(argv, kSchedulerTimeoutSeconds);
+    const world::ChildResult r = runSchedulerCommand(argv);
     // --parsable prints "JOBID" or "JOBID;CLUSTER".
     const std::string id = r.out.substr(0, r.out.find_first_of(";\n"));
     if (r.exitCode != 0 || id.empty() || id.find_first_not_of("0123456789") != std::string::npos)
@@ -63,9 +77,8 @@ std::vector<TaskState> parseTaskStates(const std::string& text) {
 }
 
 std::vector<TaskState> queryArrayTasks(const std::string& jobId) {
-    const ProgramResult r =
-        runProgram({"squeue", "-h", "-r", "--states=all", "-j", jobId, "-o", "%K|%T|%N"},
-                   kSchedulerTimeoutSeconds);
+    const world::ChildResult r =
+        runSchedulerCommand({"squeue", "-h", "-r", "--states=all", "-j", jobId, "-o", "%K|%T|%N"});
     // A job the controller has forgotten: squeue says "Invalid job id" and exits non-zero.
     if (r.exitCode != 0) return {};
     return parseTaskStates(r.out);
@@ -94,8 +107,7 @@ JobDetails parseJobDetails(const std::string& text) {
 }
 
 JobDetails queryJob(const std::string& jobId) {
-    const ProgramResult r =
-        runProgram({"scontrol", "show", "job", "-o", jobId}, kSchedulerTimeoutSeconds);
+    const world::ChildResult r = runSchedulerCommand({"scontrol", "show", "job", "-o", jobId});
     if (r.exitCode != 0) return {};
     return parseJobDetails(r.out);
 }
@@ -112,7 +124,7 @@ bool finalState(const std::string& state) {
 }
 
 void cancelJob(const std::string& jobId) {
-    (void)runProgram({"scancel", jobId}, kSchedulerTimeoutSeconds);
+    (void)runSchedulerCommand({"scancel", jobId});
 }
 
 }  // namespace onelight::bake::slurm

@@ -1,12 +1,15 @@
 // What the Slurm bake asks the scheduler, through its client commands, each call bounded in
-// time (run_program.hpp): submit the shard array and the merge (sbatch), the state of each
-// shard's task (squeue, one line per array task; accounting, sacct, is not needed), the details
-// of a failed task (scontrol show job: node, exit code, log) and cancelling a job (scancel).
+// time (runSchedulerCommand, world/process/child_process.hpp): submit the shard array and the merge
+// (sbatch), the state of each shard's task (squeue, one line per array task; accounting, sacct, is
+// not needed), the details of a failed task (scontrol show job: node, exit code, log) and
+// cancelling a job (scancel).
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "world/process/child_process.hpp"
 
 namespace onelight::bake::slurm {
 
@@ -15,6 +18,12 @@ constexpr double kSchedulerTimeoutSeconds = 60.0;
 
 /// The client commands the bake runs; throws world::Error naming the first one missing on PATH.
 void requireSlurmClients();
+
+/// Runs client command `argv` (argv[0] looked up on PATH) and waits at most `timeoutSeconds` for
+/// it. Throws world::Error when it cannot be run or does not exit in time (it is then killed);
+/// its exit code and output are the caller's to judge.
+[[nodiscard]] world::ChildResult runSchedulerCommand(
+    const std::vector<std::string>& argv, double timeoutSeconds = kSchedulerTimeoutSeconds);
 
 /// sbatch --parsable [ARGUMENTS...] SCRIPT; returns the job id. Throws world::Error with
 /// sbatch's own message when it refuses.

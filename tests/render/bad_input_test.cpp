@@ -7,7 +7,6 @@
 #include <fstream>
 #include <iterator>
 
-#include "process.hpp"
 #include "test_scene.hpp"
 
 namespace {
@@ -29,18 +28,15 @@ void writeText(const std::string& path, const std::string& text) {
 void expectOneClearLine(const std::string& file, const std::string& expectedWords,
                         std::string named = "") {
     if (named.empty()) named = fs::path(file).filename().string();
-    const test::ProcessResult r =
-        test::runProcess(ONELIGHT_ONELIGHT_PATH, {file, "--headless", "--size", "64x64"});
-    EXPECT_FALSE(r.signalled) << "crashed on " << file;
-    EXPECT_EQ(r.exitCode, 1) << r.stderrText;
-    ASSERT_FALSE(r.stderrText.empty());
-    EXPECT_EQ(r.stderrText.find('\n'), r.stderrText.size() - 1) << "more than one line:\n"
-                                                                << r.stderrText;
-    EXPECT_EQ(r.stderrText.rfind("onelight: ", 0), 0u) << r.stderrText;
-    EXPECT_NE(r.stderrText.find(named), std::string::npos)
-        << "the line does not name the file: " << r.stderrText;
-    EXPECT_NE(r.stderrText.find(expectedWords), std::string::npos) << r.stderrText;
-    std::printf("[ bad input ] %s", r.stderrText.c_str());
+    const world::ChildResult r = test::runOnelight({file, "--headless", "--size", "64x64"});
+    EXPECT_EQ(r.signal, 0) << "crashed on " << file;
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    ASSERT_FALSE(r.err.empty());
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line:\n" << r.err;
+    EXPECT_EQ(r.err.rfind("onelight: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(named), std::string::npos) << "the line does not name the file: " << r.err;
+    EXPECT_NE(r.err.find(expectedWords), std::string::npos) << r.err;
+    std::printf("[ bad input ] %s", r.err.c_str());
 }
 
 TEST(RenderBadInput, MissingGltf) {

@@ -281,10 +281,18 @@ void writeGltf(const Scene& scene, const std::string& path) {
 }
 
 int compileLevel(const std::string& gltf, const std::string& package) {
-    const std::string command = std::string("'") + ONELIGHT_BAKE_PATH + "' compile '" + gltf +
-                                "' -o '" + package + "' > /dev/null";
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    world::ChildOptions options;
+    options.out = world::ChildStream::kDiscard;
+    options.err = world::ChildStream::kInherit;
+    return world::runChild({ONELIGHT_BAKE_PATH, "compile", gltf, "-o", package}, options).exitCode;
+}
+
+world::ChildResult runOnelight(const std::vector<std::string>& args) {
+    std::vector<std::string> argv = {ONELIGHT_ONELIGHT_PATH};
+    argv.insert(argv.end(), args.begin(), args.end());
+    world::ChildOptions options;
+    options.out = world::ChildStream::kDiscard;
+    return world::runChild(argv, options);
 }
 
 assets::LoadedLevel compileAndLoad(const std::string& gltf, const std::string& package) {

@@ -10,6 +10,7 @@
 
 #include "assets/level_assets.hpp"
 #include "render/renderer.hpp"
+#include "world/process/child_process.hpp"
 
 namespace onelight::test {
 
@@ -72,6 +73,9 @@ void writeGltf(const Scene& scene, const std::string& path);
 
 /// Runs `onelight-bake compile GLTF -o PACKAGE`; returns its exit code.
 int compileLevel(const std::string& gltf, const std::string& package);
+
+/// Runs `onelight ARGS...` (no shell) with its stdout discarded and its stderr captured.
+world::ChildResult runOnelight(const std::vector<std::string>& args);
 
 /// Compiles (when needed) and loads; throws std::runtime_error with the error line.
 assets::LoadedLevel compileAndLoad(const std::string& gltf, const std::string& package);

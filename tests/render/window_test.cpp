@@ -8,7 +8,6 @@
 #include <filesystem>
 
 #include "capture/capture.hpp"
-#include "process.hpp"
 #include "test_scene.hpp"
 
 namespace {
@@ -47,10 +46,10 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
     windowed.insert(windowed.end(),
                     {"--frames", "3", "--render-scale", "1", "--capture", dir + "/windowed"});
     headless.insert(headless.end(), {"--headless", "--capture", dir + "/headless"});
-    const test::ProcessResult w = test::runProcess(ONELIGHT_ONELIGHT_PATH, windowed);
-    ASSERT_EQ(w.exitCode, 0) << w.stderrText;
-    const test::ProcessResult h = test::runProcess(ONELIGHT_ONELIGHT_PATH, headless);
-    ASSERT_EQ(h.exitCode, 0) << h.stderrText;
+    const world::ChildResult w = test::runOnelight(windowed);
+    ASSERT_EQ(w.exitCode, 0) << w.err;
+    const world::ChildResult h = test::runOnelight(headless);
+    ASSERT_EQ(h.exitCode, 0) << h.err;
 
     const world::DecodedImage windowShot = capture::readPng(dir + "/windowed_window.png");
     const world::DecodedImage headlessShot = capture::readPng(dir + "/headless.png");
@@ -87,15 +86,14 @@ TEST(RenderWindow, RenderScaleDrawsSmallerAndScalesUp) {
     const std::string dir = test::outputDir() + "/window_scale";
     ASSERT_EQ(compileWindowLevel(dir, "level"), 0);
     const std::string camera = "2,3,6,15,-25";
-    const test::ProcessResult w =
-        test::runProcess(ONELIGHT_ONELIGHT_PATH,
-                         {dir + "/level.olpak", "--size", "320x180", "--camera", camera, "--frames",
-                          "2", "--render-scale", "0.5", "--capture", dir + "/windowed"});
-    ASSERT_EQ(w.exitCode, 0) << w.stderrText;
-    const test::ProcessResult h = test::runProcess(
-        ONELIGHT_ONELIGHT_PATH, {dir + "/level.olpak", "--size", "160x90", "--camera", camera,
-                                 "--headless", "--capture", dir + "/headless"});
-    ASSERT_EQ(h.exitCode, 0) << h.stderrText;
+    const world::ChildResult w = test::runOnelight(
+        {dir + "/level.olpak", "--size", "320x180", "--camera", camera, "--frames", "2",
+         "--render-scale", "0.5", "--capture", dir + "/windowed"});
+    ASSERT_EQ(w.exitCode, 0) << w.err;
+    const world::ChildResult h =
+        test::runOnelight({dir + "/level.olpak", "--size", "160x90", "--camera", camera,
+                           "--headless", "--capture", dir + "/headless"});
+    ASSERT_EQ(h.exitCode, 0) << h.err;
     const world::DecodedImage window = capture::readPng(dir + "/windowed_window.png");
     const world::DecodedImage frame = capture::readPng(dir + "/windowed.png");
     const world::DecodedImage small = capture::readPng(dir + "/headless.png");

@@ -12,7 +12,6 @@
 
 #include "bake/slurm/batch_scripts.hpp"
 #include "bake/slurm/content_hash.hpp"
-#include "bake/slurm/run_program.hpp"
 #include "bake/slurm/scheduler.hpp"
 #include "bake/slurm/work_folder.hpp"
 #include "error_message.hpp"
@@ -217,25 +216,27 @@ TEST(SlurmContentHash, DependsOnEveryByteAndTheOrderOfFiles) {
     EXPECT_NE(dir.find(folder.string()), std::string::npos) << dir;
 }
 
-TEST(SlurmRunProgram, AProgramThatDoesNotAnswerIsKilledInTime) {
+TEST(SlurmScheduler, ACommandThatDoesNotAnswerIsKilledInTime) {
     const auto start = std::chrono::steady_clock::now();
-    const std::string error = test::errorMessage([] { (void)runProgram({"sleep", "30"}, 0.5); });
+    const std::string error = test::errorMessage([] {
+        (void)runSchedulerCommand({"sleep", "30"}, 0.5);
+    });
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_NE(error.find("sleep: no answer within"), std::string::npos) << error;
     EXPECT_LT(seconds, 5.0);
 }
 
-TEST(SlurmRunProgram, CapturesOutputAndExitCodeAndNamesAMissingProgram) {
-    const ProgramResult r = runProgram({"sh", "-c", "echo out; echo err >&2; exit 3"}, 10.0);
+TEST(SlurmScheduler, CapturesOutputAndExitCodeAndNamesAMissingCommand) {
+    const world::ChildResult r =
+        runSchedulerCommand({"sh", "-c", "echo out; echo err >&2; exit 3"}, 10.0);
     EXPECT_EQ(r.exitCode, 3);
     EXPECT_EQ(r.out, "out\n");
     EXPECT_EQ(r.err, "err\n");
     const std::string error =
-        test::errorMessage([] { (void)runProgram({"no-such-sbatch-here"}, 10.0); });
+        test::errorMessage([] { (void)runSchedulerCommand({"no-such-sbatch-here"}, 10.0); });
     EXPECT_NE(error.find("no-such-sbatch-here: cannot run it"), std::string::npos) << error;
-    EXPECT_FALSE(onPath("no-such-sbatch-here"));
-    EXPECT_TRUE(onPath("sh"));
+    EXPECT_NE(error.find("slurm-client"), std::string::npos) << error;
 }
 
 }  // namespace

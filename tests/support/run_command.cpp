@@ -1,21 +1,14 @@
 #include "run_command.hpp"
 
-#include <sys/wait.h>
-
-#include <cstdio>
+#include "world/process/child_process.hpp"
 
 namespace onelight::test {
 
 CommandResult runCommand(const std::string& commandLine) {
-    std::string command = commandLine + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return {-1, "cannot run: " + commandLine};
-    std::string out;
-    char buffer[4096];
-    size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+    world::ChildOptions merged;
+    merged.err = world::ChildStream::kIntoStdout;
+    world::ChildResult r = world::runChild({"/bin/sh", "-c", commandLine}, merged);
+    return {r.exitCode, std::move(r.out)};
 }
 
 }  // namespace onelight::test

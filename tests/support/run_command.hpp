@@ -10,7 +10,8 @@ struct CommandResult {
     std::string output;  // stdout and stderr, interleaved as written
 };
 
-// Runs `commandLine` through the shell with stderr joined to stdout.
+// Runs `commandLine` through /bin/sh with stderr joined to stdout and stdin empty
+// (world/process/child_process.hpp).
 CommandResult runCommand(const std::string& commandLine);
 
 }  // namespace onelight::test
