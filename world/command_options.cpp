@@ -58,7 +58,7 @@ std::string expectedText(const CommandOption& o) {
             return text;
         }
         case OptionKind::kText:
-            return o.expected.empty() ? "a value" : o.expected;
+            return o.expected.empty() ? o.valueName : o.expected;
         case OptionKind::kCustom:
         case OptionKind::kFlag:
             return o.expected;
