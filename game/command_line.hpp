@@ -38,7 +38,9 @@ struct CommandLine {
     bool help = false;  // -h or --help: print usage() and exit 0
 };
 
-/// Parses argv. Throws world::Error, one line ("onelight: " not included), on a bad argument.
+/// Parses argv by the game's option table (world/command_options.hpp). Throws world::Error, one
+/// line naming the option, the value and what was expected ("onelight: " not included), on a bad
+/// argument or a combination that cannot work.
 [[nodiscard]] CommandLine parseCommandLine(int argc, char** argv);
 
 /// The help: synopsis, what the modes are, every option with its default.

@@ -1,50 +1,33 @@
-// What the onelight-bake subcommands share: number parsing for options and the one way a
-// failure inside a command becomes an error line and exit code 1.
+// What the onelight-bake subcommands share: the one way a command line is parsed (by the
+// command's option table, world/command_options.hpp) and refused ("onelight-bake: error: ...",
+// exit code 2), and the one way a failure inside a command becomes an error line and exit code 1.
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "world/compiled_level.hpp"
-#include "world/import/q3/q3_import.hpp"
+#include "world/command_options.hpp"
 
 namespace onelight::bake {
-
-/// One option of a subcommand, as its help lists it.
-struct CliOption {
-    std::string flag;          // e.g. "--quality Q"
-    std::string meaning;       // what it sets
-    std::string defaultValue;  // what applies without it; kRequired, or "" for none (-h)
-};
-inline const std::string kRequired = "required";
-
-/// A subcommand's help: the synopsis, what it does, then every option with its default, one a
-/// line, aligned.
-[[nodiscard]] std::string formatUsage(const std::string& synopsis, const std::string& summary,
-                                      const std::vector<CliOption>& options);
 
 /// What LEVEL may be, for every subcommand's help.
 inline const std::string kLevelMeaning =
     "LEVEL: a glTF (.gltf, .glb), a Quake 3 map (.bsp), PAK.pk3:maps/NAME.bsp, or the NAME of an "
     "installed OpenArena map";
 
-/// --patch-level N: how finely a Quake 3 map's curved patches are tessellated.
-[[nodiscard]] CliOption patchLevelOption();
+/// --patch-level N: how finely a Quake 3 map's curved patches are tessellated (the bake, compile
+/// and reference take it).
+[[nodiscard]] world::CommandOption patchLevelOption();
 
-/// Reads --patch-level's value into `options`; false (and `options` unchanged) unless it is an
-/// integer in [1, 64].
-[[nodiscard]] bool parsePatchLevel(const std::string& text, world::Quake3Options& options);
-
-/// `value` as the shortest text that reads it back ("%g").
-[[nodiscard]] std::string formatNumber(double value);
-
-/// When `arguments` ask for help (-h or --help anywhere), prints `usage` on stdout and returns
-/// true: the command then exits 0.
-[[nodiscard]] bool printedHelp(const std::vector<std::string>& arguments, const std::string& usage);
-
-/// The whole of `text` as a number in [low, high]; false otherwise (no partial parses).
-[[nodiscard]] bool parseNumber(const std::string& text, double low, double high, double& out);
+/// Parses `arguments` with `table` and hands them to `run`, returning its exit code. -h or --help
+/// prints `help` (the table's own when empty) on stdout: exit code 0. A world::Error while parsing
+/// or inside `run` (a combination refused) becomes "onelight-bake: error: ..." on stderr, exit
+/// code 2; `run` reports the failures of the work itself (runReportingErrors).
+[[nodiscard]] int runCommandLine(const world::CommandTable& table,
+                                 const std::vector<std::string>& arguments,
+                                 const std::function<int(const world::ParsedOptions&)>& run,
+                                 const std::string& help = "");
 
 /// Runs `command` and returns its exit code; an exception becomes "onelight-bake: error: ..."
 /// on stderr and exit code 1: a world::Error as its message (it names file and place),

@@ -12,11 +12,14 @@
 #include "world/error.hpp"
 #include "world/file_read.hpp"
 #include "world/import/level_import.hpp"
+#include "world/level_names.hpp"
 #include "world/package/package_writer.hpp"
 #include "world/package/texture_section.hpp"
 
 namespace onelight::bake {
 namespace {
+
+int compileFromCommandLine(const world::ParsedOptions& parsed);
 
 void printSummary(const std::string& output, const world::CompileStats& s, size_t bytes) {
     std::printf("compiled %s (%zu bytes)\n", output.c_str(), bytes);
@@ -52,71 +55,56 @@ void printSummary(const std::string& output, const world::CompileStats& s, size_
 
 }  // namespace
 
+const world::CommandTable& compileCommandTable() {
+    static const world::CommandTable table = [] {
+        const world::ChartOptions d;
+        world::CommandTable t;
+        t.program = "onelight-bake compile";
+        t.synopsis = "onelight-bake compile LEVEL [-o LEVEL.olpak] [OPTIONS]";
+        t.summary =
+            "compiles LEVEL without lighting (BSP, primaries, charts) and prints a summary\n  " +
+            kLevelMeaning;
+        t.options = {
+            world::textOption("-o", "PATH", "the package to write",
+                              "LEVEL with the extension .olpak"),
+            world::realOption("--texels-per-metre", "N", 0.01, 1024.0, "lightmap density",
+                              "the level's, or " + world::shortestNumber(d.texelsPerMetre)),
+            world::integerOption("--atlas-size", "N", 64, 16384, "texels per side of an atlas",
+                                 std::to_string(d.atlasSize)),
+            patchLevelOption()};
+        t.positionalName = "level";
+        t.minPositionals = t.maxPositionals = 1;
+        return t;
+    }();
+    return table;
+}
+
 std::string compileUsage() {
-    const world::ChartOptions d;
-    return formatUsage(
-        "onelight-bake compile LEVEL [-o LEVEL.olpak] [OPTIONS]",
-        "compiles LEVEL without lighting (BSP, primaries, charts) and prints a summary\n  " +
-            kLevelMeaning,
-        {{"-o PATH", "the package to write", "LEVEL with the extension .olpak"},
-         {"--texels-per-metre N", "lightmap density, 0.01..1024",
-          "the level's, or " + formatNumber(d.texelsPerMetre)},
-         {"--atlas-size N", "texels per side of an atlas, 64..16384", std::to_string(d.atlasSize)},
-         patchLevelOption(),
-         {"-h, --help", "this help", ""}});
+    return world::formatHelp(compileCommandTable());
 }
 
 int runCompileCommand(const std::vector<std::string>& arguments) {
-    if (printedHelp(arguments, compileUsage())) return 0;
-    std::string input, output;
+    return runCommandLine(compileCommandTable(), arguments, [](const world::ParsedOptions& parsed) {
+        return compileFromCommandLine(parsed);
+    });
+}
+
+namespace {
+
+int compileFromCommandLine(const world::ParsedOptions& parsed) {
+    const std::string input = parsed.positionals.at(0);
+    const std::string output =
+        parsed.has("-o") ? parsed.text("-o") : world::defaultPackagePath(input);
     world::CompileOptions options;
     world::Quake3Options quake3;
-    for (size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& a = arguments[i];
-        const bool hasValue = i + 1 < arguments.size();
-        double value = 0.0;
-        if (a == "-o" && hasValue) {
-            output = arguments[++i];
-        } else if (a == "--texels-per-metre" && hasValue) {
-            if (!parseNumber(arguments[++i], 0.01, 1024.0, value)) {
-                std::fprintf(stderr,
-                             "onelight-bake compile: --texels-per-metre '%s'; expected a number in "
-                             "[0.01, 1024]\n",
-                             arguments[i].c_str());
-                return 2;
-            }
-            options.charts.texelsPerMetre = value;
-            options.charts.densityFromCommandLine = true;
-        } else if (a == "--atlas-size" && hasValue) {
-            if (!parseNumber(arguments[++i], 64.0, 16384.0, value)) {
-                std::fprintf(stderr,
-                             "onelight-bake compile: --atlas-size '%s'; expected an integer in "
-                             "[64, 16384]\n",
-                             arguments[i].c_str());
-                return 2;
-            }
-            options.charts.atlasSize = static_cast<uint32_t>(value);
-        } else if (a == "--patch-level" && hasValue) {
-            if (!parsePatchLevel(arguments[++i], quake3)) {
-                std::fprintf(stderr,
-                             "onelight-bake compile: --patch-level '%s'; expected an integer in "
-                             "[1, 64]\n",
-                             arguments[i].c_str());
-                return 2;
-            }
-        } else if (!a.empty() && a[0] != '-' && input.empty()) {
-            input = a;
-        } else {
-            std::fprintf(stderr, "onelight-bake compile: unexpected argument '%s'\n%s", a.c_str(),
-                         compileUsage().c_str());
-            return 2;
-        }
+    if (parsed.has("--texels-per-metre")) {
+        options.charts.texelsPerMetre = parsed.real("--texels-per-metre");
+        options.charts.densityFromCommandLine = true;
     }
-    if (input.empty()) {
-        std::fprintf(stderr, "onelight-bake compile: no level given\n%s", compileUsage().c_str());
-        return 2;
-    }
-    if (output.empty()) output = world::defaultPackagePath(input);
+    if (parsed.has("--atlas-size"))
+        options.charts.atlasSize = static_cast<uint32_t>(parsed.integer("--atlas-size"));
+    if (parsed.has("--patch-level"))
+        quake3.patchLevel = static_cast<uint32_t>(parsed.integer("--patch-level"));
     return runReportingErrors(input, [&] {
         const world::SourceLevel source = world::importLevel(input, quake3);
         world::refuseOutputOverInput(output, source.inputFiles);
@@ -136,4 +124,5 @@ int runCompileCommand(const std::vector<std::string>& arguments) {
     });
 }
 
+}  // namespace
 }  // namespace onelight::bake

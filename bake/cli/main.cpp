@@ -1,8 +1,10 @@
-// onelight-bake SUBCOMMAND ...: dispatches to the subcommand.
+// onelight-bake SUBCOMMAND ...: dispatches to the subcommand; anything else is the bake's command
+// line (bake_plan.hpp).
 #include <cstdio>
 #include <string>
 #include <vector>
 
+#include "bake/cli/bake_plan.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "bake/report/interrupt.hpp"
 
@@ -36,7 +38,9 @@ std::string usage() {
 int main(int argc, char** argv) {
     onelight::bake::installInterruptHandler("onelight-bake");
     if (argc < 2) {
-        std::fprintf(stderr, "onelight-bake: no level or subcommand given\n%s", usage().c_str());
+        std::fprintf(stderr,
+                     "onelight-bake: error: no level or subcommand given (onelight-bake --help "
+                     "lists them)\n");
         return 2;
     }
     const std::string name = argv[1];
@@ -47,8 +51,5 @@ int main(int argc, char** argv) {
     const std::vector<std::string> arguments(argv + 2, argv + argc);
     for (const Subcommand& s : kSubcommands)
         if (name == s.name) return s.run(arguments);
-    if (name[0] != '-') return onelight::bake::runBakeCommand({argv + 1, argv + argc});
-    std::fprintf(stderr, "onelight-bake: unknown subcommand '%s'\n%s", name.c_str(),
-                 usage().c_str());
-    return 2;
+    return onelight::bake::runBakeCommand({argv + 1, argv + argc});
 }

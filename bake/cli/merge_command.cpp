@@ -1,5 +1,6 @@
 // onelight-bake merge -o LEVEL.olpak PART0.olpak PART1.olpak ...: joins the parts of a sharded
 // bake (`--shard i/N`) into the package a whole bake writes, byte for byte.
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -13,34 +14,41 @@
 #include "world/package/texture_section.hpp"
 
 namespace onelight::bake {
+namespace {
+
+int mergeParts(const std::string& output, const std::vector<std::string>& inputs);
+
+}  // namespace
+
+const world::CommandTable& mergeCommandTable() {
+    static const world::CommandTable table = [] {
+        world::CommandTable t;
+        t.program = "onelight-bake merge";
+        t.synopsis = "onelight-bake merge -o LEVEL.olpak PART.olpak...";
+        t.summary = "joins the parts of a sharded bake (--shard i/N) into the whole package";
+        t.options = {
+            world::textOption("-o", "PATH", "the package to write", world::kRequiredOption)};
+        t.positionalName = "part";
+        t.minPositionals = 1;
+        t.maxPositionals = SIZE_MAX;
+        return t;
+    }();
+    return table;
+}
 
 std::string mergeUsage() {
-    return formatUsage(
-        "onelight-bake merge -o LEVEL.olpak PART.olpak...",
-        "joins the parts of a sharded bake (--shard i/N) into the whole package",
-        {{"-o PATH", "the package to write", kRequired}, {"-h, --help", "this help", ""}});
+    return world::formatHelp(mergeCommandTable());
 }
 
 int runMergeCommand(const std::vector<std::string>& arguments) {
-    if (printedHelp(arguments, mergeUsage())) return 0;
-    std::string output;
-    std::vector<std::string> inputs;
-    for (size_t i = 0; i < arguments.size(); ++i) {
-        if (arguments[i] == "-o" && i + 1 < arguments.size())
-            output = arguments[++i];
-        else if (!arguments[i].empty() && arguments[i][0] != '-')
-            inputs.push_back(arguments[i]);
-        else {
-            std::fprintf(stderr, "onelight-bake merge: unexpected argument '%s'\n",
-                         arguments[i].c_str());
-            return 2;
-        }
-    }
-    if (output.empty() || inputs.empty()) {
-        std::fprintf(stderr, "onelight-bake merge: -o and at least one part are required\n%s",
-                     mergeUsage().c_str());
-        return 2;
-    }
+    return runCommandLine(mergeCommandTable(), arguments, [](const world::ParsedOptions& parsed) {
+        return mergeParts(parsed.text("-o"), parsed.positionals);
+    });
+}
+
+namespace {
+
+int mergeParts(const std::string& output, const std::vector<std::string>& inputs) {
     return runReportingErrors(inputs[0], [&] {
         world::refuseOutputOverInput(output, inputs);
         world::CompiledLevel level;
@@ -82,4 +90,5 @@ int runMergeCommand(const std::vector<std::string>& arguments) {
     });
 }
 
+}  // namespace
 }  // namespace onelight::bake

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include <tbb/global_control.h>
 
@@ -20,80 +21,64 @@
 #include "world/import/level_import.hpp"
 
 namespace onelight::bake {
+namespace {
+
+int renderFromCommandLine(const world::ParsedOptions& parsed);
+
+}  // namespace
+
+const world::CommandTable& referenceCommandTable() {
+    static const world::CommandTable table = [] {
+        world::CommandTable t;
+        t.program = "onelight-bake reference";
+        t.synopsis = "onelight-bake reference LEVEL --camera NAME --spp N -o OUT.exr [OPTIONS]";
+        t.summary =
+            "path-traces the camera's view: linear radiance in cd/m^2, no exposure, no tonemap\n "
+            " " +
+            kLevelMeaning;
+        t.options = {
+            world::textOption("--camera", "NAME", "the level's camera to render",
+                              world::kRequiredOption),
+            world::integerOption("--spp", "N", 1, 1 << 24, "paths per pixel",
+                                 world::kRequiredOption),
+            world::textOption("-o", "PATH", "the EXR to write", world::kRequiredOption),
+            world::sizeOption("--size", 1, 16384, "image size",
+                              "720 rows at the camera's aspect, else 1280x720"),
+            world::realOption("--sky", "CD_PER_M2", 0.0, 1e9, "a uniform sky's radiance",
+                              "the level's extras.onelight.sky, or 0"),
+            world::integerOption("--threads", "N", 1, 1024, "worker threads", "every core"),
+            world::integerOption("--seed", "N", 0, 4294967295.0,
+                                 "the paths' seed: another seed, an independent estimate", "0"),
+            patchLevelOption()};
+        t.positionalName = "level";
+        t.minPositionals = t.maxPositionals = 1;
+        return t;
+    }();
+    return table;
+}
+
 std::string referenceUsage() {
-    return formatUsage(
-        "onelight-bake reference LEVEL --camera NAME --spp N -o OUT.exr [OPTIONS]",
-        "path-traces the camera's view: linear radiance in cd/m^2, no exposure, no tonemap\n  " +
-            kLevelMeaning,
-        {{"--camera NAME", "the level's camera to render", kRequired},
-         {"--spp N", "paths per pixel", kRequired},
-         {"-o PATH", "the EXR to write", kRequired},
-         {"--size WxH", "image size, 1..16384 each",
-          "720 rows at the camera's aspect, else 1280x720"},
-         {"--sky CD_PER_M2", "a uniform sky's radiance", "the level's extras.onelight.sky, or 0"},
-         {"--threads N", "worker threads", "every core"},
-         {"--seed N", "the paths' seed, 0..2^32-1: another seed, an independent estimate", "0"},
-         patchLevelOption(),
-         {"-h, --help", "this help", ""}});
+    return world::formatHelp(referenceCommandTable());
 }
 
 int runReferenceCommand(const std::vector<std::string>& arguments) {
-    if (printedHelp(arguments, referenceUsage())) return 0;
-    std::string input, output, cameraName;
-    uint32_t width = 0, height = 0, spp = 0, seed = 0;
-    int threads = 0;
-    float sky = -1.0f;  // < 0: the level's sky
+    return runCommandLine(referenceCommandTable(), arguments, &renderFromCommandLine);
+}
+
+namespace {
+
+int renderFromCommandLine(const world::ParsedOptions& parsed) {
+    const std::string input = parsed.positionals.at(0), output = parsed.text("-o"),
+                      cameraName = parsed.text("--camera");
+    const uint32_t spp = uint32_t(parsed.integer("--spp"));
+    const uint32_t seed = parsed.has("--seed") ? uint32_t(parsed.integer("--seed")) : 0u;
+    const int threads = parsed.has("--threads") ? int(parsed.integer("--threads")) : 0;
+    uint32_t width = 0, height = 0;
+    if (parsed.has("--size")) std::tie(width, height) = parsed.size("--size");
+    const float sky =
+        parsed.has("--sky") ? float(parsed.real("--sky")) : -1.0f;  // < 0: the level's
     world::Quake3Options quake3;
-    try {
-        for (size_t i = 0; i < arguments.size(); ++i) {
-            const std::string& a = arguments[i];
-            const bool hasValue = i + 1 < arguments.size();
-            if (a == "-o" && hasValue) {
-                output = arguments[++i];
-            } else if (a == "--camera" && hasValue) {
-                cameraName = arguments[++i];
-            } else if (a == "--size" && hasValue) {
-                const std::string s = arguments[++i];
-                const size_t x = s.find('x');
-                if (x == std::string::npos) throw std::invalid_argument("--size " + s);
-                width = static_cast<uint32_t>(std::stoul(s.substr(0, x)));
-                height = static_cast<uint32_t>(std::stoul(s.substr(x + 1)));
-                if (width == 0 || height == 0 || width > 16384 || height > 16384)
-                    throw std::invalid_argument("--size " + s);
-            } else if (a == "--spp" && hasValue) {
-                spp = static_cast<uint32_t>(std::stoul(arguments[++i]));
-            } else if (a == "--threads" && hasValue) {
-                threads = std::stoi(arguments[++i]);
-            } else if (a == "--seed" && hasValue) {
-                double v = 0.0;
-                if (!parseNumber(arguments[++i], 0, 4294967295.0, v) || v != std::floor(v))
-                    throw std::invalid_argument("--seed " + arguments[i] +
-                                                "; expected an integer in [0, 2^32 - 1]");
-                seed = static_cast<uint32_t>(v);
-            } else if (a == "--sky" && hasValue) {
-                sky = std::stof(arguments[++i]);
-                if (!(sky >= 0.0f) || !std::isfinite(sky)) throw std::invalid_argument("--sky");
-            } else if (a == "--patch-level" && hasValue) {
-                if (!parsePatchLevel(arguments[++i], quake3))
-                    throw std::invalid_argument("--patch-level " + arguments[i] +
-                                                "; expected an integer in [1, 64]");
-            } else if (!a.empty() && a[0] != '-' && input.empty()) {
-                input = a;
-            } else {
-                throw std::invalid_argument("unexpected argument '" + a + "'");
-            }
-        }
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "onelight-bake reference: bad argument (%s)\n%s", e.what(),
-                     referenceUsage().c_str());
-        return 2;
-    }
-    if (input.empty() || output.empty() || cameraName.empty() || spp == 0) {
-        std::fprintf(stderr,
-                     "onelight-bake reference: a level, --camera, --spp and -o are required\n%s",
-                     referenceUsage().c_str());
-        return 2;
-    }
+    if (parsed.has("--patch-level")) quake3.patchLevel = uint32_t(parsed.integer("--patch-level"));
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0)
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
@@ -135,4 +120,5 @@ int runReferenceCommand(const std::vector<std::string>& arguments) {
     });
 }
 
+}  // namespace
 }  // namespace onelight::bake

@@ -16,7 +16,7 @@
 
 #include <tbb/global_control.h>
 
-#include "bake/cli/bake_command_line.hpp"
+#include "bake/cli/bake_plan.hpp"
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "bake/report/interrupt.hpp"
@@ -45,96 +45,6 @@ using slurm::WorkFolder;
 /// and a merge cancelled by a failed shard ends within seconds.
 constexpr double kMergeWaitSeconds = 3600.0;
 constexpr double kCancelledMergeWaitSeconds = 120.0;
-
-struct SlurmCommandLine {
-    uint32_t shards = 0;
-    slurm::JobOptions job;
-    std::string work, emitScripts;
-    uint32_t retries = 0;
-    bool wait = true;
-    BakeCommandLine bake;
-    std::vector<std::string> bakeArguments;  // the options that change the shards' bytes
-};
-
-/// Prints a bad argument with the usage; false, for the parser to return.
-bool refuse(const std::string& what) {
-    std::fprintf(stderr, "onelight-bake: %s\n%s", what.c_str(), slurmUsage().c_str());
-    return false;
-}
-
-bool takesValue(const std::string& option) {
-    for (const char* o : {"-o", "--quality", "--threads", "--report", "--shard", "--sky",
-                          "--grid-cell", "--texels-per-metre", "--patch-level"})
-        if (option == o) return true;
-    return false;
-}
-
-/// Splits the Slurm options from the bake's; false (after printing why) on a bad one.
-bool parseSlurmCommandLine(const std::vector<std::string>& arguments, SlurmCommandLine& line) {
-    std::vector<std::string> bake;
-    bool sawShards = false;
-    for (size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& a = arguments[i];
-        const bool hasValue = i + 1 < arguments.size();
-        double v = 0.0;
-        if (a == "--slurm" && !hasValue) {
-            return refuse("--slurm needs a value: the number of shards, 1..10000");
-        } else if (a == "--slurm") {
-            if (!parseNumber(arguments[++i], 1, 10000, v) || v != double(int(v)))
-                return refuse("--slurm '" + arguments[i] +
-                              "'; expected a number of shards in [1, 10000]");
-            line.shards = uint32_t(v);
-            sawShards = true;
-        } else if (a == "--partition" && hasValue) {
-            line.job.partition = arguments[++i];
-        } else if (a == "--time" && hasValue) {
-            line.job.timeLimit = arguments[++i];
-            if (line.job.timeLimit.find_first_not_of("0123456789:-") != std::string::npos ||
-                line.job.timeLimit.empty())
-                return refuse("--time '" + line.job.timeLimit +
-                              "'; expected a Slurm time limit such as 30, 1:00:00 or 1-0");
-        } else if (a == "--cpus-per-task" && hasValue) {
-            if (!parseNumber(arguments[++i], 1, 1024, v) || v != double(int(v)))
-                return refuse("--cpus-per-task '" + arguments[i] + "'; expected 1..1024");
-            line.job.cpusPerTask = uint32_t(v);
-        } else if (a == "--retries" && hasValue) {
-            if (!parseNumber(arguments[++i], 0, 100, v) || v != double(int(v)))
-                return refuse("--retries '" + arguments[i] + "'; expected 0..100");
-            line.retries = uint32_t(v);
-        } else if (a == "--work" && hasValue) {
-            line.work = arguments[++i];
-        } else if (a == "--emit-scripts" && hasValue) {
-            line.emitScripts = arguments[++i];
-        } else if (a == "--no-wait") {
-            line.wait = false;
-        } else if (a == "--shard") {
-            return refuse(
-                "--shard with --slurm; expected one or the other (--slurm N bakes "
-                "every shard)");
-        } else if ((a == "--partition" || a == "--time" || a == "--cpus-per-task" ||
-                    a == "--retries" || a == "--work" || a == "--emit-scripts") &&
-                   !hasValue) {
-            return refuse(a + " needs a value");
-        } else {
-            bake.push_back(a);
-        }
-    }
-    if (!sawShards) return refuse("--slurm N is required");
-    if (!parseBakeCommandLine(bake, line.bake)) return false;
-    // What every shard bakes with: all but the level, where the output goes, the report, the
-    // threads (they do not change the bytes) and --quiet.
-    for (size_t i = 0; i < bake.size(); ++i) {
-        const std::string& a = bake[i];
-        const bool local = a == "-o" || a == "--report" || a == "--threads";
-        if (takesValue(a) && i + 1 < bake.size()) {
-            if (!local) line.bakeArguments.insert(line.bakeArguments.end(), {a, bake[i + 1]});
-            ++i;
-        } else if (a != "--quiet" && a != line.bake.input) {
-            line.bakeArguments.push_back(a);
-        }
-    }
-    return true;
-}
 
 std::string absolutePath(const std::string& path) {
     return std::filesystem::absolute(path).lexically_normal().string();
@@ -190,7 +100,7 @@ std::optional<slurm::SubmittedJobs> submissionInFlight(const WorkFolder& work,
     return jobs;
 }
 
-void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Manifest& manifest,
+void printSummary(const BakePlan& plan, const WorkFolder& work, const Manifest& manifest,
                   const std::string& mergeJob, double wallSeconds) {
     std::vector<BakeReport> reports;
     std::vector<slurm::ShardStamp> stamps;
@@ -204,12 +114,12 @@ void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Ma
         slurm::combineShardReports(slurm::readReport(work.compiledReport()), reports);
     const std::optional<slurm::MergeStamp> merge = slurm::readMergeStamp(work);
     whole.packageBytes = merge ? merge->packageBytes : 0;
-    if (!line.bake.reportPath.empty())
-        slurm::writeSlurmReport(line.bake.reportPath, whole, compiled.value_or(slurm::ShardStamp{}),
+    if (!plan.reportPath.empty())
+        slurm::writeSlurmReport(plan.reportPath, whole, compiled.value_or(slurm::ShardStamp{}),
                                 stamps, reports, merge.value_or(slurm::MergeStamp{}), wallSeconds);
     std::printf("baked %s (%llu bytes, quality %s, %u shards on Slurm, merge job %s)\n",
-                line.bake.output.c_str(), static_cast<unsigned long long>(whole.packageBytes),
-                qualityName(line.bake.options.quality), manifest.shardCount, mergeJob.c_str());
+                plan.output.c_str(), static_cast<unsigned long long>(whole.packageBytes),
+                qualityName(plan.options.quality), manifest.shardCount, mergeJob.c_str());
     std::printf("%s", reportSummary(whole).c_str());
     std::printf("  (stage seconds and rays are summed over the shards)\n");
     if (compiled)
@@ -226,7 +136,7 @@ void printSummary(const SlurmCommandLine& line, const WorkFolder& work, const Ma
 /// Compiles the level once into the work folder (stages 0 to 2 of the bake: the texture
 /// stage, the scene, the compile with its density pilot), its images placed for the output, and
 /// stamps it; every shard then bakes from it. Skipped when its stamp already verifies.
-void compileIntoWorkFolder(const world::SourceLevel& source, const SlurmCommandLine& line,
+void compileIntoWorkFolder(const world::SourceLevel& source, const BakePlan& plan,
                            const WorkFolder& work, const Manifest& manifest) {
     if (const std::optional<slurm::ShardStamp> done = slurm::verifiedCompiled(work, manifest)) {
         std::printf("the compiled level in %s verifies: not compiled again\n",
@@ -235,7 +145,7 @@ void compileIntoWorkFolder(const world::SourceLevel& source, const SlurmCommandL
     }
     const auto start = std::chrono::steady_clock::now();
     noteStage("compiling the level");
-    BakeOptions options = line.bake.options;
+    BakeOptions options = plan.options;
     options.shardIndex = 0;
     options.shardCount = 1;
     BakeReport report = startReport(source, options);
@@ -260,15 +170,15 @@ void compileIntoWorkFolder(const world::SourceLevel& source, const SlurmCommandL
 }
 
 /// Waits for the rounds of shard tasks (a first one, then one per retry) and the merge.
-int waitForBake(const SlurmCommandLine& line, const WorkFolder& work, const Manifest& manifest,
+int waitForBake(const BakePlan& plan, const WorkFolder& work, const Manifest& manifest,
                 std::vector<uint32_t> shards, std::pair<std::string, std::string> jobs) {
     const auto start = std::chrono::steady_clock::now();
-    if (line.bake.options.showProgress)
+    if (plan.options.showProgress)
         std::fprintf(
             stderr,
             "onelight-bake: waiting for the jobs; Ctrl-C stops waiting, the jobs go on and "
             "rerunning the same command resumes\n");
-    Progress progress("shards", shards.size(), line.bake.options.showProgress);
+    Progress progress("shards", shards.size(), plan.options.showProgress);
     for (uint32_t attempt = 0; !shards.empty(); ++attempt) {
         std::vector<slurm::ShardFailure> failures = slurm::watchShardArray(
             work, manifest, jobs.first, shards, [&](uint32_t) { progress.advance(1); },
@@ -281,13 +191,13 @@ int waitForBake(const SlurmCommandLine& line, const WorkFolder& work, const Mani
         // The merge was cancelled by the failure (--kill-on-invalid-dep); make sure of it.
         const slurm::JobDetails merge = slurm::waitForJob(jobs.second, kCancelledMergeWaitSeconds);
         if (!merge.state.empty() && !slurm::finalState(merge.state)) slurm::cancelJob(jobs.second);
-        if (attempt < line.retries) {
+        if (attempt < plan.slurm->retries) {
             jobs = submit(work, shards);
             std::fprintf(stderr,
                          "onelight-bake: resubmitted %s (retry %u of %u) as array job %s, the "
                          "merge as job %s\n",
-                         shardList(shards).c_str(), attempt + 1, line.retries, jobs.first.c_str(),
-                         jobs.second.c_str());
+                         shardList(shards).c_str(), attempt + 1, plan.slurm->retries,
+                         jobs.first.c_str(), jobs.second.c_str());
             continue;
         }
         std::string message = std::to_string(failures.size()) + " of " +
@@ -309,33 +219,35 @@ int waitForBake(const SlurmCommandLine& line, const WorkFolder& work, const Mani
                            (merge.exitCode.empty() ? "" : " (exit " + merge.exitCode + ")") +
                            (merge.log.empty() ? "" : "; its log: " + merge.log) +
                            "; no package was written");
-    if (!stamp || stamp->output != line.bake.output)
+    if (!stamp || stamp->output != plan.output)
         throw world::Error(work.mergeStamp() +
                            ": missing or for another output after the merge "
                            "job " +
-                           jobs.second + "; expected " + line.bake.output);
-    printSummary(line, work, manifest, jobs.second,
+                           jobs.second + "; expected " + plan.output);
+    printSummary(plan, work, manifest, jobs.second,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return 0;
 }
 
-int runSlurmBake(SlurmCommandLine& line) {
-    line.bake.output = absolutePath(line.bake.output);
-    const WorkFolder work{absolutePath(
-        line.work.empty()
-            ? std::filesystem::path(line.bake.output).replace_extension(".slurm").string()
-            : line.work)};
-    if (line.emitScripts.empty()) slurm::requireSlurmClients();
+}  // namespace
+
+int runSlurmBake(BakePlan& plan) {
+    plan.output = absolutePath(plan.output);
+    const WorkFolder work{
+        absolutePath(plan.slurm->work.empty()
+                         ? std::filesystem::path(plan.output).replace_extension(".slurm").string()
+                         : plan.slurm->work)};
+    if (plan.slurm->emitScripts.empty()) slurm::requireSlurmClients();
 
     noteStage("importing the level");
-    const world::SourceLevel source = world::importLevel(line.bake.input, line.bake.quake3);
-    world::refuseOutputOverInput(line.bake.output, source.inputFiles);
+    const world::SourceLevel source = world::importLevel(plan.input, plan.quake3);
+    world::refuseOutputOverInput(plan.output, source.inputFiles);
     Manifest manifest;
-    manifest.level = levelForNodes(line.bake.input);
+    manifest.level = levelForNodes(plan.input);
     manifest.levelHash = slurm::hashFiles(source.inputFiles);
-    manifest.output = line.bake.output;
-    manifest.bakeArguments = line.bakeArguments;
-    manifest.shardCount = line.shards;
+    manifest.output = plan.output;
+    manifest.bakeArguments = plan.slurm->shardArguments;
+    manifest.shardCount = plan.slurm->shards;
 
     slurm::makeWorkFolder(work);
     if (const std::optional<Manifest> found = slurm::readManifest(work)) {
@@ -350,18 +262,19 @@ int runSlurmBake(SlurmCommandLine& line) {
     std::vector<uint32_t> missing;
     for (uint32_t i = 0; i < manifest.shardCount; ++i)
         if (!slurm::verifiedShard(work, manifest, i)) missing.push_back(i);
-    if (!missing.empty()) compileIntoWorkFolder(source, line, work, manifest);
+    if (!missing.empty()) compileIntoWorkFolder(source, plan, work, manifest);
 
     const slurm::BatchScripts scripts =
-        slurm::batchScripts(work, world::ownExecutable(), line.bake.output, line.job, missing);
+        slurm::batchScripts(work, world::ownExecutable(), plan.output, plan.slurm->job, missing);
     slurm::writeBatchScripts(work.scripts(), scripts);
-    if (!line.emitScripts.empty()) {
-        slurm::writeBatchScripts(line.emitScripts, scripts);
+    if (!plan.slurm->emitScripts.empty()) {
+        slurm::writeBatchScripts(plan.slurm->emitScripts, scripts);
         std::printf(
             "wrote %s/shard.sh, merge.sh and submit.sh (%s of %u to bake); submit them "
             "with %s/submit.sh\n",
-            line.emitScripts.c_str(), missing.empty() ? "no shard" : shardList(missing).c_str(),
-            manifest.shardCount, line.emitScripts.c_str());
+            plan.slurm->emitScripts.c_str(),
+            missing.empty() ? "no shard" : shardList(missing).c_str(), manifest.shardCount,
+            plan.slurm->emitScripts.c_str());
         return 0;
     }
 
@@ -389,7 +302,7 @@ int runSlurmBake(SlurmCommandLine& line) {
                         jobs.second.c_str());
     }
     std::fflush(stdout);
-    if (!line.wait) {
+    if (!plan.slurm->wait) {
         std::printf(
             "not waiting (--no-wait): the logs are in %s; rerun the same command without "
             "--no-wait to wait for these jobs (it submits nothing while they are queued or "
@@ -397,40 +310,7 @@ int runSlurmBake(SlurmCommandLine& line) {
             work.logs().c_str());
         return 0;
     }
-    return waitForBake(line, work, manifest, missing, jobs);
-}
-
-}  // namespace
-
-std::string slurmUsage() {
-    return formatUsage(
-        "onelight-bake LEVEL -o OUT.olpak --slurm N [OPTIONS] [BAKE OPTIONS]",
-        "bakes LEVEL on a Slurm cluster: compiles it once here, then a job array of N shards and a "
-        "merge\n  job after them, with the bake's options (above); rerunning the same command "
-        "resumes (docs/slurm.md)",
-        {{"--slurm N", "shards, one array task each, 1..10000", kRequired},
-         {"--partition P", "the partition of every job", "the cluster's default"},
-         {"--time T", "each job's time limit (30, 1:00:00, 1-0)", "the partition's"},
-         {"--cpus-per-task C", "cores of each job (its bake's threads)", "the cluster's default"},
-         {"--threads N", "the threads of the compile, which runs here once", "every core"},
-         {"--work DIR", "the work folder, on a filesystem the nodes share", "OUT with .slurm"},
-         {"--retries K", "resubmit failed shards up to K times, 0..100", "0"},
-         {"--no-wait", "print the job ids and return", "wait, with progress"},
-         {"--emit-scripts DIR", "only write the batch scripts (shard, merge, submit) to DIR",
-          "submit"},
-         {"-h, --help", "this help", ""}});
-}
-
-int runSlurmBakeCommand(const std::vector<std::string>& arguments) {
-    if (printedHelp(arguments, slurmUsage())) return 0;
-    SlurmCommandLine line;
-    if (!parseSlurmCommandLine(arguments, line)) return 2;
-    // --threads: the compile's on this machine (the shards take --cpus-per-task).
-    std::unique_ptr<tbb::global_control> limit;
-    if (line.bake.threads > 0)
-        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      static_cast<size_t>(line.bake.threads));
-    return runReportingErrors(line.bake.input, [&] { return runSlurmBake(line); });
+    return waitForBake(plan, work, manifest, missing, jobs);
 }
 
 }  // namespace onelight::bake

@@ -15,6 +15,7 @@
 #include <tbb/global_control.h>
 
 #include "bake/cli/bake_command_line.hpp"
+#include "bake/cli/bake_plan.hpp"
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
 #include "bake/report/interrupt.hpp"
@@ -46,8 +47,8 @@ Manifest requireManifest(const WorkFolder& work) {
 /// The threads Slurm gave the task (--cpus-per-task), or every core.
 std::unique_ptr<tbb::global_control> limitThreadsToAllocation() {
     const char* cpus = std::getenv("SLURM_CPUS_PER_TASK");
-    double count = 0.0;
-    if (!cpus || !parseNumber(cpus, 1, 1024, count)) return nullptr;
+    int64_t count = 0;
+    if (!cpus || !world::parseWholeInteger(cpus, 1, 1024, count)) return nullptr;
     return std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                  static_cast<size_t>(count));
 }
@@ -77,18 +78,8 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
                            std::to_string(manifest.shardCount) + " shards; expected 0.." +
                            std::to_string(manifest.shardCount - 1));
     failOnPurposeIfAsked(work, shard);
-    std::vector<std::string> arguments = {
-        manifest.level,
-        "-o",
-        work.shardPackage(shard),
-        "--shard",
-        std::to_string(shard) + "/" + std::to_string(manifest.shardCount),
-        "--report",
-        work.shardReport(shard),
-        "--quiet"};
-    arguments.insert(arguments.end(), manifest.bakeArguments.begin(), manifest.bakeArguments.end());
-    BakeCommandLine line;
-    if (!parseBakeCommandLine(arguments, line)) return 2;
+    // The plan the submitting command checked, its forwarded options as the manifest has them.
+    const BakePlan plan = bakePlanOf(shardTaskArguments(work, manifest, shard));
     const std::unique_ptr<tbb::global_control> limit = limitThreadsToAllocation();
     // The compiled level, made once by the submitting command: the shard does not compile.
     if (!slurm::verifiedCompiled(work, manifest))
@@ -107,7 +98,7 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
     // The source still gives the Embree scene and the lights: the scene is the source's static
     // geometry, as in a whole bake, so that the parts equal it byte for byte.
     noteStage("importing the level");
-    const world::SourceLevel source = world::importLevel(line.input, line.quake3);
+    const world::SourceLevel source = world::importLevel(plan.input, plan.quake3);
     const uint64_t levelHash = slurm::hashFiles(source.inputFiles);
     if (levelHash != manifest.levelHash)
         throw world::Error(manifest.level +
@@ -117,12 +108,12 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
                            "); expected the level the manifest hashed: run onelight-bake --slurm "
                            "again with another --work");
     noteStage("baking the shard");
-    BakeReport report = startReport(source, line.options);
-    const BakeWorld bakeWorld(source, textures.textures, line.options, report);
+    BakeReport report = startReport(source, plan.options);
+    const BakeWorld bakeWorld(source, textures.textures, plan.options, report);
     const world::BakedLighting baked =
-        bakeLighting(source, bakeWorld, compiled, line.options, report);
+        bakeLighting(source, bakeWorld, compiled, plan.options, report);
     noteStage("writing the shard");
-    writeBakedPackage(line, compiled.level, baked, textures.textures, report);
+    writeBakedPackage(plan, compiled.level, baked, textures.textures, report);
     slurm::writeShardStamp(work, manifest, shard, slurm::hostName(), secondsSince(start));
     return 0;
 }
@@ -150,56 +141,50 @@ int mergeShards(const WorkFolder& work, const std::string& output) {
     return 0;
 }
 
-int badArgument(const std::string& what) {
-    std::fprintf(stderr, "onelight-bake slurm-task: %s\n%s", what.c_str(),
-                 slurmTaskUsage().c_str());
-    return 2;
-}
-
 }  // namespace
 
+const world::CommandTable& slurmTaskCommandTable() {
+    static const world::CommandTable table = [] {
+        world::CommandTable t;
+        t.program = "onelight-bake slurm-task";
+        t.synopsis = "onelight-bake slurm-task --work DIR (--shard I | --merge -o OUT)";
+        t.summary =
+            "what the jobs of onelight-bake --slurm run (their batch scripts call it): bake shard "
+            "I of the work folder's level, or merge its verified shards into OUT";
+        t.options = {world::textOption("--work", "DIR", "the work folder of the Slurm bake",
+                                       world::kRequiredOption),
+                     world::integerOption("--shard", "I", 0, 65535,
+                                          "bake shard I (the array task's index)", "none"),
+                     world::flagOption("--merge", "merge every verified shard", "none"),
+                     world::textOption("-o", "PATH",
+                                       "the package the merge writes (required with --merge)", "")};
+        return t;
+    }();
+    return table;
+}
+
 std::string slurmTaskUsage() {
-    return formatUsage(
-        "onelight-bake slurm-task --work DIR (--shard I | --merge -o OUT)",
-        "what the jobs of onelight-bake --slurm run (their batch scripts call it): bake shard I "
-        "of the work folder's level, or merge its verified shards into OUT",
-        {{"--work DIR", "the work folder of the Slurm bake", kRequired},
-         {"--shard I", "bake shard I (the array task's index)", "none"},
-         {"--merge", "merge every verified shard", "none"},
-         {"-o PATH", "the package the merge writes (required with --merge)", ""},
-         {"-h, --help", "this help", ""}});
+    return world::formatHelp(slurmTaskCommandTable());
 }
 
 int runSlurmTaskCommand(const std::vector<std::string>& arguments) {
-    if (printedHelp(arguments, slurmTaskUsage())) return 0;
-    std::string workPath, output;
-    bool merge = false, hasShard = false;
-    uint32_t shard = 0;
-    for (size_t i = 0; i < arguments.size(); ++i) {
-        const std::string& a = arguments[i];
-        const bool hasValue = i + 1 < arguments.size();
-        double v = 0.0;
-        if (a == "--work" && hasValue) {
-            workPath = arguments[++i];
-        } else if (a == "-o" && hasValue) {
-            output = arguments[++i];
-        } else if (a == "--shard" && hasValue) {
-            if (!parseNumber(arguments[++i], 0, 65535, v) || v != double(uint32_t(v)))
-                return badArgument("--shard '" + arguments[i] + "'; expected an index 0..65535");
-            shard = uint32_t(v);
-            hasShard = true;
-        } else if (a == "--merge") {
-            merge = true;
-        } else {
-            return badArgument("unexpected argument '" + a + "'");
-        }
-    }
-    if (workPath.empty()) return badArgument("--work DIR is required");
-    if (merge == hasShard) return badArgument("expected one of --shard I and --merge");
-    if (merge && output.empty()) return badArgument("--merge needs -o OUT");
-    const WorkFolder work{std::filesystem::absolute(workPath).lexically_normal().string()};
-    return runReportingErrors(
-        work.root, [&] { return merge ? mergeShards(work, output) : bakeShard(work, shard); });
+    return runCommandLine(
+        slurmTaskCommandTable(), arguments, [](const world::ParsedOptions& parsed) {
+            const bool merge = parsed.has("--merge");
+            if (merge == parsed.has("--shard"))
+                throw world::Error("expected one of --shard I and --merge");
+            if (merge && !parsed.has("-o")) throw world::Error("--merge needs -o OUT");
+            if (!merge && parsed.has("-o"))
+                throw world::Error(
+                    "-o with --shard; expected -o only with --merge (a shard's "
+                    "package goes to the work folder)");
+            const WorkFolder work{
+                std::filesystem::absolute(parsed.text("--work")).lexically_normal().string()};
+            return runReportingErrors(work.root, [&] {
+                return merge ? mergeShards(work, parsed.text("-o"))
+                             : bakeShard(work, uint32_t(parsed.integer("--shard")));
+            });
+        });
 }
 
 }  // namespace onelight::bake

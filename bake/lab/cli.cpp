@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "world/error.hpp"
+
 namespace onelight::lab {
 
 std::vector<std::string> parseWordList(std::string_view text) {
@@ -38,9 +40,8 @@ std::vector<double> parseNumberList(std::string_view option, std::string_view te
         auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), x);
         bool inRange = std::isfinite(x) && (loOpen ? x > lo : x >= lo) && x <= hi;
         if (word.empty() || ec != std::errc() || end != word.data() + word.size() || !inRange) {
-            throw std::invalid_argument(std::string(option) + ": '" + word +
-                                        "' is not a number in " + (loOpen ? "(" : "[") +
-                                        shortest(lo) + ", " + shortest(hi) + "]");
+            throw world::Error(std::string(option) + ": '" + word + "' is not a number in " +
+                               (loOpen ? "(" : "[") + shortest(lo) + ", " + shortest(hi) + "]");
         }
         values.push_back(x);
     }

@@ -1,5 +1,6 @@
-// Command-line parsing helpers of onelight-lab: every error names the option and what was
-// expected, and surfaces as std::invalid_argument (main prints it and exits 1).
+// onelight-lab's list values (its options are tables, world/command_options.hpp, in main.cpp):
+// every error names the option and what was expected, and surfaces as world::Error (main prints
+// it on one line and exits 1).
 #pragma once
 
 #include <string>

@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "albedo.hpp"
@@ -24,72 +25,127 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "level_report.hpp"
+#include "world/command_options.hpp"
+#include "world/error.hpp"
 
 namespace onelight::lab {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: onelight-lab brdf-albedo --models LIST --mu LIST --gloss LIST\n"
-    "       onelight-lab brdf-report -o DIR [--quick]\n"
-    "       onelight-lab env-fit [-o FILE]\n"
-    "       onelight-lab env-table [-o FILE]\n"
-    "       onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH] "
-    "[--budget-minutes M] [--timing-runs N] [--quick] -o DIR\n"
-    "       onelight-lab frame-error FRAME.exr REFERENCE.exr\n"
-    "       onelight-lab sheet -o OUT.png --ev100 E[,E per row...] --images A.exr,B.exr[,...] "
-    "[--rect x,y,w,h] [--columns N]\n"
-    "models: bp_none, bp_kelemen, bp_schlick, beck_smith, ggx_smith; mu in (0,1]; gloss in "
-    "[0,1]\n";
+using world::CommandTable;
+using world::ParsedOptions;
 
-// --name VALUE pairs after the subcommand; flags listed in `flags` take no value.
-struct Options {
-    std::vector<std::pair<std::string, std::string>> values;
-    std::string get(std::string_view name, std::string fallback = {}) const {
-        for (auto& [k, v] : values)
-            if (k == name) return v;
-        return fallback;
-    }
-    bool has(std::string_view name) const {
-        for (auto& [k, v] : values)
-            if (k == name) return true;
-        return false;
-    }
-};
-
-// `first`: the index of the first option (after the subcommand and its positional arguments).
-Options parseOptions(int argc, char** argv, std::vector<std::string_view> known,
-                     std::vector<std::string_view> flags, int first = 2) {
-    Options o;
-    for (int i = first; i < argc; ++i) {
-        std::string_view a = argv[i];
-        bool isFlag = std::find(flags.begin(), flags.end(), a) != flags.end();
-        if (!isFlag && std::find(known.begin(), known.end(), a) == known.end())
-            throw std::invalid_argument(std::string(argv[1]) + ": unknown option '" +
-                                        std::string(a) + "'");
-        if (isFlag) {
-            o.values.emplace_back(a, "");
-        } else {
-            if (i + 1 >= argc)
-                throw std::invalid_argument(std::string(a) + ": expected a value after it");
-            o.values.emplace_back(a, argv[++i]);
-        }
-    }
-    return o;
+// --budget-minutes: a number of minutes in (0, 100000].
+bool minutesAccepted(const std::string& text) {
+    double minutes = 0.0;
+    return world::parseFiniteNumber(text, 0.0, 1e5, minutes) && minutes > 0.0;
 }
 
-std::string required(const Options& o, std::string_view name) {
-    if (!o.has(name)) throw std::invalid_argument("missing option " + std::string(name));
-    return o.get(name);
+CommandTable commandTable(const std::string& name, const std::string& synopsis,
+                          const std::string& summary, std::vector<world::CommandOption> options) {
+    CommandTable t;
+    t.program = "onelight-lab " + name;
+    t.synopsis = "onelight-lab " + name + " " + synopsis;
+    t.summary = summary;
+    t.options = std::move(options);
+    return t;
+}
+
+// Every command's table, by name.
+const std::vector<CommandTable>& commandTables() {
+    static const std::vector<CommandTable> tables = [] {
+        const LevelReportOptions d;
+        std::vector<CommandTable> t;
+        t.push_back(commandTable(
+            "brdf-albedo", "--models LIST --mu LIST --gloss LIST",
+            "CSV of the specular models' albedo scale and bias",
+            {world::textOption("--models", "LIST",
+                               "comma-separated: bp_none, bp_kelemen, bp_schlick, beck_smith, "
+                               "ggx_smith",
+                               world::kRequiredOption),
+             world::textOption("--mu", "LIST", "comma-separated cosines in (0, 1]",
+                               world::kRequiredOption),
+             world::textOption("--gloss", "LIST", "comma-separated gloss values in [0, 1]",
+                               world::kRequiredOption)}));
+        t.push_back(commandTable(
+            "brdf-report", "-o DIR [--quick]", "tables, CSVs and plots of every approximation",
+            {world::textOption("-o", "DIR", "the report's folder", world::kRequiredOption),
+             world::flagOption("--quick", "coarse grids", "fine grids")}));
+        t.push_back(commandTable("env-fit", "[-o FILE]", "fits shaders/env_brdf_fit.glsl",
+                                 {world::textOption("-o", "FILE", "the GLSL to write", "stdout")}));
+        t.push_back(
+            commandTable("env-table", "[-o FILE]", "integrates shaders/env_brdf_table.inc",
+                         {world::textOption("-o", "FILE", "the table to write", "stdout")}));
+        CommandTable report = commandTable(
+            "level-report",
+            "LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH] [--budget-minutes M] "
+            "[--timing-runs N] [--quick] -o DIR",
+            "speed against error per camera and knob (docs/level-report.md)",
+            {world::textOption("-o", "DIR", "the report's folder", world::kRequiredOption),
+             world::textOption("--cameras", "all|NAME,...", "the cameras to measure", "all"),
+             world::integerOption("--spp", "N", 1, 65536,
+                                  "the reference's paths per pixel, per seed",
+                                  std::to_string(d.spp)),
+             world::sizeOption("--size", 8, 8192, "the frames' and references' size",
+                               std::to_string(d.width) + "x" + std::to_string(d.height)),
+             world::customOption("--budget-minutes", "M", &minutesAccepted,
+                                 "minutes, a number in (0, 100000]",
+                                 "stop measuring after M minutes", "no limit"),
+             world::integerOption("--timing-runs", "N", 1, 20,
+                                  "rounds of frame timing; the least counts",
+                                  std::to_string(d.timingRuns)),
+             world::flagOption("--quick", "one value per knob", "every value")});
+        report.positionalName = "level (a .gltf or .glb)";
+        report.minPositionals = report.maxPositionals = 1;
+        t.push_back(report);
+        CommandTable frameError =
+            commandTable("frame-error", "FRAME.exr REFERENCE.exr",
+                         "mean relative 8x8-block error of a frame against its reference", {});
+        frameError.positionalName = "FRAME.exr and REFERENCE.exr";
+        frameError.minPositionals = frameError.maxPositionals = 2;
+        t.push_back(frameError);
+        t.push_back(commandTable(
+            "sheet",
+            "-o OUT.png --ev100 E[,E per row...] --images A.exr,B.exr[,...] [--rect x,y,w,h] "
+            "[--columns N]",
+            "EXRs side by side, tonemapped, with each image's mean in a rectangle",
+            {world::textOption("-o", "OUT.png", "the sheet to write", world::kRequiredOption),
+             world::textOption("--ev100", "E[,E...]", "one exposure, or one per row",
+                               world::kRequiredOption),
+             world::textOption("--images", "A.exr,B.exr", "the images, comma-separated",
+                               world::kRequiredOption),
+             world::textOption("--rect", "x,y,w,h", "where each image's mean is measured", "none"),
+             world::integerOption("--columns", "N", 1, 64, "images to a row", "all in one")}));
+        return t;
+    }();
+    return tables;
+}
+
+const CommandTable& tableOf(std::string_view name) {
+    for (const CommandTable& t : commandTables())
+        if (t.program == "onelight-lab " + std::string(name)) return t;
+    throw world::Error("unknown command '" + std::string(name) + "'");
+}
+
+// Every command's synopsis, for onelight-lab without a command.
+std::string usage() {
+    std::string text;
+    for (const CommandTable& t : commandTables())
+        text += (text.empty() ? "usage: " : "       ") + t.synopsis + "\n";
+    return text + "onelight-lab COMMAND --help: its options\n";
+}
+
+// The arguments after the command name, parsed by its table.
+ParsedOptions parse(std::string_view name, int argc, char** argv) {
+    return world::parseOptions(tableOf(name), std::vector<std::string>(argv + 2, argv + argc));
 }
 
 int brdfAlbedo(int argc, char** argv) {
-    Options o = parseOptions(argc, argv, {"--models", "--mu", "--gloss"}, {});
+    const ParsedOptions o = parse("brdf-albedo", argc, argv);
     std::vector<const SpecularModel*> models;
-    for (const std::string& name : parseWordList(required(o, "--models")))
+    for (const std::string& name : parseWordList(o.text("--models")))
         models.push_back(&findModel(name));
-    std::vector<double> mus = parseNumberList("--mu", required(o, "--mu"), 0.0, 1.0, true);
-    std::vector<double> glosses =
-        parseNumberList("--gloss", required(o, "--gloss"), 0.0, 1.0, false);
+    std::vector<double> mus = parseNumberList("--mu", o.text("--mu"), 0.0, 1.0, true);
+    std::vector<double> glosses = parseNumberList("--gloss", o.text("--gloss"), 0.0, 1.0, false);
     std::printf("model,mu,gloss,scale,bias\n");
     for (const SpecularModel* m : models)
         for (double mu : mus)
@@ -102,96 +158,59 @@ int brdfAlbedo(int argc, char** argv) {
 }
 
 int brdfReportCommand(int argc, char** argv) {
-    Options o = parseOptions(argc, argv, {"-o"}, {"--quick"});
-    return brdfReport(required(o, "-o"), o.has("--quick"));
+    const ParsedOptions o = parse("brdf-report", argc, argv);
+    return brdfReport(o.text("-o"), o.has("--quick"));
 }
 
 int envFitCommand(int argc, char** argv) {
-    Options o = parseOptions(argc, argv, {"-o"}, {});
-    return envFit(o.get("-o"));
+    return envFit(parse("env-fit", argc, argv).text("-o"));
 }
 
 int envTableCommand(int argc, char** argv) {
-    Options o = parseOptions(argc, argv, {"-o"}, {});
-    return envTable(o.get("-o"));
-}
-
-// One whole number in [lo, hi].
-uint32_t wholeNumber(const std::string& option, const std::string& text, double lo, double hi) {
-    const std::string expected = option + ": '" + text + "' is not a whole number in [" +
-                                 std::to_string(uint32_t(lo)) + ", " +
-                                 std::to_string(uint32_t(hi)) + "]";
-    std::vector<double> v;
-    try {
-        v = parseNumberList(option, text, lo, hi, false);
-    } catch (const std::invalid_argument&) {
-        throw std::invalid_argument(expected);
-    }
-    if (v.size() != 1 || v[0] != double(uint32_t(v[0]))) throw std::invalid_argument(expected);
-    return uint32_t(v[0]);
+    return envTable(parse("env-table", argc, argv).text("-o"));
 }
 
 int levelReportCommand(int argc, char** argv) {
-    if (argc < 3 || argv[2][0] == '-')
-        throw std::invalid_argument("LEVEL: expected a level (a .gltf or .glb) after level-report");
-    Options o = parseOptions(
-        argc, argv, {"-o", "--cameras", "--spp", "--size", "--budget-minutes", "--timing-runs"},
-        {"--quick"}, 3);
+    const ParsedOptions o = parse("level-report", argc, argv);
     LevelReportOptions r;
-    r.level = argv[2];
-    r.output = required(o, "-o");
-    if (r.output.empty()) throw std::invalid_argument("-o: expected a folder");
-    const std::string cameras = o.get("--cameras", "all");
+    r.level = o.positionals.at(0);
+    r.output = o.text("-o");
+    if (r.output.empty()) throw world::Error("-o: expected a folder");
+    const std::string cameras = o.has("--cameras") ? o.text("--cameras") : "all";
     if (cameras != "all") {
         r.cameras = parseWordList(cameras);
         for (const std::string& c : r.cameras)
             if (c.empty())
-                throw std::invalid_argument("--cameras: an empty name in '" + cameras +
-                                            "'; expected all or NAME,NAME...");
+                throw world::Error("--cameras: an empty name in '" + cameras +
+                                   "'; expected all or NAME,NAME...");
     }
-    if (o.has("--spp")) r.spp = wholeNumber("--spp", o.get("--spp"), 1, 65536);
-    if (o.has("--size")) {
-        const std::string s = o.get("--size");
-        const size_t x = s.find('x');
-        if (x == std::string::npos)
-            throw std::invalid_argument("--size: '" + s + "' is not WxH, e.g. 320x180");
-        r.width = wholeNumber("--size", s.substr(0, x), 8, 8192);
-        r.height = wholeNumber("--size", s.substr(x + 1), 8, 8192);
-    }
-    if (o.has("--budget-minutes"))
-        r.budgetMinutes =
-            parseNumberList("--budget-minutes", o.get("--budget-minutes"), 0.0, 1e5, true).at(0);
-    if (o.has("--timing-runs"))
-        r.timingRuns = wholeNumber("--timing-runs", o.get("--timing-runs"), 1, 20);
+    if (o.has("--spp")) r.spp = uint32_t(o.integer("--spp"));
+    if (o.has("--size")) std::tie(r.width, r.height) = o.size("--size");
+    if (o.has("--budget-minutes")) r.budgetMinutes = o.real("--budget-minutes");
+    if (o.has("--timing-runs")) r.timingRuns = uint32_t(o.integer("--timing-runs"));
     r.quick = o.has("--quick");
     return levelReport(r);
 }
 
 int sheetCommand(int argc, char** argv) {
-    Options o = parseOptions(argc, argv, {"-o", "--ev100", "--images", "--rect", "--columns"}, {});
+    const ParsedOptions o = parse("sheet", argc, argv);
     std::vector<float> ev;
-    for (double v : parseNumberList("--ev100", required(o, "--ev100"), -20.0, 30.0, false))
+    for (double v : parseNumberList("--ev100", o.text("--ev100"), -20.0, 30.0, false))
         ev.push_back(float(v));
-    uint32_t columns = 0;
-    if (o.has("--columns")) {
-        const std::vector<double> c =
-            parseNumberList("--columns", o.get("--columns"), 1.0, 64.0, false);
-        if (c.size() != 1 || c[0] != double(uint32_t(c[0])))
-            throw std::invalid_argument("--columns: expected one whole number in [1, 64]");
-        columns = uint32_t(c[0]);
-    }
+    const uint32_t columns = o.has("--columns") ? uint32_t(o.integer("--columns")) : 0u;
     std::vector<uint32_t> rect;
     if (o.has("--rect"))
-        for (double v : parseNumberList("--rect", o.get("--rect"), 0.0, 1e6, false))
+        for (double v : parseNumberList("--rect", o.text("--rect"), 0.0, 1e6, false))
             rect.push_back(uint32_t(v));
-    return sheet(required(o, "-o"), ev, parseWordList(required(o, "--images")), rect, columns);
+    return sheet(o.text("-o"), ev, parseWordList(o.text("--images")), rect, columns);
 }
 
 // frame-error FRAME.exr REFERENCE.exr: the level report's error measure for two linear images
 // of one size (block_error.hpp), as "error=E blocks=N worst=W" on stdout.
 int frameErrorCommand(int argc, char** argv) {
-    if (argc != 4) throw std::invalid_argument("expected two EXR files: FRAME.exr REFERENCE.exr");
-    const BlockErrors e = blockErrors(capture::readExr(argv[2]), capture::readExr(argv[3]));
+    const ParsedOptions o = parse("frame-error", argc, argv);
+    const BlockErrors e =
+        blockErrors(capture::readExr(o.positionals[0]), capture::readExr(o.positionals[1]));
     double worst = 0.0;
     for (double v : e.relative) worst = std::max(worst, v);
     std::printf("error=%.6f blocks=%zu worst=%.6f\n", e.mean, e.relative.size(), worst);
@@ -204,11 +223,21 @@ int frameErrorCommand(int argc, char** argv) {
 int main(int argc, char** argv) {
     using namespace onelight::lab;
     if (argc < 2) {
-        std::fputs(kUsage, stderr);
+        std::fputs(usage().c_str(), stderr);
         return 1;
     }
-    std::string_view command = argv[1];
+    const std::string_view command = argv[1];
+    if (command == "-h" || command == "--help") {
+        std::fputs(usage().c_str(), stdout);
+        return 0;
+    }
     try {
+        const onelight::world::CommandTable& table = tableOf(command);
+        for (int i = 2; i < argc; ++i)
+            if (std::string_view(argv[i]) == "-h" || std::string_view(argv[i]) == "--help") {
+                std::fputs(onelight::world::formatHelp(table).c_str(), stdout);
+                return 0;
+            }
         if (command == "brdf-albedo") return brdfAlbedo(argc, argv);
         if (command == "brdf-report") return brdfReportCommand(argc, argv);
         if (command == "env-fit") return envFitCommand(argc, argv);
@@ -216,8 +245,7 @@ int main(int argc, char** argv) {
         if (command == "sheet") return sheetCommand(argc, argv);
         if (command == "frame-error") return frameErrorCommand(argc, argv);
         if (command == "level-report") return levelReportCommand(argc, argv);
-        std::fprintf(stderr, "onelight-lab: unknown command '%s'\n%s", argv[1], kUsage);
-        return 1;
+        throw onelight::world::Error("unknown command '" + std::string(command) + "'");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "onelight-lab %s: %s\n", argv[1], e.what());
         return 1;

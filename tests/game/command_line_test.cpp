@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "run_command.hpp"
 
@@ -64,5 +66,27 @@ TEST(GameCommandLine, AViewOrExposureOutOfRangeIsNamed) {
             onelight::test::runCommand(kOnelight + " " + arguments);
         EXPECT_EQ(r.exitCode, 1) << r.output;
         EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+    }
+}
+
+// Every value is taken whole and in range; a missing value at the end and a combination that
+// cannot work are named too.
+TEST(GameCommandLine, JunkValuesAndConflictsAreNamed) {
+    for (const auto& [arguments, expected] : std::vector<std::pair<std::string, std::string>>{
+             {"x.olpak --size 0x5", "--size '0x5': expected WxH, each an integer in [1, 16384]"},
+             {"x.olpak --size 640x480x", "--size '640x480x': expected WxH"},
+             {"x.olpak --msaa 2x", "--msaa '2x': expected an integer in [1, 64]"},
+             {"x.olpak --frames 1e3", "--frames '1e3': expected a count of frames"},
+             {"x.olpak --frames -5", "--frames '-5': expected a count of frames"},
+             {"x.olpak --render-scale nan", "--render-scale 'nan': expected a number in [0.25, 1]"},
+             {"x.olpak --frames", "--frames needs a value"},
+             {"x.olpak --benchmark a.replay --replay b.replay", "--benchmark with --replay"},
+             {"x.olpak --headless --render-scale 0.5", "--render-scale applies to the window"},
+             {"x.olpak y.olpak", "unexpected argument 'y.olpak'"},
+             {"--headless", "no level given"}}) {
+        const onelight::test::CommandResult r =
+            onelight::test::runCommand(kOnelight + " " + arguments);
+        EXPECT_EQ(r.exitCode, 1) << arguments << "\n" << r.output;
+        EXPECT_NE(r.output.find(expected), std::string::npos) << arguments << "\n" << r.output;
     }
 }

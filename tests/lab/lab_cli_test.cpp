@@ -55,9 +55,9 @@ TEST(LabCli, BadInputGivesOneClearLineAndExitOne) {
         {"brdf-albedo --models ggx_smith --mu 0.5 --gloss 1.5", "--gloss: '1.5'"},
         {"brdf-albedo --models ggx_smith --mu 0.5,,1 --gloss 0.5", "--mu: ''"},
         {"brdf-albedo --models nope --mu 0.5 --gloss 0.5", "unknown model 'nope'"},
-        {"brdf-albedo --models ggx_smith --mu 0.5", "missing option --gloss"},
-        {"brdf-albedo --models ggx_smith --mu", "--mu: expected a value"},
-        {"brdf-albedo --bogus 1", "unknown option '--bogus'"},
+        {"brdf-albedo --models ggx_smith --mu 0.5", "--gloss LIST is required"},
+        {"brdf-albedo --models ggx_smith --mu", "--mu needs a value: expected LIST"},
+        {"brdf-albedo --bogus 1", "unexpected argument '--bogus'"},
         {"frobnicate", "unknown command 'frobnicate'"},
     };
     for (auto& c : cases) {

@@ -224,14 +224,16 @@ TEST_F(LevelReport, BadInputGivesOneLineNamingTheArgument) {
     } cases[] = {
         {"level-report " + (folder_ / "missing.gltf").string() + o, "missing.gltf"},
         {"level-report " + level_ + " --cameras nope" + o, "--cameras: no camera 'nope'"},
-        {"level-report " + level_ + " --spp 0" + o, "--spp: '0'"},
-        {"level-report " + level_ + " --spp 2.5" + o, "--spp: '2.5'"},
-        {"level-report " + level_ + " --size 64" + o, "--size: '64' is not WxH"},
-        {"level-report " + level_ + " --size 64x0" + o, "--size: '0'"},
-        {"level-report " + level_ + " --budget-minutes -1" + o, "--budget-minutes: '-1'"},
-        {"level-report " + level_ + " --timing-runs 0" + o, "--timing-runs: '0'"},
-        {"level-report " + level_, "missing option -o"},
-        {"level-report -o x", "LEVEL: expected a level"},
+        {"level-report " + level_ + " --spp 0" + o, "--spp '0': expected an integer in [1, 65536]"},
+        {"level-report " + level_ + " --spp 2.5" + o, "--spp '2.5': expected an integer"},
+        {"level-report " + level_ + " --size 64" + o, "--size '64': expected WxH"},
+        {"level-report " + level_ + " --size 64x0" + o, "--size '64x0': expected WxH"},
+        {"level-report " + level_ + " --budget-minutes -1" + o,
+         "--budget-minutes '-1': expected minutes"},
+        {"level-report " + level_ + " --timing-runs 0" + o,
+         "--timing-runs '0': expected an integer in [1, 20]"},
+        {"level-report " + level_, "-o DIR is required"},
+        {"level-report -o x", "no level (a .gltf or .glb) given"},
     };
     for (const auto& c : cases) {
         const onelight::test::CommandResult r = lab(c.args);

@@ -32,20 +32,35 @@ void expectRefused(const std::string& arguments, int exitCode, const std::string
 TEST(SlurmCommandLine, ShardCountMustBeAPositiveInteger) {
     const std::string out = " -o " + level() + ".olpak";
     expectRefused(level() + out + " --slurm 0", 2,
-                  "--slurm '0'; expected a number of shards in [1, 10000]");
-    expectRefused(level() + out + " --slurm 2.5", 2, "--slurm '2.5'; expected");
-    expectRefused(level() + out + " --slurm many", 2, "--slurm 'many'; expected");
+                  "--slurm '0': expected a number of shards in [1, 10000]");
+    expectRefused(level() + out + " --slurm 2.5", 2, "--slurm '2.5': expected");
+    expectRefused(level() + out + " --slurm many", 2, "--slurm 'many': expected");
     expectRefused(level() + out + " --slurm", 2, "--slurm needs a value");
 }
 
 TEST(SlurmCommandLine, JobOptionsAreChecked) {
     const std::string base = level() + " -o " + level() + ".olpak --slurm 2";
-    expectRefused(base + " --time soon", 2, "--time 'soon'; expected a Slurm time limit");
-    expectRefused(base + " --cpus-per-task 0", 2, "--cpus-per-task '0'; expected 1..1024");
-    expectRefused(base + " --retries -1", 2, "--retries '-1'; expected 0..100");
+    expectRefused(base + " --time soon", 2, "--time 'soon': expected a Slurm time limit");
+    expectRefused(base + " --cpus-per-task 0", 2,
+                  "--cpus-per-task '0': expected an integer in [1, 1024]");
+    expectRefused(base + " --retries -1", 2, "--retries '-1': expected an integer in [0, 100]");
     expectRefused(base + " --partition", 2, "--partition needs a value");
     expectRefused(base + " --shard 0/2", 2, "--shard with --slurm");
-    expectRefused(base + " --quality best", 2, "--quality 'best'; expected draft");
+    expectRefused(base + " --quality best", 2, "--quality 'best': expected draft");
+}
+
+// A bake whose options a shard cannot take is refused at submission: nothing imported, no work
+// folder made, nothing compiled or submitted (sbatch is not even looked for).
+TEST(SlurmCommandLine, AnErrorBudgetIsRefusedBeforeAnythingIsSubmitted) {
+    const std::filesystem::path folder = onelight::test::freshFolder("slurm-budget");
+    const std::string base = level() + " -o " + (folder / "out.olpak").string() +
+                             " --slurm 2 --work " + (folder / "work").string();
+    expectRefused(base + " --error-budget 5%", 2, "--error-budget with --slurm");
+    expectRefused(base + " --retries 1 --emit-scripts " + (folder / "s").string(), 2,
+                  "--retries with --emit-scripts");
+    EXPECT_FALSE(std::filesystem::exists(folder / "work"));
+    EXPECT_FALSE(std::filesystem::exists(folder / "s"));
+    expectRefused(level() + " --partition bake", 2, "--partition is an option of the Slurm bake");
 }
 
 TEST(SlurmCommandLine, MissingSbatchIsNamed) {
