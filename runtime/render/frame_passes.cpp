@@ -1,10 +1,11 @@
 // Recording a frame after its shadow passes: the forward pass (MSAA, HDR, resolved), the tonemap
 // pass, the copies out (readback, swapchain), and the readback itself once the frame is done.
+#include "render/frame_passes.hpp"
+
 #include <algorithm>
 
 #include <glm/gtc/packing.hpp>
 
-#include "render/renderer_state.hpp"
 #include "vk/commands.hpp"
 #include "vk/rendering.hpp"
 
@@ -16,8 +17,8 @@ constexpr VkPipelineStageFlags kColorStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_
 constexpr VkPipelineStageFlags kDepthStages =
     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
 
-VkExtent2D extentOf(const RendererState& s) {
-    return {s.width, s.height};
+VkExtent2D extentOf(const RenderTargets& targets) {
+    return {targets.width, targets.height};
 }
 
 void bgraToRgba(const uint8_t* bgra, size_t pixels, std::vector<uint8_t>& rgba) {
@@ -31,20 +32,20 @@ void bgraToRgba(const uint8_t* bgra, size_t pixels, std::vector<uint8_t>& rgba) 
 }
 
 // The targets of the forward pass, whatever the previous frame left in them, ready to be drawn.
-void prepareForwardTargets(const RendererState& s, VkCommandBuffer cmd) {
+void prepareForwardTargets(const RenderTargets& targets, VkCommandBuffer cmd) {
     vk::imageBarrier(
-        cmd, s.hdr,
+        cmd, targets.hdr,
         vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                           VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                           kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
-    if (s.msaaColor.image)
+    if (targets.msaaColor.image)
         vk::imageBarrier(
-            cmd, s.msaaColor,
+            cmd, targets.msaaColor,
             vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                               kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, kColorStage,
                               VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
     vk::imageBarrier(
-        cmd, s.depth,
+        cmd, targets.depth,
         vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                           kDepthStages, VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, kDepthStages,
                           VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
@@ -54,23 +55,25 @@ void prepareForwardTargets(const RendererState& s, VkCommandBuffer cmd) {
 // Dynamic rendering into the HDR target (through the MSAA target when multisampled) over a clear
 // to the level's uniform sky (pre-exposed radiance, as the pass writes; black under a sky image,
 // which the sky pass draws), with depth.
-void beginForwardRendering(const RendererState& s, VkCommandBuffer cmd, float exposure) {
-    const glm::vec3 sky =
-        s.skyImage ? glm::vec3(0.0f)
-                   : glm::min(s.settings.skyRadiance * exposure, glm::vec3(glsl::HDR_MAX));
+void beginForwardRendering(const Scene& scene, const RenderTargets& targets, VkCommandBuffer cmd,
+                           float exposure) {
+    const glm::vec3 sky = scene.sky.present ? glm::vec3(0.0f)
+                                            : glm::min(scene.level.settings.skyRadiance * exposure,
+                                                       glm::vec3(glsl::HDR_MAX));
     const VkClearColorValue clear{{sky.r, sky.g, sky.b, 1.0f}};
     const VkRenderingAttachmentInfo color =
-        s.samples != VK_SAMPLE_COUNT_1_BIT
-            ? vk::resolvedColorAttachment(s.msaaColor.view, s.hdr.view, VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                          clear)
-            : vk::colorAttachment(s.hdr.view, VK_ATTACHMENT_LOAD_OP_CLEAR,
+        targets.samples != VK_SAMPLE_COUNT_1_BIT
+            ? vk::resolvedColorAttachment(targets.msaaColor.view, targets.hdr.view,
+                                          VK_ATTACHMENT_LOAD_OP_CLEAR, clear)
+            : vk::colorAttachment(targets.hdr.view, VK_ATTACHMENT_LOAD_OP_CLEAR,
                                   VK_ATTACHMENT_STORE_OP_STORE, clear);
     const VkRenderingAttachmentInfo depth = vk::depthAttachment(
-        s.depth.view, VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
-    vk::beginRendering(cmd, extentOf(s), &color, &depth);
+        targets.depth.view, VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+    vk::beginRendering(cmd, extentOf(targets), &color, &depth);
 }
 
-DrawPush drawPushOf(const RendererState& s, const FrameView& view, const Draw& d) {
+DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale, const FrameView& view,
+                    const Draw& d) {
     DrawPush push{};
     push.model = d.entity == kNoIndex ? glm::mat4(1.0f) : view.entityTransforms[d.entity];
     push.material = d.material;
@@ -78,34 +81,38 @@ DrawPush drawPushOf(const RendererState& s, const FrameView& view, const Draw& d
     push.lightmapAtlas = d.atlas;
     push.objectLighting = d.entity;
     push.lightmapScale = glm::vec4(1.0f);
-    if (d.atlas < s.atlasUvScale.size())
-        push.lightmapScale = glm::vec4(s.atlasUvScale[d.atlas], 0.0f, 0.0f);
+    if (d.atlas < atlasUvScale.size())
+        push.lightmapScale = glm::vec4(atlasUvScale[d.atlas], 0.0f, 0.0f);
     return push;
 }
 
 }  // namespace
 
-void recordForwardPass(RendererState& s, VkCommandBuffer cmd, const FrameSlot& slot,
-                       const FrameView& view, const DrawList& list, FrameStats& stats) {
-    prepareForwardTargets(s, cmd);
-    beginForwardRendering(s, cmd, view.exposure);
+void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTargets& targets,
+                       const Pipelines& pipelines, const DescriptorSets& sets,
+                       VkDescriptorSet frameSet, const FrameView& view, const DrawList& list,
+                       FrameStats& stats) {
+    const std::vector<glm::vec2>& atlasUvScale = scene.baked.atlasUvScale;
+    const VkPipelineLayout layout = pipelines.forwardLayout.layout;
+    prepareForwardTargets(targets, cmd);
+    beginForwardRendering(scene, targets, cmd, view.exposure);
     const VkDeviceSize zero = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &s.vertices.buffer, &zero);
-    vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.forwardLayout.layout, 0, 1,
-                            &slot.frameSet, 0, nullptr);
-    if (s.depthPipelines[0] != VK_NULL_HANDLE) {
+    vkCmdBindVertexBuffers(cmd, 0, 1, &scene.geometry.vertices.buffer, &zero);
+    vkCmdBindIndexBuffer(cmd, scene.geometry.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &frameSet, 0,
+                            nullptr);
+    if (pipelines.depth[0] != VK_NULL_HANDLE) {
         int bound = -1;
         for (const Draw& d : list.draws) {
             if (keyAlphaMask(d.key)) continue;  // its coverage comes from the fragment shader
             const int doubleSided = keyDoubleSided(d.key) ? 1 : 0;
             if (doubleSided != bound) {
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                                  s.depthPipelines[doubleSided]);
+                                  pipelines.depth[doubleSided]);
                 bound = doubleSided;
             }
-            const DrawPush push = drawPushOf(s, view, d);
-            vkCmdPushConstants(cmd, s.forwardLayout.layout,
+            const DrawPush push = drawPushOf(atlasUvScale, view, d);
+            vkCmdPushConstants(cmd, layout,
                                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                sizeof(push), &push);
             vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
@@ -114,69 +121,70 @@ void recordForwardPass(RendererState& s, VkCommandBuffer cmd, const FrameSlot& s
     uint32_t boundKey = kNoIndex, boundMaterial = kNoIndex;
     for (const Draw& d : list.draws) {
         if (d.key != boundKey) {
-            vkCmdBindPipeline(
-                cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                s.options.flatShading ? s.flatPipeline : s.forwardPipelines.at(d.key));
+            // The flat pipeline exists only with flat shading, and then draws everything.
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                              pipelines.flat ? pipelines.flat : pipelines.forward.at(d.key));
             boundKey = d.key;
         }
         if (d.material != boundMaterial) {
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.forwardLayout.layout, 1,
-                                    1, &s.materialSets[d.material], 0, nullptr);
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1,
+                                    &sets.material[d.material], 0, nullptr);
             boundMaterial = d.material;
         }
-        const DrawPush push = drawPushOf(s, view, d);
-        vkCmdPushConstants(cmd, s.forwardLayout.layout,
-                           VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                           sizeof(push), &push);
+        const DrawPush push = drawPushOf(atlasUvScale, view, d);
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
+                           0, sizeof(push), &push);
         vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
         stats.trianglesDrawn += d.indexCount / 3;
     }
-    if (s.skyPipeline) {  // last: only the pixels the level left at the far plane run it
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.skyPipeline);
+    if (pipelines.sky) {  // last: only the pixels the level left at the far plane run it
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.sky);
         vkCmdDraw(cmd, 3, 1, 0, 0);
     }
     vkCmdEndRendering(cmd);
 }
 
-void recordTonemapPass(RendererState& s, VkCommandBuffer cmd) {
+void recordTonemapPass(VkCommandBuffer cmd, const RenderTargets& targets,
+                       const Pipelines& pipelines, const DescriptorSets& sets) {
     vk::imageBarrier(
-        cmd, s.hdr,
+        cmd, targets.hdr,
         vk::layoutBarrier(VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kColorStage,
                           VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                           VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
     vk::imageBarrier(
-        cmd, s.display,
+        cmd, targets.display,
         vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                           VK_PIPELINE_STAGE_TRANSFER_BIT, 0, kColorStage,
                           VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
     const VkRenderingAttachmentInfo color = vk::colorAttachment(
-        s.display.view, VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_STORE);
-    vk::beginRendering(cmd, extentOf(s), &color, nullptr);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.tonemapPipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.tonemapLayout.layout, 0, 1,
-                            &s.tonemapSet, 0, nullptr);
+        targets.display.view, VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_STORE);
+    vk::beginRendering(cmd, extentOf(targets), &color, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.tonemap);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.tonemapLayout.layout, 0,
+                            1, &sets.tonemap, 0, nullptr);
     vkCmdDraw(cmd, 3, 1, 0, 0);
     vkCmdEndRendering(cmd);
 }
 
-void recordOutputs(RendererState& s, VkCommandBuffer cmd, const FrameOutput& output) {
-    const vk::Context& ctx = *s.ctx;
+void recordOutputs(const vk::Context& ctx, VkCommandBuffer cmd, const RenderTargets& targets,
+                   FrameReadback& readback, const FrameOutput& output) {
     vk::imageBarrier(
-        cmd, s.display,
+        cmd, targets.display,
         vk::layoutBarrier(VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                           VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kColorStage,
                           VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                           VK_ACCESS_TRANSFER_READ_BIT));
     if (output.readback) {
         vk::imageBarrier(
-            cmd, s.hdr,
+            cmd, targets.hdr,
             vk::layoutBarrier(VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
                               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT));
-        vk::copyImageToHost(cmd, s.hdr.image, s.width, s.height, s.readbackHdr);
-        vk::copyImageToHost(cmd, s.display.image, s.width, s.height, s.readbackDisplay);
+        vk::copyImageToHost(cmd, targets.hdr.image, targets.width, targets.height, readback.hdr);
+        vk::copyImageToHost(cmd, targets.display.image, targets.width, targets.height,
+                            readback.display);
     }
     if (!output.swapchain) return;
     const VkImage swapImage = output.swapchain->images.at(output.swapchainImage);
@@ -187,17 +195,19 @@ void recordOutputs(RendererState& s, VkCommandBuffer cmd, const FrameOutput& out
         vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                           VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                           VK_ACCESS_TRANSFER_WRITE_BIT));
-    if (width == s.width && height == s.height) {
-        vk::copyImage(cmd, s.display.image, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, width, height);
+    if (width == targets.width && height == targets.height) {
+        vk::copyImage(cmd, targets.display.image, swapImage, VK_IMAGE_ASPECT_COLOR_BIT, width,
+                      height);
     } else {  // a render scale: the frame is smaller than the window
-        vk::blitImage(cmd, s.display.image, s.width, s.height, swapImage, width, height);
+        vk::blitImage(cmd, targets.display.image, targets.width, targets.height, swapImage, width,
+                      height);
     }
     VkImageLayout layout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
     if (output.readbackSwapchain) {
         const VkDeviceSize bytes = VkDeviceSize(width) * height * 4;
-        if (s.readbackSwapchain.size != bytes) {
-            vk::destroyBuffer(ctx, s.readbackSwapchain);
-            vk::createHostBuffer(ctx, s.readbackSwapchain, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+        if (readback.swapchain.size != bytes) {
+            vk::destroyBuffer(ctx, readback.swapchain);
+            vk::createHostBuffer(ctx, readback.swapchain, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
         }
         vk::imageBarrier(
             cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
@@ -205,7 +215,7 @@ void recordOutputs(RendererState& s, VkCommandBuffer cmd, const FrameOutput& out
                               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT));
         layout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-        vk::copyImageToHost(cmd, swapImage, width, height, s.readbackSwapchain);
+        vk::copyImageToHost(cmd, swapImage, width, height, readback.swapchain);
     }
     vk::imageBarrier(
         cmd, swapImage, VK_IMAGE_ASPECT_COLOR_BIT,
@@ -214,22 +224,23 @@ void recordOutputs(RendererState& s, VkCommandBuffer cmd, const FrameOutput& out
                           VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0));
 }
 
-void readBackFrame(RendererState& s, const FrameOutput& output, float exposure) {
-    CapturedFrame& c = s.captured;
+void readBackFrame(const RenderTargets& targets, FrameReadback& readback, const FrameOutput& output,
+                   float exposure) {
+    CapturedFrame& c = readback.captured;
     if (output.readback) {
-        c.width = s.width;
-        c.height = s.height;
-        const size_t pixels = size_t(s.width) * s.height;
-        bgraToRgba(static_cast<const uint8_t*>(s.readbackDisplay.mapped), pixels, c.rgba8);
+        c.width = targets.width;
+        c.height = targets.height;
+        const size_t pixels = size_t(targets.width) * targets.height;
+        bgraToRgba(static_cast<const uint8_t*>(readback.display.mapped), pixels, c.rgba8);
         c.linearRgba.resize(pixels * 4);
-        const auto* halves = static_cast<const uint16_t*>(s.readbackHdr.mapped);
+        const auto* halves = static_cast<const uint16_t*>(readback.hdr.mapped);
         const float unexpose = 1.0f / exposure;
         for (size_t i = 0; i < pixels * 4; ++i)
             c.linearRgba[i] = (i % 4 == 3) ? 1.0f : glm::unpackHalf1x16(halves[i]) * unexpose;
     }
     if (output.swapchain && output.readbackSwapchain)
-        bgraToRgba(static_cast<const uint8_t*>(s.readbackSwapchain.mapped),
-                   size_t(s.readbackSwapchain.size / 4), c.swapchainRgba8);
+        bgraToRgba(static_cast<const uint8_t*>(readback.swapchain.mapped),
+                   size_t(readback.swapchain.size / 4), c.swapchainRgba8);
 }
 
 }  // namespace onelight::render

@@ -1,11 +1,13 @@
 // What a frame sees and draws, worked out on the CPU before recording: the camera and exposure,
 // the dynamic objects' transforms and the primaries the game handed over, the culled and sorted
 // draw list, the dynamic objects' grid lighting and the frame's uniforms.
+#include "render/frame_view.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
-#include "render/renderer_state.hpp"
+#include "render/pipelines.hpp"
 #include "shading.hpp"
 #include "world/entity_transform.hpp"
 #include "world/light_grid_sample.hpp"
@@ -27,11 +29,11 @@ void worldBounds(const glm::mat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec3& outM
     }
 }
 
-uint32_t pipelineKeyOf(const RendererState& s, uint32_t material) {
-    return s.options.flatShading
+uint32_t pipelineKeyOf(const SceneMaterials& materials, bool flatShading, uint32_t material) {
+    return flatShading
                ? 0u
-               : permutationKey(s.materialClasses[material], s.materialDoubleSided[material] != 0,
-                                s.materialAlphaMask[material] != 0);
+               : permutationKey(materials.classes[material], materials.doubleSided[material] != 0,
+                                materials.alphaMask[material] != 0);
 }
 
 }  // namespace
@@ -66,58 +68,62 @@ GpuLight gpuLightOf(const EffectSpot& spot) {
     return g;
 }
 
-FrameView frameViewOf(const RendererState& s, const FrameInputs& inputs) {
+FrameView frameViewOf(const LevelData& level, float aspect, const FrameInputs& inputs) {
     FrameView v;
     v.camera = inputs.camera;
-    const float diagonal = std::max(glm::length(s.boundsMax - s.boundsMin), 1.0f);
+    const float diagonal = std::max(glm::length(level.boundsMax - level.boundsMin), 1.0f);
     const float zfar =
         v.camera.zfar > 0.0f
             ? v.camera.zfar
-            : glm::length(v.camera.position - 0.5f * (s.boundsMin + s.boundsMax)) + diagonal;
-    v.projection = projectionMatrix(v.camera, float(s.width) / float(s.height), zfar);
+            : glm::length(v.camera.position - 0.5f * (level.boundsMin + level.boundsMax)) +
+                  diagonal;
+    v.projection = projectionMatrix(v.camera, aspect, zfar);
     v.viewProj = v.projection * viewMatrix(v.camera);
-    v.ev100 = v.camera.hasExposure     ? v.camera.ev100
-              : s.settings.hasExposure ? s.settings.exposureEv100
-                                       : s.info.autoEv100;
+    v.ev100 = v.camera.hasExposure         ? v.camera.ev100
+              : level.settings.hasExposure ? level.settings.exposureEv100
+                                           : level.autoEv100;
     v.exposure = glsl::exposure_fromEV100(v.ev100);
 
-    v.entityTransforms.resize(s.entities.size());
-    v.entityPrimary.assign(s.entities.size(), kNoIndex);
-    for (size_t e = 0; e < s.entities.size(); ++e)
-        v.entityTransforms[e] = world::worldFromObject(s.entities[e], s.entities[e].position);
+    const std::vector<world::Entity>& entities = level.entities;
+    v.entityTransforms.resize(entities.size());
+    v.entityPrimary.assign(entities.size(), kNoIndex);
+    for (size_t e = 0; e < entities.size(); ++e)
+        v.entityTransforms[e] = world::worldFromObject(entities[e], entities[e].position);
     for (const DynamicTransform& t : inputs.dynamicTransforms) {
         if (t.entity >= v.entityTransforms.size()) continue;
         v.entityTransforms[t.entity] = t.worldFromObject;
-        if (t.primary < s.lights.size()) v.entityPrimary[t.entity] = t.primary;
+        if (t.primary < level.lights.size()) v.entityPrimary[t.entity] = t.primary;
     }
     return v;
 }
 
-DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats& stats) {
+DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& materials,
+                       const world::Visibility& visibility, const RendererOptions& options,
+                       size_t entityCount, const FrameView& view, FrameStats& stats) {
     DrawList list;
     const Frustum frustum = frustumOf(view.viewProj);
     const glm::vec3 eye = view.camera.position;
-    const uint32_t materialCount = uint32_t(s.materialClasses.size());
+    const uint32_t materialCount = uint32_t(materials.classes.size());
     // A draw of `material`, its bounds [lo, hi] for the front-to-back order, and its primary
     // counted as visible.
     auto add = [&](Draw d, uint32_t material, glm::vec3 lo, glm::vec3 hi) {
         d.material = std::min(material, materialCount - 1);
-        d.key = pipelineKeyOf(s, d.material);
+        d.key = pipelineKeyOf(materials, options.flatShading, d.material);
         const glm::vec3 toCentre = 0.5f * (lo + hi) - eye;
         d.distance2 = glm::dot(toCentre, toCentre);
         list.draws.push_back(d);
         if (d.primaryLight != kNoIndex) list.visibleLights.push_back(d.primaryLight);
     };
     const uint32_t visibleRow =
-        s.options.visibilityCulling ? world::visibilityRowAt(s.visibility, eye) : kNoIndex;
-    for (size_t i = 0; i < s.surfaces.size(); ++i) {  // in the level's order
-        const DrawSurface& surface = s.surfaces[i];
+        options.visibilityCulling ? world::visibilityRowAt(visibility, eye) : kNoIndex;
+    for (size_t i = 0; i < geometry.surfaces.size(); ++i) {  // in the level's order
+        const DrawSurface& surface = geometry.surfaces[i];
         if (!intersects(frustum, surface.boundsMin, surface.boundsMax)) {
             ++stats.surfacesCulled;
             continue;
         }
         if (visibleRow != kNoIndex &&
-            !world::clusterInRow(s.visibility, visibleRow, s.visibility.surfaceCluster[i])) {
+            !world::clusterInRow(visibility, visibleRow, visibility.surfaceCluster[i])) {
             ++stats.surfacesCulled;
             ++stats.surfacesHidden;
             continue;
@@ -130,8 +136,8 @@ DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats
         add(d, surface.material, surface.boundsMin, surface.boundsMax);
         ++stats.surfacesDrawn;
     }
-    list.entityVisible.assign(s.entities.size(), 0);
-    for (const DrawDynamicMesh& mesh : s.dynamicMeshes) {
+    list.entityVisible.assign(entityCount, 0);
+    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
         glm::vec3 lo, hi;
         worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, lo, hi);
         if (!intersects(frustum, lo, hi)) continue;
@@ -148,9 +154,9 @@ DrawList buildDrawList(const RendererState& s, const FrameView& view, FrameStats
     std::sort(list.visibleLights.begin(), list.visibleLights.end());
     list.visibleLights.erase(std::unique(list.visibleLights.begin(), list.visibleLights.end()),
                              list.visibleLights.end());
-    batchDraws(list.draws, s.options.rasterFloor);
+    batchDraws(list.draws, options.rasterFloor);
     stats.draws = uint32_t(list.draws.size());
-    if (s.options.flatShading) list.visibleLights.clear();
+    if (options.flatShading) list.visibleLights.clear();
     return list;
 }
 
@@ -185,39 +191,40 @@ void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
     draws.resize(kept);
 }
 
-void writeObjectLighting(const RendererState& s, const FrameView& view, const DrawList& list,
-                         GpuObjectLighting* out) {
-    const bool useGrid = s.bakedLighting && !s.grid.cells.empty();
-    for (uint32_t e = 0; e < s.entities.size(); ++e) {
+void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
+                         const FrameView& view, const DrawList& list, GpuObjectLighting* out) {
+    const bool useGrid = baked.present && !baked.grid.cells.empty();
+    for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
         GpuObjectLighting& o = out[e];
         if (!useGrid) {  // the placeholder textures' neutral values: the ambient, visible
-            for (glm::vec4& face : o.ambientCube) face = glm::vec4(glm::vec3(s.ambientLux), 0.0f);
+            for (glm::vec4& face : o.ambientCube)
+                face = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
             o.ambientCube[0].w = 1.0f;
             continue;
         }
         const world::LightGridSample sample =
-            world::sampleLightGrid(s.grid, glm::vec3(view.entityTransforms[e][3]));
+            world::sampleLightGrid(baked.grid, glm::vec3(view.entityTransforms[e][3]));
         for (size_t f = 0; f < 6; ++f) o.ambientCube[f] = glm::vec4(sample.ambientCube[f], 0.0f);
         const uint32_t primary = view.entityPrimary[e];
         o.ambientCube[0].w =
-            primary != kNoIndex ? world::bakedVisibility(s.grid, sample, primary) : 1.0f;
+            primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
     }
 }
 
-FrameUniforms frameUniformsOf(const RendererState& s, const FrameView& view,
-                              const EffectLights& effects) {
+FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options,
+                              const FrameView& view, const EffectLights& effects) {
     FrameUniforms u{};
     u.viewProj = view.viewProj;
     u.cameraPosition = glm::vec4(view.camera.position, view.exposure);
-    u.shadowParams = glm::vec4(s.options.shadowRadius, s.options.shadowBand,
-                               1.0f / float(s.options.shadowMapSize), 0.0f);
-    u.baked = glm::vec4(s.ambientLux, s.lightmapDecode, 0.0f, 0.0f);
-    u.probeParams = glm::vec4(float(s.probeMips), 0.0f, 0.0f, 0.0f);
+    u.shadowParams = glm::vec4(options.shadowRadius, options.shadowBand,
+                               1.0f / float(options.shadowMapSize), 0.0f);
+    u.baked = glm::vec4(scene.level.ambientLux, scene.baked.lightmapDecode, 0.0f, 0.0f);
+    u.probeParams = glm::vec4(float(scene.probes.mips), 0.0f, 0.0f, 0.0f);
     const uint32_t omnis = std::min(effects.omniCount, kMaxEffectOmnis);
-    u.counts = glm::uvec4(omnis, effects.spotOn ? 1u : 0u, s.probeCount, 0u);
+    u.counts = glm::uvec4(omnis, effects.spotOn ? 1u : 0u, scene.probes.count, 0u);
     u.skyFromClip = glm::inverse(view.projection * glm::mat4(glm::mat3(viewMatrix(view.camera))));
-    u.sky = glm::vec4(s.settings.skyRadiance, s.skyImage ? 1.0f : 0.0f);
+    u.sky = glm::vec4(scene.level.settings.skyRadiance, scene.sky.present ? 1.0f : 0.0f);
     for (uint32_t i = 0; i < omnis; ++i) u.effectOmnis[i] = gpuLightOf(effects.omni[i]);
     u.effectSpot = gpuLightOf(effects.spot);
     return u;

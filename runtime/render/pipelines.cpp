@@ -1,11 +1,12 @@
 // The renderer's pipelines and descriptor sets, laid out from the bindings of
 // shaders/gpu_interface.glsl: the forward permutations a level's materials use, the shadow
 // pipeline, the sky and tonemap pipelines, and the frame, material and tonemap sets.
+#include "render/pipelines.hpp"
+
 #include <algorithm>
 #include <string>
 #include <vector>
 
-#include "render/renderer_state.hpp"
 #include "vk/descriptors.hpp"
 #include "vk/vk_check.hpp"
 
@@ -69,39 +70,38 @@ std::vector<VkVertexInputAttributeDescription> vertexAttributes(bool positionOnl
     return a;
 }
 
-void createLayouts(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
+void createLayouts(const vk::Context& ctx, Pipelines& p) {
     std::vector<VkDescriptorSetLayoutBinding> materialBindings;
     for (int slot = 0; slot < glsl::TEXTURE_SLOT_COUNT; ++slot)
         materialBindings.push_back(vk::layoutBinding(uint32_t(slot), kSampled, kFragment));
     const std::vector<std::vector<VkDescriptorSetLayoutBinding>> forwardSets = {frameBindings(),
                                                                                 materialBindings};
-    vk::createPipelineLayout(ctx, s.forwardLayout, forwardSets, sizeof(DrawPush), kVertexFragment);
+    vk::createPipelineLayout(ctx, p.forwardLayout, forwardSets, sizeof(DrawPush), kVertexFragment);
     const std::vector<std::vector<VkDescriptorSetLayoutBinding>> noSets;
-    vk::createPipelineLayout(ctx, s.shadowLayout, noSets, sizeof(glm::mat4),
+    vk::createPipelineLayout(ctx, p.shadowLayout, noSets, sizeof(glm::mat4),
                              VK_SHADER_STAGE_VERTEX_BIT);
     const std::vector<std::vector<VkDescriptorSetLayoutBinding>> tonemapSets = {
         {vk::layoutBinding(glsl::BINDING_TONEMAP_HDR, kSampled, kFragment),
          vk::layoutBinding(glsl::BINDING_TONEMAP_LUT, kSampled, kFragment)}};
-    vk::createPipelineLayout(ctx, s.tonemapLayout, tonemapSets, 0, 0);
+    vk::createPipelineLayout(ctx, p.tonemapLayout, tonemapSets, 0, 0);
 }
 
 // Forward permutations: only those the level's materials use (and the flat one for benchmarks).
-void createForwardPipelines(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
+void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneMaterials& materials,
+                            const RendererOptions& options, const ForwardChoices& choices) {
     vk::GraphicsPipelineDesc forward;
     forward.vertexBindings = {{0, sizeof(world::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     forward.vertexAttributes = vertexAttributes(false);
-    forward.samples = s.samples;
+    forward.samples = choices.samples;
     forward.colorFormats = {kHdrFormat};
     forward.depthFormat = kDepthFormat;
     std::vector<uint32_t> keys;
-    for (size_t m = 0; m < s.materialClasses.size(); ++m)
-        keys.push_back(permutationKey(s.materialClasses[m], s.materialDoubleSided[m] != 0,
-                                      s.materialAlphaMask[m] != 0));
+    for (size_t m = 0; m < materials.classes.size(); ++m)
+        keys.push_back(permutationKey(materials.classes[m], materials.doubleSided[m] != 0,
+                                      materials.alphaMask[m] != 0));
     std::sort(keys.begin(), keys.end());
     keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    const int bakedLighting = s.bakedLighting || s.options.samplePlaceholders ? 1 : 0;
+    const int bakedLighting = choices.fetchBakedLighting ? 1 : 0;
     for (uint32_t key : keys) {
         const int materialClass = int(keyMaterialClass(key));
         const bool doubleSided = keyDoubleSided(key), alphaMask = keyAlphaMask(key);
@@ -113,35 +113,34 @@ void createForwardPipelines(RendererState& s) {
                             {glsl::SPEC_ALPHA_MASK, alphaMask ? 1 : 0},
                             {glsl::SPEC_FLAT_SHADING, 0},
                             {glsl::SPEC_BAKED_LIGHTING, bakedLighting},
-                            {glsl::SPEC_DIFFUSE_MODEL, s.diffuseModel},
-                            {glsl::SPEC_MATERIAL_PIPELINE, s.options.materialPipeline ? 1 : 0},
-                            {glsl::SPEC_PROBES, s.info.probes > 0 ? 1 : 0}}}};
-        s.forwardPipelines[key] = vk::createGraphicsPipeline(ctx, s.forwardLayout, forward);
-        s.info.permutations.push_back(std::string(kClassNames[materialClass]) +
-                                      (doubleSided ? "+double-sided" : "") +
-                                      (alphaMask ? "+alpha-mask" : ""));
+                            {glsl::SPEC_DIFFUSE_MODEL, choices.diffuseModel},
+                            {glsl::SPEC_MATERIAL_PIPELINE, options.materialPipeline ? 1 : 0},
+                            {glsl::SPEC_PROBES, choices.probes ? 1 : 0}}}};
+        p.forward[key] = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
+        p.permutations.push_back(std::string(kClassNames[materialClass]) +
+                                 (doubleSided ? "+double-sided" : "") +
+                                 (alphaMask ? "+alpha-mask" : ""));
     }
-    if (s.options.depthPrepass && !s.options.flatShading) {
+    if (options.depthPrepass && !options.flatShading) {
         vk::GraphicsPipelineDesc depth = forward;
         depth.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}}};
         depth.colorWrite = false;
         for (int doubleSided = 0; doubleSided < 2; ++doubleSided) {
             depth.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
-            s.depthPipelines[doubleSided] = vk::createGraphicsPipeline(ctx, s.forwardLayout, depth);
+            p.depth[doubleSided] = vk::createGraphicsPipeline(ctx, p.forwardLayout, depth);
         }
     }
-    if (s.options.flatShading) {
+    if (options.flatShading) {
         forward.cullMode = VK_CULL_MODE_BACK_BIT;
         forward.stages = {
             {VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}},
             {VK_SHADER_STAGE_FRAGMENT_BIT, kForwardFragSpirv, {{glsl::SPEC_FLAT_SHADING, 1}}}};
-        s.flatPipeline = vk::createGraphicsPipeline(ctx, s.forwardLayout, forward);
-        s.info.permutations = {"flat"};
+        p.flat = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
+        p.permutations = {"flat"};
     }
 }
 
-void createShadowAndTonemapPipelines(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
+void createShadowAndTonemapPipelines(const vk::Context& ctx, Pipelines& p) {
     vk::GraphicsPipelineDesc shadow;
     shadow.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kShadowVertSpirv, {}}};
     shadow.vertexBindings = {{0, sizeof(world::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
@@ -149,7 +148,7 @@ void createShadowAndTonemapPipelines(RendererState& s) {
     shadow.cullMode = VK_CULL_MODE_NONE;
     shadow.dynamicDepthBias = true;
     shadow.depthFormat = kDepthFormat;
-    s.shadowPipeline = vk::createGraphicsPipeline(ctx, s.shadowLayout, shadow);
+    p.shadow = vk::createGraphicsPipeline(ctx, p.shadowLayout, shadow);
 
     vk::GraphicsPipelineDesc tonemap;
     tonemap.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kFullscreenVertSpirv, {}},
@@ -157,104 +156,110 @@ void createShadowAndTonemapPipelines(RendererState& s) {
     tonemap.cullMode = VK_CULL_MODE_NONE;
     tonemap.depthTest = tonemap.depthWrite = false;
     tonemap.colorFormats = {kDisplayFormat};
-    s.tonemapPipeline = vk::createGraphicsPipeline(ctx, s.tonemapLayout, tonemap);
+    p.tonemap = vk::createGraphicsPipeline(ctx, p.tonemapLayout, tonemap);
 }
 
 // The sky pass: the forward pass's layout and targets, no depth writes, behind everything.
-void createSkyPipeline(RendererState& s) {
-    if (!s.skyImage) return;
+void createSkyPipeline(const vk::Context& ctx, Pipelines& p, const ForwardChoices& choices) {
+    if (!choices.skyImage) return;
     vk::GraphicsPipelineDesc sky;
     sky.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kSkyVertSpirv, {}},
                   {VK_SHADER_STAGE_FRAGMENT_BIT, kSkyFragSpirv, {}}};
     sky.cullMode = VK_CULL_MODE_NONE;
     sky.depthWrite = false;
-    sky.samples = s.samples;
+    sky.samples = choices.samples;
     sky.colorFormats = {kHdrFormat};
     sky.depthFormat = kDepthFormat;
-    s.skyPipeline = vk::createGraphicsPipeline(*s.ctx, s.forwardLayout, sky);
+    p.sky = vk::createGraphicsPipeline(ctx, p.forwardLayout, sky);
+}
+
+}  // namespace
+
+void createPipelines(const vk::Context& ctx, Pipelines& pipelines, const SceneMaterials& materials,
+                     const RendererOptions& options, const ForwardChoices& choices) {
+    createLayouts(ctx, pipelines);
+    createForwardPipelines(ctx, pipelines, materials, options, choices);
+    createShadowAndTonemapPipelines(ctx, pipelines);
+    createSkyPipeline(ctx, pipelines, choices);
+}
+
+void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines) {
+    for (VkPipeline* p : {&pipelines.sky, &pipelines.tonemap, &pipelines.shadow, &pipelines.flat,
+                          &pipelines.depth[0], &pipelines.depth[1]}) {
+        if (*p) vkDestroyPipeline(ctx.device, *p, nullptr);
+        *p = VK_NULL_HANDLE;
+    }
+    for (auto& [key, pipeline] : pipelines.forward)
+        vkDestroyPipeline(ctx.device, pipeline, nullptr);
+    pipelines.forward.clear();
+    vk::destroyPipelineLayout(ctx, pipelines.tonemapLayout);
+    vk::destroyPipelineLayout(ctx, pipelines.shadowLayout);
+    vk::destroyPipelineLayout(ctx, pipelines.forwardLayout);
 }
 
 // One frame set per frame slot, one material set per material, the tonemap set.
-void createDescriptorSets(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
-    const uint32_t materials = uint32_t(s.materialTextures.size());
+void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pipelines& pipelines,
+                          const FrameSlots& frames, const Scene& scene, const ShadowMaps& shadows,
+                          const vk::Buffer& lightRecords, const RenderTargets& targets) {
+    const uint32_t materials = uint32_t(scene.materials.bound.size());
     const std::vector<VkDescriptorSetLayoutBinding>& frame = frameBindings();
     const VkDescriptorPoolSize sizes[] = {
         {kUniform, kFramesInFlight * countOf(frame, kUniform)},
         {kStorage, kFramesInFlight * countOf(frame, kStorage)},
         {kSampled, kFramesInFlight * countOf(frame, kSampled) +
                        materials * uint32_t(glsl::TEXTURE_SLOT_COUNT) + 2}};
-    s.descriptorPool = vk::createDescriptorPool(ctx, kFramesInFlight + materials + 1, sizes);
+    sets.pool = vk::createDescriptorPool(ctx, kFramesInFlight + materials + 1, sizes);
 
-    const vk::Image& shadowMaps = s.frameShadows.image ? s.frameShadows : s.staticShadows;
-    for (FrameSlot& slot : s.frames) {
-        slot.frameSet =
-            vk::allocateDescriptorSet(ctx, s.descriptorPool, s.forwardLayout.setLayouts[0]);
+    const LookupTables& tables = scene.tables;
+    const vk::Image& shadowMaps = sampledShadowMaps(shadows);
+    for (uint32_t i = 0; i < kFramesInFlight; ++i) {
+        const FrameSlot& slot = frames.slots[i];
+        sets.frame[i] =
+            vk::allocateDescriptorSet(ctx, sets.pool, pipelines.forwardLayout.setLayouts[0]);
         vk::DescriptorWriter w;
-        w.set = slot.frameSet;
+        w.set = sets.frame[i];
         w.buffer(glsl::BINDING_FRAME, kUniform, slot.uniforms.buffer);
-        w.buffer(glsl::BINDING_LIGHTS, kStorage, s.lightBuffer.buffer);
+        w.buffer(glsl::BINDING_LIGHTS, kStorage, lightRecords.buffer);
         w.buffer(glsl::BINDING_SHADOW_VIEWS, kStorage, slot.shadowViews.buffer);
-        w.image(glsl::BINDING_SHADOW_MAPS, shadowMaps.view, s.shadowSampler);
-        w.image(glsl::BINDING_LIGHTMAP, s.lightmap.view, s.linearClamp);
-        w.image(glsl::BINDING_SHADOW_MASK, s.shadowMask.view, s.linearClamp);
+        w.image(glsl::BINDING_SHADOW_MAPS, shadowMaps.view, shadows.sampler);
+        w.image(glsl::BINDING_LIGHTMAP, scene.baked.lightmap.view, tables.linearClamp);
+        w.image(glsl::BINDING_SHADOW_MASK, scene.baked.shadowMask.view, tables.linearClamp);
         w.buffer(glsl::BINDING_OBJECT_LIGHTING, kStorage, slot.objectLighting.buffer);
-        w.image(glsl::BINDING_PROBES, s.probe.view, s.linearClamp);
-        w.buffer(glsl::BINDING_MATERIALS, kStorage, s.materialBuffer.buffer);
-        w.image(glsl::BINDING_ENV_BRDF, s.envBrdf.view, s.linearClamp);
-        w.buffer(glsl::BINDING_PROBE_RECORDS, kStorage, s.probeBuffer.buffer);
-        w.image(glsl::BINDING_SKY, s.sky.view, s.skySampler);
-        w.buffer(glsl::BINDING_PROBE_CELLS, kStorage, s.probeCellBuffer.buffer);
+        w.image(glsl::BINDING_PROBES, scene.probes.cubes.view, tables.linearClamp);
+        w.buffer(glsl::BINDING_MATERIALS, kStorage, scene.materials.records.buffer);
+        w.image(glsl::BINDING_ENV_BRDF, tables.envBrdf.view, tables.linearClamp);
+        w.buffer(glsl::BINDING_PROBE_RECORDS, kStorage, scene.probes.records.buffer);
+        w.image(glsl::BINDING_SKY, scene.sky.image.view, scene.sky.sampler);
+        w.buffer(glsl::BINDING_PROBE_CELLS, kStorage, scene.probes.cells.buffer);
         w.update(ctx);
     }
-    for (const MaterialTextures& textures : s.materialTextures) {
+    for (const MaterialTextures& textures : scene.materials.bound) {
         vk::DescriptorWriter m;
-        m.set = vk::allocateDescriptorSet(ctx, s.descriptorPool, s.forwardLayout.setLayouts[1]);
+        m.set = vk::allocateDescriptorSet(ctx, sets.pool, pipelines.forwardLayout.setLayouts[1]);
         for (uint32_t t = 0; t < uint32_t(glsl::TEXTURE_SLOT_COUNT); ++t)
             m.image(t, textures[t].first, textures[t].second);
         m.update(ctx);
-        s.materialSets.push_back(m.set);
+        sets.material.push_back(m.set);
     }
-    s.tonemapSet = vk::allocateDescriptorSet(ctx, s.descriptorPool, s.tonemapLayout.setLayouts[0]);
-    writeTonemapSet(s);
+    sets.tonemap = vk::allocateDescriptorSet(ctx, sets.pool, pipelines.tonemapLayout.setLayouts[0]);
+    writeTonemapSet(ctx, sets, targets, tables);
 }
 
-}  // namespace
+void destroyDescriptorSets(const vk::Context& ctx, DescriptorSets& sets) {
+    if (sets.pool) vkDestroyDescriptorPool(ctx.device, sets.pool, nullptr);
+    sets.pool = VK_NULL_HANDLE;
+    sets.material.clear();
+    sets.tonemap = VK_NULL_HANDLE;
+    sets.frame.fill(VK_NULL_HANDLE);
+}
 
-void writeTonemapSet(RendererState& s) {
+void writeTonemapSet(const vk::Context& ctx, const DescriptorSets& sets,
+                     const RenderTargets& targets, const LookupTables& tables) {
     vk::DescriptorWriter w;
-    w.set = s.tonemapSet;
-    w.image(glsl::BINDING_TONEMAP_HDR, s.hdr.view, s.nearestClamp);
-    w.image(glsl::BINDING_TONEMAP_LUT, s.lut.view, s.linearClamp);
-    w.update(*s.ctx);
-}
-
-void createPipelines(RendererState& s) {
-    createLayouts(s);
-    createForwardPipelines(s);
-    createShadowAndTonemapPipelines(s);
-    createSkyPipeline(s);
-    createDescriptorSets(s);
-}
-
-void destroyPipelines(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
-    if (s.descriptorPool) vkDestroyDescriptorPool(ctx.device, s.descriptorPool, nullptr);
-    s.descriptorPool = VK_NULL_HANDLE;
-    s.materialSets.clear();
-    s.tonemapSet = VK_NULL_HANDLE;
-    for (FrameSlot& slot : s.frames) slot.frameSet = VK_NULL_HANDLE;
-    for (VkPipeline* p : {&s.skyPipeline, &s.tonemapPipeline, &s.shadowPipeline, &s.flatPipeline,
-                          &s.depthPipelines[0], &s.depthPipelines[1]}) {
-        if (*p) vkDestroyPipeline(ctx.device, *p, nullptr);
-        *p = VK_NULL_HANDLE;
-    }
-    for (auto& [key, pipeline] : s.forwardPipelines)
-        vkDestroyPipeline(ctx.device, pipeline, nullptr);
-    s.forwardPipelines.clear();
-    vk::destroyPipelineLayout(ctx, s.tonemapLayout);
-    vk::destroyPipelineLayout(ctx, s.shadowLayout);
-    vk::destroyPipelineLayout(ctx, s.forwardLayout);
+    w.set = sets.tonemap;
+    w.image(glsl::BINDING_TONEMAP_HDR, targets.hdr.view, tables.nearestClamp);
+    w.image(glsl::BINDING_TONEMAP_LUT, tables.lut.view, tables.linearClamp);
+    w.update(ctx);
 }
 
 }  // namespace onelight::render

@@ -8,68 +8,40 @@
 #include <cstring>
 #include <vector>
 
-#include "render/renderer_state.hpp"
+#include "render/frame_passes.hpp"
+#include "render/frame_slots.hpp"
+#include "render/frame_view.hpp"
+#include "render/pipelines.hpp"
+#include "render/scene.hpp"
+#include "render/shadows.hpp"
+#include "render/targets.hpp"
 #include "vk/commands.hpp"
-#include "vk/timestamps.hpp"
 #include "vk/vk_check.hpp"
 
 namespace onelight::render {
 
+/// The renderer's parts, each owned here, created in the order of the fields (createRenderer)
+/// and destroyed in reverse (destroyRenderer). Each file takes only the parts it uses.
+struct RendererState {
+    vk::Context* ctx = nullptr;  // borrowed
+    RendererOptions options;
+    RendererInfo info;
+    Scene scene;              // the level on the CPU and the GPU, uploaded once
+    ShadowMaps shadows;       // the shadow slots, views and maps
+    vk::Buffer lightRecords;  // GpuLight per level light, with its first shadow view
+    RenderTargets targets;    // recreated by resizeRenderer
+    FrameReadback readback;   // recreated by resizeRenderer (the captured frame kept)
+    FrameSlots frames;        // the frames in flight
+    Pipelines pipelines;
+    DescriptorSets descriptors;          // borrow every part above
+    std::vector<uint32_t> drawnPrimary;  // per entity: the primary its last drawn frame used
+};
+
 namespace {
 
-void createFrameSlots(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
-    s.timestamps = vk::timestampsSupported(ctx);
-    const size_t entities = std::max<size_t>(s.entities.size(), 1);
-    for (FrameSlot& slot : s.frames) {
-        slot.cmd = vk::allocateCommandBuffer(ctx);
-        slot.done = vk::createFence(ctx);
-        if (s.timestamps) slot.timestamps = vk::createTimestampPool(ctx, kTimestampCount);
-        vk::createHostBuffer(ctx, slot.uniforms, sizeof(FrameUniforms),
-                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-        vk::createHostBuffer(ctx, slot.shadowViews, s.views.size() * sizeof(GpuShadowView),
-                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        vk::createHostBuffer(ctx, slot.objectLighting, entities * sizeof(GpuObjectLighting),
-                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        std::memset(slot.shadowViews.mapped, 0, slot.shadowViews.size);
-        std::memset(slot.objectLighting.mapped, 0, slot.objectLighting.size);
-    }
-}
-
-void destroyFrameSlots(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
-    for (FrameSlot& slot : s.frames) {
-        vk::destroyBuffer(ctx, slot.objectLighting);
-        vk::destroyBuffer(ctx, slot.shadowViews);
-        vk::destroyBuffer(ctx, slot.uniforms);
-        if (slot.timestamps) vkDestroyQueryPool(ctx.device, slot.timestamps, nullptr);
-        if (slot.done) vkDestroyFence(ctx.device, slot.done, nullptr);
-        if (slot.cmd) vkFreeCommandBuffers(ctx.device, ctx.commandPool, 1, &slot.cmd);
-        slot.cmd = VK_NULL_HANDLE;
-        slot.done = VK_NULL_HANDLE;
-        slot.timestamps = VK_NULL_HANDLE;
-        slot.pending = false;
-    }
-}
-
-// Waits for the slot's last frame, if one is pending, and reports its GPU times in `stats`.
-void finishFrame(RendererState& s, FrameSlot& slot, FrameStats& stats) {
-    if (!slot.pending) return;
-    vk::waitForFence(*s.ctx, slot.done, "drawFrame");
-    slot.pending = false;
-    if (!s.timestamps) return;
-    const std::vector<double> t = vk::readTimestampsMs(*s.ctx, slot.timestamps, kTimestampCount);
-    stats.gpuTimestamps = true;
-    stats.gpuFrame = slot.frame;
-    stats.gpuShadowMs = t[1] - t[0];
-    stats.gpuForwardMs = t[2] - t[1];
-    stats.gpuTonemapMs = t[3] - t[2];
-    stats.gpuMs = t[3];
-}
-
-void writeTimestamp(const RendererState& s, VkCommandBuffer cmd, const FrameSlot& slot,
+void writeTimestamp(const FrameSlots& frames, VkCommandBuffer cmd, const FrameSlot& slot,
                     uint32_t index) {
-    if (!s.timestamps) return;
+    if (!frames.timestamps) return;
     if (index == 0) vkCmdResetQueryPool(cmd, slot.timestamps, 0, kTimestampCount);
     vkCmdWriteTimestamp(
         cmd, index == 0 ? VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT : VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
@@ -77,23 +49,27 @@ void writeTimestamp(const RendererState& s, VkCommandBuffer cmd, const FrameSlot
 }
 
 // Records the whole frame into the slot's command buffer.
-void recordFrame(RendererState& s, FrameSlot& slot, const FrameView& view, const DrawList& list,
+void recordFrame(RendererState& s, uint32_t slotIndex, const FrameView& view, const DrawList& list,
                  const FrameOutput& output, FrameStats& stats) {
+    const FrameSlot& slot = s.frames.slots[slotIndex];
     const VkCommandBuffer cmd = slot.cmd;
     vk::beginOneTimeCommands(cmd);
-    writeTimestamp(s, cmd, slot, 0);
+    writeTimestamp(s.frames, cmd, slot, 0);
     stats.shadowViewsRendered =
-        recordShadowPasses(s, cmd, list.visibleLights, view.entityTransforms);
-    writeTimestamp(s, cmd, slot, 1);
-    recordForwardPass(s, cmd, slot, view, list, stats);
-    writeTimestamp(s, cmd, slot, 2);
-    recordTonemapPass(s, cmd);
-    writeTimestamp(s, cmd, slot, 3);
-    recordOutputs(s, cmd, output);
+        recordShadowPasses(s.shadows, cmd, s.pipelines.shadow, s.pipelines.shadowLayout,
+                           s.scene.geometry, list.visibleLights, view.entityTransforms);
+    writeTimestamp(s.frames, cmd, slot, 1);
+    recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors,
+                      s.descriptors.frame[slotIndex], view, list, stats);
+    writeTimestamp(s.frames, cmd, slot, 2);
+    recordTonemapPass(cmd, s.targets, s.pipelines, s.descriptors);
+    writeTimestamp(s.frames, cmd, slot, 3);
+    recordOutputs(*s.ctx, cmd, s.targets, s.readback, output);
     VK_CHECK(vkEndCommandBuffer(cmd));
 }
 
-void submitFrame(RendererState& s, FrameSlot& slot, const FrameOutput& output) {
+void submitFrame(const vk::Context& ctx, FrameSlots& frames, FrameSlot& slot,
+                 const FrameOutput& output) {
     vk::SubmitSync sync;
     sync.fence = slot.done;
     if (output.swapchain) {
@@ -101,8 +77,8 @@ void submitFrame(RendererState& s, FrameSlot& slot, const FrameOutput& output) {
         sync.waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
         sync.signal = output.swapchain->frameCopied.at(output.swapchainImage);
     }
-    vk::submitCommands(*s.ctx, slot.cmd, sync);
-    slot.frame = s.framesSubmitted++;
+    vk::submitCommands(ctx, slot.cmd, sync);
+    slot.frame = frames.submitted++;
     slot.pending = true;
 }
 
@@ -134,19 +110,40 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
     RendererState& s = *renderer.state;
     s.ctx = &ctx;
     s.options = options;
-    s.width = std::max(options.width, 1u);
-    s.height = std::max(options.height, 1u);
-    s.samples = pickSamples(ctx, options.requestedMsaa);
+    const VkSampleCountFlagBits samples = pickSamples(ctx, options.requestedMsaa);
     s.info.deviceName = ctx.properties.deviceName;
     s.info.msaaRequested = options.requestedMsaa;
-    s.info.msaaInUse = uint32_t(s.samples);
+    s.info.msaaInUse = uint32_t(samples);
     try {
-        uploadScene(s, level);
-        createShadows(s);
-        uploadLights(s);
-        createTargets(s);
-        createFrameSlots(s);
-        createPipelines(s);
+        createScene(ctx, s.scene, level, options);
+        const Scene& scene = s.scene;
+        s.info.ambientLux = scene.level.ambientLux;
+        s.info.autoEv100 = scene.level.autoEv100;
+        s.info.bakedLighting = scene.baked.present;
+        s.info.lightmapDecode = scene.baked.lightmapDecode;
+        s.info.probes = scene.probes.baked;
+        s.info.probeBytes = scene.probes.bytes;
+        s.info.skyImage = scene.sky.present;
+        s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
+
+        createShadows(ctx, s.shadows, scene.level.lights, options,
+                      !scene.geometry.dynamicMeshes.empty());
+        s.info.shadowLayers = s.shadows.layers;
+        createLightRecords(ctx, s.lightRecords, scene.level.lights, firstShadowViews(s.shadows));
+        createTargets(ctx, s.targets, std::max(options.width, 1u), std::max(options.height, 1u),
+                      samples);
+        createReadback(ctx, s.readback, s.targets.width, s.targets.height);
+        createFrameSlots(ctx, s.frames, s.shadows.views.size(), scene.level.entities.size());
+        ForwardChoices choices;
+        choices.samples = samples;
+        choices.fetchBakedLighting = scene.baked.present || options.samplePlaceholders;
+        choices.diffuseModel = int(scene.level.settings.diffuseModel);
+        choices.probes = scene.probes.baked > 0;
+        choices.skyImage = scene.sky.present;
+        createPipelines(ctx, s.pipelines, scene.materials, options, choices);
+        s.info.permutations = s.pipelines.permutations;
+        createDescriptorSets(ctx, s.descriptors, s.pipelines, s.frames, scene, s.shadows,
+                             s.lightRecords, s.targets);
     } catch (...) {
         destroyRenderer(renderer);
         throw;
@@ -156,12 +153,16 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
 void destroyRenderer(Renderer& renderer) {
     if (!renderer.state) return;
     RendererState& s = *renderer.state;
-    vkDeviceWaitIdle(s.ctx->device);
-    destroyPipelines(s);
-    destroyFrameSlots(s);
-    destroyTargets(s);
-    destroyShadows(s);
-    destroyScene(s);
+    const vk::Context& ctx = *s.ctx;
+    vkDeviceWaitIdle(ctx.device);
+    destroyDescriptorSets(ctx, s.descriptors);
+    destroyPipelines(ctx, s.pipelines);
+    destroyFrameSlots(ctx, s.frames);
+    destroyReadback(ctx, s.readback);
+    destroyTargets(ctx, s.targets);
+    vk::destroyBuffer(ctx, s.lightRecords);
+    destroyShadows(ctx, s.shadows);
+    destroyScene(ctx, s.scene);
     renderer.state.reset();
 }
 
@@ -170,7 +171,7 @@ const RendererInfo& rendererInfo(const Renderer& renderer) {
 }
 
 const CapturedFrame& capturedFrame(const Renderer& renderer) {
-    return renderer.state->captured;
+    return renderer.state->readback.captured;
 }
 
 uint32_t drawnPrimary(const Renderer& renderer, uint32_t entity) {
@@ -180,46 +181,56 @@ uint32_t drawnPrimary(const Renderer& renderer, uint32_t entity) {
 
 void resizeRenderer(Renderer& renderer, uint32_t width, uint32_t height) {
     RendererState& s = *renderer.state;
-    if (width == s.width && height == s.height) return;
-    VK_CHECK(vkDeviceWaitIdle(s.ctx->device));
-    destroyTargets(s);
-    s.width = std::max(width, 1u);
-    s.height = std::max(height, 1u);
-    createTargets(s);
-    writeTonemapSet(s);
+    if (width == s.targets.width && height == s.targets.height) return;
+    const vk::Context& ctx = *s.ctx;
+    VK_CHECK(vkDeviceWaitIdle(ctx.device));
+    const VkSampleCountFlagBits samples = s.targets.samples;
+    destroyReadback(ctx, s.readback);
+    destroyTargets(ctx, s.targets);
+    createTargets(ctx, s.targets, std::max(width, 1u), std::max(height, 1u), samples);
+    createReadback(ctx, s.readback, s.targets.width, s.targets.height);
+    writeTonemapSet(ctx, s.descriptors, s.targets, s.scene.tables);
 }
 
 void waitForFrames(Renderer& renderer) {
     RendererState& s = *renderer.state;
     FrameStats ignored;
-    for (FrameSlot& slot : s.frames) finishFrame(s, slot, ignored);
+    for (FrameSlot& slot : s.frames.slots) finishFrame(*s.ctx, slot, s.frames.timestamps, ignored);
 }
 
 FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameOutput& output) {
     RendererState& s = *renderer.state;
+    const vk::Context& ctx = *s.ctx;
+    const Scene& scene = s.scene;
     const auto cpuStart = std::chrono::steady_clock::now();
     FrameStats stats;
-    FrameSlot& slot = s.frames[s.framesSubmitted % kFramesInFlight];
-    finishFrame(s, slot, stats);  // the frame kFramesInFlight ago: its buffers are free again
+    const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
+    FrameSlot& slot = s.frames.slots[slotIndex];
+    // The frame kFramesInFlight ago: its buffers are free again.
+    finishFrame(ctx, slot, s.frames.timestamps, stats);
 
-    const FrameView view = frameViewOf(s, inputs);
+    const FrameView view =
+        frameViewOf(scene.level, float(s.targets.width) / float(s.targets.height), inputs);
     stats.ev100 = view.ev100;
     stats.exposure = view.exposure;
-    const DrawList list = buildDrawList(s, view, stats);
-    writeObjectLighting(s, view, list, static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
-    const FrameUniforms uniforms = frameUniformsOf(s, view, inputs.effects);
+    const DrawList list = buildDrawList(scene.geometry, scene.materials, scene.baked.visibility,
+                                        s.options, scene.level.entities.size(), view, stats);
+    writeObjectLighting(scene.level, scene.baked, view, list,
+                        static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
+    const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
     std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));
-    updateShadowViews(s, view.camera, list.visibleLights);
-    writeShadowViews(s, static_cast<GpuShadowView*>(slot.shadowViews.mapped));
-    s.drawnPrimary.assign(s.entities.size(), kNoIndex);
+    updateShadowViews(s.shadows, scene.level, s.options.shadowRadius, view.camera,
+                      list.visibleLights);
+    writeShadowViews(s.shadows, static_cast<GpuShadowView*>(slot.shadowViews.mapped));
+    s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
     for (const Draw& d : list.draws)
         if (d.entity != kNoIndex) s.drawnPrimary[d.entity] = d.primaryLight;
 
-    recordFrame(s, slot, view, list, output, stats);
-    submitFrame(s, slot, output);
+    recordFrame(s, slotIndex, view, list, output, stats);
+    submitFrame(ctx, s.frames, slot, output);
     if (output.readback || output.wait || (output.swapchain && output.readbackSwapchain)) {
-        finishFrame(s, slot, stats);
-        readBackFrame(s, output, view.exposure);
+        finishFrame(ctx, slot, s.frames.timestamps, stats);
+        readBackFrame(s.targets, s.readback, output, view.exposure);
     }
     stats.frame = slot.frame;
     stats.cpuMs =

@@ -1,5 +1,7 @@
 // The GPU scene: the level's geometry, materials, textures and lights, its baked lighting (or
 // neutral placeholders) and the colour LUT, uploaded once.
+#include "render/scene.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,8 +13,8 @@
 #include <glm/gtc/packing.hpp>
 
 #include "env_brdf_table.hpp"
+#include "render/frame_view.hpp"
 #include "render/probe_records.hpp"
-#include "render/renderer_state.hpp"
 #include "shading.hpp"
 #include "world/package/probe_section.hpp"
 
@@ -21,6 +23,8 @@ namespace onelight::render {
 namespace {
 
 namespace glsl = onelight::glsl;
+
+constexpr uint32_t kLutSize = 64;
 
 // A material's texture indices by slot (TEXTURE_* of gpu_interface.glsl): into the package's
 // processed textures when it holds them (the texture stage's mips), else into level.textures.
@@ -54,11 +58,12 @@ TextureSlots materialSlots(const assets::LoadedLevel& loaded, size_t material) {
 }
 
 // Every slot's placeholder: white, a flat normal for the normal map.
-MaterialTextures placeholderTextures(const RendererState& s) {
+MaterialTextures placeholderTextures(const SceneMaterials& materials, VkSampler linearClamp) {
     MaterialTextures bound;
     for (uint32_t t = 0; t < bound.size(); ++t)
-        bound[t] = {int(t) == glsl::TEXTURE_NORMAL ? s.flatNormal.view : s.white.view,
-                    s.linearClamp};
+        bound[t] = {
+            int(t) == glsl::TEXTURE_NORMAL ? materials.flatNormal.view : materials.white.view,
+            linearClamp};
     return bound;
 }
 
@@ -146,10 +151,10 @@ float skyIlluminance(const world::LevelSettings& settings, const world::HdrImage
 
 // The brightest primary's illuminance at the level centre, or the sky's on an open floor when
 // brighter (lux): what automatic exposure and the automatic placeholder ambient are based on.
-float referenceIlluminance(const RendererState& s, const world::HdrImage& sky) {
-    const glm::vec3 centre = 0.5f * (s.boundsMin + s.boundsMax);
+float referenceIlluminance(const LevelData& level, const world::HdrImage& sky) {
+    const glm::vec3 centre = 0.5f * (level.boundsMin + level.boundsMax);
     float best = 0.0f;
-    for (const world::Light& light : s.lights) {
+    for (const world::Light& light : level.lights) {
         if (light.role != world::LightRole::kPrimary) continue;
         float e = light.intensity * glsl::luminance(light.color);
         if (light.type != world::LightType::kDirectional) {
@@ -158,18 +163,18 @@ float referenceIlluminance(const RendererState& s, const world::HdrImage& sky) {
         }
         best = std::max(best, e);
     }
-    return std::max(best, skyIlluminance(s.settings, sky));
+    return std::max(best, skyIlluminance(level.settings, sky));
 }
 
-uint32_t textureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_t textureIndex,
-                    bool srgb) {
+uint32_t textureFor(const vk::Context& ctx, SceneMaterials& materials,
+                    const assets::LoadedLevel& loaded, uint32_t textureIndex, bool srgb) {
     const world::Texture& texture = loaded.level.textures.at(textureIndex);
     // Out of range, or the sky's image (decoded apart, as HDR): no material texture.
     if (texture.image >= loaded.images.size() || loaded.images[texture.image].width == 0)
         return kNoIndex;
     const uint64_t key = (uint64_t(texture.image) << 1) | (srgb ? 1u : 0u);
-    auto found = s.textureIndex.find(key);
-    if (found != s.textureIndex.end()) return found->second;
+    auto found = materials.textureIndex.find(key);
+    if (found != materials.textureIndex.end()) return found->second;
     const world::DecodedImage& decoded = loaded.images[texture.image];
     vk::ImageDesc desc;
     desc.format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
@@ -178,11 +183,11 @@ uint32_t textureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_
     desc.mipLevels = mipCount(decoded.width, decoded.height);
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    s.textures.emplace_back();
-    vk::createImage(*s.ctx, s.textures.back(), desc);
-    vk::uploadImage(*s.ctx, s.textures.back(), decoded.rgba);
-    const uint32_t index = uint32_t(s.textures.size() - 1);
-    s.textureIndex[key] = index;
+    materials.textures.emplace_back();
+    vk::createImage(ctx, materials.textures.back(), desc);
+    vk::uploadImage(ctx, materials.textures.back(), decoded.rgba);
+    const uint32_t index = uint32_t(materials.textures.size() - 1);
+    materials.textureIndex[key] = index;
     return index;
 }
 
@@ -200,10 +205,11 @@ VkFormat formatOf(world::TexelFormat format) {
 
 // The processed texture `index` uploaded with its own mips (the package checked their sizes),
 // once.
-uint32_t processedTextureFor(RendererState& s, const assets::LoadedLevel& loaded, uint32_t index) {
+uint32_t processedTextureFor(const vk::Context& ctx, SceneMaterials& materials,
+                             const assets::LoadedLevel& loaded, uint32_t index) {
     const uint64_t key = (uint64_t(1) << 63) | index;
-    auto found = s.textureIndex.find(key);
-    if (found != s.textureIndex.end()) return found->second;
+    auto found = materials.textureIndex.find(key);
+    if (found != materials.textureIndex.end()) return found->second;
     const world::ProcessedTexture& texture = loaded.processedTextures.textures.at(index);
     vk::ImageDesc desc;
     desc.format = formatOf(texture.format);
@@ -211,30 +217,31 @@ uint32_t processedTextureFor(RendererState& s, const assets::LoadedLevel& loaded
     desc.height = texture.height;
     desc.mipLevels = texture.mipCount;
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    s.textures.emplace_back();
-    vk::createImage(*s.ctx, s.textures.back(), desc);
-    vk::uploadImageMips(*s.ctx, s.textures.back(), texture.texels);
-    const uint32_t uploaded = uint32_t(s.textures.size() - 1);
-    s.textureIndex[key] = uploaded;
+    materials.textures.emplace_back();
+    vk::createImage(ctx, materials.textures.back(), desc);
+    vk::uploadImageMips(ctx, materials.textures.back(), texture.texels);
+    const uint32_t uploaded = uint32_t(materials.textures.size() - 1);
+    materials.textureIndex[key] = uploaded;
     return uploaded;
 }
 
-VkSampler samplerFor(RendererState& s, const world::Sampler& sampler) {
+VkSampler samplerFor(const vk::Context& ctx, SceneMaterials& materials,
+                     const world::Sampler& sampler, float anisotropy) {
     const uint64_t key = uint64_t(sampler.magFilter) | uint64_t(sampler.minFilter) << 16 |
                          uint64_t(sampler.wrapS) << 32 | uint64_t(sampler.wrapT) << 48;
-    auto found = s.samplers.find(key);
-    if (found != s.samplers.end()) return found->second;
+    auto found = materials.samplers.find(key);
+    if (found != materials.samplers.end()) return found->second;
     vk::SamplerDesc desc = samplerDesc(sampler);
     // Anisotropy only where there are mips to choose from (NEAREST and LINEAR have none).
     if (desc.maxLod != 0.0f)
-        desc.maxAnisotropy =
-            std::min(s.options.anisotropy, s.ctx->properties.limits.maxSamplerAnisotropy);
-    VkSampler created = vk::createSampler(*s.ctx, desc);
-    s.samplers[key] = created;
+        desc.maxAnisotropy = std::min(anisotropy, ctx.properties.limits.maxSamplerAnisotropy);
+    VkSampler created = vk::createSampler(ctx, desc);
+    materials.samplers[key] = created;
     return created;
 }
 
-void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
+void createGeometry(const vk::Context& ctx, SceneGeometry& geometry,
+                    const world::CompiledLevel& level) {
     // Static vertices, then dynamic ones; static indices, then dynamic ones. The static
     // surfaces' indices are laid out grouped by what their draws bind and push (material,
     // primary, lightmap atlas), in the level's order within a group, so that the surfaces a
@@ -266,8 +273,8 @@ void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
             firstIndex[i] = level.surfaces[i].firstIndex;
     }
     indices.insert(indices.end(), level.dynamicIndices.begin(), level.dynamicIndices.end());
-    createRecordBuffer(*s.ctx, s.vertices, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    createRecordBuffer(*s.ctx, s.indices, indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    createRecordBuffer(ctx, geometry.vertices, vertices, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    createRecordBuffer(ctx, geometry.indices, indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
     for (uint32_t i = 0; i < level.surfaces.size(); ++i) {
         const world::Surface& surface = level.surfaces[i];
@@ -279,7 +286,7 @@ void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
         d.atlas = surface.atlas;
         d.boundsMin = surface.boundsMin;
         d.boundsMax = surface.boundsMax;
-        s.surfaces.push_back(d);
+        geometry.surfaces.push_back(d);
     }
     const uint32_t staticVertices = uint32_t(level.vertices.size());
     const uint32_t staticIndices = uint32_t(level.indices.size());
@@ -302,15 +309,16 @@ void uploadGeometry(RendererState& s, const world::CompiledLevel& level) {
                 d.boundsMin = glm::min(d.boundsMin, p);
                 d.boundsMax = glm::max(d.boundsMax, p);
             }
-            s.dynamicMeshes.push_back(d);
+            geometry.dynamicMeshes.push_back(d);
         }
     }
 }
 
-void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
+// The materials' records and the classes, sidedness and alpha mode that pick their permutation.
+void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
+                           const assets::LoadedLevel& loaded, int forceMaterialClass) {
     const world::CompiledLevel& level = loaded.level;
     std::vector<GpuMaterial> gpu(std::max<size_t>(level.materials.size(), 1));
-    s.diffuseModel = int(level.settings.diffuseModel);
     for (size_t i = 0; i < level.materials.size(); ++i) {
         const world::Material& m = level.materials[i];
         GpuMaterial& g = gpu[i];
@@ -330,27 +338,27 @@ void uploadMaterials(RendererState& s, const assets::LoadedLevel& loaded) {
             if (slots[t] != world::kNoIndex) bits |= 1u << t;
         g.textures = glm::uvec4(bits, 0u, 0u, 0u);
         uint8_t cls = uint8_t(m.materialClass);
-        if (s.options.forceMaterialClass >= 0) cls = uint8_t(s.options.forceMaterialClass);
-        s.materialClasses.push_back(cls);
-        s.materialDoubleSided.push_back(m.doubleSided ? 1 : 0);
-        s.materialAlphaMask.push_back(m.alphaMode == world::AlphaMode::kMask ? 1 : 0);
+        if (forceMaterialClass >= 0) cls = uint8_t(forceMaterialClass);
+        materials.classes.push_back(cls);
+        materials.doubleSided.push_back(m.doubleSided ? 1 : 0);
+        materials.alphaMask.push_back(m.alphaMode == world::AlphaMode::kMask ? 1 : 0);
     }
     if (level.materials.empty()) {
         gpu[0].baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
         gpu[0].params = glm::vec4(0.0f, 1.0f, 1.0f, 1.0f);
     }
-    createRecordBuffer(*s.ctx, s.materialBuffer, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    createRecordBuffer(ctx, materials.records, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
-void createPlaceholders(RendererState& s) {
+void createPlaceholders(const vk::Context& ctx, SceneMaterials& materials) {
     vk::ImageDesc desc;
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     const uint8_t white[4] = {255, 255, 255, 255};
     const uint8_t flat[4] = {128, 128, 255, 255};
-    vk::createImage(*s.ctx, s.white, desc);
-    vk::uploadImage(*s.ctx, s.white, white);
-    vk::createImage(*s.ctx, s.flatNormal, desc);
-    vk::uploadImage(*s.ctx, s.flatNormal, flat);
+    vk::createImage(ctx, materials.white, desc);
+    vk::uploadImage(ctx, materials.white, white);
+    vk::createImage(ctx, materials.flatNormal, desc);
+    vk::uploadImage(ctx, materials.flatNormal, flat);
 }
 
 // The largest power of two 2^-k (k >= 0) that keeps every stored lightmap coefficient within
@@ -371,24 +379,25 @@ float lightmapStorageScale(const world::BakedLighting& baked) {
 // lightmap holds, per atlas and colour channel, the four linear coefficients of
 // world::linearIrradianceCoefficients in RGBA16F times a power-of-two storage scale; the shadow
 // mask its byte per texel in the red channel of RGBA8 (linear filtering is guaranteed for both).
-void uploadLightmaps(RendererState& s, const assets::LoadedLevel& loaded) {
+void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
+                     const assets::LoadedLevel& loaded) {
     const world::CompiledLevel& level = loaded.level;
-    const world::BakedLighting& baked = loaded.baked;
+    const world::BakedLighting& package = loaded.baked;
     uint32_t width = 1, height = 1;
     for (const world::Atlas& a : level.atlases) {
         width = std::max(width, a.width);
         height = std::max(height, a.height);
     }
     const uint32_t atlases = std::max<uint32_t>(uint32_t(level.atlases.size()), 1);
-    const float scale = lightmapStorageScale(baked);
-    s.lightmapDecode = 1.0f / scale;
+    const float scale = lightmapStorageScale(package);
+    baked.lightmapDecode = 1.0f / scale;
     const size_t layerTexels = size_t(width) * height;
     std::vector<uint16_t> coefficients(layerTexels * 4 * 3 * atlases, 0);
     std::vector<uint8_t> mask(layerTexels * 4 * atlases, 0);
-    s.atlasUvScale.clear();
+    baked.atlasUvScale.clear();
     for (uint32_t a = 0; a < level.atlases.size(); ++a) {
         const world::Atlas& atlas = level.atlases[a];
-        s.atlasUvScale.push_back(
+        baked.atlasUvScale.push_back(
             glm::vec2(float(atlas.width) / float(width), float(atlas.height) / float(height)));
         const uint64_t first = world::atlasTexelOffset(level, a);
         for (uint32_t y = 0; y < atlas.height; ++y)
@@ -397,12 +406,12 @@ void uploadLightmaps(RendererState& s, const assets::LoadedLevel& loaded) {
                 const size_t at = size_t(y) * width + x;
                 for (int c = 0; c < 3; ++c) {
                     const glm::vec4 k =
-                        world::linearIrradianceCoefficients(baked.texels[texel], c) * scale;
+                        world::linearIrradianceCoefficients(package.texels[texel], c) * scale;
                     uint16_t* out = &coefficients[((size_t(a) * 3 + c) * layerTexels + at) * 4];
                     for (int i = 0; i < 4; ++i) out[i] = glm::packHalf1x16(k[i]);
                 }
                 uint8_t* m = &mask[(size_t(a) * layerTexels + at) * 4];
-                m[0] = m[1] = m[2] = baked.shadowMask[texel];
+                m[0] = m[1] = m[2] = package.shadowMask[texel];
                 m[3] = 255;
             }
     }
@@ -413,14 +422,14 @@ void uploadLightmaps(RendererState& s, const assets::LoadedLevel& loaded) {
     desc.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
     desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    vk::createImage(*s.ctx, s.lightmap, desc);
-    vk::uploadImage(*s.ctx, s.lightmap,
+    vk::createImage(ctx, baked.lightmap, desc);
+    vk::uploadImage(ctx, baked.lightmap,
                     {reinterpret_cast<const uint8_t*>(coefficients.data()),
                      coefficients.size() * sizeof(uint16_t)});
     desc.layers = atlases;
     desc.format = VK_FORMAT_R8G8B8A8_UNORM;
-    vk::createImage(*s.ctx, s.shadowMask, desc);
-    vk::uploadImage(*s.ctx, s.shadowMask, mask);
+    vk::createImage(ctx, baked.shadowMask, desc);
+    vk::uploadImage(ctx, baked.shadowMask, mask);
 }
 
 // The environment probes: every probe's RGB9E5 texels, as baked, in one cube array (cube i for
@@ -429,14 +438,15 @@ void uploadLightmaps(RendererState& s, const assets::LoadedLevel& loaded) {
 // Without probes (or with options.probes off) one neutral cube: a uniform environment of
 // normalised radiance 1 / pi (its irradiance is its average: a uniform environment of L gives
 // E = pi L) behind a record that influences everything.
-void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
-    const std::vector<world::EnvironmentProbe>& probes = loaded.baked.probes;
+void createProbes(const vk::Context& ctx, EnvironmentProbes& out,
+                  const std::vector<world::EnvironmentProbe>& probes, bool useBaked,
+                  glm::vec3 boundsMin, glm::vec3 boundsMax) {
     vk::ImageDesc desc;
     desc.cube = true;
     desc.viewType = VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     std::vector<GpuProbe> records;
-    if (s.bakedLighting && s.options.probes && !probes.empty()) {
+    if (useBaked && !probes.empty()) {
         const uint32_t size = probes[0].faceSize;
         for (size_t i = 0; i < probes.size(); ++i) {
             if (probes[i].faceSize != size || probes[i].mipCount != probes[0].mipCount)
@@ -451,13 +461,13 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
                                          " texels; expected every mip of a " +
                                          std::to_string(size) + "^2 cube down to 1x1");
         }
-        const uint32_t maxProbes = s.ctx->properties.limits.maxImageArrayLayers / 6;
+        const uint32_t maxProbes = ctx.properties.limits.maxImageArrayLayers / 6;
         if (probes.size() > maxProbes)
             throw std::runtime_error(std::to_string(probes.size()) + " environment probes; this " +
                                      "device holds at most " + std::to_string(maxProbes) +
                                      " (maxImageArrayLayers " + std::to_string(maxProbes * 6) +
                                      " / 6 faces)");
-        const ProbeRecords ordered = makeProbeRecords(probes, s.boundsMin, s.boundsMax);
+        const ProbeRecords ordered = makeProbeRecords(probes, boundsMin, boundsMax);
         records = ordered.records;
         desc.format = VK_FORMAT_E5B9G9R9_UFLOAT_PACK32;
         desc.width = desc.height = size;
@@ -473,62 +483,71 @@ void uploadProbes(RendererState& s, const assets::LoadedLevel& loaded) {
                               probes[p].texels.begin() + long(mipStart + mipTexels));
             mipStart += mipTexels;
         }
-        vk::createImage(*s.ctx, s.probe, desc);
-        vk::uploadImageMips(*s.ctx, s.probe,
+        vk::createImage(ctx, out.cubes, desc);
+        vk::uploadImageMips(ctx, out.cubes,
                             {reinterpret_cast<const uint8_t*>(texels.data()), texels.size() * 4});
-        s.info.probes = uint32_t(probes.size());
-        s.info.probeBytes = texels.size() * 4;
+        out.baked = uint32_t(probes.size());
+        out.bytes = texels.size() * 4;
     } else {
         records = {placeholderProbeRecord()};
         desc.layers = 6;
         std::vector<float> faces;
         for (int f = 0; f < 6; ++f)
             for (int c = 0; c < 4; ++c) faces.push_back(c < 3 ? float(glsl::INV_PI) : 1.0f);
-        createHalfImage(*s.ctx, s.probe, desc, faces);
-        s.info.probes = 0;
-        s.info.probeBytes = 0;
+        createHalfImage(ctx, out.cubes, desc, faces);
+        out.baked = 0;
+        out.bytes = 0;
     }
-    s.probeCount = uint32_t(records.size());
-    s.probeMips = s.probe.desc.mipLevels;
-    createRecordBuffer(*s.ctx, s.probeBuffer, records, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    const ProbeCells cells = makeProbeCells(records, s.boundsMin, s.boundsMax);
+    out.count = uint32_t(records.size());
+    out.mips = out.cubes.desc.mipLevels;
+    createRecordBuffer(ctx, out.records, records, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    const ProbeCells cells = makeProbeCells(records, boundsMin, boundsMax);
     std::vector<uint32_t> cellWords(sizeof(GpuProbeGrid) / 4);
     std::memcpy(cellWords.data(), &cells.grid, sizeof(GpuProbeGrid));
     cellWords.insert(cellWords.end(), cells.words.begin(), cells.words.end());
-    createRecordBuffer(*s.ctx, s.probeCellBuffer, cellWords, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    createRecordBuffer(ctx, out.cells, cellWords, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
+void destroyProbes(const vk::Context& ctx, EnvironmentProbes& probes) {
+    vk::destroyBuffer(ctx, probes.cells);
+    vk::destroyBuffer(ctx, probes.records);
+    vk::destroyImage(ctx, probes.cubes);
 }
 
 // The baked-lighting interface: the package's lightmaps, shadow masks and light grid, or
 // neutral content for a level without them (a constant ambient of ambientLux, no baked shadow)
 // that the placeholder-fetching test permutation reads.
-void uploadBakedLighting(RendererState& s, const assets::LoadedLevel& loaded) {
-    s.bakedLighting = loaded.hasBakedLighting;
-    if (s.bakedLighting) {
-        uploadLightmaps(s, loaded);
-        s.grid = loaded.baked.grid;
-        s.visibility = loaded.baked.visibility;
+void createBakedLighting(const vk::Context& ctx, BakedLightingMaps& baked,
+                         const assets::LoadedLevel& loaded, float ambientLux) {
+    baked.present = loaded.hasBakedLighting;
+    if (baked.present) {
+        uploadLightmaps(ctx, baked, loaded);
+        baked.grid = loaded.baked.grid;
+        baked.visibility = loaded.baked.visibility;
     } else {
-        const float a = s.ambientLux;
+        const float a = ambientLux;
         vk::ImageDesc lm;
         lm.layers = 3;
         lm.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-        createHalfImage(*s.ctx, s.lightmap, lm,
+        createHalfImage(ctx, baked.lightmap, lm,
                         {a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f});
         vk::ImageDesc mask;
         mask.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-        createHalfImage(*s.ctx, s.shadowMask, mask, {1.0f, 1.0f, 1.0f, 1.0f});
-        s.lightmapDecode = 1.0f;
-        s.atlasUvScale.assign(loaded.level.atlases.size(), glm::vec2(1.0f));
-        s.grid = world::LightGrid{};
-        s.visibility = world::Visibility{};
+        createHalfImage(ctx, baked.shadowMask, mask, {1.0f, 1.0f, 1.0f, 1.0f});
+        baked.lightmapDecode = 1.0f;
+        baked.atlasUvScale.assign(loaded.level.atlases.size(), glm::vec2(1.0f));
+        baked.grid = world::LightGrid{};
+        baked.visibility = world::Visibility{};
     }
-    s.info.bakedLighting = s.bakedLighting;
-    s.info.lightmapDecode = s.lightmapDecode;
-    uploadProbes(s, loaded);
+}
+
+void destroyBakedLighting(const vk::Context& ctx, BakedLightingMaps& baked) {
+    vk::destroyImage(ctx, baked.shadowMask);
+    vk::destroyImage(ctx, baked.lightmap);
 }
 
 // The colour LUT: filmic curve and sRGB encoding at the shaper's texel centres.
-void createLut(RendererState& s) {
+void createLut(const vk::Context& ctx, vk::Image& lut) {
     std::vector<float> texels;
     texels.reserve(size_t(kLutSize) * kLutSize * kLutSize * 4);
     float curve[kLutSize];
@@ -545,146 +564,175 @@ void createLut(RendererState& s) {
             }
     vk::ImageDesc desc;
     desc.width = desc.height = desc.depth = kLutSize;
-    createHalfImage(*s.ctx, s.lut, desc, texels);
+    createHalfImage(ctx, lut, desc, texels);
 }
 
 // The split-sum table of the runtime model (shaders/lighting.glsl, env_brdf_table.hpp): the
 // lobe's albedo integrated at the grid points, read at envBrdfTableCoord; one fetch.
-void createEnvBrdfTable(RendererState& s) {
+void createEnvBrdfTable(const vk::Context& ctx, vk::Image& envBrdf) {
     std::vector<float> texels;
     for (uint32_t t = 0; t < glsl::kEnvBrdfTableSize * glsl::kEnvBrdfTableSize; ++t)
         texels.insert(texels.end(),
                       {glsl::kEnvBrdfTable[2 * t], glsl::kEnvBrdfTable[2 * t + 1], 0.0f, 1.0f});
     vk::ImageDesc desc;
     desc.width = desc.height = glsl::kEnvBrdfTableSize;
-    createHalfImage(*s.ctx, s.envBrdf, desc, texels);
+    createHalfImage(ctx, envBrdf, desc, texels);
+}
+
+void createLookupTables(const vk::Context& ctx, LookupTables& tables) {
+    vk::SamplerDesc clamp;
+    clamp.addressU = clamp.addressV = clamp.addressW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    tables.linearClamp = vk::createSampler(ctx, clamp);
+    clamp.magFilter = clamp.minFilter = VK_FILTER_NEAREST;
+    clamp.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    tables.nearestClamp = vk::createSampler(ctx, clamp);
+    createLut(ctx, tables.lut);
+    createEnvBrdfTable(ctx, tables.envBrdf);
+}
+
+void destroyLookupTables(const vk::Context& ctx, LookupTables& tables) {
+    vk::destroyImage(ctx, tables.envBrdf);
+    vk::destroyImage(ctx, tables.lut);
+    if (tables.nearestClamp) vkDestroySampler(ctx.device, tables.nearestClamp, nullptr);
+    if (tables.linearClamp) vkDestroySampler(ctx.device, tables.linearClamp, nullptr);
+    tables.nearestClamp = tables.linearClamp = VK_NULL_HANDLE;
 }
 
 // The sky image at full resolution (its light is already in the baked lighting; here it is
 // only seen), linear RGB in half floats, clamped to their range; one black texel without one.
-void uploadSky(RendererState& s, const assets::LoadedLevel& loaded) {
-    const world::HdrImage& sky = loaded.sky;
-    s.skyImage = sky.width > 0 && sky.height > 0;
+void createSky(const vk::Context& ctx, SkyImage& out, const world::HdrImage& sky) {
+    out.present = sky.width > 0 && sky.height > 0;
     vk::ImageDesc desc;
-    desc.width = s.skyImage ? sky.width : 1;
-    desc.height = s.skyImage ? sky.height : 1;
+    desc.width = out.present ? sky.width : 1;
+    desc.height = out.present ? sky.height : 1;
     std::vector<float> texels(size_t(desc.width) * desc.height * 4, 0.0f);
-    if (s.skyImage)
+    if (out.present)
         for (size_t t = 0; t < size_t(sky.width) * sky.height; ++t)
             for (size_t c = 0; c < 3; ++c)
                 texels[4 * t + c] = std::min(sky.rgb[3 * t + c], glsl::HDR_MAX);
-    createHalfImage(*s.ctx, s.sky, desc, texels);
+    createHalfImage(ctx, out.image, desc, texels);
     vk::SamplerDesc wrapU;
     wrapU.addressU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
     wrapU.addressV = wrapU.addressW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    s.skySampler = vk::createSampler(*s.ctx, wrapU);
-    s.info.skyImage = s.skyImage;
+    out.sampler = vk::createSampler(ctx, wrapU);
 }
 
-}  // namespace
-
-void uploadLights(RendererState& s) {
-    std::vector<GpuLight> gpu;
-    for (uint32_t i = 0; i < s.lights.size(); ++i) {
-        const uint32_t slot = s.lightSlot.at(i);
-        gpu.push_back(
-            gpuLightOf(s.lights[i], slot == kNoIndex ? kNoIndex : s.slots[slot].firstView));
-    }
-    if (gpu.empty()) gpu.emplace_back();  // a binding needs a record
-    createRecordBuffer(*s.ctx, s.lightBuffer, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+void destroySky(const vk::Context& ctx, SkyImage& sky) {
+    if (sky.sampler) vkDestroySampler(ctx.device, sky.sampler, nullptr);
+    sky.sampler = VK_NULL_HANDLE;
+    vk::destroyImage(ctx, sky.image);
 }
 
-void uploadScene(RendererState& s, const assets::LoadedLevel& loaded) {
+LevelData levelDataOf(const assets::LoadedLevel& loaded, const RendererOptions& options) {
     const world::CompiledLevel& level = loaded.level;
-    s.settings = level.settings;
-    s.lights = level.lights;
-    s.entities = level.entities;
-    s.boundsMin = level.settings.boundsMin;
-    s.boundsMax = level.settings.boundsMax;
+    LevelData d;
+    d.settings = level.settings;
+    d.lights = level.lights;
+    d.entities = level.entities;
+    d.boundsMin = level.settings.boundsMin;
+    d.boundsMax = level.settings.boundsMax;
     for (const world::Entity& e : level.entities) {  // dynamic objects widen the bounds
-        s.boundsMin = glm::min(s.boundsMin, e.position);
-        s.boundsMax = glm::max(s.boundsMax, e.position);
+        d.boundsMin = glm::min(d.boundsMin, e.position);
+        d.boundsMax = glm::max(d.boundsMax, e.position);
     }
-    s.drawnPrimary.assign(level.entities.size(), kNoIndex);
-
-    const float reference = referenceIlluminance(s, loaded.sky);
-    s.ambientLux = s.options.placeholderAmbientLux >= 0.0f
-                       ? s.options.placeholderAmbientLux
+    const float reference = referenceIlluminance(d, loaded.sky);
+    d.ambientLux = options.placeholderAmbientLux >= 0.0f
+                       ? options.placeholderAmbientLux
                        : (reference > 0.0f ? 0.1f * reference : 1.0f);
-    s.info.ambientLux = s.ambientLux;
-    s.info.autoEv100 = glsl::ev100_fromIlluminance(reference > 0.0f ? reference : s.ambientLux);
+    d.autoEv100 = glsl::ev100_fromIlluminance(reference > 0.0f ? reference : d.ambientLux);
+    return d;
+}
 
-    vk::SamplerDesc clamp;
-    clamp.addressU = clamp.addressV = clamp.addressW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    s.linearClamp = vk::createSampler(*s.ctx, clamp);
-    clamp.magFilter = clamp.minFilter = VK_FILTER_NEAREST;
-    clamp.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    s.nearestClamp = vk::createSampler(*s.ctx, clamp);
-
-    uploadGeometry(s, level);
-    uploadMaterials(s, loaded);
-    createPlaceholders(s);
-    uploadBakedLighting(s, loaded);
-    createLut(s);
-    createEnvBrdfTable(s);
-    uploadSky(s, loaded);
-
-    // Material textures: (image, sampler) per slot, placeholders where absent.
-    s.materialTextures.clear();
+// The materials: records, placeholders, and per slot the (image, sampler) bound, placeholders
+// where absent; one default material when the level has none.
+void createMaterials(const vk::Context& ctx, SceneMaterials& materials,
+                     const assets::LoadedLevel& loaded, const RendererOptions& options,
+                     VkSampler linearClamp) {
+    const world::CompiledLevel& level = loaded.level;
+    uploadMaterialRecords(ctx, materials, loaded, options.forceMaterialClass);
+    createPlaceholders(ctx, materials);
+    materials.bound.clear();
     for (size_t i = 0; i < level.materials.size(); ++i) {
         const TextureSlots slots = materialSlots(loaded, i);
-        MaterialTextures bound = placeholderTextures(s);
+        MaterialTextures bound = placeholderTextures(materials, linearClamp);
         for (uint32_t t = 0; t < slots.size(); ++t) {
             if (slots[t] == world::kNoIndex) continue;
             if (loaded.hasProcessedTextures) {
-                const uint32_t image = processedTextureFor(s, loaded, slots[t]);
-                bound[t] = {s.textures[image].view,
-                            samplerFor(s, loaded.processedTextures.textures[slots[t]].sampler)};
+                const uint32_t image = processedTextureFor(ctx, materials, loaded, slots[t]);
+                bound[t] = {
+                    materials.textures[image].view,
+                    samplerFor(ctx, materials, loaded.processedTextures.textures[slots[t]].sampler,
+                               options.anisotropy)};
                 continue;
             }
             const bool srgb =
                 int(t) == glsl::TEXTURE_BASE_COLOR || int(t) == glsl::TEXTURE_EMISSIVE;
-            const uint32_t image = textureFor(s, loaded, slots[t], srgb);
+            const uint32_t image = textureFor(ctx, materials, loaded, slots[t], srgb);
             if (image == kNoIndex) continue;
-            bound[t] = {s.textures[image].view, samplerFor(s, level.textures.at(slots[t]).sampler)};
+            bound[t] = {materials.textures[image].view,
+                        samplerFor(ctx, materials, level.textures.at(slots[t]).sampler,
+                                   options.anisotropy)};
         }
-        s.materialTextures.push_back(bound);
+        materials.bound.push_back(bound);
     }
-    if (s.materialTextures.empty()) {
-        s.materialTextures.push_back(placeholderTextures(s));
-        s.materialClasses.push_back(
-            uint8_t(s.options.forceMaterialClass >= 0 ? s.options.forceMaterialClass : 3));
-        s.materialDoubleSided.push_back(0);
-        s.materialAlphaMask.push_back(0);
+    if (materials.bound.empty()) {
+        materials.bound.push_back(placeholderTextures(materials, linearClamp));
+        materials.classes.push_back(
+            uint8_t(options.forceMaterialClass >= 0 ? options.forceMaterialClass : 3));
+        materials.doubleSided.push_back(0);
+        materials.alphaMask.push_back(0);
     }
 }
 
-void destroyScene(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
-    if (s.nearestClamp) vkDestroySampler(ctx.device, s.nearestClamp, nullptr);
-    if (s.linearClamp) vkDestroySampler(ctx.device, s.linearClamp, nullptr);
-    s.nearestClamp = s.linearClamp = VK_NULL_HANDLE;
-    vk::destroyImage(ctx, s.envBrdf);
-    vk::destroyImage(ctx, s.sky);
-    if (s.skySampler) vkDestroySampler(ctx.device, s.skySampler, nullptr);
-    s.skySampler = VK_NULL_HANDLE;
-    vk::destroyImage(ctx, s.lut);
-    vk::destroyImage(ctx, s.shadowMask);
-    vk::destroyImage(ctx, s.lightmap);
-    vk::destroyImage(ctx, s.probe);
-    vk::destroyBuffer(ctx, s.probeBuffer);
-    vk::destroyBuffer(ctx, s.probeCellBuffer);
-    vk::destroyImage(ctx, s.flatNormal);
-    vk::destroyImage(ctx, s.white);
-    for (auto& [key, sampler] : s.samplers) vkDestroySampler(ctx.device, sampler, nullptr);
-    s.samplers.clear();
-    for (auto it = s.textures.rbegin(); it != s.textures.rend(); ++it) vk::destroyImage(ctx, *it);
-    s.textures.clear();
-    s.textureIndex.clear();
-    vk::destroyBuffer(ctx, s.materialBuffer);
-    vk::destroyBuffer(ctx, s.lightBuffer);
-    vk::destroyBuffer(ctx, s.indices);
-    vk::destroyBuffer(ctx, s.vertices);
+void destroyMaterials(const vk::Context& ctx, SceneMaterials& materials) {
+    materials.bound.clear();
+    vk::destroyImage(ctx, materials.flatNormal);
+    vk::destroyImage(ctx, materials.white);
+    for (auto& [key, sampler] : materials.samplers) vkDestroySampler(ctx.device, sampler, nullptr);
+    materials.samplers.clear();
+    for (auto it = materials.textures.rbegin(); it != materials.textures.rend(); ++it)
+        vk::destroyImage(ctx, *it);
+    materials.textures.clear();
+    materials.textureIndex.clear();
+    vk::destroyBuffer(ctx, materials.records);
+}
+
+void destroyGeometry(const vk::Context& ctx, SceneGeometry& geometry) {
+    vk::destroyBuffer(ctx, geometry.indices);
+    vk::destroyBuffer(ctx, geometry.vertices);
+}
+
+}  // namespace
+
+void createLightRecords(const vk::Context& ctx, vk::Buffer& buffer,
+                        const std::vector<world::Light>& lights,
+                        const std::vector<uint32_t>& firstShadowView) {
+    std::vector<GpuLight> gpu;
+    for (uint32_t i = 0; i < lights.size(); ++i)
+        gpu.push_back(gpuLightOf(lights[i], firstShadowView.at(i)));
+    if (gpu.empty()) gpu.emplace_back();  // a binding needs a record
+    createRecordBuffer(ctx, buffer, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
+void createScene(const vk::Context& ctx, Scene& scene, const assets::LoadedLevel& loaded,
+                 const RendererOptions& options) {
+    scene.level = levelDataOf(loaded, options);
+    createLookupTables(ctx, scene.tables);
+    createGeometry(ctx, scene.geometry, loaded.level);
+    createMaterials(ctx, scene.materials, loaded, options, scene.tables.linearClamp);
+    createBakedLighting(ctx, scene.baked, loaded, scene.level.ambientLux);
+    createProbes(ctx, scene.probes, loaded.baked.probes, scene.baked.present && options.probes,
+                 scene.level.boundsMin, scene.level.boundsMax);
+    createSky(ctx, scene.sky, loaded.sky);
+}
+
+void destroyScene(const vk::Context& ctx, Scene& scene) {
+    destroySky(ctx, scene.sky);
+    destroyProbes(ctx, scene.probes);
+    destroyBakedLighting(ctx, scene.baked);
+    destroyMaterials(ctx, scene.materials);
+    destroyGeometry(ctx, scene.geometry);
+    destroyLookupTables(ctx, scene.tables);
 }
 
 }  // namespace onelight::render

@@ -2,12 +2,14 @@
 // a spot's perspective map, an omni's six faces. Static casters are rendered once into
 // staticShadows and cached (the sun's again when the camera leaves its cell); with dynamic
 // objects in the level, each frame copies the static layers and draws only the dynamic casters.
+#include "render/shadows.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/renderer_state.hpp"
+#include "render/targets.hpp"
 #include "vk/commands.hpp"
 #include "vk/rendering.hpp"
 #include "vk/vk_check.hpp"
@@ -24,22 +26,23 @@ uint32_t layersFor(world::LightType type) {
     return type == world::LightType::kPoint ? 6u : 1u;
 }
 
-float levelDiagonal(const RendererState& s) {
-    return std::max(glm::length(s.boundsMax - s.boundsMin), 1.0f);
+float levelDiagonal(const LevelData& level) {
+    return std::max(glm::length(level.boundsMax - level.boundsMin), 1.0f);
 }
 
 glm::vec3 anyPerpendicular(glm::vec3 d) {
     return std::fabs(d.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
 }
 
-void fitSun(RendererState& s, ShadowSlot& slot, const Camera& camera) {
-    const world::Light& light = s.lights[slot.light];
+void fitSun(ShadowMaps& shadows, ShadowSlot& slot, const LevelData& level, float shadowRadius,
+            const Camera& camera) {
+    const world::Light& light = level.lights[slot.light];
     const glm::vec3 dir = glm::normalize(light.direction);
     const glm::vec3 right = glm::normalize(glm::cross(dir, anyPerpendicular(dir)));
     const glm::vec3 up = glm::cross(right, dir);
     // Never wider than the level: a 4 m room's sun map at the 40 m radius's size had 10 cm
     // texels, and the sun leaked along every junction of its walls for a texel's width.
-    const float extent = std::min(s.options.shadowRadius * kSunExtentScale, levelDiagonal(s));
+    const float extent = std::min(shadowRadius * kSunExtentScale, levelDiagonal(level));
     const float step = extent / kSunCellsPerExtent;  // a whole number of texels
     const glm::vec2 cell(std::floor(glm::dot(camera.position, right) / step + 0.5f),
                          std::floor(glm::dot(camera.position, up) / step + 0.5f));
@@ -47,15 +50,15 @@ void fitSun(RendererState& s, ShadowSlot& slot, const Camera& camera) {
     slot.sunCell = cell;
     slot.staticValid = false;
 
-    const glm::vec3 boundsCentre = 0.5f * (s.boundsMin + s.boundsMax);
-    const float depth = 0.5f * levelDiagonal(s) + 1.0f;
+    const glm::vec3 boundsCentre = 0.5f * (level.boundsMin + level.boundsMax);
+    const float depth = 0.5f * levelDiagonal(level) + 1.0f;
     const glm::vec3 centre =
         right * (cell.x * step) + up * (cell.y * step) + dir * glm::dot(boundsCentre, dir);
     const glm::mat4 view = glm::lookAtRH(centre - dir * depth, centre, up);
     const glm::mat4 proj = glm::orthoRH_ZO(-extent, extent, -extent, extent, 0.0f, 2.0f * depth);
-    ShadowView& v = s.views[slot.firstView];
+    ShadowView& v = shadows.views[slot.firstView];
     v.viewProj = proj * view;
-    v.params = glm::vec4(2.0f * extent / float(s.options.shadowMapSize), 0.0f, 0.0f, 0.0f);
+    v.params = glm::vec4(2.0f * extent / float(shadows.mapSize), 0.0f, 0.0f, 0.0f);
     // The slope bias grows without bound on a caster the sun grazes: a wall 14 degrees off the
     // sun's rays got ~8 texels (0.8 m) of depth bias, and the room it stands in was sunlit for
     // 0.8 m behind it (bright bands along every wall of a room lit through a roof opening).
@@ -63,17 +66,17 @@ void fitSun(RendererState& s, ShadowSlot& slot, const Camera& camera) {
     v.depthBiasClamp = kSunBiasClampTexels * v.params.x / (2.0f * depth);
 }
 
-void fitSpotOrOmni(RendererState& s, ShadowSlot& slot) {
-    const world::Light& light = s.lights[slot.light];
-    const float zfar = light.range > 0.0f ? light.range : levelDiagonal(s) * 2.0f;
+void fitSpotOrOmni(ShadowMaps& shadows, ShadowSlot& slot, const LevelData& level) {
+    const world::Light& light = level.lights[slot.light];
+    const float zfar = light.range > 0.0f ? light.range : levelDiagonal(level) * 2.0f;
     const float znear = std::clamp(zfar * 1e-4f, 0.01f, 0.1f);
-    const float size = float(s.options.shadowMapSize);
+    const float size = float(shadows.mapSize);
     if (light.type == world::LightType::kSpot) {
         const glm::vec3 dir = glm::normalize(light.direction);
         const float fov = std::min(2.0f * light.outerCone + 0.1f, glm::radians(170.0f));
         const glm::mat4 view =
             glm::lookAtRH(light.position, light.position + dir, anyPerpendicular(dir));
-        ShadowView& v = s.views[slot.firstView];
+        ShadowView& v = shadows.views[slot.firstView];
         v.viewProj = glm::perspectiveRH_ZO(fov, 1.0f, znear, zfar) * view;
         v.params = glm::vec4(2.0f * std::tan(0.5f * fov) / size, 1.0f, 0.0f, 0.0f);
         return;
@@ -86,7 +89,7 @@ void fitSpotOrOmni(RendererState& s, ShadowSlot& slot) {
     for (uint32_t f = 0; f < 6; ++f) {
         const glm::vec3 up = std::fabs(dirs[f].y) > 0.5f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
         const glm::mat4 view = glm::lookAtRH(light.position, light.position + dirs[f], up);
-        ShadowView& v = s.views[slot.firstView + f];
+        ShadowView& v = shadows.views[slot.firstView + f];
         v.viewProj = glm::perspectiveRH_ZO(fov, 1.0f, znear, zfar) * view;
         v.params = glm::vec4(2.0f * tanHalf / size, 1.0f, 0.0f, 0.0f);
     }
@@ -105,21 +108,23 @@ void beginDepthRendering(VkCommandBuffer cmd, VkImageView view, uint32_t size, b
     vkCmdSetDepthBias(cmd, kShadowBiasConstant, biasClamp, kShadowBiasSlope);
 }
 
-void drawStaticCasters(RendererState& s, VkCommandBuffer cmd, const ShadowView& view) {
+void drawStaticCasters(VkCommandBuffer cmd, const vk::PipelineLayout& layout,
+                       const SceneGeometry& geometry, const ShadowView& view) {
     const Frustum frustum = frustumOf(view.viewProj);
-    vkCmdPushConstants(cmd, s.shadowLayout.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
+    vkCmdPushConstants(cmd, layout.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
                        &view.viewProj);
-    for (const DrawSurface& surface : s.surfaces)
+    for (const DrawSurface& surface : geometry.surfaces)
         if (intersects(frustum, surface.boundsMin, surface.boundsMax))
             vkCmdDrawIndexed(cmd, surface.indexCount, 1, surface.firstIndex, 0, 0);
 }
 
-void drawDynamicCasters(RendererState& s, VkCommandBuffer cmd, const ShadowView& view,
+void drawDynamicCasters(VkCommandBuffer cmd, const vk::PipelineLayout& layout,
+                        const SceneGeometry& geometry, const ShadowView& view,
                         const std::vector<glm::mat4>& entityTransforms) {
-    for (const DrawDynamicMesh& mesh : s.dynamicMeshes) {
+    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
         const glm::mat4 clip = view.viewProj * entityTransforms[mesh.entity];
-        vkCmdPushConstants(cmd, s.shadowLayout.layout, VK_SHADER_STAGE_VERTEX_BIT, 0,
-                           sizeof(glm::mat4), &clip);
+        vkCmdPushConstants(cmd, layout.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
+                           &clip);
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, mesh.firstIndex, mesh.vertexOffset, 0);
     }
 }
@@ -129,45 +134,47 @@ constexpr VkPipelineStageFlags kDepthStages =
 
 }  // namespace
 
-void createShadows(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
+void createShadows(const vk::Context& ctx, ShadowMaps& shadows,
+                   const std::vector<world::Light>& lights, const RendererOptions& options,
+                   bool dynamicCasters) {
+    shadows.mapSize = options.shadowMapSize;
     // Slots for every primary light a surface uses (and every primary, for dynamic objects),
     // while layers last.
-    s.lightSlot.assign(s.lights.size(), kNoIndex);
+    shadows.lightSlot.assign(lights.size(), kNoIndex);
     uint32_t layers = 0;
-    for (uint32_t i = 0; i < s.lights.size(); ++i) {
-        if (s.lights[i].role != world::LightRole::kPrimary || s.options.flatShading) continue;
-        const uint32_t need = layersFor(s.lights[i].type);
-        if (layers + need > s.options.maxShadowLayers) continue;
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].role != world::LightRole::kPrimary || options.flatShading) continue;
+        const uint32_t need = layersFor(lights[i].type);
+        if (layers + need > options.maxShadowLayers) continue;
         ShadowSlot slot;
         slot.light = i;
         slot.firstView = layers;
         slot.viewCount = need;
-        s.lightSlot[i] = uint32_t(s.slots.size());
-        s.slots.push_back(slot);
+        shadows.lightSlot[i] = uint32_t(shadows.slots.size());
+        shadows.slots.push_back(slot);
         layers += need;
     }
-    s.views.resize(std::max(layers, 1u));
-    s.info.shadowLayers = layers;
+    shadows.views.resize(std::max(layers, 1u));
+    shadows.layers = layers;
 
     vk::ImageDesc desc;
     desc.format = kDepthFormat;
-    desc.width = desc.height = s.options.shadowMapSize;
-    desc.layers = uint32_t(s.views.size());
+    desc.width = desc.height = shadows.mapSize;
+    desc.layers = uint32_t(shadows.views.size());
     desc.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
     desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    vk::createImage(ctx, s.staticShadows, desc);
-    const bool dynamic = !s.dynamicMeshes.empty();
-    if (dynamic) vk::createImage(ctx, s.frameShadows, desc);
-    for (uint32_t i = 0; i < s.views.size(); ++i) {
-        s.views[i].staticLayer = vk::createLayerView(ctx, s.staticShadows, i, 1);
-        if (dynamic) s.views[i].frameLayer = vk::createLayerView(ctx, s.frameShadows, i, 1);
+    vk::createImage(ctx, shadows.staticShadows, desc);
+    if (dynamicCasters) vk::createImage(ctx, shadows.frameShadows, desc);
+    for (uint32_t i = 0; i < shadows.views.size(); ++i) {
+        shadows.views[i].staticLayer = vk::createLayerView(ctx, shadows.staticShadows, i, 1);
+        if (dynamicCasters)
+            shadows.views[i].frameLayer = vk::createLayerView(ctx, shadows.frameShadows, i, 1);
     }
 
     // Every layer starts cleared to "unoccluded" and shader-readable.
     vk::submitOnce(ctx, [&](VkCommandBuffer cmd) {
-        for (vk::Image* image : {&s.staticShadows, &s.frameShadows}) {
+        for (vk::Image* image : {&shadows.staticShadows, &shadows.frameShadows}) {
             if (!image->image) continue;
             vk::imageBarrier(
                 cmd, *image,
@@ -194,57 +201,69 @@ void createShadows(RendererState& s) {
     compare.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     compare.addressU = compare.addressV = compare.addressW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     compare.maxLod = 0.0f;
-    s.shadowSampler = vk::createSampler(ctx, compare);
+    shadows.sampler = vk::createSampler(ctx, compare);
 }
 
-void destroyShadows(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
-    if (s.shadowSampler) vkDestroySampler(ctx.device, s.shadowSampler, nullptr);
-    s.shadowSampler = VK_NULL_HANDLE;
-    for (auto it = s.views.rbegin(); it != s.views.rend(); ++it) {
+void destroyShadows(const vk::Context& ctx, ShadowMaps& shadows) {
+    if (shadows.sampler) vkDestroySampler(ctx.device, shadows.sampler, nullptr);
+    shadows.sampler = VK_NULL_HANDLE;
+    for (auto it = shadows.views.rbegin(); it != shadows.views.rend(); ++it) {
         if (it->frameLayer) vkDestroyImageView(ctx.device, it->frameLayer, nullptr);
         if (it->staticLayer) vkDestroyImageView(ctx.device, it->staticLayer, nullptr);
         it->frameLayer = it->staticLayer = VK_NULL_HANDLE;
     }
-    vk::destroyImage(ctx, s.frameShadows);
-    vk::destroyImage(ctx, s.staticShadows);
+    vk::destroyImage(ctx, shadows.frameShadows);
+    vk::destroyImage(ctx, shadows.staticShadows);
 }
 
-void updateShadowViews(RendererState& s, const Camera& camera,
-                       const std::vector<uint32_t>& visibleLights) {
+std::vector<uint32_t> firstShadowViews(const ShadowMaps& shadows) {
+    std::vector<uint32_t> first(shadows.lightSlot.size(), kNoIndex);
+    for (size_t i = 0; i < first.size(); ++i)
+        if (shadows.lightSlot[i] != kNoIndex)
+            first[i] = shadows.slots[shadows.lightSlot[i]].firstView;
+    return first;
+}
+
+const vk::Image& sampledShadowMaps(const ShadowMaps& shadows) {
+    return shadows.frameShadows.image ? shadows.frameShadows : shadows.staticShadows;
+}
+
+void updateShadowViews(ShadowMaps& shadows, const LevelData& level, float shadowRadius,
+                       const Camera& camera, const std::vector<uint32_t>& visibleLights) {
     for (uint32_t light : visibleLights) {
-        if (s.lightSlot[light] == kNoIndex) continue;
-        ShadowSlot& slot = s.slots[s.lightSlot[light]];
-        if (s.lights[light].type == world::LightType::kDirectional)
-            fitSun(s, slot, camera);
+        if (shadows.lightSlot[light] == kNoIndex) continue;
+        ShadowSlot& slot = shadows.slots[shadows.lightSlot[light]];
+        if (level.lights[light].type == world::LightType::kDirectional)
+            fitSun(shadows, slot, level, shadowRadius, camera);
         else if (!slot.staticValid)
-            fitSpotOrOmni(s, slot);
+            fitSpotOrOmni(shadows, slot, level);
     }
 }
 
-void writeShadowViews(const RendererState& s, GpuShadowView* out) {
-    for (size_t i = 0; i < s.views.size(); ++i) {
-        out[i].viewProj = s.views[i].viewProj;
-        out[i].params = s.views[i].params;
+void writeShadowViews(const ShadowMaps& shadows, GpuShadowView* out) {
+    for (size_t i = 0; i < shadows.views.size(); ++i) {
+        out[i].viewProj = shadows.views[i].viewProj;
+        out[i].params = shadows.views[i].params;
     }
 }
 
-uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
+uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, VkPipeline pipeline,
+                            const vk::PipelineLayout& layout, const SceneGeometry& geometry,
                             const std::vector<uint32_t>& visibleLights,
                             const std::vector<glm::mat4>& entityTransforms) {
-    const uint32_t size = s.options.shadowMapSize;
+    const uint32_t size = shadows.mapSize;
     const VkDeviceSize offset = 0;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, s.shadowPipeline);
-    vkCmdBindVertexBuffers(cmd, 0, 1, &s.vertices.buffer, &offset);
-    vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdBindVertexBuffers(cmd, 0, 1, &geometry.vertices.buffer, &offset);
+    vkCmdBindIndexBuffer(cmd, geometry.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
 
     // Static casters of the slots that need them, once.
     uint32_t rendered = 0;
     for (uint32_t light : visibleLights) {
-        if (s.lightSlot[light] == kNoIndex) continue;
-        ShadowSlot& slot = s.slots[s.lightSlot[light]];
+        if (shadows.lightSlot[light] == kNoIndex) continue;
+        ShadowSlot& slot = shadows.slots[shadows.lightSlot[light]];
         if (slot.staticValid) continue;
-        vk::imageBarrier(cmd, s.staticShadows,
+        vk::imageBarrier(cmd, shadows.staticShadows,
                          vk::layersBarrier(slot.firstView, slot.viewCount,
                                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                            VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
@@ -253,13 +272,14 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
                                            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
                                                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
-            beginDepthRendering(cmd, s.views[v].staticLayer, size, true, s.views[v].depthBiasClamp);
-            drawStaticCasters(s, cmd, s.views[v]);
+            beginDepthRendering(cmd, shadows.views[v].staticLayer, size, true,
+                                shadows.views[v].depthBiasClamp);
+            drawStaticCasters(cmd, layout, geometry, shadows.views[v]);
             vkCmdEndRendering(cmd);
             ++rendered;
         }
         vk::imageBarrier(
-            cmd, s.staticShadows,
+            cmd, shadows.staticShadows,
             vk::layersBarrier(
                 slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
@@ -268,34 +288,34 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT));
         slot.staticValid = true;
     }
-    if (s.dynamicMeshes.empty()) return rendered;
+    if (geometry.dynamicMeshes.empty()) return rendered;
 
     // Dynamic casters: the cached static layers, copied, plus the moving objects.
     for (uint32_t light : visibleLights) {
-        if (s.lightSlot[light] == kNoIndex) continue;
-        const ShadowSlot& slot = s.slots[s.lightSlot[light]];
+        if (shadows.lightSlot[light] == kNoIndex) continue;
+        const ShadowSlot& slot = shadows.slots[shadows.lightSlot[light]];
         vk::imageBarrier(
-            cmd, s.staticShadows,
+            cmd, shadows.staticShadows,
             vk::layersBarrier(
                 slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT));
         vk::imageBarrier(
-            cmd, s.frameShadows,
+            cmd, shadows.frameShadows,
             vk::layersBarrier(
                 slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT));
-        vk::copyImage(cmd, s.staticShadows.image, s.frameShadows.image, VK_IMAGE_ASPECT_DEPTH_BIT,
-                      size, size, slot.firstView, slot.viewCount);
+        vk::copyImage(cmd, shadows.staticShadows.image, shadows.frameShadows.image,
+                      VK_IMAGE_ASPECT_DEPTH_BIT, size, size, slot.firstView, slot.viewCount);
         vk::imageBarrier(
-            cmd, s.staticShadows,
+            cmd, shadows.staticShadows,
             vk::layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                               VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
         vk::imageBarrier(
-            cmd, s.frameShadows,
+            cmd, shadows.frameShadows,
             vk::layersBarrier(slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                               VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
@@ -303,12 +323,13 @@ uint32_t recordShadowPasses(RendererState& s, VkCommandBuffer cmd,
                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
                                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
-            beginDepthRendering(cmd, s.views[v].frameLayer, size, false, s.views[v].depthBiasClamp);
-            drawDynamicCasters(s, cmd, s.views[v], entityTransforms);
+            beginDepthRendering(cmd, shadows.views[v].frameLayer, size, false,
+                                shadows.views[v].depthBiasClamp);
+            drawDynamicCasters(cmd, layout, geometry, shadows.views[v], entityTransforms);
             vkCmdEndRendering(cmd);
         }
         vk::imageBarrier(
-            cmd, s.frameShadows,
+            cmd, shadows.frameShadows,
             vk::layersBarrier(slot.firstView, slot.viewCount,
                               VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,

@@ -1,9 +1,9 @@
 // The frame's render targets: the MSAA colour and depth, the resolved HDR image, the display
 // image the tonemap writes, and the host buffers a readback copies into.
+#include "render/targets.hpp"
+
 #include <algorithm>
 #include <cmath>
-
-#include "render/renderer_state.hpp"
 
 namespace onelight::render {
 
@@ -23,41 +23,50 @@ VkSampleCountFlagBits pickSamples(const vk::Context& ctx, uint32_t requested) {
     return VkSampleCountFlagBits(1u << best);
 }
 
-void createTargets(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
+void createTargets(const vk::Context& ctx, RenderTargets& targets, uint32_t width, uint32_t height,
+                   VkSampleCountFlagBits samples) {
+    targets.width = width;
+    targets.height = height;
+    targets.samples = samples;
     vk::ImageDesc desc;
-    desc.width = s.width;
-    desc.height = s.height;
+    desc.width = width;
+    desc.height = height;
     desc.format = kHdrFormat;
     desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    vk::createImage(ctx, s.hdr, desc);
+    vk::createImage(ctx, targets.hdr, desc);
     desc.format = kDisplayFormat;
     desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    vk::createImage(ctx, s.display, desc);
-    desc.samples = s.samples;
-    if (s.samples != VK_SAMPLE_COUNT_1_BIT) {
+    vk::createImage(ctx, targets.display, desc);
+    desc.samples = samples;
+    if (samples != VK_SAMPLE_COUNT_1_BIT) {
         desc.format = kHdrFormat;
         desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
-        vk::createImage(ctx, s.msaaColor, desc);
+        vk::createImage(ctx, targets.msaaColor, desc);
     }
     desc.format = kDepthFormat;
     desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-    vk::createImage(ctx, s.depth, desc);
-    const VkDeviceSize pixels = VkDeviceSize(s.width) * s.height;
-    vk::createHostBuffer(ctx, s.readbackHdr, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
-    vk::createHostBuffer(ctx, s.readbackDisplay, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    vk::createImage(ctx, targets.depth, desc);
 }
 
-void destroyTargets(RendererState& s) {
-    const vk::Context& ctx = *s.ctx;
-    vk::destroyBuffer(ctx, s.readbackSwapchain);
-    vk::destroyBuffer(ctx, s.readbackDisplay);
-    vk::destroyBuffer(ctx, s.readbackHdr);
-    vk::destroyImage(ctx, s.depth);
-    vk::destroyImage(ctx, s.msaaColor);
-    vk::destroyImage(ctx, s.display);
-    vk::destroyImage(ctx, s.hdr);
+void destroyTargets(const vk::Context& ctx, RenderTargets& targets) {
+    vk::destroyImage(ctx, targets.depth);
+    vk::destroyImage(ctx, targets.msaaColor);
+    vk::destroyImage(ctx, targets.display);
+    vk::destroyImage(ctx, targets.hdr);
+}
+
+void createReadback(const vk::Context& ctx, FrameReadback& readback, uint32_t width,
+                    uint32_t height) {
+    const VkDeviceSize pixels = VkDeviceSize(width) * height;
+    vk::createHostBuffer(ctx, readback.hdr, pixels * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    vk::createHostBuffer(ctx, readback.display, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+}
+
+void destroyReadback(const vk::Context& ctx, FrameReadback& readback) {
+    vk::destroyBuffer(ctx, readback.swapchain);
+    vk::destroyBuffer(ctx, readback.display);
+    vk::destroyBuffer(ctx, readback.hdr);
 }
 
 }  // namespace onelight::render

@@ -1,9 +1,9 @@
-// Draw batching (render/renderer_state.hpp batchDraws): which culled draws merge into one.
+// Draw batching (render/frame_view.hpp batchDraws): which culled draws merge into one.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "render/renderer_state.hpp"
+#include "render/frame_view.hpp"
 
 namespace {
 

@@ -1,0 +1,72 @@
+// What a frame sees and draws, worked out on the CPU before recording (frame_view.cpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/camera.hpp"
+#include "render/gpu_types.hpp"
+#include "render/renderer.hpp"
+#include "render/scene.hpp"
+
+namespace onelight::render {
+
+/// Light records (gpu_interface.glsl GpuLight): a level light with its first shadow view, and
+/// the effect lights (no shadow).
+[[nodiscard]] GpuLight gpuLightOf(const world::Light& light, uint32_t firstShadowView);
+[[nodiscard]] GpuLight gpuLightOf(const EffectOmni& omni);
+[[nodiscard]] GpuLight gpuLightOf(const EffectSpot& spot);
+
+/// One draw of the forward pass.
+struct Draw {
+    uint32_t key = 0;  // permutationKey of the material (0 with flat shading)
+    uint32_t material = 0;
+    uint32_t firstIndex = 0, indexCount = 0;
+    int32_t vertexOffset = 0;
+    uint32_t primaryLight = kNoIndex, atlas = kNoIndex;
+    uint32_t entity = kNoIndex;  // kNoIndex for static; a dynamic object's record in objectLighting
+    float distance2 = 0.0f;      // squared metres from the camera: dynamic draws front to back
+};
+
+/// The camera, the exposure and the dynamic objects' transforms and primaries of one frame.
+struct FrameView {
+    Camera camera;
+    glm::mat4 projection{1.0f}, viewProj{1.0f};
+    float ev100 = 0.0f, exposure = 1.0f;
+    std::vector<glm::mat4> entityTransforms;  // per entity: given, else its placement
+    std::vector<uint32_t> entityPrimary;      // per entity: the game's pick, or kNoIndex
+};
+/// The view of a frame `aspect` wide per unit of height.
+[[nodiscard]] FrameView frameViewOf(const LevelData& level, float aspect,
+                                    const FrameInputs& inputs);
+
+/// Orders the culled draws for recording and merges each run of static draws that bind and push
+/// the same state (pipeline, material, primary, lightmap atlas) over adjacent index ranges into
+/// one draw; dynamic meshes stay one draw each, front to back. With geometryOnly every adjacent
+/// range merges whatever it binds (the raster floor, RendererOptions::rasterFloor).
+void batchDraws(std::vector<Draw>& draws, bool geometryOnly);
+
+/// The frame's draws, sorted by pipeline then front to back, and the primaries they use.
+struct DrawList {
+    std::vector<Draw> draws;
+    std::vector<uint32_t> visibleLights;  // sorted, unique
+    std::vector<uint8_t> entityVisible;   // per entity
+};
+/// Culls static surfaces (against the frustum and `visibility`) and dynamic meshes (against the
+/// frustum); counts them in `stats`.
+[[nodiscard]] DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& materials,
+                                     const world::Visibility& visibility,
+                                     const RendererOptions& options, size_t entityCount,
+                                     const FrameView& view, FrameStats& stats);
+
+/// The grid's lighting of every visible dynamic object, into `out` (one record per entity).
+void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
+                         const FrameView& view, const DrawList& list, GpuObjectLighting* out);
+
+/// The frame's uniforms: camera, exposure, shadow and baked parameters, effect lights.
+[[nodiscard]] FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options,
+                                            const FrameView& view, const EffectLights& effects);
+
+}  // namespace onelight::render

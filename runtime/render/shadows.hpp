@@ -1,0 +1,74 @@
+// Runtime shadow maps of the primary lights (shadows.cpp): their slots and views, their fitting
+// to the camera and their passes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "render/camera.hpp"
+#include "render/gpu_types.hpp"
+#include "render/renderer.hpp"
+#include "render/scene.hpp"
+#include "vk/context.hpp"
+#include "vk/graphics_pipeline.hpp"
+#include "vk/image.hpp"
+
+namespace onelight::render {
+
+/// The shadow layers of one primary light: 1 (sun, spot) or 6 (omni), views first..first+count.
+struct ShadowSlot {
+    uint32_t light = 0;
+    uint32_t firstView = 0, viewCount = 0;
+    bool staticValid = false;  // its static casters are rendered and still fit
+    glm::vec2 sunCell{1e30f};  // the snapped camera cell the sun map was fitted around
+};
+
+struct ShadowView {
+    glm::mat4 viewProj{1.0f};
+    glm::vec4 params{0.0f};
+    float depthBiasClamp = 0.0f;               // depth units, the slope bias's limit; 0: none
+    VkImageView staticLayer = VK_NULL_HANDLE;  // owned, layer of staticShadows
+    VkImageView frameLayer = VK_NULL_HANDLE;   // owned, layer of frameShadows (with dynamics)
+};
+
+/// The shadow maps: a static layer per view, cached, and with dynamic casters in the level a
+/// frame layer per view (the static one copied, the dynamic casters drawn over it).
+struct ShadowMaps {
+    vk::Image staticShadows, frameShadows;  // owned, D32 2D arrays, one layer per view
+    VkSampler sampler = VK_NULL_HANDLE;     // owned, compare
+    std::vector<ShadowSlot> slots;
+    std::vector<uint32_t> lightSlot;  // per light: into slots or kNoIndex
+    std::vector<ShadowView> views;    // at least one
+    uint32_t layers = 0;              // layers in use (views holds one more without any)
+    uint32_t mapSize = 0;             // texels, every layer
+};
+
+/// Slots for every primary light while `options.maxShadowLayers` last (none with flat
+/// shading), their layers cleared to "unoccluded"; frame layers when `dynamicCasters`.
+void createShadows(const vk::Context& ctx, ShadowMaps& shadows,
+                   const std::vector<world::Light>& lights, const RendererOptions& options,
+                   bool dynamicCasters);
+void destroyShadows(const vk::Context& ctx, ShadowMaps& shadows);
+
+/// The first shadow view of every light, kNoIndex for a light without a slot.
+[[nodiscard]] std::vector<uint32_t> firstShadowViews(const ShadowMaps& shadows);
+
+/// The maps the forward pass samples: the frame layers when there are any, else the static ones.
+[[nodiscard]] const vk::Image& sampledShadowMaps(const ShadowMaps& shadows);
+
+/// Fits the views of the slots of `visibleLights` for this camera; marks slots to redraw.
+void updateShadowViews(ShadowMaps& shadows, const LevelData& level, float shadowRadius,
+                       const Camera& camera, const std::vector<uint32_t>& visibleLights);
+/// Copies the shadow views fitted for this frame into `out` (GpuShadowView per view).
+void writeShadowViews(const ShadowMaps& shadows, GpuShadowView* out);
+/// Records the shadow passes with `pipeline` (over `layout`); returns how many static views
+/// were redrawn.
+[[nodiscard]] uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd,
+                                          VkPipeline pipeline, const vk::PipelineLayout& layout,
+                                          const SceneGeometry& geometry,
+                                          const std::vector<uint32_t>& visibleLights,
+                                          const std::vector<glm::mat4>& entityTransforms);
+
+}  // namespace onelight::render
