@@ -51,7 +51,7 @@ float ggxAlpha_fromGloss(float gloss) { return sqrt(2.0f / (1.0f + exp2(18.0f * 
 
 // Lazarov 2011, slide "Schlick-Smith": a = m sqrt(2 / pi) = 1 / sqrt(pi/4 n + pi/2).
 float schlickSmithA_fromSpecPower(float n) {
-    return inversesqrt(0.785398163397448f * n + 1.5707963267949f);
+    return inversesqrt(0.25f * PI * n + 0.5f * PI);
 }
 
 // ---------------------------------------------------------------------------------------------

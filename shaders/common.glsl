@@ -5,6 +5,9 @@
 #ifndef ONELIGHT_COMMON_GLSL
 #define ONELIGHT_COMMON_GLSL
 
+// The one definition of pi for the shaders and every single-precision C++ use (glsl::PI). C++ in
+// double precision uses std::numbers::pi, of which PI is the float rounding (the common subset
+// has no doubles).
 const float PI = 3.14159265358979f;
 const float INV_PI = 0.318309886183791f;
 

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <glm/gtc/quaternion.hpp>
+#include "world/gloss_mip_method.hpp"
 #include "world/no_index.hpp"
 
 namespace onelight::world {
@@ -225,10 +226,6 @@ struct Features {
 /// The diffuse BRDF of a level (shaders/lighting.glsl DIFFUSE_*): Lambert, or Lambertian
 /// microfacets with multiple scattering (Chan 2018, sec. 5).
 enum class DiffuseModel : uint8_t { kLambert = 0, kMultiscatter = 1 };
-
-/// How the texture stage makes normal and gloss mips (bake/textures, docs/materials.md): a plain
-/// box filter of each texture, Black Ops' variance to gloss, or WWII's average normal length.
-enum class GlossMipMethod : uint8_t { kBlit = 0, kBlackOps = 1, kWwii = 2 };
 
 struct LevelSettings {
     float exposureEv100 = 0.0f;  // default exposure (extras.onelight.exposure)

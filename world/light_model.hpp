@@ -29,4 +29,9 @@ struct LightAtPoint {
 /// The luminance (lux) of evaluateLight's illuminance: how bright the light is at the point.
 [[nodiscard]] float unshadowedIlluminance(const Light& light, glm::vec3 point);
 
+/// unshadowedIlluminance on a surface facing `normal`: times the cosine max(0, n.l) of the
+/// normalised normal; a zero normal means "ignore orientation" (no cosine term). 0 where the
+/// result is not finite.
+[[nodiscard]] float unshadowedIlluminance(const Light& light, glm::vec3 point, glm::vec3 normal);
+
 }  // namespace onelight::world

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <tbb/enumerable_thread_specific.h>
 
@@ -25,13 +26,13 @@ world::LightGridCell bakeCell(const BakeScene& scene, const BakeLights& lights,
     std::array<glm::dvec3, 6> cube{};
     uint32_t backFaces = 0;
     const bool emission = samplesEmission(lights);
-    constexpr float kUniformPdf = 1.0f / (4.0f * kPi);  // the directions' density
+    const float kUniformPdf = 1.0f / (4.0f * glsl::PI);  // the directions' density
     for (uint32_t i = 0; i < count; ++i) {
         const glm::vec3 w = sampleUniformSphere(rotatedHammersley(i, count, s0, s1));
         FirstHit first;
         const glm::vec3 l = traceRadiance(scene, lights, settings.transport, centre, w,
-                                          RayCone{0.0f, sampleSpread(4.0f * kPi, count)}, rng, rays,
-                                          &first, emission ? kUniformPdf : 0.0f);
+                                          RayCone{0.0f, sampleSpread(4.0f * glsl::PI, count)}, rng,
+                                          rays, &first, emission ? kUniformPdf : 0.0f);
         if (first.found && first.backFace) ++backFaces;
         for (size_t a = 0; a < 6; ++a)
             cube[a] += glm::dvec3(l) * double(std::max(0.0f, glm::dot(kAxes[a], w)));
@@ -71,7 +72,7 @@ world::LightGridCell bakeCell(const BakeScene& scene, const BakeLights& lights,
             cell.primaryVisibility = t.visibility;
         }
     }
-    const double scale = 4.0 * 3.14159265358979323846 / count;
+    const double scale = 4.0 * std::numbers::pi / count;
     for (size_t a = 0; a < 6; ++a) cube[a] *= scale;
     for (const LightTerm& t : terms) {
         if (lights.lights[t.light].levelIndex == cell.dominantPrimary) continue;

@@ -36,20 +36,20 @@ struct HalfVectorTolerance {
 template <int N, class G>
 [[nodiscard]] Vec<N> integrateHalfVectors(double mu, double width, const G& g,
                                           HalfVectorTolerance tol = {}) {
-    constexpr double kPi = std::numbers::pi;
     double sinV = std::sqrt(std::max(0.0, 1.0 - mu * mu));
     auto outer = [&](double u) -> Vec<N> {
-        double t = std::tan(0.5 * kPi * u);
+        double t = std::tan(0.5 * std::numbers::pi * u);
         double theta = std::atan(width * t);
-        double dThetaDu = 0.5 * kPi * width * (1.0 + t * t) / (1.0 + width * width * t * t);
+        double dThetaDu =
+            0.5 * std::numbers::pi * width * (1.0 + t * t) / (1.0 + width * width * t * t);
         double sinH = std::sin(theta), cosH = std::cos(theta);
         double cos2 = (cosH - sinH) * (cosH + sinH), sin2 = 2.0 * sinH * cosH;
         double phiMax;
         if (sinV * sin2 <= 1e-300) {
-            phiMax = (mu * cos2 > 0.0) ? kPi : 0.0;
+            phiMax = (mu * cos2 > 0.0) ? std::numbers::pi : 0.0;
         } else {
             double C = -mu * cos2 / (sinV * sin2);
-            phiMax = C <= -1.0 ? kPi : (C >= 1.0 ? 0.0 : std::acos(C));
+            phiMax = C <= -1.0 ? std::numbers::pi : (C >= 1.0 ? 0.0 : std::acos(C));
         }
         Vec<N> r{};
         if (phiMax <= 0.0) return r;

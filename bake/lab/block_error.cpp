@@ -9,7 +9,7 @@ namespace onelight::lab {
 
 namespace {
 
-// Rec. 709 luminance, as the renderer's (shaders/tonemap.glsl).
+// Rec. 709 luminance (shaders/common.glsl luminance), in double precision for the sums.
 double luminanceAt(const capture::FloatImage& f, size_t pixel) {
     double rgb[3];
     for (int c = 0; c < 3; ++c) {

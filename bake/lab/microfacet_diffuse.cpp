@@ -15,8 +15,6 @@ namespace onelight::lab {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 double dot(const Direction& a, const Direction& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
@@ -119,7 +117,7 @@ Direction sampleVisibleNormal(const Direction& w, double alpha, double u1, doubl
                                : Direction{1.0, 0.0, 0.0};
     Direction t2 = {wh.y * t1.z - wh.z * t1.y, wh.z * t1.x - wh.x * t1.z,
                     wh.x * t1.y - wh.y * t1.x};
-    double r = std::sqrt(u1), phi = 2.0 * kPi * u2;
+    double r = std::sqrt(u1), phi = 2.0 * std::numbers::pi * u2;
     double p1 = r * std::cos(phi), p2 = r * std::sin(phi);
     double s = 0.5 * (1.0 + wh.z);
     p2 = (1.0 - s) * std::sqrt(std::max(0.0, 1.0 - p1 * p1)) + s * p2;
@@ -140,7 +138,7 @@ Direction sampleCosineAbout(const Direction& m, double u1, double u2) {
     double a = -1.0 / (sign + m.z), b = m.x * m.y * a;
     Direction b1 = {1.0 + sign * m.x * m.x * a, sign * b, -sign * m.x};
     Direction b2 = {b, sign + m.y * m.y * a, -m.y};
-    double r = std::sqrt(u1), phi = 2.0 * kPi * u2;
+    double r = std::sqrt(u1), phi = 2.0 * std::numbers::pi * u2;
     double x = r * std::cos(phi), y = r * std::sin(phi), z = std::sqrt(std::max(0.0, 1.0 - u1));
     return {x * b1.x + y * b2.x + z * m.x, x * b1.y + y * b2.y + z * m.y,
             x * b1.z + y * b2.z + z * m.z};
@@ -179,8 +177,8 @@ WalkOutcome randomWalk(const MicrofacetDiffuse& surface, const Direction& wi, co
         double u1 = random.uniform(), u2 = random.uniform();
         Direction m = sampleVisibleNormal(negated(w), alpha, u1, u2);
         if (wo) {
-            double nee =
-                out.weight / kPi * std::max(0.0, dot(*wo, m)) * maskingAtHeight(lambdaO, logC1);
+            double nee = out.weight / std::numbers::pi * std::max(0.0, dot(*wo, m)) *
+                         maskingAtHeight(lambdaO, logC1);
             out.total += nee;
             if (out.order == 1) out.single = nee;
         }
@@ -263,11 +261,11 @@ MicrofacetDiffuseAlbedo estimateMicrofacetDiffuseAlbedo(const MicrofacetDiffuse&
     // 2 pi f cos(theta_o) stays bounded.
     WalkSums<2> lobe = sumWalks<2>(walks.count, [&](int i, std::array<double, 2>& v) {
         WalkRandom random(walks.seed ^ kIntegratedLobeStream, std::uint64_t(i));
-        double z = 1.0 - random.uniform(), phi = 2.0 * kPi * random.uniform();
+        double z = 1.0 - random.uniform(), phi = 2.0 * std::numbers::pi * random.uniform();
         double sinO = std::sqrt(std::max(0.0, 1.0 - z * z));
         Direction wo = {sinO * std::cos(phi), sinO * std::sin(phi), z};
         WalkOutcome o = randomWalk(surface, wi, &wo, random, walks.maxScatteringOrder);
-        v = {2.0 * kPi * o.single, 2.0 * kPi * o.total};
+        v = {2.0 * std::numbers::pi * o.single, 2.0 * std::numbers::pi * o.total};
         return !o.escaped;
     });
     return {{escaped.estimate(0), escaped.estimate(1)},
@@ -298,7 +296,7 @@ double evaluate(const DiffuseModel& model, const Direction& v, const Direction& 
 }
 
 double degrees(double d) {
-    return d * kPi / 180.0;
+    return d * std::numbers::pi / 180.0;
 }
 
 }  // namespace
@@ -325,7 +323,7 @@ double diffuseModelAlbedo(const DiffuseModel& model, double gloss, double theta)
             Direction l = {sinL * std::cos(phi), sinL * std::sin(phi), mu};
             return Vec<1>{evaluate(model, v, l, gloss)};
         };
-        return Vec<1>{2.0 * mu * integrate<1>(overPhi, 0.0, kPi, inner)[0]};
+        return Vec<1>{2.0 * mu * integrate<1>(overPhi, 0.0, std::numbers::pi, inner)[0]};
     };
     return integrate<1>(overMu, 0.0, 1.0, outer)[0];
 }

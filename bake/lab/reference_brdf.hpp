@@ -12,8 +12,6 @@
 
 namespace onelight::lab::reference {
 
-constexpr double kPi = std::numbers::pi;
-
 [[nodiscard]] inline double specPower(double gloss) {
     return std::pow(8192.0, gloss);
 }
@@ -27,23 +25,23 @@ constexpr double kPi = std::numbers::pi;
 // NDFs of the half-vector angle, given sin^2 and cos of theta_h.
 [[nodiscard]] inline double ndfBlinnPhong(double sin2, double cosH, double n) {
     (void)sin2;
-    return (n + 2.0) / (2.0 * kPi) * std::pow(cosH, n);
+    return (n + 2.0) / (2.0 * std::numbers::pi) * std::pow(cosH, n);
 }
 [[nodiscard]] inline double ndfBeckmann(double sin2, double cosH, double m) {
     double cos2 = cosH * cosH;
-    return std::exp(-sin2 / (cos2 * m * m)) / (kPi * m * m * cos2 * cos2);
+    return std::exp(-sin2 / (cos2 * m * m)) / (std::numbers::pi * m * m * cos2 * cos2);
 }
 [[nodiscard]] inline double ndfGGX(double sin2, double cosH, double alpha) {
     double cos2 = cosH * cosH, a2 = alpha * alpha;
     double t = cos2 * a2 + sin2;
-    return a2 / (kPi * t * t);
+    return a2 / (std::numbers::pi * t * t);
 }
 
 // Smith Lambda for a direction at cosine mu (Walter et al. 2007, eqs. 25 and 35).
 [[nodiscard]] inline double lambdaBeckmann(double mu, double m) {
     if (mu >= 1.0) return 0.0;
     double a = mu / (m * std::sqrt(1.0 - mu * mu));
-    return 0.5 * (std::exp(-a * a) / (a * std::sqrt(kPi)) - std::erfc(a));
+    return 0.5 * (std::exp(-a * a) / (a * std::sqrt(std::numbers::pi)) - std::erfc(a));
 }
 [[nodiscard]] inline double lambdaGGX(double mu, double alpha) {
     double tan2 = (1.0 - mu * mu) / (mu * mu);
@@ -62,12 +60,12 @@ template <class Ndf>
 [[nodiscard]] double projectedArea(double mu, double w, const Ndf& ndf) {
     double sinO = std::sqrt(std::max(0.0, 1.0 - mu * mu));
     auto f = [&](double u) {
-        double t = std::tan(0.5 * kPi * u), theta = std::atan(w * t);
-        double dTheta = 0.5 * kPi * w * (1.0 + t * t) / (1.0 + w * w * t * t);
+        double t = std::tan(0.5 * std::numbers::pi * u), theta = std::atan(w * t);
+        double dTheta = 0.5 * std::numbers::pi * w * (1.0 + t * t) / (1.0 + w * w * t * t);
         double s = std::sin(theta), c = std::cos(theta);
         double a = sinO * s, b = mu * c, azimuthal;
         if (b >= a) {
-            azimuthal = 2.0 * kPi * b;
+            azimuthal = 2.0 * std::numbers::pi * b;
         } else {
             double phi0 = std::acos(-b / a);
             azimuthal = 2.0 * (a * std::sin(phi0) + b * phi0);
@@ -76,8 +74,8 @@ template <class Ndf>
     };
     // The integrand has a kink where facets start to face away (b = a: theta = pi/2 - theta_o);
     // split there so that the adaptive rule sees two smooth pieces.
-    double thetaKink = 0.5 * kPi - std::acos(std::clamp(mu, 0.0, 1.0));
-    double uKink = std::atan(std::tan(thetaKink) / w) * 2.0 / kPi;
+    double thetaKink = 0.5 * std::numbers::pi - std::acos(std::clamp(mu, 0.0, 1.0));
+    double uKink = std::atan(std::tan(thetaKink) / w) * 2.0 / std::numbers::pi;
     QuadratureTolerance tol{1e-14, 1e-11, 2000};
     return integrate<1>(f, 0.0, uKink, tol)[0] + integrate<1>(f, uKink, 1.0, tol)[0];
 }

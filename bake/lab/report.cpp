@@ -46,7 +46,8 @@ std::vector<LobeInput> randomLobeInputs() {
     std::vector<LobeInput> in(4096);
     for (LobeInput& x : in) {
         vec3 n(0, 0, 1);
-        float cv = u(rng), cl = u(rng), pv = 6.2831853f * u(rng), pl = 6.2831853f * u(rng);
+        float cv = u(rng), cl = u(rng), pv = 2.0f * glsl::PI * u(rng),
+              pl = 2.0f * glsl::PI * u(rng);
         float sv = std::sqrt(1 - cv * cv), sl = std::sqrt(1 - cl * cl);
         x.d = brdfDots(n, vec3(sv * std::cos(pv), sv * std::sin(pv), cv),
                        vec3(sl * std::cos(pl), sl * std::sin(pl), cl));

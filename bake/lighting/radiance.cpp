@@ -63,8 +63,8 @@ glm::vec3 directRadiance(const BakeScene& scene, const BakeLights& lights,
     }
     // Resampled importance sampling among the local lights (see radiance.hpp).
     // The target's BRDF part: the diffuse lobe's cosine, and a constant for the specular one.
-    const float albedo = luminance(point.bsdf.albedo) / kPi;
-    const float specular = luminance(point.bsdf.specularColor) / kPi;
+    const float albedo = luminance(point.bsdf.albedo) / glsl::PI;
+    const float specular = luminance(point.bsdf.specularColor) / glsl::PI;
     const LightCellView cell = lightsAt(lights.lightCells, point.position);
     uint32_t chosen = 0;
     float chosenTarget = 0.0f, weightSum = 0.0f;
@@ -186,7 +186,7 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                 // probability sampleSurface would draw it (radiance.hpp).
                 const glm::vec3 e =
                     settings.cache->direct[k] + settings.cache->indirect[k] * m.occlusion;
-                radiance += throughput * point.bsdf.albedo * (e / kPi);
+                radiance += throughput * point.bsdf.albedo * (e / glsl::PI);
                 const float p = specularProbability(point.bsdf, glm::dot(point.shadingNormal, v));
                 if (!(p > 0.0f) || rng.next() >= p) break;
                 throughput /= p;

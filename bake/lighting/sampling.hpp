@@ -12,8 +12,6 @@
 
 namespace onelight::bake {
 
-inline constexpr float kPi = 3.14159265358979f;
-
 // Jarzynski and Olano 2020, "Hash Functions for GPU Rendering", JCGT 9(3), "pcg" (the PCG
 // output permutation applied to one LCG step of the input).
 [[nodiscard]] inline uint32_t pcgHash(uint32_t input) {
@@ -79,7 +77,7 @@ struct Frame {
 // pdf = cos(theta) / pi   (solid angle)
 [[nodiscard]] inline glm::vec3 sampleCosineHemisphere(glm::vec2 u) {
     const float r = std::sqrt(u.x);
-    const float phi = 2.0f * kPi * u.y;
+    const float phi = 2.0f * glsl::PI * u.y;
     return {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u.x))};
 }
 
@@ -88,7 +86,7 @@ struct Frame {
 [[nodiscard]] inline glm::vec3 sampleUniformSphere(glm::vec2 u) {
     const float z = 1.0f - 2.0f * u.x;
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-    const float phi = 2.0f * kPi * u.y;
+    const float phi = 2.0f * glsl::PI * u.y;
     return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
@@ -100,7 +98,7 @@ struct Frame {
     const float oneMinusCos = u.x * oneMinusCosMax;
     const float cosTheta = 1.0f - oneMinusCos;
     const float sinTheta = std::sqrt(std::max(0.0f, oneMinusCos * (2.0f - oneMinusCos)));
-    const float phi = 2.0f * kPi * u.y;
+    const float phi = 2.0f * glsl::PI * u.y;
     return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
 }
 

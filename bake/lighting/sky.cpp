@@ -39,7 +39,7 @@ float sinTheta(const glm::vec3& d) {
 
 // p(w) from the texel's p(u, v): dw = 2 pi^2 sin(theta) du dv.
 float solidAngleDensity(float texelDensity, float sine) {
-    return sine > 0.0f ? texelDensity / (2.0f * kPi * kPi * sine) : 0.0f;
+    return sine > 0.0f ? texelDensity / (2.0f * glsl::PI * glsl::PI * sine) : 0.0f;
 }
 
 }  // namespace
@@ -72,7 +72,7 @@ SkyImage makeSkyImage(const world::HdrImage& image, glm::vec3 scale) {
     std::vector<double> weights(count), rowWeights(image.height), row(image.width);
     double total = 0.0;
     for (uint32_t i = 0; i < image.height; ++i) {
-        const double sine = std::sin(double(kPi) * (double(i) + 0.5) / double(image.height));
+        const double sine = std::sin(double(glsl::PI) * (double(i) + 0.5) / double(image.height));
         double sum = 0.0;
         for (uint32_t j = 0; j < image.width; ++j) {
             const size_t t = size_t(i) * image.width + j;
@@ -123,7 +123,8 @@ SkySample sampleSky(const SkyImage& sky, glm::vec2 u) {
         findInterval(sky.columnCdf.data() + size_t(i) * (sky.width + 1), sky.width, u.x, du);
     const glm::vec2 uv((float(j) + du) / float(sky.width), (float(i) + dv) / float(sky.height));
     out.direction = glsl::direction_fromEquirectUv(uv);
-    out.pdf = solidAngleDensity(sky.texelDensity[size_t(i) * sky.width + j], std::sin(kPi * uv.y));
+    out.pdf =
+        solidAngleDensity(sky.texelDensity[size_t(i) * sky.width + j], std::sin(glsl::PI * uv.y));
     if (out.pdf > 0.0f) out.radiance = skyRadiance(sky, out.direction);
     return out;
 }

@@ -24,7 +24,7 @@ namespace {
 // v are `d`, drawn with specular probability p: shared by surfacePdf and sampleSurface, which
 // has p and the dots already.
 float mixturePdf(float p, float gloss, const glsl::BrdfDots& d, float NoL) {
-    float pdf = (1.0f - p) * NoL / kPi;
+    float pdf = (1.0f - p) * NoL / glsl::PI;
     if (p > 0.0f) {
         const float NoH = std::sqrt(std::max(0.0f, 1.0f - d.NxH2));
         const float D = glsl::D_GGX(d.NxH2, glsl::ggxAlpha_fromGloss(gloss));
@@ -52,7 +52,7 @@ SurfaceSample sampleSurface(const Bsdf& material, const glm::vec3& n, const glm:
         const float u1 = rng.next(), u2 = rng.next();
         const float cos2 = (1.0f - u1) / (1.0f + (a * a - 1.0f) * u1);
         const float sinH = std::sqrt(std::max(0.0f, 1.0f - cos2));
-        const float phi = 2.0f * kPi * u2;
+        const float phi = 2.0f * glsl::PI * u2;
         const glm::vec3 h = frame.toWorld(
             {sinH * std::cos(phi), sinH * std::sin(phi), std::sqrt(std::max(0.0f, cos2))});
         s.direction = glm::normalize(2.0f * glm::dot(v, h) * h - v);
@@ -63,7 +63,7 @@ SurfaceSample sampleSurface(const Bsdf& material, const glm::vec3& n, const glm:
             material.diffuseModel == DIFFUSE_LAMBERT) {
             // Lambert alone: f cos / pdf = (albedo NoL / pi) / (NoL / pi)
             s.weight = material.albedo;
-            s.pdf = std::max(glm::dot(n, s.direction), 0.0f) / kPi;
+            s.pdf = std::max(glm::dot(n, s.direction), 0.0f) / glsl::PI;
             return s;
         }
     }

@@ -154,12 +154,12 @@ void estimateIndirect(const BakeScene& scene, const BakeLights& lights, const Te
     for (uint32_t i = 0; i < count; ++i) {
         const glm::vec3 w = glm::normalize(
             frame.toWorld(sampleCosineHemisphere(rotatedHammersley(i, count, s0, s1))));
-        const float pdf = glm::dot(n, w) / kPi;
+        const float pdf = glm::dot(n, w) / glsl::PI;
         FirstHit first;
-        glm::vec3 e =
-            kPi * traceRadiance(scene, lights, transport, origin, w,
-                                RayCone{sample.texelSize, sampleSpread(2.0f * kPi, count)}, rng,
-                                rays, &first, emission ? pdf : 0.0f);
+        glm::vec3 e = glsl::PI *
+                      traceRadiance(scene, lights, transport, origin, w,
+                                    RayCone{sample.texelSize, sampleSpread(2.0f * glsl::PI, count)},
+                                    rng, rays, &first, emission ? pdf : 0.0f);
         if (first.found) inverseDistances += 1.0 / std::max(double(first.distance), 1e-6);
         out.indirectDirection += double(luminance(e)) * glm::dvec3(w);
         if (emission) {
@@ -167,7 +167,7 @@ void estimateIndirect(const BakeScene& scene, const BakeLights& lights, const Te
             if (l.pdf > 0.0f) {
                 const float cosine = glm::dot(n, l.direction);
                 const glm::vec3 el =
-                    l.radianceOverPdf * cosine * powerHeuristic(l.pdf, cosine / kPi);
+                    l.radianceOverPdf * cosine * powerHeuristic(l.pdf, cosine / glsl::PI);
                 out.indirectDirection += double(luminance(el)) * glm::dvec3(l.direction);
                 e += el;
             }

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "shading.hpp"
+
 namespace onelight::bake {
 
 struct RayCone {
@@ -32,8 +34,8 @@ struct RayCone {
 /// the incoming spread and the solid angle 1 / pdf the new direction stands for (a mirror keeps
 /// the incoming spread, a diffuse bounce widens to about a radian).
 [[nodiscard]] inline RayCone bounceCone(const RayCone& incoming, float distance, float pdf) {
-    const float sampled = pdf > 0.0f ? std::sqrt(1.0f / pdf) : 3.14159265f;
-    return {incoming.widthAt(distance), std::max(incoming.spread, std::min(sampled, 3.14159265f))};
+    const float sampled = pdf > 0.0f ? std::sqrt(1.0f / pdf) : glsl::PI;
+    return {incoming.widthAt(distance), std::max(incoming.spread, std::min(sampled, glsl::PI))};
 }
 
 }  // namespace onelight::bake

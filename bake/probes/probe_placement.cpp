@@ -42,7 +42,7 @@ std::vector<ProbePlacement> authoredProbes(const world::CompiledLevel& level) {
 // turning by the golden angle. Fixed (no random rotation), so every point and every run casts
 // the same directions, and not aligned with the axes that levels' walls usually follow.
 glm::vec3 fibonacciDirection(uint32_t i, uint32_t n) {
-    const float goldenAngle = kPi * (3.0f - std::sqrt(5.0f));
+    const float goldenAngle = glsl::PI * (3.0f - std::sqrt(5.0f));
     const float z = 1.0f - (2.0f * float(i) + 1.0f) / float(n);
     const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
     const float phi = goldenAngle * float(i);

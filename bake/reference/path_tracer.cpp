@@ -1,6 +1,7 @@
 #include "bake/reference/path_tracer.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <glm/gtc/quaternion.hpp>
@@ -84,14 +85,14 @@ glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
     const Frame frame = frameAround(normal);
     glm::dvec3 indirect(0.0);
     const bool emission = samplesEmission(lights);
-    constexpr float kUniformPdf = 1.0f / (2.0f * kPi);  // the hemisphere directions' density
+    const float kUniformPdf = 1.0f / (2.0f * glsl::PI);  // the hemisphere directions' density
     for (uint32_t i = 0; i < samples; ++i) {
         // uniform hemisphere: the upper half of a uniform sphere direction
         glm::vec3 local = sampleUniformSphere({rng.next() * 0.5f, rng.next()});
         const glm::vec3 w = glm::normalize(frame.toWorld(local));
         indirect += glm::dvec3(traceRadiance(scene, lights, transport, origin, w,
-                                             RayCone{0.0f, sampleSpread(2.0f * kPi, samples)}, rng,
-                                             rays, nullptr, emission ? kUniformPdf : 0.0f)) *
+                                             RayCone{0.0f, sampleSpread(2.0f * glsl::PI, samples)},
+                                             rng, rays, nullptr, emission ? kUniformPdf : 0.0f)) *
                     double(local.z);
         if (!emission) continue;
         // One emission sample per direction, in the same 2 pi / N scale (radiance.hpp).
@@ -101,7 +102,7 @@ glm::vec3 referenceIrradiance(const BakeScene& scene, const BakeLights& lights,
                         double(glm::dot(normal, emitter.direction) *
                                powerHeuristic(emitter.pdf, kUniformPdf) * kUniformPdf);
     }
-    e += indirect * (2.0 * 3.14159265358979323846 / double(std::max(1u, samples)));
+    e += indirect * (2.0 * std::numbers::pi / double(std::max(1u, samples)));
     return glm::vec3(e);
 }
 

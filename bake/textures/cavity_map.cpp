@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -14,7 +15,6 @@ namespace onelight::bake {
 
 namespace {
 
-constexpr double kPiD = 3.14159265358979323846;
 constexpr uint32_t kMaxAzimuths = 1024;
 constexpr float kMaxRadius = 4096.0f;
 
@@ -61,7 +61,7 @@ class Radix2Fft {
 public:
     explicit Radix2Fft(size_t n) : n_(n), roots_(n / 2), reversed_(n) {
         for (size_t k = 0; k < n / 2; ++k)
-            roots_[k] = unitPhase(-2.0 * kPiD * double(k) / double(n));
+            roots_[k] = unitPhase(-2.0 * std::numbers::pi * double(k) / double(n));
         size_t bits = 0;
         while ((size_t(1) << bits) < n) ++bits;
         for (size_t i = 0; i < n; ++i) {
@@ -108,7 +108,7 @@ public:
         chirp_.resize(n);
         for (size_t k = 0; k < n; ++k) {
             const size_t k2 = (k * k) % (2 * n);  // e^(-i pi k^2 / n) has period 2n in k^2
-            chirp_[k] = unitPhase(-kPiD * double(k2) / double(n));
+            chirp_[k] = unitPhase(-std::numbers::pi * double(k2) / double(n));
         }
         kernel_.assign(m, Complex{});
         kernel_[0] = conjugate(chirp_[0]);
@@ -160,12 +160,13 @@ public:
         : n_(n), clamp_(wrap == CavityWrap::kClamp), dft_(clamp_ ? 2 * n : n), eigen_(n) {
         for (size_t k = 0; k < n; ++k) {
             const double period = clamp_ ? 2.0 * double(n) : double(n);
-            eigen_[k] = k == 0 ? 0.0 : 2.0 * std::cos(2.0 * kPiD * double(k) / period) - 2.0;
+            eigen_[k] =
+                k == 0 ? 0.0 : 2.0 * std::cos(2.0 * std::numbers::pi * double(k) / period) - 2.0;
         }
         if (clamp_) {
             halfShift_.resize(n);
             for (size_t k = 0; k < n; ++k)
-                halfShift_[k] = unitPhase(-kPiD * double(k) / (2.0 * double(n)));
+                halfShift_[k] = unitPhase(-std::numbers::pi * double(k) / (2.0 * double(n)));
         }
     }
 
@@ -399,7 +400,7 @@ CavityMap cavityFromHeight(const HeightField& height, CavityWrapModes wrap,
     std::vector<ScanTap> taps(size_t(azimuths) * steps);
     std::vector<ScanTap> ahead(azimuths), behind(azimuths);
     for (uint32_t j = 0; j < azimuths; ++j) {
-        const double phi = 2.0 * kPiD * double(j) / double(azimuths);
+        const double phi = 2.0 * std::numbers::pi * double(j) / double(azimuths);
         const double cx = std::cos(phi), cy = std::sin(phi);
         for (uint32_t t = 1; t <= steps; ++t)
             taps[size_t(j) * steps + (t - 1)] = scanTap(double(t) * cx, double(t) * cy, double(t));

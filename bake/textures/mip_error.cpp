@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include "bake/parallel_for.hpp"
@@ -53,7 +54,7 @@ void checkChain(const NormalGlossLevel& level0, const NormalGlossChain& chain) {
 
 std::vector<ViewLight> incidencePlaneSweep(
     const std::vector<glm::vec2>& viewElevationAzimuthDegrees, int lightsPerView) {
-    const double degree = 3.14159265358979323846 / 180.0;
+    const double degree = std::numbers::pi / 180.0;
     std::vector<ViewLight> sweep;
     for (glm::vec2 ea : viewElevationAzimuthDegrees) {
         double e = double(ea.x) * degree, a = double(ea.y) * degree;

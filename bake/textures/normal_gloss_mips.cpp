@@ -76,13 +76,13 @@ struct Texel {
     float gloss;
 };
 
-Texel resolve(const FootprintSums& s, MipMethod method, GlossInversion inversion) {
-    if (method == MipMethod::Blit) {
+Texel resolve(const FootprintSums& s, world::GlossMipMethod method, GlossInversion inversion) {
+    if (method == world::GlossMipMethod::kBlit) {
         glm::dvec3 n = directionOr(s.normal, s.count);
         float roughness = float(s.roughness / s.count);
         return {glm::vec3(n), glsl::gloss_fromRoughness(roughness)};
     }
-    if (method == MipMethod::BlackOps) {
+    if (method == world::GlossMipMethod::kBlackOps) {
         glm::dvec3 n = directionOr(s.normal, s.count);
         // Lazarov 2011, slide "Normal Variance": v = (1/K) sum (1 - (n_i.nbar)^2).
         double nMn = n.x * n.x * s.xx + n.y * n.y * s.yy + n.z * n.z * s.zz +
@@ -130,7 +130,7 @@ TexelRange mipFootprint(int size, int level, int index) {
     return r;
 }
 
-NormalGlossChain buildNormalGlossMips(const NormalGlossLevel& level0, MipMethod method,
+NormalGlossChain buildNormalGlossMips(const NormalGlossLevel& level0, world::GlossMipMethod method,
                                       GlossInversion inversion) {
     const int w0 = level0.width, h0 = level0.height;
     if (w0 < 1 || h0 < 1 || level0.normals.size() != std::size_t(w0) * std::size_t(h0) ||

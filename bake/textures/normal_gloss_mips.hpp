@@ -64,6 +64,8 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "world/gloss_mip_method.hpp"
+
 namespace onelight::bake {
 
 // One level: width x height texels, row-major, rows top to bottom.
@@ -75,8 +77,6 @@ struct NormalGlossLevel {
 
 // Level 0 first, down to 1x1.
 using NormalGlossChain = std::vector<NormalGlossLevel>;
-
-enum class MipMethod { Blit, BlackOps, Wwii };
 
 // Which inversion of the gloss statistic the BlackOps and Wwii methods use: the table
 // (default; exact on flat footprints) or its rational fit (gloss_tables.hpp, GlossFit).
@@ -106,7 +106,7 @@ struct TexelRange {
 // The full chain for `method`. Throws std::invalid_argument unless width, height >= 1 and the
 // arrays hold width * height texels.
 [[nodiscard]] NormalGlossChain buildNormalGlossMips(
-    const NormalGlossLevel& level0, MipMethod method,
+    const NormalGlossLevel& level0, world::GlossMipMethod method,
     GlossInversion inversion = GlossInversion::Table);
 
 }  // namespace onelight::bake

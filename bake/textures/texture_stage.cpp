@@ -192,18 +192,6 @@ CavityWrap cavityWrap(uint16_t wrap) {
                                                                : CavityWrap::kRepeat;
 }
 
-MipMethod mipMethod(world::GlossMipMethod method) {
-    switch (method) {
-        case world::GlossMipMethod::kBlit:
-            return MipMethod::Blit;
-        case world::GlossMipMethod::kBlackOps:
-            return MipMethod::BlackOps;
-        case world::GlossMipMethod::kWwii:
-            return MipMethod::Wwii;
-    }
-    return MipMethod::Wwii;
-}
-
 std::string imageLabel(const world::SourceLevel& level, uint32_t index) {
     const world::Image& image = level.images[index];
     if (!image.name.empty()) return image.name;
@@ -443,7 +431,7 @@ PairSlots pairSlots(Stage& stage, uint32_t material, uint32_t normalIndex, const
         slots.cavity = stage.cavityMade[cavityKey] = add(stage, std::move(cavity));
     }
     const NormalGlossChain chain = buildNormalGlossMips(
-        level0.normalGloss, lambert ? MipMethod::Blit : mipMethod(stage.method));
+        level0.normalGloss, lambert ? world::GlossMipMethod::kBlit : stage.method);
     level0.normalGloss = {};  // the chain holds level 0; the planes are still needed
     world::ProcessedTexture normal = normalTexture(chain, in.normal->sampler, label + " normal");
     world::ProcessedTexture mr =

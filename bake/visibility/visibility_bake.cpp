@@ -242,7 +242,7 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
                 for (uint32_t i = 0; i < settings.sweepRays; ++i) {
                     const glm::vec2 u = rotatedHammersley(i, settings.sweepRays, s0, s1);
                     const float z = 1.0f - 2.0f * u.x, r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-                    const float phi = 2.0f * kPi * u.y;
+                    const float phi = 2.0f * glsl::PI * u.y;
                     const glm::vec3 dir(r * std::cos(phi), r * std::sin(phi), z);
                     bool first = true;
                     sweep(scene, points[k], dir, reach, local.probe, [&](const SurfaceHit& hit) {

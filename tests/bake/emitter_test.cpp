@@ -223,16 +223,17 @@ Variances estimatorVariances(const Scene& s, const glm::vec3& p, uint32_t n) {
     for (uint32_t i = 0; i < n; ++i) {
         const glm::vec3 w =
             glm::normalize(frame.toWorld(sampleCosineHemisphere({rng.next(), rng.next()})));
-        const float pdf = glm::dot(normal, w) / kPi;
+        const float pdf = glm::dot(normal, w) / glsl::PI;
         const EmissionEstimate e = sampleEmission(*s.scene, s.lights, origin, normal, rng, rays);
         const float cosE = glm::dot(normal, e.direction);
         const double nee = e.pdf > 0.0f ? double(e.radianceOverPdf.x * cosE) : 0.0;
-        const double cosine =
-            double(kPi * traceRadiance(*s.scene, s.lights, transport, origin, w, {}, rng, rays).x);
-        const double mis = double(kPi * traceRadiance(*s.scene, s.lights, transport, origin, w, {},
-                                                      rng, rays, nullptr, pdf)
-                                            .x) +
-                           (e.pdf > 0.0f ? nee * double(powerHeuristic(e.pdf, cosE / kPi)) : 0.0);
+        const double cosine = double(
+            glsl::PI * traceRadiance(*s.scene, s.lights, transport, origin, w, {}, rng, rays).x);
+        const double mis =
+            double(glsl::PI * traceRadiance(*s.scene, s.lights, transport, origin, w, {}, rng, rays,
+                                            nullptr, pdf)
+                                  .x) +
+            (e.pdf > 0.0f ? nee * double(powerHeuristic(e.pdf, cosE / glsl::PI)) : 0.0);
         const double x[3] = {nee, cosine, mis};
         for (int k = 0; k < 3; ++k) {
             sum[k] += x[k];

@@ -273,15 +273,17 @@ void expectImportanceSamplingHelps(const SkyScene& s, uint32_t n, double atLeast
     for (uint32_t k = 0; k < n; ++k) {
         const glm::vec3 w =
             glm::normalize(frame.toWorld(sampleCosineHemisphere({rng.next(), rng.next()})));
-        const float pdf = glm::dot(normal, w) / kPi;
-        const double cosine = double(
-            glsl::luminance(kPi * traceRadiance(*s.scene, s.lights, {}, origin, w, {}, rng, rays)));
-        double mis = double(glsl::luminance(
-            kPi * traceRadiance(*s.scene, s.lights, {}, origin, w, {}, rng, rays, nullptr, pdf)));
+        const float pdf = glm::dot(normal, w) / glsl::PI;
+        const double cosine = double(glsl::luminance(
+            glsl::PI * traceRadiance(*s.scene, s.lights, {}, origin, w, {}, rng, rays)));
+        double mis =
+            double(glsl::luminance(glsl::PI * traceRadiance(*s.scene, s.lights, {}, origin, w, {},
+                                                            rng, rays, nullptr, pdf)));
         const EmissionEstimate e = sampleEmission(*s.scene, s.lights, origin, normal, rng, rays);
         if (e.pdf > 0.0f) {
             const float c = glm::dot(normal, e.direction);
-            mis += double(glsl::luminance(e.radianceOverPdf) * c * powerHeuristic(e.pdf, c / kPi));
+            mis += double(glsl::luminance(e.radianceOverPdf) * c *
+                          powerHeuristic(e.pdf, c / glsl::PI));
         }
         const double x[2] = {cosine, mis};
         for (int i = 0; i < 2; ++i) {

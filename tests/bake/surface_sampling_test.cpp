@@ -90,7 +90,7 @@ TEST(SurfaceSampling, DensityIntegratesToTheProbabilityAboveTheHorizon) {
                 for (int j = 0; j < kPhi; ++j) {
                     const float c = (float(i) + 0.5f) / kCos;
                     const float s = std::sqrt(1.0f - c * c);
-                    const float phi = 2.0f * kPi * (float(j) + 0.5f) / kPhi;
+                    const float phi = 2.0f * glsl::PI * (float(j) + 0.5f) / kPhi;
                     integral +=
                         double(surfacePdf(m, n, v, {s * std::cos(phi), s * std::sin(phi), c}));
                 }
@@ -120,7 +120,7 @@ TEST(SurfaceSampling, MixtureTamesGlossyVariance) {
         const glsl::BrdfDots d = glsl::brdfDots(n, v, l);
         return m.albedo.y +
                (l.z > 1e-6f
-                    ? kPi / l.z *
+                    ? glsl::PI / l.z *
                           glsl::specularLobe(glsl::RUNTIME_NDF, glsl::RUNTIME_VIS,
                                              glsl::RUNTIME_FRESNEL, m.specularColor, m.gloss, d)
                               .y

@@ -23,14 +23,14 @@ namespace onelight::test {
 namespace {
 
 using bake::GlossInversion;
-using bake::MipMethod;
+using MipMethod = world::GlossMipMethod;
 using bake::NormalGlossChain;
 using bake::NormalGlossLevel;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr MipMethod kMethods[] = {MipMethod::Blit, MipMethod::BlackOps, MipMethod::Wwii};
+constexpr MipMethod kMethods[] = {MipMethod::kBlit, MipMethod::kBlackOps, MipMethod::kWwii};
 const char* methodName(MipMethod m) {
-    return m == MipMethod::Blit ? "blit" : m == MipMethod::BlackOps ? "black ops" : "wwii";
+    return m == MipMethod::kBlit ? "blit" : m == MipMethod::kBlackOps ? "black ops" : "wwii";
 }
 
 // A small deterministic generator (splitmix64, Steele et al. 2014): uniform doubles in [0, 1).
@@ -321,7 +321,8 @@ TEST(GlossTables, ShaderFoldOfAFilteredNormal) {
                 worstTable, std::abs(double(folded) - bake::gloss_fromAverageNormalLength(length)));
         }
         if (1.0 - glm::length(glm::dvec3(mean)) > 10.0 * allowance) {
-            const bake::NormalGlossChain chain = bake::buildNormalGlossMips(level, MipMethod::Wwii);
+            const bake::NormalGlossChain chain =
+                bake::buildNormalGlossMips(level, MipMethod::kWwii);
             worstMip = std::max(worstMip, std::abs(double(folded) - double(chain[1].gloss[0])));
         }
     }
@@ -385,7 +386,7 @@ TEST(NormalGlossMips, ChainSizesAndFootprintsPartitionLevelZero) {
     for (const auto& s : sizes) {
         int w = s[0], h = s[1];
         NormalGlossChain chain =
-            bake::buildNormalGlossMips(constantLevel(w, h, {0, 0, 1}, 0.5f), MipMethod::Wwii);
+            bake::buildNormalGlossMips(constantLevel(w, h, {0, 0, 1}, 0.5f), MipMethod::kWwii);
         int expectedLevels = 1;
         while ((std::max(w, h) >> expectedLevels) > 0) ++expectedLevels;
         ASSERT_EQ(int(chain.size()), expectedLevels) << w << "x" << h;
@@ -413,11 +414,11 @@ TEST(NormalGlossMips, ChainSizesAndFootprintsPartitionLevelZero) {
             }
         }
     }
-    EXPECT_THROW((void)bake::buildNormalGlossMips(NormalGlossLevel{}, MipMethod::Blit),
+    EXPECT_THROW((void)bake::buildNormalGlossMips(NormalGlossLevel{}, MipMethod::kBlit),
                  std::invalid_argument);
     NormalGlossLevel wrong = constantLevel(3, 3, {0, 0, 1}, 0.5f);
     wrong.gloss.pop_back();
-    EXPECT_THROW((void)bake::buildNormalGlossMips(wrong, MipMethod::Blit), std::invalid_argument);
+    EXPECT_THROW((void)bake::buildNormalGlossMips(wrong, MipMethod::kBlit), std::invalid_argument);
 }
 
 TEST(NormalGlossMips, MipZeroIsTheInput) {
@@ -440,7 +441,7 @@ TEST(NormalGlossMips, FlatMapKeepsItsGloss) {
     for (float g : {0.0f, 0.1f, 0.25f, 0.5f, 0.8f, 0.9f, 0.97f, 1.0f})
         for (MipMethod m : kMethods)
             for (GlossInversion inversion : {GlossInversion::Table, GlossInversion::Fit}) {
-                double tolerance = m == MipMethod::Blit                 ? 1e-5
+                double tolerance = m == MipMethod::kBlit                ? 1e-5
                                    : inversion == GlossInversion::Table ? 1e-6
                                                                         : fitTolerance;
                 NormalGlossChain chain =
@@ -469,7 +470,7 @@ TEST(NormalGlossMips, BumpsAtGlossZeroAndOne) {
             }
             // The blit keeps the mirror (the bug); the others see the bumps (1 - (n.nbar)^2 is
             // ~1e-3 already in a 2x2 footprint here, 10x var(1)).
-            if (m == MipMethod::Blit)
+            if (m == MipMethod::kBlit)
                 EXPECT_NEAR(double(sharpest), 1.0, 1e-5);
             else
                 EXPECT_LT(sharpest, 0.95f) << methodName(m) << " mip " << k;
@@ -482,7 +483,7 @@ TEST(NormalGlossMips, NormalVariationOnlyRoughens) {
     // |average| <= 1 / A(g) = length(g). Either way gloss <= g, up to rounding.
     for (float g : {0.3f, 0.8f, 0.95f}) {
         NormalGlossLevel level0 = randomLevel(24, 17, 0.3, g, g, 11);
-        for (MipMethod m : {MipMethod::BlackOps, MipMethod::Wwii})
+        for (MipMethod m : {MipMethod::kBlackOps, MipMethod::kWwii})
             for (const NormalGlossLevel& level : bake::buildNormalGlossMips(level0, m))
                 for (float mipGloss : level.gloss) EXPECT_LE(mipGloss, g + 1e-6f);
     }
@@ -511,9 +512,9 @@ DirectTexel directTexel(const NormalGlossLevel& l0, bake::TexelRange xs, bake::T
             sumAreaOverCos += 1.0 / bake::averageNormalLength_fromGloss(g) / c;
             k += 1.0;
         }
-    if (m == MipMethod::Blit)
+    if (m == MipMethod::kBlit)
         return {glm::normalize(sumN), double(glsl::gloss_fromRoughness(float(sumRoughness / k)))};
-    if (m == MipMethod::BlackOps) {
+    if (m == MipMethod::kBlackOps) {
         glm::dvec3 nbar = glm::normalize(sumN);
         double v = 0.0;
         for (int y = ys.begin; y < ys.end; ++y)
@@ -623,7 +624,7 @@ TEST(MipError, MatchesTheDefinitionTexelByTexel) {
     // The header's sums, written out over each mip texel's level-0 footprint; only the order of
     // additions differs from the library's level-by-level sums: 1e-12 relative.
     NormalGlossLevel level0 = randomLevel(7, 5, 0.3, 0.5, 0.95, 29);
-    NormalGlossChain chain = bake::buildNormalGlossMips(level0, MipMethod::Wwii);
+    NormalGlossChain chain = bake::buildNormalGlossMips(level0, MipMethod::kWwii);
     std::vector<bake::ViewLight> sweep = bake::incidencePlaneSweep({{40.0f, 10.0f}}, 9);
     std::vector<bake::MipLevelError> errors = bake::mipError(level0, chain, sweep);
     ASSERT_EQ(errors.size(), chain.size());

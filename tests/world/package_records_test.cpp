@@ -175,6 +175,48 @@ TEST(PackageRecords, EveryBakedRecordRoundTrips) {
     EXPECT_EQ(firstDifference(toDisk(p, probe.firstTexel), probe), -1);
 }
 
+TEST(PackageRecords, EveryOptionalSectionRecordRoundTrips) {
+    expectRoundTrip(patterned<DiskErrorBudget>());
+    DiskShardRange range = patterned<DiskShardRange>();
+    range.reserved = 0;
+    expectRoundTrip(range);
+    DiskMaterialTextureSlots slots = patterned<DiskMaterialTextureSlots>();
+    slots.factorsFolded = 1;
+    std::memset(slots.reserved, 0, sizeof(slots.reserved));
+    expectRoundTrip(slots);
+
+    const DiskImportedTexel imported = patterned<DiskImportedTexel>();
+    const world::LightmapTexel texel = fromDisk(imported, world::kLightmapTexelDilated);
+    EXPECT_EQ(texel.flags, world::kLightmapTexelDilated);
+    EXPECT_EQ(firstDifference(toDiskImported(texel), imported), -1);
+
+    DiskVisibilityHeader visibility = patterned<DiskVisibilityHeader>();
+    visibility.cellCount = 2;
+    visibility.surfaceCount = 3;
+    visibility.clusterCount = 40;  // two words a row
+    visibility.rowCount = 1;
+    visibility.reserved = 0;
+    world::Visibility v;
+    fromDiskVisibilityHeader(visibility, v);
+    v.cellRow.resize(visibility.cellCount);
+    v.surfaceCluster.resize(visibility.surfaceCount);
+    v.rows.resize(2);
+    EXPECT_EQ(firstDifference(toDiskVisibilityHeader(v), visibility), -1);
+
+    DiskProcessedTexture texture = patterned<DiskProcessedTexture>();
+    std::memset(texture.reserved, 0, sizeof(texture.reserved));
+    texture.nameOffset = 1;
+    texture.nameLength = 3;
+    texture.firstByte = 2;
+    texture.byteCount = 4;
+    const std::vector<uint8_t> names = {'-', 'a', 'b', 'c', '-'};
+    const std::vector<uint8_t> section = {0, 1, 2, 3, 4, 5, 6, 7};
+    const world::ProcessedTexture t = fromDisk(texture, names, section);
+    EXPECT_EQ(t.name, "abc");
+    EXPECT_EQ(t.texels, (std::vector<uint8_t>{2, 3, 4, 5}));
+    EXPECT_EQ(firstDifference(toDisk(t, texture.nameOffset, texture.firstByte), texture), -1);
+}
+
 TEST(PackageRecords, FromDiskNeverReadsOutsideItsBlobs) {
     Blobs blobs;
     DiskImage image = patterned<DiskImage>();  // references far outside both blobs

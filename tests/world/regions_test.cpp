@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "shading.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/import/gltf_import.hpp"
@@ -29,6 +32,76 @@ Light pointLight(glm::vec3 position, float intensity) {
 PrimaryIlluminanceFn twoLamps() {
     return makeUnshadowedPrimaryIlluminance(
         {pointLight({-5, 2, 0}, 100), pointLight({5, 2, 0}, 100)});
+}
+
+/// The shaders' light model (shaders/lighting.glsl, evaluatePunctualLight) on a surface facing
+/// unit `n`, in luminance: what the runtime shader and the baker evaluate.
+double shaderIlluminance(const Light& l, glm::vec3 p, glm::vec3 n) {
+    const glsl::LightSample s =
+        glsl::evaluatePunctualLight(int(l.type), l.color, l.intensity, l.range, l.position,
+                                    l.direction, std::cos(l.innerCone), std::cos(l.outerCone), p);
+    return double(glsl::luminance(s.illuminance) * glsl::max(0.0f, glm::dot(n, s.l)));
+}
+
+TEST(Regions, UnshadowedIlluminanceIsTheShadersLightModel) {
+    // A hard-edged spot: its cone cosines differ by about 2e-4, less than the shader's floor of
+    // 0.001 on that difference (an older copy of the model in the compile floored at 1e-4, and
+    // so could pick another dominant primary than the bake near the cone's edge).
+    Light spot;
+    spot.type = LightType::kSpot;
+    spot.position = glm::vec3(0, 4, 0);
+    spot.direction = glm::vec3(0, -1, 0);
+    spot.color = glm::vec3(1.0f, 0.8f, 0.6f);
+    spot.intensity = 500.0f;
+    spot.range = 20.0f;
+    spot.innerCone = 0.5f;
+    spot.outerCone = 0.5004f;
+    Light bulb = spot;  // the spot without its cone
+    bulb.type = LightType::kPoint;
+    Light point = pointLight({-3, 2, 1}, 80.0f);
+    point.range = 6.0f;
+    Light sun;
+    sun.type = LightType::kDirectional;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+    sun.color = glm::vec3(1.0f, 0.9f, 0.7f);
+    sun.intensity = 2000.0f;
+    const PrimaryIlluminanceFn compile = makeUnshadowedPrimaryIlluminance({spot, point, sun, bulb});
+    const glm::vec3 up(0, 1, 0);
+    // Floor points at angles from the spot's axis inside the cone, across its edge and beyond.
+    const float offsets[] = {-0.3f, -0.01f,  -0.001f, -0.0004f, -0.0002f, -0.0001f,
+                             0.0f,  0.0001f, 0.0002f, 0.001f,   0.01f,    0.3f};
+    int edgeSamples = 0;
+    for (const float offset : offsets) {
+        const float angle = spot.outerCone + offset;
+        const glm::vec3 p(4.0f * std::tan(angle), 0.0f, 0.0f);
+        double e[4];
+        compile(glm::dvec3(p), up, e);
+        EXPECT_EQ(e[0], shaderIlluminance(spot, p, up)) << "spot at offset " << offset;
+        EXPECT_EQ(e[1], shaderIlluminance(point, p, up)) << "point at offset " << offset;
+        EXPECT_EQ(e[2], shaderIlluminance(sun, p, up)) << "sun at offset " << offset;
+        if (offset >= 0.0f) {
+            EXPECT_EQ(e[0], 0.0) << "outside the cone at offset " << offset;
+        }
+        if (offset > -0.0004f && offset < 0.0f) {
+            // Between the cones: a small part of the beam, where the old floor gave 1/4 or more.
+            EXPECT_GT(e[0], 0.0);
+            EXPECT_LT(e[0], 0.1 * e[3]) << "at offset " << offset;
+            ++edgeSamples;
+        }
+    }
+    EXPECT_EQ(edgeSamples, 2);
+    // The point light beyond its range, and a zero normal (no cosine term).
+    double e[4];
+    compile(glm::dvec3(-3, -5, 1), glm::vec3(0.0f), e);
+    EXPECT_EQ(e[1], 0.0);
+    const glm::vec3 q(1.0f, 0.0f, 2.0f);
+    compile(glm::dvec3(q), glm::vec3(0.0f), e);
+    EXPECT_EQ(e[1],
+              double(glsl::luminance(glsl::evaluatePunctualLight(
+                                         int(point.type), point.color, point.intensity, point.range,
+                                         point.position, point.direction, 1.0f, 1.0f, q)
+                                         .illuminance)));
+    EXPECT_EQ(e[2], double(glsl::luminance(sun.color * sun.intensity)));
 }
 
 TEST(Regions, SplittingNeverLosesArea) {

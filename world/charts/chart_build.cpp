@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <tuple>
 
@@ -82,7 +83,7 @@ std::vector<ChartShape> buildChartShapes(StaticGeometry& geometry, const ChartOp
     const double maxExtentTexels =
         static_cast<double>(options.atlasSize) - 2.0 * options.padding - 1.0;
     const double maxExtentMetres = maxExtentTexels / options.texelsPerMetre;
-    const double cosLimit = std::cos(options.maxNormalAngleDegrees * 3.14159265358979 / 180.0);
+    const double cosLimit = std::cos(options.maxNormalAngleDegrees * std::numbers::pi / 180.0);
 
     // Authored: one chart per instance that has TEXCOORD_1.
     std::vector<uint32_t> authoredChart(geometry.instanceHasUv1.size(), kNoIndex);

@@ -4,6 +4,7 @@
 
 #include <tiny_gltf.h>
 
+#include "shading.hpp"
 #include "world/error.hpp"
 
 namespace onelight::world {
@@ -42,7 +43,7 @@ Camera importCamera(const tinygltf::Camera& source, const glm::dmat4& worldFromL
         camera.aspectRatio = finite(source.perspective.aspectRatio, "aspectRatio");
         camera.znear = finite(source.perspective.znear, "znear");
         camera.zfar = finite(source.perspective.zfar, "zfar");
-        if (!(camera.yfov > 0.0f && camera.yfov < 3.14159f))
+        if (!(camera.yfov > 0.0f && camera.yfov < glsl::PI))
             throw Error(where + ": camera yfov " + std::to_string(camera.yfov) +
                         "; expected radians in (0, pi)");
         if (!(camera.znear > 0.0f))

@@ -1,6 +1,7 @@
 #include "world/import/light_import.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <tiny_gltf.h>
 
@@ -37,7 +38,7 @@ Light importLight(const tinygltf::Light& source, const glm::dmat4& worldFromLoca
     light.range = static_cast<float>(source.range);
     if (light.type == LightType::kSpot) {
         const double inner = source.spot.innerConeAngle, outer = source.spot.outerConeAngle;
-        if (!(inner >= 0.0 && inner < outer && outer <= 1.5707963267948966 + 1e-6))
+        if (!(inner >= 0.0 && inner < outer && outer <= 0.5 * std::numbers::pi + 1e-6))
             throw Error(where + ": spot cone angles inner " + std::to_string(inner) + ", outer " +
                         std::to_string(outer) + "; expected 0 <= inner < outer <= pi/2");
         light.innerCone = static_cast<float>(inner);

@@ -71,19 +71,6 @@ std::string where(const std::string& name, const char* section, uint64_t record)
     return name + ": section " + section + ", record " + std::to_string(record) + ": ";
 }
 
-/// The texels of a section whose sizes were checked, each record checked.
-std::vector<world::LightmapTexel> decodeTexels(const RawSection& s, const std::string& name,
-                                               const char* section) {
-    std::vector<world::LightmapTexel> texels(s.count);
-    for (uint32_t i = 0; i < s.count; ++i) {
-        const auto d =
-            readRecord<DiskLightmapTexel>(s.bytes, size_t(i) * sizeof(DiskLightmapTexel));
-        check(d, where(name, section, i));
-        texels[i] = fromDisk(d);
-    }
-    return texels;
-}
-
 }  // namespace
 
 std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
@@ -113,26 +100,128 @@ std::vector<RawSection> encodeBakedSections(const world::BakedLighting& baked) {
         imported.elementSize = sizeof(DiskImportedTexel);
         imported.count = static_cast<uint32_t>(baked.importedTexels.size());
         for (const world::LightmapTexel& t : baked.importedTexels)
-            appendBytes(imported.bytes,
-                        DiskImportedTexel{{t.irradiance.x, t.irradiance.y, t.irradiance.z}});
+            appendBytes(imported.bytes, toDiskImported(t));
         out.push_back(std::move(imported));
     }
     if (!baked.visibility.empty()) out.push_back(encodeVisibilitySection(baked.visibility));
     if (baked.budget.budget > 0.0f) out.push_back(encodeBudgetSection(baked.budget));
     if (baked.shardCount > 1) {
-        const world::ShardRange& r = baked.shardRange;
         RawSection range;
         range.id = kSectionShardRange;
         range.elementSize = sizeof(DiskShardRange);
         range.count = 1;
-        appendBytes(range.bytes, DiskShardRange{r.chartBegin, r.chartEnd, r.cellBegin, r.cellEnd,
-                                                r.probeBegin, r.probeEnd, r.probeTotal, 0});
+        appendBytes(range.bytes, toDisk(baked.shardRange));
         out.push_back(std::move(range));
     }
     return out;
 }
 
 namespace {
+
+/// Section 32: one texel per atlas texel (`atlasTexels`), each checked.
+std::vector<world::LightmapTexel> decodeLightmapTexels(const RawSection& s, uint64_t atlasTexels,
+                                                       const std::string& name) {
+    if (s.elementSize != sizeof(DiskLightmapTexel) ||
+        s.bytes.size() != uint64_t(s.count) * sizeof(DiskLightmapTexel) || s.count != atlasTexels)
+        throw world::Error(
+            name + ": section lightmap_texels: element size " + std::to_string(s.elementSize) +
+            ", count " + std::to_string(s.count) + ", " + std::to_string(s.bytes.size()) +
+            " bytes; expected element size " + std::to_string(sizeof(DiskLightmapTexel)) +
+            " and count " + std::to_string(atlasTexels) + " (the atlases' texels)");
+    std::vector<world::LightmapTexel> texels(s.count);
+    for (uint32_t i = 0; i < s.count; ++i) {
+        const auto d =
+            readRecord<DiskLightmapTexel>(s.bytes, size_t(i) * sizeof(DiskLightmapTexel));
+        check(d, where(name, "lightmap_texels", i));
+        texels[i] = fromDisk(d);
+    }
+    return texels;
+}
+
+/// Section 36: the level's own lightmap, one irradiance per baked texel of `texels` (whose flags
+/// it takes), each finite and >= 0.
+std::vector<world::LightmapTexel> decodeImportedLightmap(
+    const RawSection& s, const std::vector<world::LightmapTexel>& texels, const std::string& name) {
+    if (s.elementSize != sizeof(DiskImportedTexel) ||
+        s.bytes.size() != uint64_t(s.count) * sizeof(DiskImportedTexel) || s.count != texels.size())
+        throw world::Error(name + ": section imported_lightmap: element size " +
+                           std::to_string(s.elementSize) + ", count " + std::to_string(s.count) +
+                           "; expected element size " + std::to_string(sizeof(DiskImportedTexel)) +
+                           " and count " + std::to_string(texels.size()) +
+                           " (the atlases' texels)");
+    std::vector<world::LightmapTexel> imported(s.count);
+    for (uint32_t i = 0; i < s.count; ++i) {
+        const auto d =
+            readRecord<DiskImportedTexel>(s.bytes, size_t(i) * sizeof(DiskImportedTexel));
+        checkFiniteNonNegative(where(name, "imported_lightmap", i), "irradiance", d.irradiance);
+        imported[i] = fromDisk(d, texels[i].flags);
+    }
+    return imported;
+}
+
+/// Section 33: one byte per atlas texel (`atlasTexels`).
+std::vector<uint8_t> decodeShadowMasks(const RawSection& s, uint64_t atlasTexels,
+                                       const std::string& name) {
+    if (s.elementSize != 1 || s.bytes.size() != s.count || s.count != atlasTexels)
+        throw world::Error(name + ": section shadow_masks: element size " +
+                           std::to_string(s.elementSize) + ", count " + std::to_string(s.count) +
+                           "; expected element size 1 and count " + std::to_string(atlasTexels));
+    return s.bytes;
+}
+
+/// Section 34's header: dims within the limits, cellCount their product and the section's size,
+/// a finite origin and cell size, a shard index below the shard count.
+DiskLightGridHeader checkedGridHeader(const RawSection& s, const std::string& name) {
+    const std::string at = name + ": section light_grid: ";
+    if (s.elementSize != 1 || s.bytes.size() != s.count ||
+        s.bytes.size() < sizeof(DiskLightGridHeader))
+        throw world::Error(at + std::to_string(s.bytes.size()) + " bytes; expected a header of " +
+                           std::to_string(sizeof(DiskLightGridHeader)) + " bytes and cells");
+    const auto h = readRecord<DiskLightGridHeader>(s.bytes, 0);
+    for (int c = 0; c < 3; ++c)
+        if (h.dims[c] < 1 || h.dims[c] > world::kMaxLightGridCellsPerAxis)
+            throw world::Error(at + "dims[" + std::to_string(c) +
+                               "] = " + std::to_string(h.dims[c]) + "; expected 1.." +
+                               std::to_string(world::kMaxLightGridCellsPerAxis) + " cells");
+    // Each factor is at most 4096, so the product is exact in 64 bits.
+    const uint64_t cells = uint64_t(h.dims[0]) * h.dims[1] * h.dims[2];
+    if (cells > world::kMaxLightGridCells)
+        throw world::Error(at + std::to_string(cells) + " cells; expected at most " +
+                           std::to_string(world::kMaxLightGridCells));
+    const uint64_t expectedBytes =
+        sizeof(DiskLightGridHeader) + uint64_t(h.cellCount) * sizeof(DiskLightGridCell);
+    if (cells != h.cellCount || s.bytes.size() != expectedBytes)
+        throw world::Error(at + "dims " + std::to_string(h.dims[0]) + "x" +
+                           std::to_string(h.dims[1]) + "x" + std::to_string(h.dims[2]) +
+                           ", cellCount " + std::to_string(h.cellCount) + ", " +
+                           std::to_string(s.bytes.size()) +
+                           " bytes; expected cellCount == " + std::to_string(cells) + " and " +
+                           std::to_string(expectedBytes) + " bytes");
+    for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(h.origin[c]) || !std::isfinite(h.cellSize[c]) || !(h.cellSize[c] > 0.0f))
+            throw world::Error(at + "header origin/cellSize[" + std::to_string(c) +
+                               "] = " + std::to_string(h.origin[c]) + "/" +
+                               std::to_string(h.cellSize[c]) + "; expected finite, size > 0");
+    if (h.shardCount == 0 || h.shardIndex >= h.shardCount)
+        throw world::Error(at + "shard " + std::to_string(h.shardIndex) + "/" +
+                           std::to_string(h.shardCount) + "; expected index < count");
+    return h;
+}
+
+/// Section 34 into `baked`: the header (checkedGridHeader), then every cell checked against
+/// `level`'s lights.
+void decodeLightGrid(const RawSection& s, const world::CompiledLevel& level,
+                     const std::string& name, world::BakedLighting& baked) {
+    const DiskLightGridHeader h = checkedGridHeader(s, name);
+    fromDiskGridHeader(h, baked);
+    baked.grid.cells.resize(h.cellCount);
+    for (uint32_t i = 0; i < h.cellCount; ++i) {
+        const auto d = readRecord<DiskLightGridCell>(
+            s.bytes, sizeof(DiskLightGridHeader) + size_t(i) * sizeof(DiskLightGridCell));
+        check(d, level, where(name, "light_grid cells", i));
+        baked.grid.cells[i] = fromDisk(d);
+    }
+}
 
 /// Section 40 of a part of a level of `charts` charts holding `cells` grid cells and `probes`
 /// probes.
@@ -162,33 +251,40 @@ world::ShardRange decodeShardRange(const RawSection& section, uint64_t charts, u
                            std::to_string(probes) + "; expected as many as the range");
     if (d.reserved != 0)
         throw world::Error(at + "reserved = " + std::to_string(d.reserved) + "; expected 0");
-    return {d.chartBegin, d.chartEnd, d.cellBegin, d.cellEnd,
-            d.probeBegin, d.probeEnd, d.probeTotal};
+    return fromDisk(d);
 }
 
-}  // namespace
-
-BakedContents decodeBakedSections(std::span<const RawSection> sections,
-                                  const world::CompiledLevel& level, const std::string& name) {
-    BakedContents result;
+/// The baked sections among a package's sections, each at most once (probes are found by
+/// decodeProbeSection).
+struct BakedSectionSet {
     const RawSection *texels = nullptr, *masks = nullptr, *grid = nullptr, *imported = nullptr,
                      *visibility = nullptr, *budget = nullptr, *shardRange = nullptr;
+};
+
+BakedSectionSet findBakedSections(std::span<const RawSection> sections, const std::string& name) {
+    BakedSectionSet set;
     for (const RawSection& s : sections) {
-        const RawSection** slot = s.id == kSectionLightmapTexels     ? &texels
-                                  : s.id == kSectionShadowMasks      ? &masks
-                                  : s.id == kSectionLightGrid        ? &grid
-                                  : s.id == kSectionImportedLightmap ? &imported
-                                  : s.id == kSectionVisibility       ? &visibility
-                                  : s.id == kSectionErrorBudget      ? &budget
-                                  : s.id == kSectionShardRange       ? &shardRange
+        const RawSection** slot = s.id == kSectionLightmapTexels     ? &set.texels
+                                  : s.id == kSectionShadowMasks      ? &set.masks
+                                  : s.id == kSectionLightGrid        ? &set.grid
+                                  : s.id == kSectionImportedLightmap ? &set.imported
+                                  : s.id == kSectionVisibility       ? &set.visibility
+                                  : s.id == kSectionErrorBudget      ? &set.budget
+                                  : s.id == kSectionShardRange       ? &set.shardRange
                                                                      : nullptr;
         if (!slot) continue;
-        if (*slot) {
+        if (*slot)
             throw world::Error(name + ": section " + std::to_string(s.id) + " appears twice");
-        }
         *slot = &s;
     }
-    if (!texels && !masks && !grid) {
+    return set;
+}
+
+/// Whether the package holds baked lighting: all of sections 32..34 or none, and the sections
+/// that only come with them (35 probes, 36, 37, 39, 40) only with them.
+bool hasBakedLighting(const BakedSectionSet& set, std::span<const RawSection> sections,
+                      const std::string& name) {
+    if (!set.texels && !set.masks && !set.grid) {
         for (const RawSection& s : sections)
             if (s.id == kSectionProbes || s.id == kSectionImportedLightmap ||
                 s.id == kSectionVisibility || s.id == kSectionErrorBudget ||
@@ -201,123 +297,45 @@ BakedContents decodeBakedSections(std::span<const RawSection> sections,
                                                                   : "imported_lightmap") +
                                    " present without baked lighting; expected "
                                    "sections lightmap_texels, shadow_masks and light_grid too");
-        return result;  // no baked lighting
+        return false;
     }
-    if (!texels || !masks || !grid) {
+    if (!set.texels || !set.masks || !set.grid)
         throw world::Error(name + ": baked lighting incomplete: sections lightmap_texels " +
-                           (texels ? "present" : "missing") + ", shadow_masks " +
-                           (masks ? "present" : "missing") + ", light_grid " +
-                           (grid ? "present" : "missing") + "; expected all three or none");
-    }
-    result.present = true;
-    uint64_t expectedTexels = 0;
-    for (const world::Atlas& a : level.atlases) expectedTexels += uint64_t(a.width) * a.height;
+                           (set.texels ? "present" : "missing") + ", shadow_masks " +
+                           (set.masks ? "present" : "missing") + ", light_grid " +
+                           (set.grid ? "present" : "missing") + "; expected all three or none");
+    return true;
+}
 
-    // Lightmap texels.
-    if (texels->elementSize != sizeof(DiskLightmapTexel) ||
-        texels->bytes.size() != uint64_t(texels->count) * sizeof(DiskLightmapTexel) ||
-        texels->count != expectedTexels) {
-        throw world::Error(name + ": section lightmap_texels: element size " +
-                           std::to_string(texels->elementSize) + ", count " +
-                           std::to_string(texels->count) + ", " +
-                           std::to_string(texels->bytes.size()) + " bytes; expected element size " +
-                           std::to_string(sizeof(DiskLightmapTexel)) + " and count " +
-                           std::to_string(expectedTexels) + " (the atlases' texels)");
-    }
+}  // namespace
+
+BakedContents decodeBakedSections(std::span<const RawSection> sections,
+                                  const world::CompiledLevel& level, const std::string& name) {
+    BakedContents result;
+    const BakedSectionSet set = findBakedSections(sections, name);
+    result.present = hasBakedLighting(set, sections, name);
+    if (!result.present) return result;
+    uint64_t atlasTexels = 0;
+    for (const world::Atlas& a : level.atlases) atlasTexels += uint64_t(a.width) * a.height;
+
     world::BakedLighting& baked = result.baked;
-    baked.texels = decodeTexels(*texels, name, "lightmap_texels");
-    if (imported) {
-        if (imported->elementSize != sizeof(DiskImportedTexel) ||
-            imported->bytes.size() != uint64_t(imported->count) * sizeof(DiskImportedTexel) ||
-            imported->count != expectedTexels)
-            throw world::Error(name + ": section imported_lightmap: element size " +
-                               std::to_string(imported->elementSize) + ", count " +
-                               std::to_string(imported->count) + "; expected element size " +
-                               std::to_string(sizeof(DiskImportedTexel)) + " and count " +
-                               std::to_string(expectedTexels) + " (the atlases' texels)");
-        baked.importedTexels.resize(imported->count);
-        for (uint32_t i = 0; i < imported->count; ++i) {
-            const auto d = readRecord<DiskImportedTexel>(imported->bytes,
-                                                         size_t(i) * sizeof(DiskImportedTexel));
-            checkFiniteNonNegative(where(name, "imported_lightmap", i), "irradiance", d.irradiance);
-            world::LightmapTexel& t = baked.importedTexels[i];
-            t.irradiance = glm::vec3(d.irradiance[0], d.irradiance[1], d.irradiance[2]);
-            t.direction = glm::vec3(0.0f);
-            t.normalWeight = 0.5f;
-            t.flags = baked.texels[i].flags;
-        }
-    }
-
-    // Shadow masks.
-    if (masks->elementSize != 1 || masks->bytes.size() != masks->count ||
-        masks->count != expectedTexels) {
-        throw world::Error(name + ": section shadow_masks: element size " +
-                           std::to_string(masks->elementSize) + ", count " +
-                           std::to_string(masks->count) + "; expected element size 1 and count " +
-                           std::to_string(expectedTexels));
-    }
-    baked.shadowMask = masks->bytes;
-
-    // Light grid.
-    if (grid->elementSize != 1 || grid->bytes.size() != grid->count ||
-        grid->bytes.size() < sizeof(DiskLightGridHeader)) {
-        throw world::Error(name + ": section light_grid: " + std::to_string(grid->bytes.size()) +
-                           " bytes; expected a header of " +
-                           std::to_string(sizeof(DiskLightGridHeader)) + " bytes and cells");
-    }
-    const auto h = readRecord<DiskLightGridHeader>(grid->bytes, 0);
-    for (int c = 0; c < 3; ++c)
-        if (h.dims[c] < 1 || h.dims[c] > world::kMaxLightGridCellsPerAxis)
-            throw world::Error(name + ": section light_grid: dims[" + std::to_string(c) +
-                               "] = " + std::to_string(h.dims[c]) + "; expected 1.." +
-                               std::to_string(world::kMaxLightGridCellsPerAxis) + " cells");
-    // Each factor is at most 4096, so the product is exact in 64 bits.
-    const uint64_t cells = uint64_t(h.dims[0]) * h.dims[1] * h.dims[2];
-    if (cells > world::kMaxLightGridCells)
-        throw world::Error(name + ": section light_grid: " + std::to_string(cells) +
-                           " cells; expected at most " + std::to_string(world::kMaxLightGridCells));
-    const uint64_t expectedBytes =
-        sizeof(DiskLightGridHeader) + uint64_t(h.cellCount) * sizeof(DiskLightGridCell);
-    if (cells != h.cellCount || grid->bytes.size() != expectedBytes) {
-        throw world::Error(name + ": section light_grid: dims " + std::to_string(h.dims[0]) + "x" +
-                           std::to_string(h.dims[1]) + "x" + std::to_string(h.dims[2]) +
-                           ", cellCount " + std::to_string(h.cellCount) + ", " +
-                           std::to_string(grid->bytes.size()) +
-                           " bytes; expected cellCount == " + std::to_string(cells) + " and " +
-                           std::to_string(expectedBytes) + " bytes");
-    }
-    for (int c = 0; c < 3; ++c) {
-        if (!std::isfinite(h.origin[c]) || !std::isfinite(h.cellSize[c]) ||
-            !(h.cellSize[c] > 0.0f)) {
-            throw world::Error(name + ": section light_grid: header origin/cellSize[" +
-                               std::to_string(c) + "] = " + std::to_string(h.origin[c]) + "/" +
-                               std::to_string(h.cellSize[c]) + "; expected finite, size > 0");
-        }
-    }
-    if (h.shardCount == 0 || h.shardIndex >= h.shardCount) {
-        throw world::Error(name + ": section light_grid: shard " + std::to_string(h.shardIndex) +
-                           "/" + std::to_string(h.shardCount) + "; expected index < count");
-    }
-    fromDiskGridHeader(h, baked);
-    baked.grid.cells.resize(h.cellCount);
-    for (uint32_t i = 0; i < h.cellCount; ++i) {
-        const auto d = readRecord<DiskLightGridCell>(
-            grid->bytes, sizeof(DiskLightGridHeader) + size_t(i) * sizeof(DiskLightGridCell));
-        check(d, level, where(name, "light_grid cells", i));
-        baked.grid.cells[i] = fromDisk(d);
-    }
-
+    baked.texels = decodeLightmapTexels(*set.texels, atlasTexels, name);
+    if (set.imported)
+        baked.importedTexels = decodeImportedLightmap(*set.imported, baked.texels, name);
+    baked.shadowMask = decodeShadowMasks(*set.masks, atlasTexels, name);
+    decodeLightGrid(*set.grid, level, name, baked);
     // Environment probes (optional: only levels with glossy materials have them).
     baked.probes = decodeProbeSection(sections, level, name).probes;
-    if (visibility) baked.visibility = decodeVisibilitySection(*visibility, level, name);
-    if (budget) baked.budget = decodeBudgetSection(*budget, baked.grid.cells.size(), name);
-    if ((baked.shardCount > 1) != (shardRange != nullptr))
-        throw world::Error(name + ": section shard_range " + (shardRange ? "present" : "missing") +
-                           " with light_grid's shard " + std::to_string(baked.shardIndex) + "/" +
+    if (set.visibility) baked.visibility = decodeVisibilitySection(*set.visibility, level, name);
+    if (set.budget) baked.budget = decodeBudgetSection(*set.budget, baked.grid.cells.size(), name);
+    if ((baked.shardCount > 1) != (set.shardRange != nullptr))
+        throw world::Error(name + ": section shard_range " +
+                           (set.shardRange ? "present" : "missing") + " with light_grid's shard " +
+                           std::to_string(baked.shardIndex) + "/" +
                            std::to_string(baked.shardCount) +
                            "; expected it in an unmerged part (shard count > 1) only");
-    if (shardRange)
-        baked.shardRange = decodeShardRange(*shardRange, level.charts.size(),
+    if (set.shardRange)
+        baked.shardRange = decodeShardRange(*set.shardRange, level.charts.size(),
                                             baked.grid.cells.size(), baked.probes.size(), name);
     return result;
 }

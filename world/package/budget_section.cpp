@@ -5,14 +5,12 @@
 
 #include "world/error.hpp"
 #include "world/package/format.hpp"
+#include "world/package/records.hpp"
 
 namespace onelight::package {
 
 RawSection encodeBudgetSection(const world::ErrorBudgetChoices& c) {
-    const DiskErrorBudget d{
-        c.budget,           c.flags,         c.probeError,      c.probesPlaced,
-        c.densityTolerance, c.lightmapError, c.texelsRequested, c.texelsSampled,
-        c.gridCellsFull,    c.gridCells,     c.viewsPredicted,  c.predictedError};
+    const DiskErrorBudget d = toDisk(c);
     RawSection s;
     s.id = kSectionErrorBudget;
     s.elementSize = sizeof(DiskErrorBudget);
@@ -57,20 +55,7 @@ world::ErrorBudgetChoices decodeBudgetSection(const RawSection& section, uint64_
     if (d.gridCellsFull < d.gridCells)
         throw bad("gridCellsFull", std::to_string(d.gridCellsFull),
                   "at least gridCells (" + std::to_string(d.gridCells) + ")");
-    world::ErrorBudgetChoices c;
-    c.budget = d.budget;
-    c.flags = d.flags;
-    c.probeError = d.probeError;
-    c.probesPlaced = d.probesPlaced;
-    c.densityTolerance = d.densityTolerance;
-    c.lightmapError = d.lightmapError;
-    c.texelsRequested = d.texelsRequested;
-    c.texelsSampled = d.texelsSampled;
-    c.gridCellsFull = d.gridCellsFull;
-    c.gridCells = d.gridCells;
-    c.viewsPredicted = d.viewsPredicted;
-    c.predictedError = d.predictedError;
-    return c;
+    return fromDisk(d);
 }
 
 }  // namespace onelight::package

@@ -1,8 +1,9 @@
 // One toDisk / fromDisk pair per .olpak record (format.hpp): the one place that maps each
-// field between an in-memory type (compiled_level.hpp, baked_lighting.hpp) and its on-disk
-// twin. The writers call toDisk; the readers check a record first (every index, range and
-// float, with errors naming the field) and then call fromDisk. fromDisk never reads outside
-// what it is given: a string or byte range that does not fit comes back empty.
+// field between an in-memory type (compiled_level.hpp, baked_lighting.hpp, visibility.hpp,
+// processed_textures.hpp) and its on-disk twin. The writers call toDisk; the readers check a record
+// first (every index, range and float, with errors naming the field) and then call fromDisk.
+// fromDisk never reads outside what it is given: a string or byte range that does not fit comes
+// back empty.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +15,8 @@
 #include "world/baked_lighting.hpp"
 #include "world/compiled_level.hpp"
 #include "world/package/format.hpp"
+#include "world/processed_textures.hpp"
+#include "world/visibility.hpp"
 
 namespace onelight::package {
 
@@ -626,6 +629,176 @@ inline void fromDiskGridHeader(const DiskLightGridHeader& d, world::BakedLightin
     return c;
 }
 
+/// Lightmap texel -> DiskImportedTexel: a level's own (imported) lightmap keeps only the
+/// irradiance.
+[[nodiscard]] inline DiskImportedTexel toDiskImported(const world::LightmapTexel& t) {
+    DiskImportedTexel d{};
+    put(d.irradiance, t.irradiance);
+    return d;
+}
+
+/// DiskImportedTexel -> lightmap texel: no direction (normalWeight 0.5, all ambient), the
+/// `flags` of the baked texel at the same place.
+[[nodiscard]] inline world::LightmapTexel fromDisk(const DiskImportedTexel& d, uint32_t flags) {
+    world::LightmapTexel t;
+    t.irradiance = vec(d.irradiance);
+    t.direction = glm::vec3(0.0f);
+    t.normalWeight = 0.5f;
+    t.flags = flags;
+    return t;
+}
+
+/// Visibility -> DiskVisibilityHeader (counts from its arrays).
+[[nodiscard]] inline DiskVisibilityHeader toDiskVisibilityHeader(const world::Visibility& v) {
+    DiskVisibilityHeader d{};
+    put(d.origin, v.origin);
+    d.cellSize = v.cellSize;
+    for (int a = 0; a < 3; ++a) d.dims[a] = v.dims[a];
+    d.cellCount = static_cast<uint32_t>(v.cellRow.size());
+    d.surfaceCount = static_cast<uint32_t>(v.surfaceCluster.size());
+    d.clusterCount = v.clusterCount;
+    d.rowCount = v.rowCount();
+    return d;
+}
+
+/// DiskVisibilityHeader -> the grid's origin, cell size, dims and cluster count in `v` (its
+/// arrays untouched).
+inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visibility& v) {
+    v.origin = vec(d.origin);
+    v.cellSize = d.cellSize;
+    v.dims = glm::uvec3(d.dims[0], d.dims[1], d.dims[2]);
+    v.clusterCount = d.clusterCount;
+}
+
+/// Error budget choices -> DiskErrorBudget.
+[[nodiscard]] inline DiskErrorBudget toDisk(const world::ErrorBudgetChoices& c) {
+    DiskErrorBudget d{};
+    d.budget = c.budget;
+    d.flags = c.flags;
+    d.probeError = c.probeError;
+    d.probesPlaced = c.probesPlaced;
+    d.densityTolerance = c.densityTolerance;
+    d.lightmapError = c.lightmapError;
+    d.texelsRequested = c.texelsRequested;
+    d.texelsSampled = c.texelsSampled;
+    d.gridCellsFull = c.gridCellsFull;
+    d.gridCells = c.gridCells;
+    d.viewsPredicted = c.viewsPredicted;
+    d.predictedError = c.predictedError;
+    return d;
+}
+
+/// DiskErrorBudget -> error budget choices.
+[[nodiscard]] inline world::ErrorBudgetChoices fromDisk(const DiskErrorBudget& d) {
+    world::ErrorBudgetChoices c;
+    c.budget = d.budget;
+    c.flags = d.flags;
+    c.probeError = d.probeError;
+    c.probesPlaced = d.probesPlaced;
+    c.densityTolerance = d.densityTolerance;
+    c.lightmapError = d.lightmapError;
+    c.texelsRequested = d.texelsRequested;
+    c.texelsSampled = d.texelsSampled;
+    c.gridCellsFull = d.gridCellsFull;
+    c.gridCells = d.gridCells;
+    c.viewsPredicted = d.viewsPredicted;
+    c.predictedError = d.predictedError;
+    return c;
+}
+
+/// Shard range -> DiskShardRange.
+[[nodiscard]] inline DiskShardRange toDisk(const world::ShardRange& r) {
+    DiskShardRange d{};
+    d.chartBegin = r.chartBegin;
+    d.chartEnd = r.chartEnd;
+    d.cellBegin = r.cellBegin;
+    d.cellEnd = r.cellEnd;
+    d.probeBegin = r.probeBegin;
+    d.probeEnd = r.probeEnd;
+    d.probeTotal = r.probeTotal;
+    return d;
+}
+
+/// DiskShardRange -> shard range.
+[[nodiscard]] inline world::ShardRange fromDisk(const DiskShardRange& d) {
+    world::ShardRange r;
+    r.chartBegin = d.chartBegin;
+    r.chartEnd = d.chartEnd;
+    r.cellBegin = d.cellBegin;
+    r.cellEnd = d.cellEnd;
+    r.probeBegin = d.probeBegin;
+    r.probeEnd = d.probeEnd;
+    r.probeTotal = d.probeTotal;
+    return r;
+}
+
+/// Processed texture -> DiskProcessedTexture, its name placed at `nameOffset` of the section's
+/// names and its texels at `firstByte` of the section.
+[[nodiscard]] inline DiskProcessedTexture toDisk(const world::ProcessedTexture& t,
+                                                 uint32_t nameOffset, uint64_t firstByte) {
+    DiskProcessedTexture d{};
+    d.nameOffset = nameOffset;
+    d.nameLength = static_cast<uint32_t>(t.name.size());
+    d.format = static_cast<uint8_t>(t.format);
+    d.width = t.width;
+    d.height = t.height;
+    d.mipCount = t.mipCount;
+    d.magFilter = t.sampler.magFilter;
+    d.minFilter = t.sampler.minFilter;
+    d.wrapS = t.sampler.wrapS;
+    d.wrapT = t.sampler.wrapT;
+    d.firstByte = firstByte;
+    d.byteCount = t.texels.size();
+    return d;
+}
+
+/// DiskProcessedTexture -> processed texture, its name read from `names` (the section's names)
+/// and its texels from `section` (the whole section).
+[[nodiscard]] inline world::ProcessedTexture fromDisk(const DiskProcessedTexture& d,
+                                                      std::span<const uint8_t> names,
+                                                      std::span<const uint8_t> section) {
+    world::ProcessedTexture t;
+    const std::span<const uint8_t> name = slice(names, d.nameOffset, d.nameLength);
+    t.name.assign(name.begin(), name.end());
+    t.format = static_cast<world::TexelFormat>(d.format);
+    t.width = d.width;
+    t.height = d.height;
+    t.mipCount = d.mipCount;
+    t.sampler.magFilter = d.magFilter;
+    t.sampler.minFilter = d.minFilter;
+    t.sampler.wrapS = d.wrapS;
+    t.sampler.wrapT = d.wrapT;
+    const std::span<const uint8_t> texels = slice(section, d.firstByte, d.byteCount);
+    t.texels.assign(texels.begin(), texels.end());
+    return t;
+}
+
+/// A material's texture slots -> DiskMaterialTextureSlots.
+[[nodiscard]] inline DiskMaterialTextureSlots toDisk(const world::MaterialTextureSlots& s) {
+    DiskMaterialTextureSlots d{};
+    d.baseColor = s.baseColor;
+    d.metallicRoughness = s.metallicRoughness;
+    d.normal = s.normal;
+    d.occlusion = s.occlusion;
+    d.emissive = s.emissive;
+    d.cavity = s.cavity;
+    d.factorsFolded = s.factorsFolded ? 1 : 0;
+    return d;
+}
+
+/// DiskMaterialTextureSlots -> a material's texture slots.
+[[nodiscard]] inline world::MaterialTextureSlots fromDisk(const DiskMaterialTextureSlots& d) {
+    world::MaterialTextureSlots s;
+    s.baseColor = d.baseColor;
+    s.metallicRoughness = d.metallicRoughness;
+    s.normal = d.normal;
+    s.occlusion = d.occlusion;
+    s.emissive = d.emissive;
+    s.cavity = d.cavity;
+    s.factorsFolded = d.factorsFolded != 0;
+    return s;
+}
+
 /// Environment probe -> DiskProbe, its texels placed at `firstTexel` of the section's texels.
 [[nodiscard]] inline DiskProbe toDisk(const world::EnvironmentProbe& p, uint32_t firstTexel) {
     DiskProbe d{};
@@ -664,7 +837,10 @@ inline void fromDiskGridHeader(const DiskLightGridHeader& d, world::BakedLightin
 
 using records::fromDisk;
 using records::fromDiskGridHeader;
+using records::fromDiskVisibilityHeader;
 using records::toDisk;
 using records::toDiskGridHeader;
+using records::toDiskImported;
+using records::toDiskVisibilityHeader;
 
 }  // namespace onelight::package

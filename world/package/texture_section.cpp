@@ -10,6 +10,7 @@
 #include "world/images/image_budget.hpp"
 #include "world/images/image_decode.hpp"
 #include "world/package/format.hpp"
+#include "world/package/records.hpp"
 
 namespace onelight::package {
 namespace {
@@ -150,22 +151,15 @@ void check(const DiskProcessedTexture& d, uint64_t nextName, uint32_t nameBytes,
 struct SlotRule {
     const char* name;
     uint32_t DiskMaterialTextureSlots::*disk;
-    uint32_t world::MaterialTextureSlots::*slot;
     TexelFormat format;
 };
 constexpr SlotRule kSlotRules[] = {
-    {"baseColor", &DiskMaterialTextureSlots::baseColor, &world::MaterialTextureSlots::baseColor,
-     TexelFormat::kRgba8Srgb},
-    {"metallicRoughness", &DiskMaterialTextureSlots::metallicRoughness,
-     &world::MaterialTextureSlots::metallicRoughness, TexelFormat::kRgba8Unorm},
-    {"normal", &DiskMaterialTextureSlots::normal, &world::MaterialTextureSlots::normal,
-     TexelFormat::kRgba8Unorm},
-    {"occlusion", &DiskMaterialTextureSlots::occlusion, &world::MaterialTextureSlots::occlusion,
-     TexelFormat::kRgba8Unorm},
-    {"emissive", &DiskMaterialTextureSlots::emissive, &world::MaterialTextureSlots::emissive,
-     TexelFormat::kRgba8Srgb},
-    {"cavity", &DiskMaterialTextureSlots::cavity, &world::MaterialTextureSlots::cavity,
-     TexelFormat::kR8Unorm},
+    {"baseColor", &DiskMaterialTextureSlots::baseColor, TexelFormat::kRgba8Srgb},
+    {"metallicRoughness", &DiskMaterialTextureSlots::metallicRoughness, TexelFormat::kRgba8Unorm},
+    {"normal", &DiskMaterialTextureSlots::normal, TexelFormat::kRgba8Unorm},
+    {"occlusion", &DiskMaterialTextureSlots::occlusion, TexelFormat::kRgba8Unorm},
+    {"emissive", &DiskMaterialTextureSlots::emissive, TexelFormat::kRgba8Srgb},
+    {"cavity", &DiskMaterialTextureSlots::cavity, TexelFormat::kR8Unorm},
 };
 
 /// Throws unless every slot of `d` (at `at`) is none or a texture of `textures` in the format
@@ -215,20 +209,8 @@ RawSection encodeTextureSection(const world::ProcessedTextures& textures) {
     uint64_t nextName = 0, nextByte = layout.texelBase;
     for (size_t i = 0; i < textures.textures.size(); ++i) {
         const world::ProcessedTexture& t = textures.textures[i];
-        DiskProcessedTexture d{};
-        d.nameOffset = static_cast<uint32_t>(nextName);
-        d.nameLength = static_cast<uint32_t>(t.name.size());
-        d.format = static_cast<uint8_t>(t.format);
-        d.width = t.width;
-        d.height = t.height;
-        d.mipCount = t.mipCount;
-        d.magFilter = t.sampler.magFilter;
-        d.minFilter = t.sampler.minFilter;
-        d.wrapS = t.sampler.wrapS;
-        d.wrapT = t.sampler.wrapT;
-        d.firstByte = nextByte;
-        d.byteCount = t.texels.size();
-        writeRecord(out.bytes, layout.texturesOffset + i * sizeof(DiskProcessedTexture), d);
+        writeRecord(out.bytes, layout.texturesOffset + i * sizeof(DiskProcessedTexture),
+                    toDisk(t, static_cast<uint32_t>(nextName), nextByte));
         if (!t.name.empty())
             std::memcpy(out.bytes.data() + layout.namesOffset + nextName, t.name.data(),
                         t.name.size());
@@ -238,11 +220,8 @@ RawSection encodeTextureSection(const world::ProcessedTextures& textures) {
         nextByte += alignUp(t.texels.size());
     }
     for (size_t m = 0; m < textures.materials.size(); ++m) {
-        const world::MaterialTextureSlots& slots = textures.materials[m];
-        DiskMaterialTextureSlots d{};
-        for (const SlotRule& rule : kSlotRules) d.*rule.disk = slots.*rule.slot;
-        d.factorsFolded = slots.factorsFolded ? 1 : 0;
-        writeRecord(out.bytes, layout.materialsOffset + m * sizeof(DiskMaterialTextureSlots), d);
+        writeRecord(out.bytes, layout.materialsOffset + m * sizeof(DiskMaterialTextureSlots),
+                    toDisk(textures.materials[m]));
     }
     out.count = static_cast<uint32_t>(out.bytes.size());
     return out;
@@ -301,6 +280,7 @@ TextureContents decodeTextureSection(std::span<const RawSection> sections,
     world::ProcessedTextures& out = result.textures;
     out.method = static_cast<world::GlossMipMethod>(h.method);
     out.textures.resize(h.textureCount);
+    const std::span<const uint8_t> names(bytes.data() + layout.namesOffset, h.nameBytes);
     uint64_t nextName = 0, nextByte = layout.texelBase;
     for (uint32_t i = 0; i < h.textureCount; ++i) {
         const std::string atTexture = at + ", texture " + std::to_string(i) + ": ";
@@ -311,19 +291,7 @@ TextureContents decodeTextureSection(std::span<const RawSection> sections,
         const uint64_t padded = alignUp(end);
         if (!allZero(bytes, end, padded < size ? padded : size))
             throw world::Error(atTexture + "the padding after its texels is not zero");
-        world::ProcessedTexture& t = out.textures[i];
-        const auto* names = reinterpret_cast<const char*>(bytes.data() + layout.namesOffset);
-        t.name.assign(names + d.nameOffset, d.nameLength);
-        t.format = static_cast<TexelFormat>(d.format);
-        t.width = d.width;
-        t.height = d.height;
-        t.mipCount = d.mipCount;
-        t.sampler.magFilter = d.magFilter;
-        t.sampler.minFilter = d.minFilter;
-        t.sampler.wrapS = d.wrapS;
-        t.sampler.wrapT = d.wrapT;
-        t.texels.assign(bytes.begin() + static_cast<std::ptrdiff_t>(d.firstByte),
-                        bytes.begin() + static_cast<std::ptrdiff_t>(end));
+        out.textures[i] = fromDisk(d, names, bytes);
         nextName += d.nameLength;
         nextByte = padded;
     }
@@ -341,9 +309,7 @@ TextureContents decodeTextureSection(std::span<const RawSection> sections,
         const auto d = readRecord<DiskMaterialTextureSlots>(
             bytes, layout.materialsOffset + uint64_t(m) * sizeof(DiskMaterialTextureSlots));
         check(d, out.textures, at + ", material " + std::to_string(m) + ": ");
-        world::MaterialTextureSlots& slots = out.materials[m];
-        for (const SlotRule& rule : kSlotRules) slots.*rule.slot = d.*rule.disk;
-        slots.factorsFolded = d.factorsFolded != 0;
+        out.materials[m] = fromDisk(d);
     }
     return result;
 }

@@ -5,6 +5,7 @@
 
 #include "world/error.hpp"
 #include "world/package/format.hpp"
+#include "world/package/records.hpp"
 
 namespace onelight::package {
 namespace {
@@ -24,16 +25,7 @@ std::vector<uint32_t> readWords(const std::vector<uint8_t>& bytes, size_t offset
 }  // namespace
 
 RawSection encodeVisibilitySection(const world::Visibility& v) {
-    DiskVisibilityHeader h{};
-    for (int c = 0; c < 3; ++c) {
-        h.origin[c] = v.origin[c];
-        h.dims[c] = v.dims[c];
-    }
-    h.cellSize = v.cellSize;
-    h.cellCount = uint32_t(v.cellRow.size());
-    h.surfaceCount = uint32_t(v.surfaceCluster.size());
-    h.clusterCount = v.clusterCount;
-    h.rowCount = v.rowCount();
+    const DiskVisibilityHeader h = toDiskVisibilityHeader(v);
     RawSection s;
     s.id = kSectionVisibility;
     s.elementSize = 1;
@@ -94,10 +86,7 @@ world::Visibility decodeVisibilitySection(const RawSection& section,
         throw world::Error(at + std::to_string(section.bytes.size()) + " bytes; expected " +
                            std::to_string(expected) + " for its header's counts");
     world::Visibility v;
-    v.origin = glm::vec3(h.origin[0], h.origin[1], h.origin[2]);
-    v.cellSize = h.cellSize;
-    v.dims = glm::uvec3(h.dims[0], h.dims[1], h.dims[2]);
-    v.clusterCount = h.clusterCount;
+    fromDiskVisibilityHeader(h, v);
     size_t offset = sizeof(DiskVisibilityHeader);
     v.surfaceCluster = readWords(section.bytes, offset, h.surfaceCount);
     offset += size_t(h.surfaceCount) * 4;

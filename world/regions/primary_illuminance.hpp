@@ -23,8 +23,8 @@ using PrimaryIlluminanceFn = std::function<void(const glm::dvec3& position, cons
 /// Index of the largest illuminance (lowest index on ties); kNoIndex when every value is zero.
 [[nodiscard]] uint32_t dominantPrimary(std::span<const double> illuminance);
 
-/// Illuminance without visibility: directional E = I cos; point E = I cos / d^2 with the
-/// KHR_lights_punctual range window; spot adds the glTF cone falloff. Colour is weighted by
+/// Illuminance without visibility: world::unshadowedIlluminance (the light model of
+/// shaders/lighting.glsl, the runtime's and the baker's) times the cosine of `normal`, in
 /// luminance (Rec. 709). `primaries` are the level's primary-candidate lights.
 [[nodiscard]] PrimaryIlluminanceFn makeUnshadowedPrimaryIlluminance(std::vector<Light> primaries);
 

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <numbers>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -471,7 +472,7 @@ void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& s
             level.lights.push_back(l);
         }
         if (script->skyLight > 0.0f) {
-            level.skyRadiance = glm::vec3(float(double(script->skyLight) / M_PI));
+            level.skyRadiance = glm::vec3(float(double(script->skyLight) / std::numbers::pi));
         } else if (script->surfaceLight > 0.0f) {
             // The older way: q3map2 makes the sky's faces area lights of value S, which is a
             // sky of 0.25 S cd/m^2 (q3_import.hpp) in the light image's normalised mean colour.
