@@ -29,6 +29,14 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
     s.level = &loaded;
     const world::CompiledLevel& level = loaded.level;
     s.bsp = world::bspView(level);
+    if (!level.collision.brushes.empty()) s.tuning = quake3Tuning();
+    s.brushes = makeBrushWorld(level.collision);
+    s.world.fallLimitY = level.settings.boundsMin.y - s.tuning.fallMargin;
+    for (const world::Entity& e : level.entities)
+        if (e.flags & world::kEntitySpawn) {
+            const glm::vec3 f = glm::normalize(e.rotation) * glm::vec3(0.0f, 0.0f, -1.0f);
+            s.world.spawns.push_back({e.position, std::atan2(-f.x, -f.z)});
+        }
 
     glm::vec3 feet = 0.5f * (level.settings.boundsMin + level.settings.boundsMax);
     glm::vec3 forward(0.0f, 0.0f, -1.0f);
@@ -43,12 +51,15 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
         feet = level.cameras.front().position - glm::vec3(0.0f, s.tuning.eyeHeight, 0.0f);
         forward = glm::normalize(level.cameras.front().rotation) * glm::vec3(0.0f, 0.0f, -1.0f);
     }
+    // On brushes a spawn sits 9 units up (Quake's SelectSpawnPoint), clear of the floor.
+    if (!level.collision.brushes.empty()) feet.y += s.tuning.spawnLift;
     s.player = s.registry.create();
     s.registry.emplace<Name>(s.player, Name{"player"});
     s.registry.emplace<Transform>(s.player, Transform{feet});
     s.registry.emplace<Player>(s.player, Player{std::atan2(-forward.x, -forward.z),
                                                 std::asin(std::clamp(forward.y, -1.0f, 1.0f))});
     s.registry.emplace<Flashlight>(s.player);
+    s.registry.emplace<TriggerEvents>(s.player);
 
     for (uint32_t i = 0; i < level.entities.size(); ++i) {
         const world::Entity& e = level.entities[i];
@@ -127,7 +138,10 @@ void stepSession(Session& s) {
         s.ev100 = s.tick == 0 ? target : s.ev100 + (target - s.ev100) * rate;
     }
     ecs::Tick tick{s.tick++, s.tickSeconds};
-    playerSystem(s.registry, tick, s.input, s.tuning, &s.bsp);
+    s.world.surfaces = &s.bsp;
+    s.world.brushes = s.level->level.collision.brushes.empty() ? nullptr : &s.brushes;
+    playerSystem(s.registry, tick, s.input, s.tuning, s.world);
+    triggerSystem(s.registry, s.tuning, s.world);
     moverSystem(s.registry, tick);
     effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);
     primarySelectionSystem(s.registry, s.primaryCandidates, [&s](uint32_t light, glm::vec3 p) {

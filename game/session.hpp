@@ -22,7 +22,9 @@ struct LevelEntity {
 
 struct Session {
     const assets::LoadedLevel* level = nullptr;  // borrowed
-    world::BspView bsp;                          // collision and visibility
+    world::BspView bsp;                          // collision (glTF levels) and visibility
+    BrushWorld brushes;  // a Quake 3 map's collision brushes and triggers (empty otherwise)
+    PlayerWorld world;   // what the player moves through; its pointers are set each tick
     ecs::Registry registry;
     ecs::Entity player = ecs::kNullEntity;
     Tuning tuning;
@@ -38,10 +40,11 @@ struct Session {
 };
 
 // Sets up the player (at the level's spawn, else its first camera, else its centre) and one
-// entity per dynamic object of the level.
+// entity per dynamic object of the level. A level with collision brushes (a Quake 3 map) plays
+// with quake3Tuning() on them; others with the default tuning on their drawn surfaces.
 void startSession(Session& session, const assets::LoadedLevel& level);
 
-// Runs one fixed tick: player, movers, effect lights, primary selection; then clears the
+// Runs one fixed tick: player, triggers, movers, effect lights, primary selection; then clears the
 // tick's one-shot input.
 void stepSession(Session& session);
 

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include <glm/gtc/quaternion.hpp>
+#include "world/collision.hpp"
 #include "world/gloss_mip_method.hpp"
 #include "world/no_index.hpp"
 
@@ -261,6 +262,7 @@ struct CompiledLevel {
     std::vector<DynamicMesh> dynamicMeshes;
     std::vector<Entity> entities;
     Features features;
+    LevelCollision collision;  // a Quake 3 map's brushes and triggers; empty for glTF levels
 };
 
 }  // namespace onelight::world

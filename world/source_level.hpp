@@ -66,6 +66,7 @@ struct SourceLevel {
     bool hasGridBounds = false;
     glm::vec3 gridMin{0.0f}, gridMax{0.0f};
     ImportedLightmap importedLightmap;     // the source's own bake, if it carries one
+    LevelCollision collision;              // a Quake 3 map's brushes and triggers, as compiled
     std::vector<std::string> importNotes;  // what the import approximated or ignored, one line
                                            // each; the bake reports them as warnings
 };

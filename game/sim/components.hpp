@@ -26,6 +26,17 @@ struct Player {
     float pitch = 0.0f;        // radians, positive looks up, clamped to +-89 degrees
     glm::vec3 velocity{0.0f};  // metres per second
     bool onGround = false;
+    bool jumpHeld = false;          // Quake movement: jumped, the key not yet released
+    float knockbackSeconds = 0.0f;  // Quake movement: no ground friction for this long
+};
+
+// What a level's triggers did to the player (game/sim/systems.hpp triggerSystem), counted from
+// the start, for replays to check.
+struct TriggerEvents {
+    uint32_t teleports = 0;
+    uint32_t jumpPadLaunches = 0;       // a pad counts once until the player leaves it
+    uint32_t respawns = 0;              // by a hurt trigger or by falling below the level
+    uint32_t touchingPad = UINT32_MAX;  // the jump pad touched last tick (into the triggers)
 };
 
 // Moves back and forth between `start` and `start + offset`, one round trip per `period`.

@@ -1,6 +1,7 @@
 #include "replay_runner.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace onelight::game {
 
@@ -22,6 +23,65 @@ ecs::Entity findNamed(const ecs::Registry& registry, const std::string& name) {
 bool actsBeforeSystems(CommandKind k) {
     return k == CommandKind::kSpawn || k == CommandKind::kKey || k == CommandKind::kLook ||
            k == CommandKind::kFire || k == CommandKind::kFlashlight;
+}
+
+std::string vectorText(glm::vec3 v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.4f %.4f %.4f)", double(v.x), double(v.y), double(v.z));
+    return text;
+}
+
+// The player expectations of Quake movement and triggers (replay_script.hpp).
+void checkPlayer(const ReplayRunner& r, const Command& c, const ecs::Registry& registry) {
+    const ecs::Entity player = findNamed(registry, "player");
+    if (player == ecs::kNullEntity || !registry.allOf<Player, Transform>(player))
+        throw ReplayFailure(place(r, c) + "there is no player");
+    const glm::vec3 feet = registry.get<Transform>(player).position;
+    const Player& p = registry.get<Player>(player);
+    const std::string at = " (feet at " + vectorText(feet) + ", velocity " +
+                           vectorText(p.velocity) +
+                           (p.onGround ? ", on the ground)" : ", in the air)");
+    const glm::vec3 expected(c.values[0], c.values[1], c.values[2]);
+    switch (c.kind) {
+        case CommandKind::kExpectInAir:
+            if (p.onGround)
+                throw ReplayFailure(place(r, c) + "expected the player in the air" + at);
+            return;
+        case CommandKind::kExpectFeet:
+        case CommandKind::kExpectVelocity: {
+            const bool isFeet = c.kind == CommandKind::kExpectFeet;
+            const glm::vec3 actual = isFeet ? feet : p.velocity;
+            const float off = glm::length(actual - expected);
+            if (!(off <= c.values[3]))
+                throw ReplayFailure(place(r, c) + "expected the player's " +
+                                    (isFeet ? "feet at " : "velocity ") + vectorText(expected) +
+                                    " within " + std::to_string(c.values[3]) + ", found " +
+                                    vectorText(actual) + ", " + std::to_string(off) + " off" + at);
+            return;
+        }
+        case CommandKind::kExpectHeight:
+            if (!(feet.y >= c.values[0] && feet.y <= c.values[1]))
+                throw ReplayFailure(place(r, c) + "expected the feet's height from " +
+                                    std::to_string(c.values[0]) + " to " +
+                                    std::to_string(c.values[1]) + " m, found " +
+                                    std::to_string(feet.y) + at);
+            return;
+        default: {
+            const TriggerEvents* events = registry.tryGet<TriggerEvents>(player);
+            const TriggerEvents none;
+            const TriggerEvents& e = events ? *events : none;
+            const char* what = c.kind == CommandKind::kExpectTeleports  ? "teleports"
+                               : c.kind == CommandKind::kExpectLaunches ? "jump pad launches"
+                                                                        : "respawns";
+            const uint32_t n = c.kind == CommandKind::kExpectTeleports  ? e.teleports
+                               : c.kind == CommandKind::kExpectLaunches ? e.jumpPadLaunches
+                                                                        : e.respawns;
+            if (n != uint32_t(c.count))
+                throw ReplayFailure(place(r, c) + "expected " + std::to_string(c.count) + " " +
+                                    what + ", found " + std::to_string(n) + at);
+            return;
+        }
+    }
 }
 
 }  // namespace
@@ -114,6 +174,15 @@ ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, const ecs::Regi
                                         std::to_string(spots) + " flashlight)");
                 break;
             }
+            case CommandKind::kExpectInAir:
+            case CommandKind::kExpectFeet:
+            case CommandKind::kExpectHeight:
+            case CommandKind::kExpectVelocity:
+            case CommandKind::kExpectTeleports:
+            case CommandKind::kExpectLaunches:
+            case CommandKind::kExpectRespawns:
+                checkPlayer(r, c, registry);
+                break;
             case CommandKind::kExpectOnGround:
             case CommandKind::kExpectMoved: {
                 const ecs::Entity player = findNamed(registry, "player");

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "quake_move.hpp"
+
 namespace onelight::game {
 
 glm::vec3 viewDirection(float yaw, float pitch) {
@@ -65,6 +67,95 @@ void playerSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputSta
         player.onGround = floor;
         if (floor && player.velocity.y < 0.0f) player.velocity.y = 0.0f;
         transform.position = center - glm::vec3(0.0f, tuning.bodyRadius, 0.0f);
+        transform.yaw = player.yaw;
+    }
+}
+
+void playerSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputState& input,
+                  const Tuning& tuning, const PlayerWorld& world) {
+    if (!world.brushes) {
+        playerSystem(registry, tick, input, tuning, world.surfaces);
+        return;
+    }
+    MoveIntent intent;
+    intent.forward = float(input.down("W")) - float(input.down("S"));
+    intent.right = float(input.down("D")) - float(input.down("A"));
+    intent.jump = input.down("SPACE");
+    for (auto [e, transform, player] : registry.view<Transform, Player>().each()) {
+        player.yaw += glm::radians(input.lookYawDegrees);
+        player.pitch = std::clamp(player.pitch + glm::radians(input.lookPitchDegrees),
+                                  glm::radians(-89.0f), glm::radians(89.0f));
+        quakeMove(*world.brushes, tuning, float(tick.seconds), intent, transform.position, player);
+        transform.yaw = player.yaw;
+    }
+}
+
+glm::vec3 jumpPadVelocity(glm::vec3 centre, glm::vec3 target, float gravity) {
+    const float height = target.y - centre.y;
+    if (!(height > 0.0f) || !(gravity > 0.0f)) return glm::vec3(0.0f);
+    const float time = std::sqrt(height / (0.5f * gravity));
+    glm::vec2 flat(target.x - centre.x, target.z - centre.z);
+    const float distance = glm::length(flat);
+    const glm::vec2 horizontal =
+        distance > 0.0f ? flat / distance * (distance / time) : glm::vec2(0.0f);
+    return glm::vec3(horizontal.x, time * gravity, horizontal.y);
+}
+
+namespace {
+
+void respawn(glm::vec3& feet, Player& player, TriggerEvents* events, const Tuning& tuning,
+             const PlayerWorld& world) {
+    if (world.spawns.empty()) return;
+    const uint32_t count = events ? events->respawns : 0;
+    const SpawnPoint& spawn = world.spawns[count % world.spawns.size()];
+    feet = spawn.feet + glm::vec3(0.0f, tuning.spawnLift, 0.0f);
+    player.velocity = glm::vec3(0.0f);
+    player.yaw = spawn.yaw;
+    player.pitch = 0.0f;
+    player.knockbackSeconds = 0.0f;
+    player.onGround = false;
+    if (events) ++events->respawns;
+}
+
+}  // namespace
+
+void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWorld& world) {
+    const std::vector<world::Trigger>* triggers =
+        world.brushes && world.brushes->collision ? &world.brushes->collision->triggers : nullptr;
+    for (auto [e, transform, player] : registry.view<Transform, Player>().each()) {
+        TriggerEvents* events = registry.tryGet<TriggerEvents>(e);
+        glm::vec3& feet = transform.position;
+        uint32_t pad = UINT32_MAX;
+        for (size_t i = 0; triggers && i < triggers->size(); ++i) {
+            const world::Trigger& t = (*triggers)[i];
+            const glm::vec3 lo = feet + tuning.boxMin, hi = feet + tuning.boxMax;
+            if (glm::any(glm::greaterThan(lo, t.boundsMax)) ||
+                glm::any(glm::lessThan(hi, t.boundsMin)))
+                continue;
+            if (t.kind == world::TriggerKind::kPush) {
+                const glm::vec3 v =
+                    jumpPadVelocity(0.5f * (t.boundsMin + t.boundsMax), t.target, tuning.gravity);
+                if (v == glm::vec3(0.0f)) continue;
+                player.velocity = v;  // BG_TouchJumpPad, every tick it is touched
+                player.onGround = false;
+                pad = uint32_t(i);
+                if (events && events->touchingPad != pad) ++events->jumpPadLaunches;
+            } else if (t.kind == world::TriggerKind::kTeleport) {
+                feet = t.target;  // TeleportPlayer
+                player.yaw = t.targetYaw;
+                player.pitch = 0.0f;
+                player.velocity = viewDirection(t.targetYaw, 0.0f) * tuning.teleportSpeed;
+                player.knockbackSeconds = tuning.knockbackSeconds;
+                player.onGround = false;
+                if (events) ++events->teleports;
+                break;
+            } else {
+                respawn(feet, player, events, tuning, world);
+                break;
+            }
+        }
+        if (events) events->touchingPad = pad;
+        if (feet.y < world.fallLimitY) respawn(feet, player, events, tuning, world);
         transform.yaw = player.yaw;
     }
 }

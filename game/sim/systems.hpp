@@ -1,11 +1,14 @@
 // The demo game's systems: free functions over the registry, run once per fixed tick in the
-// order stepSession calls them (player, movers, effect lights, primary selection).
+// order stepSession calls them (player, triggers, movers, effect lights, primary selection).
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <span>
+#include <vector>
 
+#include "brush_trace.hpp"
 #include "components.hpp"
 #include "ecs/registry.hpp"
 #include "ecs/schedule.hpp"
@@ -27,6 +30,38 @@ namespace onelight::game {
 // WASD relative to the view, mouse look, gravity, jumping, collision against the BSP.
 void playerSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputState& input,
                   const Tuning& tuning, const world::BspView* bsp);
+
+// Where the player may respawn: the feet and the view's yaw.
+struct SpawnPoint {
+    glm::vec3 feet{0.0f};
+    float yaw = 0.0f;  // radians about +y, 0 looks down -z
+};
+
+// What the player moves through: a Quake 3 map's brushes and triggers when the level has them,
+// else the drawn surfaces' BSP (glTF levels); where a fall ends and where respawns go.
+struct PlayerWorld {
+    const world::BspView* surfaces = nullptr;  // borrowed; null: an empty level
+    const BrushWorld* brushes = nullptr;       // borrowed; null: collide with `surfaces`
+    float fallLimitY = -std::numeric_limits<float>::infinity();  // feet below: respawn
+    std::vector<SpawnPoint> spawns;  // respawns take them in turn; none: the player stays
+};
+
+// The player's move through `world`: Quake 3's movement (quake_move.hpp) on brushes, else the
+// sphere of the overload above on the surfaces.
+void playerSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputState& input,
+                  const Tuning& tuning, const PlayerWorld& world);
+
+// After the move: the triggers the player's box overlaps act (a jump pad launches it to reach
+// its target at the apex, Quake 3's AimAtTarget; a teleporter sends it to its destination
+// facing its yaw at tuning.teleportSpeed; a hurt trigger respawns it), and a player whose feet
+// fell below world.fallLimitY respawns. Counts each in TriggerEvents when the player has one.
+void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWorld& world);
+
+// The launch velocity of a jump pad whose box is centred at `centre` aiming at `target`, under
+// `gravity` (Quake 3's AimAtTarget, g_trigger.c): time = sqrt(height / (gravity / 2)),
+// horizontal speed = distance / time, vertical = time * gravity. Zero when the target is not
+// above the centre.
+[[nodiscard]] glm::vec3 jumpPadVelocity(glm::vec3 centre, glm::vec3 target, float gravity);
 
 // Places every mover on its back-and-forth path at this tick's time (a pure function of time).
 void moverSystem(ecs::Registry& registry, const ecs::Tick& tick);

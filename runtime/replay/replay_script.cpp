@@ -89,6 +89,9 @@ const std::set<std::string_view>& knownKeys() {
     return keys;
 }
 
+constexpr const char* kPlayerChecks =
+    "on-ground, in-air, moved, feet, height, velocity, teleports, launches or respawns";
+
 }  // namespace
 
 Script parseScript(std::string_view text, const std::string& path) {
@@ -207,13 +210,46 @@ Script parseScript(std::string_view text, const std::string& path) {
                     p.fail("expected a whole count from 0 to 5");
                 c.count = int(n);
             } else if (what == "player") {
-                if (p.choice("on-ground", "moved")) {
+                const std::string_view check = p.word(kPlayerChecks);
+                if (check == "on-ground") {
                     c.kind = CommandKind::kExpectOnGround;
-                } else {
+                } else if (check == "in-air") {
+                    c.kind = CommandKind::kExpectInAir;
+                } else if (check == "moved") {
                     c.kind = CommandKind::kExpectMoved;
                     double d = p.number("a distance in metres");
                     if (!(d >= 0.0 && d <= 1e6)) p.fail("expected a distance from 0 to 1e6 metres");
                     c.values[0] = float(d);
+                } else if (check == "feet" || check == "velocity") {
+                    c.kind =
+                        check == "feet" ? CommandKind::kExpectFeet : CommandKind::kExpectVelocity;
+                    const char* what3 =
+                        check == "feet" ? "a coordinate in metres" : "a speed in m/s";
+                    for (int i = 0; i < 3; ++i)
+                        c.values[i] = float(p.bounded(what3, kMaxScriptCoordinate));
+                    p.keyword("within");
+                    const double d = p.bounded("a tolerance", kMaxScriptCoordinate);
+                    if (!(d >= 0.0)) p.fail("expected a tolerance of zero or more");
+                    c.values[3] = float(d);
+                } else if (check == "height") {
+                    c.kind = CommandKind::kExpectHeight;
+                    c.values[0] =
+                        float(p.bounded("a lowest height in metres", kMaxScriptCoordinate));
+                    c.values[1] =
+                        float(p.bounded("a highest height in metres", kMaxScriptCoordinate));
+                    if (!(c.values[0] <= c.values[1]))
+                        p.fail("expected the lowest height first (MIN <= MAX)");
+                } else if (check == "teleports" || check == "launches" || check == "respawns") {
+                    c.kind = check == "teleports"  ? CommandKind::kExpectTeleports
+                             : check == "launches" ? CommandKind::kExpectLaunches
+                                                   : CommandKind::kExpectRespawns;
+                    const double n = p.number("a count");
+                    if (n < 0 || n > 1e6 || n != std::floor(n))
+                        p.fail("expected a whole count from 0 to 1000000");
+                    c.count = int(n);
+                } else {
+                    p.fail(std::string("expected ") + kPlayerChecks +
+                           " after 'expect player', found '" + LineParser::quoted(check) + "'");
                 }
             } else {
                 p.fail("expected 'primary', 'effect-lights' or 'player' after 'expect', found '" +

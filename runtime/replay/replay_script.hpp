@@ -17,6 +17,15 @@
 //   expect player on-ground        the player stands on a floor (walking a level in a replay)
 //   expect player moved D          at least D metres, horizontally, from where it started (the
 //                                  level's spawn, or the last spawn command)
+//   expect player in-air           the player stands on no floor
+//   expect player feet X Y Z within D
+//                                  the feet (not the eye) within D metres of (X, Y, Z)
+//   expect player height MIN MAX   the feet's height (y) from MIN to MAX metres
+//   expect player velocity X Y Z within D
+//                                  the velocity within D m/s of (X, Y, Z)
+//   expect player teleports N      exactly N teleports so far (also launches: jump pads, respawns:
+//   expect player launches N       hurt triggers and falls below the level), counted from the
+//   expect player respawns N       start of the replay
 //   quit
 //
 // Parsing checks the syntax, numbers and times; entity and light names are resolved (and
@@ -50,6 +59,13 @@ enum class CommandKind {
     kExpectEffectLights,
     kExpectOnGround,
     kExpectMoved,
+    kExpectInAir,
+    kExpectFeet,       // values: x y z tolerance
+    kExpectHeight,     // values: min max
+    kExpectVelocity,   // values: x y z tolerance
+    kExpectTeleports,  // count
+    kExpectLaunches,   // count
+    kExpectRespawns,   // count
     kQuit
 };
 
@@ -61,8 +77,9 @@ struct Command {
     std::string name;      // Spawn: "player"; Key: key; Capture: file stem; ExpectPrimary: entity
     std::string light;     // ExpectPrimary: the light's name
     bool on = false;       // Key: down; Flashlight: on
-    float values[5] = {};  // Spawn: x y z yaw pitch; Look: dyaw dpitch; ExpectMoved: metres
-    int count = 0;         // ExpectEffectLights
+    float values[5] = {};  // Spawn: x y z yaw pitch; Look: dyaw dpitch; ExpectMoved: metres;
+                           // ExpectFeet, ExpectVelocity: x y z tolerance; ExpectHeight: min max
+    int count = 0;         // ExpectEffectLights, ExpectTeleports, ExpectLaunches, ExpectRespawns
 };
 
 struct Script {

@@ -12,14 +12,18 @@
 #include <vector>
 
 #include "tests/support/error_message.hpp"
+#include "world/compile/compile_level.hpp"
 #include "world/error.hpp"
 #include "world/import/level_import.hpp"
 #include "world/import/q3/bsp_file.hpp"
+#include "world/import/q3/collision_import.hpp"
 #include "world/import/q3/entity_lump.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/shader_script.hpp"
 #include "world/light_model.hpp"
+#include "world/package/collision_section.hpp"
+#include "world/package/package_reader.hpp"
 
 namespace onelight::world::q3 {
 namespace {
@@ -49,6 +53,10 @@ struct BspBuilder {
     std::vector<int32_t> indices;
     std::vector<BspSurface> surfaces;
     std::vector<uint8_t> lightmaps;  // whole pages, or empty
+    std::vector<BspBrushPlane> planes;
+    std::vector<BspModel> models;
+    std::vector<BspBrush> brushes;
+    std::vector<BspBrushSide> brushSides;
 
     BspBuilder() {
         BspShader s{};
@@ -88,6 +96,10 @@ struct BspBuilder {
         lump(kLumpDrawIndexes, indices.data(), indices.size() * sizeof(int32_t));
         lump(kLumpSurfaces, surfaces.data(), surfaces.size() * sizeof(BspSurface));
         lump(kLumpLightmaps, lightmaps.data(), lightmaps.size());
+        lump(kLumpPlanes, planes.data(), planes.size() * sizeof(BspBrushPlane));
+        lump(kLumpModels, models.data(), models.size() * sizeof(BspModel));
+        lump(kLumpBrushes, brushes.data(), brushes.size() * sizeof(BspBrush));
+        lump(kLumpBrushSides, brushSides.data(), brushSides.size() * sizeof(BspBrushSide));
         std::vector<uint8_t> out(sizeof h + body.size());
         std::memcpy(out.data(), &h, sizeof h);
         if (!body.empty()) std::memcpy(out.data() + sizeof h, body.data(), body.size());
@@ -527,4 +539,196 @@ TEST(Quake3Maps, ASkyThatIsASurfaceLightIsAUniformSky) {
 }
 
 }  // namespace
+}  // namespace onelight::world::q3
+
+namespace onelight::world::q3 {
+namespace {
+
+// Adds an axis-aligned box brush of `shader` (map units, Z up) and returns its index.
+int32_t addBoxBrush(BspBuilder& b, glm::vec3 lo, glm::vec3 hi, int32_t shader) {
+    const int32_t first = int32_t(b.brushSides.size());
+    const float n[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const float d[6] = {hi.x, -lo.x, hi.y, -lo.y, hi.z, -lo.z};
+    for (int s = 0; s < 6; ++s) {
+        b.brushSides.push_back({int32_t(b.planes.size()), shader});
+        b.planes.push_back({{n[s][0], n[s][1], n[s][2]}, d[s]});
+    }
+    b.brushes.push_back({first, 6, shader});
+    return int32_t(b.brushes.size()) - 1;
+}
+
+BspShader shaderWith(const char* name, int32_t contents, int32_t surfaceFlags = 0) {
+    BspShader s{};
+    std::strcpy(s.name, name);
+    s.contentFlags = contents;
+    s.surfaceFlags = surfaceFlags;
+    return s;
+}
+
+// A floor (solid), a clip brush, a water and a trigger brush in the world, and one trigger
+// model used by a jump pad, a teleporter and a hurt trigger.
+BspBuilder mapWithCollision() {
+    BspBuilder b;
+    b.shaders[0].contentFlags = kContentsSolid;
+    b.shaders.push_back(shaderWith("common/clip", kContentsPlayerClip, kSurfNoDraw));
+    b.shaders.push_back(shaderWith("textures/liquids/water", kContentsWater));
+    b.shaders.push_back(shaderWith("common/trigger", kContentsTrigger, kSurfNoDraw));
+    addBoxBrush(b, {-256, -256, -16}, {256, 256, 0}, 0);  // the floor
+    addBoxBrush(b, {0, 96, 0}, {64, 128, 128}, 1);        // a clip
+    addBoxBrush(b, {-64, -64, 0}, {0, 0, 32}, 2);         // water: not solid
+    addBoxBrush(b, {-32, -32, 0}, {32, 32, 8}, 3);        // a trigger brush in the world
+    addBoxBrush(b, {64, 0, 0}, {128, 64, 16}, 3);         // the trigger model's brush
+    b.models.push_back({{-256, -256, -16}, {256, 256, 128}, 0, 1, 0, 4});
+    b.models.push_back({{64, 0, 0}, {128, 64, 16}, 0, 0, 4, 1});
+    b.entities = R"({
+"classname" "worldspawn"
+}
+{
+"classname" "trigger_push"
+"model" "*1"
+"target" "apex"
+}
+{
+"classname" "target_position"
+"targetname" "apex"
+"origin" "96 32 264"
+}
+{
+"classname" "trigger_teleport"
+"model" "*1"
+"target" "exit"
+}
+{
+"classname" "misc_teleporter_dest"
+"targetname" "exit"
+"origin" "-128 64 56"
+"angle" "180"
+}
+{
+"classname" "trigger_hurt"
+"model" "*1"
+}
+)";
+    return b;
+}
+
+}  // namespace
+
+TEST(Quake3Collision, PlayerSolidBrushesAndTriggersImportInMetresWithYUp) {
+    const SourceLevel level =
+        importLevel(mapWithCollision().write("collision", "collision"), withoutGame("collision"));
+    const LevelCollision& c = level.collision;
+    // The floor and the clip; never the water or the trigger brushes.
+    ASSERT_EQ(c.brushes.size(), 2u);
+    EXPECT_EQ(c.brushes[0].contents, kContentsSolid);
+    EXPECT_EQ(c.brushes[1].contents, kContentsPlayerClip);
+    ASSERT_EQ(c.brushes[0].sideCount, 6u);
+    // The floor's top, z <= 0 in units, is y <= 0 m; its +y side (y <= 256) is z >= -8 m.
+    const CollisionPlane& top = c.planes[c.sidePlanes[c.brushes[0].firstSide + 4]];
+    EXPECT_EQ(top.normal, glm::vec3(0, 1, 0));
+    EXPECT_EQ(top.distance, 0.0f);
+    const CollisionPlane& north = c.planes[c.sidePlanes[c.brushes[0].firstSide + 2]];
+    EXPECT_EQ(north.normal, glm::vec3(0, 0, -1));
+    EXPECT_EQ(north.distance, 8.0f);
+    ASSERT_EQ(c.triggers.size(), 3u);
+    const Trigger& push = c.triggers[0];
+    EXPECT_EQ(push.kind, TriggerKind::kPush);
+    EXPECT_EQ(push.boundsMin, glm::vec3(2, 0, -2));
+    EXPECT_EQ(push.boundsMax, glm::vec3(4, 0.5f, 0));
+    EXPECT_EQ(push.target, glm::vec3(3, 8.25f, -1));
+    const Trigger& teleport = c.triggers[1];
+    EXPECT_EQ(teleport.kind, TriggerKind::kTeleport);
+    // The destination's origin + 1 - 24 units: the feet.
+    EXPECT_EQ(teleport.target, glm::vec3(-4, 33.0f / 32.0f, -2));
+    EXPECT_FLOAT_EQ(teleport.targetYaw, glm::radians(90.0f));  // Quake's -x is a left turn
+    EXPECT_EQ(c.triggers[2].kind, TriggerKind::kHurt);
+}
+
+TEST(Quake3Collision, BrushesWithBadIndicesAreRefusedByTheBspReader) {
+    BspBuilder b = mapWithCollision();
+    b.brushSides[3].plane = 999;
+    EXPECT_NE(parseError(b.bytes()).find("brush side 3: plane 999 of 30"), std::string::npos)
+        << parseError(b.bytes());
+    b = mapWithCollision();
+    b.brushes[1].sideCount = 100;
+    EXPECT_NE(parseError(b.bytes()).find("brush 1: sides 6 + 100 is outside the 30 brush sides"),
+              std::string::npos)
+        << parseError(b.bytes());
+    b = mapWithCollision();
+    b.planes[2].dist = std::nanf("");
+    EXPECT_NE(parseError(b.bytes()).find("plane 2 is NaN or Inf"), std::string::npos);
+    b = mapWithCollision();
+    b.entities += "{\n\"classname\" \"trigger_hurt\"\n\"model\" \"*7\"\n}\n";
+    const std::string message = errorMessage(
+        [&] { (void)importLevel(b.write("badmodel", "badmodel"), withoutGame("badmodel")); });
+    EXPECT_NE(message.find("trigger_hurt has model '*7'; expected *1 .. *1"), std::string::npos)
+        << message;
+}
+
+TEST(Quake3Collision, TheSectionsRoundTripThroughAPackage) {
+    SourceLevel source =
+        importLevel(mapWithCollision().write("roundtrip", "roundtrip"), withoutGame("roundtrip"));
+    const CompiledLevel level = compileLevel(source, CompileOptions{}).level;
+    const package::PackageContents read =
+        package::parsePackage(package::serializePackage(level), "roundtrip.olpak");
+    const LevelCollision& c = read.level.collision;
+    ASSERT_EQ(c.brushes.size(), source.collision.brushes.size());
+    EXPECT_EQ(c.sidePlanes, source.collision.sidePlanes);
+    for (size_t p = 0; p < c.planes.size(); ++p) {
+        EXPECT_EQ(c.planes[p].normal, source.collision.planes[p].normal);
+        EXPECT_EQ(c.planes[p].distance, source.collision.planes[p].distance);
+    }
+    ASSERT_EQ(c.triggers.size(), 3u);
+    EXPECT_EQ(c.triggers[1].target, source.collision.triggers[1].target);
+    EXPECT_TRUE(read.bakedSections.empty()) << "decoded into the level, not kept raw";
+}
+
+// A hostile package: the strict reader refuses every bad index and non-finite number.
+TEST(Quake3Collision, TheSectionReaderRefusesBadIndicesAndNonFinitePlanes) {
+    LevelCollision good;
+    good.planes = {{{0, 1, 0}, 0.0f}, {{1, 0, 0}, 2.0f}};
+    good.sidePlanes = {0, 1};
+    good.brushes = {{0, 2, kContentsSolid}};
+    Trigger t;
+    t.kind = TriggerKind::kTeleport;
+    t.boundsMax = glm::vec3(1.0f);
+    good.triggers = {t};
+    const auto decodeError = [](const std::vector<package::RawSection>& s) {
+        return errorMessage(
+            [&] { (void)package::decodeCollisionSections(&s[0], &s[1], "hostile.olpak"); });
+    };
+    EXPECT_EQ(decodeError(package::encodeCollisionSections(good)), "");
+    const auto expectRefused = [&](const LevelCollision& bad, const std::string& expected) {
+        const std::string message = decodeError(package::encodeCollisionSections(bad));
+        EXPECT_NE(message.find(expected), std::string::npos) << message;
+    };
+    LevelCollision bad = good;
+    bad.sidePlanes[1] = 2;
+    expectRefused(bad, "hostile.olpak: section collision: side 1 has plane 2; expected < 2");
+    bad = good;
+    bad.brushes[0].sideCount = 3;
+    expectRefused(bad, "brush 0 has sides 0 + 3");
+    bad = good;
+    bad.brushes[0].contents = 0x20;
+    expectRefused(bad, "brush 0 has contents 32");
+    for (const float nonFinite : {std::nanf(""), INFINITY}) {
+        bad = good;
+        bad.planes[1].distance = nonFinite;
+        expectRefused(bad, "plane 1 is NaN or Inf");
+        bad = good;
+        bad.triggers[0].target.x = nonFinite;
+        expectRefused(bad, "section triggers: trigger 0 is NaN or Inf");
+    }
+    bad = good;
+    bad.planes[0].normal = glm::vec3(0, 2, 0);
+    expectRefused(bad, "plane 0 has a normal of length 2");
+    bad = good;
+    bad.triggers[0].kind = TriggerKind(9);
+    expectRefused(bad, "trigger 0 has kind 9");
+    // A header whose counts overrun the section.
+    std::vector<package::RawSection> s = package::encodeCollisionSections(good);
+    s[0].bytes[8] = 200;  // brushCount
+    EXPECT_NE(decodeError(s).find("bytes; expected"), std::string::npos) << decodeError(s);
+}
+
 }  // namespace onelight::world::q3

@@ -214,6 +214,7 @@ CompileResult compileLevel(const SourceLevel& source, const CompileOptions& opti
     level.dynamicIndices = std::move(split.dynamicIndices);
     level.dynamicMeshes = std::move(split.dynamicMeshes);
     level.entities = std::move(split.entities);
+    level.collision = source.collision;  // already in metres, Y up
 
     LevelSettings& settings = level.settings;
     settings.exposureEv100 = source.exposureEv100;

@@ -67,7 +67,11 @@ enum SectionId : uint32_t {
     kSectionProcessedTextures = 38,
     kSectionErrorBudget = 39,  // DiskErrorBudget[1]: what --error-budget left out, and why
     kSectionShardRange = 40,   // DiskShardRange[1]: what an unmerged part of a sharded bake holds
-    kSectionIdLimit = 48,      // ids at or above this are invalid
+    // The player's collision (written by `compile` for a Quake 3 map, absent for glTF levels;
+    // decoded into CompiledLevel::collision by the reader, never kept raw).
+    kSectionCollision = 41,  // uint8_t[]: DiskCollisionHeader, planes, side planes, brushes
+    kSectionTriggers = 42,   // DiskTrigger[]: jump pads, teleporters, hurt volumes
+    kSectionIdLimit = 48,    // ids at or above this are invalid
 };
 
 struct FileHeader {
@@ -530,5 +534,55 @@ struct DiskShardRange {
     uint64_t reserved;  // 0
 };
 static_assert(sizeof(DiskShardRange) == 64);
+
+// ---------------------------------------------------------------------------------------------
+// Collision (ids 41 and 42, optional, written by `compile` from a Quake 3 map's brushes and
+// trigger entities; world/collision.hpp in memory, package/collision_section.hpp reads them).
+// Metres, Y up, as the rest of the level.
+//
+// kSectionCollision: uint8_t[]: one DiskCollisionHeader, then
+//   DiskCollisionPlane planes[planeCount]
+//   uint32_t sidePlanes[sideCount]        each < planeCount
+//   DiskCollisionBrush brushes[brushCount] their [firstSide, firstSide + sideCount) inside
+//                                          sidePlanes
+// and nothing else: the section is exactly that size.
+// kSectionTriggers: DiskTrigger[]; elementSize == sizeof(DiskTrigger).
+
+inline constexpr uint32_t kMaxCollisionPlanes = 1u << 22;  // each count, a bound on hostile input
+inline constexpr uint32_t kMaxCollisionSides = 1u << 24;
+inline constexpr uint32_t kMaxCollisionBrushes = 1u << 22;
+inline constexpr uint32_t kMaxTriggers = 1u << 16;
+
+struct DiskCollisionHeader {
+    uint32_t planeCount;  // <= kMaxCollisionPlanes
+    uint32_t sideCount;   // <= kMaxCollisionSides
+    uint32_t brushCount;  // <= kMaxCollisionBrushes
+    uint32_t reserved;    // 0
+};
+static_assert(sizeof(DiskCollisionHeader) == 16);
+
+struct DiskCollisionPlane {
+    float normal[3];  // unit (length within 1e-3 of 1), finite
+    float distance;   // metres, finite: dot(normal, p) == distance on the plane
+};
+static_assert(sizeof(DiskCollisionPlane) == 16);
+
+struct DiskCollisionBrush {
+    uint32_t firstSide;  // into the side planes
+    uint32_t sideCount;  // >= 1; firstSide + sideCount <= sideCount of the header
+    uint32_t contents;   // world::kContentsSolid | world::kContentsPlayerClip, no other bit, != 0
+    uint32_t reserved;   // 0
+};
+static_assert(sizeof(DiskCollisionBrush) == 16);
+
+struct DiskTrigger {
+    uint32_t kind;       // world::TriggerKind: 1 push, 2 teleport, 3 hurt
+    float boundsMin[3];  // metres, world, finite
+    float boundsMax[3];  // metres, world, finite, >= boundsMin
+    float target[3];     // metres, world, finite: push, the apex; teleport, the feet; hurt, 0
+    float targetYaw;     // teleport: radians about +y (0 looks down -z), finite; else 0
+    uint32_t reserved;   // 0
+};
+static_assert(sizeof(DiskTrigger) == 48);
 
 }  // namespace onelight::package

@@ -9,6 +9,7 @@
 
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/package/collision_section.hpp"
 #include "world/package/crc32.hpp"
 #include "world/package/format.hpp"
 #include "world/package/records.hpp"
@@ -589,6 +590,17 @@ PackageContents parsePackage(std::span<const uint8_t> bytes, const std::string& 
     PackageContents contents;
     try {
         Reader(bytes, name).read(contents);
+        // The collision sections belong to the level: decoded, not kept raw.
+        const RawSection* brushes = nullptr;
+        const RawSection* triggers = nullptr;
+        for (const RawSection& raw : contents.bakedSections) {
+            if (raw.id == kSectionCollision) brushes = &raw;
+            if (raw.id == kSectionTriggers) triggers = &raw;
+        }
+        contents.level.collision = decodeCollisionSections(brushes, triggers, name);
+        std::erase_if(contents.bakedSections, [](const RawSection& raw) {
+            return raw.id == kSectionCollision || raw.id == kSectionTriggers;
+        });
     } catch (const std::bad_alloc&) {
         throw world::Error(name + ": out of memory while reading");
     }

@@ -9,6 +9,7 @@
 #include "world/error.hpp"
 #include "world/file_read.hpp"
 #include "world/images/image_decode.hpp"
+#include "world/package/collision_section.hpp"
 #include "world/package/crc32.hpp"
 #include "world/package/format.hpp"
 #include "world/package/package_reader.hpp"
@@ -107,7 +108,11 @@ std::vector<uint8_t> serializePackage(const world::CompiledLevel& level,
     std::vector<Placed> order;
     for (uint32_t id = 0; id < kCoreSectionCount; ++id)
         order.push_back({id, &sections[id], nullptr});
-    for (const RawSection& raw : bakedSections) order.push_back({raw.id, nullptr, &raw});
+    const std::vector<RawSection> collision = encodeCollisionSections(level.collision);
+    for (const RawSection& raw : collision) order.push_back({raw.id, nullptr, &raw});
+    for (const RawSection& raw : bakedSections)
+        if (raw.id != kSectionCollision && raw.id != kSectionTriggers)  // the level's own above
+            order.push_back({raw.id, nullptr, &raw});
 
     const uint64_t tableEnd = sizeof(FileHeader) + order.size() * sizeof(SectionEntry);
     std::vector<SectionEntry> table(order.size());

@@ -84,6 +84,45 @@ void checkSurface(const BspFile& bsp, size_t s, const std::string& where) {
     }
 }
 
+void checkIndex(const std::string& place, const char* what, int32_t index, size_t size,
+                const char* lump) {
+    if (index < 0 || size_t(index) >= size)
+        throw Error(place + ": " + what + " " + std::to_string(index) + " of " +
+                    std::to_string(size) + "; expected an index into the " + lump);
+}
+
+// The collision lumps: planes finite, every brush side's plane and shader, every brush's side
+// range and shader, every model's brush range and bounds.
+void checkBrushes(const BspFile& bsp, const std::string& where) {
+    for (size_t p = 0; p < bsp.planes.size(); ++p) {
+        const BspBrushPlane& plane = bsp.planes[p];
+        for (float c : {plane.normal[0], plane.normal[1], plane.normal[2], plane.dist})
+            if (!std::isfinite(c))
+                throw Error(where + ": plane " + std::to_string(p) +
+                            " is NaN or Inf; expected finite numbers");
+    }
+    for (size_t s = 0; s < bsp.brushSides.size(); ++s) {
+        const std::string place = where + ": brush side " + std::to_string(s);
+        checkIndex(place, "plane", bsp.brushSides[s].plane, bsp.planes.size(), "planes");
+        checkIndex(place, "shader", bsp.brushSides[s].shader, bsp.shaders.size(), "shaders");
+    }
+    for (size_t b = 0; b < bsp.brushes.size(); ++b) {
+        const std::string place = where + ": brush " + std::to_string(b);
+        checkRange(place, "sides", bsp.brushes[b].firstSide, bsp.brushes[b].sideCount,
+                   bsp.brushSides.size(), "brush sides");
+        checkIndex(place, "shader", bsp.brushes[b].shader, bsp.shaders.size(), "shaders");
+    }
+    for (size_t m = 0; m < bsp.models.size(); ++m) {
+        const BspModel& model = bsp.models[m];
+        const std::string place = where + ": model " + std::to_string(m);
+        checkRange(place, "brushes", model.firstBrush, model.brushCount, bsp.brushes.size(),
+                   "brushes");
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(model.mins[k]) || !std::isfinite(model.maxs[k]))
+                throw Error(place + ": bounds are NaN or Inf; expected finite numbers");
+    }
+}
+
 }  // namespace
 
 std::string shaderName(const BspShader& shader) {
@@ -110,6 +149,10 @@ BspFile parseBsp(std::span<const uint8_t> bytes, const std::string& where) {
     bsp.indices = readLump<int32_t>(bytes, header, kLumpDrawIndexes, where);
     bsp.surfaces = readLump<BspSurface>(bytes, header, kLumpSurfaces, where);
     bsp.lightmaps = readLump<uint8_t>(bytes, header, kLumpLightmaps, where);
+    bsp.planes = readLump<BspBrushPlane>(bytes, header, kLumpPlanes, where);
+    bsp.models = readLump<BspModel>(bytes, header, kLumpModels, where);
+    bsp.brushes = readLump<BspBrush>(bytes, header, kLumpBrushes, where);
+    bsp.brushSides = readLump<BspBrushSide>(bytes, header, kLumpBrushSides, where);
     if (bsp.lightmaps.size() % kLightmapPageBytes != 0)
         throw Error(where + ": lump 14 (lightmaps) holds " + std::to_string(bsp.lightmaps.size()) +
                     " bytes; expected whole pages of " + std::to_string(kLightmapPageBytes) +
@@ -123,6 +166,7 @@ BspFile parseBsp(std::span<const uint8_t> bytes, const std::string& where) {
                             " is NaN or Inf; expected finite numbers");
     }
     for (size_t s = 0; s < bsp.surfaces.size(); ++s) checkSurface(bsp, s, where);
+    checkBrushes(bsp, where);
     return bsp;
 }
 

@@ -1,7 +1,8 @@
 // A Quake 3 BSP read from its bytes and checked: every lump inside the file and a whole number
 // of records, every surface's shader, vertex and index ranges inside their lumps, every index
-// inside its surface, patch grids odd-sized and complete, positions finite. Only the lumps the
-// importer uses are kept (bsp_format.hpp).
+// inside its surface, patch grids odd-sized and complete, positions finite; every brush's
+// side range, shader and planes, every model's brush range, planes and bounds finite. Only the
+// lumps the importer uses are kept (bsp_format.hpp).
 #pragma once
 
 #include <cstdint>
@@ -19,7 +20,11 @@ struct BspFile {
     std::vector<BspVertex> vertices;
     std::vector<int32_t> indices;  // relative to their surface's firstVertex
     std::vector<BspSurface> surfaces;
-    std::vector<uint8_t> lightmaps;  // whole pages (bsp_format.hpp kLightmapPageBytes each)
+    std::vector<uint8_t> lightmaps;        // whole pages (bsp_format.hpp kLightmapPageBytes each)
+    std::vector<BspBrushPlane> planes;     // finite
+    std::vector<BspModel> models;          // brush ranges inside brushes, bounds finite
+    std::vector<BspBrush> brushes;         // side ranges inside brushSides, shaders valid
+    std::vector<BspBrushSide> brushSides;  // planes and shaders valid
 };
 
 /// Throws world::Error naming `where` (the file), the lump or surface, and what was expected.

@@ -59,7 +59,42 @@ inline constexpr int32_t kSurfSky = 0x4;      // SURF_SKY: the sky, drawn as the
 inline constexpr int32_t kSurfHint = 0x100;   // SURF_HINT
 inline constexpr int32_t kSurfSkip = 0x200;   // SURF_SKIP
 /// Content flags the importer reads.
-inline constexpr int32_t kContentsFog = 0x40;  // CONTENTS_FOG: a fog volume's faces
+inline constexpr int32_t kContentsSolid = 0x1;           // CONTENTS_SOLID
+inline constexpr int32_t kContentsLava = 0x8;            // CONTENTS_LAVA
+inline constexpr int32_t kContentsSlime = 0x10;          // CONTENTS_SLIME
+inline constexpr int32_t kContentsWater = 0x20;          // CONTENTS_WATER
+inline constexpr int32_t kContentsFog = 0x40;            // CONTENTS_FOG: a fog volume's faces
+inline constexpr int32_t kContentsPlayerClip = 0x10000;  // CONTENTS_PLAYERCLIP: clip brushes
+inline constexpr int32_t kContentsTrigger = 0x40000000;  // CONTENTS_TRIGGER
+
+/// A plane (qfiles.h dplane_t), in map units, Z up: dot(normal, p) == dist on it.
+struct BspBrushPlane {
+    float normal[3];
+    float dist;
+};
+static_assert(sizeof(BspBrushPlane) == 16);
+
+/// A brush model (qfiles.h dmodel_t): model 0 is the world, model N is "*N" of an entity.
+struct BspModel {
+    float mins[3], maxs[3];  // map units, Z up
+    int32_t firstSurface, surfaceCount;
+    int32_t firstBrush, brushCount;
+};
+static_assert(sizeof(BspModel) == 40);
+
+/// A convex brush (qfiles.h dbrush_t): the intersection of its sides' back half-spaces.
+struct BspBrush {
+    int32_t firstSide, sideCount;  // into the brush side lump
+    int32_t shader;                // into the shader lump: its contentFlags are the brush's
+};
+static_assert(sizeof(BspBrush) == 12);
+
+/// A brush side (qfiles.h dbrushside_t).
+struct BspBrushSide {
+    int32_t plane;   // into the plane lump
+    int32_t shader;  // into the shader lump
+};
+static_assert(sizeof(BspBrushSide) == 8);
 
 /// The lightmap lump: pages of kLightmapPageSize^2 RGB8 texels, row-major (q3map2's light as
 /// bytes: clamped to 255 keeping the hue).

@@ -16,7 +16,9 @@
 #include "world/images/image_decode.hpp"
 #include "world/import/level_limits.hpp"
 #include "world/import/q3/bsp_file.hpp"
+#include "world/import/q3/collision_import.hpp"
 #include "world/import/q3/entity_lump.hpp"
+#include "world/import/q3/map_axes.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/shader_script.hpp"
@@ -26,18 +28,6 @@ namespace onelight::world {
 namespace {
 
 using namespace q3;
-
-glm::vec3 levelPoint(const float p[3]) {
-    const double s = kQuake3MetresPerUnit;
-    return glm::vec3(float(double(p[0]) * s), float(double(p[2]) * s), float(-double(p[1]) * s));
-}
-glm::vec3 levelPoint(glm::vec3 p) {
-    const float q[3] = {p.x, p.y, p.z};
-    return levelPoint(q);
-}
-glm::vec3 levelDirection(const float n[3]) {
-    return glm::vec3(n[0], n[2], -n[1]);
-}
 
 bool endsWith(const std::string& s, const std::string& end) {
     return s.size() >= end.size() && fileKey(s.substr(s.size() - end.size())) == end;
@@ -558,6 +548,12 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     if (!(luxelUnits > 0.0f)) throw Error(map.where + ": worldspawn's _lightmapscale is not > 0");
     level.texelsPerMetre = float(1.0 / (double(luxelUnits) * kQuake3MetresPerUnit));
     addSpawns(level, entities, map.where);
+    std::vector<bool> nonsolid;  // surfaceparm nonsolid, which the brushes' contents may miss
+    for (const BspShader& shader : bsp.shaders) {
+        const ShaderScript* script = scriptOf(scripts, shader);
+        nonsolid.push_back(script && script->surfaceParms.count("nonsolid"));
+    }
+    level.collision = importCollision(bsp, entities, nonsolid, map.where, level.importNotes);
     addLights(level, entities, map.where);
     noteIgnoredAmbient(level, entities, map.where);
     chooseLightRoles(level, options.primaryLights);
