@@ -17,6 +17,7 @@
 #include "bake/report/interrupt.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/file_write.hpp"
 #include "world/import/level_import.hpp"
 #include "world/package/package_writer.hpp"
 
@@ -180,7 +181,7 @@ void writeBakedPackage(const BakeCommandLine& line, const world::CompiledLevel& 
     if (!line.reportPath.empty()) writeReport(line.reportPath, report);
     // The package last, and whole: an interrupt from here on is ignored (interrupt.hpp).
     ignoreInterrupts();
-    package::writeFileAtomically(line.output, bytes);
+    world::writeFileAtomically(line.output, bytes);
     std::printf("baked %s (%zu bytes, quality %s%s)\n", line.output.c_str(), bytes.size(),
                 qualityName(options.quality),
                 options.shardCount > 1 ? (", shard " + std::to_string(options.shardIndex) + "/" +

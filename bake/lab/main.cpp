@@ -24,6 +24,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "level_report.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::lab {
 namespace {
@@ -191,7 +192,7 @@ int sheetCommand(int argc, char** argv) {
 // of one size (block_error.hpp), as "error=E blocks=N worst=W" on stdout.
 int frameErrorCommand(int argc, char** argv) {
     if (argc != 4) throw std::invalid_argument("expected two EXR files: FRAME.exr REFERENCE.exr");
-    const BlockErrors e = blockErrors(capture::readExr(argv[2]), capture::readExr(argv[3]));
+    const BlockErrors e = blockErrors(world::readExrFile(argv[2]), world::readExrFile(argv[3]));
     double worst = 0.0;
     for (double v : e.relative) worst = std::max(worst, v);
     std::printf("error=%.6f blocks=%zu worst=%.6f\n", e.mean, e.relative.size(), worst);

@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "capture/capture.hpp"
 #include "process.hpp"
 #include "test_scene.hpp"
+#include "world/images/image_decode.hpp"
 
 namespace {
 
@@ -52,8 +52,8 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
     const test::ProcessResult h = test::runProcess(ONELIGHT_ONELIGHT_PATH, headless);
     ASSERT_EQ(h.exitCode, 0) << h.stderrText;
 
-    const world::DecodedImage windowShot = capture::readPng(dir + "/windowed_window.png");
-    const world::DecodedImage headlessShot = capture::readPng(dir + "/headless.png");
+    const world::DecodedImage windowShot = world::readImageFile(dir + "/windowed_window.png");
+    const world::DecodedImage headlessShot = world::readImageFile(dir + "/headless.png");
     ASSERT_EQ(windowShot.width, headlessShot.width);
     ASSERT_EQ(windowShot.height, headlessShot.height);
     const std::vector<uint8_t>& screenshot = windowShot.rgba;
@@ -96,9 +96,9 @@ TEST(RenderWindow, RenderScaleDrawsSmallerAndScalesUp) {
         ONELIGHT_ONELIGHT_PATH, {dir + "/level.olpak", "--size", "160x90", "--camera", camera,
                                  "--headless", "--capture", dir + "/headless"});
     ASSERT_EQ(h.exitCode, 0) << h.stderrText;
-    const world::DecodedImage window = capture::readPng(dir + "/windowed_window.png");
-    const world::DecodedImage frame = capture::readPng(dir + "/windowed.png");
-    const world::DecodedImage small = capture::readPng(dir + "/headless.png");
+    const world::DecodedImage window = world::readImageFile(dir + "/windowed_window.png");
+    const world::DecodedImage frame = world::readImageFile(dir + "/windowed.png");
+    const world::DecodedImage small = world::readImageFile(dir + "/headless.png");
     ASSERT_EQ(window.width, 320u);
     ASSERT_EQ(window.height, 180u);
     EXPECT_EQ(frame.width, 160u) << "the captured frame is the renderer's, at the render scale";
