@@ -36,10 +36,12 @@ struct ImportedLightmap {
         glm::vec3 vertexLight[3];  // the light at the corners, used when page is kNoIndex
         uint32_t page = kNoIndex;  // into pages
     };
-    std::string producer;        // who baked it ("q3map2"); empty: none
-    uint32_t pageSize = 0;       // texels per side of a page
-    std::vector<uint8_t> pages;  // RGB8, pageSize^2 per page, row-major
-    float luxPerValue = 1.0f;    // irradiance of one unit of a page or vertex light value
+    std::string producer;                 // who baked it ("q3map2"); empty: none
+    uint32_t pageSize = 0;                // texels per side of a page
+    std::vector<uint8_t> pages;           // RGB8, pageSize^2 per page, row-major
+    std::vector<uint8_t> directionPages;  // q3map2 -deluxe: each page's light direction, same
+                                          // layout as pages; empty when the source has none
+    float luxPerValue = 1.0f;             // irradiance of one unit of a page or vertex light value
     std::vector<Triangle> triangles;
 };
 

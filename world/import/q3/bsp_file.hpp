@@ -1,7 +1,9 @@
 // A Quake 3 BSP read from its bytes and checked: every lump inside the file and a whole number
 // of records, every surface's shader, vertex and index ranges inside their lumps, every index
-// inside its surface, patch grids odd-sized and complete, positions finite. Only the lumps the
-// importer uses are kept (bsp_format.hpp).
+// inside its surface, patch grids odd-sized and complete, positions finite. Fields q3map2 leaves
+// unset (NaN lightmap coordinates on a surface without a lightmap page, anything on a vertex no
+// surface reads, NaN normals) are replaced, never refused (bsp_file.cpp checkVertices). Only the
+// lumps the importer uses are kept (bsp_format.hpp).
 #pragma once
 
 #include <cstdint>
@@ -20,6 +22,7 @@ struct BspFile {
     std::vector<int32_t> indices;  // relative to their surface's firstVertex
     std::vector<BspSurface> surfaces;
     std::vector<uint8_t> lightmaps;  // whole pages (bsp_format.hpp kLightmapPageBytes each)
+    std::vector<std::string> notes;  // what was replaced and how, one line each
 };
 
 /// Throws world::Error naming `where` (the file), the lump or surface, and what was expected.

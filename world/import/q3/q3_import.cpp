@@ -15,7 +15,10 @@
 #include "world/images/image_decode.hpp"
 #include "world/import/level_limits.hpp"
 #include "world/import/q3/bsp_file.hpp"
+#include "world/import/q3/computed_view.hpp"
 #include "world/import/q3/entity_lump.hpp"
+#include "world/import/q3/game_search_path.hpp"
+#include "world/import/q3/lightmap_pages.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/shader_script.hpp"
@@ -42,59 +45,10 @@ bool endsWith(const std::string& s, const std::string& end) {
     return s.size() >= end.size() && fileKey(s.substr(s.size() - end.size())) == end;
 }
 
-std::vector<uint8_t> readFile(const std::string& path) {
-    return readRegularFile(path, "a Quake 3 .bsp map");
-}
-
-// Every pk3 of `folders`, in name order (pak0 before pak1: later archives win).
-void addGameFolders(GameFiles& files, const std::vector<std::string>& folders) {
-    for (const std::string& folder : folders) {
-        std::vector<std::string> pk3s;
-        std::error_code ec;
-        for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
-            if (entry.is_regular_file() && endsWith(entry.path().string(), ".pk3"))
-                pk3s.push_back(entry.path().string());
-        std::sort(pk3s.begin(), pk3s.end());
-        for (const std::string& p : pk3s) files.add(p);
-    }
-}
-
-// The map's bytes and its name for messages, from a .bsp file, PAK.pk3:maps/X.bsp, or X.
+// The map's name for messages.
 struct MapSource {
-    std::vector<uint8_t> bytes;
     std::string where;
 };
-MapSource findMap(const std::string& spec, GameFiles& files,
-                  const std::vector<std::string>& folders) {
-    const size_t colon = fileKey(spec).find(".pk3:");
-    if (colon != std::string::npos) {
-        std::string pk3 = spec.substr(0, colon + 4);
-        const std::string inside = spec.substr(colon + 5);
-        // A bare pk3 name that is not here is looked for in the game folders
-        // (pak1-maps.pk3:maps/aggressor.bsp).
-        std::error_code ec;
-        if (!std::filesystem::exists(pk3, ec) && std::filesystem::path(pk3).is_relative())
-            for (const std::string& folder : folders)
-                if (std::filesystem::exists(std::filesystem::path(folder) / pk3, ec)) {
-                    pk3 = (std::filesystem::path(folder) / pk3).string();
-                    break;
-                }
-        files.add(pk3);
-        const Pk3Archive& archive = *files.archives.back();
-        for (const std::string& n : archive.names())
-            if (fileKey(n) == fileKey(inside)) return {archive.read(n), pk3 + ":" + n};
-        throw Error(spec + ": " + pk3 + " holds no '" + inside + "'");
-    }
-    if (endsWith(spec, ".bsp")) return {readFile(spec), spec};
-    const std::string name = "maps/" + spec + ".bsp";
-    if (auto bytes = files.read(name)) return {std::move(*bytes), files.where(name)};
-    std::string searched;
-    for (const std::string& f : folders) searched += (searched.empty() ? "" : ", ") + f;
-    throw Error(spec + ": no map of that name (maps/" + spec + ".bsp) in the pk3s of " +
-                (searched.empty() ? std::string("no game folder (install openarena-data and "
-                                                "openarena-081-maps)")
-                                  : searched));
-}
 
 // The game's shader scripts by name (lower case); the first definition of a name wins, as in
 // the game.
@@ -130,9 +84,9 @@ bool drawn(const BspShader& shader, const ShaderScript* script) {
     return true;
 }
 
-// The image path without a .tga or .jpg extension.
+// The image path without a .tga, .png or .jpg extension.
 std::string withoutImageExtension(std::string name) {
-    for (const char* ext : {".tga", ".jpg"})
+    for (const char* ext : {".tga", ".png", ".jpg"})
         if (endsWith(name, ext)) name = name.substr(0, name.size() - 4);
     return name;
 }
@@ -142,7 +96,7 @@ std::string withoutImageExtension(std::string name) {
 // scaled to a brightest channel of 1 (normalisedColour).
 glm::vec3 meanLinearColour(const GameFiles& files, const std::string& name) {
     const std::string base = withoutImageExtension(name);
-    for (const char* ext : {".tga", ".jpg"}) {
+    for (const char* ext : {".tga", ".png", ".jpg"}) {
         const std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
         if (!bytes) continue;
         const DecodedImage pixels =
@@ -187,7 +141,8 @@ struct MaterialTable {
         if (known != textureByImage.end()) return known->second;
         uint32_t index = kNoIndex;
         for (const auto& [ext, mime] :
-             {std::pair{".tga", "image/x-tga"}, std::pair{".jpg", "image/jpeg"}}) {
+             {std::pair{".tga", "image/x-tga"}, std::pair{".png", "image/png"},
+              std::pair{".jpg", "image/jpeg"}}) {
             std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
             if (!bytes) continue;
             Image image;
@@ -310,13 +265,27 @@ void appendOriented(MeshInstance& mesh, const std::vector<Vertex>& vertices,
     }
 }
 
+// A player spawn's class: info_player_deathmatch and info_player_start; a map without those
+// (team games, races: Nexuiz's info_player_team1, info_player_race, OpenArena's
+// team_CTF_redspawn) has the other player starts instead, the intermission camera excepted.
+bool deathmatchSpawn(const std::string& type) {
+    return type == "info_player_deathmatch" || type == "info_player_start";
+}
+bool otherSpawn(const std::string& type) {
+    const std::string key = fileKey(type);
+    return (key.rfind("info_player_", 0) == 0 && key != "info_player_intermission") ||
+           key == "team_ctf_redspawn" || key == "team_ctf_bluespawn";
+}
+
 // Player spawns, with a camera at each one's eyes looking along its "angle".
 void addSpawns(SourceLevel& level, const std::vector<MapEntity>& entities,
                const std::string& where) {
+    bool deathmatch = false;
+    for (const MapEntity& e : entities) deathmatch |= deathmatchSpawn(e.get("classname"));
     uint32_t n = 0;
     for (const MapEntity& e : entities) {
         const std::string type = e.get("classname");
-        if (type != "info_player_deathmatch" && type != "info_player_start") continue;
+        if (deathmatch ? !deathmatchSpawn(type) : !otherSpawn(type)) continue;
         const glm::vec3 origin = vectorKey(e, "origin", glm::vec3(0.0f), where);
         const float yaw = numberKey(e, "angle", 0.0f, where);  // degrees about Z from +X
         // Quake's heading (cos, sin, 0) is (cos, 0, -sin) here: a turn about +Y of yaw - 90
@@ -393,6 +362,38 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
             where + ": " + std::to_string(linear) +
             " light(s) with q3map2's linear falloff approximated by inverse-square lights with a "
             "range, equal to q3map2 at half their reach");
+}
+
+// A map without a player spawn gets one where its geometry says (computed_view.hpp).
+void addComputedSpawn(SourceLevel& level, const std::string& where) {
+    if (!level.cameras.empty()) return;
+    const std::optional<ComputedView> view = computeViewInside(level);
+    if (!view) {
+        level.importNotes.push_back(where +
+                                    ": no player spawn, and no open space inside the level found "
+                                    "for a view: the game frames the level from outside");
+        return;
+    }
+    Entity spawn;
+    spawn.name = "spawn0";
+    spawn.flags = kEntitySpawn;
+    spawn.position = view->feet;
+    spawn.rotation = view->rotation;
+    level.entities.push_back(spawn);
+    Camera camera;
+    camera.name = spawn.name;
+    camera.position = view->eye;
+    camera.rotation = view->rotation;
+    camera.yfov = glm::radians(73.74f);
+    level.cameras.push_back(camera);
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  ": no player spawn: a view computed from the level's bounds, eyes at (%.1f, "
+                  "%.1f, %.1f) m looking along %s%s",
+                  double(view->eye.x), double(view->eye.y), double(view->eye.z),
+                  view->forward.x + view->forward.z > 0.0f ? "+" : "-",
+                  view->forward.x != 0.0f ? "X" : "Z");
+    level.importNotes.push_back(where + text);
 }
 
 // Worldspawn's constant light (q3_import.hpp): reported, not modelled.
@@ -495,18 +496,23 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     if (options.patchLevel < 1 || options.patchLevel > 64)
         throw Error(spec + ": patch level " + std::to_string(options.patchLevel) +
                     "; expected 1 .. 64 segments");
-    const std::vector<std::string> folders =
-        options.gameFolders.empty() ? defaultQuake3Folders() : options.gameFolders;
-    GameFiles files;
-    addGameFolders(files, folders);
-    const MapSource map = findMap(spec, files, folders);
-    const BspFile bsp = parseBsp(map.bytes, map.where);
+    OpenedMap opened = openQuake3Map(spec, options.gameFolders);
+    const GameFiles& files = opened.files;
+    const BspFile& bsp = opened.bsp;
+    const MapSource map{opened.where};
 
     SourceLevel level;
     level.sourcePath = map.where;
-    if (endsWith(spec, ".bsp") && fileKey(spec).find(".pk3:") == std::string::npos)
-        level.inputFiles.push_back(spec);
+    if (!opened.bspFile.empty()) level.inputFiles.push_back(opened.bspFile);
     for (const auto& archive : files.archives) level.inputFiles.push_back(archive->path());
+    level.inputFiles.insert(level.inputFiles.end(), files.looseFiles.begin(),
+                            files.looseFiles.end());
+    level.importNotes = bsp.notes;
+    const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
+    const LightmapPages lightmaps =
+        readLightmapPages(bsp, entities, files, opened.name, opened.bspFile, map.where);
+    level.importNotes.insert(level.importNotes.end(), lightmaps.notes.begin(),
+                             lightmaps.notes.end());
     const ShaderScripts scripts = loadShaderScripts(files);
     MaterialTable materials{level, files, {}, {}, 0};
     std::map<uint32_t, MeshInstance> meshes;  // by material
@@ -537,7 +543,9 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         std::vector<Vertex> vertices;
         for (const PatchPoint& p : points) vertices.push_back(levelVertex(p));
         appendOriented(mesh, vertices, triangles);
-        appendImportedLight(level.importedLightmap, points, triangles, f.lightmap);
+        const uint32_t page = lightmaps.colourPage(f.lightmap);
+        appendImportedLight(level.importedLightmap, points, triangles,
+                            page == UINT32_MAX ? -1 : int32_t(page));
     }
     for (auto& [material, mesh] : meshes) {
         mesh.material = material;
@@ -545,11 +553,11 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         level.instances.push_back(std::move(mesh));
     }
     level.importedLightmap.producer = "q3map2";
-    level.importedLightmap.pageSize = kLightmapPageSize;
-    level.importedLightmap.pages = bsp.lightmaps;
+    level.importedLightmap.pageSize = lightmaps.pageSize;
+    level.importedLightmap.pages = lightmaps.colour;
+    level.importedLightmap.directionPages = lightmaps.direction;
     level.importedLightmap.luxPerValue = 1.0f;  // one lightmap unit is one lux (q3_import.hpp)
     addSunAndSky(level, bsp, scripts, files);
-    const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
     // q3map2's lightmap density: one luxel per 16 units, times worldspawn's _lightmapscale.
     const float luxelUnits =
         16.0f *
@@ -557,6 +565,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     if (!(luxelUnits > 0.0f)) throw Error(map.where + ": worldspawn's _lightmapscale is not > 0");
     level.texelsPerMetre = float(1.0 / (double(luxelUnits) * kQuake3MetresPerUnit));
     addSpawns(level, entities, map.where);
+    addComputedSpawn(level, map.where);
     addLights(level, entities, map.where);
     noteIgnoredAmbient(level, entities, map.where);
     chooseLightRoles(level, options.primaryLights);

@@ -1,6 +1,8 @@
-// Quake 3 / OpenArena maps as levels: a map named as a .bsp file, as PAK.pk3:maps/NAME.bsp, or
-// as NAME alone (searched in the installed game's pk3s) is read into the same SourceLevel as a
-// glTF, with its textures and shader scripts from the game's pk3s.
+// Quake 3 / OpenArena / Nexuiz maps as levels: a map named as a .bsp file, as
+// PAK.pk3:maps/NAME.bsp, or as NAME alone (searched in the installed games) is read into the same
+// SourceLevel as a glTF, with its textures, shader scripts and external lightmaps from its game's
+// search path (game_search_path.hpp), q3map2's lightmaps wherever q3map2 left them
+// (lightmap_pages.hpp), and a computed view when it has no player spawn (computed_view.hpp).
 #pragma once
 
 #include <cstdint>
@@ -58,7 +60,9 @@ inline constexpr double kQuake3LinearScale = 7500.0 / 8000.0;  // q3map2's point
 struct Quake3Options {
     uint32_t patchLevel = 4;     // segments per patch piece and direction, 1 .. 64
     uint32_t primaryLights = 8;  // at most this many primary candidates (q3_import.hpp, Lights)
-    std::vector<std::string> gameFolders;  // folders of pk3s; empty: the installed OpenArena's
+    std::vector<std::string> gameFolders;  // the game's folders (pk3s and loose files, later
+                                           // wins); empty: the installed game the map is in
+                                           // (game_search_path.hpp)
 };
 
 /// The installed OpenArena game data folders that exist (Debian's openarena-data and maps).
