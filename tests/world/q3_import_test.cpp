@@ -833,3 +833,36 @@ TEST(Quake3Spawns, AMapWithoutASpawnGetsAViewInsideItsBounds) {
 
 }  // namespace
 }  // namespace onelight::world::q3
+
+namespace onelight::world::q3 {
+namespace {
+
+// Installed maps beyond the four the bake tests use: OpenArena's oa_ctf2 has NaN lightmap
+// coordinates on vertex-lit surfaces; Nexuiz's bluesky keeps its textures in another pk3 and its
+// deluxe lightmaps in maps/bluesky/lm_000[0-3].tga (512 x 512).
+TEST(Quake3Maps, InstalledMapsWithUnsetFieldsAndExternalLightmapsImport) {
+    if (defaultQuake3Folders().empty())
+        GTEST_SKIP() << "OpenArena is not installed (openarena-081-maps)";
+    const SourceLevel ctf = importLevel("oa_ctf2");
+    EXPECT_FALSE(ctf.instances.empty());
+    if (!std::filesystem::exists("/usr/share/games/nexuiz/data/data.pk3"))
+        GTEST_SKIP() << "Nexuiz is not installed (nexuiz-data)";
+    const SourceLevel level = importLevel("bluesky");
+    EXPECT_NE(level.sourcePath.find("nexuiz/data/data.pk3:maps/bluesky.bsp"), std::string::npos)
+        << level.sourcePath;
+    size_t textured = 0;
+    for (const Material& m : level.materials) textured += m.baseColorTexture != kNoIndex;
+    std::printf("[ bluesky ] %zu materials (%zu textured), %zu spawns\n", level.materials.size(),
+                textured, level.cameras.size());
+    EXPECT_GE(textured * 10, level.materials.size() * 9);
+    const ImportedLightmap& l = level.importedLightmap;
+    EXPECT_EQ(l.pageSize, 512u);
+    EXPECT_EQ(l.pages.size(), 2u * 512u * 512u * 3u);
+    EXPECT_EQ(l.directionPages.size(), l.pages.size());
+    size_t paged = 0;
+    for (const ImportedLightmap::Triangle& t : l.triangles) paged += t.page != kNoIndex;
+    EXPECT_GT(paged * 10, l.triangles.size() * 9);
+}
+
+}  // namespace
+}  // namespace onelight::world::q3
