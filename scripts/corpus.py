@@ -8,7 +8,8 @@ exposure. Reports per map: OK, approximated (the import or bake warned: what it 
 left out) or refused (with the reason), compile and bake seconds, the bake's peak memory, the
 package's size, the frame's GPU time, and how the two frames' mean colours differ (luminance
 ratio, chromaticity distance in CIE xy). Writes a markdown table per game and a summary to OUT
-(atomically: a temporary file renamed over it), with a progress line per map on stderr. A map
+(atomically: a temporary file renamed over it, after every map, so that an interrupted run keeps
+what it measured), with a progress line per map on stderr. A map
 that fails is reported and the run carries on.
 
   scripts/corpus.py OUT.md [--games openarena,nexuiz] [--maps REGEX] [--limit N]
@@ -227,6 +228,9 @@ def write_atomically(path, text):
             f.write(text)
             f.flush()
             os.fsync(f.fileno())
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(temporary, 0o666 & ~mask)  # as open() would make it, not mkstemp's 0600
         os.replace(temporary, path)
     except BaseException:
         os.unlink(temporary)
@@ -273,16 +277,22 @@ def main():
                        "why": f"corpus script: {e}"}
             rows.append(row)
             counts[row["status"]] += 1
+            write_report(args, counts, sections + table(game, rows, shadowed), started,
+                         final=False)  # an interrupted run keeps what it measured
             print(f"corpus: {game} {i + 1}/{len(maps)} {name}: {row['status']}"
                   f" (compile {row.get('compile_s', 0):.1f} s, bake {row.get('bake_s', 0):.1f} s)"
                   + (f": {row['why'][:160]}" if row["why"] else ""), file=sys.stderr, flush=True)
         if maps or not os.path.isdir(folder):
             sections += table(game, rows, shadowed) if maps else [f"## {game}", "",
                                                                    f"{folder}: not installed", ""]
+    write_report(args, counts, sections, started, final=True)
+
+
+def write_report(args, counts, sections, started, final):
     total = sum(counts.values())
     head = ["# Quake 3 map corpus", "",
             f"`{' '.join(sys.argv)}`, {time.strftime('%Y-%m-%d')}, "
-            f"{time.monotonic() - started:.0f} s", "",
+            f"{time.monotonic() - started:.0f} s" + ("" if final else " (still running)"), "",
             f"**{total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "
             f"{counts['refused']} refused.**", "",
             "Columns: compile and draft-bake wall seconds; the bake report's peak memory; the "
@@ -291,9 +301,9 @@ def main():
             "camera at the same exposure, and the distance of their mean colours' CIE xy "
             "chromaticities. Approximated: the import or bake warned (notes).", ""]
     write_atomically(args.out, "\n".join(head + sections))
-    print(f"corpus: {total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "
-          f"{counts['refused']} refused; {args.out}", file=sys.stderr)
-
+    if final:
+        print(f"corpus: {total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "
+              f"{counts['refused']} refused; {args.out}", file=sys.stderr)
 
 if __name__ == "__main__":
     main()
