@@ -65,9 +65,15 @@ struct SourceLevel {
     uint32_t skyImage = kNoIndex;  // into images: an equirectangular Radiance .hdr sky
     bool hasGridBounds = false;
     glm::vec3 gridMin{0.0f}, gridMax{0.0f};
-    ImportedLightmap importedLightmap;     // the source's own bake, if it carries one
-    std::vector<std::string> importNotes;  // what the import approximated or ignored, one line
-                                           // each; the bake reports them as warnings
+    ImportedLightmap importedLightmap;      // the source's own bake, if it carries one
+    std::vector<std::string> importNotes;   // what the import approximated or ignored, one line
+                                            // each; the bake reports them as warnings
+    std::vector<std::string> lightSources;  // where each kind of light came from, one line each
+                                            // (a Quake 3 map's: entities, surface lights, sky)
+    std::string lightless;  // not empty: why nothing lights the level (a Quake 3 map without
+                            // any light source); the bake refuses it with this message
+    bool lightmapIsImported = false;  // the lightmaps are importedLightmap's, not baked: the
+                                      // source's lights are lost (q3_import.hpp)
 };
 
 }  // namespace onelight::world

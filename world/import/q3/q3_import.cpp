@@ -16,6 +16,7 @@
 #include "world/import/level_limits.hpp"
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/entity_lump.hpp"
+#include "world/import/q3/map_source.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/shader_script.hpp"
@@ -63,6 +64,7 @@ void addGameFolders(GameFiles& files, const std::vector<std::string>& folders) {
 struct MapSource {
     std::vector<uint8_t> bytes;
     std::string where;
+    const Pk3Archive* archive = nullptr;  // the pk3 that holds it, if one does
 };
 MapSource findMap(const std::string& spec, GameFiles& files,
                   const std::vector<std::string>& folders) {
@@ -82,12 +84,14 @@ MapSource findMap(const std::string& spec, GameFiles& files,
         files.add(pk3);
         const Pk3Archive& archive = *files.archives.back();
         for (const std::string& n : archive.names())
-            if (fileKey(n) == fileKey(inside)) return {archive.read(n), pk3 + ":" + n};
+            if (fileKey(n) == fileKey(inside)) return {archive.read(n), pk3 + ":" + n, &archive};
         throw Error(spec + ": " + pk3 + " holds no '" + inside + "'");
     }
     if (endsWith(spec, ".bsp")) return {readFile(spec), spec};
     const std::string name = "maps/" + spec + ".bsp";
-    if (auto bytes = files.read(name)) return {std::move(*bytes), files.where(name)};
+    if (auto bytes = files.read(name))
+        return {std::move(*bytes), files.where(name),
+                files.archives[files.files.at(fileKey(name)).first].get()};
     std::string searched;
     for (const std::string& f : folders) searched += (searched.empty() ? "" : ", ") + f;
     throw Error(spec + ": no map of that name (maps/" + spec + ".bsp) in the pk3s of " +
@@ -137,24 +141,33 @@ std::string withoutImageExtension(std::string name) {
     return name;
 }
 
-// The mean linear colour of the image `name` (.tga or .jpg, as textureOf finds it); white when
-// there is no such image. q3map2 lights a surface light with its light image's mean colour,
-// scaled to a brightest channel of 1 (normalisedColour).
-glm::vec3 meanLinearColour(const GameFiles& files, const std::string& name) {
+// The mean colour of the image `name` (.tga or .jpg, as textureOf finds it): of its bytes as
+// they are (q3map2's: it lights a surface light with that mean, display-referred, scaled to a
+// brightest channel of 1) and of its sRGB-decoded texels (what the engine's emissive texture
+// gives). White for both when there is no such image.
+struct ImageMeans {
+    glm::vec3 bytes{1.0f};   // mean byte / 255
+    glm::vec3 linear{1.0f};  // mean sRGB-decoded value
+};
+ImageMeans meanColours(const GameFiles& files, const std::string& name) {
     const std::string base = withoutImageExtension(name);
     for (const char* ext : {".tga", ".jpg"}) {
         const std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
         if (!bytes) continue;
         const DecodedImage pixels =
             decodeImage(bytes->data(), bytes->size(), files.where(base + ext));
-        glm::dvec3 sum(0.0);
+        if (pixels.rgba.empty()) return {};
+        glm::dvec3 sumBytes(0.0), sumLinear(0.0);
         for (size_t i = 0; i + 3 < pixels.rgba.size(); i += 4)
-            for (int c = 0; c < 3; ++c)
-                sum[c] += double(glsl::srgbDecode(float(pixels.rgba[i + size_t(c)]) / 255.0f));
-        return pixels.rgba.empty() ? glm::vec3(1.0f)
-                                   : glm::vec3(sum / double(pixels.rgba.size() / 4));
+            for (int c = 0; c < 3; ++c) {
+                const float v = float(pixels.rgba[i + size_t(c)]) / 255.0f;
+                sumBytes[c] += double(v);
+                sumLinear[c] += double(glsl::srgbDecode(v));
+            }
+        const double n = double(pixels.rgba.size() / 4);
+        return {glm::vec3(sumBytes / n), glm::vec3(sumLinear / n)};
     }
-    return glm::vec3(1.0f);
+    return {};
 }
 
 // `colour` scaled to a brightest channel of 1; white when it is black.
@@ -240,11 +253,16 @@ struct MaterialTable {
                 m.emissiveTexture =
                     script->lightImage.empty() ? kNoIndex : textureOf(script->lightImage);
                 if (m.emissiveTexture == kNoIndex) m.emissiveTexture = m.baseColorTexture;
-                const glm::vec3 mean = meanLinearColour(files, lightImageOf(*script));
-                const float peak = std::max({mean.x, mean.y, mean.z});
-                m.emissive =
-                    glm::vec3(float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) /
-                              (peak > 1e-6f ? peak : 1.0f));
+                // The factor makes the texture's mean emission q3map2's colour: its light
+                // image's mean bytes, normalised (q3_import.hpp, "Shaders").
+                const ImageMeans mean = meanColours(files, lightImageOf(*script));
+                const glm::vec3 colour = normalisedColour(mean.bytes);
+                for (int c = 0; c < 3; ++c)
+                    m.emissive[c] =
+                        mean.linear[c] > 1e-4f
+                            ? float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) *
+                                  colour[c] / mean.linear[c]
+                            : 0.0f;
             }
         }
         m.albedo = glm::vec3(m.baseColor);
@@ -407,6 +425,142 @@ void noteIgnoredAmbient(SourceLevel& level, const std::vector<MapEntity>& entiti
                                         "nowhere; the bake's bounces light what it stood in for");
 }
 
+// The map's source (.map) where one ships with it: maps/NAME.map or sources/maps/NAME.map in
+// the BSP's own pk3 first, then in any of the game's, or NAME.map beside a loose NAME.bsp.
+struct SourceText {
+    std::string text;
+    std::string where;
+};
+std::optional<SourceText> findMapSource(const MapSource& map, const GameFiles& files) {
+    std::string stem = map.where.substr(map.where.find_last_of("/:") + 1);
+    if (endsWith(stem, ".bsp")) stem = stem.substr(0, stem.size() - 4);
+    const std::vector<std::string> names = {"maps/" + stem + ".map",
+                                            "sources/maps/" + stem + ".map"};
+    const auto text = [](const std::vector<uint8_t>& bytes) {
+        return std::string(bytes.begin(), bytes.end());
+    };
+    if (map.archive) {
+        for (const std::string& wanted : names)
+            for (const std::string& n : map.archive->names())
+                if (fileKey(n) == fileKey(wanted))
+                    return SourceText{text(map.archive->read(n)), map.archive->path() + ":" + n};
+    } else {
+        std::error_code ec;
+        const std::filesystem::path beside =
+            std::filesystem::path(map.where).replace_extension(".map");
+        if (std::filesystem::is_regular_file(beside, ec))
+            return SourceText{text(readRegularFile(beside.string(), "a Quake 3 .map source")),
+                              beside.string()};
+    }
+    for (const std::string& wanted : names)
+        if (auto bytes = files.read(wanted)) return SourceText{text(*bytes), files.where(wanted)};
+    return std::nullopt;
+}
+
+// The level's geometry bounds, metres (empty: min > max).
+std::pair<glm::vec3, glm::vec3> geometryBounds(const SourceLevel& level) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const MeshInstance& mesh : level.instances)
+        for (const Vertex& v : mesh.vertices) {
+            lo = glm::min(lo, v.position);
+            hi = glm::max(hi, v.position);
+        }
+    return {lo, hi};
+}
+
+// The light entities of the map's source .map (q3_import.hpp, "Where the lights come from"),
+// added as if the BSP had kept them; lights outside the map's geometry (a source that does not
+// match the BSP) are left out. A source that does not parse is ignored with a note. Returns
+// how many lights it added; `where` is the source's name.
+size_t addSourceLights(SourceLevel& level, const MapSource& map, const GameFiles& files,
+                       std::string& where) {
+    std::optional<SourceText> source;
+    const size_t before = level.lights.size();
+    try {
+        source = findMapSource(map, files);
+        if (!source) return 0;
+        where = source->where;
+        addLights(level, parseMapSource(source->text, source->where), source->where);
+    } catch (const Error& e) {
+        level.lights.resize(before);
+        level.importNotes.push_back(std::string(e.what()) +
+                                    ": the map's source is ignored, its lights are not used");
+        return 0;
+    }
+    const auto [lo, hi] = geometryBounds(level);
+    const glm::vec3 margin(1.0f);
+    const auto outside = [&](const Light& l) {
+        return glm::any(glm::lessThan(l.position, lo - margin)) ||
+               glm::any(glm::greaterThan(l.position, hi + margin));
+    };
+    const auto kept =
+        std::remove_if(level.lights.begin() + long(before), level.lights.end(), outside);
+    const size_t dropped = size_t(level.lights.end() - kept);
+    level.lights.erase(kept, level.lights.end());
+    if (dropped > 0)
+        level.importNotes.push_back(source->where + ": " + std::to_string(dropped) +
+                                    " light(s) outside the map's geometry left out (the source "
+                                    "does not match the BSP there)");
+    return level.lights.size() - before;
+}
+
+// Whether q3map2's lightmaps or vertex light hold any light.
+bool importedLightmapLit(const ImportedLightmap& imported) {
+    for (uint8_t b : imported.pages)
+        if (b != 0) return true;
+    for (const ImportedLightmap::Triangle& t : imported.triangles)
+        if (t.page == kNoIndex)
+            for (const glm::vec3& v : t.vertexLight)
+                if (glm::any(glm::greaterThan(v, glm::vec3(0.0f)))) return true;
+    return false;
+}
+
+// Which source each kind of the map's light came from (SourceLevel::lightSources), and the
+// q3map2-lightmap path where the light entities are lost (q3_import.hpp, "Where the lights
+// come from"). A map that nothing lights is marked lightless: the bake refuses it.
+void settleLightSources(SourceLevel& level, size_t entityLights, const std::string& entityWhere,
+                        const std::string& mapWhere) {
+    std::vector<std::string>& out = level.lightSources;
+    size_t sun = 0;
+    for (const Light& l : level.lights) sun += l.type == LightType::kDirectional ? 1 : 0;
+    const size_t points = level.lights.size() - sun;
+    if (entityLights > 0)
+        out.push_back("light entities: " + std::to_string(points) + " from " + entityWhere);
+    else
+        out.push_back(
+            "light entities: none (q3map2 removed them from the BSP and no source "
+            ".map ships with it)");
+    size_t shaders = 0, triangles = 0;
+    for (const MeshInstance& mesh : level.instances)
+        if (glm::any(glm::greaterThan(level.materials[mesh.material].emissive, glm::vec3(0.0f)))) {
+            ++shaders;
+            triangles += mesh.indices.size() / 3;
+        }
+    out.push_back("surface lights: " + (shaders ? std::to_string(shaders) + " shader(s), " +
+                                                      std::to_string(triangles) + " triangles"
+                                                : std::string("none")));
+    const float sky = std::max({level.skyRadiance.x, level.skyRadiance.y, level.skyRadiance.z});
+    out.push_back(std::string("sky: ") + (sun ? "a sun" : "no sun") + ", " +
+                  (sky > 0.0f ? "sky light " + std::to_string(sky) + " cd/m^2" : "no sky light"));
+    if (entityLights > 0) return;
+    if (importedLightmapLit(level.importedLightmap)) {
+        level.lightmapIsImported = true;
+        for (Light& l : level.lights) l.role = LightRole::kBaked;
+        out.push_back(
+            "lightmaps: recovered from q3map2's own (the map's lightmap lump) in place "
+            "of the engine's bake, since its light entities are lost; the sun, sky "
+            "and surface lights light the grid and probes only");
+        return;
+    }
+    if (level.lights.empty() && shaders == 0 && !(sky > 0.0f)) {
+        level.lightless = mapWhere +
+                          ": no light source: no light entities (in the BSP or a source .map), "
+                          "no sun, sky or surface lights, and q3map2's lightmaps are black; a "
+                          "bake would be black";
+        out.push_back("no light at all: the bake refuses the map");
+    }
+}
+
 // The primaries (q3_import.hpp, "Which lights are primaries"): each light's share of the
 // surface area where it is the brightest, unshadowed, at the triangles' centroids.
 void chooseLightRoles(SourceLevel& level, uint32_t maximum) {
@@ -476,7 +630,7 @@ void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& s
             // The older way: q3map2 makes the sky's faces area lights of value S, which is a
             // sky of 0.25 S cd/m^2 (q3_import.hpp) in the light image's normalised mean colour.
             level.skyRadiance = float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) *
-                                normalisedColour(meanLinearColour(files, lightImageOf(*script)));
+                                normalisedColour(meanColours(files, lightImageOf(*script)).bytes);
         }
         return;  // one sky per map
     }
@@ -557,9 +711,15 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     if (!(luxelUnits > 0.0f)) throw Error(map.where + ": worldspawn's _lightmapscale is not > 0");
     level.texelsPerMetre = float(1.0 / (double(luxelUnits) * kQuake3MetresPerUnit));
     addSpawns(level, entities, map.where);
+    const size_t skyLights = level.lights.size();
     addLights(level, entities, map.where);
+    size_t entityLights = level.lights.size() - skyLights;
+    std::string entityWhere = "the BSP's entities", sourceWhere;
+    if (entityLights == 0 && (entityLights = addSourceLights(level, map, files, sourceWhere)) > 0)
+        entityWhere = "the source .map " + sourceWhere;
     noteIgnoredAmbient(level, entities, map.where);
     chooseLightRoles(level, options.primaryLights);
+    settleLightSources(level, entityLights, entityWhere, map.where);
     checkLevelLimits(level);
     return level;
 }
