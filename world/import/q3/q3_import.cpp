@@ -469,8 +469,8 @@ std::pair<glm::vec3, glm::vec3> geometryBounds(const SourceLevel& level) {
 }
 
 // The light entities of the map's source .map (q3_import.hpp, "Where the lights come from"),
-// added as if the BSP had kept them; lights outside the map's geometry (a source that does not
-// match the BSP) are left out. A source that does not parse is ignored with a note. Returns
+// added as if the BSP had kept them; lights far outside the map's geometry (a source that does
+// not match the BSP) are left out. A source that does not parse is ignored with a note. Returns
 // how many lights it added; `where` is the source's name.
 size_t addSourceLights(SourceLevel& level, const MapSource& map, const GameFiles& files,
                        std::string& where) {
@@ -488,7 +488,8 @@ size_t addSourceLights(SourceLevel& level, const MapSource& map, const GameFiles
         return 0;
     }
     const auto [lo, hi] = geometryBounds(level);
-    const glm::vec3 margin(1.0f);
+    // Half the map's size, at least 16 m: a light above an open floor is still the map's.
+    const glm::vec3 margin(std::max(16.0f, 0.5f * glm::length(hi - lo)));
     const auto outside = [&](const Light& l) {
         return glm::any(glm::lessThan(l.position, lo - margin)) ||
                glm::any(glm::greaterThan(l.position, hi + margin));
@@ -499,7 +500,7 @@ size_t addSourceLights(SourceLevel& level, const MapSource& map, const GameFiles
     level.lights.erase(kept, level.lights.end());
     if (dropped > 0)
         level.importNotes.push_back(source->where + ": " + std::to_string(dropped) +
-                                    " light(s) outside the map's geometry left out (the source "
+                                    " light(s) far outside the map's geometry left out (the source "
                                     "does not match the BSP there)");
     return level.lights.size() - before;
 }
