@@ -137,22 +137,29 @@ CommandOption flagOption(std::string name, std::string meaning, std::string defa
                   std::move(defaultText));
 }
 
-CommandOption integerOption(std::string name, std::string valueName, double low, double high,
-                            std::string meaning, std::string defaultText) {
-    CommandOption o = option(std::move(name), std::move(valueName), OptionKind::kInteger,
-                             std::move(meaning), std::move(defaultText));
+namespace {
+
+CommandOption rangedOption(std::string name, std::string valueName, OptionKind kind, double low,
+                           double high, std::string meaning, std::string defaultText) {
+    CommandOption o = option(std::move(name), std::move(valueName), kind, std::move(meaning),
+                             std::move(defaultText));
     o.low = low;
     o.high = high;
     return o;
 }
 
+}  // namespace
+
+CommandOption integerOption(std::string name, std::string valueName, double low, double high,
+                            std::string meaning, std::string defaultText) {
+    return rangedOption(std::move(name), std::move(valueName), OptionKind::kInteger, low, high,
+                        std::move(meaning), std::move(defaultText));
+}
+
 CommandOption realOption(std::string name, std::string valueName, double low, double high,
                          std::string meaning, std::string defaultText) {
-    CommandOption o = option(std::move(name), std::move(valueName), OptionKind::kReal,
-                             std::move(meaning), std::move(defaultText));
-    o.low = low;
-    o.high = high;
-    return o;
+    return rangedOption(std::move(name), std::move(valueName), OptionKind::kReal, low, high,
+                        std::move(meaning), std::move(defaultText));
 }
 
 CommandOption choiceOption(std::string name, std::string valueName,
