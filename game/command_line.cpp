@@ -20,7 +20,7 @@ const world::CommandTable& commandTable() {
         CommandOption shadowDistance = world::realOption(
             "--shadow-distance", "M", 1.0, 10000.0,
             "metres from the camera with runtime shadows, beyond them the baked ones",
-            world::shortestNumber(d.shadowDistance));
+            world::shortestNumber(double(d.shadowDistance)));
         shadowDistance.expected = "metres, a number";
         CommandOption frames = world::integerOption(
             "--frames", "N", 1, double(1u << 30),
