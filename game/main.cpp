@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,6 +29,7 @@
 #include "vk/context.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/images/image_files.hpp"
 
 namespace {
 
@@ -172,16 +172,6 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
     return j;
 }
 
-void writeCapture(const std::string& base, const render::CapturedFrame& frame,
-                  const nlohmann::json& json) {
-    std::error_code ec;
-    const std::filesystem::path parent = std::filesystem::path(base).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-    capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8);
-    capture::writeExr(base + ".exr", frame.width, frame.height, frame.linearRgba);
-    capture::writeJson(base + ".json", json);
-}
-
 // One frame, headless (and its capture files), or a free-fly camera in a window.
 int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
               render::Camera camera) {
@@ -248,10 +238,11 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
                             stats.surfacesDrawn);
             if (readback) {
                 const render::CapturedFrame& captured = render::capturedFrame(target.renderer);
-                writeCapture(cl.capture, captured,
-                             sidecar(cl, level, target.renderer, camera, stats, backend, gpuMs));
+                capture::writeCaptureFiles(
+                    cl.capture, captured,
+                    sidecar(cl, level, target.renderer, camera, stats, backend, gpuMs));
                 if (!cl.headless)
-                    capture::writePng(
+                    world::writePngFile(
                         cl.capture + "_window.png", target.window.swapchain.extent.width,
                         target.window.swapchain.extent.height, captured.swapchainRgba8);
             }

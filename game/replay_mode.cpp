@@ -13,6 +13,7 @@
 #include "render_target.hpp"
 #include "session.hpp"
 #include "sim/replay_runner.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::game {
 
@@ -107,7 +108,7 @@ void writeContactSheet(const std::string& path, const std::vector<Capture>& capt
                         c.rgba8[(size_t(2 * y) * c.width + 2 * x) * 4 + k];
     }
     for (size_t i = 3; i < sheet.size(); i += 4) sheet[i] = 255;
-    capture::writePng(path, width, height, sheet);
+    world::writePngFile(path, width, height, sheet);
 }
 
 }  // namespace
@@ -159,10 +160,9 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
                     if (cl.benchmark) break;  // a benchmark captures nothing
                     const render::CapturedFrame& frame = render::capturedFrame(target.renderer);
                     std::string base = dir + "/" + name;
-                    capture::writePng(base + ".png", frame.width, frame.height, frame.rgba8);
-                    capture::writeExr(base + ".exr", frame.width, frame.height, frame.linearRgba);
-                    capture::writeJson(base + ".json", captureJson(session, target.renderer, in,
-                                                                   stats, tick, tickSeconds));
+                    capture::writeCaptureFiles(
+                        base, frame,
+                        captureJson(session, target.renderer, in, stats, tick, tickSeconds));
                     captures.push_back({name, frame.width, frame.height, frame.rgba8});
                     std::printf("onelight: tick %llu captured %s.png\n", (unsigned long long)tick,
                                 base.c_str());

@@ -18,6 +18,7 @@
 #include "bake/report/interrupt.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/file_write.hpp"
 #include "world/import/level_import.hpp"
 #include "world/package/package_writer.hpp"
 
@@ -42,7 +43,7 @@ void writeBakedPackage(const BakePlan& plan, const world::CompiledLevel& level,
     if (!plan.reportPath.empty()) writeReport(plan.reportPath, report);
     // The package last, and whole: an interrupt from here on is ignored (interrupt.hpp).
     ignoreInterrupts();
-    package::writeFileAtomically(plan.output, bytes);
+    world::writeFileAtomically(plan.output, bytes);
     std::printf("baked %s (%zu bytes, quality %s%s)\n", plan.output.c_str(), bytes.size(),
                 qualityName(options.quality),
                 options.shardCount > 1 ? (", shard " + std::to_string(options.shardIndex) + "/" +

@@ -11,6 +11,7 @@
 #include "world/compile/compile_level.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/file_write.hpp"
 #include "world/import/level_import.hpp"
 #include "world/level_names.hpp"
 #include "world/package/package_writer.hpp"
@@ -116,7 +117,7 @@ int compileFromCommandLine(const world::ParsedOptions& parsed) {
             bake::processLevelTextures(source, source.glossMips);
         const std::vector<package::RawSection> sections = {package::encodeTextureSection(textures)};
         const std::vector<uint8_t> bytes = package::serializePackage(result.level, sections);
-        package::writeFileAtomically(output, bytes);
+        world::writeFileAtomically(output, bytes);
         printSummary(output, result.stats, bytes.size());
         for (const std::string& note : source.importNotes)
             std::fprintf(stderr, "onelight-bake: warning: %s\n", note.c_str());

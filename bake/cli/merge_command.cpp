@@ -9,6 +9,7 @@
 #include "bake/cli/subcommands.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/file_write.hpp"
 #include "world/package/baked_sections.hpp"
 #include "world/package/package_reader.hpp"
 #include "world/package/texture_section.hpp"
@@ -83,7 +84,7 @@ int mergeParts(const std::string& output, const std::vector<std::string>& inputs
         }
         const world::BakedLighting merged = mergeBakedLighting(level, std::move(parts), inputs);
         const std::vector<uint8_t> bytes = packageBytes(level, merged, textures);
-        package::writeFileAtomically(output, bytes);
+        world::writeFileAtomically(output, bytes);
         std::printf("merged %zu parts into %s (%zu bytes)\n", inputs.size(), output.c_str(),
                     bytes.size());
         return 0;

@@ -18,6 +18,7 @@
 #include "world/compile/static_split.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/images/image_files.hpp"
 #include "world/import/level_import.hpp"
 
 namespace onelight::bake {
@@ -112,7 +113,7 @@ int renderFromCommandLine(const world::ParsedOptions& parsed) {
         const ReferenceImage image =
             renderReference(scene, lights, *camera, width, height, spp, {}, &progress, rays, seed);
         progress.finish();
-        writeExr(output, image);
+        world::writeRgbExrFile(output, image.width, image.height, image.rgb);
         std::printf("reference %s: %ux%u, %u spp, %llu rays, %.2f Mrays/s\n", output.c_str(), width,
                     height, spp, static_cast<unsigned long long>(rays.total()),
                     double(rays.total()) / progress.seconds() * 1e-6);

@@ -29,6 +29,7 @@
 #include "bake/slurm/work_folder.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
+#include "world/file_write.hpp"
 #include "world/import/level_import.hpp"
 #include "world/level_names.hpp"
 #include "world/package/package_writer.hpp"
@@ -160,7 +161,7 @@ void compileIntoWorkFolder(const world::SourceLevel& source, const BakePlan& pla
     const std::vector<uint8_t> bytes = package::serializePackage(compiled.level, sections);
     report.peakMemoryBytes = peakMemoryBytes();
     writeReport(work.compiledReport(), report);
-    package::writeFileAtomically(work.compiled(), bytes);
+    world::writeFileAtomically(work.compiled(), bytes);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     slurm::writeCompiledStamp(work, manifest, slurm::hostName(), seconds);

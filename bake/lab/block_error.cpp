@@ -10,7 +10,7 @@ namespace onelight::lab {
 namespace {
 
 // Rec. 709 luminance (shaders/common.glsl luminance), in double precision for the sums.
-double luminanceAt(const capture::FloatImage& f, size_t pixel) {
+double luminanceAt(const world::FloatImage& f, size_t pixel) {
     double rgb[3];
     for (int c = 0; c < 3; ++c) {
         const float v = f.rgba[pixel * 4 + size_t(c)];
@@ -21,7 +21,7 @@ double luminanceAt(const capture::FloatImage& f, size_t pixel) {
 
 }  // namespace
 
-BlockErrors blockErrors(const capture::FloatImage& frame, const capture::FloatImage& reference) {
+BlockErrors blockErrors(const world::FloatImage& frame, const world::FloatImage& reference) {
     if (frame.width != reference.width || frame.height != reference.height)
         throw std::invalid_argument("frame " + std::to_string(frame.width) + "x" +
                                     std::to_string(frame.height) + "; expected the reference's " +

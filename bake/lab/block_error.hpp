@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "capture/capture.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::lab {
 
@@ -23,8 +23,8 @@ struct BlockErrors {
 
 // The relative error of each 8x8 block's mean luminance. Throws std::invalid_argument when the
 // sizes differ or the image is smaller than one block; non-finite pixels count as 0.
-[[nodiscard]] BlockErrors blockErrors(const capture::FloatImage& frame,
-                                      const capture::FloatImage& reference);
+[[nodiscard]] BlockErrors blockErrors(const world::FloatImage& frame,
+                                      const world::FloatImage& reference);
 
 // The block errors as an RGBA8 heat map of the frame's size: 0 black, through red and yellow,
 // to white at `fullScale` and above.

@@ -8,7 +8,7 @@
 
 namespace onelight::lab {
 
-std::vector<uint8_t> displayRgba8(const capture::FloatImage& image, float ev100) {
+std::vector<uint8_t> displayRgba8(const world::FloatImage& image, float ev100) {
     const float exposure = glsl::exposure_fromEV100(ev100);
     std::vector<uint8_t> rgba(size_t(image.width) * image.height * 4, 255);
     for (size_t p = 0; p < size_t(image.width) * image.height; ++p)

@@ -5,11 +5,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "capture/capture.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::lab {
 
-[[nodiscard]] std::vector<uint8_t> displayRgba8(const capture::FloatImage& image, float ev100);
+[[nodiscard]] std::vector<uint8_t> displayRgba8(const world::FloatImage& image, float ev100);
 
 // Copies `tile` (tileWidth wide) into `sheet` (sheetWidth wide, RGBA8) at (x, y).
 void placeTile(std::vector<uint8_t>& sheet, uint32_t sheetWidth, const std::vector<uint8_t>& tile,

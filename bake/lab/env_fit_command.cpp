@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "env_brdf.hpp"
 #include "grids.hpp"
+#include "world/file_write.hpp"
 
 namespace onelight::lab {
 
@@ -31,7 +32,7 @@ int envFit(const std::string& path) {
         std::fputs(glsl.c_str(), stdout);
         return 0;
     }
-    writeFileAtomically(path, glsl);
+    world::writeFileAtomically(path, glsl);
     std::fprintf(stderr, "env-fit: wrote %s\n", path.c_str());
     return 0;
 }

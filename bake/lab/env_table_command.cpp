@@ -11,6 +11,7 @@
 #include "grids.hpp"
 #include "models.hpp"
 #include "shading.hpp"
+#include "world/file_write.hpp"
 
 namespace onelight::lab {
 
@@ -39,7 +40,7 @@ int envTable(const std::string& path) {
         std::fputs(text.c_str(), stdout);
         return 0;
     }
-    writeFileAtomically(path, text);
+    world::writeFileAtomically(path, text);
     std::fprintf(stderr, "env-table: wrote %s\n", path.c_str());
     return 0;
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "grids.hpp"
+#include "world/file_write.hpp"
 
 namespace onelight::lab {
 
@@ -40,7 +41,7 @@ std::string writePatchedLevel(const std::string& level, const std::string& key,
     const std::string out = (path.parent_path() / (path.stem().string() + ".level-report-" + key +
                                                    "-" + value + ".gltf"))
                                 .string();
-    writeFileAtomically(out, doc.dump());
+    world::writeFileAtomically(out, doc.dump());
     return out;
 }
 

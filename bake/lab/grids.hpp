@@ -69,7 +69,4 @@ struct EnvError {
     return e;
 }
 
-// Writes `text` to `path` through a temporary file and a rename: never half-written.
-void writeFileAtomically(const std::string& path, const std::string& text);
-
 }  // namespace onelight::lab

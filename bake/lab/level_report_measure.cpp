@@ -19,6 +19,7 @@
 #include "level_report.hpp"
 #include "pareto.hpp"
 #include "world/error.hpp"
+#include "world/images/image_files.hpp"
 #include "world/import/level_import.hpp"
 #include "world/process/child_process.hpp"
 
@@ -196,7 +197,7 @@ std::vector<CameraReport> references(const Runner& r, const LevelReportOptions& 
         }
         cam.referenceExr = seeds[0];
         cam.referenceNoise =
-            blockErrors(capture::readExr(seeds[1]), capture::readExr(seeds[0])).mean;
+            blockErrors(world::readExrFile(seeds[1]), world::readExrFile(seeds[0])).mean;
         out.push_back(cam);
     }
     return out;
@@ -310,7 +311,7 @@ LevelReport measureLevel(const LevelReportOptions& o) {
             row.predictedError = predictedError(b.budget, cameraIndex(level, cam.name));
             row.budget = b.budget.is_object() ? b.budget.value("budget", 0.0) : 0.0;
             row.error =
-                blockErrors(capture::readExr(row.frameExr), capture::readExr(cam.referenceExr))
+                blockErrors(world::readExrFile(row.frameExr), world::readExrFile(cam.referenceExr))
                     .mean;
             cam.rows.push_back(row);
             progress.advance(1);

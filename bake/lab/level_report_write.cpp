@@ -1,13 +1,12 @@
 // level-report's outputs: README.md with a table per camera, a CSV of every row, per camera a
 // plot of error against frame ms and against bake seconds, and a contact sheet of
-// reference | frame | error heat map per setting. Each written to a temporary name and renamed.
+// reference | frame | error heat map per setting. Each written whole (world::writeFileAtomically).
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
-#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -16,6 +15,8 @@
 #include "grids.hpp"
 #include "level_report.hpp"
 #include "plot.hpp"
+#include "world/file_write.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::lab {
 
@@ -43,12 +44,6 @@ std::string fileStem(size_t index, const std::string& name) {
     std::string s = "cam" + std::to_string(index) + "_";
     for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) || c == '-' ? c : '_';
     return s;
-}
-
-void renameInto(const std::string& tmp, const std::string& path) {
-    if (std::rename(tmp.c_str(), path.c_str()) != 0)
-        throw std::runtime_error(path + ": cannot rename " + tmp + ": " +
-                                 std::generic_category().message(errno));
 }
 
 // A knob as the plot's legend shows it: short enough for its column (about 22 characters).
@@ -97,28 +92,26 @@ void writePlots(const CameraReport& cam, const std::string& dir, const std::stri
         }
         const std::string path =
             dir + "/" + stem + (againstFrame ? "_error_vs_frame_ms.png" : "_error_vs_bake_s.png");
-        writePlotPng(path + ".tmp", plot);
-        renameInto(path + ".tmp", path);
+        writePlotPng(path, plot);
     }
 }
 
 void writeSheet(const CameraReport& cam, const std::string& path) {
-    const capture::FloatImage reference = capture::readExr(cam.referenceExr);
+    const world::FloatImage reference = world::readExrFile(cam.referenceExr);
     const uint32_t w = reference.width, h = reference.height;
     const uint32_t sheetWidth = 3 * w;
     std::vector<uint8_t> sheet(size_t(sheetWidth) * h * cam.rows.size() * 4, 255);
     const float ev100 = cam.rows.empty() ? 0.0f : cam.rows[0].ev100;
     const std::vector<uint8_t> shownReference = displayRgba8(reference, ev100);
     for (size_t k = 0; k < cam.rows.size(); ++k) {
-        const capture::FloatImage frame = capture::readExr(cam.rows[k].frameExr);
+        const world::FloatImage frame = world::readExrFile(cam.rows[k].frameExr);
         const uint32_t y = uint32_t(k) * h;
         placeTile(sheet, sheetWidth, shownReference, w, 0, y);
         placeTile(sheet, sheetWidth, displayRgba8(frame, ev100), w, w, y);
         placeTile(sheet, sheetWidth, heatMap(blockErrors(frame, reference), w, h, kHeatFullScale),
                   w, 2 * w, y);
     }
-    capture::writePng(path + ".tmp", sheetWidth, h * uint32_t(cam.rows.size()), sheet);
-    renameInto(path + ".tmp", path);
+    world::writePngFile(path, sheetWidth, h * uint32_t(cam.rows.size()), sheet);
 }
 
 std::string csv(const LevelReport& report) {
@@ -245,8 +238,8 @@ void writeLevelReport(const LevelReport& report) {
         writePlots(report.cameras[c], dir, stem);
         writeSheet(report.cameras[c], dir + "/" + stem + "_sheet.png");
     }
-    writeFileAtomically(dir + "/level_report.csv", csv(report));
-    writeFileAtomically(dir + "/README.md", markdown(report));
+    world::writeFileAtomically(dir + "/level_report.csv", csv(report));
+    world::writeFileAtomically(dir + "/README.md", markdown(report));
 }
 
 }  // namespace onelight::lab

@@ -27,6 +27,7 @@
 #include "level_report.hpp"
 #include "world/command_options.hpp"
 #include "world/error.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::lab {
 namespace {
@@ -210,7 +211,7 @@ int sheetCommand(int argc, char** argv) {
 int frameErrorCommand(int argc, char** argv) {
     const ParsedOptions o = parse("frame-error", argc, argv);
     const BlockErrors e =
-        blockErrors(capture::readExr(o.positionals[0]), capture::readExr(o.positionals[1]));
+        blockErrors(world::readExrFile(o.positionals[0]), world::readExrFile(o.positionals[1]));
     double worst = 0.0;
     for (double v : e.relative) worst = std::max(worst, v);
     std::printf("error=%.6f blocks=%zu worst=%.6f\n", e.mean, e.relative.size(), worst);

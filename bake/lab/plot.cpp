@@ -1,16 +1,12 @@
 #include "plot.hpp"
 
-#include "grids.hpp"
+#include "world/images/image_files.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
-// Internal to this file (static), so a program may link another user of stb_image_write.
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb_image_write.h>
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
 #pragma GCC diagnostic ignored "-Wsign-compare"
@@ -28,10 +24,10 @@ constexpr int kLeft = 90, kRight = 220, kTop = 60, kBottom = 70;  // margins aro
 using Rgb = std::array<uint8_t, 3>;
 
 struct Canvas {
-    std::vector<uint8_t> pixels = std::vector<uint8_t>(size_t(kWidth) * kHeight * 3, 255);
+    std::vector<uint8_t> pixels = std::vector<uint8_t>(size_t(kWidth) * kHeight * 4, 255);  // RGBA
     void set(int x, int y, Rgb c) {
         if (x < 0 || y < 0 || x >= kWidth || y >= kHeight) return;
-        uint8_t* p = &pixels[(size_t(y) * kWidth + x) * 3];
+        uint8_t* p = &pixels[(size_t(y) * kWidth + x) * 4];
         p[0] = c[0], p[1] = c[1], p[2] = c[2];
     }
     void rect(int x0, int y0, int x1, int y1, Rgb c) {
@@ -170,13 +166,7 @@ void writePlotPng(const std::string& path, const Plot& plot) {
         c.text(x1 + 35, legendY + 2, s.label, black);
         legendY += 24;
     }
-    std::string png;
-    auto append = [](void* context, void* data, int size) {
-        static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
-    };
-    if (!stbi_write_png_to_func(append, &png, kWidth, kHeight, 3, c.pixels.data(), kWidth * 3))
-        throw std::runtime_error(path + ": cannot encode PNG");
-    writeFileAtomically(path, png);
+    world::writePngFile(path, kWidth, kHeight, c.pixels);
 }
 
 }  // namespace onelight::lab

@@ -1,5 +1,6 @@
 // Minimal PNG charts for lab reports: scatter and line series on linear or log axes, with
-// labelled points, a legend and tick labels (stb_easy_font text, stb_image_write PNG).
+// labelled points, a legend and tick labels (stb_easy_font text; the PNG written by
+// world::writePngFile, world/images/image_files.hpp).
 #pragma once
 
 #include <array>
@@ -25,7 +26,7 @@ struct Plot {
     std::vector<PlotSeries> series;
 };
 
-// Writes the plot as a 960x600 PNG; throws std::runtime_error naming the path on failure.
+// Writes the plot as a 960x600 PNG, atomically; throws world::Error naming the path on failure.
 // Non-positive values on a log axis and non-finite values are skipped.
 void writePlotPng(const std::string& path, const Plot& plot);
 

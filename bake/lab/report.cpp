@@ -25,6 +25,7 @@
 #include "microfacet_diffuse.hpp"
 #include "plot.hpp"
 #include "shading.hpp"
+#include "world/file_write.hpp"
 
 namespace onelight::lab {
 
@@ -268,9 +269,9 @@ int brdfReport(const std::string& dir, bool quick) {
     envCsv << "candidate,ns_per_eval,max_error,rms_error\n";
     for (const EnvSummary& e : env)
         envCsv << e.name << ',' << e.ns << ',' << e.error.max << ',' << e.error.rms << '\n';
-    writeFileAtomically(dir + "/models.csv", modelsCsv.str());
-    writeFileAtomically(dir + "/models_grid.csv", gridCsv.str());
-    writeFileAtomically(dir + "/env_fresnel.csv", envCsv.str());
+    world::writeFileAtomically(dir + "/models.csv", modelsCsv.str());
+    world::writeFileAtomically(dir + "/models_grid.csv", gridCsv.str());
+    world::writeFileAtomically(dir + "/env_fresnel.csv", envCsv.str());
 
     // Plots: cost on x, error on y, so the Pareto front shows.
     Plot pm{"Specular models: cost against error (vs exact Smith of the same NDF)",
@@ -425,7 +426,7 @@ int brdfReport(const std::string& dir, bool quick) {
     md << "Cost and error are measured; the Pareto front is the lower left of each plot.\n\n"
        << "CSV: `models.csv` (summary), `models_grid.csv` (every grid point), "
           "`env_fresnel.csv`.\n";
-    writeFileAtomically(dir + "/README.md", md.str());
+    world::writeFileAtomically(dir + "/README.md", md.str());
     std::fprintf(stderr, "brdf-report: wrote %s/README.md in %.0f s\n", dir.c_str(), seconds);
     return 0;
 }

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "capture/capture.hpp"
 #include "commands.hpp"
 #include "shading.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::lab {
 
@@ -27,10 +27,10 @@ int sheet(const std::string& output, const std::vector<float>& ev100,
                                     std::to_string(rows) + ")");
     if (!rect.empty() && rect.size() != 4)
         throw std::invalid_argument("--rect: expected x,y,width,height");
-    std::vector<capture::FloatImage> read;
+    std::vector<world::FloatImage> read;
     for (const std::string& path : images) {
-        read.push_back(capture::readExr(path));
-        const capture::FloatImage& f = read.back();
+        read.push_back(world::readExrFile(path));
+        const world::FloatImage& f = read.back();
         if (f.width != read[0].width || f.height != read[0].height)
             throw std::invalid_argument(path + ": " + std::to_string(f.width) + "x" +
                                         std::to_string(f.height) + "; expected the first image's " +
@@ -70,7 +70,7 @@ int sheet(const std::string& output, const std::vector<float>& ev100,
             "the first)\n",
             images[k].c_str(), mean.x, mean.y, mean.z, y, first > 0.0 ? y / first : 0.0);
     }
-    capture::writePng(output, uint32_t(stride), rows * h, rgba);
+    world::writePngFile(output, uint32_t(stride), rows * h, rgba);
     std::printf("wrote %s: %u images of %ux%u, %u to a row, at EV100 %.2f%s\n", output.c_str(), n,
                 w, h, across, double(ev100[0]), ev100.size() > 1 ? " (first row)" : "");
     return 0;

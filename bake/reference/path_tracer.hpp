@@ -59,7 +59,4 @@ struct CameraRay {
                                             uint32_t samples, uint32_t seed,
                                             const TransportSettings& transport, RayCounts& rays);
 
-/// Writes linear RGB float32 EXR through `path.tmp` and a rename. Throws world::Error.
-void writeExr(const std::string& path, const ReferenceImage& image);
-
 }  // namespace onelight::bake

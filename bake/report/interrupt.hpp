@@ -1,6 +1,6 @@
 // What an interrupted bake says: SIGINT or SIGTERM prints the stage that was running and that no
 // package was written, then exits 128 + the signal, without running destructors (the package is
-// only ever renamed into place whole, package::writeFileAtomically, so there is nothing to undo).
+// only ever renamed into place whole, world::writeFileAtomically, so there is nothing to undo).
 // The stage is the one piece of process-wide state: a signal handler can reach nothing else.
 #pragma once
 

@@ -3,11 +3,10 @@
 #include <sys/resource.h>
 
 #include <cstdio>
-#include <span>
 
 #include <nlohmann/json.hpp>
 
-#include "world/package/package_writer.hpp"
+#include "world/file_write.hpp"
 
 namespace onelight::bake {
 
@@ -110,8 +109,7 @@ std::string reportJson(const BakeReport& r) {
 
 void writeReport(const std::string& path, const BakeReport& report) {
     const std::string json = reportJson(report);
-    package::writeFileAtomically(
-        path, std::span(reinterpret_cast<const uint8_t*>(json.data()), json.size()));
+    world::writeFileAtomically(path, json);
 }
 
 std::string reportSummary(const BakeReport& r) {

@@ -3,10 +3,9 @@
 #include <sys/stat.h>
 
 #include <filesystem>
-#include <span>
 
 #include "world/error.hpp"
-#include "world/package/package_writer.hpp"
+#include "world/file_write.hpp"
 
 namespace onelight::bake::slurm {
 namespace {
@@ -92,8 +91,7 @@ void writeBatchScripts(const std::string& folder, const BatchScripts& scripts) {
         {"shard.sh", &scripts.shard}, {"merge.sh", &scripts.merge}, {"submit.sh", &scripts.submit}};
     for (const auto& [name, text] : files) {
         const std::string path = folder + "/" + name;
-        package::writeFileAtomically(
-            path, std::span(reinterpret_cast<const uint8_t*>(text->data()), text->size()));
+        world::writeFileAtomically(path, *text);
         if (chmod(path.c_str(), 0755) != 0)
             throw world::Error(path + ": cannot make it executable");
     }

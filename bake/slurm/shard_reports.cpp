@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <span>
 
 #include <nlohmann/json.hpp>
 
 #include "world/error.hpp"
 #include "world/file_read.hpp"
-#include "world/package/package_writer.hpp"
+#include "world/file_write.hpp"
 
 namespace onelight::bake::slurm {
 namespace {
@@ -217,8 +216,7 @@ void writeSlurmReport(const std::string& path, const BakeReport& whole, const Sh
     json["merge"] = {{"node", merge.node}, {"seconds", merge.seconds}};
     json["wall_seconds"] = wallSeconds;
     const std::string text = json.dump(2) + "\n";
-    package::writeFileAtomically(
-        path, std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+    world::writeFileAtomically(path, text);
 }
 
 }  // namespace onelight::bake::slurm

@@ -4,14 +4,13 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <span>
 
 #include <nlohmann/json.hpp>
 
 #include "bake/slurm/content_hash.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
-#include "world/package/package_writer.hpp"
+#include "world/file_write.hpp"
 
 namespace onelight::bake::slurm {
 namespace {
@@ -20,8 +19,7 @@ constexpr const char* kManifestFormat = "onelight slurm work folder 1";
 
 void writeJson(const std::string& path, const nlohmann::ordered_json& json) {
     const std::string text = json.dump(2) + "\n";
-    package::writeFileAtomically(
-        path, std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+    world::writeFileAtomically(path, text);
 }
 
 /// The JSON in `path`; nothing when the file is absent. Throws world::Error when it is no JSON.

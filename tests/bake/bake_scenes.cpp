@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "capture/capture.hpp"
 #include "world/compile/static_split.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::bake::test {
 
@@ -113,7 +113,7 @@ void addInwardSphere(world::SourceLevel& level, glm::vec3 centre, float radius, 
 uint32_t addImageTexture(world::SourceLevel& level, const std::string& pngPath, uint32_t width,
                          uint32_t height, const std::vector<uint8_t>& rgba,
                          const world::Sampler& sampler) {
-    capture::writePng(pngPath, width, height, rgba);
+    world::writePngFile(pngPath, width, height, rgba);
     world::Image image;
     image.name = pngPath;
     image.uri = pngPath;
@@ -131,7 +131,7 @@ LevelScene::LevelScene(const world::SourceLevel& level)
 
 void setSkyImage(world::SourceLevel& level, const std::string& hdrPath, const world::HdrImage& sky,
                  glm::vec3 scale) {
-    capture::writeHdr(hdrPath, sky.width, sky.height, sky.rgb);
+    world::writeHdrFile(hdrPath, sky.width, sky.height, sky.rgb);
     world::Image image;
     image.name = "sky";
     image.mimeType = "image/vnd.radiance";

@@ -11,9 +11,10 @@
 #include <map>
 #include <sstream>
 
-#include "capture/capture.hpp"
 #include "golden.hpp"
 #include "run_command.hpp"
+#include "world/images/image_decode.hpp"
+#include "world/images/image_files.hpp"
 
 namespace {
 
@@ -48,7 +49,7 @@ void expectGoldens(const std::string& replay, const std::vector<std::string>& ca
     std::string dir = playReplay(replay);
     for (const std::string& c : captures) {
         const onelight::world::DecodedImage png =
-            onelight::capture::readPng(dir + "/" + c + ".png");
+            onelight::world::readImageFile(dir + "/" + c + ".png");
         ASSERT_TRUE(fs::exists(dir + "/" + c + ".exr")) << c;
         ASSERT_TRUE(fs::exists(dir + "/" + c + ".json")) << c;
         onelight::test::GoldenResult g = onelight::test::compareWithGolden(
@@ -62,7 +63,7 @@ void expectGoldens(const std::string& replay, const std::vector<std::string>& ca
 
 // Mean linear luminance (cd/m^2) of the central quarter of a capture's EXR.
 double centreLuminance(const std::string& exr) {
-    const onelight::capture::FloatImage image = onelight::capture::readExr(exr);
+    const onelight::world::FloatImage image = onelight::world::readExrFile(exr);
     const uint32_t w = image.width, h = image.height;
     const std::vector<float>& rgba = image.rgba;
     double sum = 0.0;
@@ -113,8 +114,10 @@ TEST(DemoReplays, TheSameReplayGivesTheSameFrames) {
     std::string first = playReplay("mover", "mover_first_run");
     std::string second = playReplay("mover", "mover_second_run");
     for (const char* c : {"crate_in_the_sun", "crate_under_the_spot"}) {
-        const std::vector<uint8_t> a = onelight::capture::readPng(first + "/" + c + ".png").rgba;
-        const std::vector<uint8_t> b = onelight::capture::readPng(second + "/" + c + ".png").rgba;
+        const std::vector<uint8_t> a =
+            onelight::world::readImageFile(first + "/" + c + ".png").rgba;
+        const std::vector<uint8_t> b =
+            onelight::world::readImageFile(second + "/" + c + ".png").rgba;
         EXPECT_TRUE(a == b) << c << " differs between two runs of the same replay";
     }
 }
@@ -201,7 +204,7 @@ TEST(Quake3Replay, Q3dm6ishBakesAndPlays) {
     ASSERT_EQ(play.exitCode, 0) << play.output;
     for (const std::string c : {"start", "walked", "back"}) {
         const onelight::world::DecodedImage png =
-            onelight::capture::readPng(dir + "/" + c + ".png");
+            onelight::world::readImageFile(dir + "/" + c + ".png");
         onelight::test::GoldenResult g = onelight::test::compareWithGolden(
             png.rgba, png.width, png.height,
             std::string(ONELIGHT_GAME_GOLDENS) + "/q3dm6ish_" + c + ".png",
@@ -215,7 +218,7 @@ TEST(Quake3Replay, Q3dm6ishBakesAndPlays) {
                                      dir + "/q3map2_spawn0");
     ASSERT_EQ(view.exitCode, 0) << view.output;
     const onelight::world::DecodedImage png =
-        onelight::capture::readPng(dir + "/q3map2_spawn0.png");
+        onelight::world::readImageFile(dir + "/q3map2_spawn0.png");
     onelight::test::GoldenResult g = onelight::test::compareWithGolden(
         png.rgba, png.width, png.height,
         std::string(ONELIGHT_GAME_GOLDENS) + "/q3dm6ish_q3map2_spawn0.png",

@@ -8,10 +8,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "capture/capture.hpp"
 #include "env_brdf_table.hpp"
 #include "shading.hpp"
 #include "test_scene.hpp"
+#include "world/images/image_files.hpp"
 
 namespace {
 
@@ -90,8 +90,8 @@ void checkLight(const char* name, const test::SceneLight& light,
 
     // Through the EXR file, as a capture writes it.
     const std::string exr = dir + "/gpu_cpu_" + name + ".exr";
-    capture::writeExr(exr, kWidth, kHeight, rendered.frame.linearRgba);
-    const capture::FloatImage image = capture::readExr(exr);
+    world::writeExrFile(exr, kWidth, kHeight, rendered.frame.linearRgba);
+    const world::FloatImage image = world::readExrFile(exr);
     ASSERT_EQ(image.width, kWidth);
     ASSERT_EQ(image.height, kHeight);
     const std::vector<float>& gpu = image.rgba;

@@ -10,9 +10,10 @@
 #include <vector>
 
 #include "albedo.hpp"
-#include "capture/capture.hpp"
 #include "run_command.hpp"
 #include "shading.hpp"
+#include "world/images/image_decode.hpp"
+#include "world/images/image_files.hpp"
 
 namespace {
 
@@ -81,7 +82,7 @@ TEST(LabCli, QuickReportWritesTablesCsvsAndPlots) {
     for (const char* png : {"models_cost_vs_error.png", "models_cost_vs_albedo_error.png",
                             "env_cost_vs_error.png", "albedo_gloss05.png"}) {
         const onelight::world::DecodedImage image =
-            onelight::capture::readPng((dir / png).string());
+            onelight::world::readImageFile((dir / png).string());
         EXPECT_EQ(image.width, 960u);
         EXPECT_EQ(image.height, 600u);
     }
@@ -98,14 +99,14 @@ TEST(LabCli, SheetPutsExrsSideBySideThroughTheCurve) {
     std::filesystem::create_directories(dir);
     const std::string a = (dir / "a.exr").string(), b = (dir / "b.exr").string();
     const std::string small = (dir / "small.exr").string(), png = (dir / "sheet.png").string();
-    onelight::capture::writeExr(a, 4, 2, std::vector<float>(4 * 2 * 4, 100.0f));
-    onelight::capture::writeExr(b, 4, 2, std::vector<float>(4 * 2 * 4, 200.0f));
-    onelight::capture::writeExr(small, 2, 2, std::vector<float>(2 * 2 * 4, 1.0f));
+    onelight::world::writeExrFile(a, 4, 2, std::vector<float>(4 * 2 * 4, 100.0f));
+    onelight::world::writeExrFile(b, 4, 2, std::vector<float>(4 * 2 * 4, 200.0f));
+    onelight::world::writeExrFile(small, 2, 2, std::vector<float>(2 * 2 * 4, 1.0f));
     onelight::test::CommandResult r =
         run("sheet -o " + png + " --ev100 7 --images " + a + "," + b + " --rect 0,0,4,2");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("(2.0000 of the first)"), std::string::npos) << r.output;
-    const onelight::world::DecodedImage sheet = onelight::capture::readPng(png);
+    const onelight::world::DecodedImage sheet = onelight::world::readImageFile(png);
     ASSERT_EQ(sheet.width, 8u);
     ASSERT_EQ(sheet.height, 2u);
     const float exposure = 1.0f / (1.2f * 128.0f);  // exposure_fromEV100(7)
@@ -121,7 +122,7 @@ TEST(LabCli, SheetPutsExrsSideBySideThroughTheCurve) {
     // A grid: three images two to a row, each row at its own exposure; the empty cell is white.
     r = run("sheet -o " + png + " --ev100 7,8 --columns 2 --images " + a + "," + b + "," + b);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const onelight::world::DecodedImage grid = onelight::capture::readPng(png);
+    const onelight::world::DecodedImage grid = onelight::world::readImageFile(png);
     ASSERT_EQ(grid.width, 8u);
     ASSERT_EQ(grid.height, 4u);
     const float exposure8 = 1.0f / (1.2f * 256.0f);  // exposure_fromEV100(8)

@@ -15,9 +15,9 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "capture/capture.hpp"
 #include "run_command.hpp"
 #include "world/gltf/gltf_builder.hpp"
+#include "world/images/image_decode.hpp"
 
 namespace {
 
@@ -196,14 +196,14 @@ TEST_F(LevelReport, ARowPerKnobWithFiniteCostsAndConsistentParetoFlags) {
     for (const char* notANumber : {"| nan", "| -nan", "| inf", "| -inf"})
         EXPECT_EQ(readme.find(notANumber), std::string::npos) << notANumber << "\n" << readme;
     for (const char* png : {"cam0_view_error_vs_frame_ms.png", "cam0_view_error_vs_bake_s.png"}) {
-        const auto image = onelight::capture::readPng((out / png).string());
+        const auto image = onelight::world::readImageFile((out / png).string());
         EXPECT_EQ(image.width, 960u) << png;
     }
-    const auto sheet = onelight::capture::readPng((out / "cam0_view_sheet.png").string());
+    const auto sheet = onelight::world::readImageFile((out / "cam0_view_sheet.png").string());
     EXPECT_EQ(sheet.width, 3 * kWidth);
     EXPECT_EQ(sheet.height, kHeight * rows.size());
-    for (const auto& entry : fs::directory_iterator(out))
-        EXPECT_NE(entry.path().extension(), ".tmp") << entry.path();
+    for (const auto& entry : fs::directory_iterator(out))  // no temporary left behind
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
     for (const auto& entry : fs::directory_iterator(folder_))  // the patched copies are gone
         EXPECT_EQ(entry.path().string().find(".level-report-"), std::string::npos) << entry.path();
 }

@@ -25,12 +25,12 @@ TEST(LevelReportPareto, ARowIsOnTheFrontUnlessAnotherIsNoWorseAndBetterInOne) {
     EXPECT_TRUE(onelight::lab::dominates(rows[1], rows[2]));
 }
 
-onelight::capture::FloatImage flat(uint32_t w, uint32_t h, float value) {
+onelight::world::FloatImage flat(uint32_t w, uint32_t h, float value) {
     return {w, h, std::vector<float>(size_t(w) * h * 4, value)};
 }
 
 TEST(LevelReportBlockError, MeanRelativeErrorOfBlockLuminance) {
-    onelight::capture::FloatImage reference = flat(16, 8, 2.0f), frame = flat(16, 8, 2.0f);
+    onelight::world::FloatImage reference = flat(16, 8, 2.0f), frame = flat(16, 8, 2.0f);
     // The right block 50% too bright: errors 0 and 0.5, mean 0.25.
     for (uint32_t y = 0; y < 8; ++y)
         for (uint32_t x = 8; x < 16; ++x)
@@ -42,7 +42,7 @@ TEST(LevelReportBlockError, MeanRelativeErrorOfBlockLuminance) {
     EXPECT_NEAR(e.relative[1], 0.5, 1e-12);
     EXPECT_NEAR(e.mean, 0.25, 1e-12);
     // A black reference block is measured against the floor, not divided by zero.
-    onelight::capture::FloatImage dark = reference;
+    onelight::world::FloatImage dark = reference;
     for (uint32_t y = 0; y < 8; ++y)
         for (uint32_t x = 0; x < 8; ++x)
             for (int c = 0; c < 3; ++c) dark.rgba[(y * 16 + x) * 4 + c] = 0.0f;

@@ -12,13 +12,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
-#include "capture/capture.hpp"
 #include "env_brdf_table.hpp"
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
 #include "world/dynamic_primary.hpp"
 #include "world/images/image_decode.hpp"
+#include "world/images/image_files.hpp"
 #include "world/light_grid_sample.hpp"
 #include "world/package/probe_section.hpp"
 
@@ -243,8 +243,8 @@ std::vector<float> renderLinear(const assets::LoadedLevel& level, const render::
     const test::RenderedFrame r = test::renderOnce(level, o, inputs);
     EXPECT_EQ(r.validationErrors, 0u);
     const std::string exr = test::outputDir() + "/" + name + ".exr";
-    capture::writeExr(exr, kWidth, kHeight, r.frame.linearRgba);
-    capture::FloatImage image = capture::readExr(exr);
+    world::writeExrFile(exr, kWidth, kHeight, r.frame.linearRgba);
+    world::FloatImage image = world::readExrFile(exr);
     EXPECT_EQ(image.width, kWidth);
     EXPECT_EQ(image.height, kHeight);
     return std::move(image.rgba);
@@ -675,7 +675,7 @@ TEST(RenderBaked, TheSkyImageShowsBehindTheLevel) {
             sky.rgb.insert(sky.rgb.end(),
                            {(1.0f - 0.6f * v) * around, (1.0f - 0.5f * v) * around, 1.0f * around});
         }
-    capture::writeHdr(test::outputDir() + "/sky_image.hdr", sky.width, sky.height, sky.rgb);
+    world::writeHdrFile(test::outputDir() + "/sky_image.hdr", sky.width, sky.height, sky.rgb);
     const world::HdrImage stored = world::readHdrFile(test::outputDir() + "/sky_image.hdr");
     test::Scene scene;
     scene.materials = {{{0.5f, 0.5f, 0.5f, 1.0f}, 0.0f, 1.0f}};
@@ -908,10 +908,10 @@ TEST(RenderBaked, CullingByTheVisibleSetChangesNoPixel) {
         EXPECT_EQ(differing, 0u);
         EXPECT_TRUE(culled.frame.linearRgba == all.frame.linearRgba);
         if (differing) {
-            capture::writePng(test::outputDir() + "/chicane_culled.png", kWidth, kHeight,
-                              culled.frame.rgba8);
-            capture::writePng(test::outputDir() + "/chicane_all.png", kWidth, kHeight,
-                              all.frame.rgba8);
+            world::writePngFile(test::outputDir() + "/chicane_culled.png", kWidth, kHeight,
+                                culled.frame.rgba8);
+            world::writePngFile(test::outputDir() + "/chicane_all.png", kWidth, kHeight,
+                                all.frame.rgba8);
         }
     }
 }

@@ -9,8 +9,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
-#include "capture/capture.hpp"
 #include "world/gltf/gltf_builder.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::test {
 namespace {
@@ -36,7 +36,7 @@ void writeBumpNormalMap(const std::string& path) {
             for (int c = 0; c < 3; ++c)
                 p[c] = uint8_t(std::lround(std::clamp(0.5 + 0.5 * n[c], 0.0, 1.0) * 255.0));
         }
-    capture::writePng(path, kBumpTexels, kBumpTexels, rgba);
+    world::writePngFile(path, kBumpTexels, kBumpTexels, rgba);
 }
 
 }  // namespace

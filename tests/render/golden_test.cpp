@@ -11,10 +11,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "capture/capture.hpp"
 #include "golden.hpp"
 #include "test_scene.hpp"
 #include "world/dynamic_primary.hpp"
+#include "world/images/image_files.hpp"
 #include "world/light_model.hpp"
 
 namespace {
@@ -24,7 +24,7 @@ using namespace onelight;
 constexpr uint32_t kWidth = 320, kHeight = 180;
 void compareWithGolden(const std::string& name, const render::CapturedFrame& frame) {
     const std::string out = test::outputDir() + "/" + name;
-    capture::writePng(out + ".png", frame.width, frame.height, frame.rgba8);
+    world::writePngFile(out + ".png", frame.width, frame.height, frame.rgba8);
     const test::GoldenResult result = test::compareWithGolden(
         frame.rgba8, frame.width, frame.height,
         std::string(ONELIGHT_GOLDEN_DIR) + "/" + name + ".png", out + "_diff.png");

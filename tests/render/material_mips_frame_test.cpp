@@ -21,9 +21,9 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "bumpy_floor.hpp"
-#include "capture/capture.hpp"
 #include "render/camera.hpp"
 #include "test_scene.hpp"
+#include "world/images/image_files.hpp"
 
 namespace {
 
@@ -99,7 +99,7 @@ std::vector<float> renderReference(const std::string& gltf, const std::string& p
                                 std::to_string(kReferenceSpp) + " --seed " + std::to_string(seed) +
                                 " -o " + path + " > /dev/null 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
-    const capture::FloatImage image = capture::readExr(path);
+    const world::FloatImage image = world::readExrFile(path);
     EXPECT_EQ(image.width, kWidth);
     EXPECT_EQ(image.height, kHeight);
     std::vector<float> rgb;

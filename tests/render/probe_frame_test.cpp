@@ -18,11 +18,11 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "capture/capture.hpp"
 #include "render/camera.hpp"
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "world/gltf/gltf_builder.hpp"
+#include "world/images/image_files.hpp"
 
 namespace {
 
@@ -202,7 +202,7 @@ TEST(RenderProbes, GlossyFloorIsCloserToThePathTracerWithTheProbe) {
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     std::vector<float> reference;
     {
-        const capture::FloatImage image = capture::readExr(referencePath);
+        const world::FloatImage image = world::readExrFile(referencePath);
         ASSERT_EQ(image.width, kWidth);
         ASSERT_EQ(image.height, kHeight);
         const std::vector<float>& rgba = image.rgba;

@@ -13,8 +13,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
-#include "capture/capture.hpp"
 #include "vk/context.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::test {
 
@@ -377,7 +377,7 @@ void writeReferenceComparison(const std::string& path, uint32_t width, uint32_t 
                         uint8_t(std::lround(255.0f * std::clamp(display, 0.0f, 1.0f)));
                 }
     }
-    capture::writePng(path, columns * width, height, rgba);
+    world::writePngFile(path, columns * width, height, rgba);
 }
 
 }  // namespace onelight::test

@@ -7,8 +7,9 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "capture/capture.hpp"
 #include "test_scene.hpp"
+#include "world/images/image_decode.hpp"
+#include "world/images/image_files.hpp"
 
 namespace {
 
@@ -51,8 +52,8 @@ TEST(RenderWindow, ScreenshotMatchesOffscreenFrame) {
     const world::ChildResult h = test::runOnelight(headless);
     ASSERT_EQ(h.exitCode, 0) << h.err;
 
-    const world::DecodedImage windowShot = capture::readPng(dir + "/windowed_window.png");
-    const world::DecodedImage headlessShot = capture::readPng(dir + "/headless.png");
+    const world::DecodedImage windowShot = world::readImageFile(dir + "/windowed_window.png");
+    const world::DecodedImage headlessShot = world::readImageFile(dir + "/headless.png");
     ASSERT_EQ(windowShot.width, headlessShot.width);
     ASSERT_EQ(windowShot.height, headlessShot.height);
     const std::vector<uint8_t>& screenshot = windowShot.rgba;
@@ -94,9 +95,9 @@ TEST(RenderWindow, RenderScaleDrawsSmallerAndScalesUp) {
         test::runOnelight({dir + "/level.olpak", "--size", "160x90", "--camera", camera,
                            "--headless", "--capture", dir + "/headless"});
     ASSERT_EQ(h.exitCode, 0) << h.err;
-    const world::DecodedImage window = capture::readPng(dir + "/windowed_window.png");
-    const world::DecodedImage frame = capture::readPng(dir + "/windowed.png");
-    const world::DecodedImage small = capture::readPng(dir + "/headless.png");
+    const world::DecodedImage window = world::readImageFile(dir + "/windowed_window.png");
+    const world::DecodedImage frame = world::readImageFile(dir + "/windowed.png");
+    const world::DecodedImage small = world::readImageFile(dir + "/headless.png");
     ASSERT_EQ(window.width, 320u);
     ASSERT_EQ(window.height, 180u);
     EXPECT_EQ(frame.width, 160u) << "the captured frame is the renderer's, at the render scale";

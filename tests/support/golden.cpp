@@ -5,7 +5,8 @@
 #include <cstring>
 #include <filesystem>
 
-#include "capture/capture.hpp"
+#include "world/images/image_decode.hpp"
+#include "world/images/image_files.hpp"
 
 namespace onelight::test {
 
@@ -20,14 +21,14 @@ GoldenResult compareWithGolden(const std::vector<uint8_t>& rgba8, uint32_t width
     const char* update = std::getenv("ONELIGHT_UPDATE_GOLDENS");
     if (update && std::strcmp(update, "1") == 0) {
         std::filesystem::create_directories(std::filesystem::path(goldenPath).parent_path());
-        capture::writePng(goldenPath, width, height, rgba8);
+        world::writePngFile(goldenPath, width, height, rgba8);
         std::printf("[ golden ] updated %s\n", goldenPath.c_str());
         return {true, "updated"};
     }
     if (!std::filesystem::exists(goldenPath))
         return {false,
                 goldenPath + ": no golden (run with ONELIGHT_UPDATE_GOLDENS=1 to create it)"};
-    const world::DecodedImage golden = capture::readPng(goldenPath);
+    const world::DecodedImage golden = world::readImageFile(goldenPath);
     const uint32_t w = golden.width, h = golden.height;
     const std::vector<uint8_t>& expected = golden.rgba;
     if (w != width || h != height)
@@ -60,7 +61,7 @@ GoldenResult compareWithGolden(const std::vector<uint8_t>& rgba8, uint32_t width
     std::printf("[ golden ] %s\n", buffer);
     const bool ok = fraction <= kMaxDifferingFraction && mean <= kMaxMeanDifference;
     if (!ok) {
-        capture::writePng(diffPath, w, h, diff);
+        world::writePngFile(diffPath, w, h, diff);
         return {false, std::string(buffer) + "; see " + diffPath};
     }
     return {true, buffer};

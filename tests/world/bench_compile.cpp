@@ -11,6 +11,7 @@
 #include "tests/world/level_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 #include "world/compile/compile_level.hpp"
+#include "world/file_write.hpp"
 #include "world/import/gltf_import.hpp"
 #include "world/package/package_writer.hpp"
 
@@ -58,7 +59,7 @@ int main(int argc, char** argv) {
         const double compileS = seconds(start);
         start = std::chrono::steady_clock::now();
         const std::vector<uint8_t> bytes = package::serializePackage(result.level);
-        package::writeFileAtomically((folder / "bench_level.olpak").string(), bytes);
+        world::writeFileAtomically((folder / "bench_level.olpak").string(), bytes);
         const double writeS = seconds(start);
         const world::CompileStats& s = result.stats;
         std::printf("level      %s (%llu static triangles generated)\n", path.c_str(),

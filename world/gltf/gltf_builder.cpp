@@ -1,25 +1,10 @@
 #include "world/gltf/gltf_builder.hpp"
 
 #include <cstring>
-#include <fstream>
-#include <stdexcept>
+
+#include "world/file_write.hpp"
 
 namespace onelight::world {
-
-namespace {
-
-// Writes through a temporary file and a rename, so a reader never sees half a file.
-void writeAtomically(const std::filesystem::path& path, const std::string& bytes) {
-    const std::filesystem::path tmp = path.string() + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        if (!out) throw std::runtime_error(tmp.string() + ": cannot write");
-    }
-    std::filesystem::rename(tmp, path);
-}
-
-}  // namespace
 
 GltfBuilder::GltfBuilder() {
     document_ = {{"asset", {{"version", "2.0"}, {"generator", "onelight"}}},
@@ -115,10 +100,9 @@ std::string GltfBuilder::write(const std::filesystem::path& folder, const std::s
     if (document["accessors"].empty()) document.erase("accessors");
     if (document["bufferViews"].empty()) document.erase("bufferViews");
     if (buffer_.empty()) document.erase("buffers");
-    const std::string bytes(reinterpret_cast<const char*>(buffer_.data()), buffer_.size());
-    writeAtomically(folder / (name + ".bin"), bytes);
+    writeFileAtomically((folder / (name + ".bin")).string(), buffer_);
     const std::filesystem::path path = folder / (name + ".gltf");
-    writeAtomically(path, document.dump(1));
+    writeFileAtomically(path.string(), document.dump(1));
     return path.string();
 }
 

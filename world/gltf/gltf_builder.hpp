@@ -35,8 +35,8 @@ public:
 
     nlohmann::json& document() { return document_; }
 
-    /// Writes NAME.gltf and NAME.bin into `folder` (each through a temporary file and a
-    /// rename); returns the .gltf path.
+    /// Writes NAME.gltf and NAME.bin into `folder` (each with world::writeFileAtomically, which
+    /// throws world::Error); returns the .gltf path.
     std::string write(const std::filesystem::path& folder, const std::string& name) const;
 
 private:

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "world/error.hpp"
 #include "world/file_read.hpp"
@@ -149,34 +148,6 @@ std::vector<uint8_t> serializePackage(const world::CompiledLevel& level,
         if (!bytes.empty()) std::memcpy(out.data() + table[i].offset, bytes.data(), bytes.size());
     }
     return out;
-}
-
-void writeFileAtomically(const std::string& path, std::span<const uint8_t> bytes) {
-    const std::string temporary = path + ".tmp";
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    std::error_code made;
-    if (!folder.empty()) std::filesystem::create_directories(folder, made);
-    if (made)
-        throw world::Error(path + ": cannot create its folder " + folder.string() + " (" +
-                           made.message() + ")");
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) throw world::Error(path + ": cannot create " + temporary);
-        file.write(reinterpret_cast<const char*>(bytes.data()),
-                   static_cast<std::streamsize>(bytes.size()));
-        file.flush();
-        if (!file) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            throw world::Error(path + ": writing " + temporary + " failed (disk full?)");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::filesystem::remove(temporary, ec);
-        throw world::Error(path + ": cannot rename " + temporary + " into place");
-    }
 }
 
 void placeImagesForPackage(world::CompiledLevel& level, const std::string& packagePath) {

@@ -1,5 +1,6 @@
 // Writes a compiled level as an .olpak package (format.hpp): deterministic bytes (no time
-// stamps, zeroed padding), written to a temporary file and renamed when complete.
+// stamps, zeroed padding), which the caller writes with world::writeFileAtomically
+// (world/file_write.hpp).
 #pragma once
 
 #include <cstdint>
@@ -29,9 +30,5 @@ struct RawSection {
 /// to files beside it (package::isPathBesideThePackage). Throws world::Error naming an image
 /// that cannot be read.
 void placeImagesForPackage(world::CompiledLevel& level, const std::string& packagePath);
-
-/// Writes `bytes` to `path` through `path.tmp` and a rename, so that `path` is never
-/// half-written; makes `path`'s folder when it is missing. Throws world::Error naming the file.
-void writeFileAtomically(const std::string& path, std::span<const uint8_t> bytes);
 
 }  // namespace onelight::package
