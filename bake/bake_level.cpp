@@ -94,6 +94,7 @@ ProbeCaptureSettings probeSettings(const BakeOptions& options) {
 }
 
 BakeReport startReport(const world::SourceLevel& source, const BakeOptions& options) {
+    if (!source.lightless.empty()) throw world::Error(source.lightless);
     if (options.shardCount == 0 || options.shardIndex >= options.shardCount)
         throw std::runtime_error("shard " + std::to_string(options.shardIndex) + "/" +
                                  std::to_string(options.shardCount) + "; expected index < count");
@@ -104,6 +105,7 @@ BakeReport startReport(const world::SourceLevel& source, const BakeOptions& opti
         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
     report.shardIndex = options.shardIndex;
     report.shardCount = options.shardCount;
+    report.lightSources = source.lightSources;
     return report;
 }
 
@@ -227,7 +229,21 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
     auto start = std::chrono::steady_clock::now();
     // The lightmaps' cached bounces, which the grid and the probes read too.
     RadianceCache bounceCache;
-    {
+    if (source.lightmapIsImported) {
+        // The source's own lightmaps are the level's (a Quake 3 map whose light entities are
+        // lost: q3_import.hpp): copied, not baked; the grid and probes trace the lights left.
+        uint64_t copied = 0;
+        for (const uint32_t i : ownedSamples) {
+            const uint64_t texel = samples[i].texel;
+            if (texel < baked.importedTexels.size() &&
+                (baked.importedTexels[texel].flags & world::kLightmapTexelSampled)) {
+                baked.texels[texel] = baked.importedTexels[texel];
+                ++copied;
+            }
+        }
+        report.stages.push_back({"lightmaps", secondsSince(start), {}, copied});
+        report.texelsSampled = copied;
+    } else {
         Progress progress("lightmaps", lightmapWorkUnits(samples.size(), ownedSamples.size(), lm),
                           options.showProgress);
         const LightmapStats stats = bakeLightmapTexels(

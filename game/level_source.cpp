@@ -69,16 +69,19 @@ void compileAndBake(const std::string& level, const std::string& package, const 
 }
 
 // A Quake 3 map: its package NAME.olpak in the current folder, baked at draft quality when
-// missing or older than the baker (a first look takes seconds; bake it yourself with
-// onelight-bake --quality default for more).
+// missing or older than the baker (or than the .bsp file) (a first look takes seconds; bake it
+// yourself with onelight-bake --quality default for more).
 std::string resolveQuake3Package(const std::string& level, const std::string& baker,
                                  const std::string& quality) {
     std::error_code ec;
     const std::string package = world::defaultPackagePath(level);
     const fs::path bake = baker;
     const bool bakerKnown = fs::exists(bake, ec);
+    // A .bsp file edited since (recompiled by q3map2) makes it stale too.
+    const bool mapFile = fs::is_regular_file(level, ec);
     if (fs::exists(package, ec) &&
-        (!bakerKnown || fs::last_write_time(package, ec) >= fs::last_write_time(bake, ec)))
+        (!bakerKnown || fs::last_write_time(package, ec) >= fs::last_write_time(bake, ec)) &&
+        (!mapFile || fs::last_write_time(package, ec) >= fs::last_write_time(level, ec)))
         return package;
     if (!bakerKnown)
         throw world::Error(level + ": needs compiling, but " + bake.string() +
@@ -97,12 +100,15 @@ std::string resolveLevelPackage(const std::string& level, const std::string& qua
 std::string resolveLevelPackageWith(const std::string& level, const std::string& baker,
                                     const std::string& quality) {
     std::error_code ec;
-    if (world::isQuake3Map(level) && !fs::is_regular_file(level, ec))
+    // A Quake 3 map: NAME.bsp (a file or not), PAK.pk3:maps/NAME.bsp, or a bare NAME that is no
+    // file here.
+    const std::string ext = lowerExtension(level);
+    if (world::isQuake3Map(level) &&
+        (ext == ".bsp" || !fs::is_regular_file(level, ec) || level.find(':') != std::string::npos))
         return resolveQuake3Package(level, baker, quality.empty() ? "draft" : quality);
     if (!fs::is_regular_file(level, ec))
         throw world::Error(
             level + ": no such file; expected a glTF level (.gltf, .glb) or a .olpak package");
-    const std::string ext = lowerExtension(level);
     if (ext == ".olpak") return level;
     if (ext != ".gltf" && ext != ".glb")
         throw world::Error(level + ": unknown kind of file; expected .gltf, .glb or .olpak");

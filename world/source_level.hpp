@@ -36,10 +36,12 @@ struct ImportedLightmap {
         glm::vec3 vertexLight[3];  // the light at the corners, used when page is kNoIndex
         uint32_t page = kNoIndex;  // into pages
     };
-    std::string producer;        // who baked it ("q3map2"); empty: none
-    uint32_t pageSize = 0;       // texels per side of a page
-    std::vector<uint8_t> pages;  // RGB8, pageSize^2 per page, row-major
-    float luxPerValue = 1.0f;    // irradiance of one unit of a page or vertex light value
+    std::string producer;                 // who baked it ("q3map2"); empty: none
+    uint32_t pageSize = 0;                // texels per side of a page
+    std::vector<uint8_t> pages;           // RGB8, pageSize^2 per page, row-major
+    std::vector<uint8_t> directionPages;  // q3map2 -deluxe: each page's light direction, same
+                                          // layout as pages; empty when the source has none
+    float luxPerValue = 1.0f;             // irradiance of one unit of a page or vertex light value
     std::vector<Triangle> triangles;
 };
 
@@ -65,10 +67,16 @@ struct SourceLevel {
     uint32_t skyImage = kNoIndex;  // into images: an equirectangular Radiance .hdr sky
     bool hasGridBounds = false;
     glm::vec3 gridMin{0.0f}, gridMax{0.0f};
-    ImportedLightmap importedLightmap;     // the source's own bake, if it carries one
-    LevelCollision collision;              // a Quake 3 map's brushes and triggers, as compiled
-    std::vector<std::string> importNotes;  // what the import approximated or ignored, one line
-                                           // each; the bake reports them as warnings
+    ImportedLightmap importedLightmap;      // the source's own bake, if it carries one
+    LevelCollision collision;               // a Quake 3 map's brushes and triggers, as compiled
+    std::vector<std::string> importNotes;   // what the import approximated or ignored, one line
+                                            // each; the bake reports them as warnings
+    std::vector<std::string> lightSources;  // where each kind of light came from, one line each
+                                            // (a Quake 3 map's: entities, surface lights, sky)
+    std::string lightless;  // not empty: why nothing lights the level (a Quake 3 map without
+                            // any light source); the bake refuses it with this message
+    bool lightmapIsImported = false;  // the lightmaps are importedLightmap's, not baked: the
+                                      // source's lights are lost (q3_import.hpp)
 };
 
 }  // namespace onelight::world

@@ -51,6 +51,8 @@ void writeBakedPackage(const BakePlan& plan, const world::CompiledLevel& level,
                                              .c_str()
                                        : "");
     std::printf("%s", reportSummary(report).c_str());
+    for (const std::string& line : report.lightSources)
+        std::printf("%s: %s\n", plan.input.c_str(), line.c_str());
     for (const std::string& warning : report.warnings)
         std::fprintf(stderr, "onelight-bake: warning: %s: %s\n", plan.input.c_str(),
                      warning.c_str());

@@ -14,7 +14,7 @@ namespace onelight::bake {
 /// What LEVEL may be, for every subcommand's help.
 inline const std::string kLevelMeaning =
     "LEVEL: a glTF (.gltf, .glb), a Quake 3 map (.bsp), PAK.pk3:maps/NAME.bsp, or the NAME of an "
-    "installed OpenArena map";
+    "installed OpenArena or Nexuiz map";
 
 /// --patch-level N: how finely a Quake 3 map's curved patches are tessellated (the bake, compile
 /// and reference take it).

@@ -119,6 +119,8 @@ int compileFromCommandLine(const world::ParsedOptions& parsed) {
         const std::vector<uint8_t> bytes = package::serializePackage(result.level, sections);
         world::writeFileAtomically(output, bytes);
         printSummary(output, result.stats, bytes.size());
+        for (const std::string& line : source.lightSources)
+            std::printf("%s: %s\n", input.c_str(), line.c_str());
         for (const std::string& note : source.importNotes)
             std::fprintf(stderr, "onelight-bake: warning: %s\n", note.c_str());
         return 0;

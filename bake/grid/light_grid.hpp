@@ -18,7 +18,8 @@ struct GridSettings {
     uint32_t maxCellsPerAxis = 64;  // cells grow past cellSize to stay under this
     uint32_t samples = 256;         // sphere directions per cell
     uint32_t shadowSamples = 16;    // per light per cell
-    float insideFraction = 0.5f;    // back-face hits above this fraction: inside solid
+    float insideFraction = 0.5f;    // back-face hits above this fraction: inside solid (a
+                                    // block's face coplanar with a wall may be met as either)
     TransportSettings transport;
 };
 

@@ -104,6 +104,7 @@ std::string reportJson(const BakeReport& r) {
             {"choices", choices}};
     }
     j["warnings"] = r.warnings;
+    j["light_sources"] = r.lightSources;
     return j.dump(2) + "\n";
 }
 

@@ -71,6 +71,7 @@ struct BakeReport {
     std::vector<BudgetChoiceReport> budgetChoices;
     std::vector<double> probeErrorPerView;  // the probes' predicted error from each view
     std::vector<std::string> warnings;      // one line each, naming the thing and what to change
+    std::vector<std::string> lightSources;  // where each kind of the level's light came from
     uint64_t peakMemoryBytes = 0;
     uint64_t packageBytes = 0;
 };

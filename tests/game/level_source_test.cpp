@@ -108,4 +108,30 @@ TEST(LevelSource, AQuake3MapBakesAtDraftIntoTheCurrentFolder) {
     fs::current_path(before);
 }
 
+// A plain .bsp file is a Quake 3 map as the docs say (onelight MAP.bsp): compiled and baked at
+// draft into NAME.olpak in the current folder, and baked again once the .bsp is newer.
+TEST(LevelSource, APlainBspFileIsAQuake3Map) {
+    const Fixture f;
+    const fs::path before = fs::current_path();
+    fs::current_path(f.dir);
+    fs::create_directories(f.dir / "maps");
+    const fs::path map = f.dir / "maps" / "plain.bsp";
+    std::ofstream(map) << "IBSP";
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith(map.string(), f.baker.string()),
+              "plain.olpak");
+    EXPECT_EQ(f.callLines(), "compile " + map.string() + " -o plain.olpak\n" + map.string() +
+                                 " -o plain.olpak --quality draft\n");
+    f.age(f.baker, 100);
+    f.age(f.dir / "plain.olpak", 50);
+    f.age(map, 200);
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith(map.string(), f.baker.string()),
+              "plain.olpak");
+    EXPECT_EQ(f.callCount(), 2);  // fresh
+    f.age(map, 10);               // q3map2 wrote it again
+    EXPECT_EQ(onelight::game::resolveLevelPackageWith(map.string(), f.baker.string()),
+              "plain.olpak");
+    EXPECT_EQ(f.callCount(), 4);
+    fs::current_path(before);
+}
+
 }  // namespace

@@ -1,12 +1,16 @@
 // Quake 3 maps: the BSP reader's checks on hand-made files, patch tessellation without cracks,
-// the entity lump, the light mapping, and a real OpenArena map when the game's packages are
-// installed (openarena-081-maps, openarena-081-textures, openarena-data).
+// the entity lump, the light mapping, the game's search path over pk3s (written here with
+// libzip) and loose files, external and deluxe lightmaps, a computed view for a map without a
+// spawn, and a real OpenArena map when the game's packages are installed (openarena-081-maps,
+// openarena-081-textures, openarena-data).
 #include <gtest/gtest.h>
+#include <zip.h>
 
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -17,6 +21,7 @@
 #include "world/import/level_import.hpp"
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/collision_import.hpp"
+#include "world/import/q3/computed_view.hpp"
 #include "world/import/q3/entity_lump.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
@@ -183,7 +188,17 @@ TEST(Quake3Bsp, BadFilesGiveOneLineNamingThePlace) {
     {
         BspBuilder b;
         b.vertices[1].position[0] = std::nanf("");
-        expectError(b.bytes(), "vertex 1 is NaN or Inf");
+        expectError(b.bytes(), "lump 10 (vertices): vertex 1 is NaN or Inf in its position");
+    }
+    {
+        // Lightmap coordinates a surface reads on its page must be numbers.
+        BspBuilder b;
+        b.lightmaps.assign(kLightmapPageBytes, 0);
+        b.surfaces[0].lightmap = 0;
+        b.vertices[2].lightmap[1] = std::numeric_limits<float>::infinity();
+        expectError(b.bytes(),
+                    "lump 10 (vertices): vertex 2 is NaN or Inf in its lightmap coordinates, "
+                    "which surface 0 reads on lightmap page 0");
     }
     {
         std::vector<uint8_t> odd = good;
@@ -296,7 +311,9 @@ TEST(Quake3Lights, LinearFalloffIsApproximatedAndAmbientIsReported) {
     b.entities =
         "{\n\"classname\" \"worldspawn\"\n\"ambient\" \"10\"\n}\n"
         "{\n\"classname\" \"light\"\n\"origin\" \"0 0 300\"\n\"light\" \"300\"\n"
-        "\"spawnflags\" \"1\"\n\"fade\" \"0.5\"\n}\n";
+        "\"spawnflags\" \"1\"\n\"fade\" \"0.5\"\n}\n"
+        "{\n\"classname\" \"info_player_start\"\n\"origin\" \"32 32 24\"\n}\n";
+    b.surfaces[0].lightmap = -3;  // vertex lit: no lightmap to miss
     const SourceLevel level = importLevel(b.write("linear", "linear"), withoutGame("linear"));
     ASSERT_EQ(level.lights.size(), 1u);
     const Light& l = level.lights[0];
@@ -731,4 +748,321 @@ TEST(Quake3Collision, TheSectionReaderRefusesBadIndicesAndNonFinitePlanes) {
     EXPECT_NE(decodeError(s).find("bytes; expected"), std::string::npos) << decodeError(s);
 }
 
+namespace {
+
+using Bytes = std::vector<uint8_t>;
+
+void writeFile(const std::filesystem::path& path, const Bytes& bytes) {
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+}
+
+// A pk3 (a zip archive, deflated as the game's are) holding `files` (name, bytes).
+void writePk3(const std::filesystem::path& path,
+              const std::vector<std::pair<std::string, Bytes>>& files) {
+    std::filesystem::create_directories(path.parent_path());
+    int error = 0;
+    zip_t* zip = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+    ASSERT_NE(zip, nullptr) << path;
+    for (const auto& [name, bytes] : files) {
+        zip_source_t* source = zip_source_buffer(zip, bytes.data(), bytes.size(), 0);
+        ASSERT_GE(zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE), 0) << name;
+    }
+    ASSERT_EQ(zip_close(zip), 0) << path;  // `files` outlive the close, which reads them
+}
+
+// An uncompressed 24-bit TGA, rows top to bottom, every texel `rgb`.
+Bytes tga(uint32_t size, glm::u8vec3 rgb) {
+    Bytes out(18 + size_t(size) * size * 3, 0);
+    out[2] = 2;  // true colour
+    out[12] = uint8_t(size & 255);
+    out[13] = uint8_t(size >> 8);
+    out[14] = uint8_t(size & 255);
+    out[15] = uint8_t(size >> 8);
+    out[16] = 24;
+    out[17] = 0x20;  // top-left origin
+    for (size_t i = 18; i + 2 < out.size(); i += 3) {
+        out[i] = rgb.b;
+        out[i + 1] = rgb.g;
+        out[i + 2] = rgb.r;
+    }
+    return out;
+}
+
+// q3map2 leaves lightmap coordinates NaN on surfaces without a lightmap page (OpenArena's
+// pul1ctf and oa_ctf2 have dozens): they are never read, so the map imports and compiles. A NaN
+// normal is replaced by the face's plane and said.
+TEST(Quake3Bsp, NaNLightmapCoordinatesWithoutAPageCompile) {
+    BspBuilder b;
+    b.surfaces[0].lightmap = -3;  // vertex lit
+    for (BspVertex& v : b.vertices) v.lightmap[0] = v.lightmap[1] = std::nanf("");
+    b.surfaces[0].lightmapVectors[2][2] = 1.0f;
+    b.vertices[3].normal[0] = std::nanf("");
+    const SourceLevel level =
+        importLevel(b.write("nan_lightmap", "nan_lightmap"), withoutGame("nan_lightmap"));
+    ASSERT_EQ(level.instances.size(), 1u);
+    for (const Vertex& v : level.instances[0].vertices)
+        EXPECT_EQ(v.normal, glm::vec3(0.0f, 1.0f, 0.0f));
+    for (const ImportedLightmap::Triangle& t : level.importedLightmap.triangles)
+        for (const glm::vec2& uv : t.uv) EXPECT_TRUE(std::isfinite(uv.x) && std::isfinite(uv.y));
+    bool said = false;
+    for (const std::string& note : level.importNotes)
+        said |= note.find("1 vertex normal(s) NaN or Inf") != std::string::npos;
+    EXPECT_TRUE(said);
+    const CompileResult compiled = compileLevel(level, CompileOptions{});
+    EXPECT_GT(compiled.stats.texels, 0u);
+}
+
+// q3map2 -external: the lightmaps are maps/NAME/lm_NNNN.tga (here a loose file of the game
+// folder and, for a map beside no game, a NAME/ folder beside the .bsp), read for the q3map2 view
+// at their own size.
+TEST(Quake3Lightmaps, ExternalLightmapsAreRead) {
+    const auto game = freshFolder("external_game");
+    BspBuilder b;
+    b.surfaces[0].lightmap = 0;
+    for (BspVertex& v : b.vertices) v.lightmap[0] = v.lightmap[1] = 0.5f;
+    Quake3Options options;
+    options.gameFolders = {game.string()};
+    writeFile(game / "maps" / "external.bsp", b.bytes());
+    writeFile(game / "maps" / "external" / "lm_0000.tga", tga(8, {10, 20, 30}));
+    const SourceLevel level = importLevel("external", options);
+    const ImportedLightmap& l = level.importedLightmap;
+    EXPECT_EQ(l.pageSize, 8u);
+    ASSERT_EQ(l.pages.size(), 8u * 8u * 3u);
+    EXPECT_EQ(l.pages[0], 10);
+    EXPECT_EQ(l.pages[2], 30);
+    EXPECT_TRUE(l.directionPages.empty());
+    ASSERT_EQ(l.triangles.size(), 2u);
+    EXPECT_EQ(l.triangles[0].page, 0u);
+
+    // A .bsp outside any game folder, its lightmaps in a folder of its name beside it.
+    const auto loose = freshFolder("external_loose");
+    writeFile(loose / "outside.bsp", b.bytes());
+    writeFile(loose / "outside" / "lm_0000.tga", tga(4, {200, 100, 50}));
+    const SourceLevel outside =
+        importLevel((loose / "outside.bsp").string(), withoutGame("external_loose"));
+    EXPECT_EQ(outside.importedLightmap.pageSize, 4u);
+    ASSERT_EQ(outside.importedLightmap.pages.size(), 4u * 4u * 3u);
+    EXPECT_EQ(outside.importedLightmap.pages[0], 200);
+
+    // Without them, the vertex light stands in, and the import says so.
+    const auto none = freshFolder("external_none");
+    writeFile(none / "bare.bsp", b.bytes());
+    const SourceLevel bare = importLevel((none / "bare.bsp").string(), withoutGame("none"));
+    EXPECT_TRUE(bare.importedLightmap.pages.empty());
+    EXPECT_EQ(bare.importedLightmap.triangles[0].page, kNoIndex);
+    ASSERT_FALSE(bare.importNotes.empty());
+    EXPECT_NE(bare.importNotes[0].find("no external lightmaps"), std::string::npos)
+        << bare.importNotes[0];
+}
+
+// q3map2 -deluxe interleaves colour and direction pages; surfaces name the colour ones (even).
+// The colour pages are kept as the map's lightmap, the direction pages apart, in a lump or in
+// external images.
+TEST(Quake3Lightmaps, ADeluxeMappedLumpGivesColourPagesOnly) {
+    BspBuilder b;
+    b.entities =
+        "{\n\"classname\" \"worldspawn\"\n\"_q3map2_cmdline\" \"-meta; -light -deluxe "
+        "-samples 3\"\n}\n";
+    for (uint8_t p = 0; p < 4; ++p) b.lightmaps.insert(b.lightmaps.end(), kLightmapPageBytes, p);
+    b.surfaces[0].lightmap = 2;
+    b.surfaces.push_back(b.surfaces[0]);
+    b.surfaces[1].lightmap = 0;
+    const SourceLevel level = importLevel(b.write("deluxe", "deluxe"), withoutGame("deluxe"));
+    const ImportedLightmap& l = level.importedLightmap;
+    ASSERT_EQ(l.pages.size(), 2 * kLightmapPageBytes);
+    ASSERT_EQ(l.directionPages.size(), 2 * kLightmapPageBytes);
+    EXPECT_EQ(l.pages[0], 0);
+    EXPECT_EQ(l.pages[kLightmapPageBytes], 2);
+    EXPECT_EQ(l.directionPages[0], 1);
+    EXPECT_EQ(l.directionPages[kLightmapPageBytes], 3);
+    ASSERT_EQ(l.triangles.size(), 4u);
+    EXPECT_EQ(l.triangles[0].page, 1u);  // lump page 2
+    EXPECT_EQ(l.triangles[2].page, 0u);  // lump page 0
+
+    // The same without the command line: an even count of pages of which only even ones are
+    // used is taken as deluxe (DarkPlaces' rule); one surface on an odd page says it is not.
+    BspBuilder guessed = b;
+    guessed.entities = "{\n\"classname\" \"worldspawn\"\n}\n";
+    EXPECT_EQ(importLevel(guessed.write("deluxe_guess", "g"), withoutGame("g"))
+                  .importedLightmap.pages.size(),
+              2 * kLightmapPageBytes);
+    guessed.surfaces[1].lightmap = 1;
+    const SourceLevel plain = importLevel(guessed.write("deluxe_not", "n"), withoutGame("n"));
+    EXPECT_EQ(plain.importedLightmap.pages.size(), 4 * kLightmapPageBytes);
+    EXPECT_TRUE(plain.importedLightmap.directionPages.empty());
+    EXPECT_EQ(plain.importedLightmap.triangles[2].page, 1u);
+
+    // External deluxe pages, in a pk3 of the game (Nexuiz's way).
+    const auto game = freshFolder("deluxe_external");
+    BspBuilder external = b;
+    external.lightmaps.clear();
+    std::vector<std::pair<std::string, Bytes>> files = {{"maps/dx.bsp", external.bytes()}};
+    for (uint8_t p = 0; p < 4; ++p)
+        files.emplace_back("maps/dx/lm_000" + std::to_string(p) + ".tga",
+                           tga(16, {uint8_t(p * 50), 0, 0}));
+    writePk3(game / "data.pk3", files);
+    Quake3Options options;
+    options.gameFolders = {game.string()};
+    const SourceLevel dx = importLevel("dx", options);
+    ASSERT_EQ(dx.importedLightmap.pageSize, 16u);
+    ASSERT_EQ(dx.importedLightmap.pages.size(), 2u * 16u * 16u * 3u);
+    EXPECT_EQ(dx.importedLightmap.pages[16 * 16 * 3], 100);  // lm_0002
+    EXPECT_EQ(dx.importedLightmap.directionPages[0], 50);    // lm_0001
+}
+
+// The game's search path: a folder's pk3s in case-insensitive alphabetical order, a later one
+// winning (B.pk3 after a.pk3, though 'B' < 'a' in ASCII), and its loose files winning over both.
+TEST(Quake3SearchPath, LaterPk3sWinAndLooseFilesWinOverThem) {
+    const auto game = freshFolder("search_path");
+    BspBuilder b;
+    for (const char* name : {"textures/test/floor", "textures/test/loose"}) {
+        BspShader s{};
+        std::strcpy(s.name, name);
+        b.shaders.push_back(s);
+    }
+    for (int32_t shader : {1, 2}) {
+        b.surfaces.push_back(b.surfaces[0]);
+        b.surfaces.back().shader = shader;
+    }
+    const Bytes red = tga(2, {255, 0, 0}), green = tga(2, {0, 255, 0}), blue = tga(2, {0, 0, 255});
+    writePk3(game / "a.pk3", {{"textures/test/wall.tga", red},
+                              {"textures/test/floor.tga", red},
+                              {"textures/test/loose.tga", red},
+                              {"maps/searched.bsp", b.bytes()}});
+    writePk3(game / "B.pk3",
+             {{"textures/test/wall.tga", green}, {"Textures/Test/LOOSE.tga", green}});
+    writeFile(game / "textures" / "test" / "loose.tga", blue);
+    Quake3Options options;
+    options.gameFolders = {game.string()};
+    const auto imageOf = [](const SourceLevel& level, const std::string& material) {
+        for (const Material& m : level.materials)
+            if (m.name == material && m.baseColorTexture != kNoIndex)
+                return level.images[level.textures[m.baseColorTexture].image].name;
+        return std::string("(none)");
+    };
+    for (const std::string& spec :
+         {std::string("searched"), (game / "a.pk3").string() + ":maps/searched.bsp"}) {
+        const SourceLevel level = importLevel(spec, options);
+        EXPECT_EQ(imageOf(level, "textures/test/wall"),
+                  (game / "B.pk3").string() + ":textures/test/wall.tga")
+            << spec;
+        EXPECT_EQ(imageOf(level, "textures/test/floor"),
+                  (game / "a.pk3").string() + ":textures/test/floor.tga")
+            << spec;
+        EXPECT_EQ(imageOf(level, "textures/test/loose"),
+                  (game / "textures" / "test" / "loose.tga").string())
+            << spec;
+    }
+    // A plain .bsp in GAME/maps/ reads the same game (its folder, holding maps/, is the game).
+    writeFile(game / "maps" / "plain.bsp", b.bytes());
+    const SourceLevel plain = importLevel((game / "maps" / "plain.bsp").string(), options);
+    EXPECT_EQ(imageOf(plain, "textures/test/wall"),
+              (game / "B.pk3").string() + ":textures/test/wall.tga");
+}
+
+// Hostile: a truncated pk3 in the game's search path is named, on one line.
+TEST(Quake3SearchPath, ATruncatedPk3InTheSearchPathIsNamed) {
+    const auto game = freshFolder("truncated_pk3");
+    writePk3(game / "pak0.pk3", {{"maps/x.bsp", BspBuilder().bytes()}});
+    const auto size = std::filesystem::file_size(game / "pak0.pk3");
+    std::filesystem::resize_file(game / "pak0.pk3", size / 2);
+    Quake3Options options;
+    options.gameFolders = {game.string()};
+    const std::string e = errorMessage([&] { (void)importLevel("x", options); });
+    EXPECT_NE(e.find((game / "pak0.pk3").string() + ": not a readable pk3 (zip) archive"),
+              std::string::npos)
+        << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+}
+
+// A closed room (16 x 8 m, 4 m high, each wall a surface facing in) with no spawn: the import
+// computes a view inside it, eyes above the floor, looking along the long axis, and says so.
+TEST(Quake3Spawns, AMapWithoutASpawnGetsAViewInsideItsBounds) {
+    BspBuilder b;
+    b.vertices.clear();
+    b.indices = {0, 1, 2, 0, 2, 3};
+    b.surfaces.clear();
+    const float x0 = 0, x1 = 512, y0 = 0, y1 = 256, z0 = 0, z1 = 128;
+    const auto face = [&](glm::vec3 a, glm::vec3 c1, glm::vec3 c2, glm::vec3 c3, glm::vec3 in) {
+        BspSurface f{};
+        f.type = kSurfacePlanar;
+        f.firstVertex = int32_t(b.vertices.size());
+        f.vertexCount = 4;
+        f.indexCount = 6;
+        f.lightmap = -1;
+        for (const glm::vec3& p : {a, c1, c2, c3}) {
+            BspVertex v{};
+            for (int k = 0; k < 3; ++k) {
+                v.position[k] = p[k];
+                v.normal[k] = in[k];
+            }
+            b.vertices.push_back(v);
+        }
+        b.surfaces.push_back(f);
+    };
+    face({x0, y0, z0}, {x1, y0, z0}, {x1, y1, z0}, {x0, y1, z0}, {0, 0, 1});   // floor
+    face({x0, y0, z1}, {x1, y0, z1}, {x1, y1, z1}, {x0, y1, z1}, {0, 0, -1});  // ceiling
+    face({x0, y0, z0}, {x1, y0, z0}, {x1, y0, z1}, {x0, y0, z1}, {0, 1, 0});
+    face({x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1}, {0, -1, 0});
+    face({x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1}, {1, 0, 0});
+    face({x1, y0, z0}, {x1, y1, z0}, {x1, y1, z1}, {x1, y0, z1}, {-1, 0, 0});
+    const SourceLevel level = importLevel(b.write("no_spawn", "no_spawn"), withoutGame("ns"));
+    ASSERT_EQ(level.cameras.size(), 1u);
+    ASSERT_EQ(level.entities.size(), 1u);
+    EXPECT_TRUE(level.entities[0].flags & kEntitySpawn);
+    const glm::vec3 eye = level.cameras[0].position;
+    // The room is x 0 .. 16, y 0 .. 4, z -8 .. 0 m.
+    EXPECT_GT(eye.x, 0.0f);
+    EXPECT_LT(eye.x, 16.0f);
+    EXPECT_LT(eye.z, 0.0f);
+    EXPECT_GT(eye.z, -8.0f);
+    EXPECT_NEAR(eye.y, kComputedViewEyeHeight, 0.02f);
+    EXPECT_NEAR(level.entities[0].position.y, 0.0f, 0.02f);
+    const glm::vec3 forward = level.cameras[0].rotation * glm::vec3(0.0f, 0.0f, -1.0f);
+    EXPECT_NEAR(std::abs(forward.x), 1.0f, 1e-5f);  // along the 16 m side
+    EXPECT_TRUE(insideLevel(level, eye));
+    EXPECT_FALSE(insideLevel(level, glm::vec3(8.0f, 2.0f, 3.0f)));  // outside the walls
+    bool said = false;
+    for (const std::string& note : level.importNotes)
+        said |= note.find("no player spawn: a view computed from the level's bounds") !=
+                std::string::npos;
+    EXPECT_TRUE(said);
+}
+
+}  // namespace
+}  // namespace onelight::world::q3
+
+namespace onelight::world::q3 {
+namespace {
+
+// Installed maps beyond the four the bake tests use: OpenArena's oa_ctf2 has NaN lightmap
+// coordinates on vertex-lit surfaces; Nexuiz's bluesky keeps its textures in another pk3 and its
+// deluxe lightmaps in maps/bluesky/lm_000[0-3].tga (512 x 512).
+TEST(Quake3Maps, InstalledMapsWithUnsetFieldsAndExternalLightmapsImport) {
+    if (defaultQuake3Folders().empty())
+        GTEST_SKIP() << "OpenArena is not installed (openarena-081-maps)";
+    const SourceLevel ctf = importLevel("oa_ctf2");
+    EXPECT_FALSE(ctf.instances.empty());
+    if (!std::filesystem::exists("/usr/share/games/nexuiz/data/data.pk3"))
+        GTEST_SKIP() << "Nexuiz is not installed (nexuiz-data)";
+    const SourceLevel level = importLevel("bluesky");
+    EXPECT_NE(level.sourcePath.find("nexuiz/data/data.pk3:maps/bluesky.bsp"), std::string::npos)
+        << level.sourcePath;
+    size_t textured = 0;
+    for (const Material& m : level.materials) textured += m.baseColorTexture != kNoIndex;
+    std::printf("[ bluesky ] %zu materials (%zu textured), %zu spawns\n", level.materials.size(),
+                textured, level.cameras.size());
+    EXPECT_GE(textured * 10, level.materials.size() * 9);
+    const ImportedLightmap& l = level.importedLightmap;
+    EXPECT_EQ(l.pageSize, 512u);
+    EXPECT_EQ(l.pages.size(), 2u * 512u * 512u * 3u);
+    EXPECT_EQ(l.directionPages.size(), l.pages.size());
+    size_t paged = 0;
+    for (const ImportedLightmap::Triangle& t : l.triangles) paged += t.page != kNoIndex;
+    EXPECT_GT(paged * 10, l.triangles.size() * 9);
+}
+
+}  // namespace
 }  // namespace onelight::world::q3

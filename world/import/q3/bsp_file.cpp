@@ -123,6 +123,67 @@ void checkBrushes(const BspFile& bsp, const std::string& where) {
     }
 }
 
+bool finite(const float* x, int n) {
+    for (int i = 0; i < n; ++i)
+        if (!std::isfinite(x[i])) return false;
+    return true;
+}
+
+// Positions must be finite. q3map2 leaves fields it does not use unset, NaN at times: lightmap
+// coordinates on surfaces without a lightmap page (the game never reads them), anything on a
+// vertex no drawn surface reads, normals of some models. Those are replaced (0, or a zero normal
+// the importer replaces); a field a surface does read is an error naming the vertex.
+void checkVertices(BspFile& bsp, const std::string& where) {
+    constexpr int32_t kUnread = -1;
+    std::vector<int32_t> readBy(bsp.vertices.size(), kUnread);   // a surface reading it
+    std::vector<int32_t> pagedBy(bsp.vertices.size(), kUnread);  // one reading its lightmap uv
+    for (size_t s = 0; s < bsp.surfaces.size(); ++s) {
+        const BspSurface& f = bsp.surfaces[s];
+        if (f.type == kSurfaceFlare) continue;
+        for (int32_t v = f.firstVertex; v < f.firstVertex + f.vertexCount; ++v) {
+            readBy[size_t(v)] = int32_t(s);
+            if (f.lightmap >= 0) pagedBy[size_t(v)] = int32_t(s);
+        }
+    }
+    uint32_t normals = 0;
+    for (size_t v = 0; v < bsp.vertices.size(); ++v) {
+        BspVertex& x = bsp.vertices[v];
+        const auto fault = [&](const char* field, int32_t surface, const std::string& how) {
+            return Error(where + ": lump 10 (vertices): vertex " + std::to_string(v) +
+                         " is NaN or Inf in its " + field +
+                         (surface == kUnread ? std::string()
+                                             : ", which surface " + std::to_string(surface) + how) +
+                         "; expected finite numbers");
+        };
+        if (!finite(x.position, 3)) throw fault("position", readBy[v], " reads");
+        if (!finite(x.texcoord, 2)) {
+            if (readBy[v] != kUnread) throw fault("texture coordinates", readBy[v], " reads");
+            x.texcoord[0] = x.texcoord[1] = 0.0f;
+        }
+        if (!finite(x.lightmap, 2)) {
+            if (pagedBy[v] != kUnread)
+                throw fault("lightmap coordinates", pagedBy[v],
+                            " reads on lightmap page " +
+                                std::to_string(bsp.surfaces[size_t(pagedBy[v])].lightmap));
+            x.lightmap[0] = x.lightmap[1] = 0.0f;  // no page: never read
+        }
+        if (!finite(x.normal, 3)) {
+            normals += readBy[v] != kUnread;
+            const float* plane =
+                readBy[v] == kUnread ? nullptr : bsp.surfaces[size_t(readBy[v])].lightmapVectors[2];
+            for (int c = 0; c < 3; ++c)
+                x.normal[c] = plane && bsp.surfaces[size_t(readBy[v])].type == kSurfacePlanar &&
+                                      finite(plane, 3)
+                                  ? plane[c]
+                                  : 0.0f;  // the importer's default, up
+        }
+    }
+    if (normals > 0)
+        bsp.notes.push_back(
+            where + ": " + std::to_string(normals) +
+            " vertex normal(s) NaN or Inf, replaced by their plane's normal (up off planes)");
+}
+
 }  // namespace
 
 std::string shaderName(const BspShader& shader) {
@@ -157,16 +218,9 @@ BspFile parseBsp(std::span<const uint8_t> bytes, const std::string& where) {
         throw Error(where + ": lump 14 (lightmaps) holds " + std::to_string(bsp.lightmaps.size()) +
                     " bytes; expected whole pages of " + std::to_string(kLightmapPageBytes) +
                     " bytes");
-    for (size_t v = 0; v < bsp.vertices.size(); ++v) {
-        const BspVertex& x = bsp.vertices[v];
-        for (float c : {x.position[0], x.position[1], x.position[2], x.texcoord[0], x.texcoord[1],
-                        x.lightmap[0], x.lightmap[1], x.normal[0], x.normal[1], x.normal[2]})
-            if (!std::isfinite(c))
-                throw Error(where + ": vertex " + std::to_string(v) +
-                            " is NaN or Inf; expected finite numbers");
-    }
     for (size_t s = 0; s < bsp.surfaces.size(); ++s) checkSurface(bsp, s, where);
     checkBrushes(bsp, where);
+    checkVertices(bsp, where);
     return bsp;
 }
 

@@ -1,7 +1,10 @@
 // A Quake 3 BSP read from its bytes and checked: every lump inside the file and a whole number
 // of records, every surface's shader, vertex and index ranges inside their lumps, every index
 // inside its surface, patch grids odd-sized and complete, positions finite; every brush's
-// side range, shader and planes, every model's brush range, planes and bounds finite. Only the
+// side range, shader and planes, every model's brush range, planes and bounds finite. Fields
+// q3map2 leaves unset (NaN lightmap coordinates on a surface without a lightmap page, anything on
+// a vertex no surface reads, NaN normals) are replaced, never refused (bsp_file.cpp
+// checkVertices). Only the
 // lumps the importer uses are kept (bsp_format.hpp).
 #pragma once
 
@@ -25,6 +28,7 @@ struct BspFile {
     std::vector<BspModel> models;          // brush ranges inside brushes, bounds finite
     std::vector<BspBrush> brushes;         // side ranges inside brushSides, shaders valid
     std::vector<BspBrushSide> brushSides;  // planes and shaders valid
+    std::vector<std::string> notes;        // what was replaced and how, one line each
 };
 
 /// Throws world::Error naming `where` (the file), the lump or surface, and what was expected.

@@ -2,6 +2,9 @@
 
 #include <zip.h>
 
+#include <algorithm>
+#include <filesystem>
+
 #include "world/error.hpp"
 #include "world/file_read.hpp"
 
@@ -70,6 +73,54 @@ void GameFiles::add(const std::string& pk3Path) {
     for (const std::string& n : archives[a]->names()) files[fileKey(n)] = {a, n};
 }
 
+std::vector<std::string> pk3sInLoadOrder(const std::string& folder) {
+    std::vector<std::string> pk3s;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+        const std::string key = fileKey(entry.path().filename().string());
+        if (key.size() > 4 && key.compare(key.size() - 4, 4, ".pk3") == 0 &&
+            entry.is_regular_file(ec))
+            pk3s.push_back(entry.path().string());
+    }
+    std::sort(pk3s.begin(), pk3s.end(), [](const std::string& a, const std::string& b) {
+        const std::string ka = fileKey(std::filesystem::path(a).filename().string()),
+                          kb = fileKey(std::filesystem::path(b).filename().string());
+        return ka != kb ? ka < kb : a < b;
+    });
+    return pk3s;
+}
+
+void GameFiles::addGameFolder(const std::string& folder) {
+    for (const std::string& pk3 : pk3sInLoadOrder(folder)) add(pk3);
+    addLooseFiles(folder);
+}
+
+void GameFiles::addLooseFiles(const std::string& folder) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) return;
+    std::vector<std::pair<std::string, std::string>> found;  // (key, path)
+    for (auto it = fs::recursive_directory_iterator(
+             folder, fs::directory_options::skip_permission_denied, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (!it->is_regular_file(ec)) continue;
+        const std::string relative =
+            fs::path(it->path()).lexically_relative(folder).generic_string();
+        const std::string key = fileKey(relative);
+        if (key.size() > 4 && key.compare(key.size() - 4, 4, ".pk3") == 0) continue;
+        if (found.size() >= kMaxLooseFiles)
+            throw Error(folder + ": more than " + std::to_string(kMaxLooseFiles) +
+                        " loose files; expected a game folder (pk3s, maps/, textures/, scripts/)");
+        found.emplace_back(key, it->path().string());
+    }
+    // A fixed order, so that two names differing only in case resolve the same way every run.
+    std::sort(found.begin(), found.end());
+    for (auto& [key, path] : found) {
+        looseFiles.push_back(path);
+        files[key] = {kLoose, std::move(path)};
+    }
+}
+
 bool GameFiles::has(const std::string& name) const {
     return files.count(fileKey(name)) != 0;
 }
@@ -77,12 +128,15 @@ bool GameFiles::has(const std::string& name) const {
 std::optional<std::vector<uint8_t>> GameFiles::read(const std::string& name) const {
     const auto found = files.find(fileKey(name));
     if (found == files.end()) return std::nullopt;
+    if (found->second.first == kLoose)
+        return readRegularFile(found->second.second, "a game file (a loose file of its folder)");
     return archives[found->second.first]->read(found->second.second);
 }
 
 std::string GameFiles::where(const std::string& name) const {
     const auto found = files.find(fileKey(name));
     if (found == files.end()) return name;
+    if (found->second.first == kLoose) return found->second.second;
     return archives[found->second.first]->path() + ":" + found->second.second;
 }
 

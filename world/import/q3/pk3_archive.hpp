@@ -1,6 +1,8 @@
 // Quake 3's pk3 files (zip archives) read through libzip, and the game's virtual file system
-// over several of them: names compare case-insensitively, and a later archive wins, as the
-// engine loads pak0 .. pakN in order.
+// over several of them and the game folders' loose files: names compare case-insensitively, and
+// a later source wins. A game folder is searched as the engine searches it (ioquake3's
+// FS_AddGameDirectory): its pk3s in case-insensitive alphabetical order (pak0 .. pakN, a later
+// one wins), then the folder's loose files, which win over every pk3 of the folder.
 #pragma once
 
 #include <cstdint>
@@ -36,12 +38,29 @@ private:
 /// Lower case (ASCII), with '\\' as '/': a key of the virtual file system.
 [[nodiscard]] std::string fileKey(const std::string& name);
 
-/// Several pk3s as one tree.
-struct GameFiles {
-    std::vector<std::unique_ptr<Pk3Archive>> archives;
-    std::map<std::string, std::pair<size_t, std::string>> files;  // key -> (archive, stored name)
+/// The pk3s directly in `folder`, in the order the game loads them (case-insensitive
+/// alphabetical: a later one wins). Empty when the folder does not exist.
+[[nodiscard]] std::vector<std::string> pk3sInLoadOrder(const std::string& folder);
 
+/// The most loose files a game folder may hold (its tree, pk3s left out).
+inline constexpr size_t kMaxLooseFiles = 200000;
+
+/// Several pk3s and loose folders as one tree.
+struct GameFiles {
+    static constexpr size_t kLoose = size_t(-1);  // the "archive" of a loose file
+    std::vector<std::unique_ptr<Pk3Archive>> archives;
+    // key -> (archive, stored name), or (kLoose, the file's path on disk)
+    std::map<std::string, std::pair<size_t, std::string>> files;
+    std::vector<std::string> looseFiles;  // every loose file's path, for SourceLevel::inputFiles
+
+    /// One pk3; its files win over those added before. Throws world::Error naming it when it is
+    /// not a readable zip.
     void add(const std::string& pk3Path);
+    /// A game folder: its pk3s in the game's order, then its loose files (addLooseFiles).
+    void addGameFolder(const std::string& folder);
+    /// The regular files under `folder` (pk3s left out), winning over everything added before.
+    /// Throws world::Error naming the folder past kMaxLooseFiles.
+    void addLooseFiles(const std::string& folder);
     [[nodiscard]] bool has(const std::string& name) const;
     /// The bytes of `name`, or nothing when no archive holds it.
     [[nodiscard]] std::optional<std::vector<uint8_t>> read(const std::string& name) const;

@@ -17,8 +17,12 @@
 #include "world/import/level_limits.hpp"
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/collision_import.hpp"
+#include "world/import/q3/computed_view.hpp"
 #include "world/import/q3/entity_lump.hpp"
+#include "world/import/q3/game_search_path.hpp"
+#include "world/import/q3/lightmap_pages.hpp"
 #include "world/import/q3/map_axes.hpp"
+#include "world/import/q3/map_source.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/shader_script.hpp"
@@ -33,59 +37,10 @@ bool endsWith(const std::string& s, const std::string& end) {
     return s.size() >= end.size() && fileKey(s.substr(s.size() - end.size())) == end;
 }
 
-std::vector<uint8_t> readFile(const std::string& path) {
-    return readRegularFile(path, "a Quake 3 .bsp map");
-}
-
-// Every pk3 of `folders`, in name order (pak0 before pak1: later archives win).
-void addGameFolders(GameFiles& files, const std::vector<std::string>& folders) {
-    for (const std::string& folder : folders) {
-        std::vector<std::string> pk3s;
-        std::error_code ec;
-        for (const auto& entry : std::filesystem::directory_iterator(folder, ec))
-            if (entry.is_regular_file() && endsWith(entry.path().string(), ".pk3"))
-                pk3s.push_back(entry.path().string());
-        std::sort(pk3s.begin(), pk3s.end());
-        for (const std::string& p : pk3s) files.add(p);
-    }
-}
-
-// The map's bytes and its name for messages, from a .bsp file, PAK.pk3:maps/X.bsp, or X.
+// The map's name for messages.
 struct MapSource {
-    std::vector<uint8_t> bytes;
     std::string where;
 };
-MapSource findMap(const std::string& spec, GameFiles& files,
-                  const std::vector<std::string>& folders) {
-    const size_t colon = fileKey(spec).find(".pk3:");
-    if (colon != std::string::npos) {
-        std::string pk3 = spec.substr(0, colon + 4);
-        const std::string inside = spec.substr(colon + 5);
-        // A bare pk3 name that is not here is looked for in the game folders
-        // (pak1-maps.pk3:maps/aggressor.bsp).
-        std::error_code ec;
-        if (!std::filesystem::exists(pk3, ec) && std::filesystem::path(pk3).is_relative())
-            for (const std::string& folder : folders)
-                if (std::filesystem::exists(std::filesystem::path(folder) / pk3, ec)) {
-                    pk3 = (std::filesystem::path(folder) / pk3).string();
-                    break;
-                }
-        files.add(pk3);
-        const Pk3Archive& archive = *files.archives.back();
-        for (const std::string& n : archive.names())
-            if (fileKey(n) == fileKey(inside)) return {archive.read(n), pk3 + ":" + n};
-        throw Error(spec + ": " + pk3 + " holds no '" + inside + "'");
-    }
-    if (endsWith(spec, ".bsp")) return {readFile(spec), spec};
-    const std::string name = "maps/" + spec + ".bsp";
-    if (auto bytes = files.read(name)) return {std::move(*bytes), files.where(name)};
-    std::string searched;
-    for (const std::string& f : folders) searched += (searched.empty() ? "" : ", ") + f;
-    throw Error(spec + ": no map of that name (maps/" + spec + ".bsp) in the pk3s of " +
-                (searched.empty() ? std::string("no game folder (install openarena-data and "
-                                                "openarena-081-maps)")
-                                  : searched));
-}
 
 // The game's shader scripts by name (lower case); the first definition of a name wins, as in
 // the game.
@@ -121,31 +76,40 @@ bool drawn(const BspShader& shader, const ShaderScript* script) {
     return true;
 }
 
-// The image path without a .tga or .jpg extension.
+// The image path without a .tga, .png or .jpg extension.
 std::string withoutImageExtension(std::string name) {
-    for (const char* ext : {".tga", ".jpg"})
+    for (const char* ext : {".tga", ".png", ".jpg"})
         if (endsWith(name, ext)) name = name.substr(0, name.size() - 4);
     return name;
 }
 
-// The mean linear colour of the image `name` (.tga or .jpg, as textureOf finds it); white when
-// there is no such image. q3map2 lights a surface light with its light image's mean colour,
-// scaled to a brightest channel of 1 (normalisedColour).
-glm::vec3 meanLinearColour(const GameFiles& files, const std::string& name) {
+// The mean colour of the image `name` (.tga or .jpg, as textureOf finds it): of its bytes as
+// they are (q3map2's: it lights a surface light with that mean, display-referred, scaled to a
+// brightest channel of 1) and of its sRGB-decoded texels (what the engine's emissive texture
+// gives). White for both when there is no such image.
+struct ImageMeans {
+    glm::vec3 bytes{1.0f};   // mean byte / 255
+    glm::vec3 linear{1.0f};  // mean sRGB-decoded value
+};
+ImageMeans meanColours(const GameFiles& files, const std::string& name) {
     const std::string base = withoutImageExtension(name);
-    for (const char* ext : {".tga", ".jpg"}) {
+    for (const char* ext : {".tga", ".png", ".jpg"}) {
         const std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
         if (!bytes) continue;
         const DecodedImage pixels =
             decodeImage(bytes->data(), bytes->size(), files.where(base + ext));
-        glm::dvec3 sum(0.0);
+        if (pixels.rgba.empty()) return {};
+        glm::dvec3 sumBytes(0.0), sumLinear(0.0);
         for (size_t i = 0; i + 3 < pixels.rgba.size(); i += 4)
-            for (int c = 0; c < 3; ++c)
-                sum[c] += double(glsl::srgbDecode(float(pixels.rgba[i + size_t(c)]) / 255.0f));
-        return pixels.rgba.empty() ? glm::vec3(1.0f)
-                                   : glm::vec3(sum / double(pixels.rgba.size() / 4));
+            for (int c = 0; c < 3; ++c) {
+                const float v = float(pixels.rgba[i + size_t(c)]) / 255.0f;
+                sumBytes[c] += double(v);
+                sumLinear[c] += double(glsl::srgbDecode(v));
+            }
+        const double n = double(pixels.rgba.size() / 4);
+        return {glm::vec3(sumBytes / n), glm::vec3(sumLinear / n)};
     }
-    return glm::vec3(1.0f);
+    return {};
 }
 
 // `colour` scaled to a brightest channel of 1; white when it is black.
@@ -178,7 +142,8 @@ struct MaterialTable {
         if (known != textureByImage.end()) return known->second;
         uint32_t index = kNoIndex;
         for (const auto& [ext, mime] :
-             {std::pair{".tga", "image/x-tga"}, std::pair{".jpg", "image/jpeg"}}) {
+             {std::pair{".tga", "image/x-tga"}, std::pair{".png", "image/png"},
+              std::pair{".jpg", "image/jpeg"}}) {
             std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
             if (!bytes) continue;
             Image image;
@@ -231,11 +196,16 @@ struct MaterialTable {
                 m.emissiveTexture =
                     script->lightImage.empty() ? kNoIndex : textureOf(script->lightImage);
                 if (m.emissiveTexture == kNoIndex) m.emissiveTexture = m.baseColorTexture;
-                const glm::vec3 mean = meanLinearColour(files, lightImageOf(*script));
-                const float peak = std::max({mean.x, mean.y, mean.z});
-                m.emissive =
-                    glm::vec3(float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) /
-                              (peak > 1e-6f ? peak : 1.0f));
+                // The factor makes the texture's mean emission q3map2's colour: its light
+                // image's mean bytes, normalised (q3_import.hpp, "Shaders").
+                const ImageMeans mean = meanColours(files, lightImageOf(*script));
+                const glm::vec3 colour = normalisedColour(mean.bytes);
+                for (int c = 0; c < 3; ++c)
+                    m.emissive[c] =
+                        mean.linear[c] > 1e-4f
+                            ? float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) *
+                                  colour[c] / mean.linear[c]
+                            : 0.0f;
             }
         }
         m.albedo = glm::vec3(m.baseColor);
@@ -301,13 +271,27 @@ void appendOriented(MeshInstance& mesh, const std::vector<Vertex>& vertices,
     }
 }
 
+// A player spawn's class: info_player_deathmatch and info_player_start; a map without those
+// (team games, races: Nexuiz's info_player_team1, info_player_race, OpenArena's
+// team_CTF_redspawn) has the other player starts instead, the intermission camera excepted.
+bool deathmatchSpawn(const std::string& type) {
+    return type == "info_player_deathmatch" || type == "info_player_start";
+}
+bool otherSpawn(const std::string& type) {
+    const std::string key = fileKey(type);
+    return (key.rfind("info_player_", 0) == 0 && key != "info_player_intermission") ||
+           key == "team_ctf_redspawn" || key == "team_ctf_bluespawn";
+}
+
 // Player spawns, with a camera at each one's eyes looking along its "angle".
 void addSpawns(SourceLevel& level, const std::vector<MapEntity>& entities,
                const std::string& where) {
+    bool deathmatch = false;
+    for (const MapEntity& e : entities) deathmatch |= deathmatchSpawn(e.get("classname"));
     uint32_t n = 0;
     for (const MapEntity& e : entities) {
         const std::string type = e.get("classname");
-        if (type != "info_player_deathmatch" && type != "info_player_start") continue;
+        if (deathmatch ? !deathmatchSpawn(type) : !otherSpawn(type)) continue;
         const glm::vec3 origin = vectorKey(e, "origin", glm::vec3(0.0f), where);
         const float yaw = numberKey(e, "angle", 0.0f, where);  // degrees about Z from +X
         // Quake's heading (cos, sin, 0) is (cos, 0, -sin) here: a turn about +Y of yaw - 90
@@ -386,6 +370,38 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
             "range, equal to q3map2 at half their reach");
 }
 
+// A map without a player spawn gets one where its geometry says (computed_view.hpp).
+void addComputedSpawn(SourceLevel& level, const std::string& where) {
+    if (!level.cameras.empty()) return;
+    const std::optional<ComputedView> view = computeViewInside(level);
+    if (!view) {
+        level.importNotes.push_back(where +
+                                    ": no player spawn, and no open space inside the level found "
+                                    "for a view: the game frames the level from outside");
+        return;
+    }
+    Entity spawn;
+    spawn.name = "spawn0";
+    spawn.flags = kEntitySpawn;
+    spawn.position = view->feet;
+    spawn.rotation = view->rotation;
+    level.entities.push_back(spawn);
+    Camera camera;
+    camera.name = spawn.name;
+    camera.position = view->eye;
+    camera.rotation = view->rotation;
+    camera.yfov = glm::radians(73.74f);
+    level.cameras.push_back(camera);
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  ": no player spawn: a view computed from the level's bounds, eyes at (%.1f, "
+                  "%.1f, %.1f) m looking along %s%s",
+                  double(view->eye.x), double(view->eye.y), double(view->eye.z),
+                  view->forward.x + view->forward.z > 0.0f ? "+" : "-",
+                  view->forward.x != 0.0f ? "X" : "Z");
+    level.importNotes.push_back(where + text);
+}
+
 // Worldspawn's constant light (q3_import.hpp): reported, not modelled.
 void noteIgnoredAmbient(SourceLevel& level, const std::vector<MapEntity>& entities,
                         const std::string& where) {
@@ -396,6 +412,142 @@ void noteIgnoredAmbient(SourceLevel& level, const std::vector<MapEntity>& entiti
                                         entities[0].get(key) +
                                         " ignored: a constant added to every luxel is light from "
                                         "nowhere; the bake's bounces light what it stood in for");
+}
+
+// The map's source (.map) where one ships with it: maps/NAME.map or sources/maps/NAME.map in
+// the BSP's own pk3 first, then in any of the game's, or NAME.map beside a loose NAME.bsp.
+struct SourceText {
+    std::string text;
+    std::string where;
+};
+std::optional<SourceText> findMapSource(const OpenedMap& map) {
+    const std::vector<std::string> names = {"maps/" + map.name + ".map",
+                                            "sources/maps/" + map.name + ".map"};
+    const auto text = [](const std::vector<uint8_t>& bytes) {
+        return std::string(bytes.begin(), bytes.end());
+    };
+    if (!map.pk3.empty()) {
+        const Pk3Archive archive(map.pk3);
+        for (const std::string& wanted : names)
+            for (const std::string& n : archive.names())
+                if (fileKey(n) == fileKey(wanted))
+                    return SourceText{text(archive.read(n)), archive.path() + ":" + n};
+    } else if (!map.bspFile.empty()) {
+        std::error_code ec;
+        const std::filesystem::path beside =
+            std::filesystem::path(map.bspFile).replace_extension(".map");
+        if (std::filesystem::is_regular_file(beside, ec))
+            return SourceText{text(readRegularFile(beside.string(), "a Quake 3 .map source")),
+                              beside.string()};
+    }
+    for (const std::string& wanted : names)
+        if (auto bytes = map.files.read(wanted))
+            return SourceText{text(*bytes), map.files.where(wanted)};
+    return std::nullopt;
+}
+
+// The level's geometry bounds, metres (empty: min > max).
+std::pair<glm::vec3, glm::vec3> geometryBounds(const SourceLevel& level) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const MeshInstance& mesh : level.instances)
+        for (const Vertex& v : mesh.vertices) {
+            lo = glm::min(lo, v.position);
+            hi = glm::max(hi, v.position);
+        }
+    return {lo, hi};
+}
+
+// The light entities of the map's source .map (q3_import.hpp, "Where the lights come from"),
+// added as if the BSP had kept them; lights far outside the map's geometry (a source that does
+// not match the BSP) are left out. A source that does not parse is ignored with a note. Returns
+// how many lights it added; `where` is the source's name.
+size_t addSourceLights(SourceLevel& level, const OpenedMap& map, std::string& where) {
+    std::optional<SourceText> source;
+    const size_t before = level.lights.size();
+    try {
+        source = findMapSource(map);
+        if (!source) return 0;
+        where = source->where;
+        addLights(level, parseMapSource(source->text, source->where), source->where);
+    } catch (const Error& e) {
+        level.lights.resize(before);
+        level.importNotes.push_back(std::string(e.what()) +
+                                    ": the map's source is ignored, its lights are not used");
+        return 0;
+    }
+    const auto [lo, hi] = geometryBounds(level);
+    // Half the map's size, at least 16 m: a light above an open floor is still the map's.
+    const glm::vec3 margin(std::max(16.0f, 0.5f * glm::length(hi - lo)));
+    const auto outside = [&](const Light& l) {
+        return glm::any(glm::lessThan(l.position, lo - margin)) ||
+               glm::any(glm::greaterThan(l.position, hi + margin));
+    };
+    const auto kept =
+        std::remove_if(level.lights.begin() + long(before), level.lights.end(), outside);
+    const size_t dropped = size_t(level.lights.end() - kept);
+    level.lights.erase(kept, level.lights.end());
+    if (dropped > 0)
+        level.importNotes.push_back(source->where + ": " + std::to_string(dropped) +
+                                    " light(s) far outside the map's geometry left out (the source "
+                                    "does not match the BSP there)");
+    return level.lights.size() - before;
+}
+
+// Whether q3map2's lightmaps or vertex light hold any light.
+bool importedLightmapLit(const ImportedLightmap& imported) {
+    for (uint8_t b : imported.pages)
+        if (b != 0) return true;
+    for (const ImportedLightmap::Triangle& t : imported.triangles)
+        if (t.page == kNoIndex)
+            for (const glm::vec3& v : t.vertexLight)
+                if (glm::any(glm::greaterThan(v, glm::vec3(0.0f)))) return true;
+    return false;
+}
+
+// Which source each kind of the map's light came from (SourceLevel::lightSources), and the
+// q3map2-lightmap path where the light entities are lost (q3_import.hpp, "Where the lights
+// come from"). A map that nothing lights is marked lightless: the bake refuses it.
+void settleLightSources(SourceLevel& level, size_t entityLights, const std::string& entityWhere,
+                        const std::string& mapWhere) {
+    std::vector<std::string>& out = level.lightSources;
+    size_t sun = 0;
+    for (const Light& l : level.lights) sun += l.type == LightType::kDirectional ? 1 : 0;
+    const size_t points = level.lights.size() - sun;
+    if (entityLights > 0)
+        out.push_back("light entities: " + std::to_string(points) + " from " + entityWhere);
+    else
+        out.push_back(
+            "light entities: none (q3map2 removed them from the BSP and no source "
+            ".map ships with it)");
+    size_t shaders = 0, triangles = 0;
+    for (const MeshInstance& mesh : level.instances)
+        if (glm::any(glm::greaterThan(level.materials[mesh.material].emissive, glm::vec3(0.0f)))) {
+            ++shaders;
+            triangles += mesh.indices.size() / 3;
+        }
+    out.push_back("surface lights: " + (shaders ? std::to_string(shaders) + " shader(s), " +
+                                                      std::to_string(triangles) + " triangles"
+                                                : std::string("none")));
+    const float sky = std::max({level.skyRadiance.x, level.skyRadiance.y, level.skyRadiance.z});
+    out.push_back(std::string("sky: ") + (sun ? "a sun" : "no sun") + ", " +
+                  (sky > 0.0f ? "sky light " + std::to_string(sky) + " cd/m^2" : "no sky light"));
+    if (entityLights > 0) return;
+    if (importedLightmapLit(level.importedLightmap)) {
+        level.lightmapIsImported = true;
+        for (Light& l : level.lights) l.role = LightRole::kBaked;
+        out.push_back(
+            "lightmaps: recovered from q3map2's own (the map's lightmap lump) in place "
+            "of the engine's bake, since its light entities are lost; the sun, sky "
+            "and surface lights light the grid and probes only");
+        return;
+    }
+    if (level.lights.empty() && shaders == 0 && !(sky > 0.0f)) {
+        level.lightless = mapWhere +
+                          ": no light source: no light entities (in the BSP or a source .map), "
+                          "no sun, sky or surface lights, and q3map2's lightmaps are black; a "
+                          "bake would be black";
+        out.push_back("no light at all: the bake refuses the map");
+    }
 }
 
 // The primaries (q3_import.hpp, "Which lights are primaries"): each light's share of the
@@ -467,7 +619,7 @@ void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& s
             // The older way: q3map2 makes the sky's faces area lights of value S, which is a
             // sky of 0.25 S cd/m^2 (q3_import.hpp) in the light image's normalised mean colour.
             level.skyRadiance = float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) *
-                                normalisedColour(meanLinearColour(files, lightImageOf(*script)));
+                                normalisedColour(meanColours(files, lightImageOf(*script)).bytes);
         }
         return;  // one sky per map
     }
@@ -486,18 +638,23 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     if (options.patchLevel < 1 || options.patchLevel > 64)
         throw Error(spec + ": patch level " + std::to_string(options.patchLevel) +
                     "; expected 1 .. 64 segments");
-    const std::vector<std::string> folders =
-        options.gameFolders.empty() ? defaultQuake3Folders() : options.gameFolders;
-    GameFiles files;
-    addGameFolders(files, folders);
-    const MapSource map = findMap(spec, files, folders);
-    const BspFile bsp = parseBsp(map.bytes, map.where);
+    OpenedMap opened = openQuake3Map(spec, options.gameFolders);
+    const GameFiles& files = opened.files;
+    const BspFile& bsp = opened.bsp;
+    const MapSource map{opened.where};
 
     SourceLevel level;
     level.sourcePath = map.where;
-    if (endsWith(spec, ".bsp") && fileKey(spec).find(".pk3:") == std::string::npos)
-        level.inputFiles.push_back(spec);
+    if (!opened.bspFile.empty()) level.inputFiles.push_back(opened.bspFile);
     for (const auto& archive : files.archives) level.inputFiles.push_back(archive->path());
+    level.inputFiles.insert(level.inputFiles.end(), files.looseFiles.begin(),
+                            files.looseFiles.end());
+    level.importNotes = bsp.notes;
+    const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
+    const LightmapPages lightmaps =
+        readLightmapPages(bsp, entities, files, opened.name, opened.bspFile, map.where);
+    level.importNotes.insert(level.importNotes.end(), lightmaps.notes.begin(),
+                             lightmaps.notes.end());
     const ShaderScripts scripts = loadShaderScripts(files);
     MaterialTable materials{level, files, {}, {}, 0};
     std::map<uint32_t, MeshInstance> meshes;  // by material
@@ -528,7 +685,9 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         std::vector<Vertex> vertices;
         for (const PatchPoint& p : points) vertices.push_back(levelVertex(p));
         appendOriented(mesh, vertices, triangles);
-        appendImportedLight(level.importedLightmap, points, triangles, f.lightmap);
+        const uint32_t page = lightmaps.colourPage(f.lightmap);
+        appendImportedLight(level.importedLightmap, points, triangles,
+                            page == UINT32_MAX ? -1 : int32_t(page));
     }
     for (auto& [material, mesh] : meshes) {
         mesh.material = material;
@@ -536,11 +695,11 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         level.instances.push_back(std::move(mesh));
     }
     level.importedLightmap.producer = "q3map2";
-    level.importedLightmap.pageSize = kLightmapPageSize;
-    level.importedLightmap.pages = bsp.lightmaps;
+    level.importedLightmap.pageSize = lightmaps.pageSize;
+    level.importedLightmap.pages = lightmaps.colour;
+    level.importedLightmap.directionPages = lightmaps.direction;
     level.importedLightmap.luxPerValue = 1.0f;  // one lightmap unit is one lux (q3_import.hpp)
     addSunAndSky(level, bsp, scripts, files);
-    const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
     // q3map2's lightmap density: one luxel per 16 units, times worldspawn's _lightmapscale.
     const float luxelUnits =
         16.0f *
@@ -554,9 +713,16 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         nonsolid.push_back(script && script->surfaceParms.count("nonsolid"));
     }
     level.collision = importCollision(bsp, entities, nonsolid, map.where, level.importNotes);
+    addComputedSpawn(level, map.where);
+    const size_t skyLights = level.lights.size();
     addLights(level, entities, map.where);
+    size_t entityLights = level.lights.size() - skyLights;
+    std::string entityWhere = "the BSP's entities", sourceWhere;
+    if (entityLights == 0 && (entityLights = addSourceLights(level, opened, sourceWhere)) > 0)
+        entityWhere = "the source .map " + sourceWhere;
     noteIgnoredAmbient(level, entities, map.where);
     chooseLightRoles(level, options.primaryLights);
+    settleLightSources(level, entityLights, entityWhere, map.where);
     checkLevelLimits(level);
     return level;
 }

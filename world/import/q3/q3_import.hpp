@@ -1,6 +1,8 @@
-// Quake 3 / OpenArena maps as levels: a map named as a .bsp file, as PAK.pk3:maps/NAME.bsp, or
-// as NAME alone (searched in the installed game's pk3s) is read into the same SourceLevel as a
-// glTF, with its textures and shader scripts from the game's pk3s.
+// Quake 3 / OpenArena / Nexuiz maps as levels: a map named as a .bsp file, as
+// PAK.pk3:maps/NAME.bsp, or as NAME alone (searched in the installed games) is read into the same
+// SourceLevel as a glTF, with its textures, shader scripts and external lightmaps from its game's
+// search path (game_search_path.hpp), q3map2's lightmaps wherever q3map2 left them
+// (lightmap_pages.hpp), and a computed view when it has no player spawn (computed_view.hpp).
 #pragma once
 
 #include <cstdint>
@@ -29,6 +31,15 @@ namespace onelight::world {
    I = 0.46875 L x (R / 64 m)^2 / (1 - 1/16)^2 cd (q3map2 gives 0.46875 L there, for any fade).
    Worldspawn ambient, _ambient and _minlight (constants q3map2 adds to every luxel, light from
    nowhere) are ignored and reported: the bake's bounces light what they stood in for.
+   Where the lights come from (q3map2 strips light entities from the BSP it compiles): the
+   BSP's entities; else the map's source .map (maps/NAME.map or sources/maps/NAME.map in the
+   BSP's pk3, then the game's; NAME.map beside a loose NAME.bsp; map_source.hpp), its light
+   entities as the BSP's would be, those more than half the map's size (>= 16 m) outside its
+   geometry left out, a source that fails to parse ignored with a note; else q3map2's own
+   lightmaps are the level's (SourceLevel::lightmapIsImported: the bake copies them and the
+   remaining lights, all baked, light the grid and probes only). A map with no light source at
+   all is SourceLevel::lightless, which the bake refuses. SourceLevel::lightSources says which,
+   one line per kind.
    Which lights are primaries (the lights the runtime draws with shadow maps): a light is a
    candidate when it is the brightest on at least kQuake3PrimaryAreaShare of the map's surface
    area (each triangle's centroid, cosine-weighted illuminance, no shadows: an estimate, the
@@ -41,13 +52,14 @@ namespace onelight::world {
    blend of that stage BLEND (stochastic coverage, bake/README.md); cull none makes it double-sided;
    q3map_surfacelight S is emission of 0.25 S cd/m^2 (q3map2 gives an area light S x area x 0.25
    photons where a point light has light x 7500), times its q3map_lightimage (or its colour
-   texture) divided by the brightest channel of that image's mean linear colour: q3map2 lights
-   with the image's mean colour normalised to a brightest channel of 1. Surfaceparm nodraw, sky,
-   fog, hint and skip leave a surface out. A sky shader's q3map_sun is a primary directional
-   light (intensity in lux), its q3map_skylight V a uniform sky of V / pi cd/m^2 (V lux on an
-   open floor); without one, its q3map_surfacelight S (q3map2
-   makes the sky's faces area lights) a uniform sky of 0.25 S cd/m^2 in its light image's mean
-   colour normalised to a brightest channel of 1.
+   texture), its factor per channel q3map2's colour over the image's mean sRGB-decoded value:
+   q3map2 lights with the mean of the image's bytes as stored (display-referred, not decoded)
+   normalised to a brightest channel of 1, so the emission averages to 0.25 S times that.
+   Surfaceparm nodraw, sky, fog, hint and skip leave a surface out. A sky shader's q3map_sun is a
+   primary directional light (intensity in lux), its q3map_skylight V a uniform sky of V / pi cd/m^2
+   (V lux on an open floor); without one, its q3map_surfacelight S (q3map2 makes the sky's faces
+   area lights) a uniform sky of 0.25 S cd/m^2 in its light image's mean bytes normalised to a
+   brightest channel of 1.
 */
 inline constexpr double kQuake3MetresPerUnit = 1.0 / 32.0;
 inline constexpr double kQuake3CandelaPerLight = 7500.0 / (32.0 * 32.0);
@@ -58,7 +70,9 @@ inline constexpr double kQuake3LinearScale = 7500.0 / 8000.0;  // q3map2's point
 struct Quake3Options {
     uint32_t patchLevel = 4;     // segments per patch piece and direction, 1 .. 64
     uint32_t primaryLights = 8;  // at most this many primary candidates (q3_import.hpp, Lights)
-    std::vector<std::string> gameFolders;  // folders of pk3s; empty: the installed OpenArena's
+    std::vector<std::string> gameFolders;  // the game's folders (pk3s and loose files, later
+                                           // wins); empty: the installed game the map is in
+                                           // (game_search_path.hpp)
 };
 
 /// The installed OpenArena game data folders that exist (Debian's openarena-data and maps).

@@ -1,0 +1,309 @@
+#!/usr/bin/env python3
+"""Every installed Quake 3 (IBSP v46) map through the engine, one at a time.
+
+For each map of the installed games' pk3s (OpenArena's baseoa, Nexuiz's data; the version the
+game loads when several pk3s hold one): compile, bake at draft, draw one frame from spawn 0
+headless, and draw the same view with the map's own q3map2 lightmaps (--view q3map2) at the same
+exposure. Reports per map: OK, approximated (the import or bake warned: what it approximated or
+left out) or refused (with the reason), compile and bake seconds, the bake's peak memory, the
+package's size, the frame's GPU time, and how the two frames' mean colours differ (luminance
+ratio, chromaticity distance in CIE xy). Writes a markdown table per game and a summary to OUT
+(atomically: a temporary file renamed over it, after every map, so that an interrupted run keeps
+what it measured), with a progress line per map on stderr. A map
+that fails is reported and the run carries on.
+
+  scripts/corpus.py OUT.md [--games openarena,nexuiz] [--maps REGEX] [--limit N]
+                    [--bin build/bin] [--work DIR] [--size WxH] [--timeout S]
+"""
+import argparse
+import json
+import os
+import re
+import resource
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+import zipfile
+import zlib
+
+GAMES = {
+    "openarena": ("OpenArena", "/usr/share/games/openarena/baseoa"),
+    "nexuiz": ("Nexuiz", "/usr/share/games/nexuiz/data"),
+}
+
+
+def maps_of(folder):
+    """(name, pk3, inner) of each IBSP v46 map, the last pk3 in load order winning; and how
+    many map files other pk3s hold that the game does not load."""
+    if not os.path.isdir(folder):
+        return [], 0
+    pk3s = sorted((f for f in os.listdir(folder) if f.lower().endswith(".pk3")),
+                  key=lambda f: (f.lower(), f))
+    found, shadowed = {}, 0
+    for pk3 in pk3s:
+        path = os.path.join(folder, pk3)
+        try:
+            archive = zipfile.ZipFile(path)
+        except (zipfile.BadZipFile, OSError) as e:
+            print(f"corpus: {path}: not a readable pk3 ({e}); skipped", file=sys.stderr)
+            continue
+        for inner in archive.namelist():
+            m = re.fullmatch(r"maps/(.+)\.bsp", inner, re.IGNORECASE)
+            if not m:
+                continue
+            with archive.open(inner) as f:
+                head = f.read(8)
+            if len(head) < 8 or head[:4] != b"IBSP" or struct.unpack("<i", head[4:])[0] != 46:
+                continue
+            key = m.group(1).lower()
+            shadowed += key in found
+            found[key] = (m.group(1), path, inner)
+    return [found[k] for k in sorted(found)], shadowed
+
+
+def run(argv, timeout):
+    """(exit code, output, seconds); exit code None on a timeout."""
+    start = time.monotonic()
+    try:
+        p = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                           timeout=timeout, text=True, errors="replace")
+        return p.returncode, p.stdout, time.monotonic() - start
+    except subprocess.TimeoutExpired as e:
+        out = e.stdout.decode(errors="replace") if isinstance(e.stdout, bytes) else e.stdout
+        return None, out or "", time.monotonic() - start
+
+
+def reason(output, fallback):
+    for line in output.splitlines():
+        if ": error: " in line:
+            return line.split(": error: ", 1)[1]
+    lines = [l for l in output.splitlines() if l.strip()]
+    return lines[-1] if lines else fallback
+
+
+def png_mean_rgb(path):
+    """The mean sRGB-decoded (linear) colour of an 8-bit RGB or RGBA PNG."""
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        raise ValueError(f"{path}: not a PNG")
+    at, idat, width, height, channels = 8, b"", 0, 0, 0
+    while at < len(data):
+        length, kind = struct.unpack(">I4s", data[at:at + 8])
+        body = data[at + 8:at + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
+            if depth != 8 or colour not in (2, 6) or body[12] != 0:
+                raise ValueError(f"{path}: expected 8-bit RGB or RGBA, not interlaced")
+            channels = 3 if colour == 2 else 4
+        elif kind == b"IDAT":
+            idat += body
+        at += 12 + length
+    raw, stride = zlib.decompress(idat), width * channels
+    previous, sums = bytearray(stride), [0.0, 0.0, 0.0]
+    table = [((v / 255) / 12.92 if v <= 10 else ((v / 255 + 0.055) / 1.055) ** 2.4)
+             for v in range(256)]
+    for y in range(height):
+        f, row = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = row[i - channels] if i >= channels else 0
+            b, c = previous[i], previous[i - channels] if i >= channels else 0
+            if f == 1:
+                row[i] = (row[i] + a) & 255
+            elif f == 2:
+                row[i] = (row[i] + b) & 255
+            elif f == 3:
+                row[i] = (row[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                row[i] = (row[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        for x in range(width):
+            for k in range(3):
+                sums[k] += table[row[x * channels + k]]
+        previous = row
+    n = max(1, width * height)
+    return [s / n for s in sums]
+
+
+def luminance(rgb):
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
+
+
+def chromaticity(rgb):
+    """CIE xy of a linear sRGB colour; None when black."""
+    x = 0.4124 * rgb[0] + 0.3576 * rgb[1] + 0.1805 * rgb[2]
+    y = 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]
+    z = 0.0193 * rgb[0] + 0.1192 * rgb[1] + 0.9505 * rgb[2]
+    s = x + y + z
+    return None if s <= 1e-9 else (x / s, y / s)
+
+
+def one_map(name, pk3, inner, args, work):
+    spec = f"{pk3}:{inner}"
+    package = os.path.join(work, re.sub(r"[^A-Za-z0-9_.-]", "_", name) + ".olpak")
+    report = package[:-6] + ".json"
+    row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused", "why": ""}
+    code, out, row["compile_s"] = run([args.bake, "compile", spec, "-o", package], args.timeout)
+    if code != 0:
+        row["why"] = "compile: " + (reason(out, "failed") if code is not None else "timed out")
+        return row
+    code, out, row["bake_s"] = run([args.bake, spec, "-o", package, "--quality", "draft",
+                                    "--quiet", "--report", report], args.timeout)
+    if code != 0:
+        row["why"] = "bake: " + (reason(out, "failed") if code is not None else "timed out")
+        return row
+    warnings = []
+    try:
+        r = json.load(open(report))
+        row["peak_mib"] = r.get("peak_memory_bytes", 0) / 2**20
+        warnings = r.get("warnings", [])
+    except (OSError, ValueError):
+        pass
+    if "peak_mib" not in row:  # the largest child so far, an upper bound
+        row["peak_mib"] = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
+    row["package_mib"] = os.path.getsize(package) / 2**20
+    captures = os.path.join(work, "captures")
+    base = [args.game_exe, package, "--headless", "--frames", "1", "--size", args.size]
+    own = os.path.join(captures, name.replace("/", "_") + "-onelight")
+    code, out, _ = run(base + ["--capture", own], args.timeout)
+    if code != 0:
+        row["why"] = "draw: " + (reason(out, "failed") if code is not None else "timed out")
+        return row
+    try:
+        capture = json.load(open(own + ".json"))
+        row["frame_ms"] = capture["timings_ms"]["gpu"]
+        ev100 = capture["camera"]["ev100"]
+        mean = png_mean_rgb(own + ".png")
+        row["luminance"] = luminance(mean)
+        q3 = os.path.join(captures, name.replace("/", "_") + "-q3map2")
+        code, out, _ = run(base + ["--view", "q3map2", "--ev100", f"{ev100:.4f}", "--capture", q3],
+                           args.timeout)
+        if code == 0:
+            theirs = png_mean_rgb(q3 + ".png")
+            if luminance(theirs) > 1e-6:
+                row["lum_ratio"] = luminance(mean) / luminance(theirs)
+            a, b = chromaticity(mean), chromaticity(theirs)
+            if a and b:
+                row["dxy"] = ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
+        else:
+            warnings.append("q3map2 view: " + reason(out, "failed"))
+    except (OSError, ValueError, KeyError) as e:
+        warnings.append(f"capture unread: {e}")
+    row["status"] = "approximated" if warnings else "OK"
+    row["why"] = "; ".join(w.split(": ", 1)[-1] if w.startswith(("/", spec)) else w
+                           for w in warnings)
+    return row
+
+
+def cell(row, key, fmt):
+    return fmt.format(row[key]) if key in row else "–"
+
+
+def table(game, rows, shadowed):
+    lines = [f"## {game}", "",
+             f"{len(rows)} maps" + (f" ({shadowed} older copies in earlier pk3s not run)"
+                                   if shadowed else ""), "",
+             "| map | pk3 | result | compile s | draft bake s | peak MiB | package MiB | "
+             "frame ms | lum. ratio | Δxy | notes |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        why = r["why"].replace("|", "\\|").replace("\n", " ")
+        if len(why) > 300:
+            why = why[:297] + "..."
+        lines.append("| " + " | ".join([
+            r["map"], r["pk3"], r["status"], cell(r, "compile_s", "{:.1f}"),
+            cell(r, "bake_s", "{:.1f}"), cell(r, "peak_mib", "{:.0f}"),
+            cell(r, "package_mib", "{:.1f}"), cell(r, "frame_ms", "{:.1f}"),
+            cell(r, "lum_ratio", "{:.2f}"), cell(r, "dxy", "{:.3f}"), why]) + " |")
+    return lines + [""]
+
+
+def write_atomically(path, text):
+    folder = os.path.dirname(os.path.abspath(path))
+    fd, temporary = tempfile.mkstemp(prefix=".corpus-", dir=folder)
+    try:
+        with os.fdopen(fd, "w") as f:
+            f.write(text)
+            f.flush()
+            os.fsync(f.fileno())
+        mask = os.umask(0)
+        os.umask(mask)
+        os.chmod(temporary, 0o666 & ~mask)  # as open() would make it, not mkstemp's 0600
+        os.replace(temporary, path)
+    except BaseException:
+        os.unlink(temporary)
+        raise
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("out", help="the markdown file to write")
+    p.add_argument("--games", default="openarena,nexuiz", help="comma-separated: " +
+                   ", ".join(GAMES))
+    p.add_argument("--maps", default="", help="only maps whose name matches this regex")
+    p.add_argument("--limit", type=int, default=0, help="at most N maps per game (0: all)")
+    p.add_argument("--bin", default=os.path.join(here, "..", "build", "bin"))
+    p.add_argument("--work", default="", help="where packages and captures go (default: temp)")
+    p.add_argument("--size", default="320x180", help="the frames' size")
+    p.add_argument("--timeout", type=float, default=1800, help="seconds per step")
+    args = p.parse_args()
+    args.bake = os.path.join(args.bin, "onelight-bake")
+    args.game_exe = os.path.join(args.bin, "onelight")
+    for exe in (args.bake, args.game_exe):
+        if not os.access(exe, os.X_OK):
+            sys.exit(f"corpus: {exe}: missing; build onelight and onelight-bake first")
+    work = args.work or tempfile.mkdtemp(prefix="onelight-corpus-")
+    os.makedirs(os.path.join(work, "captures"), exist_ok=True)
+    pattern = re.compile(args.maps) if args.maps else None
+    sections, counts, started = [], {"OK": 0, "approximated": 0, "refused": 0}, time.monotonic()
+    for key in args.games.split(","):
+        if key not in GAMES:
+            sys.exit(f"corpus: --games {key}: expected one of {', '.join(GAMES)}")
+        game, folder = GAMES[key]
+        maps, shadowed = maps_of(folder)
+        if pattern:
+            maps = [m for m in maps if pattern.search(m[0])]
+        if args.limit:
+            maps = maps[:args.limit]
+        rows = []
+        for i, (name, pk3, inner) in enumerate(maps):
+            try:
+                row = one_map(name, pk3, inner, args, work)
+            except Exception as e:  # a map must never stop the run
+                row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused",
+                       "why": f"corpus script: {e}"}
+            rows.append(row)
+            counts[row["status"]] += 1
+            write_report(args, counts, sections + table(game, rows, shadowed), started,
+                         final=False)  # an interrupted run keeps what it measured
+            print(f"corpus: {game} {i + 1}/{len(maps)} {name}: {row['status']}"
+                  f" (compile {row.get('compile_s', 0):.1f} s, bake {row.get('bake_s', 0):.1f} s)"
+                  + (f": {row['why'][:160]}" if row["why"] else ""), file=sys.stderr, flush=True)
+        if maps or not os.path.isdir(folder):
+            sections += table(game, rows, shadowed) if maps else [f"## {game}", "",
+                                                                   f"{folder}: not installed", ""]
+    write_report(args, counts, sections, started, final=True)
+
+
+def write_report(args, counts, sections, started, final):
+    total = sum(counts.values())
+    head = ["# Quake 3 map corpus", "",
+            f"`{' '.join(sys.argv)}`, {time.strftime('%Y-%m-%d')}, "
+            f"{time.monotonic() - started:.0f} s" + ("" if final else " (still running)"), "",
+            f"**{total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "
+            f"{counts['refused']} refused.**", "",
+            "Columns: compile and draft-bake wall seconds; the bake report's peak memory; the "
+            "package's size; the GPU time of one frame from spawn 0 (headless, lavapipe, "
+            f"{args.size}); the frame's mean luminance over that of the q3map2 view of the same "
+            "camera at the same exposure, and the distance of their mean colours' CIE xy "
+            "chromaticities. Approximated: the import or bake warned (notes).", ""]
+    write_atomically(args.out, "\n".join(head + sections))
+    if final:
+        print(f"corpus: {total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "
+              f"{counts['refused']} refused; {args.out}", file=sys.stderr)
+
+if __name__ == "__main__":
+    main()

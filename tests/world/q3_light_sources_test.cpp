@@ -1,0 +1,375 @@
+// Where a Quake 3 map's light comes from when q3map2 has stripped its light entities: the map's
+// source .map (beside the BSP or in its pk3), else q3map2's own lightmaps; a map with no light
+// at all is marked for the bake to refuse; the .map parser against hostile text; the colour of a
+// surface light (q3map2's display-referred light-image mean).
+#include <gtest/gtest.h>
+#include <zip.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tests/support/error_message.hpp"
+#include "world/error.hpp"
+#include "world/import/level_import.hpp"
+#include "world/import/q3/bsp_file.hpp"
+#include "world/import/q3/map_source.hpp"
+
+namespace onelight::world::q3 {
+namespace {
+
+using onelight::test::errorMessage;
+
+std::filesystem::path freshFolder(const std::string& name) {
+    const auto dir = std::filesystem::temp_directory_path() / "onelight_q3_lights" / name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+Quake3Options withGameIn(const std::filesystem::path& folder) {
+    Quake3Options options;
+    options.gameFolders = {folder.string()};
+    return options;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary).write(text.data(), std::streamsize(text.size()));
+}
+
+// A 256-unit floor square (z = 0, facing +z) with one shader and the entity text given; its
+// lightmap page is `lightmapValue` everywhere (0: no page at all).
+struct SmallBsp {
+    std::string entities = "{\n\"classname\" \"worldspawn\"\n}\n";
+    std::string shader = "textures/test/floor";
+    uint8_t lightmapValue = 0;
+
+    std::vector<uint8_t> bytes() const {
+        BspShader s{};
+        std::strncpy(s.name, shader.c_str(), sizeof s.name - 1);
+        std::vector<BspVertex> vertices;
+        for (const auto& p :
+             {std::pair{0.0f, 0.0f}, {256.0f, 0.0f}, {256.0f, 256.0f}, {0.0f, 256.0f}}) {
+            BspVertex v{};
+            v.position[0] = p.first;
+            v.position[1] = p.second;
+            v.normal[2] = 1.0f;
+            v.lightmap[0] = p.first / 256.0f;
+            v.lightmap[1] = p.second / 256.0f;
+            vertices.push_back(v);
+        }
+        const std::vector<int32_t> indices = {0, 1, 2, 0, 2, 3};
+        BspSurface f{};
+        f.type = kSurfacePlanar;
+        f.vertexCount = 4;
+        f.indexCount = 6;
+        f.fog = -1;
+        f.lightmap = lightmapValue ? 0 : -1;
+        std::vector<uint8_t> lightmaps;
+        if (lightmapValue) lightmaps.assign(kLightmapPageBytes, lightmapValue);
+        BspHeader h{};
+        std::memcpy(h.magic, kBspMagic, 4);
+        h.version = kBspVersion;
+        std::vector<uint8_t> body;
+        const auto lump = [&](Lump l, const void* data, size_t size) {
+            h.lumps[l] = {int32_t(sizeof(BspHeader) + body.size()), int32_t(size)};
+            const auto* b = static_cast<const uint8_t*>(data);
+            body.insert(body.end(), b, b + size);
+            body.resize((body.size() + 3) / 4 * 4, 0);
+        };
+        lump(kLumpEntities, entities.c_str(), entities.size() + 1);
+        lump(kLumpShaders, &s, sizeof s);
+        lump(kLumpDrawVerts, vertices.data(), vertices.size() * sizeof(BspVertex));
+        lump(kLumpDrawIndexes, indices.data(), indices.size() * sizeof(int32_t));
+        lump(kLumpSurfaces, &f, sizeof f);
+        lump(kLumpLightmaps, lightmaps.data(), lightmaps.size());
+        std::vector<uint8_t> out(sizeof h + body.size());
+        std::memcpy(out.data(), &h, sizeof h);
+        std::memcpy(out.data() + sizeof h, body.data(), body.size());
+        return out;
+    }
+    std::string text() const {
+        const std::vector<uint8_t> b = bytes();
+        return std::string(b.begin(), b.end());
+    }
+};
+
+// A pk3 (zip) of the given files, written with libzip.
+void writePk3(const std::filesystem::path& path,
+              const std::vector<std::pair<std::string, std::string>>& files) {
+    int error = 0;
+    zip_t* zip = zip_open(path.string().c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+    ASSERT_NE(zip, nullptr);
+    for (const auto& [name, data] : files) {
+        zip_source_t* source = zip_source_buffer(zip, data.data(), data.size(), 0);
+        ASSERT_NE(source, nullptr);
+        ASSERT_GE(zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE), 0);
+    }
+    ASSERT_EQ(zip_close(zip), 0);  // reads the buffers: `files` outlives it
+}
+
+// A source .map as Radiant writes it: worldspawn with an old-format brush, a brushDef and a
+// patchDef2 (braces, comments and parentheses the parser must skip), a point light, a coloured
+// spot aimed at an info_null, and a linear light.
+const char* kSourceMap = R"(// entity 0
+{
+"classname" "worldspawn"
+"message" "http://example.org/ { not a brace }"
+// brush 0
+{
+( 0 0 0 ) ( 256 0 0 ) ( 0 256 0 ) test/floor 0 0 0 0.5 0.5 0 0 0
+( 0 0 -16 ) ( 0 256 -16 ) ( 256 0 -16 ) test/floor 0 0 0 0.5 0.5 0 0 0
+}
+// brush 1
+{
+brushDef
+{
+( 0 0 1 0 ) ( ( 0.03125 0 0 ) ( 0 0.03125 0 ) ) test/floor 0 0 0
+}
+}
+// brush 2
+{
+patchDef2
+{
+test/floor
+( 3 3 0 0 0 )
+(
+( ( 0 0 0 0 0 ) ( 0 64 0 0 1 ) ( 0 128 0 0 2 ) )
+( ( 64 0 0 1 0 ) ( 64 64 0 1 1 ) ( 64 128 0 1 2 ) )
+( ( 128 0 0 2 0 ) ( 128 64 0 2 1 ) ( 128 128 0 2 2 ) )
+)
+}
+}
+}
+// entity 1
+{
+"classname" "light"
+"origin" "32 64 128"
+"light" "300"
+}
+// entity 2
+{
+"classname" "light"
+"origin" "128 128 256"
+"light" "600"
+"target" "spot1"
+"_color" "1 0.5 0"
+}
+{
+"classname" "info_null"
+"targetname" "spot1"
+"origin" "128 128 0"
+}
+{
+"classname" "light"
+"origin" "64 64 64"
+"light" "200"
+"spawnflags" "1"
+}
+)";
+
+bool mentions(const std::vector<std::string>& lines, const std::string& text) {
+    for (const std::string& line : lines)
+        if (line.find(text) != std::string::npos) return true;
+    return false;
+}
+
+void expectTheSourceLights(const SourceLevel& level) {
+    ASSERT_EQ(level.lights.size(), 3u);
+    // As the BSP path gives them: (32, 64, 128) units is (1, 4, -2) m, 7.32 cd per "light".
+    const Light& point = level.lights[0];
+    EXPECT_EQ(point.type, LightType::kPoint);
+    EXPECT_EQ(point.position, glm::vec3(1.0f, 4.0f, -2.0f));
+    EXPECT_NEAR(point.intensity, 300.0 * 7500.0 / 1024.0, 1e-3);
+    const Light& spot = level.lights[1];
+    EXPECT_EQ(spot.type, LightType::kSpot);
+    EXPECT_NEAR(std::tan(spot.outerCone), 80.0 / 256.0, 1e-6);
+    EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
+    EXPECT_EQ(spot.color, glm::vec3(1.0f, 0.5f, 0.0f));
+    EXPECT_GT(level.lights[2].range, 0.0f);  // linear: a range
+    EXPECT_FALSE(level.lightmapIsImported);
+    EXPECT_TRUE(level.lightless.empty());
+}
+
+TEST(Quake3LightSources, ASourceMapBesideTheBspGivesItsLights) {
+    const auto folder = freshFolder("beside");
+    SmallBsp bsp;
+    bsp.lightmapValue = 40;
+    writeText(folder / "room.bsp", bsp.text());
+    writeText(folder / "room.map", kSourceMap);
+    const SourceLevel level =
+        importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("beside_game")));
+    expectTheSourceLights(level);
+    EXPECT_TRUE(mentions(level.lightSources, "light entities: 3 from the source .map "))
+        << level.lightSources[0];
+    EXPECT_TRUE(mentions(level.lightSources, "room.map")) << level.lightSources[0];
+    EXPECT_TRUE(mentions(level.lightSources, "surface lights: none"));
+}
+
+TEST(Quake3LightSources, ASourceMapInThePk3GivesItsLights) {
+    const auto folder = freshFolder("pk3");
+    SmallBsp bsp;
+    writePk3(folder / "room.pk3",
+             {{"maps/room.bsp", bsp.text()}, {"sources/maps/room.map", kSourceMap}});
+    const SourceLevel level = importLevel((folder / "room.pk3").string() + ":maps/room.bsp",
+                                          withGameIn(freshFolder("pk3_game")));
+    expectTheSourceLights(level);
+    EXPECT_TRUE(mentions(level.lightSources, "room.pk3:sources/maps/room.map"))
+        << level.lightSources[0];
+}
+
+// The BSP's own light entities win over a source (they are what q3map2 lit with).
+TEST(Quake3LightSources, TheBspsOwnLightsWin) {
+    const auto folder = freshFolder("own");
+    SmallBsp bsp;
+    bsp.entities += "{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n}\n";
+    writeText(folder / "room.bsp", bsp.text());
+    writeText(folder / "room.map", kSourceMap);
+    const SourceLevel level =
+        importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("own_game")));
+    ASSERT_EQ(level.lights.size(), 1u);
+    EXPECT_TRUE(mentions(level.lightSources, "light entities: 1 from the BSP's entities"));
+}
+
+TEST(Quake3LightSources, WithoutASourceQ3map2sLightmapsAreTheLevels) {
+    const auto folder = freshFolder("recovered");
+    SmallBsp bsp;
+    bsp.lightmapValue = 40;
+    writePk3(folder / "room.pk3", {{"maps/room.bsp", bsp.text()}});
+    const SourceLevel level = importLevel((folder / "room.pk3").string() + ":maps/room.bsp",
+                                          withGameIn(freshFolder("recovered_game")));
+    EXPECT_TRUE(level.lights.empty());
+    EXPECT_TRUE(level.lightmapIsImported);
+    EXPECT_TRUE(level.lightless.empty());
+    EXPECT_TRUE(mentions(level.lightSources, "light entities: none"));
+    EXPECT_TRUE(mentions(level.lightSources, "lightmaps: recovered from q3map2's own"));
+}
+
+// No lights, no source, no sun, sky or surface lights and no lightmaps: the import still reads
+// the geometry, but the level is marked lightless with a message naming the map, which the bake
+// refuses with (bake_level.cpp startReport) instead of baking black.
+TEST(Quake3LightSources, AMapWithNoLightIsNotBakedBlackInSilence) {
+    const auto folder = freshFolder("dark");
+    writeText(folder / "dark.bsp", SmallBsp{}.text());
+    const SourceLevel level =
+        importLevel((folder / "dark.bsp").string(), withGameIn(freshFolder("dark_game")));
+    EXPECT_FALSE(level.lightmapIsImported);
+    EXPECT_NE(level.lightless.find("dark.bsp: no light source"), std::string::npos)
+        << level.lightless;
+    EXPECT_NE(level.lightless.find("a bake would be black"), std::string::npos);
+    EXPECT_TRUE(mentions(level.lightSources, "no light at all"));
+}
+
+TEST(Quake3MapSource, HostileTextGivesOneLineNamingTheLine) {
+    const auto parse = [](const std::string& text) {
+        return errorMessage([&] { (void)parseMapSource(text, "bad.map"); });
+    };
+    EXPECT_EQ(parse("{\n\"classname\" \"light\"\n"),
+              "bad.map: line 1: an entity opened here is never closed with '}'");
+    EXPECT_EQ(parse("{\n{\n( 0 0 0 ) ( 1 0 0 ) ( 0 1 0 ) x 0 0 0 1 1 0 0 0\n"),
+              "bad.map: line 2: a brush or patch opened here is never closed with '}'");
+    EXPECT_EQ(parse("{\n\"classname\" \"light\n}\n"), "bad.map: line 2: a quote is never closed");
+    EXPECT_EQ(parse("{\n\"classname\"\n}\n"),
+              "bad.map: line 2: key \"classname\" has no quoted value");
+    EXPECT_EQ(parse("}\n"), "bad.map: line 1: expected '{' to open an entity");
+    EXPECT_EQ(parse("{\nclassname light\n}\n"),
+              "bad.map: line 2: expected a quoted key, a brush or '}'");
+    const std::string deep = "{\n" + std::string(100000, '{');
+    EXPECT_NE(parse(deep).find("bad.map: line 2: blocks nested deeper than"), std::string::npos);
+    // Comments and empty text are fine.
+    EXPECT_TRUE(parseMapSource("// nothing\n", "empty.map").empty());
+}
+
+// A source whose values are not finite (huge or NaN) or that does not parse is ignored with one
+// warning naming it; the map still imports, on q3map2's lightmaps. A light far outside the map
+// is left out with a note.
+TEST(Quake3MapSource, HostileSourcesAreIgnoredWithAWarning) {
+    for (const std::string& source :
+         {std::string("{\n\"classname\" \"light\"\n\"origin\" \"1e999 0 0\"\n}\n"),
+          std::string("{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n\"light\" \"nan\"\n}\n"),
+          std::string("{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n")}) {
+        const auto folder = freshFolder("hostile");
+        SmallBsp bsp;
+        bsp.lightmapValue = 40;
+        writeText(folder / "room.bsp", bsp.text());
+        writeText(folder / "room.map", source);
+        const SourceLevel level =
+            importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("hostile_game")));
+        EXPECT_TRUE(level.lights.empty());
+        EXPECT_TRUE(level.lightmapIsImported);
+        // One note names the source (the others say the map has no spawn, a view computed).
+        std::vector<std::string> aboutSource;
+        for (const std::string& note : level.importNotes)
+            if (note.find("room.map") != std::string::npos) aboutSource.push_back(note);
+        ASSERT_EQ(aboutSource.size(), 1u) << ::testing::PrintToString(level.importNotes);
+        EXPECT_NE(aboutSource[0].find("room.map: "), std::string::npos) << aboutSource[0];
+        EXPECT_NE(aboutSource[0].find("the map's source is ignored"), std::string::npos)
+            << aboutSource[0];
+    }
+    const auto folder = freshFolder("far");
+    SmallBsp bsp;
+    writeText(folder / "room.bsp", bsp.text());
+    writeText(folder / "room.map",
+              "{\n\"classname\" \"light\"\n\"origin\" \"1e30 0 0\"\n}\n"
+              "{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n}\n");
+    const SourceLevel level =
+        importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("far_game")));
+    ASSERT_EQ(level.lights.size(), 1u);
+    // Exactly one note about the far light (another says the view was computed: no spawn).
+    size_t farNotes = 0;
+    for (const std::string& note : level.importNotes)
+        farNotes += note.find("1 light(s) far outside the map's geometry left out") !=
+                    std::string::npos;
+    EXPECT_EQ(farNotes, 1u) << ::testing::PrintToString(level.importNotes);
+}
+
+// An uncompressed 24-bit TGA of the given bytes (RGB each), w x 1.
+std::string tga(const std::vector<std::array<uint8_t, 3>>& pixels) {
+    std::string out(18, '\0');
+    out[2] = 2;  // uncompressed true colour
+    out[12] = char(pixels.size() & 0xff);
+    out[13] = char(pixels.size() >> 8);
+    out[14] = 1;
+    out[16] = 24;
+    for (const auto& p : pixels) out += {char(p[2]), char(p[1]), char(p[0])};  // BGR
+    return out;
+}
+
+// q3map2 lights a surface light with its light image's mean bytes (display-referred, not
+// linearised) scaled to a brightest channel of 1; the engine's emission, the factor times the
+// sRGB-decoded texture, averages to 0.25 S times that colour.
+TEST(Quake3LightSources, ASurfaceLightHasQ3map2sColour) {
+    const auto game = freshFolder("lamp_game");
+    const std::vector<std::array<uint8_t, 3>> pixels = {{255, 200, 120}, {235, 220, 140}};
+    writePk3(game / "lamp.pk3",
+             {{"scripts/lamp.shader",
+               "textures/test/lamp\n{\n q3map_surfacelight 1000\n q3map_lightimage "
+               "textures/test/lamp.tga\n {\n  map textures/test/lamp.tga\n }\n}\n"},
+              {"textures/test/lamp.tga", tga(pixels)}});
+    const auto folder = freshFolder("lamp");
+    SmallBsp bsp;
+    bsp.shader = "textures/test/lamp";
+    writeText(folder / "lamp.bsp", bsp.text());
+    const SourceLevel level = importLevel((folder / "lamp.bsp").string(), withGameIn(game));
+    ASSERT_EQ(level.materials.size(), 1u);
+    const glm::vec3 bytes = glm::vec3(245.0f, 210.0f, 130.0f) / 255.0f;  // the mean bytes
+    const glm::vec3 q3map2Colour = bytes / bytes.x;
+    const auto decode = [](float v) {
+        return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+    };
+    for (int c = 0; c < 3; ++c) {
+        const float meanLinear = 0.5f * (decode(float(pixels[0][size_t(c)]) / 255.0f) +
+                                         decode(float(pixels[1][size_t(c)]) / 255.0f));
+        EXPECT_NEAR(level.materials[0].emissive[c] * meanLinear, 250.0f * q3map2Colour[c], 0.05f)
+            << "channel " << c;
+    }
+    EXPECT_TRUE(mentions(level.lightSources, "surface lights: 1 shader(s), 2 triangles"));
+}
+
+}  // namespace
+}  // namespace onelight::world::q3
