@@ -4,7 +4,6 @@
 // spawn, and a real OpenArena map when the game's packages are installed (openarena-081-maps,
 // openarena-081-textures, openarena-data).
 #include <gtest/gtest.h>
-#include <zip.h>
 
 #include <cmath>
 #include <cstring>
@@ -16,6 +15,8 @@
 #include <vector>
 
 #include "tests/support/error_message.hpp"
+#include "tests/world/q3_test_maps.hpp"
+#include "tests/world/world_test_support.hpp"
 #include "world/compile/compile_level.hpp"
 #include "world/error.hpp"
 #include "world/import/level_import.hpp"
@@ -34,13 +35,11 @@ namespace onelight::world::q3 {
 namespace {
 
 using onelight::test::errorMessage;
-
-std::filesystem::path freshFolder(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / "onelight_q3" / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
+using onelight::test::freshFolder;
+using onelight::test::Quake3BspBuilder;
+using onelight::test::tga;
+using onelight::test::writeFile;
+using onelight::test::writePk3;
 
 // Import options whose only game folder is an empty one of its own: no game data is found.
 Quake3Options withoutGame(const std::string& name) {
@@ -49,83 +48,12 @@ Quake3Options withoutGame(const std::string& name) {
     return options;
 }
 
-// A BSP written record by record: one shader, a square (4 vertices, 2 triangles) in the plane
-// z = 0 facing +z, and the entity text given.
-struct BspBuilder {
-    std::string entities = "{\n\"classname\" \"worldspawn\"\n}\n";
-    std::vector<BspShader> shaders;
-    std::vector<BspVertex> vertices;
-    std::vector<int32_t> indices;
-    std::vector<BspSurface> surfaces;
-    std::vector<uint8_t> lightmaps;  // whole pages, or empty
-    std::vector<BspBrushPlane> planes;
-    std::vector<BspModel> models;
-    std::vector<BspBrush> brushes;
-    std::vector<BspBrushSide> brushSides;
-
-    BspBuilder() {
-        BspShader s{};
-        std::strcpy(s.name, "textures/test/wall");
-        shaders.push_back(s);
-        for (const auto& p :
-             {std::pair{0.0f, 0.0f}, {64.0f, 0.0f}, {64.0f, 64.0f}, {0.0f, 64.0f}}) {
-            BspVertex v{};
-            v.position[0] = p.first;
-            v.position[1] = p.second;
-            v.normal[2] = 1.0f;
-            vertices.push_back(v);
-        }
-        indices = {0, 1, 2, 0, 2, 3};
-        BspSurface f{};
-        f.type = kSurfacePlanar;
-        f.vertexCount = 4;
-        f.indexCount = 6;
-        f.fog = -1;
-        surfaces.push_back(f);
-    }
-
-    std::vector<uint8_t> bytes() const {
-        BspHeader h{};
-        std::memcpy(h.magic, kBspMagic, 4);
-        h.version = kBspVersion;
-        std::vector<uint8_t> body;  // the lumps, after the header
-        const auto lump = [&](Lump l, const void* data, size_t size) {
-            h.lumps[l] = {int32_t(sizeof(BspHeader) + body.size()), int32_t(size)};
-            const auto* b = static_cast<const uint8_t*>(data);
-            body.insert(body.end(), b, b + size);
-            body.resize((body.size() + 3) / 4 * 4, 0);
-        };
-        lump(kLumpEntities, entities.c_str(), entities.size() + 1);
-        lump(kLumpShaders, shaders.data(), shaders.size() * sizeof(BspShader));
-        lump(kLumpDrawVerts, vertices.data(), vertices.size() * sizeof(BspVertex));
-        lump(kLumpDrawIndexes, indices.data(), indices.size() * sizeof(int32_t));
-        lump(kLumpSurfaces, surfaces.data(), surfaces.size() * sizeof(BspSurface));
-        lump(kLumpLightmaps, lightmaps.data(), lightmaps.size());
-        lump(kLumpPlanes, planes.data(), planes.size() * sizeof(BspBrushPlane));
-        lump(kLumpModels, models.data(), models.size() * sizeof(BspModel));
-        lump(kLumpBrushes, brushes.data(), brushes.size() * sizeof(BspBrush));
-        lump(kLumpBrushSides, brushSides.data(), brushSides.size() * sizeof(BspBrushSide));
-        std::vector<uint8_t> out(sizeof h + body.size());
-        std::memcpy(out.data(), &h, sizeof h);
-        if (!body.empty()) std::memcpy(out.data() + sizeof h, body.data(), body.size());
-        return out;
-    }
-
-    std::string write(const std::string& folder, const std::string& name) const {
-        const std::string path = (freshFolder(folder) / (name + ".bsp")).string();
-        const std::vector<uint8_t> b = bytes();
-        std::ofstream(path, std::ios::binary)
-            .write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));
-        return path;
-    }
-};
-
 std::string parseError(const std::vector<uint8_t>& bytes) {
     return errorMessage([&] { (void)parseBsp(bytes, "test.bsp"); });
 }
 
 TEST(Quake3Bsp, AHandMadeMapImportsInMetresWithYUp) {
-    BspBuilder b;
+    Quake3BspBuilder b;
     const SourceLevel level = importLevel(b.write("square", "square"), withoutGame("square"));
     ASSERT_EQ(level.instances.size(), 1u);
     const MeshInstance& mesh = level.instances[0];
@@ -146,7 +74,7 @@ TEST(Quake3Bsp, AHandMadeMapImportsInMetresWithYUp) {
 }
 
 TEST(Quake3Bsp, BadFilesGiveOneLineNamingThePlace) {
-    const std::vector<uint8_t> good = BspBuilder().bytes();
+    const std::vector<uint8_t> good = Quake3BspBuilder().bytes();
     EXPECT_NO_THROW((void)parseBsp(good, "test.bsp"));
     const auto expectError = [](const std::vector<uint8_t>& bytes, const std::string& fragment) {
         const std::string e = parseError(bytes);
@@ -164,35 +92,35 @@ TEST(Quake3Bsp, BadFilesGiveOneLineNamingThePlace) {
     std::vector<uint8_t> truncated(good.begin(), good.end() - 50);
     expectError(truncated, "outside the file");
     {
-        BspBuilder b;
+        Quake3BspBuilder b;
         b.surfaces[0].vertexCount = -1;
         expectError(b.bytes(), "surface 0: vertices 0 + -1");
     }
     {
-        BspBuilder b;
+        Quake3BspBuilder b;
         b.indices[4] = 9;
         expectError(b.bytes(), "surface 0: index 4 is 9; expected 0 .. 3");
     }
     {
-        BspBuilder b;
+        Quake3BspBuilder b;
         b.surfaces[0].shader = 3;
         expectError(b.bytes(), "surface 0: shader 3 of 1");
     }
     {
-        BspBuilder b;
+        Quake3BspBuilder b;
         b.surfaces[0].type = kSurfacePatch;
         b.surfaces[0].patchWidth = 2;
         b.surfaces[0].patchHeight = 2;
         expectError(b.bytes(), "a patch of 2 x 2 controls");
     }
     {
-        BspBuilder b;
+        Quake3BspBuilder b;
         b.vertices[1].position[0] = std::nanf("");
         expectError(b.bytes(), "lump 10 (vertices): vertex 1 is NaN or Inf in its position");
     }
     {
         // Lightmap coordinates a surface reads on its page must be numbers.
-        BspBuilder b;
+        Quake3BspBuilder b;
         b.lightmaps.assign(kLightmapPageBytes, 0);
         b.surfaces[0].lightmap = 0;
         b.vertices[2].lightmap[1] = std::numeric_limits<float>::infinity();
@@ -209,13 +137,13 @@ TEST(Quake3Bsp, BadFilesGiveOneLineNamingThePlace) {
         expectError(odd, "expected a multiple of its 44-byte records");
     }
     {
-        BspBuilder b;
+        Quake3BspBuilder b;
         b.lightmaps.assign(kLightmapPageBytes, 0);
         b.surfaces[0].lightmap = 2;
         expectError(b.bytes(), "surface 0: lightmap page 2 of 1");
     }
     {
-        BspBuilder b;
+        Quake3BspBuilder b;
         b.lightmaps.assign(100, 0);
         expectError(b.bytes(), "lump 14 (lightmaps) holds 100 bytes; expected whole pages");
     }
@@ -224,7 +152,7 @@ TEST(Quake3Bsp, BadFilesGiveOneLineNamingThePlace) {
 // q3map2's own light comes along for --view q3map2: each drawn triangle with its corners in the
 // level, its lightmap coordinates and page, or its vertex light where it has no page.
 TEST(Quake3Bsp, TheMapsOwnLightmapsAreKept) {
-    BspBuilder b;
+    Quake3BspBuilder b;
     b.lightmaps.assign(2 * kLightmapPageBytes, 7);
     b.surfaces[0].lightmap = 1;
     for (size_t v = 0; v < b.vertices.size(); ++v) {
@@ -284,7 +212,7 @@ TEST(Quake3Entities, ParseKeysAndNameTheLineOfAFault) {
 // q3map2's units and spot cone: "light" 300 is 300 x 7500 / 32^2 cd, and a light aimed at a
 // target 256 units away with radius 64 has tan(outer) = (64 + 16) / 256.
 TEST(Quake3Lights, PointAndSpotFollowQ3map2) {
-    BspBuilder b;
+    Quake3BspBuilder b;
     b.entities +=
         "{\n\"classname\" \"light\"\n\"origin\" \"0 0 128\"\n\"light\" \"300\"\n}\n"
         "{\n\"classname\" \"light\"\n\"origin\" \"0 0 256\"\n\"light\" \"600\"\n\"target\" "
@@ -307,7 +235,7 @@ TEST(Quake3Lights, PointAndSpotFollowQ3map2) {
 // equal to q3map2's L 7500/8000 - d at half the reach (q3_import.hpp, "Linear lights"), and dark
 // at the reach; the import says it approximated it. Worldspawn's ambient is reported as ignored.
 TEST(Quake3Lights, LinearFalloffIsApproximatedAndAmbientIsReported) {
-    BspBuilder b;
+    Quake3BspBuilder b;
     b.entities =
         "{\n\"classname\" \"worldspawn\"\n\"ambient\" \"10\"\n}\n"
         "{\n\"classname\" \"light\"\n\"origin\" \"0 0 300\"\n\"light\" \"300\"\n"
@@ -340,7 +268,7 @@ TEST(Quake3Lights, LinearFalloffIsApproximatedAndAmbientIsReported) {
 // 2 m above it wins everywhere; one 10 times as strong but 300 m away, nowhere; so only the
 // first is a primary, even with room for four. Without the near one, the far one is.
 TEST(Quake3Lights, PrimariesAreTheLightsThatAreTheBrightestSomewhere) {
-    BspBuilder b;
+    Quake3BspBuilder b;
     b.entities +=
         "{\n\"classname\" \"light\"\n\"origin\" \"32 32 64\"\n\"light\" \"300\"\n}\n"
         "{\n\"classname\" \"light\"\n\"origin\" \"9600 0 64\"\n\"light\" \"3000\"\n}\n";
@@ -350,7 +278,7 @@ TEST(Quake3Lights, PrimariesAreTheLightsThatAreTheBrightestSomewhere) {
     ASSERT_EQ(level.lights.size(), 2u);
     EXPECT_EQ(level.lights[0].role, LightRole::kPrimary);
     EXPECT_EQ(level.lights[1].role, LightRole::kBaked);
-    BspBuilder far;
+    Quake3BspBuilder far;
     far.entities += "{\n\"classname\" \"light\"\n\"origin\" \"9600 0 64\"\n\"light\" \"3000\"\n}\n";
     const SourceLevel alone = importLevel(far.write("roles_far", "roles"), options);
     ASSERT_EQ(alone.lights.size(), 1u);
@@ -562,7 +490,7 @@ namespace onelight::world::q3 {
 namespace {
 
 // Adds an axis-aligned box brush of `shader` (map units, Z up) and returns its index.
-int32_t addBoxBrush(BspBuilder& b, glm::vec3 lo, glm::vec3 hi, int32_t shader) {
+int32_t addBoxBrush(Quake3BspBuilder& b, glm::vec3 lo, glm::vec3 hi, int32_t shader) {
     const int32_t first = int32_t(b.brushSides.size());
     const float n[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     const float d[6] = {hi.x, -lo.x, hi.y, -lo.y, hi.z, -lo.z};
@@ -584,8 +512,8 @@ BspShader shaderWith(const char* name, int32_t contents, int32_t surfaceFlags = 
 
 // A floor (solid), a clip brush, a water and a trigger brush in the world, and one trigger
 // model used by a jump pad, a teleporter and a hurt trigger.
-BspBuilder mapWithCollision() {
-    BspBuilder b;
+Quake3BspBuilder mapWithCollision() {
+    Quake3BspBuilder b;
     b.shaders[0].contentFlags = kContentsSolid;
     b.shaders.push_back(shaderWith("common/clip", kContentsPlayerClip, kSurfNoDraw));
     b.shaders.push_back(shaderWith("textures/liquids/water", kContentsWater));
@@ -662,7 +590,7 @@ TEST(Quake3Collision, PlayerSolidBrushesAndTriggersImportInMetresWithYUp) {
 }
 
 TEST(Quake3Collision, BrushesWithBadIndicesAreRefusedByTheBspReader) {
-    BspBuilder b = mapWithCollision();
+    Quake3BspBuilder b = mapWithCollision();
     b.brushSides[3].plane = 999;
     EXPECT_NE(parseError(b.bytes()).find("brush side 3: plane 999 of 30"), std::string::npos)
         << parseError(b.bytes());
@@ -750,51 +678,11 @@ TEST(Quake3Collision, TheSectionReaderRefusesBadIndicesAndNonFinitePlanes) {
 
 namespace {
 
-using Bytes = std::vector<uint8_t>;
-
-void writeFile(const std::filesystem::path& path, const Bytes& bytes) {
-    std::filesystem::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-}
-
-// A pk3 (a zip archive, deflated as the game's are) holding `files` (name, bytes).
-void writePk3(const std::filesystem::path& path,
-              const std::vector<std::pair<std::string, Bytes>>& files) {
-    std::filesystem::create_directories(path.parent_path());
-    int error = 0;
-    zip_t* zip = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
-    ASSERT_NE(zip, nullptr) << path;
-    for (const auto& [name, bytes] : files) {
-        zip_source_t* source = zip_source_buffer(zip, bytes.data(), bytes.size(), 0);
-        ASSERT_GE(zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE), 0) << name;
-    }
-    ASSERT_EQ(zip_close(zip), 0) << path;  // `files` outlive the close, which reads them
-}
-
-// An uncompressed 24-bit TGA, rows top to bottom, every texel `rgb`.
-Bytes tga(uint32_t size, glm::u8vec3 rgb) {
-    Bytes out(18 + size_t(size) * size * 3, 0);
-    out[2] = 2;  // true colour
-    out[12] = uint8_t(size & 255);
-    out[13] = uint8_t(size >> 8);
-    out[14] = uint8_t(size & 255);
-    out[15] = uint8_t(size >> 8);
-    out[16] = 24;
-    out[17] = 0x20;  // top-left origin
-    for (size_t i = 18; i + 2 < out.size(); i += 3) {
-        out[i] = rgb.b;
-        out[i + 1] = rgb.g;
-        out[i + 2] = rgb.r;
-    }
-    return out;
-}
-
 // q3map2 leaves lightmap coordinates NaN on surfaces without a lightmap page (OpenArena's
 // pul1ctf and oa_ctf2 have dozens): they are never read, so the map imports and compiles. A NaN
 // normal is replaced by the face's plane and said.
 TEST(Quake3Bsp, NaNLightmapCoordinatesWithoutAPageCompile) {
-    BspBuilder b;
+    Quake3BspBuilder b;
     b.surfaces[0].lightmap = -3;  // vertex lit
     for (BspVertex& v : b.vertices) v.lightmap[0] = v.lightmap[1] = std::nanf("");
     b.surfaces[0].lightmapVectors[2][2] = 1.0f;
@@ -819,7 +707,7 @@ TEST(Quake3Bsp, NaNLightmapCoordinatesWithoutAPageCompile) {
 // at their own size.
 TEST(Quake3Lightmaps, ExternalLightmapsAreRead) {
     const auto game = freshFolder("external_game");
-    BspBuilder b;
+    Quake3BspBuilder b;
     b.surfaces[0].lightmap = 0;
     for (BspVertex& v : b.vertices) v.lightmap[0] = v.lightmap[1] = 0.5f;
     Quake3Options options;
@@ -861,7 +749,7 @@ TEST(Quake3Lightmaps, ExternalLightmapsAreRead) {
 // The colour pages are kept as the map's lightmap, the direction pages apart, in a lump or in
 // external images.
 TEST(Quake3Lightmaps, ADeluxeMappedLumpGivesColourPagesOnly) {
-    BspBuilder b;
+    Quake3BspBuilder b;
     b.entities =
         "{\n\"classname\" \"worldspawn\"\n\"_q3map2_cmdline\" \"-meta; -light -deluxe "
         "-samples 3\"\n}\n";
@@ -883,7 +771,7 @@ TEST(Quake3Lightmaps, ADeluxeMappedLumpGivesColourPagesOnly) {
 
     // The same without the command line: an even count of pages of which only even ones are
     // used is taken as deluxe (DarkPlaces' rule); one surface on an odd page says it is not.
-    BspBuilder guessed = b;
+    Quake3BspBuilder guessed = b;
     guessed.entities = "{\n\"classname\" \"worldspawn\"\n}\n";
     EXPECT_EQ(importLevel(guessed.write("deluxe_guess", "g"), withoutGame("g"))
                   .importedLightmap.pages.size(),
@@ -896,9 +784,9 @@ TEST(Quake3Lightmaps, ADeluxeMappedLumpGivesColourPagesOnly) {
 
     // External deluxe pages, in a pk3 of the game (Nexuiz's way).
     const auto game = freshFolder("deluxe_external");
-    BspBuilder external = b;
+    Quake3BspBuilder external = b;
     external.lightmaps.clear();
-    std::vector<std::pair<std::string, Bytes>> files = {{"maps/dx.bsp", external.bytes()}};
+    std::vector<std::pair<std::string, std::string>> files = {{"maps/dx.bsp", external.text()}};
     for (uint8_t p = 0; p < 4; ++p)
         files.emplace_back("maps/dx/lm_000" + std::to_string(p) + ".tga",
                            tga(16, {uint8_t(p * 50), 0, 0}));
@@ -916,7 +804,7 @@ TEST(Quake3Lightmaps, ADeluxeMappedLumpGivesColourPagesOnly) {
 // winning (B.pk3 after a.pk3, though 'B' < 'a' in ASCII), and its loose files winning over both.
 TEST(Quake3SearchPath, LaterPk3sWinAndLooseFilesWinOverThem) {
     const auto game = freshFolder("search_path");
-    BspBuilder b;
+    Quake3BspBuilder b;
     for (const char* name : {"textures/test/floor", "textures/test/loose"}) {
         BspShader s{};
         std::strcpy(s.name, name);
@@ -926,11 +814,12 @@ TEST(Quake3SearchPath, LaterPk3sWinAndLooseFilesWinOverThem) {
         b.surfaces.push_back(b.surfaces[0]);
         b.surfaces.back().shader = shader;
     }
-    const Bytes red = tga(2, {255, 0, 0}), green = tga(2, {0, 255, 0}), blue = tga(2, {0, 0, 255});
+    const std::string red = tga(2, {255, 0, 0}), green = tga(2, {0, 255, 0}),
+                      blue = tga(2, {0, 0, 255});
     writePk3(game / "a.pk3", {{"textures/test/wall.tga", red},
                               {"textures/test/floor.tga", red},
                               {"textures/test/loose.tga", red},
-                              {"maps/searched.bsp", b.bytes()}});
+                              {"maps/searched.bsp", b.text()}});
     writePk3(game / "B.pk3",
              {{"textures/test/wall.tga", green}, {"Textures/Test/LOOSE.tga", green}});
     writeFile(game / "textures" / "test" / "loose.tga", blue);
@@ -965,7 +854,7 @@ TEST(Quake3SearchPath, LaterPk3sWinAndLooseFilesWinOverThem) {
 // Hostile: a truncated pk3 in the game's search path is named, on one line.
 TEST(Quake3SearchPath, ATruncatedPk3InTheSearchPathIsNamed) {
     const auto game = freshFolder("truncated_pk3");
-    writePk3(game / "pak0.pk3", {{"maps/x.bsp", BspBuilder().bytes()}});
+    writePk3(game / "pak0.pk3", {{"maps/x.bsp", Quake3BspBuilder().text()}});
     const auto size = std::filesystem::file_size(game / "pak0.pk3");
     std::filesystem::resize_file(game / "pak0.pk3", size / 2);
     Quake3Options options;
@@ -980,7 +869,7 @@ TEST(Quake3SearchPath, ATruncatedPk3InTheSearchPathIsNamed) {
 // A closed room (16 x 8 m, 4 m high, each wall a surface facing in) with no spawn: the import
 // computes a view inside it, eyes above the floor, looking along the long axis, and says so.
 TEST(Quake3Spawns, AMapWithoutASpawnGetsAViewInsideItsBounds) {
-    BspBuilder b;
+    Quake3BspBuilder b;
     b.vertices.clear();
     b.indices = {0, 1, 2, 0, 2, 3};
     b.surfaces.clear();

@@ -3,18 +3,17 @@
 // at all is marked for the bake to refuse; the .map parser against hostile text; the colour of a
 // surface light (q3map2's display-referred light-image mean).
 #include <gtest/gtest.h>
-#include <zip.h>
 
-#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "tests/support/error_message.hpp"
+#include "tests/world/q3_test_maps.hpp"
+#include "tests/world/world_test_support.hpp"
 #include "world/error.hpp"
 #include "world/import/level_import.hpp"
 #include "world/import/q3/bsp_file.hpp"
@@ -24,93 +23,17 @@ namespace onelight::world::q3 {
 namespace {
 
 using onelight::test::errorMessage;
-
-std::filesystem::path freshFolder(const std::string& name) {
-    const auto dir = std::filesystem::temp_directory_path() / "onelight_q3_lights" / name;
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
+using onelight::test::floorSquare;
+using onelight::test::freshFolder;
+using onelight::test::Quake3BspBuilder;
+using onelight::test::tgaImage;
+using onelight::test::writeFile;
+using onelight::test::writePk3;
 
 Quake3Options withGameIn(const std::filesystem::path& folder) {
     Quake3Options options;
     options.gameFolders = {folder.string()};
     return options;
-}
-
-void writeText(const std::filesystem::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary).write(text.data(), std::streamsize(text.size()));
-}
-
-// A 256-unit floor square (z = 0, facing +z) with one shader and the entity text given; its
-// lightmap page is `lightmapValue` everywhere (0: no page at all).
-struct SmallBsp {
-    std::string entities = "{\n\"classname\" \"worldspawn\"\n}\n";
-    std::string shader = "textures/test/floor";
-    uint8_t lightmapValue = 0;
-
-    std::vector<uint8_t> bytes() const {
-        BspShader s{};
-        std::strncpy(s.name, shader.c_str(), sizeof s.name - 1);
-        std::vector<BspVertex> vertices;
-        for (const auto& p :
-             {std::pair{0.0f, 0.0f}, {256.0f, 0.0f}, {256.0f, 256.0f}, {0.0f, 256.0f}}) {
-            BspVertex v{};
-            v.position[0] = p.first;
-            v.position[1] = p.second;
-            v.normal[2] = 1.0f;
-            v.lightmap[0] = p.first / 256.0f;
-            v.lightmap[1] = p.second / 256.0f;
-            vertices.push_back(v);
-        }
-        const std::vector<int32_t> indices = {0, 1, 2, 0, 2, 3};
-        BspSurface f{};
-        f.type = kSurfacePlanar;
-        f.vertexCount = 4;
-        f.indexCount = 6;
-        f.fog = -1;
-        f.lightmap = lightmapValue ? 0 : -1;
-        std::vector<uint8_t> lightmaps;
-        if (lightmapValue) lightmaps.assign(kLightmapPageBytes, lightmapValue);
-        BspHeader h{};
-        std::memcpy(h.magic, kBspMagic, 4);
-        h.version = kBspVersion;
-        std::vector<uint8_t> body;
-        const auto lump = [&](Lump l, const void* data, size_t size) {
-            h.lumps[l] = {int32_t(sizeof(BspHeader) + body.size()), int32_t(size)};
-            const auto* b = static_cast<const uint8_t*>(data);
-            body.insert(body.end(), b, b + size);
-            body.resize((body.size() + 3) / 4 * 4, 0);
-        };
-        lump(kLumpEntities, entities.c_str(), entities.size() + 1);
-        lump(kLumpShaders, &s, sizeof s);
-        lump(kLumpDrawVerts, vertices.data(), vertices.size() * sizeof(BspVertex));
-        lump(kLumpDrawIndexes, indices.data(), indices.size() * sizeof(int32_t));
-        lump(kLumpSurfaces, &f, sizeof f);
-        lump(kLumpLightmaps, lightmaps.data(), lightmaps.size());
-        std::vector<uint8_t> out(sizeof h + body.size());
-        std::memcpy(out.data(), &h, sizeof h);
-        std::memcpy(out.data() + sizeof h, body.data(), body.size());
-        return out;
-    }
-    std::string text() const {
-        const std::vector<uint8_t> b = bytes();
-        return std::string(b.begin(), b.end());
-    }
-};
-
-// A pk3 (zip) of the given files, written with libzip.
-void writePk3(const std::filesystem::path& path,
-              const std::vector<std::pair<std::string, std::string>>& files) {
-    int error = 0;
-    zip_t* zip = zip_open(path.string().c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
-    ASSERT_NE(zip, nullptr);
-    for (const auto& [name, data] : files) {
-        zip_source_t* source = zip_source_buffer(zip, data.data(), data.size(), 0);
-        ASSERT_NE(source, nullptr);
-        ASSERT_GE(zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE), 0);
-    }
-    ASSERT_EQ(zip_close(zip), 0);  // reads the buffers: `files` outlives it
 }
 
 // A source .map as Radiant writes it: worldspawn with an old-format brush, a brushDef and a
@@ -198,10 +121,9 @@ void expectTheSourceLights(const SourceLevel& level) {
 
 TEST(Quake3LightSources, ASourceMapBesideTheBspGivesItsLights) {
     const auto folder = freshFolder("beside");
-    SmallBsp bsp;
-    bsp.lightmapValue = 40;
-    writeText(folder / "room.bsp", bsp.text());
-    writeText(folder / "room.map", kSourceMap);
+    Quake3BspBuilder bsp = floorSquare(40);
+    writeFile(folder / "room.bsp", bsp.text());
+    writeFile(folder / "room.map", kSourceMap);
     const SourceLevel level =
         importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("beside_game")));
     expectTheSourceLights(level);
@@ -213,7 +135,7 @@ TEST(Quake3LightSources, ASourceMapBesideTheBspGivesItsLights) {
 
 TEST(Quake3LightSources, ASourceMapInThePk3GivesItsLights) {
     const auto folder = freshFolder("pk3");
-    SmallBsp bsp;
+    Quake3BspBuilder bsp = floorSquare(0);
     writePk3(folder / "room.pk3",
              {{"maps/room.bsp", bsp.text()}, {"sources/maps/room.map", kSourceMap}});
     const SourceLevel level = importLevel((folder / "room.pk3").string() + ":maps/room.bsp",
@@ -226,10 +148,10 @@ TEST(Quake3LightSources, ASourceMapInThePk3GivesItsLights) {
 // The BSP's own light entities win over a source (they are what q3map2 lit with).
 TEST(Quake3LightSources, TheBspsOwnLightsWin) {
     const auto folder = freshFolder("own");
-    SmallBsp bsp;
+    Quake3BspBuilder bsp = floorSquare(0);
     bsp.entities += "{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n}\n";
-    writeText(folder / "room.bsp", bsp.text());
-    writeText(folder / "room.map", kSourceMap);
+    writeFile(folder / "room.bsp", bsp.text());
+    writeFile(folder / "room.map", kSourceMap);
     const SourceLevel level =
         importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("own_game")));
     ASSERT_EQ(level.lights.size(), 1u);
@@ -238,8 +160,7 @@ TEST(Quake3LightSources, TheBspsOwnLightsWin) {
 
 TEST(Quake3LightSources, WithoutASourceQ3map2sLightmapsAreTheLevels) {
     const auto folder = freshFolder("recovered");
-    SmallBsp bsp;
-    bsp.lightmapValue = 40;
+    Quake3BspBuilder bsp = floorSquare(40);
     writePk3(folder / "room.pk3", {{"maps/room.bsp", bsp.text()}});
     const SourceLevel level = importLevel((folder / "room.pk3").string() + ":maps/room.bsp",
                                           withGameIn(freshFolder("recovered_game")));
@@ -255,7 +176,7 @@ TEST(Quake3LightSources, WithoutASourceQ3map2sLightmapsAreTheLevels) {
 // refuses with (bake_level.cpp startReport) instead of baking black.
 TEST(Quake3LightSources, AMapWithNoLightIsNotBakedBlackInSilence) {
     const auto folder = freshFolder("dark");
-    writeText(folder / "dark.bsp", SmallBsp{}.text());
+    writeFile(folder / "dark.bsp", floorSquare(0).text());
     const SourceLevel level =
         importLevel((folder / "dark.bsp").string(), withGameIn(freshFolder("dark_game")));
     EXPECT_FALSE(level.lightmapIsImported);
@@ -294,10 +215,9 @@ TEST(Quake3MapSource, HostileSourcesAreIgnoredWithAWarning) {
           std::string("{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n\"light\" \"nan\"\n}\n"),
           std::string("{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n")}) {
         const auto folder = freshFolder("hostile");
-        SmallBsp bsp;
-        bsp.lightmapValue = 40;
-        writeText(folder / "room.bsp", bsp.text());
-        writeText(folder / "room.map", source);
+        Quake3BspBuilder bsp = floorSquare(40);
+        writeFile(folder / "room.bsp", bsp.text());
+        writeFile(folder / "room.map", source);
         const SourceLevel level =
             importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("hostile_game")));
         EXPECT_TRUE(level.lights.empty());
@@ -312,9 +232,9 @@ TEST(Quake3MapSource, HostileSourcesAreIgnoredWithAWarning) {
             << aboutSource[0];
     }
     const auto folder = freshFolder("far");
-    SmallBsp bsp;
-    writeText(folder / "room.bsp", bsp.text());
-    writeText(folder / "room.map",
+    Quake3BspBuilder bsp = floorSquare(0);
+    writeFile(folder / "room.bsp", bsp.text());
+    writeFile(folder / "room.map",
               "{\n\"classname\" \"light\"\n\"origin\" \"1e30 0 0\"\n}\n"
               "{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n}\n");
     const SourceLevel level =
@@ -323,21 +243,9 @@ TEST(Quake3MapSource, HostileSourcesAreIgnoredWithAWarning) {
     // Exactly one note about the far light (another says the view was computed: no spawn).
     size_t farNotes = 0;
     for (const std::string& note : level.importNotes)
-        farNotes += note.find("1 light(s) far outside the map's geometry left out") !=
-                    std::string::npos;
+        farNotes +=
+            note.find("1 light(s) far outside the map's geometry left out") != std::string::npos;
     EXPECT_EQ(farNotes, 1u) << ::testing::PrintToString(level.importNotes);
-}
-
-// An uncompressed 24-bit TGA of the given bytes (RGB each), w x 1.
-std::string tga(const std::vector<std::array<uint8_t, 3>>& pixels) {
-    std::string out(18, '\0');
-    out[2] = 2;  // uncompressed true colour
-    out[12] = char(pixels.size() & 0xff);
-    out[13] = char(pixels.size() >> 8);
-    out[14] = 1;
-    out[16] = 24;
-    for (const auto& p : pixels) out += {char(p[2]), char(p[1]), char(p[0])};  // BGR
-    return out;
 }
 
 // q3map2 lights a surface light with its light image's mean bytes (display-referred, not
@@ -345,16 +253,16 @@ std::string tga(const std::vector<std::array<uint8_t, 3>>& pixels) {
 // sRGB-decoded texture, averages to 0.25 S times that colour.
 TEST(Quake3LightSources, ASurfaceLightHasQ3map2sColour) {
     const auto game = freshFolder("lamp_game");
-    const std::vector<std::array<uint8_t, 3>> pixels = {{255, 200, 120}, {235, 220, 140}};
+    const std::vector<glm::u8vec3> pixels = {{255, 200, 120}, {235, 220, 140}};
     writePk3(game / "lamp.pk3",
              {{"scripts/lamp.shader",
                "textures/test/lamp\n{\n q3map_surfacelight 1000\n q3map_lightimage "
                "textures/test/lamp.tga\n {\n  map textures/test/lamp.tga\n }\n}\n"},
-              {"textures/test/lamp.tga", tga(pixels)}});
+              {"textures/test/lamp.tga", tgaImage(2, pixels)}});
     const auto folder = freshFolder("lamp");
-    SmallBsp bsp;
-    bsp.shader = "textures/test/lamp";
-    writeText(folder / "lamp.bsp", bsp.text());
+    Quake3BspBuilder bsp = floorSquare(0);
+    std::strcpy(bsp.shaders[0].name, "textures/test/lamp");
+    writeFile(folder / "lamp.bsp", bsp.text());
     const SourceLevel level = importLevel((folder / "lamp.bsp").string(), withGameIn(game));
     ASSERT_EQ(level.materials.size(), 1u);
     const glm::vec3 bytes = glm::vec3(245.0f, 210.0f, 130.0f) / 255.0f;  // the mean bytes
@@ -363,8 +271,8 @@ TEST(Quake3LightSources, ASurfaceLightHasQ3map2sColour) {
         return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
     };
     for (int c = 0; c < 3; ++c) {
-        const float meanLinear = 0.5f * (decode(float(pixels[0][size_t(c)]) / 255.0f) +
-                                         decode(float(pixels[1][size_t(c)]) / 255.0f));
+        const float meanLinear =
+            0.5f * (decode(float(pixels[0][c]) / 255.0f) + decode(float(pixels[1][c]) / 255.0f));
         EXPECT_NEAR(level.materials[0].emissive[c] * meanLinear, 250.0f * q3map2Colour[c], 0.05f)
             << "channel " << c;
     }

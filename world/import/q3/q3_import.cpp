@@ -475,12 +475,13 @@ size_t addSourceLights(SourceLevel& level, const OpenedMap& map, std::string& wh
                                     ": the map's source is ignored, its lights are not used");
         return 0;
     }
-    const auto [lo, hi] = geometryBounds(level);
+    const std::pair<glm::vec3, glm::vec3> bounds = geometryBounds(level);
     // Half the map's size, at least 16 m: a light above an open floor is still the map's.
-    const glm::vec3 margin(std::max(16.0f, 0.5f * glm::length(hi - lo)));
+    const glm::vec3 margin(std::max(16.0f, 0.5f * glm::length(bounds.second - bounds.first)));
+    const glm::vec3 lo = bounds.first - margin, hi = bounds.second + margin;
     const auto outside = [&](const Light& l) {
-        return glm::any(glm::lessThan(l.position, lo - margin)) ||
-               glm::any(glm::greaterThan(l.position, hi + margin));
+        return glm::any(glm::lessThan(l.position, lo)) ||
+               glm::any(glm::greaterThan(l.position, hi));
     };
     const auto kept =
         std::remove_if(level.lights.begin() + long(before), level.lights.end(), outside);

@@ -1,0 +1,126 @@
+#include "tests/world/q3_test_maps.hpp"
+
+#include <gtest/gtest.h>
+#include <zip.h>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+
+#include "tests/world/world_test_support.hpp"
+
+namespace onelight::test {
+
+using namespace world::q3;
+
+Quake3BspBuilder::Quake3BspBuilder(float side, std::string_view shader) {
+    BspShader s{};
+    shader.copy(s.name, std::min(shader.size(), sizeof s.name - 1));
+    shaders.push_back(s);
+    for (const auto& p : {std::pair{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 1.0f}, {0.0f, 1.0f}}) {
+        BspVertex v{};
+        v.position[0] = p.first * side;
+        v.position[1] = p.second * side;
+        v.normal[2] = 1.0f;
+        vertices.push_back(v);
+    }
+    indices = {0, 1, 2, 0, 2, 3};
+    BspSurface f{};
+    f.type = kSurfacePlanar;
+    f.vertexCount = 4;
+    f.indexCount = 6;
+    f.fog = -1;
+    surfaces.push_back(f);
+}
+
+Quake3BspBuilder floorSquare(uint8_t lightmapValue) {
+    Quake3BspBuilder b(256.0f, "textures/test/floor");
+    for (BspVertex& v : b.vertices) {
+        v.lightmap[0] = v.position[0] / 256.0f;
+        v.lightmap[1] = v.position[1] / 256.0f;
+    }
+    b.surfaces[0].lightmap = lightmapValue ? 0 : -1;
+    if (lightmapValue) b.lightmaps.assign(kLightmapPageBytes, lightmapValue);
+    return b;
+}
+
+Bytes Quake3BspBuilder::bytes() const {
+    BspHeader h{};
+    std::memcpy(h.magic, kBspMagic, 4);
+    h.version = kBspVersion;
+    Bytes body;  // the lumps, after the header
+    const auto lump = [&](Lump l, const void* data, size_t size) {
+        h.lumps[l] = {int32_t(sizeof(BspHeader) + body.size()), int32_t(size)};
+        const auto* b = static_cast<const uint8_t*>(data);
+        body.insert(body.end(), b, b + size);
+        body.resize((body.size() + 3) / 4 * 4, 0);
+    };
+    lump(kLumpEntities, entities.c_str(), entities.size() + 1);
+    lump(kLumpShaders, shaders.data(), shaders.size() * sizeof(BspShader));
+    lump(kLumpDrawVerts, vertices.data(), vertices.size() * sizeof(BspVertex));
+    lump(kLumpDrawIndexes, indices.data(), indices.size() * sizeof(int32_t));
+    lump(kLumpSurfaces, surfaces.data(), surfaces.size() * sizeof(BspSurface));
+    lump(kLumpLightmaps, lightmaps.data(), lightmaps.size());
+    lump(kLumpPlanes, planes.data(), planes.size() * sizeof(BspBrushPlane));
+    lump(kLumpModels, models.data(), models.size() * sizeof(BspModel));
+    lump(kLumpBrushes, brushes.data(), brushes.size() * sizeof(BspBrush));
+    lump(kLumpBrushSides, brushSides.data(), brushSides.size() * sizeof(BspBrushSide));
+    Bytes out(sizeof h + body.size());
+    std::memcpy(out.data(), &h, sizeof h);
+    if (!body.empty()) std::memcpy(out.data() + sizeof h, body.data(), body.size());
+    return out;
+}
+
+std::string Quake3BspBuilder::text() const {
+    const Bytes b = bytes();
+    return std::string(b.begin(), b.end());
+}
+
+std::string Quake3BspBuilder::write(const std::string& folder, const std::string& name) const {
+    const std::filesystem::path path = freshFolder(folder) / (name + ".bsp");
+    writeFile(path, bytes());
+    return path.string();
+}
+
+void writeFile(const std::filesystem::path& path, std::string_view bytes) {
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+void writeFile(const std::filesystem::path& path, const Bytes& bytes) {
+    writeFile(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+
+void writePk3(const std::filesystem::path& path,
+              const std::vector<std::pair<std::string, std::string>>& files) {
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+    int error = 0;
+    zip_t* zip = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+    ASSERT_NE(zip, nullptr) << path;
+    for (const auto& [name, data] : files) {
+        zip_source_t* source = zip_source_buffer(zip, data.data(), data.size(), 0);
+        ASSERT_NE(source, nullptr) << name;
+        ASSERT_GE(zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE), 0) << name;
+    }
+    ASSERT_EQ(zip_close(zip), 0) << path;  // `files` outlive the close, which reads them
+}
+
+std::string tgaImage(uint32_t width, const std::vector<glm::u8vec3>& texels) {
+    const uint32_t height = width ? uint32_t(texels.size() / width) : 0;
+    std::string out(18, '\0');
+    out[2] = 2;  // uncompressed true colour
+    out[12] = char(width & 255);
+    out[13] = char(width >> 8);
+    out[14] = char(height & 255);
+    out[15] = char(height >> 8);
+    out[16] = 24;
+    out[17] = 0x20;  // top-left origin: rows top to bottom
+    for (const glm::u8vec3& t : texels) out += {char(t.b), char(t.g), char(t.r)};  // BGR
+    return out;
+}
+
+std::string tga(uint32_t size, glm::u8vec3 rgb) {
+    return tgaImage(size, std::vector<glm::u8vec3>(size_t(size) * size, rgb));
+}
+
+}  // namespace onelight::test

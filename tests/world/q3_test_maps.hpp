@@ -1,0 +1,61 @@
+// Hand-made Quake 3 files for the import tests: a BSP written record by record, pk3s written with
+// libzip, uncompressed TGAs and plain files.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "world/import/q3/bsp_file.hpp"
+
+namespace onelight::test {
+
+using Bytes = std::vector<uint8_t>;
+
+/// A BSP written record by record: one shader, a square `side` units wide (4 vertices, 2
+/// triangles) in the plane z = 0 facing +z on lightmap page 0 (coordinates 0, no page written),
+/// and the entity text given. Tests change the records before `bytes()`.
+struct Quake3BspBuilder {
+    std::string entities = "{\n\"classname\" \"worldspawn\"\n}\n";
+    std::vector<world::q3::BspShader> shaders;
+    std::vector<world::q3::BspVertex> vertices;
+    std::vector<int32_t> indices;
+    std::vector<world::q3::BspSurface> surfaces;
+    std::vector<uint8_t> lightmaps;  // whole pages, or empty
+    std::vector<world::q3::BspBrushPlane> planes;
+    std::vector<world::q3::BspModel> models;
+    std::vector<world::q3::BspBrush> brushes;
+    std::vector<world::q3::BspBrushSide> brushSides;
+
+    explicit Quake3BspBuilder(float side = 64.0f, std::string_view shader = "textures/test/wall");
+
+    [[nodiscard]] Bytes bytes() const;
+    [[nodiscard]] std::string text() const;
+    /// Writes NAME.bsp into the fresh folder `folder` (test::freshFolder) and returns its path.
+    std::string write(const std::string& folder, const std::string& name) const;
+};
+
+/// A 256-unit floor square with shader textures/test/floor whose lightmap coordinates span one
+/// page, every byte of it `lightmapValue` (0: no page, the surface vertex lit).
+Quake3BspBuilder floorSquare(uint8_t lightmapValue);
+
+/// Writes `bytes` to `path`, making its folder.
+void writeFile(const std::filesystem::path& path, std::string_view bytes);
+void writeFile(const std::filesystem::path& path, const Bytes& bytes);
+
+/// A pk3 (a zip archive, deflated as the game's are) holding `files` (name, bytes); a gtest
+/// failure if libzip refuses.
+void writePk3(const std::filesystem::path& path,
+              const std::vector<std::pair<std::string, std::string>>& files);
+
+/// An uncompressed 24-bit TGA, `width` x (texels / width), rows top to bottom.
+std::string tgaImage(uint32_t width, const std::vector<glm::u8vec3>& texels);
+/// An uncompressed 24-bit TGA `size` texels square, every texel `rgb`.
+std::string tga(uint32_t size, glm::u8vec3 rgb);
+
+}  // namespace onelight::test
