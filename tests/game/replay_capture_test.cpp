@@ -226,6 +226,35 @@ TEST(Quake3Replay, Q3dm6ishBakesAndPlays) {
     EXPECT_TRUE(g.ok) << g.message;
 }
 
+// OpenArena's kaos as `./play` plays it headless (game/replays/kaos.replay): the map's own
+// teleporter and jump pad, checked by the replay's expect lines on its imported brushes, with
+// goldens of the four captures. The package is compiled, not baked (seconds instead of two
+// minutes): its frames show the primaries alone, which is what the goldens hold.
+TEST(Quake3Replay, KaosTeleportsAndJumpsAsQuake3Does) {
+    const std::string game = "/usr/share/games/openarena/baseoa/";
+    for (const char* pk3 : {"pak0.pk3", "pak1-maps.pk3", "pak4-textures.pk3"})
+        if (!fs::exists(game + pk3))
+            GTEST_SKIP() << game << pk3 << " is missing: install openarena-data, "
+                         << "openarena-081-maps and openarena-081-textures";
+    const std::string dir = outputDir("kaos");
+    const std::string package = dir + "/kaos.olpak";
+    CommandResult compile =
+        onelight::test::runCommand(std::string(ONELIGHT_BAKE_EXE) + " compile kaos -o " + package);
+    ASSERT_EQ(compile.exitCode, 0) << compile.output;
+    CommandResult play = runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
+                                     "/kaos.replay --headless --size 320x180 --capture-dir " + dir);
+    ASSERT_EQ(play.exitCode, 0) << play.output;
+    for (const std::string c : {"start", "teleported", "apex", "landed"}) {
+        const onelight::world::DecodedImage png =
+            onelight::world::readImageFile(dir + "/" + c + ".png");
+        onelight::test::GoldenResult g = onelight::test::compareWithGolden(
+            png.rgba, png.width, png.height,
+            std::string(ONELIGHT_GAME_GOLDENS) + "/kaos_" + c + ".png",
+            dir + "/" + c + "_diff.png");
+        EXPECT_TRUE(g.ok) << g.message;
+    }
+}
+
 // A package that does not come from a Quake 3 map has no q3map2 lightmaps to show.
 TEST(Quake3Replay, TheQ3map2ViewOfAnotherLevelIsRefused) {
     CommandResult r =
