@@ -15,8 +15,8 @@ that fails is reported and the run carries on.
   scripts/corpus.py OUT.md [--games openarena,nexuiz] [--maps REGEX] [--limit N]
                     [--bin build/bin] [--work DIR] [--size WxH] [--timeout S] [--no-bake]
 
---no-bake compiles each map and draws spawn 0 with q3map2's lightmaps only: whether every map
-loads, compiles and draws, in minutes for the whole corpus (a black frame is refused).
+--no-bake compiles each map and draws spawn 0 unbaked (its primaries alone): whether every map
+loads, compiles and draws, in minutes for the whole corpus.
 """
 import argparse
 import json
@@ -203,23 +203,22 @@ def one_map(name, pk3, inner, args, work):
 
 
 def compiled_map(row, compile_output, package, name, args, work):
-    """--no-bake: the compiled package drawn from spawn 0 with the map's own q3map2 lightmaps;
-    the row says whether the frame holds any light (a black frame is refused)."""
+    """--no-bake: the compiled, unbaked package drawn from spawn 0 (the primaries alone: the
+    q3map2 lightmaps come with the bake); reports the compile's warnings and the frame."""
     row["package_mib"] = os.path.getsize(package) / 2**20
     row["peak_mib"] = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
-    q3 = os.path.join(work, "captures", name.replace("/", "_") + "-q3map2")
+    own = os.path.join(work, "captures", name.replace("/", "_") + "-compiled")
     code, out, _ = run([args.game_exe, package, "--headless", "--frames", "1", "--size",
-                        args.size, "--view", "q3map2", "--capture", q3], args.timeout)
+                        args.size, "--capture", own], args.timeout)
     if code != 0:
         row["why"] = "draw: " + (reason(out, "failed") if code is not None else "timed out")
         return row
-    capture = json.load(open(q3 + ".json"))
+    capture = json.load(open(own + ".json"))
     row["frame_ms"] = capture["timings_ms"]["gpu"]
-    if luminance(png_mean_rgb(q3 + ".png")) <= 1e-4:
-        row["why"] = "draw: the q3map2 view from spawn 0 is black"
-        return row
     notes = [l.split("warning: ", 1)[1] for l in compile_output.splitlines() if "warning: " in l]
     row["status"] = "approximated" if notes else "OK"
+    if luminance(png_mean_rgb(own + ".png")) <= 1e-4:
+        notes.append("unbaked, spawn 0 sees no primary light")
     row["why"] = "; ".join(notes)
     return row
 
@@ -276,8 +275,8 @@ def main():
     p.add_argument("--work", default="", help="where packages and captures go (default: temp)")
     p.add_argument("--size", default="320x180", help="the frames' size")
     p.add_argument("--timeout", type=float, default=1800, help="seconds per step")
-    p.add_argument("--no-bake", action="store_true", help="compile and draw the q3map2 view "
-                   "only: every map checked in minutes, without the bake's columns")
+    p.add_argument("--no-bake", action="store_true", help="compile and draw unbaked only: "
+                   "every map checked in minutes, without the bake's columns")
     args = p.parse_args()
     args.bake = os.path.join(args.bin, "onelight-bake")
     args.game_exe = os.path.join(args.bin, "onelight")

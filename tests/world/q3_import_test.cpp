@@ -209,6 +209,34 @@ TEST(Quake3Entities, ParseKeysAndNameTheLineOfAFault) {
               std::string::npos);
 }
 
+// Keys as real maps write them: an empty value is the key's default (Nexuiz's racetrack has
+// "spawnflags" ""), and a light's intensity in the Half-Life form "R G B I" (Nexuiz's skyway
+// source) is its first number, as q3map2's atof reads it, with a note.
+TEST(Quake3Entities, EmptyValuesAndHalfLifeIntensitiesReadAsQ3map2Does) {
+    const std::vector<MapEntity> e = parseEntities(
+        "{\n\"classname\" \"worldspawn\"\n}\n{\n\"classname\" \"light\"\n\"spawnflags\" \"\"\n"
+        "\"_color\" \" \"\n\"origin\" \"32 32 64\"\n\"_light\" \"255 128 64 500\"\n}\n",
+        "t.bsp");
+    ASSERT_EQ(e.size(), 2u);
+    EXPECT_EQ(numberKey(e[1], "spawnflags", 7.0f, "t.bsp"), 7.0f);
+    EXPECT_EQ(vectorKey(e[1], "_color", glm::vec3(1.0f), "t.bsp"), glm::vec3(1.0f));
+    bool more = false;
+    EXPECT_EQ(firstNumberKey(e[1], "_light", 300.0f, "t.bsp", &more), 255.0f);
+    EXPECT_TRUE(more);
+    Quake3BspBuilder b;
+    b.entities =
+        "{\n\"classname\" \"worldspawn\"\n}\n{\n\"classname\" \"light\"\n"
+        "\"spawnflags\" \"\"\n\"origin\" \"32 32 64\"\n\"_light\" \"255 128 64 500\"\n}\n";
+    const SourceLevel level = importLevel(b.write("half_life", "hl"), withoutGame("half_life"));
+    ASSERT_EQ(level.lights.size(), 1u);
+    EXPECT_NEAR(level.lights[0].intensity, 255.0 * kQuake3CandelaPerLight, 1e-3);
+    bool noted = false;
+    for (const std::string& note : level.importNotes)
+        noted = noted || note.find("1 light(s) whose intensity key holds several numbers") !=
+                             std::string::npos;
+    EXPECT_TRUE(noted) << ::testing::PrintToString(level.importNotes);
+}
+
 // q3map2's units and spot cone: "light" 300 is 300 x 7500 / 32^2 cd, and a light aimed at a
 // target 256 units away with radius 64 has tan(outer) = (64 + 16) / 256.
 TEST(Quake3Lights, PointAndSpotFollowQ3map2) {

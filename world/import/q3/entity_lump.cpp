@@ -99,6 +99,7 @@ float numberKey(const MapEntity& e, const std::string& key, float fallback,
                 const std::string& where) {
     if (!e.keys.count(key)) return fallback;
     const std::vector<float> v = numbers(e, key, where);
+    if (v.empty()) return fallback;
     if (v.size() != 1)
         throw Error(where + ": entities line " + std::to_string(e.line) + ": \"" + key +
                     "\" holds " + std::to_string(v.size()) + " numbers; expected one");
@@ -109,10 +110,20 @@ glm::vec3 vectorKey(const MapEntity& e, const std::string& key, glm::vec3 fallba
                     const std::string& where) {
     if (!e.keys.count(key)) return fallback;
     const std::vector<float> v = numbers(e, key, where);
+    if (v.empty()) return fallback;
     if (v.size() != 3)
         throw Error(where + ": entities line " + std::to_string(e.line) + ": \"" + key +
                     "\" holds " + std::to_string(v.size()) + " numbers; expected three");
     return {v[0], v[1], v[2]};
+}
+
+float firstNumberKey(const MapEntity& e, const std::string& key, float fallback,
+                     const std::string& where, bool* more) {
+    if (!e.keys.count(key)) return fallback;
+    const std::vector<float> v = numbers(e, key, where);
+    if (v.empty()) return fallback;
+    if (more) *more = *more || v.size() > 1;
+    return v[0];
 }
 
 }  // namespace onelight::world::q3

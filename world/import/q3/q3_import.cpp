@@ -321,14 +321,17 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
     for (const MapEntity& e : entities)
         if (e.keys.count("targetname"))
             targets[e.get("targetname")] = vectorKey(e, "origin", glm::vec3(0.0f), where);
-    uint32_t linear = 0;
+    uint32_t linear = 0, halfLife = 0;
     for (const MapEntity& e : entities) {
         if (e.get("classname") != "light") continue;
         Light l;
         l.name = e.get("targetname", "light" + std::to_string(level.lights.size()));
         const glm::vec3 origin = vectorKey(e, "origin", glm::vec3(0.0f), where);
         l.position = levelPoint(origin);
-        const float value = numberKey(e, "light", numberKey(e, "_light", 300.0f, where), where);
+        bool more = false;
+        const float value = firstNumberKey(
+            e, "light", firstNumberKey(e, "_light", 300.0f, where, &more), where, &more);
+        halfLife += more;
         l.intensity = float(double(std::max(0.0f, value)) * kQuake3CandelaPerLight);
         glm::vec3 color = vectorKey(e, "_color", glm::vec3(1.0f), where);
         const float peak = std::max({color.x, color.y, color.z});
@@ -363,6 +366,11 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
         l.role = LightRole::kBaked;
         level.lights.push_back(l);
     }
+    if (halfLife > 0)
+        level.importNotes.push_back(
+            where + ": " + std::to_string(halfLife) +
+            " light(s) whose intensity key holds several numbers (\"R G B I\", the Half-Life "
+            "form): the first is the intensity, as q3map2 reads it");
     if (linear > 0)
         level.importNotes.push_back(
             where + ": " + std::to_string(linear) +
