@@ -323,11 +323,15 @@ def write_report(args, counts, sections, started, final):
             f"{time.monotonic() - started:.0f} s" + ("" if final else " (still running)"), "",
             f"**{total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "
             f"{counts['refused']} refused.**", "",
-            "Columns: compile and draft-bake wall seconds; the bake report's peak memory; the "
-            "package's size; the GPU time of one frame from spawn 0 (headless, lavapipe, "
-            f"{args.size}); the frame's mean luminance over that of the q3map2 view of the same "
-            "camera at the same exposure, and the distance of their mean colours' CIE xy "
-            "chromaticities. Approximated: the import or bake warned (notes).", ""]
+            ("Columns (--no-bake): the compile's wall seconds; the largest child process's "
+             "peak memory so far; the compiled package's size; the GPU time of one unbaked "
+             f"frame from spawn 0 (headless, lavapipe, {args.size}). No bake, so no bake or "
+             "luminance columns. Approximated: the import warned (notes)." if args.no_bake else
+             "Columns: compile and draft-bake wall seconds; the bake report's peak memory; the "
+             "package's size; the GPU time of one frame from spawn 0 (headless, lavapipe, "
+             f"{args.size}); the frame's mean luminance over that of the q3map2 view of the same "
+             "camera at the same exposure, and the distance of their mean colours' CIE xy "
+             "chromaticities. Approximated: the import or bake warned (notes)."), ""]
     write_atomically(args.out, "\n".join(head + sections))
     if final:
         print(f"corpus: {total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "
