@@ -44,20 +44,39 @@ std::string playReplay(const std::string& name, const std::string& folder = "") 
     return dir;
 }
 
+// Each capture in `dir` against golden/PREFIX_CAPTURE.png, a diff image beside it on failure.
+void expectCapturesMatchGoldens(const std::string& dir, const std::string& prefix,
+                                const std::vector<std::string>& captures) {
+    for (const std::string& c : captures) {
+        const onelight::world::DecodedImage png =
+            onelight::world::readImageFile(dir + "/" + c + ".png");
+        onelight::test::GoldenResult g = onelight::test::compareWithGolden(
+            png.rgba, png.width, png.height,
+            std::string(ONELIGHT_GAME_GOLDENS) + "/" + prefix + "_" + c + ".png",
+            dir + "/" + c + "_diff.png");
+        EXPECT_TRUE(g.ok) << g.message;
+    }
+}
+
+// The OpenArena pk3s the Quake 3 replays need; empty when installed, else what is missing.
+std::string missingOpenArena() {
+    const std::string game = "/usr/share/games/openarena/baseoa/";
+    for (const char* pk3 : {"pak0.pk3", "pak1-maps.pk3", "pak4-textures.pk3"})
+        if (!fs::exists(game + pk3))
+            return game + pk3 +
+                   " is missing: install openarena-data, openarena-081-maps and "
+                   "openarena-081-textures";
+    return "";
+}
+
 // Every capture of the replay (not the contact sheet) against golden/REPLAY_CAPTURE.png.
 void expectGoldens(const std::string& replay, const std::vector<std::string>& captures) {
     std::string dir = playReplay(replay);
     for (const std::string& c : captures) {
-        const onelight::world::DecodedImage png =
-            onelight::world::readImageFile(dir + "/" + c + ".png");
         ASSERT_TRUE(fs::exists(dir + "/" + c + ".exr")) << c;
         ASSERT_TRUE(fs::exists(dir + "/" + c + ".json")) << c;
-        onelight::test::GoldenResult g = onelight::test::compareWithGolden(
-            png.rgba, png.width, png.height,
-            std::string(ONELIGHT_GAME_GOLDENS) + "/" + replay + "_" + c + ".png",
-            dir + "/" + c + "_diff.png");
-        EXPECT_TRUE(g.ok) << g.message;
     }
+    expectCapturesMatchGoldens(dir, replay, captures);
     EXPECT_TRUE(fs::exists(dir + "/contact_sheet.png"));
 }
 
@@ -188,11 +207,7 @@ TEST(DemoReplays, BadScriptsGiveOneClearLineAndExitOne) {
 // A Quake 3 map, imported, compiled and baked at draft quality by onelight-bake, then played: the
 // replay walks the map on its own collision (its expect lines) and its captures match goldens.
 TEST(Quake3Replay, Q3dm6ishBakesAndPlays) {
-    const std::string game = "/usr/share/games/openarena/baseoa/";
-    for (const char* pk3 : {"pak0.pk3", "pak1-maps.pk3", "pak4-textures.pk3"})
-        if (!fs::exists(game + pk3))
-            GTEST_SKIP() << game << pk3 << " is missing: install openarena-data, "
-                         << "openarena-081-maps and openarena-081-textures";
+    if (const std::string missing = missingOpenArena(); !missing.empty()) GTEST_SKIP() << missing;
     const std::string dir = outputDir("q3dm6ish");
     const std::string package = dir + "/q3dm6ish.olpak";
     CommandResult bake = onelight::test::runCommand(
@@ -202,15 +217,7 @@ TEST(Quake3Replay, Q3dm6ishBakesAndPlays) {
         runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
                     "/q3dm6ish.replay --headless --size 320x180 --capture-dir " + dir);
     ASSERT_EQ(play.exitCode, 0) << play.output;
-    for (const std::string c : {"start", "walked", "back"}) {
-        const onelight::world::DecodedImage png =
-            onelight::world::readImageFile(dir + "/" + c + ".png");
-        onelight::test::GoldenResult g = onelight::test::compareWithGolden(
-            png.rgba, png.width, png.height,
-            std::string(ONELIGHT_GAME_GOLDENS) + "/q3dm6ish_" + c + ".png",
-            dir + "/" + c + "_diff.png");
-        EXPECT_TRUE(g.ok) << g.message;
-    }
+    expectCapturesMatchGoldens(dir, "q3dm6ish", {"start", "walked", "back"});
     // The map's own q3map2 lightmaps from the first spawn, at a fixed exposure (--view q3map2).
     CommandResult view = runOnelight(package +
                                      " --headless --camera spawn0 --size 320x180 --ev100 4 "
@@ -231,11 +238,7 @@ TEST(Quake3Replay, Q3dm6ishBakesAndPlays) {
 // goldens of the four captures. The package is compiled, not baked (seconds instead of two
 // minutes): its frames show the primaries alone, which is what the goldens hold.
 TEST(Quake3Replay, KaosTeleportsAndJumpsAsQuake3Does) {
-    const std::string game = "/usr/share/games/openarena/baseoa/";
-    for (const char* pk3 : {"pak0.pk3", "pak1-maps.pk3", "pak4-textures.pk3"})
-        if (!fs::exists(game + pk3))
-            GTEST_SKIP() << game << pk3 << " is missing: install openarena-data, "
-                         << "openarena-081-maps and openarena-081-textures";
+    if (const std::string missing = missingOpenArena(); !missing.empty()) GTEST_SKIP() << missing;
     const std::string dir = outputDir("kaos");
     const std::string package = dir + "/kaos.olpak";
     CommandResult compile =
@@ -244,15 +247,7 @@ TEST(Quake3Replay, KaosTeleportsAndJumpsAsQuake3Does) {
     CommandResult play = runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
                                      "/kaos.replay --headless --size 320x180 --capture-dir " + dir);
     ASSERT_EQ(play.exitCode, 0) << play.output;
-    for (const std::string c : {"start", "teleported", "apex", "landed"}) {
-        const onelight::world::DecodedImage png =
-            onelight::world::readImageFile(dir + "/" + c + ".png");
-        onelight::test::GoldenResult g = onelight::test::compareWithGolden(
-            png.rgba, png.width, png.height,
-            std::string(ONELIGHT_GAME_GOLDENS) + "/kaos_" + c + ".png",
-            dir + "/" + c + "_diff.png");
-        EXPECT_TRUE(g.ok) << g.message;
-    }
+    expectCapturesMatchGoldens(dir, "kaos", {"start", "teleported", "apex", "landed"});
 }
 
 // A package that does not come from a Quake 3 map has no q3map2 lightmaps to show.
