@@ -6,14 +6,15 @@ game loads when several pk3s hold one): compile, bake at draft, draw one frame f
 headless, and draw the same view with the map's own q3map2 lightmaps (--view q3map2) at the same
 exposure. Reports per map: OK, approximated (the import or bake warned: what it approximated or
 left out) or refused (with the reason), compile and bake seconds, the bake's peak memory, the
-package's size, the frame's GPU time, and how the two frames' mean colours differ (luminance
-ratio, chromaticity distance in CIE xy). Writes a markdown table per game and a summary to OUT
+package's size, the frame's GPU time, how the two frames' mean linear colours differ (luminance
+ratio, chromaticity distance in CIE xy), and what the map's recorded q3map2 -light stage did. Writes a markdown table per game and a summary to OUT
 (atomically: a temporary file renamed over it, after every map, so that an interrupted run keeps
 what it measured), with a progress line per map on stderr. A map
 that fails is reported and the run carries on.
 
   scripts/corpus.py OUT.md [--games openarena,nexuiz] [--maps REGEX] [--limit N]
-                    [--bin build/bin] [--work DIR] [--size WxH] [--timeout S] [--no-bake]
+                    [--bin build/bin] [--work DIR [--resume]] [--size WxH] [--timeout S]
+                    [--no-bake]
 
 --no-bake compiles each map and draws spawn 0 unbaked (its primaries alone): whether every map
 loads, compiles and draws, in minutes for the whole corpus.
@@ -29,7 +30,6 @@ import sys
 import tempfile
 import time
 import zipfile
-import zlib
 
 GAMES = {
     "openarena": ("OpenArena", "/usr/share/games/openarena/baseoa"),
@@ -86,48 +86,19 @@ def reason(output, fallback):
     return lines[-1] if lines else fallback
 
 
-def png_mean_rgb(path):
-    """The mean sRGB-decoded (linear) colour of an 8-bit RGB or RGBA PNG."""
-    data = open(path, "rb").read()
-    if data[:8] != b"\x89PNG\r\n\x1a\n":
-        raise ValueError(f"{path}: not a PNG")
-    at, idat, width, height, channels = 8, b"", 0, 0, 0
-    while at < len(data):
-        length, kind = struct.unpack(">I4s", data[at:at + 8])
-        body = data[at + 8:at + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
-            if depth != 8 or colour not in (2, 6) or body[12] != 0:
-                raise ValueError(f"{path}: expected 8-bit RGB or RGBA, not interlaced")
-            channels = 3 if colour == 2 else 4
-        elif kind == b"IDAT":
-            idat += body
-        at += 12 + length
-    raw, stride = zlib.decompress(idat), width * channels
-    previous, sums = bytearray(stride), [0.0, 0.0, 0.0]
-    table = [((v / 255) / 12.92 if v <= 10 else ((v / 255 + 0.055) / 1.055) ** 2.4)
-             for v in range(256)]
-    for y in range(height):
-        f, row = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = row[i - channels] if i >= channels else 0
-            b, c = previous[i], previous[i - channels] if i >= channels else 0
-            if f == 1:
-                row[i] = (row[i] + a) & 255
-            elif f == 2:
-                row[i] = (row[i] + b) & 255
-            elif f == 3:
-                row[i] = (row[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                row[i] = (row[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        for x in range(width):
-            for k in range(3):
-                sums[k] += table[row[x * channels + k]]
-        previous = row
-    n = max(1, width * height)
-    return [s / n for s in sums]
+def frame_radiance(capture_json):
+    """The capture's mean linear radiance before exposure (its sidecar's "radiance"): RGB cd/m^2
+    (a tonemapped PNG's mean would compress the ratios)."""
+    return json.load(open(capture_json))["radiance"]["mean_rgb"]
+
+
+def q3map2_options(compile_output):
+    """The import's "q3map2 options" line, short: what the map's recorded -light stage did."""
+    for line in compile_output.splitlines():
+        if "q3map2 options: " in line:
+            text = line.split("q3map2 options: ", 1)[1]
+            return "not recorded" if text.startswith("not recorded") else text.split("': ", 1)[-1]
+    return ""
 
 
 def luminance(rgb):
@@ -152,6 +123,7 @@ def one_map(name, pk3, inner, args, work):
     if code != 0:
         row["why"] = "compile: " + (reason(out, "failed") if code is not None else "timed out")
         return row
+    row["q3map2"] = q3map2_options(out)
     if args.no_bake:
         return compiled_map(row, out, package, name, args, work)
     code, out, row["bake_s"] = run([args.bake, spec, "-o", package, "--quality", "draft",
@@ -180,13 +152,13 @@ def one_map(name, pk3, inner, args, work):
         capture = json.load(open(own + ".json"))
         row["frame_ms"] = capture["timings_ms"]["gpu"]
         ev100 = capture["camera"]["ev100"]
-        mean = png_mean_rgb(own + ".png")
+        mean = frame_radiance(own + ".json")
         row["luminance"] = luminance(mean)
         q3 = os.path.join(captures, name.replace("/", "_") + "-q3map2")
         code, out, _ = run(base + ["--view", "q3map2", "--ev100", f"{ev100:.4f}", "--capture", q3],
                            args.timeout)
         if code == 0:
-            theirs = png_mean_rgb(q3 + ".png")
+            theirs = frame_radiance(q3 + ".json")
             if luminance(theirs) > 1e-6:
                 row["lum_ratio"] = luminance(mean) / luminance(theirs)
             a, b = chromaticity(mean), chromaticity(theirs)
@@ -217,7 +189,7 @@ def compiled_map(row, compile_output, package, name, args, work):
     row["frame_ms"] = capture["timings_ms"]["gpu"]
     notes = [l.split("warning: ", 1)[1] for l in compile_output.splitlines() if "warning: " in l]
     row["status"] = "approximated" if notes else "OK"
-    if luminance(png_mean_rgb(own + ".png")) <= 1e-4:
+    if luminance(frame_radiance(own + ".json")) <= 1e-6:
         notes.append("unbaked, spawn 0 sees no primary light")
     row["why"] = "; ".join(notes)
     return row
@@ -232,8 +204,8 @@ def table(game, rows, shadowed):
              f"{len(rows)} maps" + (f" ({shadowed} older copies in earlier pk3s not run)"
                                    if shadowed else ""), "",
              "| map | pk3 | result | compile s | draft bake s | peak MiB | package MiB | "
-             "frame ms | lum. ratio | Δxy | notes |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "frame ms | lum. ratio | Δxy | q3map2 -light | notes |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         why = r["why"].replace("|", "\\|").replace("\n", " ")
         if len(why) > 300:
@@ -242,7 +214,8 @@ def table(game, rows, shadowed):
             r["map"], r["pk3"], r["status"], cell(r, "compile_s", "{:.1f}"),
             cell(r, "bake_s", "{:.1f}"), cell(r, "peak_mib", "{:.0f}"),
             cell(r, "package_mib", "{:.1f}"), cell(r, "frame_ms", "{:.1f}"),
-            cell(r, "lum_ratio", "{:.2f}"), cell(r, "dxy", "{:.3f}"), why]) + " |")
+            cell(r, "lum_ratio", "{:.2f}"), cell(r, "dxy", "{:.3f}"),
+            r.get("q3map2", "").replace("|", "\\|"), why]) + " |")
     return lines + [""]
 
 
@@ -277,14 +250,30 @@ def main():
     p.add_argument("--timeout", type=float, default=1800, help="seconds per step")
     p.add_argument("--no-bake", action="store_true", help="compile and draw unbaked only: "
                    "every map checked in minutes, without the bake's columns")
+    p.add_argument("--resume", action="store_true", help="with --work: keep the rows of maps "
+                   "that folder's earlier run finished (its rows.jsonl), run only the rest")
     args = p.parse_args()
     args.bake = os.path.join(args.bin, "onelight-bake")
     args.game_exe = os.path.join(args.bin, "onelight")
     for exe in (args.bake, args.game_exe):
         if not os.access(exe, os.X_OK):
             sys.exit(f"corpus: {exe}: missing; build onelight and onelight-bake first")
+    if args.resume and not args.work:
+        sys.exit("corpus: --resume needs --work DIR, the earlier run's folder")
     work = args.work or tempfile.mkdtemp(prefix="onelight-corpus-")
     os.makedirs(os.path.join(work, "captures"), exist_ok=True)
+    # Every finished row, one JSON object a line (the mode and map identify it): --resume
+    # reuses them.
+    done_path = os.path.join(work, "rows.jsonl")
+    done = {}
+    if args.resume and os.path.exists(done_path):
+        for line in open(done_path):
+            try:
+                r = json.loads(line)
+                done[(r["mode"], r["map"], r["pk3"])] = r["row"]
+            except (ValueError, KeyError):
+                continue  # a line cut by an interrupted write
+    mode = "no-bake" if args.no_bake else "draft"
     pattern = re.compile(args.maps) if args.maps else None
     sections, counts, started = [], {"OK": 0, "approximated": 0, "refused": 0}, time.monotonic()
     for key in args.games.split(","):
@@ -298,11 +287,18 @@ def main():
             maps = maps[:args.limit]
         rows = []
         for i, (name, pk3, inner) in enumerate(maps):
-            try:
-                row = one_map(name, pk3, inner, args, work)
-            except Exception as e:  # a map must never stop the run
-                row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused",
-                       "why": f"corpus script: {e}"}
+            key = (mode, name, os.path.basename(pk3))
+            if key in done:
+                row = done[key]
+            else:
+                try:
+                    row = one_map(name, pk3, inner, args, work)
+                except Exception as e:  # a map must never stop the run
+                    row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused",
+                           "why": f"corpus script: {e}"}
+                with open(done_path, "a") as f:
+                    f.write(json.dumps({"mode": mode, "map": name, "pk3": key[2], "row": row})
+                            + "\n")
             rows.append(row)
             counts[row["status"]] += 1
             write_report(args, counts, sections + table(game, rows, shadowed), started,
@@ -329,9 +325,11 @@ def write_report(args, counts, sections, started, final):
              "luminance columns. Approximated: the import warned (notes)." if args.no_bake else
              "Columns: compile and draft-bake wall seconds; the bake report's peak memory; the "
              "package's size; the GPU time of one frame from spawn 0 (headless, lavapipe, "
-             f"{args.size}); the frame's mean luminance over that of the q3map2 view of the same "
-             "camera at the same exposure, and the distance of their mean colours' CIE xy "
-             "chromaticities. Approximated: the import or bake warned (notes)."), ""]
+             f"{args.size}); the frame's mean linear luminance (before exposure) over that of "
+             "the q3map2 view of the same camera, and the distance of their mean colours' CIE "
+             "xy chromaticities; what the map's recorded q3map2 -light stage did (bounces, dirt, "
+             "scales, the lightmap encoding the q3map2 view decodes). Approximated: the import or "
+             "bake warned (notes)."), ""]
     write_atomically(args.out, "\n".join(head + sections))
     if final:
         print(f"corpus: {total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "

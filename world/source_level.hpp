@@ -26,6 +26,20 @@ struct MeshInstance {
     uint32_t entity = kNoIndex;     // into SourceLevel::entities when dynamic
 };
 
+/// How the source stored its light values as bytes, inverted by bake::decodeImportedValue. For
+/// q3map2, its ColorToBytes under the -light stage's options (q3map2_command_line.hpp): a value v
+/// is scaled by brightness, raised to 1/gamma (on v/255), clamped by its brightest channel to 255
+/// or, with an exposure E > 0, that channel mapped to 255 (1 - exp(-max / E)), divided by
+/// compensate, stretched about 128 by contrast, and sRGB-encoded when srgb.
+struct ImportedLightEncoding {
+    float brightness = 1.0f;
+    float gamma = 1.0f;
+    float exposure = 0.0f;  // 0: clamped, not exposed
+    float compensate = 1.0f;
+    float contrast = 1.0f;
+    bool srgb = false;
+};
+
 /// Light the source format baked itself (a Quake 3 map: q3map2's lightmaps and vertex light),
 /// kept so that the engine's bake can be compared with it (`onelight LEVEL --view q3map2`). Each
 /// triangle of the level's static geometry, with where its corners read the light.
@@ -41,7 +55,8 @@ struct ImportedLightmap {
     std::vector<uint8_t> pages;           // RGB8, pageSize^2 per page, row-major
     std::vector<uint8_t> directionPages;  // q3map2 -deluxe: each page's light direction, same
                                           // layout as pages; empty when the source has none
-    float luxPerValue = 1.0f;             // irradiance of one unit of a page or vertex light value
+    ImportedLightEncoding encoding;       // how pages and vertex light store their values
+    float luxPerValue = 1.0f;             // irradiance of one unit of a decoded value
     std::vector<Triangle> triangles;
 };
 

@@ -60,7 +60,8 @@ private:
     RTCScene scene_ = nullptr;
 };
 
-// Bilinear read of `page` at coordinates `uv` (texel centres at (i + 1/2) / size).
+// Bilinear read of `page` at coordinates `uv` (texel centres at (i + 1/2) / size), of the
+// decoded values.
 glm::vec3 readPage(const world::ImportedLightmap& imported, uint32_t page, glm::vec2 uv) {
     const uint32_t size = imported.pageSize;
     const uint8_t* texels = imported.pages.data() + size_t(page) * size * size * 3;
@@ -71,12 +72,38 @@ glm::vec3 readPage(const world::ImportedLightmap& imported, uint32_t page, glm::
     const float fx = x - float(x0), fy = y - float(y0);
     const auto at = [&](uint32_t i, uint32_t j) {
         const uint8_t* p = texels + (size_t(j) * size + i) * 3;
-        return glm::vec3(p[0], p[1], p[2]);
+        return decodeImportedValue(glm::vec3(p[0], p[1], p[2]), imported.encoding);
     };
     return glm::mix(glm::mix(at(x0, y0), at(x1, y0), fx), glm::mix(at(x0, y1), at(x1, y1), fx), fy);
 }
 
+float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
 }  // namespace
+
+glm::vec3 decodeImportedValue(glm::vec3 stored, const world::ImportedLightEncoding& encoding) {
+    glm::vec3 s = glm::clamp(stored, glm::vec3(0.0f), glm::vec3(255.0f));
+    if (encoding.srgb)
+        for (int c = 0; c < 3; ++c) s[c] = 255.0f * srgbToLinear(s[c] / 255.0f);
+    if (encoding.contrast > 0.0f && encoding.contrast != 1.0f)
+        s = glm::max((s - 128.0f) / encoding.contrast + 128.0f, glm::vec3(0.0f));
+    if (encoding.compensate > 0.0f) s *= encoding.compensate;
+    if (encoding.exposure > 0.0f) {
+        const float peak = std::max({s.x, s.y, s.z});
+        if (peak > 0.0f) {
+            const float exposed = std::min(peak, 254.5f);
+            s *= -encoding.exposure * std::log1p(-exposed / 255.0f) / peak;
+        }
+    }
+    if (encoding.gamma > 0.0f && encoding.gamma != 1.0f)
+        for (int c = 0; c < 3; ++c) s[c] = 255.0f * std::pow(s[c] / 255.0f, encoding.gamma);
+    if (encoding.brightness > 0.0f) s /= encoding.brightness;
+    for (int c = 0; c < 3; ++c)
+        if (!std::isfinite(s[c]) || s[c] < 0.0f) s[c] = 0.0f;
+    return s;
+}
 
 std::vector<world::LightmapTexel> resampleImportedLightmap(
     RTCDevice device, const world::CompiledLevel& level, const std::vector<TexelSample>& samples,
@@ -101,7 +128,10 @@ std::vector<world::LightmapTexel> resampleImportedLightmap(
         if (t.page < pages) {
             value = readPage(imported, t.page, w0 * t.uv[0] + b.x * t.uv[1] + b.y * t.uv[2]);
         } else {
-            value = w0 * t.vertexLight[0] + b.x * t.vertexLight[1] + b.y * t.vertexLight[2];
+            const auto corner = [&](int k) {
+                return decodeImportedValue(t.vertexLight[k], imported.encoding);
+            };
+            value = w0 * corner(0) + b.x * corner(1) + b.y * corner(2);
         }
         world::LightmapTexel& out = texels[s.texel];
         out.irradiance = glm::max(value * imported.luxPerValue, glm::vec3(0.0f));

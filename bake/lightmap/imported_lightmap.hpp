@@ -22,9 +22,17 @@ namespace onelight::bake {
    page coordinates, and the page is read bilinearly (texel centres at (i + 1/2) / size, clamped
    at the page's edge); a triangle without a page interpolates its corners' vertex light. The
    value times luxPerValue is the texel's irradiance, non-directional (direction 0, normal weight
-   0.5: E(n') = irradiance for every n'). Texels no ray reaches stay unsampled (flags 0), to be
+   0.5: E(n') = irradiance for every n'). Values are decoded (decodeImportedValue) before they
+   are interpolated. Texels no ray reaches stay unsampled (flags 0), to be
    dilated like the engine's own.
 */
+/// The value a source stored as `stored` (bytes as floats, 0 .. 255), before `encoding`: its
+/// inverse, step by step (world::ImportedLightEncoding). A channel stored at 255 under an
+/// exposure is read as 254.5 (the exposure's inverse is infinite there). Never negative, NaN or
+/// infinite.
+[[nodiscard]] glm::vec3 decodeImportedValue(glm::vec3 stored,
+                                            const world::ImportedLightEncoding& encoding);
+
 /// Texels of every atlas in order (the layout of BakedLighting::texels); empty when `imported`
 /// has no triangles. Deterministic at any thread count.
 [[nodiscard]] std::vector<world::LightmapTexel> resampleImportedLightmap(

@@ -1,13 +1,17 @@
 // A source format's own bake (world::ImportedLightmap, a Quake 3 map's q3map2 lightmaps) read at
 // the engine's lightmap texels: every sampled texel holds the page's bilinear value (or the
 // corners' vertex light) where the texel lies, in closed form; shards merge to the whole bake's
-// bytes; and package section 36 round-trips and is refused when wrong.
+// bytes; package section 36 round-trips and is refused when wrong; and bytes stored under
+// q3map2's -gamma, -exposure, -compensate, -brightness, -contrast and sRGB options decode to the
+// values q3map2 computed.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
 
 #include <gtest/gtest.h>
 
+#include "bake/lightmap/imported_lightmap.hpp"
 #include "bake/lightmap/texel_placement.hpp"
 #include "bake_scenes.hpp"
 #include "tests/support/error_message.hpp"
@@ -166,6 +170,80 @@ TEST(ImportedLightmap, Section36RoundTripsAndIsCheckedAgainstTheAtlases) {
     EXPECT_NE(errorOf(alone).find("section imported_lightmap present without baked lighting"),
               std::string::npos)
         << errorOf(alone);
+}
+
+// q3map2's ColorToBytes, step by step as q3map2 stores a light value (light_ydnar.c), unrounded:
+// the reference the decoder must invert.
+glm::vec3 q3map2Stored(glm::vec3 v, const world::ImportedLightEncoding& e) {
+    glm::vec3 s = v * e.brightness;
+    for (int c = 0; c < 3; ++c) s[c] = 255.0f * std::pow(s[c] / 255.0f, 1.0f / e.gamma);
+    const float peak = std::max({s.x, s.y, s.z});
+    if (e.exposure == 0.0f) {
+        if (peak > 255.0f) s *= 255.0f / peak;
+    } else if (peak > 0.0f) {
+        s *= (1.0f - std::exp(-peak / e.exposure)) * 255.0f / peak;
+    }
+    s /= e.compensate;
+    if (e.contrast != 1.0f) s = glm::max(e.contrast * (s - 128.0f) + 128.0f, glm::vec3(0.0f));
+    if (e.srgb)
+        for (int c = 0; c < 3; ++c) {
+            const float x = s[c] / 255.0f;
+            s[c] =
+                255.0f * (x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1 / 2.4f) - 0.055f);
+        }
+    return s;
+}
+
+TEST(ImportedLightmap, Q3map2EncodingsDecodeToTheLightQ3map2Computed) {
+    struct Case {
+        const char* name;
+        world::ImportedLightEncoding e;
+    };
+    world::ImportedLightEncoding gamma, exposure, compensate, all;
+    gamma.gamma = 1.5f;
+    exposure.exposure = 175.0f;
+    compensate.compensate = 4.0f;
+    all.brightness = 2.0f;
+    all.gamma = 2.0f;
+    all.exposure = 200.0f;
+    all.compensate = 2.0f;
+    all.contrast = 1.1f;
+    all.srgb = true;
+    for (const Case& k :
+         {Case{"linear", {}}, Case{"gamma 1.5", gamma}, Case{"exposure 175", exposure},
+          Case{"compensate 4", compensate}, Case{"all", all}}) {
+        SCOPED_TRACE(k.name);
+        // Values q3map2 stores without clipping (the exposure keeps every value under 255).
+        for (const glm::vec3 v : {glm::vec3(1.0f, 2.0f, 3.0f), glm::vec3(20.0f, 10.0f, 5.0f),
+                                  glm::vec3(60.0f, 50.0f, 40.0f), glm::vec3(0.0f)}) {
+            const glm::vec3 stored = q3map2Stored(v, k.e);
+            ASSERT_TRUE(glm::all(glm::lessThan(stored, glm::vec3(255.0f))));
+            if (k.e.contrast > 1.0f && v == glm::vec3(0.0f)) continue;  // contrast clips to 0
+            const glm::vec3 back = decodeImportedValue(stored, k.e);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(back[c], v[c], 1e-3f * (1.0f + v[c])) << c;
+        }
+    }
+    // A channel at 255 under an exposure decodes finite, and nothing decodes negative.
+    const glm::vec3 top = decodeImportedValue(glm::vec3(255.0f, 0.0f, 300.0f), exposure);
+    EXPECT_TRUE(std::isfinite(top.x) && std::isfinite(top.z));
+    EXPECT_GT(top.x, 175.0f * 5.0f);  // -E ln(1 - 254.5 / 255) = 6.2 E
+    EXPECT_GE(decodeImportedValue(glm::vec3(0.0f), all).x, 0.0f);
+}
+
+TEST(ImportedLightmap, PagesAndVertexLightAreDecodedBeforeTheyAreRead) {
+    world::SourceLevel level = importedLevel();
+    level.importedLightmap.encoding.compensate = 4.0f;  // every value stored at a quarter
+    const BakeResult r = bakeLevel(level, test::fastBakeOptions());
+    size_t floor = 0, wall = 0;
+    for (const TexelSample& s : placeTexels(r.level)) {
+        const world::LightmapTexel& t = r.baked.importedTexels[s.texel];
+        const glm::vec3 want = 4.0f * expectedAt(s.position);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(t.irradiance[c], want[c], 1e-3f * (1.0f + want[c])) << s.texel;
+        (s.position.z < -1.999f ? wall : floor) += 1;
+    }
+    EXPECT_GT(floor, 100u);
+    EXPECT_GT(wall, 50u);
 }
 
 }  // namespace

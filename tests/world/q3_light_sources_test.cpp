@@ -1,7 +1,8 @@
 // Where a Quake 3 map's light comes from when q3map2 has stripped its light entities: the map's
 // source .map (beside the BSP or in its pk3), else q3map2's own lightmaps; a map with no light
 // at all is marked for the bake to refuse; the .map parser against hostile text; the colour of a
-// surface light (q3map2's display-referred light-image mean).
+// surface light (q3map2's display-referred light-image mean); the light scales and lightmap
+// encoding of q3map2's recorded command line.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -277,6 +278,79 @@ TEST(Quake3LightSources, ASurfaceLightHasQ3map2sColour) {
             << "channel " << c;
     }
     EXPECT_TRUE(mentions(level.lightSources, "surface lights: 1 shader(s), 2 triangles"));
+}
+
+// The BSP's entities: worldspawn with `worldspawnKeys`, and the source map's three lights (a
+// point light of 300, a spot of 600 aimed at an info_null, a linear light of 200).
+std::string entitiesWithLights(const std::string& worldspawnKeys) {
+    return "{\n\"classname\" \"worldspawn\"\n" + worldspawnKeys +
+           "}\n"
+           "{\n\"classname\" \"light\"\n\"origin\" \"32 64 128\"\n\"light\" \"300\"\n}\n"
+           "{\n\"classname\" \"light\"\n\"origin\" \"128 128 256\"\n\"light\" \"600\"\n"
+           "\"target\" \"spot1\"\n}\n"
+           "{\n\"classname\" \"info_null\"\n\"targetname\" \"spot1\"\n\"origin\" \"128 128 0\"\n}\n"
+           "{\n\"classname\" \"light\"\n\"origin\" \"64 64 64\"\n\"light\" \"200\"\n"
+           "\"spawnflags\" \"1\"\n}\n";
+}
+
+SourceLevel importWithEntities(const std::string& name, const std::string& entities) {
+    const auto folder = freshFolder(name);
+    Quake3BspBuilder bsp = floorSquare(40);
+    bsp.entities = entities;
+    writeFile(folder / "room.bsp", bsp.text());
+    return importLevel((folder / "room.bsp").string(), withGameIn(freshFolder(name + "_game")));
+}
+
+TEST(Quake3Q3map2Options, TheLightStagesScalesLightTheMapAndItsEncodingDecodesTheLightmaps) {
+    // -scale in the BSP stage is not the light stage's (it scales the geometry there).
+    const SourceLevel level = importWithEntities(
+        "cmdline", entitiesWithLights("\"_q3map2_cmdline\" \"-meta -scale 9; -vis; -light -fast "
+                                      "-pointscale 2 -spot 3 -gamma 1.5 -compensate 2 -bounce 8 "
+                                      "-dirty\"\n"));
+    ASSERT_EQ(level.lights.size(), 3u);
+    const double candela = 7500.0 / 1024.0;
+    EXPECT_NEAR(level.lights[0].intensity, 300.0 * 2.0 * candela, 1e-2);  // -pointscale
+    EXPECT_EQ(level.lights[1].type, LightType::kSpot);
+    EXPECT_NEAR(level.lights[1].intensity, 600.0 * 6.0 * candela, 1e-2);  // -pointscale, -spot
+    // The linear light's reach doubles with its value: 0.9375 x 400 units.
+    EXPECT_NEAR(level.lights[2].range, 0.9375 * 400.0 / 32.0, 1e-3);
+    const ImportedLightEncoding& e = level.importedLightmap.encoding;
+    EXPECT_EQ(e.gamma, 1.5f);
+    EXPECT_EQ(e.compensate, 2.0f);
+    EXPECT_EQ(e.exposure, 0.0f);
+    EXPECT_TRUE(mentions(level.lightSources, "8 bounces")) << level.lightSources.back();
+    EXPECT_TRUE(mentions(level.lightSources, "dirt")) << level.lightSources.back();
+    EXPECT_TRUE(mentions(level.lightSources, "gamma 1.5")) << level.lightSources.back();
+}
+
+TEST(Quake3Q3map2Options, WithoutACommandLineQ3map2sDefaultsAreAssumedAndSaid) {
+    const SourceLevel level = importWithEntities("nocmdline", entitiesWithLights(""));
+    ASSERT_EQ(level.lights.size(), 3u);
+    EXPECT_NEAR(level.lights[0].intensity, 300.0 * 7500.0 / 1024.0, 1e-2);
+    EXPECT_EQ(level.importedLightmap.encoding.gamma, 1.0f);
+    EXPECT_TRUE(mentions(level.lightSources, "not recorded")) << level.lightSources.back();
+}
+
+TEST(Quake3Q3map2Options, ALightsOwnScaleKeyMultipliesItAsQ3map2s) {
+    const std::string entities =
+        "{\n\"classname\" \"worldspawn\"\n}\n"
+        "{\n\"classname\" \"light\"\n\"origin\" \"32 64 128\"\n\"light\" \"300\"\n"
+        "\"scale\" \"1.5\"\n}\n";
+    const SourceLevel level = importWithEntities("scalekey", entities);
+    ASSERT_EQ(level.lights.size(), 1u);
+    EXPECT_NEAR(level.lights[0].intensity, 450.0 * 7500.0 / 1024.0, 1e-2);
+}
+
+TEST(Quake3Q3map2Options, AValueThatIsNotANumberIsIgnoredWithANote) {
+    const SourceLevel level = importWithEntities(
+        "badcmdline", entitiesWithLights("\"_q3map2_cmdline\" \"-light -gamma abc -bounce 2.5 "
+                                         "-exposure\"\n"));
+    EXPECT_EQ(level.importedLightmap.encoding.gamma, 1.0f);
+    EXPECT_EQ(level.importedLightmap.encoding.exposure, 0.0f);
+    EXPECT_TRUE(mentions(level.importNotes, "-gamma 'abc' ignored: expected a number"));
+    EXPECT_TRUE(mentions(level.importNotes, "-bounce '2.5' ignored: expected a whole number"));
+    EXPECT_TRUE(mentions(level.importNotes, "-exposure (nothing) ignored"));
+    EXPECT_TRUE(mentions(level.importNotes, "room.bsp")) << "the note names the map";
 }
 
 }  // namespace

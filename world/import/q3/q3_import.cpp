@@ -25,6 +25,7 @@
 #include "world/import/q3/map_source.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
+#include "world/import/q3/q3map2_command_line.hpp"
 #include "world/import/q3/shader_script.hpp"
 #include "world/light_model.hpp"
 
@@ -133,6 +134,7 @@ struct MaterialTable {
     std::map<int32_t, uint32_t> byShader;
     std::map<std::string, uint32_t> textureByImage;  // (name + sRGB) -> textures
     uint32_t missingImages = 0;
+    float areaScale = 1.0f;  // q3map2's -area / -scale (q3map2_command_line.hpp)
 
     // A texture of the image `name` (.tga or .jpg, the extension as written or not), or
     // kNoIndex when no archive holds it.
@@ -201,11 +203,11 @@ struct MaterialTable {
                 const ImageMeans mean = meanColours(files, lightImageOf(*script));
                 const glm::vec3 colour = normalisedColour(mean.bytes);
                 for (int c = 0; c < 3; ++c)
-                    m.emissive[c] =
-                        mean.linear[c] > 1e-4f
-                            ? float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) *
-                                  colour[c] / mean.linear[c]
-                            : 0.0f;
+                    m.emissive[c] = mean.linear[c] > 1e-4f
+                                        ? float(kQuake3NitsPerSurfaceLight *
+                                                double(script->surfaceLight) * double(areaScale)) *
+                                              colour[c] / mean.linear[c]
+                                        : 0.0f;
             }
         }
         m.albedo = glm::vec3(m.baseColor);
@@ -314,9 +316,9 @@ void addSpawns(SourceLevel& level, const std::vector<MapEntity>& entities,
 }
 
 // Point lights, spots where they aim at a target (q3map2's cone), candela by
-// kQuake3CandelaPerLight, all baked until chooseLightRoles.
-void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
-               const std::string& where) {
+// kQuake3CandelaPerLight times q3map2's -point / -spot scales, all baked until chooseLightRoles.
+void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const std::string& where,
+               const Q3map2LightOptions& q3map2) {
     std::map<std::string, glm::vec3> targets;
     for (const MapEntity& e : entities)
         if (e.keys.count("targetname"))
@@ -329,10 +331,12 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
         const glm::vec3 origin = vectorKey(e, "origin", glm::vec3(0.0f), where);
         l.position = levelPoint(origin);
         bool more = false;
-        const float value = firstNumberKey(
-            e, "light", firstNumberKey(e, "_light", 300.0f, where, &more), where, &more);
+        float value = firstNumberKey(e, "light", firstNumberKey(e, "_light", 300.0f, where, &more),
+                                     where, &more);
         halfLife += more;
-        l.intensity = float(double(std::max(0.0f, value)) * kQuake3CandelaPerLight);
+        const float own = numberKey(e, "scale", 0.0f, where);  // q3map2: the light's "scale", 0 = 1
+        if (own != 0.0f) value *= own;
+        float scale = q3map2.pointScale;  // -point; -spot for a spot
         glm::vec3 color = vectorKey(e, "_color", glm::vec3(1.0f), where);
         const float peak = std::max({color.x, color.y, color.z});
         l.color = peak > 0.0f ? glm::max(color / peak, glm::vec3(0.0f)) : glm::vec3(1.0f);
@@ -345,20 +349,23 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities,
             if (distance > 0.0f) {
                 const float radius = numberKey(e, "radius", 64.0f, where);
                 l.type = LightType::kSpot;
+                scale = q3map2.spotScale;
                 const float tangent[3] = {to.x / distance, to.y / distance, to.z / distance};
                 l.direction = levelDirection(tangent);
                 l.outerCone = std::min(1.5f, std::atan((radius + 16.0f) / distance));
                 l.innerCone = 0.8f * l.outerCone;
             }
         }
+        value = std::max(0.0f, value) * scale;
+        l.intensity = float(double(value) * kQuake3CandelaPerLight);
         const int flags = int(numberKey(e, "spawnflags", 0.0f, where));
         if (flags & 1) {
             // Linear falloff (q3_import.hpp, "Linear lights"), matched at half its reach.
             const double fade = std::max(1e-3, double(numberKey(e, "fade", 1.0f, where)));
-            const double reach = kQuake3LinearScale * double(std::max(0.0f, value)) / fade;
+            const double reach = kQuake3LinearScale * double(value) / fade;
             const double half = 0.5 * reach * kQuake3MetresPerUnit;
             const double window = (1.0 - 1.0 / 16.0) * (1.0 - 1.0 / 16.0);
-            const double atHalf = 0.5 * kQuake3LinearScale * double(std::max(0.0f, value));  // lux
+            const double atHalf = 0.5 * kQuake3LinearScale * double(value);  // lux
             l.intensity = float(atHalf * half * half / window);
             l.range = float(reach * kQuake3MetresPerUnit);
             ++linear;
@@ -469,14 +476,15 @@ std::pair<glm::vec3, glm::vec3> geometryBounds(const SourceLevel& level) {
 // added as if the BSP had kept them; lights far outside the map's geometry (a source that does
 // not match the BSP) are left out. A source that does not parse is ignored with a note. Returns
 // how many lights it added; `where` is the source's name.
-size_t addSourceLights(SourceLevel& level, const OpenedMap& map, std::string& where) {
+size_t addSourceLights(SourceLevel& level, const OpenedMap& map, const Q3map2LightOptions& q3map2,
+                       std::string& where) {
     std::optional<SourceText> source;
     const size_t before = level.lights.size();
     try {
         source = findMapSource(map);
         if (!source) return 0;
         where = source->where;
-        addLights(level, parseMapSource(source->text, source->where), source->where);
+        addLights(level, parseMapSource(source->text, source->where), source->where, q3map2);
     } catch (const Error& e) {
         level.lights.resize(before);
         level.importNotes.push_back(std::string(e.what()) +
@@ -601,9 +609,10 @@ void chooseLightRoles(SourceLevel& level, uint32_t maximum) {
 }
 
 // The sun (q3map_sun, a primary directional light in lux) and a uniform sky (q3map_skylight
-// V as L = V / pi, so an open floor gets V lux) of the map's sky shaders.
+// V as L = V / pi, so an open floor gets V lux) of the map's sky shaders, times q3map2's -sky
+// scale (an older sky's surface light: its -area scale).
 void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& scripts,
-                  const GameFiles& files) {
+                  const GameFiles& files, const Q3map2LightOptions& q3map2) {
     for (const BspShader& shader : bsp.shaders) {
         const ShaderScript* script = scriptOf(scripts, shader);
         if (!script || !script->surfaceParms.count("sky")) continue;
@@ -617,17 +626,19 @@ void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& s
             l.type = LightType::kDirectional;
             l.role = LightRole::kPrimary;
             l.direction = -levelDirection(toSun);
-            l.intensity = sun.intensity;
+            l.intensity = sun.intensity * q3map2.skyScale;
             const float peak = std::max({sun.color.x, sun.color.y, sun.color.z});
             l.color = peak > 0.0f ? glm::max(sun.color / peak, glm::vec3(0.0f)) : glm::vec3(1.0f);
             level.lights.push_back(l);
         }
         if (script->skyLight > 0.0f) {
-            level.skyRadiance = glm::vec3(float(double(script->skyLight) / std::numbers::pi));
+            level.skyRadiance = glm::vec3(
+                float(double(script->skyLight) * double(q3map2.skyScale) / std::numbers::pi));
         } else if (script->surfaceLight > 0.0f) {
             // The older way: q3map2 makes the sky's faces area lights of value S, which is a
             // sky of 0.25 S cd/m^2 (q3_import.hpp) in the light image's normalised mean colour.
-            level.skyRadiance = float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight)) *
+            level.skyRadiance = float(kQuake3NitsPerSurfaceLight * double(script->surfaceLight) *
+                                      double(q3map2.areaScale)) *
                                 normalisedColour(meanColours(files, lightImageOf(*script)).bytes);
         }
         return;  // one sky per map
@@ -660,12 +671,14 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
                             files.looseFiles.end());
     level.importNotes = bsp.notes;
     const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
+    const Q3map2LightOptions q3map2 = readQ3map2LightOptions(entities, map.where);
+    level.importNotes.insert(level.importNotes.end(), q3map2.notes.begin(), q3map2.notes.end());
     const LightmapPages lightmaps =
         readLightmapPages(bsp, entities, files, opened.name, opened.bspFile, map.where);
     level.importNotes.insert(level.importNotes.end(), lightmaps.notes.begin(),
                              lightmaps.notes.end());
     const ShaderScripts scripts = loadShaderScripts(files);
-    MaterialTable materials{level, files, {}, {}, 0};
+    MaterialTable materials{level, files, {}, {}, 0, q3map2.areaScale};
     std::map<uint32_t, MeshInstance> meshes;  // by material
     for (size_t s = 0; s < bsp.surfaces.size(); ++s) {
         const BspSurface& f = bsp.surfaces[s];
@@ -707,8 +720,9 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     level.importedLightmap.pageSize = lightmaps.pageSize;
     level.importedLightmap.pages = lightmaps.colour;
     level.importedLightmap.directionPages = lightmaps.direction;
+    level.importedLightmap.encoding = q3map2.encoding;
     level.importedLightmap.luxPerValue = 1.0f;  // one lightmap unit is one lux (q3_import.hpp)
-    addSunAndSky(level, bsp, scripts, files);
+    addSunAndSky(level, bsp, scripts, files, q3map2);
     // q3map2's lightmap density: one luxel per 16 units, times worldspawn's _lightmapscale.
     const float luxelUnits =
         16.0f *
@@ -724,14 +738,16 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     level.collision = importCollision(bsp, entities, nonsolid, map.where, level.importNotes);
     addComputedSpawn(level, map.where);
     const size_t skyLights = level.lights.size();
-    addLights(level, entities, map.where);
+    addLights(level, entities, map.where, q3map2);
     size_t entityLights = level.lights.size() - skyLights;
     std::string entityWhere = "the BSP's entities", sourceWhere;
-    if (entityLights == 0 && (entityLights = addSourceLights(level, opened, sourceWhere)) > 0)
+    if (entityLights == 0 &&
+        (entityLights = addSourceLights(level, opened, q3map2, sourceWhere)) > 0)
         entityWhere = "the source .map " + sourceWhere;
     noteIgnoredAmbient(level, entities, map.where);
     chooseLightRoles(level, options.primaryLights);
     settleLightSources(level, entityLights, entityWhere, map.where);
+    level.lightSources.push_back(q3map2.summary());
     checkLevelLimits(level);
     return level;
 }

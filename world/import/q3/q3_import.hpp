@@ -29,6 +29,10 @@ namespace onelight::world {
    reaching zero at R = 0.9375 L / fade units. Approximated (and reported) as an inverse-square
    light with range R (the KHR_lights_punctual window) matched to q3map2 at R / 2:
    I = 0.46875 L x (R / 64 m)^2 / (1 - 1/16)^2 cd (q3map2 gives 0.46875 L there, for any fade).
+   q3map2's recorded options (worldspawn _q3map2_cmdline, its -light stage;
+   q3map2_command_line.hpp): its light scales multiply the lights above, its lightmap encoding
+   (gamma, exposure, compensate, brightness, contrast, sRGB) is inverted where q3map2's lightmaps
+   are read, and a light's own "scale" key multiplies it, all as q3map2 does.
    Worldspawn ambient, _ambient and _minlight (constants q3map2 adds to every luxel, light from
    nowhere) are ignored and reported: the bake's bounces light what they stood in for.
    Where the lights come from (q3map2 strips light entities from the BSP it compiles): the
