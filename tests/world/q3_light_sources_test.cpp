@@ -19,6 +19,7 @@
 #include "world/import/level_import.hpp"
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/map_source.hpp"
+#include "world/import/q3/q3map2_command_line.hpp"
 
 namespace onelight::world::q3 {
 namespace {
@@ -351,6 +352,46 @@ TEST(Quake3Q3map2Options, AValueThatIsNotANumberIsIgnoredWithANote) {
     EXPECT_TRUE(mentions(level.importNotes, "-bounce '2.5' ignored: expected a whole number"));
     EXPECT_TRUE(mentions(level.importNotes, "-exposure (nothing) ignored"));
     EXPECT_TRUE(mentions(level.importNotes, "room.bsp")) << "the note names the map";
+}
+
+// Pages holding `texels` texels whose three channels are each value of `values` in turn.
+std::vector<uint8_t> pagesOf(const std::vector<std::pair<uint8_t, size_t>>& values) {
+    std::vector<uint8_t> rgb;
+    for (const auto& [value, texels] : values)
+        for (size_t i = 0; i < texels; ++i) rgb.insert(rgb.end(), {value, uint8_t(value / 2), 0});
+    return rgb;
+}
+
+TEST(Quake3Q3map2Options, APileUpBelow255ShowsQ3map2sCompensate) {
+    // -compensate 2: clamped at 255, halved: the brightest pile up at 127.
+    EXPECT_EQ(compensateShownByPages(pagesOf({{10, 500}, {126, 5}, {127, 100}})), 2.0f);
+    // -compensate 3: at 85.
+    EXPECT_EQ(compensateShownByPages(pagesOf({{10, 500}, {84, 2}, {85, 40}})), 3.0f);
+    // No pile-up: a map that is simply dim, or one that clamps at 255 (no compensate).
+    EXPECT_EQ(compensateShownByPages(pagesOf({{10, 500}, {126, 30}, {127, 1}})), 1.0f);
+    EXPECT_EQ(compensateShownByPages(pagesOf({{10, 500}, {127, 10}})), 1.0f);  // too few
+    EXPECT_EQ(compensateShownByPages(pagesOf({{10, 500}, {254, 5}, {255, 100}})), 1.0f);
+    EXPECT_EQ(compensateShownByPages({}), 1.0f);
+    // Off the quarters: 255 / 100.5.
+    EXPECT_NEAR(compensateShownByPages(pagesOf({{10, 50}, {100, 50}})), 255.0 / 100.5, 1e-5);
+}
+
+TEST(Quake3Q3map2Options, AnUnrecordedMapsLightmapsDecodeWithTheCompensateTheyShow) {
+    const auto folder = freshFolder("inferred");
+    Quake3BspBuilder bsp = floorSquare(127);  // every byte 127: a pile-up and nothing above
+    writeFile(folder / "room.bsp", bsp.text());
+    const SourceLevel level =
+        importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("inferred_game")));
+    EXPECT_EQ(level.importedLightmap.encoding.compensate, 2.0f);
+    EXPECT_TRUE(mentions(level.lightSources, "clamp at 127, as -compensate 2 makes them"))
+        << level.lightSources.back();
+    // A recorded command line is the record: nothing is inferred.
+    const auto recorded = freshFolder("recorded");
+    bsp.entities = "{\n\"classname\" \"worldspawn\"\n\"_q3map2_cmdline\" \"-light -fast\"\n}\n";
+    writeFile(recorded / "room.bsp", bsp.text());
+    const SourceLevel kept =
+        importLevel((recorded / "room.bsp").string(), withGameIn(freshFolder("recorded_game")));
+    EXPECT_EQ(kept.importedLightmap.encoding.compensate, 1.0f);
 }
 
 }  // namespace

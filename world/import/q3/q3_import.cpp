@@ -671,12 +671,16 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
                             files.looseFiles.end());
     level.importNotes = bsp.notes;
     const std::vector<MapEntity> entities = parseEntities(bsp.entities, map.where);
-    const Q3map2LightOptions q3map2 = readQ3map2LightOptions(entities, map.where);
+    Q3map2LightOptions q3map2 = readQ3map2LightOptions(entities, map.where);
     level.importNotes.insert(level.importNotes.end(), q3map2.notes.begin(), q3map2.notes.end());
     const LightmapPages lightmaps =
         readLightmapPages(bsp, entities, files, opened.name, opened.bspFile, map.where);
     level.importNotes.insert(level.importNotes.end(), lightmaps.notes.begin(),
                              lightmaps.notes.end());
+    if (!q3map2.recorded) {
+        q3map2.encoding.compensate = compensateShownByPages(lightmaps.colour);
+        q3map2.compensateInferred = q3map2.encoding.compensate != 1.0f;
+    }
     const ShaderScripts scripts = loadShaderScripts(files);
     MaterialTable materials{level, files, {}, {}, 0, q3map2.areaScale};
     std::map<uint32_t, MeshInstance> meshes;  // by material

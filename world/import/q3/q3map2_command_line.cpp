@@ -1,5 +1,6 @@
 #include "world/import/q3/q3map2_command_line.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -136,10 +137,28 @@ Q3map2LightOptions readQ3map2LightOptions(const std::vector<MapEntity>& entities
     return o;
 }
 
+float compensateShownByPages(const std::vector<uint8_t>& rgbPages) {
+    std::vector<uint64_t> count(256, 0);
+    for (size_t i = 0; i + 2 < rgbPages.size(); i += 3)
+        ++count[std::max({rgbPages[i], rgbPages[i + 1], rgbPages[i + 2]})];
+    uint32_t top = 255;
+    while (top > 0 && count[top] == 0) --top;
+    if (top == 255 || top < 2 || count[top] < 16 || count[top] < 8 * count[top - 1]) return 1.0f;
+    const double c = 255.0 / (double(top) + 0.5);
+    const double quarter = std::round(4.0 * c) / 4.0;
+    return float(std::abs(quarter - c) <= 0.01 * c ? quarter : c);
+}
+
 std::string Q3map2LightOptions::summary() const {
     if (!recorded)
-        return "q3map2 options: not recorded (no _q3map2_cmdline -light stage); its defaults "
-               "assumed: no bounces, no dirt, lightmap bytes linear";
+        return std::string(
+                   "q3map2 options: not recorded (no _q3map2_cmdline -light stage); its "
+                   "defaults assumed: no bounces, no dirt, lightmap bytes linear") +
+               (compensateInferred
+                    ? ", but its lightmaps clamp at " +
+                          std::to_string(int(255.0f / encoding.compensate)) + ", as -compensate " +
+                          number(encoding.compensate) + " makes them: decoded with it"
+                    : std::string());
     std::string s = "q3map2 options: '" + lightStage.substr(0, 120) +
                     (lightStage.size() > 120 ? "..." : "") + "': ";
     s += bounces ? std::to_string(bounces) + " bounces" : std::string("no bounces");

@@ -24,10 +24,12 @@ struct Q3map2LightOptions {
     // the point and spot lights, -spherical the point lights, -spot the spot lights, -area the
     // surface lights, -sky the sun and sky).
     float pointScale = 1.0f, spotScale = 1.0f, areaScale = 1.0f, skyScale = 1.0f;
-    uint32_t bounces = 0;            // -bounce N: q3map2's radiosity passes
-    float bounceScale = 1.0f;        // -bouncescale (and -scale) over its default 0.25
-    bool dirt = false;               // -dirty / -dirt: ambient occlusion darkening its lightmaps
-    std::vector<std::string> notes;  // options read but unusable (a value that is not a number)
+    uint32_t bounces = 0;             // -bounce N: q3map2's radiosity passes
+    float bounceScale = 1.0f;         // -bouncescale (and -scale) over its default 0.25
+    bool dirt = false;                // -dirty / -dirt: ambient occlusion darkening its lightmaps
+    std::vector<std::string> notes;   // options read but unusable (a value that is not a number)
+    bool compensateInferred = false;  // encoding.compensate from the pages
+                                      // (compensateShownByPages), not the command line
 
     /// One line for the import's report: what the stage changes, or that nothing was recorded
     /// (q3map2's defaults assumed: no bounces, no dirt, linear bytes).
@@ -39,5 +41,13 @@ struct Q3map2LightOptions {
 /// count) is left at its default with a note naming `where` and the option.
 [[nodiscard]] Q3map2LightOptions readQ3map2LightOptions(const std::vector<MapEntity>& entities,
                                                         const std::string& where);
+
+/// q3map2's -compensate C as a map's lightmap pages (RGB8) show it, for a map whose command line
+/// is not recorded: q3map2 clamps a value's brightest channel at 255 and then divides by C, so the
+/// brightest channels of a map compiled with C > 1 pile up at M = floor(255 / C) and never pass
+/// it. A pile-up (M < 255 the largest brightest channel, held by at least 16 texels and 8 times
+/// as many as hold M - 1) gives C = 255 / (M + 1/2), snapped to a multiple of 1/4 within 1%;
+/// anything else gives 1.
+[[nodiscard]] float compensateShownByPages(const std::vector<uint8_t>& rgbPages);
 
 }  // namespace onelight::world::q3
