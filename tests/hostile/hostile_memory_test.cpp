@@ -1,5 +1,9 @@
 // Memory bounds: a level's decoded images are charged against a budget from their headers, so
-// the refusal comes before the allocation and names the image, the total and the limit.
+// the refusal comes before the allocation and names the image, the total and the limit; and an
+// image whose header claims more texels than its bytes can hold (a TGA's RLE walked exactly, a
+// PNG or JPEG by its format's best ratio) is refused before it is decoded.
+#include <chrono>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -59,6 +63,88 @@ TEST(HostileMemory, TheBudgetCountsWhatATexelCostsItsHolder) {
     world::ImageMemoryBudget full{};
     for (int i = 0; i < 8; ++i) world::chargeImage(full, 16384, 16384, "image");
     EXPECT_THROW(world::chargeImage(full, 16384, 16384, "image 8"), world::Error);
+}
+
+// A TGA header: `type` 2 raw or 10 run-length coded, 24-bit, `width` x `height`, top-left.
+std::vector<uint8_t> tgaHeader(uint8_t type, uint16_t width, uint16_t height) {
+    return {0,
+            0,
+            type,
+            0,
+            0,
+            0,
+            0,
+            0,
+            0,
+            0,
+            0,
+            0,
+            uint8_t(width),
+            uint8_t(width >> 8),
+            uint8_t(height),
+            uint8_t(height >> 8),
+            24,
+            0x20};
+}
+
+std::string decodeError(const std::vector<uint8_t>& bytes, double* seconds = nullptr) {
+    const auto start = std::chrono::steady_clock::now();
+    std::string message;
+    try {
+        (void)world::decodeImage(bytes.data(), bytes.size(), "maps.pk3:textures/x.tga");
+    } catch (const world::Error& e) {
+        message = e.what();
+    }
+    if (seconds)
+        *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return message;
+}
+
+TEST(HostileMemory, ATgaIsRefusedWhenItsTexelDataCannotHoldItsHeader) {
+    // 16384^2 claimed in 1 KB of RLE: 8 texels a packet of 4 bytes at most covers 2048 texels.
+    std::vector<uint8_t> big = tgaHeader(10, 16384, 16384);
+    for (int i = 0; i < 256; ++i) big.insert(big.end(), {0x87, 1, 2, 3});
+    double seconds = 0.0;
+    std::string message = decodeError(big, &seconds);
+    EXPECT_EQ(message,
+              "maps.pk3:textures/x.tga: a run-length coded TGA ends after 2048 of its "
+              "268435456 texels (byte 1042); expected the rest");
+    EXPECT_LT(seconds, 1.0) << "refused before 1 GiB is allocated";
+    // A 4x4 RLE image whose packets cover 10 texels: truncated, not padded with zeros.
+    std::vector<uint8_t> cut = tgaHeader(10, 4, 4);
+    cut.insert(cut.end(), {0x89, 9, 9, 9});
+    EXPECT_NE(decodeError(cut).find("ends after 10 of its 16 texels"), std::string::npos)
+        << decodeError(cut);
+    // The same image whole decodes: one run of 16 texels.
+    std::vector<uint8_t> whole = tgaHeader(10, 4, 4);
+    whole.insert(whole.end(), {0x8F, 10, 20, 30});
+    const world::DecodedImage image =
+        world::decodeImage(whole.data(), whole.size(), "maps.pk3:textures/x.tga");
+    ASSERT_EQ(image.width, 4u);
+    EXPECT_EQ(image.rgba[0], 30);  // TGA stores BGR
+    EXPECT_EQ(image.rgba[4 * 15 + 2], 10);
+    // A raw image one byte short.
+    std::vector<uint8_t> raw = tgaHeader(2, 2, 2);
+    raw.resize(raw.size() + 11, 7);
+    EXPECT_EQ(decodeError(raw),
+              "maps.pk3:textures/x.tga: a TGA of 4 texels in 11 bytes of texel "
+              "data; expected 12");
+}
+
+TEST(HostileMemory, APngClaimingMoreThanDeflateCanHoldIsRefusedBeforeDecoding) {
+    // kPng64 with its IHDR saying 16384 x 16384 (the CRC is not what stb checks first).
+    std::vector<uint8_t> png = kPng64;
+    for (int at : {16, 20}) {
+        png[size_t(at)] = 0, png[size_t(at) + 1] = 0, png[size_t(at) + 2] = 0x40,
+        png[size_t(at) + 3] = 0;
+    }
+    double seconds = 0.0;
+    const std::string message = decodeError(png, &seconds);
+    EXPECT_NE(message.find("a PNG of 158 bytes claims 16384x16384 texels; expected at most 8256 "
+                           "texels a byte of it"),
+              std::string::npos)
+        << message;
+    EXPECT_LT(seconds, 1.0);
 }
 
 }  // namespace

@@ -424,7 +424,8 @@ TEST(Quake3Shaders, TheGamesScriptsAllParse) {
         if (key.rfind("scripts/", 0) != 0 || key.size() < 7 ||
             key.compare(key.size() - 7, 7, ".shader") != 0)
             continue;
-        const std::vector<uint8_t> bytes = *files.read(key);
+        const std::vector<uint8_t> bytes =
+            *files.read(key, kMaxShaderScriptBytes, "a shader script");
         shaders +=
             parseShaderScript(std::string(bytes.begin(), bytes.end()), files.where(key)).size();
         ++scripts;

@@ -92,7 +92,7 @@ void writeFile(const std::filesystem::path& path, const Bytes& bytes) {
 }
 
 void writePk3(const std::filesystem::path& path,
-              const std::vector<std::pair<std::string, std::string>>& files) {
+              const std::vector<std::pair<std::string, std::string>>& files, bool stored) {
     if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
     int error = 0;
     zip_t* zip = zip_open(path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
@@ -100,7 +100,11 @@ void writePk3(const std::filesystem::path& path,
     for (const auto& [name, data] : files) {
         zip_source_t* source = zip_source_buffer(zip, data.data(), data.size(), 0);
         ASSERT_NE(source, nullptr) << name;
-        ASSERT_GE(zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE), 0) << name;
+        const zip_int64_t index = zip_file_add(zip, name.c_str(), source, ZIP_FL_OVERWRITE);
+        ASSERT_GE(index, 0) << name;
+        if (stored) {
+            ASSERT_EQ(zip_set_file_compression(zip, zip_uint64_t(index), ZIP_CM_STORE, 0), 0);
+        }
     }
     ASSERT_EQ(zip_close(zip), 0) << path;  // `files` outlive the close, which reads them
 }

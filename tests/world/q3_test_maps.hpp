@@ -48,10 +48,10 @@ Quake3BspBuilder floorSquare(uint8_t lightmapValue);
 void writeFile(const std::filesystem::path& path, std::string_view bytes);
 void writeFile(const std::filesystem::path& path, const Bytes& bytes);
 
-/// A pk3 (a zip archive, deflated as the game's are) holding `files` (name, bytes); a gtest
-/// failure if libzip refuses.
+/// A pk3 (a zip archive, deflated as the game's are, or `stored` uncompressed) holding `files`
+/// (name, bytes); a gtest failure if libzip refuses.
 void writePk3(const std::filesystem::path& path,
-              const std::vector<std::pair<std::string, std::string>>& files);
+              const std::vector<std::pair<std::string, std::string>>& files, bool stored = false);
 
 /// An uncompressed 24-bit TGA, `width` x (texels / width), rows top to bottom.
 std::string tgaImage(uint32_t width, const std::vector<glm::u8vec3>& texels);

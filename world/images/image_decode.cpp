@@ -1,5 +1,6 @@
 #include "world/images/image_decode.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -34,6 +35,81 @@ void checkExtent(int width, int height, const std::string& where) {
                     "; expected 1.." + std::to_string(kMaxImageExtent) + " texels a side");
 }
 
+// TGA's header fields (little-endian) that say how many bytes its texels take.
+struct TgaHeader {
+    uint32_t idLength, colourMapType, imageType, colourMapLength, colourMapEntryBits, bitsPerPixel;
+};
+
+TgaHeader tgaHeader(const uint8_t* b) {
+    return {b[0], b[1], b[2], uint32_t(b[5] | b[6] << 8), b[7], b[16]};
+}
+
+// Whether the texel data of a TGA (types 1-3 raw, 9-11 run-length coded) holds `texels`
+// texels: raw data must be whole; RLE packets are walked (no allocation) until they cover every
+// texel. stb_image pads a short image with zeros, which would hide a truncated file.
+void checkTgaHolds(const uint8_t* bytes, size_t size, uint64_t texels, const std::string& where) {
+    if (size < 18)
+        throw Error(where + ": a TGA of " + std::to_string(size) +
+                    " bytes; expected a "
+                    "header of 18");
+    const TgaHeader h = tgaHeader(bytes);
+    const uint64_t pixelBytes = (uint64_t(h.bitsPerPixel) + 7) / 8;
+    const uint64_t start =
+        18 + uint64_t(h.idLength) +
+        (h.colourMapType ? uint64_t(h.colourMapLength) * ((uint64_t(h.colourMapEntryBits) + 7) / 8)
+                         : 0);
+    if (pixelBytes == 0 || start > size)
+        throw Error(where + ": a TGA whose header and colour map pass its " + std::to_string(size) +
+                    " bytes, or " + std::to_string(h.bitsPerPixel) + " bits a texel");
+    const uint64_t available = size - start;
+    if (h.imageType < 9) {
+        if (texels * pixelBytes > available)
+            throw Error(where + ": a TGA of " + std::to_string(texels) + " texels in " +
+                        std::to_string(available) + " bytes of texel data; expected " +
+                        std::to_string(texels * pixelBytes));
+        return;
+    }
+    uint64_t covered = 0, at = start;
+    while (covered < texels) {
+        if (at >= size)
+            throw Error(where + ": a run-length coded TGA ends after " + std::to_string(covered) +
+                        " of its " + std::to_string(texels) + " texels (byte " +
+                        std::to_string(size) + "); expected the rest");
+        const uint8_t packet = bytes[at++];
+        const uint64_t count = uint64_t(packet & 0x7F) + 1;
+        at += (packet & 0x80) ? pixelBytes : count * pixelBytes;
+        covered += count;
+        if (at > size) covered = std::min(covered, texels - 1), at = size;  // cut mid-packet
+    }
+}
+
+// A bound on the texels `size` encoded bytes can hold, known before decoding: an image whose
+// header claims more is refused before anything is allocated. PNG: deflate expands at most
+// 1032:1, and a 1-bit texel takes 1/8 byte; JPEG: every 8x8 block costs at least one bit
+// (progressive DC); Radiance HDR (stb reads flat or new-style RLE): at least 1/16 byte a texel.
+// TGA is checked exactly (checkTgaHolds).
+void checkEncodedHolds(const uint8_t* bytes, size_t size, int width, int height,
+                       const std::string& where) {
+    const uint64_t texels = uint64_t(width) * uint64_t(height);
+    uint64_t perByte = 0;
+    const char* format = nullptr;
+    if (size >= 8 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G') {
+        perByte = 1032 * 8, format = "PNG";
+    } else if (size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8) {
+        perByte = 64 * 8, format = "JPEG";
+    } else if (size >= 2 && bytes[0] == '#' && bytes[1] == '?') {
+        perByte = 16, format = "Radiance HDR";
+    } else {
+        checkTgaHolds(bytes, size, texels, where);
+        return;
+    }
+    if (texels > perByte * uint64_t(size))
+        throw Error(where + ": a " + format + " of " + std::to_string(size) + " bytes claims " +
+                    std::to_string(width) + "x" + std::to_string(height) +
+                    " texels; expected at most " + std::to_string(perByte) +
+                    " texels a byte of it");
+}
+
 }  // namespace
 
 DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& where,
@@ -46,6 +122,7 @@ DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& w
         throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() +
                     ")");
     checkExtent(width, height, where);
+    checkEncodedHolds(bytes, size, width, height, where);
     if (budget) chargeImage(*budget, uint32_t(width), uint32_t(height), where);
     stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
     if (!pixels)
@@ -78,6 +155,7 @@ HdrImage decodeHdrImage(const uint8_t* bytes, size_t size, const std::string& wh
         !stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
         throw Error(where + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
     checkExtent(width, height, where);
+    checkEncodedHolds(bytes, size, width, height, where);
     if (budget) chargeImage(*budget, uint32_t(width), uint32_t(height), where);
     float* pixels = stbi_loadf_from_memory(bytes, int(size), &width, &height, &channels, 3);
     if (!pixels)

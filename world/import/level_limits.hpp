@@ -18,6 +18,9 @@ inline constexpr double kMaxCoordinateMetres = 1e6;
 /// Most triangles (static and dynamic, after import) and most lights a level may have.
 inline constexpr uint64_t kMaxLevelTriangles = uint64_t(1) << 26;  // 67M
 inline constexpr uint64_t kMaxLevelLights = 65536;
+/// Most vertices the import may build (a Quake 3 map's surfaces each copy their vertex range,
+/// which many may share; its patches make (level + 1)^2 a piece).
+inline constexpr uint64_t kMaxLevelVertices = uint64_t(1) << 26;
 
 /// Throws world::Error naming `level.sourcePath`, the element and the limit when the level
 /// passes one of the limits above.

@@ -101,7 +101,7 @@ OpenedMap openFromPk3(const std::string& spec, size_t colon,
             if (fileKey(n) == fileKey(inside)) {
                 map.where = pk3.string() + ":" + n;
                 map.pk3 = pk3.string();
-                map.bsp = parseBsp(archive.read(n), map.where);
+                map.bsp = parseBsp(archive.read(n, kMaxMapBytes, "a Quake 3 map"), map.where);
                 found = true;
                 break;
             }
@@ -187,7 +187,7 @@ OpenedMap openByName(const std::string& spec, const std::vector<std::string>& ga
     map.where = map.files.where(name);
     const size_t archive = map.files.files.at(fileKey(name)).first;
     if (archive != GameFiles::kLoose) map.pk3 = map.files.archives[archive]->path();
-    map.bsp = parseBsp(*map.files.read(name), map.where);
+    map.bsp = parseBsp(*map.files.read(name, kMaxMapBytes, "a Quake 3 map"), map.where);
     return map;
 }
 

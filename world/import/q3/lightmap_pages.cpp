@@ -30,7 +30,7 @@ std::optional<std::vector<uint8_t>> externalPage(const GameFiles& files, const s
     char file[32];
     std::snprintf(file, sizeof file, "lm_%04u.tga", index);
     const std::string inGame = "maps/" + name + "/" + file;
-    if (auto bytes = files.read(inGame)) {
+    if (auto bytes = files.read(inGame, kMaxEncodedImageBytes, "an image")) {
         from = files.where(inGame);
         return bytes;
     }
@@ -39,7 +39,7 @@ std::optional<std::vector<uint8_t>> externalPage(const GameFiles& files, const s
     std::error_code ec;
     if (!fs::is_regular_file(beside, ec)) return std::nullopt;
     from = beside.string();
-    return readRegularFile(from, "an external lightmap (q3map2 -external)");
+    return readRegularFile(from, "an external lightmap (q3map2 -external)", kMaxEncodedImageBytes);
 }
 
 bool takesDeluxe(const BspFile& bsp, const std::vector<MapEntity>& entities, size_t pages) {

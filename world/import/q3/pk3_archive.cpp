@@ -1,8 +1,10 @@
 #include "world/import/q3/pk3_archive.hpp"
 
 #include <zip.h>
+#include <zlib.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include "world/error.hpp"
@@ -39,22 +41,53 @@ Pk3Archive::Pk3Archive(const std::string& path) : path_(path), zip_(std::make_un
 
 Pk3Archive::~Pk3Archive() = default;
 
-std::vector<uint8_t> Pk3Archive::read(const std::string& name) const {
+std::vector<uint8_t> Pk3Archive::read(const std::string& name, size_t limit,
+                                      const char* what) const {
+    const std::string where = path_ + ":" + clipForMessage(name);
     zip_stat_t stat;
     zip_stat_init(&stat);
     if (zip_stat(zip_->zip, name.c_str(), 0, &stat) != 0 || !(stat.valid & ZIP_STAT_SIZE))
-        throw Error(path_ + ":" + name + ": no such file in the archive");
-    if (stat.size > (zip_uint64_t(1) << 31))
-        throw Error(path_ + ":" + name + ": " + std::to_string(stat.size) +
-                    " bytes; expected at most 2 GiB");
+        throw Error(where + ": no such file in the archive");
+    if (stat.size > limit)
+        throw Error(where + ": " + std::to_string(stat.size) + " bytes uncompressed; expected " +
+                    what + " of at most " + std::to_string(limit));
     zip_file_t* file = zip_fopen(zip_->zip, name.c_str(), 0);
-    if (!file) throw Error(path_ + ":" + name + ": cannot open it in the archive");
+    if (!file) throw Error(where + ": cannot open it in the archive");
     std::vector<uint8_t> bytes(size_t(stat.size));
-    const zip_int64_t got = bytes.empty() ? 0 : zip_fread(file, bytes.data(), bytes.size());
+    size_t done = 0;
+    std::string damage;
+    while (damage.empty()) {
+        // In pieces of at most 16 MiB, and one byte past the declared size to see the end.
+        uint8_t past = 0;
+        const size_t want = std::min<size_t>(bytes.size() - done, size_t(16) << 20);
+        uint8_t* into = want ? bytes.data() + done : &past;
+        const zip_int64_t got = zip_fread(file, into, want ? want : 1);
+        if (got < 0) {
+            damage = zip_file_strerror(file);
+        } else if (want == 0) {
+            if (got > 0)
+                damage = "it inflates past its declared " + std::to_string(stat.size) + " bytes";
+            break;
+        } else if (got == 0) {
+            damage = "read " + std::to_string(done) + " of its " + std::to_string(bytes.size()) +
+                     " bytes";
+        } else {
+            done += size_t(got);
+        }
+    }
     zip_fclose(file);
-    if (got != zip_int64_t(bytes.size()))
-        throw Error(path_ + ":" + name + ": damaged in the archive (read " + std::to_string(got) +
-                    " of " + std::to_string(bytes.size()) + " bytes)");
+    if (damage.empty() && (stat.valid & ZIP_STAT_CRC)) {
+        uLong crc = crc32(0L, Z_NULL, 0);
+        for (size_t at = 0; at < bytes.size(); at += size_t(1) << 30)
+            crc = crc32(crc, bytes.data() + at, uInt(std::min(bytes.size() - at, size_t(1) << 30)));
+        if (uint32_t(crc) != stat.crc) {
+            char text[80];
+            std::snprintf(text, sizeof text, "CRC-32 %08x; the archive records %08x", unsigned(crc),
+                          unsigned(stat.crc));
+            damage = text;
+        }
+    }
+    if (!damage.empty()) throw Error(where + ": damaged in the archive (" + damage + ")");
     return bytes;
 }
 
@@ -125,12 +158,12 @@ bool GameFiles::has(const std::string& name) const {
     return files.count(fileKey(name)) != 0;
 }
 
-std::optional<std::vector<uint8_t>> GameFiles::read(const std::string& name) const {
+std::optional<std::vector<uint8_t>> GameFiles::read(const std::string& name, size_t limit,
+                                                    const char* what) const {
     const auto found = files.find(fileKey(name));
     if (found == files.end()) return std::nullopt;
-    if (found->second.first == kLoose)
-        return readRegularFile(found->second.second, "a game file (a loose file of its folder)");
-    return archives[found->second.first]->read(found->second.second);
+    if (found->second.first == kLoose) return readRegularFile(found->second.second, what, limit);
+    return archives[found->second.first]->read(found->second.second, limit, what);
 }
 
 std::string GameFiles::where(const std::string& name) const {

@@ -25,8 +25,12 @@ public:
     [[nodiscard]] const std::string& path() const { return path_; }
     /// Every file's name as stored (directories left out).
     [[nodiscard]] const std::vector<std::string>& names() const { return names_; }
-    /// The bytes of `name` (as stored). Throws world::Error on a damaged entry.
-    [[nodiscard]] std::vector<uint8_t> read(const std::string& name) const;
+    /// The bytes of `name` (as stored), `what` it holds (for messages): refused from its
+    /// declared size past `limit` bytes before anything is allocated, inflated in pieces and
+    /// refused if it inflates past that size, and checked against the archive's CRC-32. Throws
+    /// world::Error naming the archive and the entry.
+    [[nodiscard]] std::vector<uint8_t> read(const std::string& name, size_t limit,
+                                            const char* what) const;
 
 private:
     std::string path_;
@@ -41,6 +45,11 @@ private:
 /// The pk3s directly in `folder`, in the order the game loads them (case-insensitive
 /// alphabetical: a later one wins). Empty when the folder does not exist.
 [[nodiscard]] std::vector<std::string> pk3sInLoadOrder(const std::string& folder);
+
+/// The largest file of each kind read from a game (docs/limits.md): a map and a shader script
+/// (a map's source .map: kMaxMapSourceBytes; images: kMaxEncodedImageBytes).
+inline constexpr size_t kMaxMapBytes = size_t(1) << 30;
+inline constexpr size_t kMaxShaderScriptBytes = size_t(16) << 20;
 
 /// The most loose files a game folder may hold (its tree, pk3s left out).
 inline constexpr size_t kMaxLooseFiles = 200000;
@@ -62,8 +71,10 @@ struct GameFiles {
     /// Throws world::Error naming the folder past kMaxLooseFiles.
     void addLooseFiles(const std::string& folder);
     [[nodiscard]] bool has(const std::string& name) const;
-    /// The bytes of `name`, or nothing when no archive holds it.
-    [[nodiscard]] std::optional<std::vector<uint8_t>> read(const std::string& name) const;
+    /// The bytes of `name`, or nothing when no archive holds it; `limit` and `what` as
+    /// Pk3Archive::read's (a loose file: readRegularFile's).
+    [[nodiscard]] std::optional<std::vector<uint8_t>> read(const std::string& name, size_t limit,
+                                                           const char* what) const;
     /// "archive.pk3:stored/name" for messages.
     [[nodiscard]] std::string where(const std::string& name) const;
 };

@@ -50,7 +50,8 @@ ShaderScripts loadShaderScripts(const GameFiles& files) {
     ShaderScripts out;
     for (const auto& [key, file] : files.files) {
         if (key.rfind("scripts/", 0) != 0 || !endsWith(key, ".shader")) continue;
-        const std::vector<uint8_t> bytes = *files.read(key);
+        const std::vector<uint8_t> bytes =
+            *files.read(key, kMaxShaderScriptBytes, "a shader script");
         for (ShaderScript& s :
              parseShaderScript(std::string(bytes.begin(), bytes.end()), files.where(key)))
             out.emplace(fileKey(s.name), std::move(s));
@@ -95,7 +96,8 @@ struct ImageMeans {
 ImageMeans meanColours(const GameFiles& files, const std::string& name) {
     const std::string base = withoutImageExtension(name);
     for (const char* ext : {".tga", ".png", ".jpg"}) {
-        const std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
+        const std::optional<std::vector<uint8_t>> bytes =
+            files.read(base + ext, kMaxEncodedImageBytes, "an image");
         if (!bytes) continue;
         const DecodedImage pixels =
             decodeImage(bytes->data(), bytes->size(), files.where(base + ext));
@@ -146,7 +148,8 @@ struct MaterialTable {
         for (const auto& [ext, mime] :
              {std::pair{".tga", "image/x-tga"}, std::pair{".png", "image/png"},
               std::pair{".jpg", "image/jpeg"}}) {
-            std::optional<std::vector<uint8_t>> bytes = files.read(base + ext);
+            std::optional<std::vector<uint8_t>> bytes =
+                files.read(base + ext, kMaxEncodedImageBytes, "an image");
             if (!bytes) continue;
             Image image;
             image.name = files.where(base + ext);
@@ -446,17 +449,20 @@ std::optional<SourceText> findMapSource(const OpenedMap& map) {
         for (const std::string& wanted : names)
             for (const std::string& n : archive.names())
                 if (fileKey(n) == fileKey(wanted))
-                    return SourceText{text(archive.read(n)), archive.path() + ":" + n};
+                    return SourceText{
+                        text(archive.read(n, kMaxMapSourceBytes, "a Quake 3 .map source")),
+                        archive.path() + ":" + n};
     } else if (!map.bspFile.empty()) {
         std::error_code ec;
         const std::filesystem::path beside =
             std::filesystem::path(map.bspFile).replace_extension(".map");
         if (std::filesystem::is_regular_file(beside, ec))
-            return SourceText{text(readRegularFile(beside.string(), "a Quake 3 .map source")),
-                              beside.string()};
+            return SourceText{
+                text(readRegularFile(beside.string(), "a Quake 3 .map source", kMaxMapSourceBytes)),
+                beside.string()};
     }
     for (const std::string& wanted : names)
-        if (auto bytes = map.files.read(wanted))
+        if (auto bytes = map.files.read(wanted, kMaxMapSourceBytes, "a Quake 3 .map source"))
             return SourceText{text(*bytes), map.files.where(wanted)};
     return std::nullopt;
 }
@@ -645,6 +651,42 @@ void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& s
     }
 }
 
+// The triangles and vertices the drawn surfaces will make, counted from their records before
+// any is built: past kMaxLevelTriangles or kMaxLevelVertices the map is refused, naming the
+// largest surface (docs/limits.md).
+void checkSurfaceSizes(const BspFile& bsp, const ShaderScripts& scripts, uint32_t patchLevel,
+                       const std::string& where) {
+    uint64_t triangles = 0, vertices = 0, largest = 0;
+    size_t largestSurface = 0;
+    for (size_t s = 0; s < bsp.surfaces.size(); ++s) {
+        const BspSurface& f = bsp.surfaces[s];
+        if (f.type == kSurfaceFlare || f.vertexCount == 0) continue;
+        if (!drawn(bsp.shaders[size_t(f.shader)], scriptOf(scripts, bsp.shaders[size_t(f.shader)])))
+            continue;
+        uint64_t t = uint64_t(f.indexCount) / 3, v = uint64_t(f.vertexCount);
+        if (f.type == kSurfacePatch) {
+            const uint64_t pieces =
+                uint64_t((f.patchWidth - 1) / 2) * uint64_t((f.patchHeight - 1) / 2);
+            t = pieces * 2 * uint64_t(patchLevel) * patchLevel;
+            v = pieces * uint64_t(patchLevel + 1) * (patchLevel + 1);
+        }
+        triangles += t;
+        vertices += v;
+        if (t > largest) largest = t, largestSurface = s;
+    }
+    if (triangles <= kMaxLevelTriangles && vertices <= kMaxLevelVertices) return;
+    const BspSurface& big = bsp.surfaces[largestSurface];
+    const std::string what = big.type == kSurfacePatch
+                                 ? "a " + std::to_string(big.patchWidth) + " x " +
+                                       std::to_string(big.patchHeight) + " patch at patch level " +
+                                       std::to_string(patchLevel)
+                                 : "a surface";
+    throw Error(where + ": the surfaces would make " + std::to_string(triangles) +
+                " triangles and " + std::to_string(vertices) + " vertices (the largest, surface " +
+                std::to_string(largestSurface) + ", " + what + ", " + std::to_string(largest) +
+                "); expected at most " + std::to_string(kMaxLevelTriangles) + " of each");
+}
+
 }  // namespace
 
 std::vector<std::string> defaultQuake3Folders() {
@@ -682,6 +724,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         q3map2.compensateInferred = q3map2.encoding.compensate != 1.0f;
     }
     const ShaderScripts scripts = loadShaderScripts(files);
+    checkSurfaceSizes(bsp, scripts, options.patchLevel, map.where);
     MaterialTable materials{level, files, {}, {}, 0, q3map2.areaScale};
     std::map<uint32_t, MeshInstance> meshes;  // by material
     for (size_t s = 0; s < bsp.surfaces.size(); ++s) {
