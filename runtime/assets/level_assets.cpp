@@ -5,19 +5,18 @@
 #include <iterator>
 
 #include "world/error.hpp"
-#include "world/package/baked_sections.hpp"
-#include "world/package/package_reader.hpp"
-#include "world/package/texture_section.hpp"
+#include "world/file_read.hpp"
+#include "world/package/package_decode.hpp"
 
 namespace onelight::assets {
 
 LoadedLevel loadLevel(const std::string& path) {
-    package::PackageContents read = package::readPackageFile(path);
+    package::DecodedPackage decoded =
+        package::decodePackage(world::readRegularFile(path, "a .olpak package"), path);
     LoadedLevel out;
     out.path = path;
-    out.level = std::move(read.level);
-    package::BakedContents baked =
-        package::decodeBakedSections(read.bakedSections, out.level, path);
+    out.level = std::move(decoded.contents.level);
+    package::BakedContents& baked = decoded.baked;
     if (baked.present && baked.baked.shardCount > 1)
         throw world::Error(path + ": holds part " + std::to_string(baked.baked.shardIndex + 1) +
                            " of " + std::to_string(baked.baked.shardCount) +
@@ -25,8 +24,7 @@ LoadedLevel loadLevel(const std::string& path) {
                            "with `onelight-bake merge`)");
     out.hasBakedLighting = baked.present;
     if (baked.present) out.baked = std::move(baked.baked);
-    package::TextureContents processed =
-        package::decodeTextureSection(read.bakedSections, out.level, path);
+    package::TextureContents& processed = decoded.textures;
     out.hasProcessedTextures = processed.present;
     if (processed.present) out.processedTextures = std::move(processed.textures);
     out.images.reserve(out.level.images.size());

@@ -43,12 +43,14 @@ TEST_P(BakeDeterminism, OneAndTwoThreadsGiveIdenticalBytes) {
     std::vector<uint8_t> one, two;
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-        const BakeResult r = bakeLevel(level, test::fastBakeOptions());
+        BakeResult r = bakeLevel(level, test::fastBakeOptions());
+        package::placeImagesForPackage(r.level, outputFolder() + "/determinism.olpak");
         one = packageBytes(r.level, r.baked, r.textures);
     }
     {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-        const BakeResult r = bakeLevel(level, test::fastBakeOptions());
+        BakeResult r = bakeLevel(level, test::fastBakeOptions());
+        package::placeImagesForPackage(r.level, outputFolder() + "/determinism.olpak");
         two = packageBytes(r.level, r.baked, r.textures);
     }
     ASSERT_EQ(one.size(), two.size());

@@ -44,7 +44,12 @@ TEST(HostilePackage, ImageUrisStayBesideThePackage) {
         image.name = "stolen";
         image.uri = bad;
         level.images.push_back(image);
-        const std::vector<uint8_t> bytes = package::serializePackage(level);
+        // The writer refuses to make it (below); the reader must refuse it too.
+        EXPECT_NE(errorMessage([&] {
+                      (void)package::serializePackage(level);
+                  }).find("(the writer runs the reader's checks: nothing was written)"),
+                  std::string::npos);
+        const std::vector<uint8_t> bytes = package::serializeUncheckedPackage(level);
         const std::string error =
             errorMessage([&] { (void)package::parsePackage(bytes, "hostile.olpak"); });
         EXPECT_NE(error.find("hostile.olpak: section images record 0: uri"), std::string::npos)
@@ -53,6 +58,31 @@ TEST(HostilePackage, ImageUrisStayBesideThePackage) {
                   std::string::npos)
             << error;
     }
+}
+
+TEST(HostilePackage, TheWriterRunsTheReadersChecksOnEveryRecord) {
+    // A light whose intensity overflowed and a spot with cones past pi/2: the writer refuses
+    // what the reader would, with the reader's own words.
+    world::CompiledLevel level = triangleLevel();
+    world::Light hot;
+    hot.name = "hot";
+    hot.intensity = std::numeric_limits<float>::infinity();
+    level.lights.push_back(hot);
+    std::string error = errorMessage([&] { (void)package::serializePackage(level); });
+    EXPECT_NE(error.find("the package as made: section lights record "), std::string::npos)
+        << error;
+    EXPECT_NE(error.find("intensity inf; expected finite >= 0 (the writer runs the reader's "
+                         "checks: nothing was written)"),
+              std::string::npos)
+        << error;
+    level.lights.back().intensity = 1.0f;
+    level.lights.back().type = world::LightType::kSpot;
+    level.lights.back().outerCone = -1.0f;
+    error = errorMessage([&] { (void)package::serializePackage(level); });
+    EXPECT_NE(error.find("cone angles; expected 0 <= inner <= outer <= pi/2"), std::string::npos)
+        << error;
+    level.lights.back().outerCone = 0.5f;
+    EXPECT_EQ(errorMessage([&] { (void)package::serializePackage(level); }), "");
 }
 
 TEST(HostilePackage, ImagesOutsideThePackagesFolderAreEmbedded) {

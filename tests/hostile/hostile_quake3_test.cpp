@@ -135,5 +135,27 @@ TEST(HostileQuake3, AnEntryPastItsKindsLimitIsRefusedFromItsDeclaredSize) {
     EXPECT_LT(seconds, 2.0);
 }
 
+TEST(HostileQuake3, LightsPastAFloatOrWithANegativeConeAreRefusedAtImport) {
+    double seconds = 0.0;
+    Quake3BspBuilder bsp = floorSquare(40);
+    bsp.entities =
+        "{\n\"classname\" \"worldspawn\"\n}\n"
+        "{\n\"classname\" \"light\"\n\"origin\" \"32 32 64\"\n\"light\" \"1e38\"\n}\n";
+    EXPECT_EQ(importError(bsp, "hotlight", seconds),
+              freshFolder("hotlight").string() +
+                  "/hotlight.bsp: entities line 4: light '1e38' makes an intensity past a "
+                  "float's range; expected a value the engine can hold (at most about 4e37)");
+    bsp.entities =
+        "{\n\"classname\" \"worldspawn\"\n}\n"
+        "{\n\"classname\" \"light\"\n\"origin\" \"32 32 64\"\n\"target\" \"t\"\n"
+        "\"radius\" \"-1e30\"\n}\n"
+        "{\n\"classname\" \"info_null\"\n\"targetname\" \"t\"\n\"origin\" \"32 32 0\"\n}\n";
+    const std::string message = importError(bsp, "badspot", seconds);
+    EXPECT_NE(message.find("badspot.bsp: entities line 4: spot light radius '-1e30'; expected >= "
+                           "0 units"),
+              std::string::npos)
+        << message;
+}
+
 }  // namespace
 }  // namespace onelight::test

@@ -11,6 +11,7 @@
 #include "world/package/collision_section.hpp"
 #include "world/package/crc32.hpp"
 #include "world/package/format.hpp"
+#include "world/package/package_decode.hpp"
 #include "world/package/package_reader.hpp"
 #include "world/package/records.hpp"
 
@@ -97,6 +98,20 @@ uint64_t alignUp(uint64_t value) {
 
 std::vector<uint8_t> serializePackage(const world::CompiledLevel& level,
                                       std::span<const RawSection> bakedSections) {
+    std::vector<uint8_t> out = serializeUncheckedPackage(level, bakedSections);
+    // The reader's checks on every record (package_decode.hpp): a package that its own reader
+    // would refuse is never handed to be written.
+    try {
+        (void)decodePackage(out, "the package as made");
+    } catch (const world::Error& e) {
+        throw world::Error(std::string(e.what()) +
+                           " (the writer runs the reader's checks: nothing was written)");
+    }
+    return out;
+}
+
+std::vector<uint8_t> serializeUncheckedPackage(const world::CompiledLevel& level,
+                                               std::span<const RawSection> bakedSections) {
     Sections sections;
     buildSections(level, sections);
     struct Placed {

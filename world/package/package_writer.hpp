@@ -20,9 +20,15 @@ struct RawSection {
     std::vector<uint8_t> bytes;  // count * elementSize
 };
 
-/// The package's bytes: every core section, then `baked_sections` in the order given.
+/// The package's bytes: every core section, then `baked_sections` in the order given, checked by
+/// the package's reader (package_decode.hpp) before they are returned. Throws world::Error with
+/// the reader's message when a record would be refused.
 [[nodiscard]] std::vector<uint8_t> serializePackage(const world::CompiledLevel& level,
                                                     std::span<const RawSection> bakedSections = {});
+
+/// The same bytes unchecked: for the reader's own tests, which need packages it must refuse.
+[[nodiscard]] std::vector<uint8_t> serializeUncheckedPackage(
+    const world::CompiledLevel& level, std::span<const RawSection> bakedSections = {});
 
 /// Makes the level's image file references (as imported: relative to the working folder or
 /// absolute) relative to the folder of the package at `packagePath`, where the runtime looks

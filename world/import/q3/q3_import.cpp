@@ -351,6 +351,10 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
             const float distance = glm::length(to);
             if (distance > 0.0f) {
                 const float radius = numberKey(e, "radius", 64.0f, where);
+                if (!(radius >= 0.0f))
+                    throw Error(where + ": entities line " + std::to_string(e.line) +
+                                ": spot light radius '" + clipForMessage(e.get("radius")) +
+                                "'; expected >= 0 units (its cone's radius at its target)");
                 l.type = LightType::kSpot;
                 scale = q3map2.spotScale;
                 const float tangent[3] = {to.x / distance, to.y / distance, to.z / distance};
@@ -373,6 +377,11 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
             l.range = float(reach * kQuake3MetresPerUnit);
             ++linear;
         }
+        if (!std::isfinite(l.intensity) || !std::isfinite(l.range))
+            throw Error(where + ": entities line " + std::to_string(e.line) + ": light '" +
+                        clipForMessage(e.get("light", e.get("_light", "300"))) +
+                        "' makes an intensity past a float's range; expected a value the "
+                        "engine can hold (at most about 4e37)");
         l.role = LightRole::kBaked;
         level.lights.push_back(l);
     }
