@@ -92,6 +92,22 @@ def frame_radiance(capture_json):
     return json.load(open(capture_json))["radiance"]["mean_rgb"]
 
 
+def light_from(compile_output):
+    """Where the map's baked light came from, from the import's light-source lines: the BSP's
+    light entities, its source .map's, or q3map2's own lightmaps (then the luminance ratio is 1
+    by construction), or only its sky and surface lights."""
+    text = compile_output
+    if "lightmaps: recovered from q3map2's own" in text:
+        return "q3map2's lightmaps"
+    m = re.search(r"light entities: (\d+) from the source \.map", text)
+    if m:
+        return f"source .map ({m.group(1)} lights)"
+    m = re.search(r"light entities: (\d+) from the BSP", text)
+    if m:
+        return f"BSP ({m.group(1)} lights)"
+    return "sky and surface lights"
+
+
 def q3map2_options(compile_output):
     """The import's "q3map2 options" line, short: what the map's recorded -light stage did."""
     for line in compile_output.splitlines():
@@ -124,6 +140,7 @@ def one_map(name, pk3, inner, args, work):
         row["why"] = "compile: " + (reason(out, "failed") if code is not None else "timed out")
         return row
     row["q3map2"] = q3map2_options(out)
+    row["light_from"] = light_from(out)
     if args.no_bake:
         return compiled_map(row, out, package, name, args, work)
     code, out, row["bake_s"] = run([args.bake, spec, "-o", package, "--quality", "draft",
@@ -204,8 +221,8 @@ def table(game, rows, shadowed):
              f"{len(rows)} maps" + (f" ({shadowed} older copies in earlier pk3s not run)"
                                    if shadowed else ""), "",
              "| map | pk3 | result | compile s | draft bake s | peak MiB | package MiB | "
-             "frame ms | lum. ratio | Δxy | q3map2 -light | notes |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "frame ms | light from | lum. ratio | Δxy | q3map2 -light | notes |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         why = r["why"].replace("|", "\\|").replace("\n", " ")
         if len(why) > 300:
@@ -214,6 +231,7 @@ def table(game, rows, shadowed):
             r["map"], r["pk3"], r["status"], cell(r, "compile_s", "{:.1f}"),
             cell(r, "bake_s", "{:.1f}"), cell(r, "peak_mib", "{:.0f}"),
             cell(r, "package_mib", "{:.1f}"), cell(r, "frame_ms", "{:.1f}"),
+            r.get("light_from", ""),
             cell(r, "lum_ratio", "{:.2f}"), cell(r, "dxy", "{:.3f}"),
             r.get("q3map2", "").replace("|", "\\|"), why]) + " |")
     return lines + [""]
@@ -290,6 +308,14 @@ def main():
             key = (mode, name, os.path.basename(pk3))
             if key in done:
                 row = done[key]
+                if "light_from" not in row and row["status"] != "refused":
+                    # A row from before the column: the compile alone tells (seconds).
+                    package = os.path.join(work, "light-from.olpak")
+                    code, out, _ = run([args.bake, "compile", f"{pk3}:{inner}", "-o", package],
+                                       args.timeout)
+                    if code == 0:
+                        row["light_from"] = light_from(out)
+                        row["q3map2"] = q3map2_options(out)
             else:
                 try:
                     row = one_map(name, pk3, inner, args, work)
@@ -326,7 +352,8 @@ def write_report(args, counts, sections, started, final):
              "Columns: compile and draft-bake wall seconds; the bake report's peak memory; the "
              "package's size; the GPU time of one frame from spawn 0 (headless, lavapipe, "
              f"{args.size}); the frame's mean linear luminance (before exposure) over that of "
-             "the q3map2 view of the same camera, and the distance of their mean colours' CIE "
+             "the q3map2 view of the same camera (1 by construction where the light is q3map2's "
+             "own lightmaps), and the distance of their mean colours' CIE "
              "xy chromaticities; what the map's recorded q3map2 -light stage did (bounces, dirt, "
              "scales, the lightmap encoding the q3map2 view decodes). Approximated: the import or "
              "bake warned (notes)."), ""]
