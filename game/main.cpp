@@ -36,7 +36,7 @@ namespace {
 using namespace onelight;
 
 int fail(const std::string& message) {
-    std::fprintf(stderr, "onelight: %s\n", message.c_str());
+    std::fprintf(stderr, "onelight: %s\n", world::oneLineMessage(message).c_str());
     return 1;
 }
 

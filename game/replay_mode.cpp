@@ -13,6 +13,7 @@
 #include "render_target.hpp"
 #include "session.hpp"
 #include "sim/replay_runner.hpp"
+#include "world/file_read.hpp"
 #include "world/images/image_files.hpp"
 
 namespace onelight::game {
@@ -175,7 +176,7 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
         else
             writeContactSheet(dir + "/contact_sheet.png", captures);
     } catch (const ReplayFailure& e) {
-        std::fprintf(stderr, "onelight: %s\n", e.what());
+        std::fprintf(stderr, "onelight: %s\n", world::oneLineMessage(e.what()).c_str());
         code = 1;
     } catch (...) {
         closeRenderTarget(target);

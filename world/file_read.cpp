@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -94,6 +95,32 @@ std::string clipForMessage(std::string_view text, size_t maxChars) {
         out += (c < 0x20 || c == 0x7f) ? '?' : char(c);
     }
     if (shown < text.size()) out += "... (" + std::to_string(text.size()) + " characters)";
+    return out;
+}
+
+std::string oneLineMessage(std::string_view message) {
+    constexpr size_t kLongest = 64, kHead = 16, kTail = 28;
+    std::string out;
+    out.reserve(std::min<size_t>(message.size(), 1024));
+    size_t at = 0;
+    while (at < message.size()) {
+        const size_t space = message.find(' ', at);
+        const size_t end = space == std::string_view::npos ? message.size() : space;
+        const std::string_view word = message.substr(at, end - at);
+        const auto shown = [](std::string_view part) {
+            std::string s(part);
+            for (char& c : s)
+                if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+            return s;
+        };
+        if (word.size() > kLongest)
+            out += shown(word.substr(0, kHead)) + "..." + shown(word.substr(word.size() - kTail)) +
+                   " (" + std::to_string(word.size()) + " characters)";
+        else
+            out += shown(word);
+        if (end < message.size()) out += ' ';
+        at = end + 1;
+    }
     return out;
 }
 

@@ -36,4 +36,11 @@ void refuseOutputOverInput(const std::string& output, const std::vector<std::str
 /// control characters shown as '?', so that a message stays one short line.
 std::string clipForMessage(std::string_view text, size_t maxChars = 80);
 
+/// A message as a command prints it: one line (control characters, a newline among them, shown
+/// as '?'), every word (a run without spaces: a path, a token, a name) longer than 64 characters
+/// shown by its first 16 and last 28 with its length after ("/usr/share/games...aps/x.bsp (71
+/// characters)" keeps the file's name), the same text otherwise. The last guard of the
+/// one-short-line rule for every command's top-level error.
+std::string oneLineMessage(std::string_view message);
+
 }  // namespace onelight::world

@@ -5,6 +5,7 @@
 #include <new>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/import/q3/q3_import.hpp"
 
 namespace onelight::bake {
@@ -26,7 +27,7 @@ int runCommandLine(const world::CommandTable& table, const std::vector<std::stri
         }
         return run(parsed);
     } catch (const world::Error& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s\n", e.what());
+        std::fprintf(stderr, "onelight-bake: error: %s\n", world::oneLineMessage(e.what()).c_str());
         return 2;
     }
 }
@@ -35,11 +36,13 @@ int runReportingErrors(const std::string& input, const std::function<int()>& com
     try {
         return command();
     } catch (const world::Error& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s\n", e.what());
+        std::fprintf(stderr, "onelight-bake: error: %s\n", world::oneLineMessage(e.what()).c_str());
     } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "onelight-bake: error: %s: out of memory\n", input.c_str());
+        std::fprintf(stderr, "onelight-bake: error: %s: out of memory\n",
+                     world::oneLineMessage(input).c_str());
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "onelight-bake: error: %s: %s\n", input.c_str(), e.what());
+        std::fprintf(stderr, "onelight-bake: error: %s\n",
+                     world::oneLineMessage(input + ": " + e.what()).c_str());
     }
     return 1;
 }

@@ -27,6 +27,7 @@
 #include "level_report.hpp"
 #include "world/command_options.hpp"
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/images/image_files.hpp"
 
 namespace onelight::lab {
@@ -248,7 +249,8 @@ int main(int argc, char** argv) {
         if (command == "level-report") return levelReportCommand(argc, argv);
         throw onelight::world::Error("unknown command '" + std::string(command) + "'");
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "onelight-lab %s: %s\n", argv[1], e.what());
+        std::fprintf(stderr, "onelight-lab %s: %s\n", argv[1],
+                     onelight::world::oneLineMessage(e.what()).c_str());
         return 1;
     }
 }

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 
 namespace onelight::world::q3 {
 namespace {
@@ -121,9 +122,10 @@ struct Parser {
     ShaderScript shader() {
         const Token& name = tokens[at++];
         if (name.text == "{" || name.text == "}")
-            fail(name.line, "'" + name.text + "' where a shader's name was expected");
+            fail(name.line,
+                 "'" + clipForMessage(name.text) + "' where a shader's name was expected");
         if (done() || tokens[at].text != "{")
-            fail(name.line, "shader '" + name.text + "' has no '{' after its name");
+            fail(name.line, "shader '" + clipForMessage(name.text) + "' has no '{' after its name");
         const int open = tokens[at++].line;
         ShaderScript s;
         s.name = name.text;
@@ -141,7 +143,7 @@ struct Parser {
             const std::vector<std::string> args = arguments();
             const auto need = [&](size_t n) {
                 if (args.size() < n)
-                    fail(t.line, t.text + " has " + std::to_string(args.size()) +
+                    fail(t.line, clipForMessage(t.text) + " has " + std::to_string(args.size()) +
                                      " values; expected " + std::to_string(n));
             };
             if (key == "surfaceparm") {
@@ -174,7 +176,7 @@ struct Parser {
             }
             // Every other keyword is the game renderer's (deformVertexes, sort, ...): skipped.
         }
-        if (done()) fail(open, "shader '" + s.name + "': its '{' is never closed");
+        if (done()) fail(open, "shader '" + clipForMessage(s.name) + "': its '{' is never closed");
         ++at;  // "}"
         return s;
     }
