@@ -14,6 +14,7 @@
 #include "session.hpp"
 #include "sim/replay_runner.hpp"
 #include "world/file_read.hpp"
+#include "world/file_write.hpp"
 #include "world/images/image_files.hpp"
 
 namespace onelight::game {
@@ -124,7 +125,7 @@ int runReplay(const CommandLine& cl, const assets::LoadedLevel& level) {
     const double tickSeconds = 1.0 / runner.script.tickRate;
     session.tickSeconds = tickSeconds;
     const std::string dir = cl.captureDir.empty() ? std::string("captures") : cl.captureDir;
-    if (!cl.benchmark) std::filesystem::create_directories(dir);
+    if (!cl.benchmark) world::makeFolder(dir, "--capture-dir");
 
     RenderTarget target;
     openRenderTarget(target, cl, level, !cl.headless);

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 
 namespace onelight::world {
 
@@ -37,6 +38,16 @@ void makeFolderOf(const std::string& path) {
 }
 
 }  // namespace
+
+void makeFolder(const std::string& folder, const std::string& from) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(folder, ec)) return;
+    std::filesystem::create_directories(folder, ec);
+    if (ec || !std::filesystem::is_directory(folder, ec))
+        throw Error(from + " '" + clipForMessage(folder) + "': cannot make that folder (" +
+                    (ec ? ec.message() : std::string("a file is in the way")) +
+                    "); expected a folder, or a path where one can be made");
+}
 
 void writeFileAtomicallyWith(const std::string& path,
                              const std::function<void(const std::string& temporary)>& write) {

@@ -17,6 +17,11 @@ namespace onelight::world {
 /// rename over `path`, which is replaced whole. Makes `path`'s folder when it is missing. On any
 /// failure removes the temporary and throws world::Error naming `path` and the reason (the
 /// system's message); `path` is then as it was.
+/// Makes the folder `folder` and its parents unless it is one already. Throws world::Error naming
+/// it and `from` (where the path came from, e.g. "--capture-dir") when it cannot: a file in the
+/// way, no permission.
+void makeFolder(const std::string& folder, const std::string& from);
+
 void writeFileAtomically(const std::string& path, std::span<const uint8_t> bytes);
 void writeFileAtomically(const std::string& path, std::string_view bytes);
 

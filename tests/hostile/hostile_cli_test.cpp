@@ -155,6 +155,14 @@ TEST(HostileCommandLine, ReplaysPastTheirLimitsAndNonFilesEndQuickly) {
                                 shellQuoted(folder / "long.replay"));
     expectFailure(r, {"long.replay:1:", "unknown command", "(1048576 characters)"});
     EXPECT_LT(r.output.size(), 2000u);
+    // A capture folder that is a file: named, with what was expected.
+    std::ofstream(folder / "s0.replay") << "at 0 capture start\nat 0 quit\n";
+    std::ofstream(folder / "afile") << "a file";
+    expectFailure(run(kOnelight + " " + package + " --headless --size 32x32 --replay " +
+                      shellQuoted(folder / "s0.replay") + " --capture-dir " +
+                      shellQuoted(folder / "afile") + " 2>&1"),
+                  {"--capture-dir '", "afile': cannot make that folder (",
+                   "expected a folder, or a path where one can be made"});
 }
 
 // The runtime reads one image by its uri beside the package: the sky's (material textures come
