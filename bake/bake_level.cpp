@@ -399,9 +399,15 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
         return i < names.size() ? names[i] : "part " + std::to_string(i + 1);
     };
     const uint32_t count = parts[0].shardCount;
+    if (count == 1)
+        throw world::Error("merge: " + name(0) +
+                           " is a complete package (a bake of one shard); expected the parts of "
+                           "one sharded bake (onelight-bake --shard i/N)");
     if (parts.size() != count)
         throw world::Error("merge: " + std::to_string(parts.size()) + " parts given; " + name(0) +
                            " is a part of " + std::to_string(count));
+    uint32_t faceSize = 0;  // the first part's probes', which every part's must match
+    size_t faceSizeOf = 0;
     std::vector<const world::BakedLighting*> byIndex(count, nullptr);
     std::vector<size_t> partOfShard(count, 0);
     const uint64_t texels = totalTexels(level);
@@ -434,6 +440,14 @@ world::BakedLighting mergeBakedLighting(const world::CompiledLevel& level,
                                (v.empty() != v0.empty() ? "presence" : "cells or clusters") +
                                " differ from " + name(0) +
                                "'s; expected the same view cells (baked with other settings?)");
+        for (const world::EnvironmentProbe& probe : p.probes) {
+            if (faceSize == 0) faceSize = probe.faceSize, faceSizeOf = i;
+            if (probe.faceSize != faceSize)
+                throw world::Error("merge: " + shard + ": its probes are " +
+                                   std::to_string(probe.faceSize) + " texels a face; expected " +
+                                   std::to_string(faceSize) + " like " + name(faceSizeOf) +
+                                   "'s (baked with another --probe-face-size?)");
+        }
         byIndex[p.shardIndex] = &p;
         partOfShard[p.shardIndex] = i;
     }

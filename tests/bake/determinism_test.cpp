@@ -113,6 +113,30 @@ TEST_P(BakeDeterminism, ShardsMergedEqualAWholeBake) {
     EXPECT_NE(overlapError.find("expected to start where shard 0 ends"), std::string::npos)
         << overlapError;
 
+    // Probes of another face size in one part (a bake with another --probe-face-size): named.
+    std::vector<world::BakedLighting> faces = parts;
+    ASSERT_FALSE(whole.baked.probes.empty());
+    world::EnvironmentProbe bigger = whole.baked.probes[0];
+    bigger.faceSize *= 2;
+    faces[1].probes.insert(faces[1].probes.begin(), bigger);
+    faces[0].probes.insert(faces[0].probes.begin(), whole.baked.probes[0]);
+    const std::string faceError = onelight::test::errorMessage([&] {
+        (void)mergeBakedLighting(compiled, faces, {"first.olpak", "second.olpak"});
+    });
+    EXPECT_NE(faceError.find("second.olpak (shard "), std::string::npos) << faceError;
+    EXPECT_NE(faceError.find("like first.olpak's (baked with another --probe-face-size?)"),
+              std::string::npos)
+        << faceError;
+
+    // Two complete bakes are not the parts of one.
+    std::vector<world::BakedLighting> completes(2, whole.baked);
+    const std::string completeError = onelight::test::errorMessage([&] {
+        (void)mergeBakedLighting(compiled, completes, {"a.olpak", "b.olpak"});
+    });
+    EXPECT_EQ(completeError,
+              "merge: a.olpak is a complete package (a bake of one shard); expected the parts of "
+              "one sharded bake (onelight-bake --shard i/N)");
+
     parts.pop_back();
     const std::string error =
         onelight::test::errorMessage([&] { (void)mergeBakedLighting(compiled, parts); });
