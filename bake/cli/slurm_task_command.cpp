@@ -79,7 +79,16 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
                            std::to_string(manifest.shardCount - 1));
     failOnPurposeIfAsked(work, shard);
     // The plan the submitting command checked, its forwarded options as the manifest has them.
-    const BakePlan plan = bakePlanOf(shardTaskArguments(work, manifest, shard));
+    // Whatever the manifest names (the level, its options) fails naming the manifest too.
+    const auto fromManifest = [&](const world::Error& e) {
+        return world::Error(std::string(e.what()) + " (as " + work.manifest() + " names it)");
+    };
+    BakePlan plan;
+    try {
+        plan = bakePlanOf(shardTaskArguments(work, manifest, shard));
+    } catch (const world::Error& e) {
+        throw fromManifest(e);
+    }
     const std::unique_ptr<tbb::global_control> limit = limitThreadsToAllocation();
     // The compiled level, made once by the submitting command: the shard does not compile.
     if (!slurm::verifiedCompiled(work, manifest))
@@ -98,7 +107,12 @@ int bakeShard(const WorkFolder& work, uint32_t shard) {
     // The source still gives the Embree scene and the lights: the scene is the source's static
     // geometry, as in a whole bake, so that the parts equal it byte for byte.
     noteStage("importing the level");
-    const world::SourceLevel source = world::importLevel(plan.input, plan.quake3);
+    world::SourceLevel source;
+    try {
+        source = world::importLevel(plan.input, plan.quake3);
+    } catch (const world::Error& e) {
+        throw fromManifest(e);
+    }
     const uint64_t levelHash = slurm::hashFiles(source.inputFiles);
     if (levelHash != manifest.levelHash)
         throw world::Error(manifest.level +

@@ -149,6 +149,26 @@ TEST(SlurmCommandLine, ShardsRunByHandBakeTheCompiledLevelAndMergeToTheLocalBake
     ASSERT_EQ(bake(level() + " -o " + local + " --quality draft --quiet").exitCode, 0);
     EXPECT_TRUE(fileText(out) == fileText(local)) << "the merged package differs";
 
+    // A manifest edited to name another level, which does not parse: the error names the
+    // manifest as well as the level.
+    {
+        const std::string manifestPath = work + "/manifest.json";
+        const std::string original = fileText(manifestPath);
+        std::string edited = original;
+        const std::string broken = (folder / "broken.gltf").string();
+        std::ofstream(broken) << "{ not json";
+        const size_t at = edited.find(level());
+        ASSERT_NE(at, std::string::npos) << edited;
+        edited.replace(at, level().size(), broken);
+        std::ofstream(manifestPath, std::ios::trunc) << edited;
+        const onelight::test::CommandResult r = bake("slurm-task --work " + work + " --shard 1");
+        EXPECT_NE(r.exitCode, 0);
+        EXPECT_NE(r.output.find("broken.gltf"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("(as " + manifestPath + " names it)"), std::string::npos)
+            << r.output;
+        std::ofstream(manifestPath, std::ios::trunc) << original;
+    }
+
     // A compiled level changed after its stamp: the shard refuses it.
     {
         std::fstream file(folder / "work" / "compiled.olpak",
