@@ -199,6 +199,36 @@ TEST(HostileImport, WrongTypesLengthsAndRangesAreErrorsNotDefaults) {
                        {"lights[0].spot", "expected inner < outer"});
 }
 
+TEST(HostileImport, WhatTheGltfSpecForbidsIsRefusedNamingTheNodeAndKey) {
+    expectEditRejected("version3", [](json& j) { j["asset"]["version"] = "3.0"; },
+                       {"asset.version: '3.0'", "expected 2.x"});
+    expectEditRejected("version-number", [](json& j) { j["asset"]["version"] = 2; },
+                       {"asset.version", "expected a string"});
+    expectEditRejected("min-version", [](json& j) { j["asset"]["minVersion"] = "2.1"; },
+                       {"asset.minVersion: '2.1'", "expected 2.0"});
+    expectEditRejected("two-parents",
+                       [](json& j) {
+                           j["nodes"][0]["children"] = {2};
+                           j["nodes"][1]["children"] = {2};
+                       },
+                       {"nodes[1].children[0]", "already a child of node 0"});
+    // Nodes whose children form a cycle, with no scene to start from: refused, not dropped.
+    expectEditRejected("cycle",
+                       [](json& j) {
+                           j.erase("scene");
+                           j.erase("scenes");
+                           j["nodes"][0]["children"] = {2};
+                           j["nodes"][2]["children"] = {0};
+                       },
+                       {"nodes[", "children", "cycle"});
+    // null is not a setting's default: it is refused like any other wrong type.
+    expectEditRejected("setting-null",
+                       [](json& j) {
+                           j["extras"] = {{"onelight", {{"texels_per_metre", nullptr}}}};
+                       },
+                       {"extras.onelight.texels_per_metre", "null"});
+}
+
 TEST(HostileImport, CoordinatesPastTheDocumentedRangeAreRejected) {
     EXPECT_EQ(world::kMaxCoordinateMetres, 1e6);
     expectEditRejected("far-translation",

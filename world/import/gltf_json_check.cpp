@@ -1,6 +1,7 @@
 #include "world/import/gltf_json_check.hpp"
 
 #include <cmath>
+#include <vector>
 #include <cstring>
 #include <numbers>
 
@@ -55,6 +56,7 @@ public:
 
     void document(const Json& root) {
         if (!root.is_object()) fail("the document", "is not an object; expected a glTF object");
+        asset(root);
         extras(root, "the document");
         stringArray(root, "extensionsUsed", "extensionsUsed");
         if (root.contains("extensionsRequired")) {
@@ -77,6 +79,7 @@ public:
             extras(s, at);
         });
         each(root, "nodes", [&](const Json& n, const std::string& at) { node(n, at); });
+        nodeTrees(root);
         each(root, "meshes", [&](const Json& m, const std::string& at) {
             extras(m, at);
             each(m, "primitives", at + ".primitives", [&](const Json& p, const std::string& pat) {
@@ -144,6 +147,72 @@ public:
 private:
     const std::string& path_;
 
+    // asset.version: "2.x" (glTF 2.0; a minor version this importer does not know reads as 2.0,
+    // as the spec allows); asset.minVersion, when given, no newer than 2.0.
+    void asset(const Json& root) const {
+        required(root, "asset", "the document");
+        object(root, "asset", "asset");
+        const Json& a = root["asset"];
+        required(a, "version", "asset");
+        string(a, "version", "asset.version");
+        string(a, "minVersion", "asset.minVersion");
+        const auto major = [](const std::string& v) {
+            const size_t dot = v.find('.');
+            if (dot == std::string::npos || dot == 0 || dot + 1 == v.size()) return -1;
+            for (size_t i = 0; i < v.size(); ++i)
+                if (i != dot && !(v[i] >= '0' && v[i] <= '9')) return -1;
+            return dot > 3 ? -1 : std::stoi(v.substr(0, dot));
+        };
+        const std::string version = a["version"].get<std::string>();
+        if (major(version) != 2)
+            fail("asset.version", "'" + clipForMessage(version, 40) +
+                                      "'; expected 2.x (glTF 2.0, the version this importer reads)");
+        if (a.contains("minVersion")) {
+            const std::string minimum = a["minVersion"].get<std::string>();
+            if (major(minimum) != 2 || minimum != "2.0")
+                fail("asset.minVersion", "'" + clipForMessage(minimum, 40) +
+                                             "'; expected 2.0 (this importer reads glTF 2.0)");
+        }
+    }
+
+    // The node hierarchy is a set of disjoint strict trees (glTF 2.0, 3.5.3): every child index
+    // in range, no node the child of two parents, and no cycle (a cycle has no root, so its nodes
+    // would be dropped unseen).
+    void nodeTrees(const Json& root) const {
+        if (!root.contains("nodes")) return;
+        const Json& nodes = root["nodes"];
+        const size_t count = nodes.size();
+        std::vector<int64_t> parent(count, -1);
+        for (size_t i = 0; i < count; ++i) {
+            if (!nodes[i].contains("children")) continue;
+            const Json& children = nodes[i]["children"];
+            for (size_t k = 0; k < children.size(); ++k) {
+                const std::string at =
+                    "nodes[" + std::to_string(i) + "].children[" + std::to_string(k) + "]";
+                const uint64_t c = children[k].get<uint64_t>();
+                if (c >= count)
+                    fail(at, "is " + std::to_string(c) + "; expected a node index below " +
+                                 std::to_string(count));
+                if (parent[c] >= 0)
+                    fail(at, "node " + std::to_string(c) + " is already a child of node " +
+                                 std::to_string(parent[c]) +
+                                 "; expected a tree (a node has one parent)");
+                parent[c] = int64_t(i);
+            }
+        }
+        // With one parent each, a node is in a cycle when walking up from it never ends.
+        for (size_t i = 0; i < count; ++i) {
+            int64_t up = parent[i];
+            for (size_t steps = 0; up >= 0; ++steps) {
+                if (size_t(up) == i || steps > count)
+                    fail("nodes[" + std::to_string(i) + "].children",
+                         "node " + std::to_string(i) +
+                             " is its own ancestor (a cycle of children); expected a tree");
+                up = parent[size_t(up)];
+            }
+        }
+    }
+
     [[noreturn]] void fail(const std::string& place, const std::string& what) const {
         throw Error(path_ + ": " + place + ": " + what);
     }
@@ -180,6 +249,9 @@ private:
                     fail(at + ".extras.onelight." + clipForMessage(key),
                          "is not a setting; expected role, dynamic, spawn, probe, mover, grid, "
                          "exposure, texels_per_metre, probe_spacing, sky, diffuse or gloss_mips");
+                if (value.is_null())
+                    fail(at + ".extras.onelight." + key,
+                         "is null; expected a value (leave the setting out for its default)");
             }
         }
     }
