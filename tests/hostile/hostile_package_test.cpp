@@ -2,6 +2,8 @@
 // dimensions overflow or are empty, and error-budget records out of range, all with valid
 // checksums, so that only the reader's checks
 // stand between them and the runtime.
+#include <sys/stat.h>
+
 #include <cmath>
 #include <cstddef>
 #include <cstring>
@@ -104,6 +106,19 @@ TEST(HostilePackage, ImagesOutsideThePackagesFolderAreEmbedded) {
     // And the result passes the reader.
     const std::vector<uint8_t> bytes = package::serializePackage(level);
     EXPECT_EQ(errorMessage([&] { (void)package::parsePackage(bytes, "embedded.olpak"); }), "");
+    // An image beside the package that is a FIFO (or missing) is refused when the package is
+    // made, not written into it for the runtime to meet.
+    ASSERT_EQ(::mkfifo((folder / "out" / "textures" / "pipe.png").c_str(), 0600), 0);
+    for (const char* name : {"pipe.png", "missing.png"}) {
+        world::CompiledLevel piped = triangleLevel();
+        piped.images.resize(1);
+        piped.images[0].uri = (folder / "out" / "textures" / name).string();
+        const std::string error = errorMessage([&] {
+            package::placeImagesForPackage(piped, (folder / "out" / "level.olpak").string());
+        });
+        EXPECT_NE(error.find(name), std::string::npos) << error;
+        EXPECT_NE(error.find("expected an image the level uses"), std::string::npos) << error;
+    }
 }
 
 uint64_t triangleLevelTexels() {

@@ -1,9 +1,9 @@
 #include "world/import/gltf_json_check.hpp"
 
 #include <cmath>
-#include <vector>
 #include <cstring>
 #include <numbers>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -165,8 +165,9 @@ private:
         };
         const std::string version = a["version"].get<std::string>();
         if (major(version) != 2)
-            fail("asset.version", "'" + clipForMessage(version, 40) +
-                                      "'; expected 2.x (glTF 2.0, the version this importer reads)");
+            fail("asset.version",
+                 "'" + clipForMessage(version, 40) +
+                     "'; expected 2.x (glTF 2.0, the version this importer reads)");
         if (a.contains("minVersion")) {
             const std::string minimum = a["minVersion"].get<std::string>();
             if (major(minimum) != 2 || minimum != "2.0")

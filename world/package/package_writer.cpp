@@ -174,6 +174,10 @@ void placeImagesForPackage(world::CompiledLevel& level, const std::string& packa
             std::filesystem::relative(std::filesystem::absolute(image.uri), folder, ec)
                 .generic_string();
         if (!ec && isPathBesideThePackage(relative)) {
+            // Named, not read: still a regular file within the image limit (not a FIFO, a
+            // device or missing), or the runtime would meet it.
+            world::requireRegularFile(image.uri, "an image the level uses",
+                                      world::kMaxEncodedImageBytes);
             image.uri = relative;
         } else {
             image.encodedBytes = world::readRegularFile(image.uri, "an image the level uses",
