@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of tests/fuzz with clang, ASan and UBSan in build-fuzz/, makes a
 # seed corpus of real files for each, and runs each target for a bounded time or count:
-#   scripts/fuzz.sh                 60 s per target (CI)
+#   scripts/fuzz.sh                 60 s per target (CI runs --seconds 45)
 #   scripts/fuzz.sh --seconds S     S seconds per target
 #   scripts/fuzz.sh --runs N        N executions per target (the benchmark: 10000000)
-#   scripts/fuzz.sh ... --only T,U  only the targets named (fuzz_gltf, fuzz_q3, fuzz_package,
-#                                   fuzz_replay, fuzz_command_line)
+#   scripts/fuzz.sh ... --only T,U  only the targets named (fuzz_gltf, fuzz_q3, fuzz_q3_text,
+#                                   fuzz_image, fuzz_zip, fuzz_package, fuzz_replay,
+#                                   fuzz_command_line)
 #   scripts/fuzz.sh ... --timeout S one input running longer than S wall seconds is a finding
 #                                   (20; raise it on a loaded machine, where a starved process
 #                                   can take that long over an input that needs 0.05 s)
@@ -15,7 +16,8 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$root/build-fuzz
 limit=(-max_total_time=60)
-targets="fuzz_gltf fuzz_q3 fuzz_package fuzz_replay fuzz_command_line"
+all="fuzz_gltf fuzz_q3 fuzz_q3_text fuzz_image fuzz_zip fuzz_package fuzz_replay fuzz_command_line"
+targets=$all
 timeout=20
 usage="usage: scripts/fuzz.sh [--seconds S | --runs N] [--only TARGET,...] [--timeout S]"
 while [ $# -gt 0 ]; do
@@ -28,7 +30,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 for target in $targets; do
-  case " fuzz_gltf fuzz_q3 fuzz_package fuzz_replay fuzz_command_line " in
+  case " $all " in
     *" $target "*) ;;
     *) echo "scripts/fuzz.sh: unknown target '$target'; $usage" >&2; exit 2 ;;
   esac
@@ -43,7 +45,7 @@ cmake --build "$build" -j2 --target onelight_fuzzers
 # (one folder per run, so that runs of different targets can go side by side)
 corpus=$(mktemp -d "$build/corpus.XXXXXX")
 trap 'rm -rf "$corpus"' EXIT
-mkdir -p "$corpus"/{fuzz_gltf,fuzz_q3,fuzz_package,fuzz_replay,fuzz_command_line}
+for target in $all; do mkdir -p "$corpus/$target"; done
 cp "$root"/tests/render/levels/*.gltf "$root"/tests/fuzz/seeds/gltf/* "$corpus/fuzz_gltf/"
 cp "$root"/game/replays/*.replay "$corpus/fuzz_replay/"
 cp "$root"/tests/fuzz/seeds/command_line/* "$corpus/fuzz_command_line/"
@@ -61,7 +63,37 @@ for pk3 in sorted(glob.glob(os.path.join(folder, "*.pk3"))):
                 open(os.path.join(out, os.path.basename(name)), "wb").write(z.read(name))
                 taken += 1
 PY
+  # Images (TGA, JPEG, PNG, small ones), shader scripts and .map sources, and small pk3s.
+  python3 - "$maps" "$corpus" <<'PY'
+import sys, zipfile, glob, os, io
+folder, corpus = sys.argv[1], sys.argv[2]
+counts = {".tga": 0, ".jpg": 0, ".png": 0, ".shader": 0, ".map": 0}
+limits = {".tga": (8, 65536), ".jpg": (8, 65536), ".png": (4, 65536), ".shader": (8, 200000),
+          ".map": (3, 400000)}
+for pk3 in sorted(glob.glob(os.path.join(folder, "*.pk3"))):
+    with zipfile.ZipFile(pk3) as z:
+        for info in z.infolist():
+            ext = os.path.splitext(info.filename)[1].lower()
+            if ext not in counts or counts[ext] >= limits[ext][0] or info.file_size > limits[ext][1]:
+                continue
+            target = "fuzz_image" if ext in (".tga", ".jpg", ".png") else "fuzz_q3_text"
+            name = f"{counts[ext]}{ext}"
+            open(os.path.join(corpus, target, name), "wb").write(z.read(info))
+            counts[ext] += 1
+# Small pk3s: deflated, stored, and one with a folder entry.
+for n, method in enumerate((zipfile.ZIP_DEFLATED, zipfile.ZIP_STORED)):
+    data = io.BytesIO()
+    with zipfile.ZipFile(data, "w", method) as z:
+        z.writestr("scripts/a.shader", "textures/a\n{\n\tsurfaceparm nolightmap\n}\n")
+        z.writestr("textures/a.tga", bytes([0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 2, 0, 24, 0x20,
+                                            0x81, 1, 2, 3, 0x81, 4, 5, 6]))
+        if n:
+            z.writestr("maps/", "")
+    open(os.path.join(corpus, "fuzz_zip", f"{n}.pk3"), "wb").write(data.getvalue())
+PY
 fi
+printf '%s' "-meta; -vis; -light -fast -gamma 1.5 -exposure 200 -compensate 2 -bounce 8 -dirty -scale 1.25" \
+  >"$corpus/fuzz_q3_text/cmdline.txt"
 cp "$root"/tests/fuzz/seeds/q3/* "$corpus/fuzz_q3/"
 # Packages: compiled and baked by the main build's onelight-bake, when there is one.
 bake=$root/build/bin/onelight-bake

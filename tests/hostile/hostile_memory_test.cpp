@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/error_message.hpp"
 #include "world/error.hpp"
 #include "world/images/image_budget.hpp"
 #include "world/images/image_decode.hpp"
@@ -129,6 +130,56 @@ TEST(HostileMemory, ATgaIsRefusedWhenItsTexelDataCannotHoldItsHeader) {
     EXPECT_EQ(decodeError(raw),
               "maps.pk3:textures/x.tga: a TGA of 4 texels in 11 bytes of texel "
               "data; expected 12");
+}
+
+TEST(HostileMemory, NoBytesAtAllAreAnErrorNotACrash) {
+    // Found by fuzz_image: an empty .hdr read stb_image's failure reason before stb had one.
+    const uint8_t none[1] = {0};
+    EXPECT_NE(errorMessage([&] {
+                  (void)world::decodeHdrImage(none, 0, "sky.hdr");
+              }).find("sky.hdr: not a Radiance .hdr image"),
+              std::string::npos);
+    // Found by fuzz_image as well: a JPEG given as a sky went through stb's JPEG decoder.
+    EXPECT_NE(errorMessage([&] {
+                  (void)world::decodeHdrImage(kPng64.data(), kPng64.size(), "sky.hdr");
+              }).find("sky.hdr: not a Radiance .hdr image"),
+              std::string::npos);
+    EXPECT_NE(
+        errorMessage([&] { (void)world::decodeImage(none, 0, "x.png"); }).find("x.png: 0 bytes"),
+        std::string::npos);
+}
+
+TEST(HostileMemory, AJpegHuffmanTablePast256CodesIsRefusedBeforeStbReadsIt) {
+    // Found by fuzz_image: stb_image writes past its 257-entry table for such a DHT segment.
+    std::vector<uint8_t> jpeg = {0xFF, 0xD8, 0xFF, 0xC4};
+    const size_t length = 2 + 17 + 300;
+    jpeg.insert(jpeg.end(), {uint8_t(length >> 8), uint8_t(length & 255), 0x00});
+    for (int i = 0; i < 16; ++i) jpeg.push_back(i == 14 ? 45 : i == 15 ? 255 : 0);
+    jpeg.resize(jpeg.size() + 300, 7);
+    jpeg.insert(jpeg.end(), {0xFF, 0xD9});
+    EXPECT_EQ(decodeError(jpeg),
+              "maps.pk3:textures/x.tga: a JPEG Huffman table of 300 codes "
+              "(byte 6); expected at most 256");
+    // Within a scan's entropy-coded bytes a 0xFF 0x00 is data, not a marker: walked past.
+    std::vector<uint8_t> scan;
+    scan.reserve(jpeg.size() + 8);
+    for (const uint8_t b : {0xFF, 0xD8, 0xFF, 0xDA, 0x00, 0x02, 0x12, 0xFF, 0x00, 0x34})
+        scan.push_back(b);
+    for (size_t i = 2; i < jpeg.size(); ++i) scan.push_back(jpeg[i]);
+    EXPECT_NE(decodeError(scan).find("a JPEG Huffman table of 300 codes (byte 14)"),
+              std::string::npos)
+        << decodeError(scan);
+}
+
+TEST(HostileMemory, AJpegScanWithAnUndefinedHuffmanTableIsRefused) {
+    // Found by fuzz_image: stb decodes with an unbuilt table and reads past its end. A baseline
+    // frame, then a scan of one component using DC table 0 and AC table 0, none defined.
+    const std::vector<uint8_t> jpeg = {0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x0B, 0x08, 0x00, 0x08, 0x00,
+                                       0x08, 0x01, 0x01, 0x11, 0x00, 0xFF, 0xDA, 0x00, 0x08, 0x01,
+                                       0x01, 0x00, 0x00, 0x3F, 0x00, 0x12, 0x34, 0xFF, 0xD9};
+    EXPECT_EQ(decodeError(jpeg),
+              "maps.pk3:textures/x.tga: a JPEG scan (byte 15) decodes with a "
+              "Huffman table never defined; expected a DHT segment before it");
 }
 
 TEST(HostileMemory, APngClaimingMoreThanDeflateCanHoldIsRefusedBeforeDecoding) {

@@ -28,6 +28,13 @@ namespace onelight::world {
 
 namespace {
 
+// stb_image's reason for the last failure; null when it has none (no stb call failed, as when a
+// check of ours refused the bytes first).
+std::string failureReason() {
+    const char* reason = stbi_failure_reason();
+    return reason ? reason : "no image data";
+}
+
 void checkExtent(int width, int height, const std::string& where) {
     if (width <= 0 || height <= 0 || uint32_t(width) > kMaxImageExtent ||
         uint32_t(height) > kMaxImageExtent)
@@ -83,6 +90,79 @@ void checkTgaHolds(const uint8_t* bytes, size_t size, uint64_t texels, const std
     }
 }
 
+// JPEG's Huffman tables (DHT segments, wherever they appear: before the first scan or between
+// scans) each define at most 256 codes. stb_image (Debian's 2022 copy) fills a 257-entry table
+// with as many codes as the counts say, so a table claiming more writes past it: refused here
+// first. Walks the segments and skips each scan's entropy-coded bytes (0xFF 0x00 is a stuffed
+// byte, 0xFF 0xD0..0xD7 a restart marker).
+void checkJpegHuffmanTables(const uint8_t* bytes, size_t size, const std::string& where) {
+    // stb takes 0xFF (fill bytes) 0xD8 as the start of a JPEG: the walk starts after it.
+    size_t at = 0;
+    if (size < 2 || bytes[0] != 0xFF) return;
+    while (at + 1 < size && bytes[at + 1] == 0xFF) ++at;
+    if (at + 1 >= size || bytes[at + 1] != 0xD8) return;
+    at += 2;
+    bool progressive = false;
+    uint8_t defined[2] = {0, 0};  // the DC and AC tables defined so far, a bit per id
+    while (at + 4 <= size) {
+        if (bytes[at] != 0xFF) {
+            ++at;  // padding between segments, which stb_image scans past as well
+            continue;
+        }
+        const uint8_t marker = bytes[at + 1];
+        if (marker == 0xFF) {
+            ++at;  // fill byte
+            continue;
+        }
+        if (marker == 0xD9) return;  // EOI
+        if ((marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) {
+            at += 2;
+            continue;
+        }
+        const size_t length = size_t(bytes[at + 2]) << 8 | bytes[at + 3];
+        if (marker >= 0xC0 && marker <= 0xC2) progressive = marker == 0xC2;
+        if (marker == 0xDA && at + 5 <= size) {
+            // Every Huffman table the scan decodes with must be defined before it: stb decodes
+            // with an unbuilt table's zeros and reads past its end.
+            const size_t components = bytes[at + 4];
+            const size_t spectral = at + 5 + 2 * components;  // Ss, Se, Ah/Al
+            if (length >= 6 + 2 * components && spectral + 2 < size) {
+                const bool dcScan = bytes[spectral] == 0, firstDc = (bytes[spectral + 2] >> 4) == 0;
+                for (size_t c = 0; c < components; ++c) {
+                    const uint8_t tables = bytes[at + 6 + 2 * c];
+                    const bool needDc = !progressive || (dcScan && firstDc);
+                    const bool needAc = !progressive || !dcScan;
+                    if ((needDc && !(defined[0] >> (tables >> 4 & 3) & 1)) ||
+                        (needAc && !(defined[1] >> (tables & 3) & 1)))
+                        throw Error(where + ": a JPEG scan (byte " + std::to_string(at) +
+                                    ") decodes with a Huffman table never defined; expected a "
+                                    "DHT segment before it");
+                }
+            }
+        }
+        if (marker == 0xC4) {
+            // As stb reads it: tables while the segment's length lasts, each read whole even
+            // past the segment (bytes past the file read as 0).
+            int64_t remaining = int64_t(length) - 2;
+            for (size_t t = at + 4; remaining > 0 && t < size;) {
+                size_t codes = 0;
+                for (size_t i = 1; i <= 16; ++i) codes += t + i < size ? bytes[t + i] : 0;
+                if (codes > 256)
+                    throw Error(where + ": a JPEG Huffman table of " + std::to_string(codes) +
+                                " codes (byte " + std::to_string(t) + "); expected at most 256");
+                defined[bytes[t] >> 4 & 1] |= uint8_t(1u << (bytes[t] & 3));
+                t += 17 + codes;
+                remaining -= int64_t(17 + codes);
+            }
+        }
+        at = at + 2 + length;
+        if (marker == 0xDA)  // the scan's entropy-coded bytes, up to the next real marker
+            while (at + 1 < size && !(bytes[at] == 0xFF && bytes[at + 1] != 0 &&
+                                      !(bytes[at + 1] >= 0xD0 && bytes[at + 1] <= 0xD7)))
+                ++at;
+    }
+}
+
 // A bound on the texels `size` encoded bytes can hold, known before decoding: an image whose
 // header claims more is refused before anything is allocated. PNG: deflate expands at most
 // 1032:1, and a 1-bit texel takes 1/8 byte; JPEG: every 8x8 block costs at least one bit
@@ -118,16 +198,16 @@ DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& w
         throw Error(where + ": " + std::to_string(size) + " bytes of image data; expected 1.." +
                     std::to_string(kMaxEncodedImageBytes));
     int width = 0, height = 0, channels = 0;
+    // Before stb reads anything: its header parse already builds the Huffman tables.
+    checkJpegHuffmanTables(bytes, size, where);
     if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
-        throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() +
-                    ")");
+        throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + failureReason() + ")");
     checkExtent(width, height, where);
     checkEncodedHolds(bytes, size, width, height, where);
     if (budget) chargeImage(*budget, uint32_t(width), uint32_t(height), where);
     stbi_uc* pixels = stbi_load_from_memory(bytes, int(size), &width, &height, &channels, 4);
     if (!pixels)
-        throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + stbi_failure_reason() +
-                    ")");
+        throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + failureReason() + ")");
     DecodedImage out;
     out.width = uint32_t(width);
     out.height = uint32_t(height);
@@ -151,15 +231,18 @@ HdrImage readHdrFile(const std::string& path, ImageMemoryBudget* budget) {
 HdrImage decodeHdrImage(const uint8_t* bytes, size_t size, const std::string& where,
                         ImageMemoryBudget* budget) {
     int width = 0, height = 0, channels = 0;
-    if (size == 0 || size > kMaxEncodedImageBytes ||
-        !stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
-        throw Error(where + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
+    // Radiance HDR only: stb would decode any format it knows to floats here.
+    if (size == 0 || size > kMaxEncodedImageBytes || !stbi_is_hdr_from_memory(bytes, int(size)))
+        throw Error(where +
+                    ": not a Radiance .hdr image (expected its '#?RADIANCE' or '#?RGBE' "
+                    "header)");
+    if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
+        throw Error(where + ": not a decodable .hdr image (" + failureReason() + ")");
     checkExtent(width, height, where);
     checkEncodedHolds(bytes, size, width, height, where);
     if (budget) chargeImage(*budget, uint32_t(width), uint32_t(height), where);
     float* pixels = stbi_loadf_from_memory(bytes, int(size), &width, &height, &channels, 3);
-    if (!pixels)
-        throw Error(where + ": not a decodable .hdr image (" + stbi_failure_reason() + ")");
+    if (!pixels) throw Error(where + ": not a decodable .hdr image (" + failureReason() + ")");
     HdrImage out;
     out.width = uint32_t(width);
     out.height = uint32_t(height);
