@@ -99,7 +99,7 @@ std::string clipForMessage(std::string_view text, size_t maxChars) {
 }
 
 std::string oneLineMessage(std::string_view message) {
-    constexpr size_t kLongest = 64, kHead = 16, kTail = 28;
+    constexpr size_t kLongest = 128, kHead = 32, kTail = 64;
     std::string out;
     out.reserve(std::min<size_t>(message.size(), 1024));
     size_t at = 0;

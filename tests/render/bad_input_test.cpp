@@ -69,8 +69,8 @@ TEST(RenderBadInput, GltfReferencingMissingBuffer) {
 }
 
 TEST(RenderBadInput, GltfReferencingMissingImage) {
-    // A valid level whose base-colour texture file is missing: the compiler keeps the reference,
-    // the runtime names the missing file when it decodes images.
+    // A valid level whose base-colour texture file is missing: the compile that makes its
+    // package refuses it, naming the file (a package never refers to a file that is not there).
     test::Scene scene;
     scene.materials.push_back({});
     test::addFloor(scene, 0.0f, 0.0f, 1.0f, 0.0f, 0);
@@ -86,7 +86,7 @@ TEST(RenderBadInput, GltfReferencingMissingImage) {
                 R"(,"textures":[{"source":0}],"images":[{"uri":"not_there.png"}])");
     writeText(path, text);
     fs::remove(badDir() + "/missing_image.olpak");
-    expectOneClearLine(path, "expected a PNG or JPEG file", "not_there.png");
+    expectOneClearLine(path, "expected an image the level uses", "not_there.png");
 }
 
 TEST(RenderBadInput, CorruptPackage) {
