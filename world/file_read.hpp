@@ -39,8 +39,8 @@ std::string clipForMessage(std::string_view text, size_t maxChars = 80);
 /// A message as a command prints it: one line (control characters, a newline among them, shown
 /// as '?'), every word (a run without spaces: a path, a token, a name) longer than 128
 /// characters shown by its first 32 and last 64 with its length after (an ordinary path stays
-/// whole; a 5000-character name keeps its end, where a file's name is), the same text otherwise. The last guard of the
-/// one-short-line rule for every command's top-level error.
+/// whole; a 5000-character name keeps its end, where a file's name is), the same text otherwise.
+/// The last guard of the one-short-line rule for every command's top-level error.
 std::string oneLineMessage(std::string_view message);
 
 }  // namespace onelight::world
