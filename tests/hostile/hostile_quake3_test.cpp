@@ -121,6 +121,34 @@ TEST(HostileQuake3, APk3EntryWhoseBytesChangedIsRefusedByItsCrc) {
         << message;
 }
 
+TEST(HostileQuake3, AnEntryThatInflatesPastItsDeclaredSizeIsRefused) {
+    // The script's size in both headers edited from 64 to 16: 48 bytes more come out than the
+    // archive declares, which must not be read into a 16-byte allocation or cut silently.
+    const auto folder = freshFolder("liar");
+    writePk3(folder / "z.pk3", {{"maps/room.bsp", floorSquare(40).text()},
+                                {"scripts/liar.shader", std::string(64, '/')}});
+    std::string bytes = readText(folder / "z.pk3");
+    int edited = 0;
+    for (const auto& [signature, sizeAt] :
+         {std::pair{std::string("PK\x03\x04", 4), 22}, {std::string("PK\x01\x02", 4), 24}}) {
+        for (size_t at = bytes.find(signature); at != std::string::npos;
+             at = bytes.find(signature, at + 1)) {
+            const size_t nameAt = signature[2] == 3 ? at + 30 : at + 46;
+            if (bytes.compare(nameAt, 19, "scripts/liar.shader") != 0) continue;
+            ASSERT_EQ(uint8_t(bytes[at + size_t(sizeAt)]), 64);
+            bytes[at + size_t(sizeAt)] = 16;
+            ++edited;
+        }
+    }
+    ASSERT_EQ(edited, 2);
+    writeFile(folder / "z.pk3", bytes);
+    double seconds = 0.0;
+    const std::string message = importFromPk3(folder / "z.pk3", seconds);
+    EXPECT_NE(message.find("z.pk3:scripts/liar.shader: damaged in the archive ("),
+              std::string::npos)
+        << message;
+}
+
 TEST(HostileQuake3, AnEntryPastItsKindsLimitIsRefusedFromItsDeclaredSize) {
     // A shader script of 17 MiB deflates to about 17 KB: refused before it is inflated.
     const auto folder = freshFolder("zipbomb");
