@@ -15,7 +15,6 @@ find_package(nlohmann_json 3 REQUIRED)
 # zipcmp/zipmerge/ziptool programs, which libzip-dev does not install, and fails without them.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(LIBZIP REQUIRED IMPORTED_TARGET libzip)
-find_package(ZLIB REQUIRED)  # CRC-32 of pk3 entries (libzip-dev brings zlib1g-dev)
 find_path(STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
 find_path(TINYEXR_INCLUDE_DIR tinyexr.h REQUIRED)
 find_library(TINYEXR_LIBRARY tinyexr REQUIRED)

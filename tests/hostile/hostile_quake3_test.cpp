@@ -1,8 +1,6 @@
 // Hostile Quake 3 input: records whose sizes would make more than the level's limits, refused
 // from their headers before anything is built, in one line naming the map and the place.
 #include <chrono>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -18,22 +16,11 @@ namespace {
 
 using namespace world::q3;
 
-std::string readText(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-world::Quake3Options gameIn(const std::filesystem::path& folder) {
-    world::Quake3Options options;
-    options.gameFolders = {folder.string()};
-    return options;
-}
-
 // The error importing `bsp` as NAME.bsp gives, with how long it took.
 std::string importError(const Quake3BspBuilder& bsp, const std::string& name, double& seconds,
                         uint32_t patchLevel = 4) {
     const std::string path = bsp.write(name, name);
-    world::Quake3Options options = gameIn(freshFolder(name + "_game"));
+    world::Quake3Options options = quake3GameIn(freshFolder(name + "_game"));
     options.patchLevel = patchLevel;
     const auto start = std::chrono::steady_clock::now();
     const std::string message = errorMessage([&] { (void)world::importLevel(path, options); });
@@ -96,7 +83,7 @@ TEST(HostileQuake3, SurfacesSharingOneVertexRangeAreCountedBeforeTheyAreCopied) 
 std::string importFromPk3(const std::filesystem::path& pk3, double& seconds) {
     const auto start = std::chrono::steady_clock::now();
     const std::string message = errorMessage([&] {
-        (void)world::importLevel(pk3.string() + ":maps/room.bsp", gameIn(pk3.parent_path()));
+        (void)world::importLevel(pk3.string() + ":maps/room.bsp", quake3GameIn(pk3.parent_path()));
     });
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return message;
@@ -110,7 +97,7 @@ TEST(HostileQuake3, APk3EntryWhoseBytesChangedIsRefusedByItsCrc) {
     double seconds = 0.0;
     ASSERT_EQ(importFromPk3(folder / "z.pk3", seconds), "") << "the archive as written imports";
     // One byte of the stored script changed: inflating still works, only the CRC can tell.
-    std::string bytes = readText(folder / "z.pk3");
+    std::string bytes = readFileText(folder / "z.pk3");
     const size_t at = bytes.find("nolightmap");
     ASSERT_NE(at, std::string::npos);
     bytes[at] = 'N';
@@ -127,7 +114,7 @@ TEST(HostileQuake3, AnEntryThatInflatesPastItsDeclaredSizeIsRefused) {
     const auto folder = freshFolder("liar");
     writePk3(folder / "z.pk3", {{"maps/room.bsp", floorSquare(40).text()},
                                 {"scripts/liar.shader", std::string(64, '/')}});
-    std::string bytes = readText(folder / "z.pk3");
+    std::string bytes = readFileText(folder / "z.pk3");
     int edited = 0;
     for (const auto& [signature, sizeAt] :
          {std::pair{std::string("PK\x03\x04", 4), 22}, {std::string("PK\x01\x02", 4), 24}}) {

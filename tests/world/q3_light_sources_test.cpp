@@ -28,15 +28,10 @@ using onelight::test::errorMessage;
 using onelight::test::floorSquare;
 using onelight::test::freshFolder;
 using onelight::test::Quake3BspBuilder;
+using onelight::test::quake3GameIn;
 using onelight::test::tgaImage;
 using onelight::test::writeFile;
 using onelight::test::writePk3;
-
-Quake3Options withGameIn(const std::filesystem::path& folder) {
-    Quake3Options options;
-    options.gameFolders = {folder.string()};
-    return options;
-}
 
 // A source .map as Radiant writes it: worldspawn with an old-format brush, a brushDef and a
 // patchDef2 (braces, comments and parentheses the parser must skip), a point light, a coloured
@@ -127,7 +122,7 @@ TEST(Quake3LightSources, ASourceMapBesideTheBspGivesItsLights) {
     writeFile(folder / "room.bsp", bsp.text());
     writeFile(folder / "room.map", kSourceMap);
     const SourceLevel level =
-        importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("beside_game")));
+        importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder("beside_game")));
     expectTheSourceLights(level);
     EXPECT_TRUE(mentions(level.lightSources, "light entities: 3 from the source .map "))
         << level.lightSources[0];
@@ -141,7 +136,7 @@ TEST(Quake3LightSources, ASourceMapInThePk3GivesItsLights) {
     writePk3(folder / "room.pk3",
              {{"maps/room.bsp", bsp.text()}, {"sources/maps/room.map", kSourceMap}});
     const SourceLevel level = importLevel((folder / "room.pk3").string() + ":maps/room.bsp",
-                                          withGameIn(freshFolder("pk3_game")));
+                                          quake3GameIn(freshFolder("pk3_game")));
     expectTheSourceLights(level);
     EXPECT_TRUE(mentions(level.lightSources, "room.pk3:sources/maps/room.map"))
         << level.lightSources[0];
@@ -155,7 +150,7 @@ TEST(Quake3LightSources, TheBspsOwnLightsWin) {
     writeFile(folder / "room.bsp", bsp.text());
     writeFile(folder / "room.map", kSourceMap);
     const SourceLevel level =
-        importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("own_game")));
+        importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder("own_game")));
     ASSERT_EQ(level.lights.size(), 1u);
     EXPECT_TRUE(mentions(level.lightSources, "light entities: 1 from the BSP's entities"));
 }
@@ -165,7 +160,7 @@ TEST(Quake3LightSources, WithoutASourceQ3map2sLightmapsAreTheLevels) {
     Quake3BspBuilder bsp = floorSquare(40);
     writePk3(folder / "room.pk3", {{"maps/room.bsp", bsp.text()}});
     const SourceLevel level = importLevel((folder / "room.pk3").string() + ":maps/room.bsp",
-                                          withGameIn(freshFolder("recovered_game")));
+                                          quake3GameIn(freshFolder("recovered_game")));
     EXPECT_TRUE(level.lights.empty());
     EXPECT_TRUE(level.lightmapIsImported);
     EXPECT_TRUE(level.lightless.empty());
@@ -180,7 +175,7 @@ TEST(Quake3LightSources, AMapWithNoLightIsNotBakedBlackInSilence) {
     const auto folder = freshFolder("dark");
     writeFile(folder / "dark.bsp", floorSquare(0).text());
     const SourceLevel level =
-        importLevel((folder / "dark.bsp").string(), withGameIn(freshFolder("dark_game")));
+        importLevel((folder / "dark.bsp").string(), quake3GameIn(freshFolder("dark_game")));
     EXPECT_FALSE(level.lightmapIsImported);
     EXPECT_NE(level.lightless.find("dark.bsp: no light source"), std::string::npos)
         << level.lightless;
@@ -221,7 +216,7 @@ TEST(Quake3MapSource, HostileSourcesAreIgnoredWithAWarning) {
         writeFile(folder / "room.bsp", bsp.text());
         writeFile(folder / "room.map", source);
         const SourceLevel level =
-            importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("hostile_game")));
+            importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder("hostile_game")));
         EXPECT_TRUE(level.lights.empty());
         EXPECT_TRUE(level.lightmapIsImported);
         // One note names the source (the others say the map has no spawn, a view computed).
@@ -240,7 +235,7 @@ TEST(Quake3MapSource, HostileSourcesAreIgnoredWithAWarning) {
               "{\n\"classname\" \"light\"\n\"origin\" \"1e30 0 0\"\n}\n"
               "{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n}\n");
     const SourceLevel level =
-        importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("far_game")));
+        importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder("far_game")));
     ASSERT_EQ(level.lights.size(), 1u);
     // Exactly one note about the far light (another says the view was computed: no spawn).
     size_t farNotes = 0;
@@ -265,7 +260,7 @@ TEST(Quake3LightSources, ASurfaceLightHasQ3map2sColour) {
     Quake3BspBuilder bsp = floorSquare(0);
     std::strcpy(bsp.shaders[0].name, "textures/test/lamp");
     writeFile(folder / "lamp.bsp", bsp.text());
-    const SourceLevel level = importLevel((folder / "lamp.bsp").string(), withGameIn(game));
+    const SourceLevel level = importLevel((folder / "lamp.bsp").string(), quake3GameIn(game));
     ASSERT_EQ(level.materials.size(), 1u);
     const glm::vec3 bytes = glm::vec3(245.0f, 210.0f, 130.0f) / 255.0f;  // the mean bytes
     const glm::vec3 q3map2Colour = bytes / bytes.x;
@@ -299,7 +294,7 @@ SourceLevel importWithEntities(const std::string& name, const std::string& entit
     Quake3BspBuilder bsp = floorSquare(40);
     bsp.entities = entities;
     writeFile(folder / "room.bsp", bsp.text());
-    return importLevel((folder / "room.bsp").string(), withGameIn(freshFolder(name + "_game")));
+    return importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder(name + "_game")));
 }
 
 TEST(Quake3Q3map2Options, TheLightStagesScalesLightTheMapAndItsEncodingDecodesTheLightmaps) {
@@ -381,7 +376,7 @@ TEST(Quake3Q3map2Options, AnUnrecordedMapsLightmapsDecodeWithTheCompensateTheySh
     Quake3BspBuilder bsp = floorSquare(127);  // every byte 127: a pile-up and nothing above
     writeFile(folder / "room.bsp", bsp.text());
     const SourceLevel level =
-        importLevel((folder / "room.bsp").string(), withGameIn(freshFolder("inferred_game")));
+        importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder("inferred_game")));
     EXPECT_EQ(level.importedLightmap.encoding.compensate, 2.0f);
     EXPECT_TRUE(mentions(level.lightSources, "clamp at 127, as -compensate 2 makes them"))
         << level.lightSources.back();
@@ -390,7 +385,7 @@ TEST(Quake3Q3map2Options, AnUnrecordedMapsLightmapsDecodeWithTheCompensateTheySh
     bsp.entities = "{\n\"classname\" \"worldspawn\"\n\"_q3map2_cmdline\" \"-light -fast\"\n}\n";
     writeFile(recorded / "room.bsp", bsp.text());
     const SourceLevel kept =
-        importLevel((recorded / "room.bsp").string(), withGameIn(freshFolder("recorded_game")));
+        importLevel((recorded / "room.bsp").string(), quake3GameIn(freshFolder("recorded_game")));
     EXPECT_EQ(kept.importedLightmap.encoding.compensate, 1.0f);
 }
 

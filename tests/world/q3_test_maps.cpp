@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 
 #include "tests/world/world_test_support.hpp"
 
@@ -107,6 +108,17 @@ void writePk3(const std::filesystem::path& path,
         }
     }
     ASSERT_EQ(zip_close(zip), 0) << path;  // `files` outlive the close, which reads them
+}
+
+world::Quake3Options quake3GameIn(const std::filesystem::path& folder) {
+    world::Quake3Options options;
+    options.gameFolders = {folder.string()};
+    return options;
+}
+
+std::string readFileText(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::string tgaImage(uint32_t width, const std::vector<glm::u8vec3>& texels) {

@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "world/import/q3/bsp_file.hpp"
+#include "world/import/q3/q3_import.hpp"
 
 namespace onelight::test {
 
@@ -43,6 +44,12 @@ struct Quake3BspBuilder {
 /// A 256-unit floor square with shader textures/test/floor whose lightmap coordinates span one
 /// page, every byte of it `lightmapValue` (0: no page, the surface vertex lit).
 Quake3BspBuilder floorSquare(uint8_t lightmapValue);
+
+/// Import options whose one game folder is `folder` (its pk3s and loose files).
+world::Quake3Options quake3GameIn(const std::filesystem::path& folder);
+
+/// The bytes of the file at `path` as a string (empty when it cannot be read).
+std::string readFileText(const std::filesystem::path& path);
 
 /// Writes `bytes` to `path`, making its folder.
 void writeFile(const std::filesystem::path& path, std::string_view bytes);

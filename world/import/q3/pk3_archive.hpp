@@ -27,7 +27,8 @@ public:
     [[nodiscard]] const std::vector<std::string>& names() const { return names_; }
     /// The bytes of `name` (as stored), `what` it holds (for messages): refused from its
     /// declared size past `limit` bytes before anything is allocated, inflated in pieces and
-    /// refused if it inflates past that size, and checked against the archive's CRC-32. Throws
+    /// refused if it inflates past that size, and read to its end, where libzip checks it against
+    /// the archive's CRC-32. Throws
     /// world::Error naming the archive and the entry.
     [[nodiscard]] std::vector<uint8_t> read(const std::string& name, size_t limit,
                                             const char* what) const;
