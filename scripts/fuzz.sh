@@ -115,6 +115,7 @@ for target in $targets; do
   extra=()
   [ "$target" = fuzz_package ] && extra=(-use_value_profile=1)
   seeds=$(ls "$corpus/$target" | wc -l)
+  started=$SECONDS
   if (cd "$findings" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       "$build/bin/$target" "${limit[@]}" "${extra[@]}" -rss_limit_mb=4096 -timeout="$timeout" \
@@ -124,8 +125,8 @@ for target in $targets; do
     result="FINDING (see $log and $findings)"
     status=1
   fi
-  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
-  secs=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | grep -o 'in [0-9]*' | grep -o '[0-9]*' || echo "?")
-  echo "fuzz: $target: $runs executions in ${secs} s from $seeds seeds: $result"
+  # (a run that ends in a finding prints its statistics twice: the last count is the run's)
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
+  echo "fuzz: $target: ${runs:-?} executions in $((SECONDS - started)) s from $seeds seeds: $result"
 done
 exit $status
