@@ -63,13 +63,52 @@ for pk3 in sorted(glob.glob(os.path.join(folder, "*.pk3"))):
                 open(os.path.join(out, os.path.basename(name)), "wb").write(z.read(name))
                 taken += 1
 PY
-  # Images (TGA, JPEG, PNG, small ones), shader scripts and .map sources, and small pk3s.
+  # Images (TGA, JPEG, PNG, small ones), shader scripts, excerpts of .map sources, small pk3s.
   python3 - "$maps" "$corpus" <<'PY'
 import sys, zipfile, glob, os, io
 folder, corpus = sys.argv[1], sys.argv[2]
+
+def map_excerpt(text, budget=32768):
+    """Whole blocks of a .map source within about budget bytes: worldspawn's keys and its first
+    brushes and patches, then point entities, so that each execution parses kilobytes (the real
+    sources are 0.3-0.8 MB, which held fuzz_q3_text to 100 executions a second)."""
+    entities, brushes, depth, start, quoted = [], [], 0, 0, False
+    for i, c in enumerate(text):
+        if c == '"':
+            quoted = not quoted
+        elif not quoted and c == "{":
+            if depth <= 1:
+                start = i
+            depth += 1
+        elif not quoted and c == "}":
+            depth -= 1
+            if depth == 0:
+                entities.append((start_entity, i + 1))
+            elif depth == 1 and not entities:  # a brush or patch of worldspawn
+                brushes.append((start, i + 1))
+        if not quoted and c == "{" and depth == 1:
+            start_entity = i
+    if not entities:
+        return text[:budget]
+    keys_end = brushes[0][0] if brushes else entities[0][1] - 1
+    out = [text[entities[0][0]:keys_end]]
+    size = len(out[0])
+    for begin, end in brushes:
+        if size + end - begin > budget // 2:
+            break
+        out.append(text[begin:end] + "\n")
+        size += end - begin
+    out.append("}\n")
+    for begin, end in entities[1:]:
+        if size + end - begin > budget:
+            break
+        out.append(text[begin:end] + "\n")
+        size += end - begin
+    return "".join(out)
+
 counts = {".tga": 0, ".jpg": 0, ".png": 0, ".shader": 0, ".map": 0}
-limits = {".tga": (8, 65536), ".jpg": (8, 65536), ".png": (4, 65536), ".shader": (8, 200000),
-          ".map": (3, 400000)}
+limits = {".tga": (8, 65536), ".jpg": (8, 65536), ".png": (4, 65536), ".shader": (8, 16384),
+          ".map": (3, 1 << 20)}
 for pk3 in sorted(glob.glob(os.path.join(folder, "*.pk3"))):
     with zipfile.ZipFile(pk3) as z:
         for info in z.infolist():
@@ -78,7 +117,10 @@ for pk3 in sorted(glob.glob(os.path.join(folder, "*.pk3"))):
                 continue
             target = "fuzz_image" if ext in (".tga", ".jpg", ".png") else "fuzz_q3_text"
             name = f"{counts[ext]}{ext}"
-            open(os.path.join(corpus, target, name), "wb").write(z.read(info))
+            data = z.read(info)
+            if ext == ".map":
+                data = map_excerpt(data.decode("latin-1")).encode("latin-1")
+            open(os.path.join(corpus, target, name), "wb").write(data)
             counts[ext] += 1
 # Small pk3s: deflated, stored, and one with a folder entry.
 for n, method in enumerate((zipfile.ZIP_DEFLATED, zipfile.ZIP_STORED)):
@@ -114,12 +156,15 @@ for target in $targets; do
   log=$build/$target.log
   extra=()
   [ "$target" = fuzz_package ] && extra=(-use_value_profile=1)
+  # Text parsers are linear: 16 KB inputs reach every path a megabyte would, far more often.
+  max_len=4000000
+  [ "$target" = fuzz_q3_text ] && max_len=16384
   seeds=$(ls "$corpus/$target" | wc -l)
   started=$SECONDS
   if (cd "$findings" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       "$build/bin/$target" "${limit[@]}" "${extra[@]}" -rss_limit_mb=4096 -timeout="$timeout" \
-      -max_len=4000000 -print_final_stats=1 "$build/work/$target" "$corpus/$target" >"$log" 2>&1); then
+      -max_len=$max_len -print_final_stats=1 "$build/work/$target" "$corpus/$target" >"$log" 2>&1); then
     result="no finding"
   else
     result="FINDING (see $log and $findings)"
