@@ -120,11 +120,18 @@ void printErrorBudget(const assets::LoadedLevel& level) {
         b.texelsSampled, b.texelsRequested, b.gridCells, b.gridCellsFull);
 }
 
-// `gpuMs`: every drawn frame's GPU time, the last one included.
+/// Times of a bounded run: the renderer's creation (pipelines warmed included) and each drawn
+/// frame's GPU time and wall time (the caller waits for every frame headless).
+struct RunTimes {
+    double openMs = 0.0;
+    std::vector<double> gpuMs, wallMs;
+};
+
+// `times`: every drawn frame's, the last one included.
 nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& level,
                        const render::Renderer& renderer, const render::Camera& camera,
                        const render::FrameStats& stats, const char* backend,
-                       const std::vector<double>& gpuMs) {
+                       const RunTimes& times) {
     const render::RendererInfo& info = render::rendererInfo(renderer);
     const glm::vec3 f = render::forwardOf(camera);
     nlohmann::json j;
@@ -141,14 +148,23 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
                    {"ev100", stats.ev100},
                    {"exposure", stats.exposure}};
     j["msaa"] = {{"requested", info.msaaRequested}, {"in_use", info.msaaInUse}};
-    j["timings_ms"] = {{"cpu", stats.cpuMs},
-                       {"gpu", stats.gpuMs},
-                       {"gpu_shadows", stats.gpuShadowMs},
-                       {"gpu_forward", stats.gpuForwardMs},
-                       {"gpu_tonemap", stats.gpuTonemapMs},
-                       {"gpu_timestamps", stats.gpuTimestamps},
-                       {"frames", gpuMs.size()},
-                       {"gpu_median", medianMs(gpuMs)}};
+    j["timings_ms"] = {
+        {"cpu", stats.cpuMs},
+        {"gpu", stats.gpuMs},
+        {"gpu_shadows", stats.gpuShadowMs},
+        {"gpu_forward", stats.gpuForwardMs},
+        {"gpu_tonemap", stats.gpuTonemapMs},
+        {"gpu_timestamps", stats.gpuTimestamps},
+        {"frames", times.wallMs.size()},
+        {"gpu_median", medianMs(times.gpuMs)},
+        // The first frame after load, and the median of those after it: the
+        // first-frame stall is their ratio.
+        {"renderer_create", times.openMs},
+        {"first_frame_wall", times.wallMs.empty() ? 0.0 : times.wallMs.front()},
+        {"wall_median_after_first",
+         medianMs(times.wallMs.size() > 1
+                      ? std::vector<double>(times.wallMs.begin() + 1, times.wallMs.end())
+                      : times.wallMs)}};
     j["frame"] = {{"surfaces_drawn", stats.surfacesDrawn},
                   {"draws", stats.draws},
                   {"surfaces_culled", stats.surfacesCulled},
@@ -176,7 +192,12 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
 int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
               render::Camera camera) {
     game::RenderTarget target;
+    RunTimes times;
+    const auto openStart = std::chrono::steady_clock::now();
     game::openRenderTarget(target, cl, level, !cl.headless);
+    times.openMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - openStart)
+            .count();
     const render::RendererInfo& info = render::rendererInfo(target.renderer);
     const char* backend = cl.headless ? "headless" : "window";
     if (cl.headless) {
@@ -216,7 +237,6 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
         game::FreeFly fly = game::freeFlyFrom(camera);
         auto last = std::chrono::steady_clock::now();
         const uint32_t frames = cl.headless ? std::max(cl.frames, 1u) : cl.frames;
-        std::vector<double> gpuMs;  // each frame's, for the capture's median (bounded runs only)
         for (uint32_t frame = 0; !game::targetWantsToClose(target); ++frame) {
             const auto now = std::chrono::steady_clock::now();
             const float dt = std::chrono::duration<float>(now - last).count();
@@ -230,9 +250,15 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
             inputs.camera = camera;
             inputs.effects = effectsFor(cl, camera);
             const bool readback = lastFrame && !cl.capture.empty();
+            const auto frameStart = std::chrono::steady_clock::now();
             const render::FrameStats stats = game::drawToTarget(
                 target, inputs, readback || cl.headless, readback && !cl.headless);
-            if (frames > 0 && stats.gpuTimestamps) gpuMs.push_back(double(stats.gpuMs));
+            if (frames > 0) {
+                if (stats.gpuTimestamps) times.gpuMs.push_back(double(stats.gpuMs));
+                times.wallMs.push_back(std::chrono::duration<double, std::milli>(
+                                           std::chrono::steady_clock::now() - frameStart)
+                                           .count());
+            }
             if (cl.headless && lastFrame)
                 std::printf(", %.2f ms CPU, %.2f ms GPU, %u surfaces\n", stats.cpuMs, stats.gpuMs,
                             stats.surfacesDrawn);
@@ -240,7 +266,7 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
                 const render::CapturedFrame& captured = render::capturedFrame(target.renderer);
                 capture::writeCaptureFiles(
                     cl.capture, captured,
-                    sidecar(cl, level, target.renderer, camera, stats, backend, gpuMs));
+                    sidecar(cl, level, target.renderer, camera, stats, backend, times));
                 if (!cl.headless)
                     world::writePngFile(
                         cl.capture + "_window.png", target.window.swapchain.extent.width,

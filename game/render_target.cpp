@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pipeline_cache_file.hpp"
+
 namespace onelight::game {
 
 namespace {
@@ -45,6 +47,8 @@ void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::Load
         vk::createContext(t.ctx, render::renderContextOptions(
                                      features, windowed ? platform::windowInstanceExtensions()
                                                         : std::vector<const char*>{}));
+        t.pipelineCachePath = pipelineCachePath();
+        t.pipelineCacheLoaded = openPipelineCache(t.ctx, t.pipelineCachePath);
         render::RendererOptions options;
         options.width = cl.width;
         options.height = cl.height;
@@ -101,6 +105,7 @@ bool targetWantsToClose(RenderTarget& t) {
 
 uint32_t closeRenderTarget(RenderTarget& t) {
     render::destroyRenderer(t.renderer);
+    if (t.ctx.device) keepPipelineCache(t.ctx, t.pipelineCachePath, t.pipelineCacheLoaded);
     if (t.windowed) platform::closeWindow(t.window, t.ctx);
     vk::destroyContext(t.ctx);
     return uint32_t(t.ctx.validationCounts.errors.load());

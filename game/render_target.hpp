@@ -18,6 +18,8 @@ struct RenderTarget {
     uint32_t frameWidth = 0, frameHeight = 0;  // the renderer's frame, in pixels
     platform::Window window;                   // owned, open when windowed
     vk::Context ctx;                           // owned
+    std::string pipelineCachePath;             // game/pipeline_cache_file.hpp; empty: none
+    size_t pipelineCacheLoaded = 0;            // bytes the cache started from
     render::Renderer renderer;                 // owned
 };
 

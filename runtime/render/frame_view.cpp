@@ -160,6 +160,43 @@ DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& mate
     return list;
 }
 
+DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& materials,
+                        const RendererOptions& options, size_t entityCount,
+                        uint32_t shadowedLight) {
+    DrawList list;
+    list.entityVisible.assign(entityCount, 0);
+    const uint32_t materialCount = uint32_t(materials.classes.size());
+    std::vector<uint8_t> drawn(materialCount, 0);
+    auto add = [&](Draw d, uint32_t material) {
+        d.material = std::min(material, materialCount - 1);
+        if (drawn[d.material]) return false;
+        drawn[d.material] = 1;
+        d.key = pipelineKeyOf(materials, options.flatShading, d.material);
+        d.indexCount = std::min(d.indexCount, 3u);
+        list.draws.push_back(d);
+        return true;
+    };
+    for (const DrawSurface& surface : geometry.surfaces) {
+        Draw d;
+        d.firstIndex = surface.firstIndex;
+        d.indexCount = surface.indexCount;
+        d.primaryLight = surface.primaryLight;
+        d.atlas = surface.atlas;
+        add(d, surface.material);
+    }
+    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
+        Draw d;
+        d.firstIndex = mesh.firstIndex;
+        d.indexCount = mesh.indexCount;
+        d.vertexOffset = mesh.vertexOffset;
+        d.entity = mesh.entity;
+        if (add(d, mesh.material)) list.entityVisible[mesh.entity] = 1;
+    }
+    if (shadowedLight != kNoIndex && !options.flatShading) list.visibleLights = {shadowedLight};
+    batchDraws(list.draws, options.rasterFloor);
+    return list;
+}
+
 void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
     // Sorted by pipeline, then static before dynamic, then by what a draw binds and pushes,
     // then by index range, so that the surfaces a draw could share lie side by side; dynamic

@@ -61,6 +61,15 @@ struct DrawList {
                                      const RendererOptions& options, size_t entityCount,
                                      const FrameView& view, FrameStats& stats);
 
+/// The warm-up frame's draws (createRenderer): one triangle of the first surface or dynamic mesh
+/// of each material, so that every forward pipeline is drawn once with every material's textures
+/// bound, and `shadowedLight` (kNoIndex: none) as the one visible light, so that the shadow
+/// pipeline is drawn too.
+[[nodiscard]] DrawList warmUpDrawList(const SceneGeometry& geometry,
+                                      const SceneMaterials& materials,
+                                      const RendererOptions& options, size_t entityCount,
+                                      uint32_t shadowedLight);
+
 /// The grid's lighting of every visible dynamic object, into `out` (one record per entity).
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
                          const FrameView& view, const DrawList& list, GpuObjectLighting* out);

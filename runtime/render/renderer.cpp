@@ -39,6 +39,8 @@ struct RendererState {
 
 namespace {
 
+void warmUp(RendererState& s);
+
 void writeTimestamp(const FrameSlots& frames, VkCommandBuffer cmd, const FrameSlot& slot,
                     uint32_t index) {
     if (!frames.timestamps) return;
@@ -144,6 +146,7 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
         s.info.permutations = s.pipelines.permutations;
         createDescriptorSets(ctx, s.descriptors, s.pipelines, s.frames, scene, s.shadows,
                              s.lightRecords, s.targets);
+        if (options.warmUp) warmUp(s);
     } catch (...) {
         destroyRenderer(renderer);
         throw;
@@ -198,23 +201,16 @@ void waitForFrames(Renderer& renderer) {
     for (FrameSlot& slot : s.frames.slots) finishFrame(*s.ctx, slot, s.frames.timestamps, ignored);
 }
 
-FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameOutput& output) {
-    RendererState& s = *renderer.state;
+namespace {
+
+// Records and submits the frame of `view` drawing `list` into the next frame slot.
+FrameStats drawList(RendererState& s, const FrameInputs& inputs, const FrameOutput& output,
+                    const FrameView& view, const DrawList& list, FrameStats stats,
+                    std::chrono::steady_clock::time_point cpuStart) {
     const vk::Context& ctx = *s.ctx;
     const Scene& scene = s.scene;
-    const auto cpuStart = std::chrono::steady_clock::now();
-    FrameStats stats;
     const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
     FrameSlot& slot = s.frames.slots[slotIndex];
-    // The frame kFramesInFlight ago: its buffers are free again.
-    finishFrame(ctx, slot, s.frames.timestamps, stats);
-
-    const FrameView view =
-        frameViewOf(scene.level, float(s.targets.width) / float(s.targets.height), inputs);
-    stats.ev100 = view.ev100;
-    stats.exposure = view.exposure;
-    const DrawList list = buildDrawList(scene.geometry, scene.materials, scene.baked.visibility,
-                                        s.options, scene.level.entities.size(), view, stats);
     writeObjectLighting(scene.level, scene.baked, view, list,
                         static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
     const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
@@ -237,6 +233,62 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart)
             .count();
     return stats;
+}
+
+}  // namespace
+
+namespace {
+
+// Draws one hidden frame (warmUpDrawList): every pipeline the level uses, once with each
+// material's textures bound, waited for. A driver that compiles its shader variants at first
+// draw (llvmpipe keys them by the pipeline and by the formats and samplers bound) does so here,
+// in createRenderer, and not in the first frame the player sees.
+void warmUp(RendererState& s) {
+    const Scene& scene = s.scene;
+    const auto cpuStart = std::chrono::steady_clock::now();
+    FrameStats stats;
+    finishFrame(*s.ctx, s.frames.slots[s.frames.submitted % kFramesInFlight], s.frames.timestamps,
+                stats);
+    // The shadow pipeline once: a spot's or omni's static casters stay cached (a sun's are
+    // fitted again around the first frame's camera).
+    uint32_t shadowed = kNoIndex;
+    for (uint32_t light = 0; light < s.shadows.lightSlot.size(); ++light) {
+        if (s.shadows.lightSlot[light] == kNoIndex) continue;
+        const bool sun = scene.level.lights[light].type == world::LightType::kDirectional;
+        if (shadowed == kNoIndex || !sun) shadowed = light;
+        if (!sun) break;
+    }
+    const FrameInputs inputs;
+    const FrameView view =
+        frameViewOf(scene.level, float(s.targets.width) / float(s.targets.height), inputs);
+    const DrawList list = warmUpDrawList(scene.geometry, scene.materials, s.options,
+                                         scene.level.entities.size(), shadowed);
+    FrameOutput output;
+    output.wait = true;
+    (void)drawList(s, inputs, output, view, list, stats, cpuStart);
+    s.info.warmUpMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart)
+            .count();
+}
+
+}  // namespace
+
+FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameOutput& output) {
+    RendererState& s = *renderer.state;
+    const Scene& scene = s.scene;
+    const auto cpuStart = std::chrono::steady_clock::now();
+    FrameStats stats;
+    const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
+    // The frame kFramesInFlight ago: its buffers are free again.
+    finishFrame(*s.ctx, s.frames.slots[slotIndex], s.frames.timestamps, stats);
+
+    const FrameView view =
+        frameViewOf(scene.level, float(s.targets.width) / float(s.targets.height), inputs);
+    stats.ev100 = view.ev100;
+    stats.exposure = view.exposure;
+    const DrawList list = buildDrawList(scene.geometry, scene.materials, scene.baked.visibility,
+                                        s.options, scene.level.entities.size(), view, stats);
+    return drawList(s, inputs, output, view, list, stats, cpuStart);
 }
 
 }  // namespace onelight::render

@@ -135,6 +135,10 @@ struct RendererOptions {
     // Static surfaces outside the camera cell's potentially visible set are not drawn
     // (world/visibility.hpp). The frame is the same either way (a test checks it).
     bool visibilityCulling = true;
+    // createRenderer draws a hidden frame that uses every pipeline with every material's textures,
+    // so that the shader variants a driver compiles at first draw are compiled at load and the
+    // first frame shown does not stall (the stall is 3x a frame on lavapipe; off: to measure it).
+    bool warmUp = true;
     // Anisotropic filtering of the material textures (1: off, else up to 16 taps along a
     // footprint's long axis, clamped to the device's limit). At grazing view a pixel's footprint
     // on the surface is long and thin: an isotropic mip is chosen by its long axis and blurs
@@ -163,6 +167,7 @@ struct RendererInfo {
     uint32_t probes = 0;      // environment probes in use (0: the uniform placeholder)
     uint64_t probeBytes = 0;  // their cube array, every mip
     bool skyImage = false;    // the sky pass draws the level's sky image behind it
+    double warmUpMs = 0.0;    // the warm-up frame in createRenderer (RendererOptions::warmUp)
 };
 
 struct RendererState;  // render/renderer_state.hpp

@@ -225,6 +225,8 @@ void createContext(Context& ctx, const ContextOptions& options) {
 }
 
 void destroyContext(Context& ctx) {
+    if (ctx.pipelineCache) vkDestroyPipelineCache(ctx.device, ctx.pipelineCache, nullptr);
+    ctx.pipelineCache = VK_NULL_HANDLE;
     if (ctx.commandPool) vkDestroyCommandPool(ctx.device, ctx.commandPool, nullptr);
     ctx.commandPool = VK_NULL_HANDLE;
     ctx.queue = VK_NULL_HANDLE;

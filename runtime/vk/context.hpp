@@ -42,6 +42,8 @@ struct Context {
     VkDevice device = VK_NULL_HANDLE;                     // owned
     VkQueue queue = VK_NULL_HANDLE;                       // borrowed from device
     VkCommandPool commandPool = VK_NULL_HANDLE;           // owned, on queueFamily
+    // Owned when made (vk/pipeline_cache.hpp), else null; every pipeline is created through it.
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
 
     uint32_t queueFamily = 0;                             // supports graphics and compute
     VkPhysicalDeviceProperties properties{};              // of physicalDevice: name, limits

@@ -153,7 +153,7 @@ VkPipeline createGraphicsPipeline(const Context& ctx, const PipelineLayout& layo
         info.pDynamicState = &dynamic;
         info.layout = layout.layout;
         VK_CHECK(
-            vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
+            vkCreateGraphicsPipelines(ctx.device, ctx.pipelineCache, 1, &info, nullptr, &pipeline));
     } catch (...) {
         for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device, m, nullptr);
         throw;

@@ -52,7 +52,7 @@ void createComputePipeline(const Context& ctx, ComputePipeline& pipeline,
         info.stage.module = module;
         info.stage.pName = "main";
         info.layout = pipeline.layout;
-        VK_CHECK(vkCreateComputePipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr,
+        VK_CHECK(vkCreateComputePipelines(ctx.device, ctx.pipelineCache, 1, &info, nullptr,
                                           &pipeline.pipeline));
     } catch (...) {
         if (module) vkDestroyShaderModule(ctx.device, module, nullptr);
