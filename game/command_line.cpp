@@ -70,6 +70,10 @@ const world::CommandTable& commandTable() {
                               "none"),
             world::flagOption("--free-fly", "a free-fly camera instead of the player",
                               "the player"),
+            world::flagOption("--raster-floor",
+                              "draw the view's triangles with depth and one colour in the fewest "
+                              "draws: the cost of rasterizing the view alone, for benchmarks",
+                              "off"),
             world::flagOption("--no-visibility",
                               "draw static surfaces outside the camera's potentially visible set "
                               "too",
@@ -130,6 +134,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
     out.captureDir = parsed.text("--capture-dir");
     out.freeFly = parsed.has("--free-fly");
     out.visibilityCulling = !parsed.has("--no-visibility");
+    out.rasterFloor = parsed.has("--raster-floor");
     if (parsed.has("--view")) out.view = parsed.text("--view");
     out.hasEv100 = parsed.has("--ev100");
     out.ev100 = realOf(parsed, "--ev100", out.ev100);

@@ -31,6 +31,7 @@ struct CommandLine {
                                     // no captures; frame-time statistics on stdout
     bool freeFly = false;           // window: a free-fly camera instead of the player
     bool visibilityCulling = true;  // --no-visibility: draw outside the visible set too
+    bool rasterFloor = false;       // --raster-floor: the view's triangles alone (benchmarks)
     std::string view = "onelight";  // whose baked light is shown: onelight, or q3map2 (the
                                     // Quake 3 map's own lightmaps, game/lighting_view.hpp)
     bool hasEv100 = false;          // --ev100: a fixed exposure instead of the metered one

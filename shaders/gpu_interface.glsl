@@ -58,6 +58,17 @@ const int SPEC_BAKED_LIGHTING = 3;     // 1: fetch the baked lighting (or its pl
 const int SPEC_DIFFUSE_MODEL = 4;      // DIFFUSE_* of lighting.glsl: the level's diffuse model
 const int SPEC_MATERIAL_PIPELINE = 5;  // 0: without the material pipeline's pieces (benchmark)
 const int SPEC_PROBES = 6;             // 0: a uniform environment, no probe fetched (none in use)
+// What the draws of a pipeline need, so that what they do not is compiled out (a CPU rasterizer
+// runs both sides of a branch under a mask: every texture behind an untaken branch is fetched).
+const int SPEC_TEXTURES = 7;  // bit mask of the TEXTURE_* slots its materials may use
+const int SPEC_PRIMARY = 8;   // 0: its draws have no primary light; 1: the draw's push says
+const int SPEC_SECONDARY = 9;  // SECONDARY_*: where its draws' baked secondary lighting comes from
+const int SPEC_EFFECT_LIGHTS = 10;  // 0: the frame has no effect light; 1: the frame's counts say
+const int SECONDARY_ANY = 0;       // the draw's push says (a lightmap atlas, an object record)
+const int SECONDARY_LIGHTMAP = 1;  // a static surface's lightmap atlas
+const int SECONDARY_OBJECT = 2;    // a dynamic object's grid record
+const int SECONDARY_CONSTANT = 3;  // neither: the constant ambient
+const int ALL_TEXTURES = 63;       // (1 << TEXTURE_SLOT_COUNT) - 1
 
 // ---------------------------------------------------------------------------------------------
 // Records

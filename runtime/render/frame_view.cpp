@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <tuple>
 
 #include "render/pipelines.hpp"
@@ -29,11 +30,15 @@ void worldBounds(const glm::mat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec3& outM
     }
 }
 
-uint32_t pipelineKeyOf(const SceneMaterials& materials, bool flatShading, uint32_t material) {
-    return flatShading
-               ? 0u
-               : permutationKey(materials.classes[material], materials.doubleSided[material] != 0,
-                                materials.alphaMask[material] != 0);
+// The pipeline key of draw d (static when it has no entity) of its material.
+uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& options, const Draw& d,
+                   bool effectLights) {
+    const bool dynamic = d.entity != kNoIndex;
+    const int secondary = dynamic               ? glsl::SECONDARY_OBJECT
+                          : d.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP
+                                                : glsl::SECONDARY_CONSTANT;
+    return drawPipelineKey(materials, options, d.material, dynamic || d.primaryLight != kNoIndex,
+                           uint32_t(secondary), effectLights);
 }
 
 }  // namespace
@@ -78,6 +83,7 @@ FrameView frameViewOf(const LevelData& level, float aspect, const FrameInputs& i
             : glm::length(v.camera.position - 0.5f * (level.boundsMin + level.boundsMax)) +
                   diagonal;
     v.projection = projectionMatrix(v.camera, aspect, zfar);
+    v.effectLights = inputs.effects.omniCount > 0 || inputs.effects.spotOn;
     v.viewProj = v.projection * viewMatrix(v.camera);
     v.ev100 = v.camera.hasExposure         ? v.camera.ev100
               : level.settings.hasExposure ? level.settings.exposureEv100
@@ -108,7 +114,7 @@ DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& mate
     // counted as visible.
     auto add = [&](Draw d, uint32_t material, glm::vec3 lo, glm::vec3 hi) {
         d.material = std::min(material, materialCount - 1);
-        d.key = pipelineKeyOf(materials, options.flatShading, d.material);
+        d.key = drawKeyOf(materials, options, d, view.effectLights);
         const glm::vec3 toCentre = 0.5f * (lo + hi) - eye;
         d.distance2 = glm::dot(toCentre, toCentre);
         list.draws.push_back(d);
@@ -166,15 +172,18 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
     DrawList list;
     list.entityVisible.assign(entityCount, 0);
     const uint32_t materialCount = uint32_t(materials.classes.size());
-    std::vector<uint8_t> drawn(materialCount, 0);
+    std::set<std::pair<uint32_t, uint32_t>> drawn;  // (pipeline key, material)
     auto add = [&](Draw d, uint32_t material) {
         d.material = std::min(material, materialCount - 1);
-        if (drawn[d.material]) return false;
-        drawn[d.material] = 1;
-        d.key = pipelineKeyOf(materials, options.flatShading, d.material);
         d.indexCount = std::min(d.indexCount, 3u);
-        list.draws.push_back(d);
-        return true;
+        bool added = false;
+        for (const bool effects : {false, true}) {
+            d.key = drawKeyOf(materials, options, d, effects);
+            if (!drawn.insert({d.key, d.material}).second) continue;
+            list.draws.push_back(d);
+            added = true;
+        }
+        return added;
     };
     for (const DrawSurface& surface : geometry.surfaces) {
         Draw d;

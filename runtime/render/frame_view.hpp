@@ -37,6 +37,7 @@ struct FrameView {
     float ev100 = 0.0f, exposure = 1.0f;
     std::vector<glm::mat4> entityTransforms;  // per entity: given, else its placement
     std::vector<uint32_t> entityPrimary;      // per entity: the game's pick, or kNoIndex
+    bool effectLights = false;                // any effect omni or the spot is on
 };
 /// The view of a frame `aspect` wide per unit of height.
 [[nodiscard]] FrameView frameViewOf(const LevelData& level, float aspect,
@@ -62,9 +63,9 @@ struct DrawList {
                                      const FrameView& view, FrameStats& stats);
 
 /// The warm-up frame's draws (createRenderer): one triangle of the first surface or dynamic mesh
-/// of each material, so that every forward pipeline is drawn once with every material's textures
-/// bound, and `shadowedLight` (kNoIndex: none) as the one visible light, so that the shadow
-/// pipeline is drawn too.
+/// of each material and pipeline, for frames with effect lights and without, so that every
+/// forward pipeline is drawn once with every material's textures bound, and `shadowedLight`
+/// (kNoIndex: none) as the one visible light, so that the shadow pipeline is drawn too.
 [[nodiscard]] DrawList warmUpDrawList(const SceneGeometry& geometry,
                                       const SceneMaterials& materials,
                                       const RendererOptions& options, size_t entityCount,

@@ -24,6 +24,51 @@ namespace {
 
 const char* const kClassNames[4] = {"metal", "dielectric", "full", "lambert"};
 
+// A permutation's name: its class, then what it adds or leaves out ("lambert+double-sided
+// textures=base,emissive no-primary lightmap").
+std::string permutationName(const PermutationKey& k) {
+    static const char* const kSlots[6] = {"base",      "metal-rough", "normal",
+                                          "occlusion", "emissive",    "cavity"};
+    static const char* const kSecondary[4] = {"", " lightmap", " object", " constant"};
+    std::string name = std::string(kClassNames[k.materialClass]) +
+                       (k.doubleSided ? "+double-sided" : "") + (k.alphaMask ? "+alpha-mask" : "");
+    if (k.textures != uint32_t(glsl::ALL_TEXTURES)) {
+        std::string slots;
+        for (int t = 0; t < 6; ++t)
+            if (k.textures & (1u << t)) slots += std::string(slots.empty() ? "" : ",") + kSlots[t];
+        name += " textures=" + (slots.empty() ? std::string("none") : slots);
+    }
+    if (!k.primary) name += " no-primary";
+    return name + kSecondary[k.secondary & 3u] + (k.effectLights ? "" : " no-effects");
+}
+
+// The pipeline keys the level's draws use: each static surface's and each dynamic mesh's, for
+// frames with effect lights and without.
+std::vector<uint32_t> forwardKeys(const SceneGeometry& geometry, const SceneMaterials& materials,
+                                  const RendererOptions& options) {
+    const uint32_t materialCount = uint32_t(materials.classes.size());
+    std::vector<uint32_t> keys;
+    for (const bool effects : {false, true}) {
+        for (const DrawSurface& s : geometry.surfaces)
+            keys.push_back(drawPipelineKey(
+                materials, options, std::min(s.material, materialCount - 1),
+                s.primaryLight != kNoIndex,
+                uint32_t(s.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP : glsl::SECONDARY_CONSTANT),
+                effects));
+        for (const DrawDynamicMesh& d : geometry.dynamicMeshes)
+            keys.push_back(drawPipelineKey(materials, options,
+                                           std::min(d.material, materialCount - 1), true,
+                                           uint32_t(glsl::SECONDARY_OBJECT), effects));
+        // A level with nothing to draw still gets a pipeline.
+        if (geometry.surfaces.empty() && geometry.dynamicMeshes.empty())
+            keys.push_back(drawPipelineKey(materials, options, 0, true,
+                                           uint32_t(glsl::SECONDARY_ANY), effects));
+    }
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    return keys;
+}
+
 constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags kVertexFragment =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -86,40 +131,38 @@ void createLayouts(const vk::Context& ctx, Pipelines& p) {
     vk::createPipelineLayout(ctx, p.tonemapLayout, tonemapSets, 0, 0);
 }
 
-// Forward permutations: only those the level's materials use (and the flat one for benchmarks).
-void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneMaterials& materials,
-                            const RendererOptions& options, const ForwardChoices& choices) {
+// Forward permutations: only those the level's draws use (and the flat one for benchmarks).
+void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeometry& geometry,
+                            const SceneMaterials& materials, const RendererOptions& options,
+                            const ForwardChoices& choices) {
     vk::GraphicsPipelineDesc forward;
     forward.vertexBindings = {{0, sizeof(world::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
     forward.vertexAttributes = vertexAttributes(false);
     forward.samples = choices.samples;
     forward.colorFormats = {kHdrFormat};
     forward.depthFormat = kDepthFormat;
-    std::vector<uint32_t> keys;
-    for (size_t m = 0; m < materials.classes.size(); ++m)
-        keys.push_back(permutationKey(materials.classes[m], materials.doubleSided[m] != 0,
-                                      materials.alphaMask[m] != 0));
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    const std::vector<uint32_t> keys = forwardKeys(geometry, materials, options);
     const int bakedLighting = choices.fetchBakedLighting ? 1 : 0;
     for (uint32_t key : keys) {
-        const int materialClass = int(keyMaterialClass(key));
-        const bool doubleSided = keyDoubleSided(key), alphaMask = keyAlphaMask(key);
-        forward.cullMode = doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+        const PermutationKey k = unpackPermutationKey(key);
+        const int materialClass = int(k.materialClass);
+        forward.cullMode = k.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
         forward.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}},
                           {VK_SHADER_STAGE_FRAGMENT_BIT,
                            kForwardFragSpirv,
                            {{glsl::SPEC_MATERIAL_CLASS, materialClass},
-                            {glsl::SPEC_ALPHA_MASK, alphaMask ? 1 : 0},
+                            {glsl::SPEC_ALPHA_MASK, k.alphaMask ? 1 : 0},
                             {glsl::SPEC_FLAT_SHADING, 0},
                             {glsl::SPEC_BAKED_LIGHTING, bakedLighting},
                             {glsl::SPEC_DIFFUSE_MODEL, choices.diffuseModel},
                             {glsl::SPEC_MATERIAL_PIPELINE, options.materialPipeline ? 1 : 0},
-                            {glsl::SPEC_PROBES, choices.probes ? 1 : 0}}}};
+                            {glsl::SPEC_PROBES, choices.probes ? 1 : 0},
+                            {glsl::SPEC_TEXTURES, int(k.textures)},
+                            {glsl::SPEC_PRIMARY, k.primary ? 1 : 0},
+                            {glsl::SPEC_SECONDARY, int(k.secondary)},
+                            {glsl::SPEC_EFFECT_LIGHTS, k.effectLights ? 1 : 0}}}};
         p.forward[key] = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
-        p.permutations.push_back(std::string(kClassNames[materialClass]) +
-                                 (doubleSided ? "+double-sided" : "") +
-                                 (alphaMask ? "+alpha-mask" : ""));
+        p.permutations.push_back(permutationName(k));
     }
     if (options.depthPrepass && !options.flatShading) {
         vk::GraphicsPipelineDesc depth = forward;
@@ -175,10 +218,27 @@ void createSkyPipeline(const vk::Context& ctx, Pipelines& p, const ForwardChoice
 
 }  // namespace
 
-void createPipelines(const vk::Context& ctx, Pipelines& pipelines, const SceneMaterials& materials,
-                     const RendererOptions& options, const ForwardChoices& choices) {
+uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions& options,
+                         uint32_t material, bool primary, uint32_t secondary, bool effectLights) {
+    if (options.flatShading) return 0u;
+    PermutationKey k;
+    k.materialClass = materials.classes[material];
+    k.doubleSided = materials.doubleSided[material] != 0;
+    k.alphaMask = materials.alphaMask[material] != 0;
+    if (options.specializeDraws) {
+        k.textures = materials.textureSlots[material];
+        k.primary = primary;
+        k.secondary = secondary;
+        k.effectLights = effectLights;
+    }
+    return permutationKey(k);
+}
+
+void createPipelines(const vk::Context& ctx, Pipelines& pipelines, const SceneGeometry& geometry,
+                     const SceneMaterials& materials, const RendererOptions& options,
+                     const ForwardChoices& choices) {
     createLayouts(ctx, pipelines);
-    createForwardPipelines(ctx, pipelines, materials, options, choices);
+    createForwardPipelines(ctx, pipelines, geometry, materials, options, choices);
     createShadowAndTonemapPipelines(ctx, pipelines);
     createSkyPipeline(ctx, pipelines, choices);
 }

@@ -19,13 +19,34 @@
 
 namespace onelight::render {
 
-/// Pipeline key of a forward permutation: material class, double-sided, alpha mask.
-[[nodiscard]] inline uint32_t permutationKey(uint32_t materialClass, bool doubleSided,
-                                             bool alphaMask) {
-    return materialClass | (doubleSided ? 4u : 0u) | (alphaMask ? 8u : 0u);
+/// What a forward pipeline is specialized for: its materials' class, sidedness, alpha mode and
+/// texture slots, and its draws' primary light and source of secondary lighting
+/// (forward.frag's SPEC_TEXTURES, SPEC_PRIMARY and SPEC_SECONDARY), and whether the frame has
+/// effect lights (SPEC_EFFECT_LIGHTS).
+struct PermutationKey {
+    uint32_t materialClass = 0;
+    bool doubleSided = false, alphaMask = false;
+    uint32_t textures = uint32_t(glsl::ALL_TEXTURES);  // TEXTURE_* slots its materials may use
+    bool primary = true;                               // false: no draw has a primary light
+    uint32_t secondary = uint32_t(glsl::SECONDARY_ANY);
+    bool effectLights = true;  // false: for frames without effect lights
+};
+
+/// The key packed into a pipeline's map key: class bits 0-1, double-sided 2, alpha mask 3,
+/// texture slots 4-9, primary 10, secondary 11-12, effect lights 13.
+[[nodiscard]] inline uint32_t permutationKey(const PermutationKey& k) {
+    return k.materialClass | (k.doubleSided ? 4u : 0u) | (k.alphaMask ? 8u : 0u) |
+           (k.textures & 63u) << 4 | (k.primary ? 1u << 10 : 0u) | (k.secondary & 3u) << 11 |
+           (k.effectLights ? 1u << 13 : 0u);
 }
-[[nodiscard]] inline uint32_t keyMaterialClass(uint32_t key) {
-    return key & 3u;
+[[nodiscard]] inline PermutationKey unpackPermutationKey(uint32_t key) {
+    return {key & 3u,
+            (key & 4u) != 0,
+            (key & 8u) != 0,
+            (key >> 4) & 63u,
+            (key & (1u << 10)) != 0,
+            (key >> 11) & 3u,
+            (key & (1u << 13)) != 0};
 }
 [[nodiscard]] inline bool keyDoubleSided(uint32_t key) {
     return (key & 4u) != 0;
@@ -33,6 +54,15 @@ namespace onelight::render {
 [[nodiscard]] inline bool keyAlphaMask(uint32_t key) {
     return (key & 8u) != 0;
 }
+
+/// The pipeline key of a draw of `material` (0 with flat shading). A static surface: `primary`
+/// whether it has a primary light, `secondary` SECONDARY_LIGHTMAP or SECONDARY_CONSTANT; a
+/// dynamic mesh: primary true (the game picks it per frame) and SECONDARY_OBJECT;
+/// `effectLights` whether the frame has any. Without options.specializeDraws every draw of a
+/// material shares the general pipeline.
+[[nodiscard]] uint32_t drawPipelineKey(const SceneMaterials& materials,
+                                       const RendererOptions& options, uint32_t material,
+                                       bool primary, uint32_t secondary, bool effectLights);
 
 /// What the forward permutations are specialized for, besides the materials.
 struct ForwardChoices {
@@ -55,10 +85,11 @@ struct Pipelines {
     std::vector<std::string> permutations;  // the forward pipelines built, by name
 };
 
-/// Pipeline layouts, the forward permutations `materials` use, the shadow, sky and tonemap
-/// pipelines.
-void createPipelines(const vk::Context& ctx, Pipelines& pipelines, const SceneMaterials& materials,
-                     const RendererOptions& options, const ForwardChoices& choices);
+/// Pipeline layouts, the forward permutations the draws of `geometry` use, the shadow, sky and
+/// tonemap pipelines.
+void createPipelines(const vk::Context& ctx, Pipelines& pipelines, const SceneGeometry& geometry,
+                     const SceneMaterials& materials, const RendererOptions& options,
+                     const ForwardChoices& choices);
 void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines);
 
 /// The descriptor sets, from one pool: one frame set per frame slot, one per material, the

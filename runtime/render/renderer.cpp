@@ -142,7 +142,7 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
         choices.diffuseModel = int(scene.level.settings.diffuseModel);
         choices.probes = scene.probes.baked > 0;
         choices.skyImage = scene.sky.present;
-        createPipelines(ctx, s.pipelines, scene.materials, options, choices);
+        createPipelines(ctx, s.pipelines, scene.geometry, scene.materials, options, choices);
         s.info.permutations = s.pipelines.permutations;
         createDescriptorSets(ctx, s.descriptors, s.pipelines, s.frames, scene, s.shadows,
                              s.lightRecords, s.targets);

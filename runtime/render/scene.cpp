@@ -342,6 +342,7 @@ void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
         materials.classes.push_back(cls);
         materials.doubleSided.push_back(m.doubleSided ? 1 : 0);
         materials.alphaMask.push_back(m.alphaMode == world::AlphaMode::kMask ? 1 : 0);
+        materials.textureSlots.push_back(uint8_t(bits));
     }
     if (level.materials.empty()) {
         gpu[0].baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
@@ -681,6 +682,7 @@ void createMaterials(const vk::Context& ctx, SceneMaterials& materials,
             uint8_t(options.forceMaterialClass >= 0 ? options.forceMaterialClass : 3));
         materials.doubleSided.push_back(0);
         materials.alphaMask.push_back(0);
+        materials.textureSlots.push_back(0);
     }
 }
 

@@ -79,6 +79,7 @@ struct SceneMaterials {
     std::vector<MaterialTextures> bound;          // per material: views and samplers, borrowed
     std::vector<uint8_t> classes;                 // per material, after forceMaterialClass
     std::vector<uint8_t> doubleSided, alphaMask;  // per material
+    std::vector<uint8_t> textureSlots;            // per material: bit mask of TEXTURE_* filled
 };
 
 /// Baked lighting from the package, or neutral placeholders (see createBakedLighting).

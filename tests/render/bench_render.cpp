@@ -5,7 +5,8 @@
 // and resident memory; the material pipeline's runtime pieces on and off (goal <= 1.1); then the
 // probes' cost on a baked level (`onelight-bench-render
 // [PACKAGE]`, default the demo's draft package) and its frame loop with and without frames in
-// flight. Compare ratios from one run only
+// flight. `onelight-bench-render --view PACKAGE CAMERA` instead: where one view of a real level's
+// frame goes, feature by feature (benchView). Compare ratios from one run only
 // (docs/toolchain.md, "Timing things": timings are noisy).
 #include <algorithm>
 #include <chrono>
@@ -233,10 +234,100 @@ void benchMaterialPipeline(vk::Context& ctx, const std::string& package) {
     }
 }
 
+// Where a real level's frame goes: one view of a package (`onelight-bench-render --view PACKAGE
+// CAMERA`, e.g. a Quake 3 map's spawn0) at 1280x720 with MSAA 4x, configurations interleaved
+// frame by frame: the frame as the game draws it, and with one feature changed each, down to
+// the raster floor. Each row's difference to the full frame is that feature's cost.
+void benchView(vk::Context& ctx, const std::string& package, const std::string& cameraName) {
+    const assets::LoadedLevel level = assets::loadLevel(package);
+    const world::Camera* camera = nullptr;
+    for (const world::Camera& c : level.level.cameras)
+        if (c.name == cameraName) camera = &c;
+    if (!camera) throw std::runtime_error(package + ": no camera named '" + cameraName + "'");
+    render::FrameInputs inputs;
+    inputs.camera = render::cameraFromLevel(*camera);
+    struct Config {
+        const char* name;
+        render::RendererOptions options;
+    };
+    std::vector<Config> configs(9);
+    for (Config& c : configs) c.options.requestedMsaa = 4;
+    configs[0].name = "full frame, as the game draws it";
+    configs[1].name = "general pipelines (choices at run time)";
+    configs[1].options.specializeDraws = false;
+    configs[2].name = "no probes (a uniform environment)";
+    configs[2].options.probes = false;
+    configs[3].name = "no material pipeline pieces";
+    configs[3].options.materialPipeline = false;
+    configs[4].name = "MSAA 1x";
+    configs[4].options.requestedMsaa = 1;
+    configs[5].name = "flat-shaded, the frame's draws";
+    configs[5].options.flatShading = true;
+    configs[6].name = "raster floor (fewest draws)";
+    configs[6].options.flatShading = configs[6].options.rasterFloor = true;
+    configs[7].name = "raster floor, MSAA 1x";
+    configs[7].options.flatShading = configs[7].options.rasterFloor = true;
+    configs[7].options.requestedMsaa = 1;
+    configs[8].name = "full frame again (the run's noise)";
+    std::vector<render::Renderer> renderers(configs.size());
+    for (size_t c = 0; c < configs.size(); ++c) {
+        render::createRenderer(renderers[c], ctx, level, configs[c].options);
+        for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderers[c], inputs, waited);
+    }
+    render::FrameOutput readback = waited;
+    readback.readback = true;
+    std::vector<std::vector<double>> gpu(configs.size()), forward(configs.size()),
+        tonemap(configs.size()), shadows(configs.size());
+    std::vector<double> withReadback;
+    std::vector<render::FrameStats> last(configs.size());
+    for (int i = 0; i < 2 * kFrames; ++i) {
+        for (size_t c = 0; c < configs.size(); ++c) {
+            last[c] = render::drawFrame(renderers[c], inputs, waited);
+            gpu[c].push_back(last[c].gpuMs);
+            forward[c].push_back(last[c].gpuForwardMs);
+            tonemap[c].push_back(last[c].gpuTonemapMs);
+            shadows[c].push_back(last[c].gpuShadowMs);
+        }
+        const auto start = std::chrono::steady_clock::now();
+        render::drawFrame(renderers[0], inputs, readback);
+        withReadback.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+    }
+    std::vector<std::string> permutations = render::rendererInfo(renderers[0]).permutations;
+    const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
+    for (auto it = renderers.rbegin(); it != renderers.rend(); ++it) render::destroyRenderer(*it);
+    std::printf(
+        "onelight-bench-render --view %s %s: 1280x720, MSAA %ux, %s, %d interleaved frames, "
+        "medians; %u surfaces, %llu triangles drawn, %u draws\n",
+        package.c_str(), cameraName.c_str(), msaa, ctx.properties.deviceName, 2 * kFrames,
+        last[0].surfacesDrawn, static_cast<unsigned long long>(last[0].trianglesDrawn),
+        last[0].draws);
+    std::printf("  %-42s %9s %9s %9s %9s %9s\n", "configuration", "GPU ms", "shadows", "forward",
+                "tonemap", "/ floor");
+    const double floor = median(gpu[6]);
+    for (size_t c = 0; c < configs.size(); ++c)
+        std::printf("  %-42s %9.2f %9.2f %9.2f %9.2f %9.3f\n", configs[c].name, median(gpu[c]),
+                    median(shadows[c]), median(forward[c]), median(tonemap[c]),
+                    median(gpu[c]) / floor);
+    std::printf("  full frame with its readback (wall): %.2f ms\n", median(withReadback));
+    std::printf("  permutations:");
+    for (const std::string& p : permutations) std::printf(" [%s]", p.c_str());
+    std::printf("\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     try {
+        if (argc == 4 && std::string(argv[1]) == "--view") {
+            render::RenderDeviceFeatures features;
+            vk::Context ctx;
+            vk::createContext(ctx, render::renderContextOptions(features, {}));
+            benchView(ctx, argv[2], argv[3]);
+            vk::destroyContext(ctx);
+            return 0;
+        }
         const std::string dir = test::outputDir();
         const std::string gltf = dir + "/bench_level.gltf";
         test::writeGltf(benchScene(), gltf);

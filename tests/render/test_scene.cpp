@@ -339,6 +339,7 @@ RenderedFrame renderOnce(const assets::LoadedLevel& level, const render::Rendere
                 result.stats = render::drawFrame(renderer, inputs, output);
             result.frame = render::capturedFrame(renderer);
             result.msaaInUse = render::rendererInfo(renderer).msaaInUse;
+            result.permutations = render::rendererInfo(renderer).permutations;
         } catch (...) {
             render::destroyRenderer(renderer);
             vk::destroyContext(ctx);

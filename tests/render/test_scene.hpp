@@ -97,6 +97,7 @@ struct RenderedFrame {
     render::CapturedFrame frame;
     render::FrameStats stats;
     uint32_t msaaInUse = 0;
+    std::vector<std::string> permutations;  // the forward pipelines the renderer built
     uint32_t validationErrors = 0;
 };
 RenderedFrame renderOnce(const assets::LoadedLevel& level, const render::RendererOptions& options,

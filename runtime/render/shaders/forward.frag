@@ -22,6 +22,26 @@ layout(constant_id = SPEC_MATERIAL_PIPELINE) const int MATERIAL_PIPELINE = 1;
 // 0: no probe in use (the package has none, e.g. an error budget dropped them, or --no-probes):
 // the uniform environment of normalised radiance 1 / pi without walking or fetching anything.
 layout(constant_id = SPEC_PROBES) const int PROBES = 1;
+// The draws' needs (gpu_interface.glsl): each default keeps the choice at run time, from the
+// material record and the draw's push; a value the draws all share compiles the rest out, the
+// same pixels with fewer fetches (RendererOptions::specializeDraws).
+layout(constant_id = SPEC_TEXTURES) const int TEXTURES = ALL_TEXTURES;
+layout(constant_id = SPEC_PRIMARY) const int PRIMARY = 1;
+layout(constant_id = SPEC_SECONDARY) const int SECONDARY = SECONDARY_ANY;
+// Per frame: the renderer draws with the pipelines without effect lights when the frame has none
+// (llvmpipe runs a loop's body once even for no iteration, and both sides of every branch).
+layout(constant_id = SPEC_EFFECT_LIGHTS) const int EFFECT_LIGHTS = 1;
+
+// Whether material m fills texture slot `slot` and the pipeline's materials may.
+bool materialHas(GpuMaterial m, int slot) {
+    return (TEXTURES & (1 << slot)) != 0 && hasTexture(m, slot);
+}
+bool drawHasLightmap() {
+    return SECONDARY == SECONDARY_LIGHTMAP || (SECONDARY == SECONDARY_ANY && draw.lightmapAtlas != NO_INDEX);
+}
+bool drawHasObjectLighting() {
+    return SECONDARY == SECONDARY_OBJECT || (SECONDARY == SECONDARY_ANY && draw.objectLighting != NO_INDEX);
+}
 
 layout(location = 0) in vec3 inWorldPosition;
 layout(location = 1) in vec3 inNormal;
@@ -63,7 +83,7 @@ float runtimeShadow(GpuLight light, vec3 p, vec3 n, vec3 l) {
 // (bilinear), a dynamic object's ambient cube from the light grid, else the constant ambient.
 vec3 secondaryIrradiance(vec3 n) {
     if (BAKED_LIGHTING == 0) return vec3(frame.baked.x);
-    if (draw.lightmapAtlas != NO_INDEX) {
+    if (drawHasLightmap()) {
         vec2 uv = inUv1 * draw.lightmapScale.xy;
         float base = float(draw.lightmapAtlas * 3u);
         vec3 e = vec3(irradianceLinear(texture(lightmap, vec3(uv, base)), n),
@@ -71,7 +91,7 @@ vec3 secondaryIrradiance(vec3 n) {
                       irradianceLinear(texture(lightmap, vec3(uv, base + 2.0)), n));
         return e * frame.baked.y;
     }
-    if (draw.objectLighting != NO_INDEX) {
+    if (drawHasObjectLighting()) {
         GpuObjectLighting o = objectLighting[draw.objectLighting];
         return irradianceAmbientCube(o.ambientCube[0].rgb, o.ambientCube[1].rgb, o.ambientCube[2].rgb,
                                      o.ambientCube[3].rgb, o.ambientCube[4].rgb, o.ambientCube[5].rgb, n);
@@ -83,9 +103,9 @@ vec3 secondaryIrradiance(vec3 n) {
 // visibility from the light grid; 1 without baked lighting.
 float bakedShadow() {
     if (BAKED_LIGHTING == 0) return 1.0;
-    if (draw.lightmapAtlas != NO_INDEX)
+    if (drawHasLightmap())
         return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
-    if (draw.objectLighting != NO_INDEX) return objectLighting[draw.objectLighting].ambientCube[0].w;
+    if (drawHasObjectLighting()) return objectLighting[draw.objectLighting].ambientCube[0].w;
     return 1.0;
 }
 
@@ -156,12 +176,12 @@ void main() {
     GpuMaterial m = materials[draw.material];
 
     vec4 base = m.baseColor;
-    if (hasTexture(m, TEXTURE_BASE_COLOR)) base *= texture(baseColorTexture, inUv0);
+    if (materialHas(m, TEXTURE_BASE_COLOR)) base *= texture(baseColorTexture, inUv0);
     if (ALPHA_MASK == 1 && base.a < m.emissive.a) discard;
 
     // Material parameters per texel (shaders/material.glsl), by class.
     vec2 mr = vec2(m.params.x, m.params.y);
-    if (hasTexture(m, TEXTURE_METALLIC_ROUGHNESS))
+    if (materialHas(m, TEXTURE_METALLIC_ROUGHNESS))
         mr = metallicRoughness_fromTexel(MATERIAL_CLASS, mr.x, mr.y,
                                          texture(metallicRoughnessTexture, inUv0));
     MaterialPoint point = materialPoint(MATERIAL_CLASS, base.rgb, mr.x, mr.y, m.f0Gloss.x);
@@ -173,7 +193,7 @@ void main() {
     vec3 geometricNormal = normalize(inNormal);
     if (!gl_FrontFacing) geometricNormal = -geometricNormal;
     vec3 n = geometricNormal;
-    if (hasTexture(m, TEXTURE_NORMAL)) {
+    if (materialHas(m, TEXTURE_NORMAL)) {
         vec3 t = inTangent.xyz - geometricNormal * dot(geometricNormal, inTangent.xyz);
         float tl = length(t);
         vec3 texel = texture(normalTexture, inUv0).rgb;
@@ -193,11 +213,11 @@ void main() {
     float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
     vec2 env = vec2(0.0);
     if (MATERIAL_CLASS != MATERIAL_LAMBERT) env = texture(envBrdfTable, envBrdfTableCoord(NoV, gloss)).rg;
-    float cavity = MATERIAL_PIPELINE == 1 && hasTexture(m, TEXTURE_CAVITY) ? texture(cavityTexture, inUv0).r : 1.0;
+    float cavity = MATERIAL_PIPELINE == 1 && materialHas(m, TEXTURE_CAVITY) ? texture(cavityTexture, inUv0).r : 1.0;
     vec2 directEnv = MATERIAL_PIPELINE == 1 ? env : vec2(0.0);  // the direct lights' energy weight
 
     // The one primary light, times its shadow.
-    if (draw.primaryLight != NO_INDEX) {
+    if (PRIMARY == 1 && draw.primaryLight != NO_INDEX) {
         GpuLight light = lights[draw.primaryLight];
         LightSample s = evaluateGpuLight(light, p);
         BrdfDots d = brdfDots(n, v, s.l);
@@ -213,14 +233,14 @@ void main() {
     }
 
     // Effect lights: up to 4 diffuse-only omnis (gun flashes) and the flashlight spot.
-    if (MATERIAL_CLASS != MATERIAL_METAL) {
+    if (EFFECT_LIGHTS == 1 && MATERIAL_CLASS != MATERIAL_METAL) {
         for (uint i = 0u; i < frame.counts.x; ++i) {
             LightSample s = evaluateGpuLight(frame.effectOmnis[i], p);
             radiance += diffuseReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
                                            cavity, brdfDots(n, v, s.l)) * s.illuminance;
         }
     }
-    if (frame.counts.y != 0u) {
+    if (EFFECT_LIGHTS == 1 && frame.counts.y != 0u) {
         LightSample s = evaluateGpuLight(frame.effectSpot, p);
         radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity,
                                        brdfDots(n, v, s.l)) * s.illuminance;
@@ -230,7 +250,7 @@ void main() {
     // de-normalised by the same irradiance (shaders/probe.glsl, "Normalization").
     vec3 irradiance = secondaryIrradiance(n);
     float ao = 1.0;
-    if (hasTexture(m, TEXTURE_OCCLUSION))
+    if (materialHas(m, TEXTURE_OCCLUSION))
         ao = occlusion_fromTexel(texture(occlusionTexture, inUv0).r, m.params.w);
     vec3 probeSample = vec3(0.0);
     float so = 1.0;
@@ -243,7 +263,7 @@ void main() {
     // Emission in cd/m^2 like every other radiance (world/import/README.md), then the whole
     // pre-exposed.
     vec3 emissive = m.emissive.rgb;
-    if (hasTexture(m, TEXTURE_EMISSIVE)) emissive *= texture(emissiveTexture, inUv0).rgb;
+    if (materialHas(m, TEXTURE_EMISSIVE)) emissive *= texture(emissiveTexture, inUv0).rgb;
     float exposure = frame.cameraPosition.w;
     vec3 color = (radiance + emissive) * exposure;
     if (any(isnan(color)) || any(isinf(color))) color = vec3(0.0);
