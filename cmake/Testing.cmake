@@ -83,7 +83,8 @@ function(onelight_add_tests name)
     endforeach()
     list(APPEND seen ${these})
     string(REPLACE ";" ":" filter "${filter}")
-    set(env "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}/xdg")
+    # The caches (Mesa's shader cache, the game's pipeline cache) in the build, not the user's home.
+    set(env "XDG_RUNTIME_DIR=${PROJECT_BINARY_DIR}/xdg" "XDG_CACHE_HOME=${PROJECT_BINARY_DIR}/cache")
     if(lower STREQUAL "gpu")
       list(APPEND env "ONELIGHT_VALIDATION=1")  # runtime/vk enables VK_LAYER_KHRONOS_validation
     endif()
