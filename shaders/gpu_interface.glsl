@@ -61,14 +61,28 @@ const int SPEC_PROBES = 6;             // 0: a uniform environment, no probe fet
 // What the draws of a pipeline need, so that what they do not is compiled out (a CPU rasterizer
 // runs both sides of a branch under a mask: every texture behind an untaken branch is fetched).
 const int SPEC_TEXTURES = 7;  // bit mask of the TEXTURE_* slots its materials may use
-const int SPEC_PRIMARY = 8;   // 0: its draws have no primary light; 1: the draw's push says
+const int SPEC_PRIMARY = 8;   // PRIMARY_*: its draws' primary light, by type
 const int SPEC_SECONDARY = 9;  // SECONDARY_*: where its draws' baked secondary lighting comes from
 const int SPEC_EFFECT_LIGHTS = 10;  // 0: the frame has no effect light; 1: the frame's counts say
+// Benchmarks only (onelight-bench-render --view): features left out, each a constant instead, to
+// measure what it costs. Bits FEATURE_*; the frame is then wrong.
+const int SPEC_FEATURES_OFF = 11;
+const int FEATURE_BASE_TEXTURE = 1;      // base colour texel: 1
+const int FEATURE_LIGHTMAP = 2;          // a static surface's lightmap: the constant ambient
+const int FEATURE_RUNTIME_SHADOW = 4;    // the primary's shadow map: unshadowed
+const int FEATURE_BAKED_SHADOW = 8;      // the primary's shadow mask: unshadowed
+const int FEATURE_PRIMARY = 16;          // the primary light: none
+const int FEATURE_EMISSIVE_TEXTURE = 32; // emissive texel: 1
 const int SECONDARY_ANY = 0;       // the draw's push says (a lightmap atlas, an object record)
 const int SECONDARY_LIGHTMAP = 1;  // a static surface's lightmap atlas
 const int SECONDARY_OBJECT = 2;    // a dynamic object's grid record
 const int SECONDARY_CONSTANT = 3;  // neither: the constant ambient
 const int ALL_TEXTURES = 63;       // (1 << TEXTURE_SLOT_COUNT) - 1
+const int PRIMARY_NONE = 0;         // no draw has one
+const int PRIMARY_ANY = 1;          // the draw's push says which, of any type
+const int PRIMARY_DIRECTIONAL = 2;  // 2 + LIGHT_* (lighting.glsl): each draw's is of that type
+const int PRIMARY_POINT = 3;
+const int PRIMARY_SPOT = 4;
 
 // ---------------------------------------------------------------------------------------------
 // Records

@@ -37,7 +37,8 @@ uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& optio
     const int secondary = dynamic               ? glsl::SECONDARY_OBJECT
                           : d.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP
                                                 : glsl::SECONDARY_CONSTANT;
-    return drawPipelineKey(materials, options, d.material, dynamic || d.primaryLight != kNoIndex,
+    return drawPipelineKey(materials, options, d.material,
+                           dynamic ? uint32_t(glsl::PRIMARY_ANY) : d.primaryKind,
                            uint32_t(secondary), effectLights);
 }
 
@@ -138,6 +139,7 @@ DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& mate
         d.firstIndex = surface.firstIndex;
         d.indexCount = surface.indexCount;
         d.primaryLight = surface.primaryLight;
+        d.primaryKind = surface.primaryKind;
         d.atlas = surface.atlas;
         add(d, surface.material, surface.boundsMin, surface.boundsMax);
         ++stats.surfacesDrawn;
@@ -190,6 +192,7 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
         d.firstIndex = surface.firstIndex;
         d.indexCount = surface.indexCount;
         d.primaryLight = surface.primaryLight;
+        d.primaryKind = surface.primaryKind;
         d.atlas = surface.atlas;
         add(d, surface.material);
     }

@@ -26,6 +26,7 @@ struct Draw {
     uint32_t firstIndex = 0, indexCount = 0;
     int32_t vertexOffset = 0;
     uint32_t primaryLight = kNoIndex, atlas = kNoIndex;
+    uint32_t primaryKind = 0;    // a static surface's PRIMARY_* (DrawSurface::primaryKind)
     uint32_t entity = kNoIndex;  // kNoIndex for static; a dynamic object's record in objectLighting
     float distance2 = 0.0f;      // squared metres from the camera: dynamic draws front to back
 };

@@ -38,7 +38,8 @@ std::string permutationName(const PermutationKey& k) {
             if (k.textures & (1u << t)) slots += std::string(slots.empty() ? "" : ",") + kSlots[t];
         name += " textures=" + (slots.empty() ? std::string("none") : slots);
     }
-    if (!k.primary) name += " no-primary";
+    static const char* const kPrimary[5] = {" no-primary", "", " directional", " point", " spot"};
+    name += kPrimary[std::min(k.primary, 4u)];
     return name + kSecondary[k.secondary & 3u] + (k.effectLights ? "" : " no-effects");
 }
 
@@ -51,17 +52,16 @@ std::vector<uint32_t> forwardKeys(const SceneGeometry& geometry, const SceneMate
     for (const bool effects : {false, true}) {
         for (const DrawSurface& s : geometry.surfaces)
             keys.push_back(drawPipelineKey(
-                materials, options, std::min(s.material, materialCount - 1),
-                s.primaryLight != kNoIndex,
+                materials, options, std::min(s.material, materialCount - 1), s.primaryKind,
                 uint32_t(s.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP : glsl::SECONDARY_CONSTANT),
                 effects));
         for (const DrawDynamicMesh& d : geometry.dynamicMeshes)
-            keys.push_back(drawPipelineKey(materials, options,
-                                           std::min(d.material, materialCount - 1), true,
-                                           uint32_t(glsl::SECONDARY_OBJECT), effects));
+            keys.push_back(drawPipelineKey(
+                materials, options, std::min(d.material, materialCount - 1),
+                uint32_t(glsl::PRIMARY_ANY), uint32_t(glsl::SECONDARY_OBJECT), effects));
         // A level with nothing to draw still gets a pipeline.
         if (geometry.surfaces.empty() && geometry.dynamicMeshes.empty())
-            keys.push_back(drawPipelineKey(materials, options, 0, true,
+            keys.push_back(drawPipelineKey(materials, options, 0, uint32_t(glsl::PRIMARY_ANY),
                                            uint32_t(glsl::SECONDARY_ANY), effects));
     }
     std::sort(keys.begin(), keys.end());
@@ -158,9 +158,10 @@ void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeo
                             {glsl::SPEC_MATERIAL_PIPELINE, options.materialPipeline ? 1 : 0},
                             {glsl::SPEC_PROBES, choices.probes ? 1 : 0},
                             {glsl::SPEC_TEXTURES, int(k.textures)},
-                            {glsl::SPEC_PRIMARY, k.primary ? 1 : 0},
+                            {glsl::SPEC_PRIMARY, int(k.primary)},
                             {glsl::SPEC_SECONDARY, int(k.secondary)},
-                            {glsl::SPEC_EFFECT_LIGHTS, k.effectLights ? 1 : 0}}}};
+                            {glsl::SPEC_EFFECT_LIGHTS, k.effectLights ? 1 : 0},
+                            {glsl::SPEC_FEATURES_OFF, int(options.featuresOff)}}}};
         p.forward[key] = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
         p.permutations.push_back(permutationName(k));
     }
@@ -219,7 +220,8 @@ void createSkyPipeline(const vk::Context& ctx, Pipelines& p, const ForwardChoice
 }  // namespace
 
 uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions& options,
-                         uint32_t material, bool primary, uint32_t secondary, bool effectLights) {
+                         uint32_t material, uint32_t primary, uint32_t secondary,
+                         bool effectLights) {
     if (options.flatShading) return 0u;
     PermutationKey k;
     k.materialClass = materials.classes[material];

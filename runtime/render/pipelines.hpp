@@ -27,26 +27,21 @@ struct PermutationKey {
     uint32_t materialClass = 0;
     bool doubleSided = false, alphaMask = false;
     uint32_t textures = uint32_t(glsl::ALL_TEXTURES);  // TEXTURE_* slots its materials may use
-    bool primary = true;                               // false: no draw has a primary light
+    uint32_t primary = uint32_t(glsl::PRIMARY_ANY);    // PRIMARY_*: its draws' primary's type
     uint32_t secondary = uint32_t(glsl::SECONDARY_ANY);
     bool effectLights = true;  // false: for frames without effect lights
 };
 
 /// The key packed into a pipeline's map key: class bits 0-1, double-sided 2, alpha mask 3,
-/// texture slots 4-9, primary 10, secondary 11-12, effect lights 13.
+/// texture slots 4-9, primary 10-12, secondary 13-14, effect lights 15.
 [[nodiscard]] inline uint32_t permutationKey(const PermutationKey& k) {
     return k.materialClass | (k.doubleSided ? 4u : 0u) | (k.alphaMask ? 8u : 0u) |
-           (k.textures & 63u) << 4 | (k.primary ? 1u << 10 : 0u) | (k.secondary & 3u) << 11 |
-           (k.effectLights ? 1u << 13 : 0u);
+           (k.textures & 63u) << 4 | (k.primary & 7u) << 10 | (k.secondary & 3u) << 13 |
+           (k.effectLights ? 1u << 15 : 0u);
 }
 [[nodiscard]] inline PermutationKey unpackPermutationKey(uint32_t key) {
-    return {key & 3u,
-            (key & 4u) != 0,
-            (key & 8u) != 0,
-            (key >> 4) & 63u,
-            (key & (1u << 10)) != 0,
-            (key >> 11) & 3u,
-            (key & (1u << 13)) != 0};
+    return {key & 3u,         (key & 4u) != 0,  (key & 8u) != 0,        (key >> 4) & 63u,
+            (key >> 10) & 7u, (key >> 13) & 3u, (key & (1u << 15)) != 0};
 }
 [[nodiscard]] inline bool keyDoubleSided(uint32_t key) {
     return (key & 4u) != 0;
@@ -56,13 +51,14 @@ struct PermutationKey {
 }
 
 /// The pipeline key of a draw of `material` (0 with flat shading). A static surface: `primary`
-/// whether it has a primary light, `secondary` SECONDARY_LIGHTMAP or SECONDARY_CONSTANT; a
-/// dynamic mesh: primary true (the game picks it per frame) and SECONDARY_OBJECT;
+/// PRIMARY_NONE or its primary's PRIMARY_<type>, `secondary` SECONDARY_LIGHTMAP or
+/// SECONDARY_CONSTANT; a dynamic mesh: PRIMARY_ANY (the game picks it per frame) and
+/// SECONDARY_OBJECT;
 /// `effectLights` whether the frame has any. Without options.specializeDraws every draw of a
 /// material shares the general pipeline.
 [[nodiscard]] uint32_t drawPipelineKey(const SceneMaterials& materials,
                                        const RendererOptions& options, uint32_t material,
-                                       bool primary, uint32_t secondary, bool effectLights);
+                                       uint32_t primary, uint32_t secondary, bool effectLights);
 
 /// What the forward permutations are specialized for, besides the materials.
 struct ForwardChoices {

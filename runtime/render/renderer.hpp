@@ -145,6 +145,9 @@ struct RendererOptions {
     // lightmap or grid record a draw does not read. Off: one pipeline per material class,
     // sidedness and alpha mode, choosing at run time (to measure it, and as the reference).
     bool specializeDraws = true;
+    // Benchmarks only: forward.frag's FEATURE_* bits left out, each a constant instead
+    // (onelight-bench-render --view measures what each costs; the frame is then wrong).
+    uint32_t featuresOff = 0;
     // Anisotropic filtering of the material textures (1: off, else up to 16 taps along a
     // footprint's long axis, clamped to the device's limit). At grazing view a pixel's footprint
     // on the surface is long and thin: an isotropic mip is chosen by its long axis and blurs

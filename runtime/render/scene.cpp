@@ -240,6 +240,12 @@ VkSampler samplerFor(const vk::Context& ctx, SceneMaterials& materials,
     return created;
 }
 
+// A static surface's PRIMARY_*: none, else its primary light's type.
+uint32_t primaryKindOf(const world::CompiledLevel& level, uint32_t primaryLight) {
+    if (primaryLight >= level.lights.size()) return uint32_t(glsl::PRIMARY_NONE);
+    return uint32_t(glsl::PRIMARY_DIRECTIONAL) + uint32_t(level.lights[primaryLight].type);
+}
+
 void createGeometry(const vk::Context& ctx, SceneGeometry& geometry,
                     const world::CompiledLevel& level) {
     // Static vertices, then dynamic ones; static indices, then dynamic ones. The static
@@ -283,6 +289,7 @@ void createGeometry(const vk::Context& ctx, SceneGeometry& geometry,
         d.indexCount = surface.indexCount;
         d.material = surface.material;
         d.primaryLight = surface.primaryLight;
+        d.primaryKind = primaryKindOf(level, surface.primaryLight);
         d.atlas = surface.atlas;
         d.boundsMin = surface.boundsMin;
         d.boundsMax = surface.boundsMax;

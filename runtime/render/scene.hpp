@@ -45,6 +45,7 @@ struct LookupTables {
 struct DrawSurface {
     uint32_t firstIndex = 0, indexCount = 0;
     uint32_t material = 0, primaryLight = kNoIndex, atlas = kNoIndex;
+    uint32_t primaryKind = 0;  // PRIMARY_*: none, else its primary light's type
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
 };
 

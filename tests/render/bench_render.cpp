@@ -19,6 +19,7 @@
 
 #include "bumpy_floor.hpp"
 #include "render/camera.hpp"
+#include "render/gpu_types.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
 
@@ -250,7 +251,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
         const char* name;
         render::RendererOptions options;
     };
-    std::vector<Config> configs(9);
+    std::vector<Config> configs(15);
     for (Config& c : configs) c.options.requestedMsaa = 4;
     configs[0].name = "full frame, as the game draws it";
     configs[1].name = "general pipelines (choices at run time)";
@@ -259,16 +260,27 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     configs[2].options.probes = false;
     configs[3].name = "no material pipeline pieces";
     configs[3].options.materialPipeline = false;
-    configs[4].name = "MSAA 1x";
-    configs[4].options.requestedMsaa = 1;
-    configs[5].name = "flat-shaded, the frame's draws";
-    configs[5].options.flatShading = true;
-    configs[6].name = "raster floor (fewest draws)";
-    configs[6].options.flatShading = configs[6].options.rasterFloor = true;
-    configs[7].name = "raster floor, MSAA 1x";
-    configs[7].options.flatShading = configs[7].options.rasterFloor = true;
-    configs[7].options.requestedMsaa = 1;
-    configs[8].name = "full frame again (the run's noise)";
+    const std::pair<const char*, int> off[] = {
+        {"no base colour texture", glsl::FEATURE_BASE_TEXTURE},
+        {"no lightmap (a constant ambient)", glsl::FEATURE_LIGHTMAP},
+        {"no runtime shadow", glsl::FEATURE_RUNTIME_SHADOW},
+        {"no baked shadow mask", glsl::FEATURE_BAKED_SHADOW},
+        {"no primary light", glsl::FEATURE_PRIMARY},
+        {"no emissive texture", glsl::FEATURE_EMISSIVE_TEXTURE}};
+    for (size_t i = 0; i < std::size(off); ++i) {
+        configs[4 + i].name = off[i].first;
+        configs[4 + i].options.featuresOff = uint32_t(off[i].second);
+    }
+    configs[10].name = "MSAA 1x";
+    configs[10].options.requestedMsaa = 1;
+    configs[11].name = "flat-shaded, the frame's draws";
+    configs[11].options.flatShading = true;
+    configs[12].name = "raster floor (fewest draws)";
+    configs[12].options.flatShading = configs[12].options.rasterFloor = true;
+    configs[13].name = "raster floor, MSAA 1x";
+    configs[13].options.flatShading = configs[13].options.rasterFloor = true;
+    configs[13].options.requestedMsaa = 1;
+    configs[14].name = "full frame again (the run's noise)";
     std::vector<render::Renderer> renderers(configs.size());
     for (size_t c = 0; c < configs.size(); ++c) {
         render::createRenderer(renderers[c], ctx, level, configs[c].options);
@@ -280,7 +292,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
         tonemap(configs.size()), shadows(configs.size());
     std::vector<double> withReadback;
     std::vector<render::FrameStats> last(configs.size());
-    for (int i = 0; i < 2 * kFrames; ++i) {
+    for (int i = 0; i < kFrames; ++i) {
         for (size_t c = 0; c < configs.size(); ++c) {
             last[c] = render::drawFrame(renderers[c], inputs, waited);
             gpu[c].push_back(last[c].gpuMs);
@@ -300,12 +312,12 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     std::printf(
         "onelight-bench-render --view %s %s: 1280x720, MSAA %ux, %s, %d interleaved frames, "
         "medians; %u surfaces, %llu triangles drawn, %u draws\n",
-        package.c_str(), cameraName.c_str(), msaa, ctx.properties.deviceName, 2 * kFrames,
+        package.c_str(), cameraName.c_str(), msaa, ctx.properties.deviceName, kFrames,
         last[0].surfacesDrawn, static_cast<unsigned long long>(last[0].trianglesDrawn),
         last[0].draws);
     std::printf("  %-42s %9s %9s %9s %9s %9s\n", "configuration", "GPU ms", "shadows", "forward",
                 "tonemap", "/ floor");
-    const double floor = median(gpu[6]);
+    const double floor = median(gpu[12]);
     for (size_t c = 0; c < configs.size(); ++c)
         std::printf("  %-42s %9.2f %9.2f %9.2f %9.2f %9.3f\n", configs[c].name, median(gpu[c]),
                     median(shadows[c]), median(forward[c]), median(tonemap[c]),

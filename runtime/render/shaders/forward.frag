@@ -26,15 +26,21 @@ layout(constant_id = SPEC_PROBES) const int PROBES = 1;
 // material record and the draw's push; a value the draws all share compiles the rest out, the
 // same pixels with fewer fetches (RendererOptions::specializeDraws).
 layout(constant_id = SPEC_TEXTURES) const int TEXTURES = ALL_TEXTURES;
-layout(constant_id = SPEC_PRIMARY) const int PRIMARY = 1;
+layout(constant_id = SPEC_PRIMARY) const int PRIMARY = PRIMARY_ANY;
 layout(constant_id = SPEC_SECONDARY) const int SECONDARY = SECONDARY_ANY;
 // Per frame: the renderer draws with the pipelines without effect lights when the frame has none
 // (llvmpipe runs a loop's body once even for no iteration, and both sides of every branch).
 layout(constant_id = SPEC_EFFECT_LIGHTS) const int EFFECT_LIGHTS = 1;
+layout(constant_id = SPEC_FEATURES_OFF) const int FEATURES_OFF = 0;  // benchmarks only
+bool featureOn(int feature) { return (FEATURES_OFF & feature) == 0; }
 
 // Whether material m fills texture slot `slot` and the pipeline's materials may.
 bool materialHas(GpuMaterial m, int slot) {
     return (TEXTURES & (1 << slot)) != 0 && hasTexture(m, slot);
+}
+// The primary light's type: the pipeline's when its draws share one, else the record's.
+int primaryType(GpuLight light) {
+    return PRIMARY >= PRIMARY_DIRECTIONAL ? PRIMARY - PRIMARY_DIRECTIONAL : int(light.info.x);
 }
 bool drawHasLightmap() {
     return SECONDARY == SECONDARY_LIGHTMAP || (SECONDARY == SECONDARY_ANY && draw.lightmapAtlas != NO_INDEX);
@@ -57,10 +63,10 @@ layout(location = 0) out vec4 outColor;
 // light): a surface the light grazes needs the whole offset against acne, one facing it hardly
 // any, and a full offset there moves the point towards the light, past a thin wall's depth,
 // so that a floor under a high sun was lit along the foot of every wall in front of it.
-float runtimeShadow(GpuLight light, vec3 p, vec3 n, vec3 l) {
+float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l) {
     uint view = light.info.y;
     if (view == NO_INDEX) return 1.0;
-    if (light.info.x == LIGHT_POINT) view += uint(cubeFace(p - light.positionRange.xyz));
+    if (type == LIGHT_POINT) view += uint(cubeFace(p - light.positionRange.xyz));
     GpuShadowView sv = shadowViews[view];
     float texelWorld = sv.params.x;
     if (sv.params.y > 0.5) texelWorld *= length(p - light.positionRange.xyz);
@@ -83,7 +89,7 @@ float runtimeShadow(GpuLight light, vec3 p, vec3 n, vec3 l) {
 // (bilinear), a dynamic object's ambient cube from the light grid, else the constant ambient.
 vec3 secondaryIrradiance(vec3 n) {
     if (BAKED_LIGHTING == 0) return vec3(frame.baked.x);
-    if (drawHasLightmap()) {
+    if (drawHasLightmap() && featureOn(FEATURE_LIGHTMAP)) {
         vec2 uv = inUv1 * draw.lightmapScale.xy;
         float base = float(draw.lightmapAtlas * 3u);
         vec3 e = vec3(irradianceLinear(texture(lightmap, vec3(uv, base)), n),
@@ -161,9 +167,10 @@ vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
     return sampleProbe(nearest, p, r, lod);
 }
 
-// A light record seen from p, by the shared light model (its colour holds the intensity).
-LightSample evaluateGpuLight(GpuLight light, vec3 p) {
-    return evaluatePunctualLight(int(light.info.x), light.color.rgb, 1.0, light.positionRange.w,
+// A light record of type `type` seen from p, by the shared light model (its colour holds the
+// intensity).
+LightSample evaluateGpuLight(GpuLight light, int type, vec3 p) {
+    return evaluatePunctualLight(type, light.color.rgb, 1.0, light.positionRange.w,
                                  light.positionRange.xyz, light.direction.xyz, light.cones.x,
                                  light.cones.y, p);
 }
@@ -176,7 +183,8 @@ void main() {
     GpuMaterial m = materials[draw.material];
 
     vec4 base = m.baseColor;
-    if (materialHas(m, TEXTURE_BASE_COLOR)) base *= texture(baseColorTexture, inUv0);
+    if (materialHas(m, TEXTURE_BASE_COLOR) && featureOn(FEATURE_BASE_TEXTURE))
+        base *= texture(baseColorTexture, inUv0);
     if (ALPHA_MASK == 1 && base.a < m.emissive.a) discard;
 
     // Material parameters per texel (shaders/material.glsl), by class.
@@ -217,14 +225,17 @@ void main() {
     vec2 directEnv = MATERIAL_PIPELINE == 1 ? env : vec2(0.0);  // the direct lights' energy weight
 
     // The one primary light, times its shadow.
-    if (PRIMARY == 1 && draw.primaryLight != NO_INDEX) {
+    if (PRIMARY != PRIMARY_NONE && featureOn(FEATURE_PRIMARY) && draw.primaryLight != NO_INDEX) {
         GpuLight light = lights[draw.primaryLight];
-        LightSample s = evaluateGpuLight(light, p);
+        int type = primaryType(light);
+        LightSample s = evaluateGpuLight(light, type, p);
         BrdfDots d = brdfDots(n, v, s.l);
         if (dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0) {
             float radius = frame.shadowParams.x;
-            float baked = viewDistance > radius - frame.shadowParams.y ? bakedShadow() : 1.0;
-            float runtime = viewDistance < radius ? runtimeShadow(light, p, geometricNormal, s.l) : 1.0;
+            float baked = featureOn(FEATURE_BAKED_SHADOW) && viewDistance > radius - frame.shadowParams.y
+                              ? bakedShadow() : 1.0;
+            float runtime = featureOn(FEATURE_RUNTIME_SHADOW) && viewDistance < radius
+                                ? runtimeShadow(light, type, p, geometricNormal, s.l) : 1.0;
             float shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
                                        frame.shadowParams.y);
             radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
@@ -235,13 +246,13 @@ void main() {
     // Effect lights: up to 4 diffuse-only omnis (gun flashes) and the flashlight spot.
     if (EFFECT_LIGHTS == 1 && MATERIAL_CLASS != MATERIAL_METAL) {
         for (uint i = 0u; i < frame.counts.x; ++i) {
-            LightSample s = evaluateGpuLight(frame.effectOmnis[i], p);
+            LightSample s = evaluateGpuLight(frame.effectOmnis[i], LIGHT_POINT, p);
             radiance += diffuseReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
                                            cavity, brdfDots(n, v, s.l)) * s.illuminance;
         }
     }
     if (EFFECT_LIGHTS == 1 && frame.counts.y != 0u) {
-        LightSample s = evaluateGpuLight(frame.effectSpot, p);
+        LightSample s = evaluateGpuLight(frame.effectSpot, LIGHT_SPOT, p);
         radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity,
                                        brdfDots(n, v, s.l)) * s.illuminance;
     }
@@ -263,7 +274,8 @@ void main() {
     // Emission in cd/m^2 like every other radiance (world/import/README.md), then the whole
     // pre-exposed.
     vec3 emissive = m.emissive.rgb;
-    if (materialHas(m, TEXTURE_EMISSIVE)) emissive *= texture(emissiveTexture, inUv0).rgb;
+    if (materialHas(m, TEXTURE_EMISSIVE) && featureOn(FEATURE_EMISSIVE_TEXTURE))
+        emissive *= texture(emissiveTexture, inUv0).rgb;
     float exposure = frame.cameraPosition.w;
     vec3 color = (radiance + emissive) * exposure;
     if (any(isnan(color)) || any(isinf(color))) color = vec3(0.0);
