@@ -30,6 +30,27 @@ void worldBounds(const glm::mat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec3& outM
     }
 }
 
+// The draw of a static surface, and of a dynamic mesh lit by `primary` (its material and key
+// set by the caller).
+Draw drawOf(const DrawSurface& surface) {
+    Draw d;
+    d.firstIndex = surface.firstIndex;
+    d.indexCount = surface.indexCount;
+    d.primaryLight = surface.primaryLight;
+    d.primaryKind = surface.primaryKind;
+    d.atlas = surface.atlas;
+    return d;
+}
+Draw drawOf(const DrawDynamicMesh& mesh, uint32_t primary) {
+    Draw d;
+    d.firstIndex = mesh.firstIndex;
+    d.indexCount = mesh.indexCount;
+    d.vertexOffset = mesh.vertexOffset;
+    d.primaryLight = primary;
+    d.entity = mesh.entity;
+    return d;
+}
+
 // The pipeline key of draw d (static when it has no entity) of its material.
 uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& options, const Draw& d,
                    bool effectLights) {
@@ -135,13 +156,7 @@ DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& mate
             ++stats.surfacesHidden;
             continue;
         }
-        Draw d;
-        d.firstIndex = surface.firstIndex;
-        d.indexCount = surface.indexCount;
-        d.primaryLight = surface.primaryLight;
-        d.primaryKind = surface.primaryKind;
-        d.atlas = surface.atlas;
-        add(d, surface.material, surface.boundsMin, surface.boundsMax);
+        add(drawOf(surface), surface.material, surface.boundsMin, surface.boundsMax);
         ++stats.surfacesDrawn;
     }
     list.entityVisible.assign(entityCount, 0);
@@ -150,13 +165,7 @@ DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& mate
         worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, lo, hi);
         if (!intersects(frustum, lo, hi)) continue;
         list.entityVisible[mesh.entity] = 1;
-        Draw d;
-        d.firstIndex = mesh.firstIndex;
-        d.indexCount = mesh.indexCount;
-        d.vertexOffset = mesh.vertexOffset;
-        d.primaryLight = view.entityPrimary[mesh.entity];
-        d.entity = mesh.entity;
-        add(d, mesh.material, lo, hi);
+        add(drawOf(mesh, view.entityPrimary[mesh.entity]), mesh.material, lo, hi);
         ++stats.dynamicMeshesDrawn;
     }
     std::sort(list.visibleLights.begin(), list.visibleLights.end());
@@ -187,23 +196,9 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
         }
         return added;
     };
-    for (const DrawSurface& surface : geometry.surfaces) {
-        Draw d;
-        d.firstIndex = surface.firstIndex;
-        d.indexCount = surface.indexCount;
-        d.primaryLight = surface.primaryLight;
-        d.primaryKind = surface.primaryKind;
-        d.atlas = surface.atlas;
-        add(d, surface.material);
-    }
-    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
-        Draw d;
-        d.firstIndex = mesh.firstIndex;
-        d.indexCount = mesh.indexCount;
-        d.vertexOffset = mesh.vertexOffset;
-        d.entity = mesh.entity;
-        if (add(d, mesh.material)) list.entityVisible[mesh.entity] = 1;
-    }
+    for (const DrawSurface& surface : geometry.surfaces) add(drawOf(surface), surface.material);
+    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes)
+        if (add(drawOf(mesh, kNoIndex), mesh.material)) list.entityVisible[mesh.entity] = 1;
     if (shadowedLight != kNoIndex && !options.flatShading) list.visibleLights = {shadowedLight};
     batchDraws(list.draws, options.rasterFloor);
     return list;
