@@ -172,6 +172,34 @@ TEST(DemoReplays, TheBenchmarkPrintsFrameTimesAScriptCanRead) {
     EXPECT_TRUE(fs::is_empty(dir)) << "a benchmark writes no captures";
 }
 
+// The game keeps its pipeline cache in $XDG_CACHE_HOME/onelight/pipelines.bin; a file that is not
+// one (garbage, another device's) is not an error: the run makes its pipelines afresh and writes
+// a cache of its own over it.
+TEST(DemoReplays, TheGameKeepsItsPipelineCacheWhereXdgCacheHomeSays) {
+    const std::string cache = outputDir("pipeline_cache");
+    const fs::path file = fs::path(cache) / "onelight" / "pipelines.bin";
+    const std::string run = "env XDG_CACHE_HOME=" + cache + " " + std::string(ONELIGHT_EXE) + " " +
+                            ONELIGHT_DEMO_PACKAGE + " --headless --size 64x36";
+    const auto headerLength = [&] {
+        std::ifstream in(file, std::ios::binary);
+        uint32_t length = 0;
+        in.read(reinterpret_cast<char*>(&length), sizeof(length));
+        return in ? length : 0u;
+    };
+    CommandResult r = onelight::test::runCommand(run);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ASSERT_TRUE(fs::is_regular_file(file));
+    EXPECT_GE(fs::file_size(file), 32u);  // at least VkPipelineCacheHeaderVersionOne
+    EXPECT_EQ(headerLength(), 32u);
+    {
+        std::ofstream garbage(file, std::ios::binary | std::ios::trunc);
+        garbage << std::string(100, 'x');
+    }
+    r = onelight::test::runCommand(run);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(headerLength(), 32u) << "the garbage was not replaced by this device's cache";
+}
+
 // Bad replays: one line `onelight: FILE:LINE: what was expected`, exit 1.
 TEST(DemoReplays, BadScriptsGiveOneClearLineAndExitOne) {
     std::string dir = outputDir("bad_scripts");
