@@ -19,7 +19,7 @@ spawns 0-2, at 1280x720 with MSAA 4x:
     scripts/frame-rate.py [--out DIR] [--maps a,b] [--spawns 0,1,2] [--frames N]
 
 Needs a build (build/bin/onelight, onelight-bake) and the Debian packages openarena, xvfb and
-mesa-utils. Run it on a quiet machine: both engines rasterize on the CPU, and frame times rise
+mesa-utils (./test installs them: scripts/test-packages.txt). Run it on a quiet machine: both engines rasterize on the CPU, and frame times rise
 several-fold when another process uses the cores. Writes DIR/frame-rate.md and .json.
 """
 import argparse
