@@ -24,7 +24,7 @@ layout(constant_id = SPEC_MATERIAL_PIPELINE) const int MATERIAL_PIPELINE = 1;
 layout(constant_id = SPEC_PROBES) const int PROBES = 1;
 // The draws' needs (gpu_interface.glsl): each default keeps the choice at run time, from the
 // material record and the draw's push; a value the draws all share compiles the rest out, the
-// same pixels with fewer fetches (RendererOptions::specializeDraws).
+// same displayed pixels with fewer fetches (RendererOptions::specializeDraws).
 layout(constant_id = SPEC_TEXTURES) const int TEXTURES = ALL_TEXTURES;
 layout(constant_id = SPEC_PRIMARY) const int PRIMARY = PRIMARY_ANY;
 layout(constant_id = SPEC_SECONDARY) const int SECONDARY = SECONDARY_ANY;
