@@ -171,6 +171,33 @@ TEST(HostileMemory, AJpegHuffmanTablePast256CodesIsRefusedBeforeStbReadsIt) {
         << decodeError(scan);
 }
 
+TEST(HostileMemory, AJpegHuffmanTableAfterAScanIsCheckedWhereverADecoderMightTakeIt) {
+    // Found by fuzz_image: after a scan, stb reads its Huffman-coded bytes as far as its decoding
+    // goes, and a fill byte before a stuffed zero (FF FF 00) is data to it, so where it takes the
+    // next marker is not where a walk of the segments ends. A DHT of 300 codes after such bytes
+    // reached stb's 257-entry table. Every FF C4 after the first scan is now checked.
+    std::vector<uint8_t> jpeg = {0xFF, 0xD8,                                      // SOI
+                                 0xFF, 0xC0, 0x00, 0x0B, 0x08, 0x00, 0x08, 0x00,  // SOF0 8x8
+                                 0x08, 0x01, 0x01, 0x11, 0x00,                    // 1 component
+                                 0xFF, 0xC4, 0x00, 0x14, 0x00};                   // DHT DC 0
+    for (int i = 0; i < 16; ++i) jpeg.push_back(i == 0 ? 1 : 0);                  // one code
+    jpeg.push_back(0x00);
+    jpeg.insert(jpeg.end(), {0xFF, 0xC4, 0x00, 0x14, 0x10});  // DHT AC 0, one code
+    for (int i = 0; i < 16; ++i) jpeg.push_back(i == 0 ? 1 : 0);
+    jpeg.push_back(0x00);
+    jpeg.insert(jpeg.end(), {0xFF, 0xDA, 0x00, 0x08, 0x01, 0x01, 0x00, 0x00, 0x3F, 0x00,  // SOS
+                             0x12, 0x34, 0xFF, 0xFF, 0x00, 0x56});  // coded bytes, FF FF 00
+    const size_t table = jpeg.size() + 4;
+    jpeg.insert(jpeg.end(), {0xFF, 0xC4, 0x01, 0x3F, 0x00});  // DHT: 300 codes
+    for (int i = 0; i < 16; ++i) jpeg.push_back(i == 14 ? 45 : i == 15 ? 255 : 0);
+    jpeg.resize(jpeg.size() + 300, 7);
+    jpeg.insert(jpeg.end(), {0xFF, 0xD9});
+    EXPECT_EQ(decodeError(jpeg),
+              "maps.pk3:textures/x.tga: a JPEG Huffman table of 300 codes "
+              "(byte " +
+                  std::to_string(table) + "); expected at most 256");
+}
+
 TEST(HostileMemory, AJpegScanWithAnUndefinedHuffmanTableIsRefused) {
     // Found by fuzz_image: stb decodes with an unbuilt table and reads past its end. A baseline
     // frame, then a scan of one component using DC table 0 and AC table 0, none defined.

@@ -1,6 +1,7 @@
 #include "world/images/image_decode.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -83,6 +84,41 @@ void checkTgaHolds(const uint8_t* bytes, size_t size, uint64_t texels, const std
 // with as many codes as the counts say, so a table claiming more writes past it: refused here
 // first. Walks the segments and skips each scan's entropy-coded bytes (0xFF 0x00 is a stuffed
 // byte, 0xFF 0xD0..0xD7 a restart marker).
+// The Huffman tables a DHT segment at `at` (its FF C4) defines, read as stb reads them: tables
+// while the segment's length lasts, each read whole even past the segment (bytes past the file
+// read as 0). Throws naming a table of more than 256 codes (stb writes past its 257-entry
+// array); returns the tables defined, a bit per id in [0] (DC) and [1] (AC).
+std::array<uint8_t, 2> checkDhtSegment(const uint8_t* bytes, size_t size, size_t at,
+                                       const std::string& where) {
+    std::array<uint8_t, 2> defined = {0, 0};
+    if (at + 4 > size) return defined;
+    const size_t length = size_t(bytes[at + 2]) << 8 | bytes[at + 3];
+    int64_t remaining = int64_t(length) - 2;
+    for (size_t t = at + 4; remaining > 0 && t < size;) {
+        size_t codes = 0;
+        for (size_t i = 1; i <= 16; ++i) codes += t + i < size ? bytes[t + i] : 0;
+        if (codes > 256)
+            throw Error(where + ": a JPEG Huffman table of " + std::to_string(codes) +
+                        " codes (byte " + std::to_string(t) + "); expected at most 256");
+        defined[bytes[t] >> 4 & 1] |= uint8_t(1u << (bytes[t] & 3));
+        t += 17 + codes;
+        remaining -= int64_t(17 + codes);
+    }
+    return defined;
+}
+
+// Every FF C4 from `from` on (fill bytes before the C4 included, as stb skips them) as a DHT.
+void checkEveryDhtFrom(const uint8_t* bytes, size_t size, size_t from, const std::string& where) {
+    for (size_t at = from; at + 1 < size; ++at) {
+        if (bytes[at] != 0xFF) continue;
+        size_t marker = at + 1;
+        while (marker < size && bytes[marker] == 0xFF) ++marker;
+        if (marker < size && bytes[marker] == 0xC4)
+            (void)checkDhtSegment(bytes, size, marker - 1, where);
+        at = marker - 1;
+    }
+}
+
 void checkJpegHuffmanTables(const uint8_t* bytes, size_t size, const std::string& where) {
     // stb takes 0xFF (fill bytes) 0xD8 as the start of a JPEG: the walk starts after it.
     size_t at = 0;
@@ -129,25 +165,21 @@ void checkJpegHuffmanTables(const uint8_t* bytes, size_t size, const std::string
             }
         }
         if (marker == 0xC4) {
-            // As stb reads it: tables while the segment's length lasts, each read whole even
-            // past the segment (bytes past the file read as 0).
-            int64_t remaining = int64_t(length) - 2;
-            for (size_t t = at + 4; remaining > 0 && t < size;) {
-                size_t codes = 0;
-                for (size_t i = 1; i <= 16; ++i) codes += t + i < size ? bytes[t + i] : 0;
-                if (codes > 256)
-                    throw Error(where + ": a JPEG Huffman table of " + std::to_string(codes) +
-                                " codes (byte " + std::to_string(t) + "); expected at most 256");
-                defined[bytes[t] >> 4 & 1] |= uint8_t(1u << (bytes[t] & 3));
-                t += 17 + codes;
-                remaining -= int64_t(17 + codes);
-            }
+            const std::array<uint8_t, 2> tables = checkDhtSegment(bytes, size, at, where);
+            defined[0] |= tables[0];
+            defined[1] |= tables[1];
         }
         at = at + 2 + length;
-        if (marker == 0xDA)  // the scan's entropy-coded bytes, up to the next real marker
+        if (marker == 0xDA) {
+            // Where stb takes the next marker after a scan depends on how many bytes its Huffman
+            // decoding consumed, which a walk cannot know: from here on every FF C4 a decoder
+            // could take for a DHT segment is checked. (Entropy-coded bytes never hold one: a
+            // coded FF is always followed by 00 or a restart marker.)
+            checkEveryDhtFrom(bytes, size, at, where);
             while (at + 1 < size && !(bytes[at] == 0xFF && bytes[at + 1] != 0 &&
                                       !(bytes[at + 1] >= 0xD0 && bytes[at + 1] <= 0xD7)))
                 ++at;
+        }
     }
 }
 
