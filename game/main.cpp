@@ -160,6 +160,7 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
         // The first frame after load, and the median of those after it: the
         // first-frame stall is their ratio.
         {"renderer_create", times.openMs},
+        {"renderer_warm_up", info.warmUpMs},  // part of renderer_create
         {"first_frame_wall", times.wallMs.empty() ? 0.0 : times.wallMs.front()},
         {"wall_median_after_first",
          medianMs(times.wallMs.size() > 1

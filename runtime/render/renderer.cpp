@@ -39,8 +39,6 @@ struct RendererState {
 
 namespace {
 
-void warmUp(RendererState& s);
-
 void writeTimestamp(const FrameSlots& frames, VkCommandBuffer cmd, const FrameSlot& slot,
                     uint32_t index) {
     if (!frames.timestamps) return;
@@ -82,6 +80,67 @@ void submitFrame(const vk::Context& ctx, FrameSlots& frames, FrameSlot& slot,
     vk::submitCommands(ctx, slot.cmd, sync);
     slot.frame = frames.submitted++;
     slot.pending = true;
+}
+
+// Records and submits the frame of `view` drawing `list` into the next frame slot.
+FrameStats drawList(RendererState& s, const FrameInputs& inputs, const FrameOutput& output,
+                    const FrameView& view, const DrawList& list, FrameStats stats,
+                    std::chrono::steady_clock::time_point cpuStart) {
+    const vk::Context& ctx = *s.ctx;
+    const Scene& scene = s.scene;
+    const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
+    FrameSlot& slot = s.frames.slots[slotIndex];
+    writeObjectLighting(scene.level, scene.baked, view, list,
+                        static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
+    const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
+    std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));
+    updateShadowViews(s.shadows, scene.level, s.options.shadowRadius, view.camera,
+                      list.visibleLights);
+    writeShadowViews(s.shadows, static_cast<GpuShadowView*>(slot.shadowViews.mapped));
+    s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
+    for (const Draw& d : list.draws)
+        if (d.entity != kNoIndex) s.drawnPrimary[d.entity] = d.primaryLight;
+
+    recordFrame(s, slotIndex, view, list, output, stats);
+    submitFrame(ctx, s.frames, slot, output);
+    if (output.readback || output.wait || (output.swapchain && output.readbackSwapchain)) {
+        finishFrame(ctx, slot, s.frames.timestamps, stats);
+        readBackFrame(s.targets, s.readback, output, view.exposure);
+    }
+    stats.frame = slot.frame;
+    stats.cpuMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart)
+            .count();
+    return stats;
+}
+
+// Draws one hidden frame (warmUpDrawList): every pipeline the level uses, once with each
+// material's textures bound, waited for. A driver that compiles its shader variants at first
+// draw (llvmpipe keys them by the pipeline and by the formats and samplers bound) does so here,
+// in createRenderer, and not in the first frame the player sees.
+void warmUp(RendererState& s) {
+    const Scene& scene = s.scene;
+    const auto cpuStart = std::chrono::steady_clock::now();
+    // The shadow pipeline once: a spot's or omni's static casters stay cached (a sun's are
+    // fitted again around the first frame's camera).
+    uint32_t shadowed = kNoIndex;
+    for (uint32_t light = 0; light < s.shadows.lightSlot.size(); ++light) {
+        if (s.shadows.lightSlot[light] == kNoIndex) continue;
+        const bool sun = scene.level.lights[light].type == world::LightType::kDirectional;
+        if (shadowed == kNoIndex || !sun) shadowed = light;
+        if (!sun) break;
+    }
+    const FrameInputs inputs;
+    const FrameView view =
+        frameViewOf(scene.level, float(s.targets.width) / float(s.targets.height), inputs);
+    const DrawList list = warmUpDrawList(scene.geometry, scene.materials, s.options,
+                                         scene.level.entities.size(), shadowed);
+    FrameOutput output;
+    output.wait = true;
+    (void)drawList(s, inputs, output, view, list, FrameStats{}, cpuStart);
+    s.info.warmUpMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart)
+            .count();
 }
 
 }  // namespace
@@ -200,78 +259,6 @@ void waitForFrames(Renderer& renderer) {
     FrameStats ignored;
     for (FrameSlot& slot : s.frames.slots) finishFrame(*s.ctx, slot, s.frames.timestamps, ignored);
 }
-
-namespace {
-
-// Records and submits the frame of `view` drawing `list` into the next frame slot.
-FrameStats drawList(RendererState& s, const FrameInputs& inputs, const FrameOutput& output,
-                    const FrameView& view, const DrawList& list, FrameStats stats,
-                    std::chrono::steady_clock::time_point cpuStart) {
-    const vk::Context& ctx = *s.ctx;
-    const Scene& scene = s.scene;
-    const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
-    FrameSlot& slot = s.frames.slots[slotIndex];
-    writeObjectLighting(scene.level, scene.baked, view, list,
-                        static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
-    const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
-    std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));
-    updateShadowViews(s.shadows, scene.level, s.options.shadowRadius, view.camera,
-                      list.visibleLights);
-    writeShadowViews(s.shadows, static_cast<GpuShadowView*>(slot.shadowViews.mapped));
-    s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
-    for (const Draw& d : list.draws)
-        if (d.entity != kNoIndex) s.drawnPrimary[d.entity] = d.primaryLight;
-
-    recordFrame(s, slotIndex, view, list, output, stats);
-    submitFrame(ctx, s.frames, slot, output);
-    if (output.readback || output.wait || (output.swapchain && output.readbackSwapchain)) {
-        finishFrame(ctx, slot, s.frames.timestamps, stats);
-        readBackFrame(s.targets, s.readback, output, view.exposure);
-    }
-    stats.frame = slot.frame;
-    stats.cpuMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart)
-            .count();
-    return stats;
-}
-
-}  // namespace
-
-namespace {
-
-// Draws one hidden frame (warmUpDrawList): every pipeline the level uses, once with each
-// material's textures bound, waited for. A driver that compiles its shader variants at first
-// draw (llvmpipe keys them by the pipeline and by the formats and samplers bound) does so here,
-// in createRenderer, and not in the first frame the player sees.
-void warmUp(RendererState& s) {
-    const Scene& scene = s.scene;
-    const auto cpuStart = std::chrono::steady_clock::now();
-    FrameStats stats;
-    finishFrame(*s.ctx, s.frames.slots[s.frames.submitted % kFramesInFlight], s.frames.timestamps,
-                stats);
-    // The shadow pipeline once: a spot's or omni's static casters stay cached (a sun's are
-    // fitted again around the first frame's camera).
-    uint32_t shadowed = kNoIndex;
-    for (uint32_t light = 0; light < s.shadows.lightSlot.size(); ++light) {
-        if (s.shadows.lightSlot[light] == kNoIndex) continue;
-        const bool sun = scene.level.lights[light].type == world::LightType::kDirectional;
-        if (shadowed == kNoIndex || !sun) shadowed = light;
-        if (!sun) break;
-    }
-    const FrameInputs inputs;
-    const FrameView view =
-        frameViewOf(scene.level, float(s.targets.width) / float(s.targets.height), inputs);
-    const DrawList list = warmUpDrawList(scene.geometry, scene.materials, s.options,
-                                         scene.level.entities.size(), shadowed);
-    FrameOutput output;
-    output.wait = true;
-    (void)drawList(s, inputs, output, view, list, stats, cpuStart);
-    s.info.warmUpMs =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpuStart)
-            .count();
-}
-
-}  // namespace
 
 FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameOutput& output) {
     RendererState& s = *renderer.state;
