@@ -16,6 +16,9 @@ that fails is reported and the run carries on.
                     [--bin build/bin] [--work DIR [--resume]] [--size WxH] [--timeout S]
                     [--no-bake]
 
+A run shares the machine by being held (scripts/hold PID WORK/holds -- COMMAND): the held time
+is left out of its step times.
+
 --no-bake compiles each map and draws spawn 0 unbaked (its primaries alone): whether every map
 loads, compiles and draws, in minutes for the whole corpus.
 """
@@ -66,16 +69,33 @@ def maps_of(folder):
     return [found[k] for k in sorted(found)], shadowed
 
 
-def run(argv, timeout):
-    """(exit code, output, seconds); exit code None on a timeout."""
-    start = time.monotonic()
+def held_seconds(holds, start, end):
+    """Seconds of [start, end] (epoch) during which the run was held: stopped by scripts/hold,
+    which appends "START END" (epoch seconds) to the file `holds` (the work folder's). A held step's
+    wall time less these is what it took, so that a run can share the machine with a build."""
+    if not holds or not os.path.exists(holds):
+        return 0.0
+    total = 0.0
+    for line in open(holds):
+        parts = line.split()
+        if len(parts) == 2:
+            a, b = float(parts[0]), float(parts[1])
+            total += max(0.0, min(b, end) - max(a, start))
+    return total
+
+
+def run(argv, args):
+    """(exit code, output, seconds) of argv within args.timeout; exit code None on a timeout.
+    The seconds leave out the time the run was held (held_seconds of args.holds)."""
+    start, wall = time.monotonic(), time.time()
     try:
         p = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                           timeout=timeout, text=True, errors="replace")
-        return p.returncode, p.stdout, time.monotonic() - start
+                           timeout=args.timeout, text=True, errors="replace")
+        code, out = p.returncode, p.stdout
     except subprocess.TimeoutExpired as e:
         out = e.stdout.decode(errors="replace") if isinstance(e.stdout, bytes) else e.stdout
-        return None, out or "", time.monotonic() - start
+        code, out = None, out or ""
+    return code, out, time.monotonic() - start - held_seconds(args.holds, wall, time.time())
 
 
 def reason(output, fallback):
@@ -135,7 +155,7 @@ def one_map(name, pk3, inner, args, work):
     package = os.path.join(work, re.sub(r"[^A-Za-z0-9_.-]", "_", name) + ".olpak")
     report = package[:-6] + ".json"
     row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused", "why": ""}
-    code, out, row["compile_s"] = run([args.bake, "compile", spec, "-o", package], args.timeout)
+    code, out, row["compile_s"] = run([args.bake, "compile", spec, "-o", package], args)
     if code != 0:
         row["why"] = "compile: " + (reason(out, "failed") if code is not None else "timed out")
         return row
@@ -144,7 +164,7 @@ def one_map(name, pk3, inner, args, work):
     if args.no_bake:
         return compiled_map(row, out, package, name, args, work)
     code, out, row["bake_s"] = run([args.bake, spec, "-o", package, "--quality", "draft",
-                                    "--quiet", "--report", report], args.timeout)
+                                    "--quiet", "--report", report], args)
     if code != 0:
         row["why"] = "bake: " + (reason(out, "failed") if code is not None else "timed out")
         return row
@@ -161,7 +181,7 @@ def one_map(name, pk3, inner, args, work):
     captures = os.path.join(work, "captures")
     base = [args.game_exe, package, "--headless", "--frames", "1", "--size", args.size]
     own = os.path.join(captures, name.replace("/", "_") + "-onelight")
-    code, out, _ = run(base + ["--capture", own], args.timeout)
+    code, out, _ = run(base + ["--capture", own], args)
     if code != 0:
         row["why"] = "draw: " + (reason(out, "failed") if code is not None else "timed out")
         return row
@@ -173,7 +193,7 @@ def one_map(name, pk3, inner, args, work):
         row["luminance"] = luminance(mean)
         q3 = os.path.join(captures, name.replace("/", "_") + "-q3map2")
         code, out, _ = run(base + ["--view", "q3map2", "--ev100", f"{ev100:.4f}", "--capture", q3],
-                           args.timeout)
+                           args)
         if code == 0:
             theirs = frame_radiance(q3 + ".json")
             if luminance(theirs) > 1e-6:
@@ -198,7 +218,7 @@ def compiled_map(row, compile_output, package, name, args, work):
     row["peak_mib"] = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
     own = os.path.join(work, "captures", name.replace("/", "_") + "-compiled")
     code, out, _ = run([args.game_exe, package, "--headless", "--frames", "1", "--size",
-                        args.size, "--capture", own], args.timeout)
+                        args.size, "--capture", own], args)
     if code != 0:
         row["why"] = "draw: " + (reason(out, "failed") if code is not None else "timed out")
         return row
@@ -279,6 +299,7 @@ def main():
     if args.resume and not args.work:
         sys.exit("corpus: --resume needs --work DIR, the earlier run's folder")
     work = args.work or tempfile.mkdtemp(prefix="onelight-corpus-")
+    args.holds = os.path.join(work, "holds")  # scripts/hold's record (held_seconds)
     os.makedirs(os.path.join(work, "captures"), exist_ok=True)
     # Every finished row, one JSON object a line (the mode and map identify it): --resume
     # reuses them.
@@ -312,7 +333,7 @@ def main():
                     # A row from before the column: the compile alone tells (seconds).
                     package = os.path.join(work, "light-from.olpak")
                     code, out, _ = run([args.bake, "compile", f"{pk3}:{inner}", "-o", package],
-                                       args.timeout)
+                                       args)
                     if code == 0:
                         row["light_from"] = light_from(out)
                         row["q3map2"] = q3map2_options(out)
