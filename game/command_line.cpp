@@ -52,6 +52,10 @@ const world::CommandTable& commandTable() {
             world::integerOption("--shadow-map-size", "N", 64, 8192,
                                  "texels per side of every shadow map layer",
                                  std::to_string(d.shadowMapSize)),
+            world::integerOption("--sun-cascades", "N", 1, 4,
+                                 "the sun's shadow maps, nearest first (1: one over the whole "
+                                 "shadow distance)",
+                                 std::to_string(d.sunCascades)),
             shadowDistance,
             world::flagOption("--no-probes",
                               "ignore the package's probes, a uniform environment instead",
@@ -124,6 +128,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
     out.msaa = countOf(parsed, "--msaa", out.msaa);
     out.anisotropy = countOf(parsed, "--anisotropy", out.anisotropy);
     out.shadowMapSize = countOf(parsed, "--shadow-map-size", out.shadowMapSize);
+    out.sunCascades = countOf(parsed, "--sun-cascades", out.sunCascades);
     out.shadowDistance = realOf(parsed, "--shadow-distance", out.shadowDistance);
     out.probes = !parsed.has("--no-probes");
     out.renderScale = realOf(parsed, "--render-scale", out.renderScale);

@@ -63,6 +63,7 @@ void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::Load
         options.visibilityCulling = cl.visibilityCulling;
         options.flatShading = options.rasterFloor = cl.rasterFloor;
         options.shadowMapSize = cl.shadowMapSize;
+        options.sunCascades = cl.sunCascades;
         options.shadowRadius = cl.shadowDistance;
         options.probes = cl.probes;
         t.frameWidth = options.width;

@@ -93,7 +93,8 @@ struct GpuLight {
     vec4 direction;      // xyz unit, the way light travels
     vec4 color;          // rgb colour * intensity (lux or candela)
     vec4 cones;          // x cos inner, y cos outer
-    uvec4 info;          // x type (LIGHT_* of lighting.glsl), y first shadow view or NO_INDEX
+    uvec4 info;          // x type (LIGHT_* of lighting.glsl), y first shadow view or NO_INDEX,
+                         // z shadow views (a sun's cascades, nearest first; an omni's 6 faces)
 };
 
 // Per-frame values (uniform block, std140).
@@ -113,7 +114,8 @@ struct FrameUniforms {
 // One shadow-map view: layer i of the shadow array.
 struct GpuShadowView {
     mat4 viewProj;
-    vec4 params;  // x world texel size (ortho) or per metre of distance (perspective), y 1 = perspective
+    vec4 params;  // x world texel size (ortho) or per metre of distance (perspective), y 1 =
+                  // perspective, z a sun cascade's far view distance (metres)
 };
 
 // A material: the glTF factors; textures.x is the bit mask of TEXTURE_* slots in use.

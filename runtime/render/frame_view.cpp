@@ -65,13 +65,13 @@ uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& optio
 
 }  // namespace
 
-GpuLight gpuLightOf(const world::Light& l, uint32_t firstShadowView) {
+GpuLight gpuLightOf(const world::Light& l, ShadowViewRange shadowViews) {
     GpuLight g{};
     g.positionRange = glm::vec4(l.position, l.range);
     g.direction = glm::vec4(glm::normalize(l.direction), 0.0f);
     g.color = glm::vec4(l.color * l.intensity, 0.0f);
     g.cones = glm::vec4(std::cos(l.innerCone), std::cos(l.outerCone), 0.0f, 0.0f);
-    g.info = glm::uvec4(uint32_t(l.type), firstShadowView, 0u, 0u);
+    g.info = glm::uvec4(uint32_t(l.type), shadowViews.first, shadowViews.count, 0u);
     return g;
 }
 

@@ -13,9 +13,9 @@
 
 namespace onelight::render {
 
-/// Light records (gpu_interface.glsl GpuLight): a level light with its first shadow view, and
+/// Light records (gpu_interface.glsl GpuLight): a level light with its shadow views, and
 /// the effect lights (no shadow).
-[[nodiscard]] GpuLight gpuLightOf(const world::Light& light, uint32_t firstShadowView);
+[[nodiscard]] GpuLight gpuLightOf(const world::Light& light, ShadowViewRange shadowViews);
 [[nodiscard]] GpuLight gpuLightOf(const EffectOmni& omni);
 [[nodiscard]] GpuLight gpuLightOf(const EffectSpot& spot);
 

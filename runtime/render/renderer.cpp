@@ -94,8 +94,7 @@ FrameStats drawList(RendererState& s, const FrameInputs& inputs, const FrameOutp
                         static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
     const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
     std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));
-    updateShadowViews(s.shadows, scene.level, s.options.shadowRadius, view.camera,
-                      list.visibleLights);
+    updateShadowViews(s.shadows, scene.level, view.camera, list.visibleLights);
     writeShadowViews(s.shadows, static_cast<GpuShadowView*>(slot.shadowViews.mapped));
     s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
     for (const Draw& d : list.draws)
@@ -187,10 +186,9 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
         s.info.skyImage = scene.sky.present;
         s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
 
-        createShadows(ctx, s.shadows, scene.level.lights, options,
-                      !scene.geometry.dynamicMeshes.empty());
+        createShadows(ctx, s.shadows, scene.level, options, !scene.geometry.dynamicMeshes.empty());
         s.info.shadowLayers = s.shadows.layers;
-        createLightRecords(ctx, s.lightRecords, scene.level.lights, firstShadowViews(s.shadows));
+        createLightRecords(ctx, s.lightRecords, scene.level.lights, lightShadowViews(s.shadows));
         createTargets(ctx, s.targets, std::max(options.width, 1u), std::max(options.height, 1u),
                       samples);
         createReadback(ctx, s.readback, s.targets.width, s.targets.height);

@@ -113,7 +113,10 @@ struct RendererOptions {
     uint32_t width = 1280, height = 720;
     uint32_t requestedMsaa = 2;     // Black Ops' choice; the nearest supported is used
     uint32_t shadowMapSize = 1024;  // texels, every shadow layer
-    uint32_t maxShadowLayers = 48;  // sun 1, spot 1, omni 6 layers
+    uint32_t maxShadowLayers = 48;  // sun sunCascades, spot 1, omni 6 layers
+    // The sun's shadow in cascades (render/shadows.hpp): 1 is one map over the whole radius,
+    // whose 10 cm texels stair-step the courtyard's shadows near the camera.
+    uint32_t sunCascades = 3;
     float shadowRadius =
         world::kRuntimeShadowRadius;  // metres from the camera with runtime shadows
     float shadowBand =

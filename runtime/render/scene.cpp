@@ -715,10 +715,10 @@ void destroyGeometry(const vk::Context& ctx, SceneGeometry& geometry) {
 
 void createLightRecords(const vk::Context& ctx, vk::Buffer& buffer,
                         const std::vector<world::Light>& lights,
-                        const std::vector<uint32_t>& firstShadowView) {
+                        const std::vector<ShadowViewRange>& shadowViews) {
     std::vector<GpuLight> gpu;
     for (uint32_t i = 0; i < lights.size(); ++i)
-        gpu.push_back(gpuLightOf(lights[i], firstShadowView.at(i)));
+        gpu.push_back(gpuLightOf(lights[i], shadowViews.at(i)));
     if (gpu.empty()) gpu.emplace_back();  // a binding needs a record
     createRecordBuffer(ctx, buffer, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }

@@ -127,11 +127,16 @@ void createScene(const vk::Context& ctx, Scene& scene, const assets::LoadedLevel
                  const RendererOptions& options);
 void destroyScene(const vk::Context& ctx, Scene& scene);
 
-/// The level's lights (GpuLight, device-local) with their first shadow views, or one empty
-/// record without lights: after createShadows has given them views (`firstShadowView` per
-/// light, kNoIndex without a shadow).
+/// A light's shadow views as the forward pass finds them (GpuLight info.y and info.z): the
+/// sun's cascades, a spot's one, an omni's six faces; {kNoIndex, 0} without a shadow.
+struct ShadowViewRange {
+    uint32_t first = kNoIndex, count = 0;
+};
+
+/// The level's lights (GpuLight, device-local) with their shadow views, or one empty record
+/// without lights: after createShadows has given them views (`shadowViews` per light).
 void createLightRecords(const vk::Context& ctx, vk::Buffer& buffer,
                         const std::vector<world::Light>& lights,
-                        const std::vector<uint32_t>& firstShadowView);
+                        const std::vector<ShadowViewRange>& shadowViews);
 
 }  // namespace onelight::render

@@ -18,13 +18,9 @@ namespace onelight::render {
 
 namespace {
 
-constexpr float kSunExtentScale = 1.25f;     // the sun map's half size over the shadow radius
+constexpr float kSunExtentScale = 1.25f;     // a sun map's half size over its far distance
 constexpr float kSunCellsPerExtent = 4.0f;   // the camera may move extent / 4 before a refit
 constexpr float kSunBiasClampTexels = 2.0f;  // the sun map's largest depth bias, in its texels
-
-uint32_t layersFor(world::LightType type) {
-    return type == world::LightType::kPoint ? 6u : 1u;
-}
 
 float levelDiagonal(const LevelData& level) {
     return std::max(glm::length(level.boundsMax - level.boundsMin), 1.0f);
@@ -34,21 +30,22 @@ glm::vec3 anyPerpendicular(glm::vec3 d) {
     return std::fabs(d.y) < 0.99f ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(1.0f, 0.0f, 0.0f);
 }
 
-void fitSun(ShadowMaps& shadows, ShadowSlot& slot, const LevelData& level, float shadowRadius,
-            const Camera& camera) {
-    const world::Light& light = level.lights[slot.light];
+// The sun's cascade `view`, fitted around the camera: an orthographic map of half size
+// sunCascadeExtent(split) centred on the camera's cell (a whole number of texels, so that the
+// texels stay put while the camera moves within it), as deep as the level. Each cascade refits
+// (and redraws its static casters) only when the camera leaves its cell.
+void fitSunCascade(ShadowMaps& shadows, ShadowView& v, const LevelData& level,
+                   const world::Light& light, const Camera& camera) {
     const glm::vec3 dir = glm::normalize(light.direction);
     const glm::vec3 right = glm::normalize(glm::cross(dir, anyPerpendicular(dir)));
     const glm::vec3 up = glm::cross(right, dir);
-    // Never wider than the level: a 4 m room's sun map at the 40 m radius's size had 10 cm
-    // texels, and the sun leaked along every junction of its walls for a texel's width.
-    const float extent = std::min(shadowRadius * kSunExtentScale, levelDiagonal(level));
-    const float step = extent / kSunCellsPerExtent;  // a whole number of texels
+    const float extent = sunCascadeExtent(v.split, levelDiagonal(level));
+    const float step = extent / kSunCellsPerExtent;
     const glm::vec2 cell(std::floor(glm::dot(camera.position, right) / step + 0.5f),
                          std::floor(glm::dot(camera.position, up) / step + 0.5f));
-    if (slot.staticValid && cell == slot.sunCell) return;
-    slot.sunCell = cell;
-    slot.staticValid = false;
+    if (v.staticValid && cell == v.sunCell) return;
+    v.sunCell = cell;
+    v.staticValid = false;
 
     const glm::vec3 boundsCentre = 0.5f * (level.boundsMin + level.boundsMax);
     const float depth = 0.5f * levelDiagonal(level) + 1.0f;
@@ -56,9 +53,8 @@ void fitSun(ShadowMaps& shadows, ShadowSlot& slot, const LevelData& level, float
         right * (cell.x * step) + up * (cell.y * step) + dir * glm::dot(boundsCentre, dir);
     const glm::mat4 view = glm::lookAtRH(centre - dir * depth, centre, up);
     const glm::mat4 proj = glm::orthoRH_ZO(-extent, extent, -extent, extent, 0.0f, 2.0f * depth);
-    ShadowView& v = shadows.views[slot.firstView];
     v.viewProj = proj * view;
-    v.params = glm::vec4(2.0f * extent / float(shadows.mapSize), 0.0f, 0.0f, 0.0f);
+    v.params = glm::vec4(2.0f * extent / float(shadows.mapSize), 0.0f, v.split, 0.0f);
     // The slope bias grows without bound on a caster the sun grazes: a wall 14 degrees off the
     // sun's rays got ~8 texels (0.8 m) of depth bias, and the room it stands in was sunlit for
     // 0.8 m behind it (bright bands along every wall of a room lit through a roof opening).
@@ -66,7 +62,7 @@ void fitSun(ShadowMaps& shadows, ShadowSlot& slot, const LevelData& level, float
     v.depthBiasClamp = kSunBiasClampTexels * v.params.x / (2.0f * depth);
 }
 
-void fitSpotOrOmni(ShadowMaps& shadows, ShadowSlot& slot, const LevelData& level) {
+void fitSpotOrOmni(ShadowMaps& shadows, const ShadowSlot& slot, const LevelData& level) {
     const world::Light& light = level.lights[slot.light];
     const float zfar = light.range > 0.0f ? light.range : levelDiagonal(level) * 2.0f;
     const float znear = std::clamp(zfar * 1e-4f, 0.01f, 0.1f);
@@ -79,6 +75,7 @@ void fitSpotOrOmni(ShadowMaps& shadows, ShadowSlot& slot, const LevelData& level
         ShadowView& v = shadows.views[slot.firstView];
         v.viewProj = glm::perspectiveRH_ZO(fov, 1.0f, znear, zfar) * view;
         v.params = glm::vec4(2.0f * std::tan(0.5f * fov) / size, 1.0f, 0.0f, 0.0f);
+        v.staticValid = false;
         return;
     }
     // Omni: faces +X, -X, +Y, -Y, +Z, -Z (forward.frag picks them by the major axis), each a
@@ -92,6 +89,7 @@ void fitSpotOrOmni(ShadowMaps& shadows, ShadowSlot& slot, const LevelData& level
         ShadowView& v = shadows.views[slot.firstView + f];
         v.viewProj = glm::perspectiveRH_ZO(fov, 1.0f, znear, zfar) * view;
         v.params = glm::vec4(2.0f * tanHalf / size, 1.0f, 0.0f, 0.0f);
+        v.staticValid = false;
     }
 }
 
@@ -134,17 +132,39 @@ constexpr VkPipelineStageFlags kDepthStages =
 
 }  // namespace
 
-void createShadows(const vk::Context& ctx, ShadowMaps& shadows,
-                   const std::vector<world::Light>& lights, const RendererOptions& options,
-                   bool dynamicCasters) {
+std::vector<float> sunCascadeSplits(float shadowRadius, uint32_t cascades, float levelDiagonal) {
+    const uint32_t n = std::max(cascades, 1u);
+    std::vector<float> splits;
+    for (uint32_t k = 0; k < n; ++k) {
+        splits.push_back(shadowRadius / std::pow(kSunCascadeRatio, float(n - 1 - k)));
+        // A cascade as wide as the level covers every farther view distance too.
+        if (sunCascadeExtent(splits.back(), levelDiagonal) >= levelDiagonal) break;
+    }
+    splits.back() = std::max(splits.back(), shadowRadius);
+    return splits;
+}
+
+float sunCascadeExtent(float split, float levelDiagonal) {
+    // Never wider than the level: a 4 m room's sun map at the 40 m radius's size had 10 cm
+    // texels, and the sun leaked along every junction of its walls for a texel's width.
+    return std::min(split * kSunExtentScale, levelDiagonal);
+}
+
+void createShadows(const vk::Context& ctx, ShadowMaps& shadows, const LevelData& level,
+                   const RendererOptions& options, bool dynamicCasters) {
+    const std::vector<world::Light>& lights = level.lights;
     shadows.mapSize = options.shadowMapSize;
+    const std::vector<float> splits =
+        sunCascadeSplits(options.shadowRadius, options.sunCascades, levelDiagonal(level));
     // Slots for every primary light a surface uses (and every primary, for dynamic objects),
     // while layers last.
     shadows.lightSlot.assign(lights.size(), kNoIndex);
     uint32_t layers = 0;
     for (uint32_t i = 0; i < lights.size(); ++i) {
         if (lights[i].role != world::LightRole::kPrimary || options.flatShading) continue;
-        const uint32_t need = layersFor(lights[i].type);
+        const uint32_t need = lights[i].type == world::LightType::kPoint         ? 6u
+                              : lights[i].type == world::LightType::kDirectional ? uint32_t(splits.size())
+                                                                                 : 1u;
         if (layers + need > options.maxShadowLayers) continue;
         ShadowSlot slot;
         slot.light = i;
@@ -156,6 +176,9 @@ void createShadows(const vk::Context& ctx, ShadowMaps& shadows,
     }
     shadows.views.resize(std::max(layers, 1u));
     shadows.layers = layers;
+    for (const ShadowSlot& slot : shadows.slots)
+        if (lights[slot.light].type == world::LightType::kDirectional)
+            for (uint32_t k = 0; k < slot.viewCount; ++k) shadows.views[slot.firstView + k].split = splits[k];
 
     vk::ImageDesc desc;
     desc.format = kDepthFormat;
@@ -216,27 +239,30 @@ void destroyShadows(const vk::Context& ctx, ShadowMaps& shadows) {
     vk::destroyImage(ctx, shadows.staticShadows);
 }
 
-std::vector<uint32_t> firstShadowViews(const ShadowMaps& shadows) {
-    std::vector<uint32_t> first(shadows.lightSlot.size(), kNoIndex);
-    for (size_t i = 0; i < first.size(); ++i)
-        if (shadows.lightSlot[i] != kNoIndex)
-            first[i] = shadows.slots[shadows.lightSlot[i]].firstView;
-    return first;
+std::vector<ShadowViewRange> lightShadowViews(const ShadowMaps& shadows) {
+    std::vector<ShadowViewRange> ranges(shadows.lightSlot.size());
+    for (size_t i = 0; i < ranges.size(); ++i)
+        if (shadows.lightSlot[i] != kNoIndex) {
+            const ShadowSlot& slot = shadows.slots[shadows.lightSlot[i]];
+            ranges[i] = {slot.firstView, slot.viewCount};
+        }
+    return ranges;
 }
 
 const vk::Image& sampledShadowMaps(const ShadowMaps& shadows) {
     return shadows.frameShadows.image ? shadows.frameShadows : shadows.staticShadows;
 }
 
-void updateShadowViews(ShadowMaps& shadows, const LevelData& level, float shadowRadius,
-                       const Camera& camera, const std::vector<uint32_t>& visibleLights) {
+void updateShadowViews(ShadowMaps& shadows, const LevelData& level, const Camera& camera, const std::vector<uint32_t>& visibleLights) {
     for (uint32_t light : visibleLights) {
         if (shadows.lightSlot[light] == kNoIndex) continue;
-        ShadowSlot& slot = shadows.slots[shadows.lightSlot[light]];
-        if (level.lights[light].type == world::LightType::kDirectional)
-            fitSun(shadows, slot, level, shadowRadius, camera);
-        else if (!slot.staticValid)
+        const ShadowSlot& slot = shadows.slots[shadows.lightSlot[light]];
+        if (level.lights[light].type == world::LightType::kDirectional) {
+            for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v)
+                fitSunCascade(shadows, shadows.views[v], level, level.lights[light], camera);
+        } else if (!shadows.views[slot.firstView].staticValid) {
             fitSpotOrOmni(shadows, slot, level);
+        }
     }
 }
 
@@ -257,36 +283,35 @@ uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, VkPipeline
     vkCmdBindVertexBuffers(cmd, 0, 1, &geometry.vertices.buffer, &offset);
     vkCmdBindIndexBuffer(cmd, geometry.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
 
-    // Static casters of the slots that need them, once.
+    // Static casters of the views that need them, once.
     uint32_t rendered = 0;
     for (uint32_t light : visibleLights) {
         if (shadows.lightSlot[light] == kNoIndex) continue;
-        ShadowSlot& slot = shadows.slots[shadows.lightSlot[light]];
-        if (slot.staticValid) continue;
-        vk::imageBarrier(cmd, shadows.staticShadows,
-                         vk::layersBarrier(slot.firstView, slot.viewCount,
-                                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                           VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                                           VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                                           VK_ACCESS_SHADER_READ_BIT, kDepthStages,
-                                           VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
+        const ShadowSlot& slot = shadows.slots[shadows.lightSlot[light]];
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
-            beginDepthRendering(cmd, shadows.views[v].staticLayer, size, true,
-                                shadows.views[v].depthBiasClamp);
-            drawStaticCasters(cmd, layout, geometry, shadows.views[v]);
+            ShadowView& view = shadows.views[v];
+            if (view.staticValid) continue;
+            vk::imageBarrier(cmd, shadows.staticShadows,
+                             vk::layersBarrier(v, 1, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                               VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                                               VK_ACCESS_SHADER_READ_BIT, kDepthStages,
+                                               VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
+                                                   VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
+            beginDepthRendering(cmd, view.staticLayer, size, true, view.depthBiasClamp);
+            drawStaticCasters(cmd, layout, geometry, view);
             vkCmdEndRendering(cmd);
+            vk::imageBarrier(
+                cmd, shadows.staticShadows,
+                vk::layersBarrier(
+                    v, 1, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
+                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT));
+            view.staticValid = true;
             ++rendered;
         }
-        vk::imageBarrier(
-            cmd, shadows.staticShadows,
-            vk::layersBarrier(
-                slot.firstView, slot.viewCount, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages,
-                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT));
-        slot.staticValid = true;
     }
     if (geometry.dynamicMeshes.empty()) return rendered;
 

@@ -17,18 +17,35 @@
 
 namespace onelight::render {
 
-/// The shadow layers of one primary light: 1 (sun, spot) or 6 (omni), views first..first+count.
+/// The sun's cascades (Zhang et al. 2006, "Parallel-Split Shadow Maps"): cascade k of n covers
+/// view distances up to radius / kSunCascadeRatio^(n - 1 - k), each a map of the same size, so
+/// that a texel spans about the same number of pixels at every cascade's far end (1.6 at
+/// 1280x720 with a 90-degree view, a 1024 map and the 40 m radius: 1.1, 3.3 and 9.8 cm texels).
+inline constexpr float kSunCascadeRatio = 3.0f;
+
+/// The far view distance of each of `cascades` sun cascades within `shadowRadius` metres, the
+/// last one the radius; fewer when a cascade already spans the level (`levelDiagonal` metres).
+[[nodiscard]] std::vector<float> sunCascadeSplits(float shadowRadius, uint32_t cascades,
+                                                  float levelDiagonal);
+
+/// The half size (metres) of the sun map that covers view distances up to `split` around the
+/// camera, snapped to its cell and never wider than the level.
+[[nodiscard]] float sunCascadeExtent(float split, float levelDiagonal);
+
+/// The shadow layers of one primary light: the sun's cascades, a spot's 1 or an omni's 6, views
+/// first..first+count.
 struct ShadowSlot {
     uint32_t light = 0;
     uint32_t firstView = 0, viewCount = 0;
-    bool staticValid = false;  // its static casters are rendered and still fit
-    glm::vec2 sunCell{1e30f};  // the snapped camera cell the sun map was fitted around
 };
 
 struct ShadowView {
     glm::mat4 viewProj{1.0f};
-    glm::vec4 params{0.0f};
-    float depthBiasClamp = 0.0f;               // depth units, the slope bias's limit; 0: none
+    glm::vec4 params{0.0f};  // GpuShadowView::params
+    float depthBiasClamp = 0.0f;  // depth units, the slope bias's limit; 0: none
+    bool staticValid = false;     // its static casters are rendered and still fit
+    glm::vec2 sunCell{1e30f};     // a sun cascade: the snapped camera cell it was fitted around
+    float split = 0.0f;           // a sun cascade: the far view distance it covers (metres)
     VkImageView staticLayer = VK_NULL_HANDLE;  // owned, layer of staticShadows
     VkImageView frameLayer = VK_NULL_HANDLE;   // owned, layer of frameShadows (with dynamics)
 };
@@ -46,21 +63,20 @@ struct ShadowMaps {
 };
 
 /// Slots for every primary light while `options.maxShadowLayers` last (none with flat
-/// shading), their layers cleared to "unoccluded"; frame layers when `dynamicCasters`.
-void createShadows(const vk::Context& ctx, ShadowMaps& shadows,
-                   const std::vector<world::Light>& lights, const RendererOptions& options,
-                   bool dynamicCasters);
+/// shading), a sun's with its cascades (options.sunCascades, fewer in a level smaller than
+/// them), their layers cleared to "unoccluded"; frame layers when `dynamicCasters`.
+void createShadows(const vk::Context& ctx, ShadowMaps& shadows, const LevelData& level,
+                   const RendererOptions& options, bool dynamicCasters);
 void destroyShadows(const vk::Context& ctx, ShadowMaps& shadows);
 
-/// The first shadow view of every light, kNoIndex for a light without a slot.
-[[nodiscard]] std::vector<uint32_t> firstShadowViews(const ShadowMaps& shadows);
+/// The shadow views of every light, {kNoIndex, 0} for a light without a slot.
+[[nodiscard]] std::vector<ShadowViewRange> lightShadowViews(const ShadowMaps& shadows);
 
 /// The maps the forward pass samples: the frame layers when there are any, else the static ones.
 [[nodiscard]] const vk::Image& sampledShadowMaps(const ShadowMaps& shadows);
 
 /// Fits the views of the slots of `visibleLights` for this camera; marks slots to redraw.
-void updateShadowViews(ShadowMaps& shadows, const LevelData& level, float shadowRadius,
-                       const Camera& camera, const std::vector<uint32_t>& visibleLights);
+void updateShadowViews(ShadowMaps& shadows, const LevelData& level, const Camera& camera, const std::vector<uint32_t>& visibleLights);
 /// Copies the shadow views fitted for this frame into `out` (GpuShadowView per view).
 void writeShadowViews(const ShadowMaps& shadows, GpuShadowView* out);
 /// Records the shadow passes with `pipeline` (over `layout`); returns how many static views

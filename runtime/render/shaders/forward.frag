@@ -63,10 +63,15 @@ layout(location = 0) out vec4 outColor;
 // light): a surface the light grazes needs the whole offset against acne, one facing it hardly
 // any, and a full offset there moves the point towards the light, past a thin wall's depth,
 // so that a floor under a high sun was lit along the foot of every wall in front of it.
-float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l) {
+// A sun's cascade is the nearest whose far distance reaches the point's view distance (as a
+// loop: a CPU rasterizer stops one once no pixel of its block is still in it).
+float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float viewDistance) {
     uint view = light.info.y;
     if (view == NO_INDEX) return 1.0;
     if (type == LIGHT_POINT) view += uint(cubeFace(p - light.positionRange.xyz));
+    if (type == LIGHT_DIRECTIONAL)
+        for (uint last = view + light.info.z - 1u; view < last && viewDistance > shadowViews[view].params.z;)
+            ++view;
     GpuShadowView sv = shadowViews[view];
     float texelWorld = sv.params.x;
     if (sv.params.y > 0.5) texelWorld *= length(p - light.positionRange.xyz);
@@ -235,7 +240,7 @@ void main() {
             float baked = featureOn(FEATURE_BAKED_SHADOW) && viewDistance > radius - frame.shadowParams.y
                               ? bakedShadow() : 1.0;
             float runtime = featureOn(FEATURE_RUNTIME_SHADOW) && viewDistance < radius
-                                ? runtimeShadow(light, type, p, geometricNormal, s.l) : 1.0;
+                                ? runtimeShadow(light, type, p, geometricNormal, s.l, viewDistance) : 1.0;
             float shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
                                        frame.shadowParams.y);
             radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
