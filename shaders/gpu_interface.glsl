@@ -162,4 +162,10 @@ struct DrawPush {
     vec4 lightmapScale;    // xy: uv1 (over the surface's atlas) to the lightmap array's uv
 };
 
+// Per draw of an alpha-masked shadow caster (push constants; its material's set 1 bound as set 0).
+struct MaskedShadowPush {
+    mat4 clipFromObject;
+    vec4 alpha;  // x the base colour factor's alpha, y the alpha cutoff (GpuMaterial emissive.a)
+};
+
 #endif

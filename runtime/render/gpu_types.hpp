@@ -22,6 +22,7 @@ using glsl::GpuObjectLighting;
 using glsl::GpuProbe;
 using glsl::GpuProbeGrid;
 using glsl::GpuShadowView;
+using glsl::MaskedShadowPush;
 
 using world::kNoIndex;
 inline constexpr uint32_t kMaxEffectOmnis = glsl::MAX_EFFECT_OMNIS;
@@ -36,5 +37,6 @@ static_assert(sizeof(GpuObjectLighting) == 96);
 static_assert(sizeof(GpuProbe) == 80);
 static_assert(sizeof(GpuProbeGrid) == 48);
 static_assert(sizeof(DrawPush) == 96);
+static_assert(sizeof(MaskedShadowPush) == 80);
 
 }  // namespace onelight::render

@@ -14,6 +14,8 @@
 #include "forward.vert.spv.h"
 #include "fullscreen.vert.spv.h"
 #include "shadow.vert.spv.h"
+#include "shadow_masked.frag.spv.h"
+#include "shadow_masked.vert.spv.h"
 #include "sky.frag.spv.h"
 #include "sky.vert.spv.h"
 #include "tonemap.frag.spv.h"
@@ -125,6 +127,9 @@ void createLayouts(const vk::Context& ctx, Pipelines& p) {
     const std::vector<std::vector<VkDescriptorSetLayoutBinding>> noSets;
     vk::createPipelineLayout(ctx, p.shadowLayout, noSets, sizeof(glm::mat4),
                              VK_SHADER_STAGE_VERTEX_BIT);
+    const std::vector<std::vector<VkDescriptorSetLayoutBinding>> maskedSets = {materialBindings};
+    vk::createPipelineLayout(ctx, p.maskedShadowLayout, maskedSets, sizeof(MaskedShadowPush),
+                             kVertexFragment);
     const std::vector<std::vector<VkDescriptorSetLayoutBinding>> tonemapSets = {
         {vk::layoutBinding(glsl::BINDING_TONEMAP_HDR, kSampled, kFragment),
          vk::layoutBinding(glsl::BINDING_TONEMAP_LUT, kSampled, kFragment)}};
@@ -193,6 +198,10 @@ void createShadowAndTonemapPipelines(const vk::Context& ctx, Pipelines& p) {
     shadow.dynamicDepthBias = true;
     shadow.depthFormat = kDepthFormat;
     p.shadow = vk::createGraphicsPipeline(ctx, p.shadowLayout, shadow);
+    shadow.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kShadowMaskedVertSpirv, {}},
+                     {VK_SHADER_STAGE_FRAGMENT_BIT, kShadowMaskedFragSpirv, {}}};
+    shadow.vertexAttributes = vertexAttributes(false);
+    p.maskedShadow = vk::createGraphicsPipeline(ctx, p.maskedShadowLayout, shadow);
 
     vk::GraphicsPipelineDesc tonemap;
     tonemap.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kFullscreenVertSpirv, {}},
@@ -246,7 +255,8 @@ void createPipelines(const vk::Context& ctx, Pipelines& pipelines, const SceneGe
 }
 
 void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines) {
-    for (VkPipeline* p : {&pipelines.sky, &pipelines.tonemap, &pipelines.shadow, &pipelines.flat,
+    for (VkPipeline* p : {&pipelines.sky, &pipelines.tonemap, &pipelines.shadow,
+                          &pipelines.maskedShadow, &pipelines.flat,
                           &pipelines.depth[0], &pipelines.depth[1]}) {
         if (*p) vkDestroyPipeline(ctx.device, *p, nullptr);
         *p = VK_NULL_HANDLE;
@@ -255,6 +265,7 @@ void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines) {
         vkDestroyPipeline(ctx.device, pipeline, nullptr);
     pipelines.forward.clear();
     vk::destroyPipelineLayout(ctx, pipelines.tonemapLayout);
+    vk::destroyPipelineLayout(ctx, pipelines.maskedShadowLayout);
     vk::destroyPipelineLayout(ctx, pipelines.shadowLayout);
     vk::destroyPipelineLayout(ctx, pipelines.forwardLayout);
 }

@@ -71,11 +71,14 @@ struct ForwardChoices {
 
 struct Pipelines {
     vk::PipelineLayout forwardLayout, shadowLayout, tonemapLayout;  // owned
+    // Alpha-masked shadow casters: a material's set (set 1 of forwardLayout) as set 0.
+    vk::PipelineLayout maskedShadowLayout;  // owned
     std::map<uint32_t, VkPipeline> forward;                         // owned, by permutationKey
     VkPipeline flat = VK_NULL_HANDLE;  // owned, only with RendererOptions::flatShading
     // The depth pre-pass: forward.vert alone, depth only, culling back faces or none (owned).
     VkPipeline depth[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     VkPipeline shadow = VK_NULL_HANDLE;     // owned
+    VkPipeline maskedShadow = VK_NULL_HANDLE;  // owned: alpha-masked casters' coverage test
     VkPipeline tonemap = VK_NULL_HANDLE;    // owned
     VkPipeline sky = VK_NULL_HANDLE;        // owned, when the level's sky is an image
     std::vector<std::string> permutations;  // the forward pipelines built, by name

@@ -56,7 +56,10 @@ void recordFrame(RendererState& s, uint32_t slotIndex, const FrameView& view, co
     vk::beginOneTimeCommands(cmd);
     writeTimestamp(s.frames, cmd, slot, 0);
     stats.shadowViewsRendered =
-        recordShadowPasses(s.shadows, cmd, s.pipelines.shadow, s.pipelines.shadowLayout,
+        recordShadowPasses(s.shadows, cmd,
+                           {s.pipelines.shadow, s.pipelines.maskedShadow,
+                            s.pipelines.shadowLayout.layout, s.pipelines.maskedShadowLayout.layout,
+                            &s.scene.materials, &s.descriptors.material},
                            s.scene.geometry, list.visibleLights, view.entityTransforms);
     writeTimestamp(s.frames, cmd, slot, 1);
     recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors,

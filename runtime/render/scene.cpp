@@ -349,6 +349,7 @@ void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
         materials.classes.push_back(cls);
         materials.doubleSided.push_back(m.doubleSided ? 1 : 0);
         materials.alphaMask.push_back(m.alphaMode == world::AlphaMode::kMask ? 1 : 0);
+        materials.maskAlpha.emplace_back(m.baseColor.a, m.alphaCutoff);
         materials.textureSlots.push_back(uint8_t(bits));
     }
     if (level.materials.empty()) {
@@ -689,6 +690,7 @@ void createMaterials(const vk::Context& ctx, SceneMaterials& materials,
             uint8_t(options.forceMaterialClass >= 0 ? options.forceMaterialClass : 3));
         materials.doubleSided.push_back(0);
         materials.alphaMask.push_back(0);
+        materials.maskAlpha.emplace_back(1.0f, 0.0f);
         materials.textureSlots.push_back(0);
     }
 }

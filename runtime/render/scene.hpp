@@ -80,6 +80,7 @@ struct SceneMaterials {
     std::vector<MaterialTextures> bound;          // per material: views and samplers, borrowed
     std::vector<uint8_t> classes;                 // per material, after forceMaterialClass
     std::vector<uint8_t> doubleSided, alphaMask;  // per material
+    std::vector<glm::vec2> maskAlpha;  // per material: the base colour's alpha factor, the cutoff
     std::vector<uint8_t> textureSlots;            // per material: bit mask of TEXTURE_* filled
 };
 

@@ -106,23 +106,60 @@ void beginDepthRendering(VkCommandBuffer cmd, VkImageView view, uint32_t size, b
     vkCmdSetDepthBias(cmd, kShadowBiasConstant, biasClamp, kShadowBiasSlope);
 }
 
-void drawStaticCasters(VkCommandBuffer cmd, const vk::PipelineLayout& layout,
-                       const SceneGeometry& geometry, const ShadowView& view) {
-    const Frustum frustum = frustumOf(view.viewProj);
-    vkCmdPushConstants(cmd, layout.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
-                       &view.viewProj);
-    for (const DrawSurface& surface : geometry.surfaces)
-        if (intersects(frustum, surface.boundsMin, surface.boundsMax))
-            vkCmdDrawIndexed(cmd, surface.indexCount, 1, surface.firstIndex, 0, 0);
+// Whether `material` is alpha-masked: drawn with the masked pipeline, its holes open.
+bool masked(const ShadowDraw& draw, uint32_t material) {
+    return draw.materials->alphaMask[material] != 0;
 }
 
-void drawDynamicCasters(VkCommandBuffer cmd, const vk::PipelineLayout& layout,
-                        const SceneGeometry& geometry, const ShadowView& view,
-                        const std::vector<glm::mat4>& entityTransforms) {
+void pushMasked(VkCommandBuffer cmd, const ShadowDraw& draw, uint32_t material,
+                const glm::mat4& clip) {
+    MaskedShadowPush push{};
+    push.clipFromObject = clip;
+    push.alpha = glm::vec4(draw.materials->maskAlpha[material], 0.0f, 0.0f);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.maskedLayout, 0, 1,
+                            &(*draw.materialSets)[material], 0, nullptr);
+    vkCmdPushConstants(cmd, draw.maskedLayout,
+                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
+                       &push);
+}
+
+// The static casters in the view's frustum: the opaque ones, then the alpha-masked ones.
+void drawStaticCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const SceneGeometry& geometry,
+                       const ShadowView& view) {
+    const Frustum frustum = frustumOf(view.viewProj);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
+    vkCmdPushConstants(cmd, draw.opaqueLayout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
+                       &view.viewProj);
+    bool anyMasked = false;
+    for (const DrawSurface& surface : geometry.surfaces)
+        if (intersects(frustum, surface.boundsMin, surface.boundsMax)) {
+            if (masked(draw, surface.material))
+                anyMasked = true;
+            else
+                vkCmdDrawIndexed(cmd, surface.indexCount, 1, surface.firstIndex, 0, 0);
+        }
+    if (!anyMasked) return;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.masked);
+    for (const DrawSurface& surface : geometry.surfaces)
+        if (masked(draw, surface.material) &&
+            intersects(frustum, surface.boundsMin, surface.boundsMax)) {
+            pushMasked(cmd, draw, surface.material, view.viewProj);
+            vkCmdDrawIndexed(cmd, surface.indexCount, 1, surface.firstIndex, 0, 0);
+        }
+}
+
+void drawDynamicCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const SceneGeometry& geometry,
+                        const ShadowView& view, const std::vector<glm::mat4>& entityTransforms) {
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
         const glm::mat4 clip = view.viewProj * entityTransforms[mesh.entity];
-        vkCmdPushConstants(cmd, layout.layout, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof(glm::mat4),
-                           &clip);
+        if (masked(draw, mesh.material)) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.masked);
+            pushMasked(cmd, draw, mesh.material, clip);
+        } else {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.opaque);
+            vkCmdPushConstants(cmd, draw.opaqueLayout, VK_SHADER_STAGE_VERTEX_BIT, 0,
+                               sizeof(glm::mat4), &clip);
+        }
         vkCmdDrawIndexed(cmd, mesh.indexCount, 1, mesh.firstIndex, mesh.vertexOffset, 0);
     }
 }
@@ -273,13 +310,12 @@ void writeShadowViews(const ShadowMaps& shadows, GpuShadowView* out) {
     }
 }
 
-uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, VkPipeline pipeline,
-                            const vk::PipelineLayout& layout, const SceneGeometry& geometry,
+uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, const ShadowDraw& draw,
+                            const SceneGeometry& geometry,
                             const std::vector<uint32_t>& visibleLights,
                             const std::vector<glm::mat4>& entityTransforms) {
     const uint32_t size = shadows.mapSize;
     const VkDeviceSize offset = 0;
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     vkCmdBindVertexBuffers(cmd, 0, 1, &geometry.vertices.buffer, &offset);
     vkCmdBindIndexBuffer(cmd, geometry.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
 
@@ -299,7 +335,7 @@ uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, VkPipeline
                                                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
                                                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT));
             beginDepthRendering(cmd, view.staticLayer, size, true, view.depthBiasClamp);
-            drawStaticCasters(cmd, layout, geometry, view);
+            drawStaticCasters(cmd, draw, geometry, view);
             vkCmdEndRendering(cmd);
             vk::imageBarrier(
                 cmd, shadows.staticShadows,
@@ -350,7 +386,7 @@ uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, VkPipeline
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
             beginDepthRendering(cmd, shadows.views[v].frameLayer, size, false,
                                 shadows.views[v].depthBiasClamp);
-            drawDynamicCasters(cmd, layout, geometry, shadows.views[v], entityTransforms);
+            drawDynamicCasters(cmd, draw, geometry, shadows.views[v], entityTransforms);
             vkCmdEndRendering(cmd);
         }
         vk::imageBarrier(

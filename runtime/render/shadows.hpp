@@ -79,11 +79,19 @@ void destroyShadows(const vk::Context& ctx, ShadowMaps& shadows);
 void updateShadowViews(ShadowMaps& shadows, const LevelData& level, const Camera& camera, const std::vector<uint32_t>& visibleLights);
 /// Copies the shadow views fitted for this frame into `out` (GpuShadowView per view).
 void writeShadowViews(const ShadowMaps& shadows, GpuShadowView* out);
-/// Records the shadow passes with `pipeline` (over `layout`); returns how many static views
-/// were redrawn.
+/// What the shadow passes draw with: opaque casters depth only; alpha-masked ones (glTF MASK)
+/// through their material's base colour alpha, so that their holes let the light through as in
+/// the forward pass and the baked mask. Borrowed.
+struct ShadowDraw {
+    VkPipeline opaque = VK_NULL_HANDLE, masked = VK_NULL_HANDLE;
+    VkPipelineLayout opaqueLayout = VK_NULL_HANDLE, maskedLayout = VK_NULL_HANDLE;
+    const SceneMaterials* materials = nullptr;
+    const std::vector<VkDescriptorSet>* materialSets = nullptr;  // per material
+};
+
+/// Records the shadow passes; returns how many static views were redrawn.
 [[nodiscard]] uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd,
-                                          VkPipeline pipeline, const vk::PipelineLayout& layout,
-                                          const SceneGeometry& geometry,
+                                          const ShadowDraw& draw, const SceneGeometry& geometry,
                                           const std::vector<uint32_t>& visibleLights,
                                           const std::vector<glm::mat4>& entityTransforms);
 
