@@ -52,7 +52,7 @@ const int BINDING_TONEMAP_LUT = 1;  // sampler3D, the colour LUT
 
 // Specialization constants of forward.frag.
 const int SPEC_MATERIAL_CLASS = 0;     // MATERIAL_* of lighting.glsl
-const int SPEC_ALPHA_MASK = 1;         // 1: discard below the cutoff
+const int SPEC_ALPHA_MODE = 1;         // ALPHA_MODE_*: the materials' glTF alpha mode
 const int SPEC_FLAT_SHADING = 2;       // 1: constant colour (the benchmark floor)
 const int SPEC_BAKED_LIGHTING = 3;     // 1: fetch the baked lighting (or its placeholders)
 const int SPEC_DIFFUSE_MODEL = 4;      // DIFFUSE_* of lighting.glsl: the level's diffuse model
@@ -83,6 +83,10 @@ const int PRIMARY_ANY = 1;          // the draw's push says which, of any type
 const int PRIMARY_DIRECTIONAL = 2;  // 2 + LIGHT_* (lighting.glsl): each draw's is of that type
 const int PRIMARY_POINT = 3;
 const int PRIMARY_SPOT = 4;
+
+const int ALPHA_MODE_OPAQUE = 0;  // world::AlphaMode: alpha ignored
+const int ALPHA_MODE_MASK = 1;    // discarded below the cutoff
+const int ALPHA_MODE_BLEND = 2;   // blended over what is behind by its alpha
 
 // ---------------------------------------------------------------------------------------------
 // Records

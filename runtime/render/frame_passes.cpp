@@ -72,6 +72,13 @@ void beginForwardRendering(const Scene& scene, const RenderTargets& targets, VkC
     vk::beginRendering(cmd, extentOf(targets), &color, &depth);
 }
 
+// The sky pass, after the opaque draws: only the pixels they left at the far plane run it.
+void recordSky(VkCommandBuffer cmd, const Pipelines& pipelines) {
+    if (!pipelines.sky) return;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.sky);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+}
+
 DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale, const FrameView& view,
                     const Draw& d) {
     DrawPush push{};
@@ -104,7 +111,8 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
     if (pipelines.depth[0] != VK_NULL_HANDLE) {
         int bound = -1;
         for (const Draw& d : list.draws) {
-            if (keyAlphaMask(d.key)) continue;  // its coverage comes from the fragment shader
+            // A masked draw's coverage comes from the fragment shader; a blended one hides nothing.
+            if (keyAlphaMask(d.key) || keyAlphaBlend(d.key)) continue;
             const int doubleSided = keyDoubleSided(d.key) ? 1 : 0;
             if (doubleSided != bound) {
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
@@ -119,7 +127,14 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
         }
     }
     uint32_t boundKey = kNoIndex, boundMaterial = kNoIndex;
+    bool skyDrawn = false;
     for (const Draw& d : list.draws) {
+        // The sky before the blended draws (the last, back to front), which go over it.
+        if (!skyDrawn && keyAlphaBlend(d.key)) {
+            recordSky(cmd, pipelines);
+            skyDrawn = true;
+            boundKey = kNoIndex;
+        }
         if (d.key != boundKey) {
             // The flat pipeline exists only with flat shading, and then draws everything.
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
@@ -137,10 +152,7 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
         vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);
         stats.trianglesDrawn += d.indexCount / 3;
     }
-    if (pipelines.sky) {  // last: only the pixels the level left at the far plane run it
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.sky);
-        vkCmdDraw(cmd, 3, 1, 0, 0);
-    }
+    if (!skyDrawn) recordSky(cmd, pipelines);
     vkCmdEndRendering(cmd);
 }
 

@@ -205,17 +205,22 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
 }
 
 void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
-    // Sorted by pipeline, then static before dynamic, then by what a draw binds and pushes,
-    // then by index range, so that the surfaces a draw could share lie side by side; dynamic
-    // meshes front to back. With geometryOnly (the raster floor) only the index range counts.
-    // Static and dynamic draws never share a state, so the two orders never meet (a strict
-    // weak order).
+    // Opaque draws first, sorted by pipeline, then static before dynamic, then by what a draw
+    // binds and pushes, then by index range, so that the surfaces a draw could share lie side
+    // by side; dynamic meshes front to back. With geometryOnly (the raster floor) only the index
+    // range counts. Static and dynamic draws never share a state, so the two orders never meet
+    // (a strict weak order). Blended draws (keyAlphaBlend) last, back to front by their bounds'
+    // centres, each over what is behind it.
     const auto state = [geometryOnly](const Draw& d) {
         const uint32_t dynamic = d.entity == kNoIndex ? 0u : 1u;
         return geometryOnly ? std::make_tuple(0u, dynamic, 0u, 0u, 0u)
                             : std::make_tuple(d.key, dynamic, d.material, d.primaryLight, d.atlas);
     };
     std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
+        const bool blendA = !geometryOnly && keyAlphaBlend(a.key);
+        const bool blendB = !geometryOnly && keyAlphaBlend(b.key);
+        if (blendA != blendB) return blendB;
+        if (blendA) return a.distance2 > b.distance2;
         if (state(a) != state(b)) return state(a) < state(b);
         if (a.entity != kNoIndex || b.entity != kNoIndex) return a.distance2 < b.distance2;
         return std::tie(a.vertexOffset, a.firstIndex) < std::tie(b.vertexOffset, b.firstIndex);

@@ -33,7 +33,8 @@ std::string permutationName(const PermutationKey& k) {
                                           "occlusion", "emissive",    "cavity"};
     static const char* const kSecondary[4] = {"", " lightmap", " object", " constant"};
     std::string name = std::string(kClassNames[k.materialClass]) +
-                       (k.doubleSided ? "+double-sided" : "") + (k.alphaMask ? "+alpha-mask" : "");
+                       (k.doubleSided ? "+double-sided" : "") + (k.alphaMask ? "+alpha-mask" : "") +
+           (k.alphaBlend ? "+alpha-blend" : "");
     if (k.textures != uint32_t(glsl::ALL_TEXTURES)) {
         std::string slots;
         for (int t = 0; t < 6; ++t)
@@ -152,11 +153,15 @@ void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeo
         const PermutationKey k = unpackPermutationKey(key);
         const int materialClass = int(k.materialClass);
         forward.cullMode = k.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+        forward.alphaBlend = k.alphaBlend;
+        forward.depthWrite = !k.alphaBlend;
         forward.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}},
                           {VK_SHADER_STAGE_FRAGMENT_BIT,
                            kForwardFragSpirv,
                            {{glsl::SPEC_MATERIAL_CLASS, materialClass},
-                            {glsl::SPEC_ALPHA_MASK, k.alphaMask ? 1 : 0},
+                            {glsl::SPEC_ALPHA_MODE, k.alphaBlend  ? glsl::ALPHA_MODE_BLEND
+                                                    : k.alphaMask ? glsl::ALPHA_MODE_MASK
+                                                                  : glsl::ALPHA_MODE_OPAQUE},
                             {glsl::SPEC_FLAT_SHADING, 0},
                             {glsl::SPEC_BAKED_LIGHTING, bakedLighting},
                             {glsl::SPEC_DIFFUSE_MODEL, choices.diffuseModel},
@@ -170,6 +175,8 @@ void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeo
         p.forward[key] = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
         p.permutations.push_back(permutationName(k));
     }
+    forward.alphaBlend = false;
+    forward.depthWrite = true;
     if (options.depthPrepass && !options.flatShading) {
         vk::GraphicsPipelineDesc depth = forward;
         depth.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}}};
@@ -235,7 +242,8 @@ uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions&
     PermutationKey k;
     k.materialClass = materials.classes[material];
     k.doubleSided = materials.doubleSided[material] != 0;
-    k.alphaMask = materials.alphaMask[material] != 0;
+    k.alphaMask = materials.alphaMode[material] == uint8_t(world::AlphaMode::kMask);
+    k.alphaBlend = materials.alphaMode[material] == uint8_t(world::AlphaMode::kBlend);
     if (options.specializeDraws) {
         k.textures = materials.textureSlots[material];
         k.primary = primary;

@@ -30,24 +30,29 @@ struct PermutationKey {
     uint32_t primary = uint32_t(glsl::PRIMARY_ANY);    // PRIMARY_*: its draws' primary's type
     uint32_t secondary = uint32_t(glsl::SECONDARY_ANY);
     bool effectLights = true;  // false: for frames without effect lights
+    bool alphaBlend = false;   // glTF BLEND: blended over what is behind, drawn last, back to front
 };
 
 /// The key packed into a pipeline's map key: class bits 0-1, double-sided 2, alpha mask 3,
-/// texture slots 4-9, primary 10-12, secondary 13-14, effect lights 15.
+/// texture slots 4-9, primary 10-12, secondary 13-14, effect lights 15, alpha blend 16 (so that
+/// blended draws sort after every opaque one).
 [[nodiscard]] inline uint32_t permutationKey(const PermutationKey& k) {
     return k.materialClass | (k.doubleSided ? 4u : 0u) | (k.alphaMask ? 8u : 0u) |
            (k.textures & 63u) << 4 | (k.primary & 7u) << 10 | (k.secondary & 3u) << 13 |
-           (k.effectLights ? 1u << 15 : 0u);
+           (k.effectLights ? 1u << 15 : 0u) | (k.alphaBlend ? 1u << 16 : 0u);
 }
 [[nodiscard]] inline PermutationKey unpackPermutationKey(uint32_t key) {
     return {key & 3u,         (key & 4u) != 0,  (key & 8u) != 0,        (key >> 4) & 63u,
-            (key >> 10) & 7u, (key >> 13) & 3u, (key & (1u << 15)) != 0};
+            (key >> 10) & 7u, (key >> 13) & 3u, (key & (1u << 15)) != 0, (key & (1u << 16)) != 0};
 }
 [[nodiscard]] inline bool keyDoubleSided(uint32_t key) {
     return (key & 4u) != 0;
 }
 [[nodiscard]] inline bool keyAlphaMask(uint32_t key) {
     return (key & 8u) != 0;
+}
+[[nodiscard]] inline bool keyAlphaBlend(uint32_t key) {
+    return (key & (1u << 16)) != 0;
 }
 
 /// The pipeline key of a draw of `material` (0 with flat shading). A static surface: `primary`

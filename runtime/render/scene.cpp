@@ -348,8 +348,11 @@ void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
         if (forceMaterialClass >= 0) cls = uint8_t(forceMaterialClass);
         materials.classes.push_back(cls);
         materials.doubleSided.push_back(m.doubleSided ? 1 : 0);
-        materials.alphaMask.push_back(m.alphaMode == world::AlphaMode::kMask ? 1 : 0);
-        materials.maskAlpha.emplace_back(m.baseColor.a, m.alphaCutoff);
+        materials.alphaMode.push_back(uint8_t(m.alphaMode));
+        // A blended caster's shadow map holds the texels at least half opaque (the baked mask
+        // transmits 1 - alpha; a depth map can only hold a texel or not).
+        materials.maskAlpha.emplace_back(
+            m.baseColor.a, m.alphaMode == world::AlphaMode::kBlend ? 0.5f : m.alphaCutoff);
         materials.textureSlots.push_back(uint8_t(bits));
     }
     if (level.materials.empty()) {
@@ -689,7 +692,7 @@ void createMaterials(const vk::Context& ctx, SceneMaterials& materials,
         materials.classes.push_back(
             uint8_t(options.forceMaterialClass >= 0 ? options.forceMaterialClass : 3));
         materials.doubleSided.push_back(0);
-        materials.alphaMask.push_back(0);
+        materials.alphaMode.push_back(uint8_t(world::AlphaMode::kOpaque));
         materials.maskAlpha.emplace_back(1.0f, 0.0f);
         materials.textureSlots.push_back(0);
     }

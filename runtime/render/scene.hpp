@@ -79,7 +79,8 @@ struct SceneMaterials {
     vk::Image white, flatNormal;                  // owned, placeholders for missing textures
     std::vector<MaterialTextures> bound;          // per material: views and samplers, borrowed
     std::vector<uint8_t> classes;                 // per material, after forceMaterialClass
-    std::vector<uint8_t> doubleSided, alphaMask;  // per material
+    std::vector<uint8_t> doubleSided;  // per material
+    std::vector<uint8_t> alphaMode;    // per material: world::AlphaMode
     std::vector<glm::vec2> maskAlpha;  // per material: the base colour's alpha factor, the cutoff
     std::vector<uint8_t> textureSlots;            // per material: bit mask of TEXTURE_* filled
 };

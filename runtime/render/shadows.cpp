@@ -106,9 +106,9 @@ void beginDepthRendering(VkCommandBuffer cmd, VkImageView view, uint32_t size, b
     vkCmdSetDepthBias(cmd, kShadowBiasConstant, biasClamp, kShadowBiasSlope);
 }
 
-// Whether `material` is alpha-masked: drawn with the masked pipeline, its holes open.
+// Whether `material` is alpha-masked or blended: drawn with the masked pipeline, its holes open.
 bool masked(const ShadowDraw& draw, uint32_t material) {
-    return draw.materials->alphaMask[material] != 0;
+    return draw.materials->alphaMode[material] != uint8_t(world::AlphaMode::kOpaque);
 }
 
 void pushMasked(VkCommandBuffer cmd, const ShadowDraw& draw, uint32_t material,

@@ -114,11 +114,21 @@ VkPipeline createGraphicsPipeline(const Context& ctx, const PipelineLayout& layo
         depth.depthCompareOp = desc.depthCompare;
 
         std::vector<VkPipelineColorBlendAttachmentState> blends(desc.colorFormats.size());
-        for (VkPipelineColorBlendAttachmentState& b : blends)
+        for (VkPipelineColorBlendAttachmentState& b : blends) {
             b.colorWriteMask = desc.colorWrite
                                    ? VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                          VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT
                                    : 0u;
+            if (desc.alphaBlend) {
+                b.blendEnable = VK_TRUE;
+                b.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
+                b.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+                b.colorBlendOp = VK_BLEND_OP_ADD;
+                b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;
+                b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+                b.alphaBlendOp = VK_BLEND_OP_ADD;
+            }
+        }
         VkPipelineColorBlendStateCreateInfo blend{};
         blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
         blend.attachmentCount = uint32_t(blends.size());

@@ -51,6 +51,8 @@ struct GraphicsPipelineDesc {
     bool depthWrite = true;
     VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
     bool colorWrite = true;  // false: the colour attachments are left as they are (depth only)
+    // Colour over what is there by the source alpha: rgb = src a + dst (1 - a), alpha kept.
+    bool alphaBlend = false;
     bool dynamicDepthBias = false;  // depth bias enabled, its values set per draw
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     std::vector<VkFormat> colorFormats;

@@ -8,7 +8,7 @@
 #include "material.glsl"
 
 layout(constant_id = SPEC_MATERIAL_CLASS) const int MATERIAL_CLASS = MATERIAL_FULL;
-layout(constant_id = SPEC_ALPHA_MASK) const int ALPHA_MASK = 0;      // 1: discard below the cutoff
+layout(constant_id = SPEC_ALPHA_MODE) const int ALPHA_MODE = ALPHA_MODE_OPAQUE;
 layout(constant_id = SPEC_FLAT_SHADING) const int FLAT_SHADING = 0;  // 1: constant colour
 // 1: the level supplies baked lighting (lightmaps, shadow masks, grid samples per object; or
 // their placeholders in tests); 0: the neutral placeholder (a constant ambient of frame.baked.x
@@ -190,7 +190,7 @@ void main() {
     vec4 base = m.baseColor;
     if (materialHas(m, TEXTURE_BASE_COLOR) && featureOn(FEATURE_BASE_TEXTURE))
         base *= texture(baseColorTexture, inUv0);
-    if (ALPHA_MASK == 1 && base.a < m.emissive.a) discard;
+    if (ALPHA_MODE == ALPHA_MODE_MASK && base.a < m.emissive.a) discard;
 
     // Material parameters per texel (shaders/material.glsl), by class.
     vec2 mr = vec2(m.params.x, m.params.y);
@@ -284,5 +284,8 @@ void main() {
     float exposure = frame.cameraPosition.w;
     vec3 color = (radiance + emissive) * exposure;
     if (any(isnan(color)) || any(isinf(color))) color = vec3(0.0);
-    outColor = vec4(min(color, vec3(HDR_MAX)), 1.0);
+    // A blended material's colour goes over what is behind by its alpha (the pipeline's blend:
+    // rgb = src.rgb a + dst.rgb (1 - a)), its lit radiance and emission alike.
+    float alpha = ALPHA_MODE == ALPHA_MODE_BLEND ? clamp(base.a, 0.0, 1.0) : 1.0;
+    outColor = vec4(min(color, vec3(HDR_MAX)), alpha);
 }
