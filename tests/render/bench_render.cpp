@@ -251,7 +251,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
         const char* name;
         render::RendererOptions options;
     };
-    std::vector<Config> configs(15);
+    std::vector<Config> configs(16);
     for (Config& c : configs) c.options.requestedMsaa = 4;
     configs[0].name = "full frame, as the game draws it";
     configs[1].name = "general pipelines (choices at run time)";
@@ -281,6 +281,8 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     configs[13].options.flatShading = configs[13].options.rasterFloor = true;
     configs[13].options.requestedMsaa = 1;
     configs[14].name = "full frame again (the run's noise)";
+    configs[15].name = "the sun in one map (no cascades)";
+    configs[15].options.sunCascades = 1;
     std::vector<render::Renderer> renderers(configs.size());
     for (size_t c = 0; c < configs.size(); ++c) {
         render::createRenderer(renderers[c], ctx, level, configs[c].options);
@@ -306,6 +308,26 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count());
     }
+    // How far each configuration's displayed frame is from the full frame's: the share of
+    // pixels off by more than 8/255 in a channel (the goldens' threshold).
+    std::vector<double> changed(configs.size());
+    std::vector<render::CapturedFrame> frames(configs.size());
+    for (size_t c = 0; c < configs.size(); ++c) {
+        render::drawFrame(renderers[c], inputs, readback);
+        frames[c] = render::capturedFrame(renderers[c]);
+    }
+    for (size_t c = 0; c < configs.size(); ++c) {
+        const std::vector<uint8_t>&a = frames[0].rgba8, &b = frames[c].rgba8;
+        if (a.size() != b.size()) continue;
+        size_t offPixels = 0;
+        for (size_t i = 0; i + 3 < a.size(); i += 4)
+            for (int k = 0; k < 3; ++k)
+                if (std::abs(int(a[i + k]) - int(b[i + k])) > 8) {
+                    ++offPixels;
+                    break;
+                }
+        changed[c] = 100.0 * double(offPixels) / double(a.size() / 4);
+    }
     std::vector<std::string> permutations = render::rendererInfo(renderers[0]).permutations;
     const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
     for (auto it = renderers.rbegin(); it != renderers.rend(); ++it) render::destroyRenderer(*it);
@@ -315,13 +337,13 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
         package.c_str(), cameraName.c_str(), msaa, ctx.properties.deviceName, kFrames,
         last[0].surfacesDrawn, static_cast<unsigned long long>(last[0].trianglesDrawn),
         last[0].draws);
-    std::printf("  %-42s %9s %9s %9s %9s %9s\n", "configuration", "GPU ms", "shadows", "forward",
-                "tonemap", "/ floor");
+    std::printf("  %-42s %9s %9s %9s %9s %9s %11s\n", "configuration", "GPU ms", "shadows",
+                "forward", "tonemap", "/ floor", "px off %");
     const double floor = median(gpu[12]);
     for (size_t c = 0; c < configs.size(); ++c)
-        std::printf("  %-42s %9.2f %9.2f %9.2f %9.2f %9.3f\n", configs[c].name, median(gpu[c]),
-                    median(shadows[c]), median(forward[c]), median(tonemap[c]),
-                    median(gpu[c]) / floor);
+        std::printf("  %-42s %9.2f %9.2f %9.2f %9.2f %9.3f %11.3f\n", configs[c].name,
+                    median(gpu[c]), median(shadows[c]), median(forward[c]), median(tonemap[c]),
+                    median(gpu[c]) / floor, changed[c]);
     std::printf("  full frame with its readback (wall): %.2f ms\n", median(withReadback));
     std::printf("  permutations:");
     for (const std::string& p : permutations) std::printf(" [%s]", p.c_str());
