@@ -67,6 +67,9 @@ const int SPEC_EFFECT_LIGHTS = 10;  // 0: the frame has no effect light; 1: the 
 // Benchmarks only (onelight-bench-render --view): features left out, each a constant instead, to
 // measure what it costs. Bits FEATURE_*; the frame is then wrong.
 const int SPEC_FEATURES_OFF = 11;
+// 0: its draws' primary is unoccluded (their baked masks are lit over them and no dynamic caster's
+// shadow may reach them): neither shadow is looked up. 1: the runtime map and the baked mask.
+const int SPEC_PRIMARY_SHADOW = 12;
 const int FEATURE_BASE_TEXTURE = 1;      // base colour texel: 1
 const int FEATURE_LIGHTMAP = 2;          // a static surface's lightmap: the constant ambient
 const int FEATURE_RUNTIME_SHADOW = 4;    // the primary's shadow map: unshadowed

@@ -30,15 +30,17 @@ void worldBounds(const glm::mat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec3& outM
     }
 }
 
-// The draw of a static surface, and of a dynamic mesh lit by `primary` (its material and key
-// set by the caller).
-Draw drawOf(const DrawSurface& surface) {
+// The draw of a static surface, with its primary's shadow unless it is unoccluded and
+// `dynamicShadow` (a dynamic caster's shadow may reach it) is false, and of a dynamic mesh lit
+// by `primary` (its material and key set by the caller).
+Draw drawOf(const DrawSurface& surface, bool dynamicShadow) {
     Draw d;
     d.firstIndex = surface.firstIndex;
     d.indexCount = surface.indexCount;
     d.primaryLight = surface.primaryLight;
     d.primaryKind = surface.primaryKind;
     d.atlas = surface.atlas;
+    d.primaryShadow = !surface.unoccluded || dynamicShadow;
     return d;
 }
 Draw drawOf(const DrawDynamicMesh& mesh, uint32_t primary) {
@@ -51,6 +53,43 @@ Draw drawOf(const DrawDynamicMesh& mesh, uint32_t primary) {
     return d;
 }
 
+struct Box {
+    glm::vec3 lo{0.0f}, hi{0.0f};
+};
+
+bool overlap(const Box& a, const Box& b) {
+    return glm::all(glm::lessThanEqual(a.lo, b.hi)) && glm::all(glm::lessThanEqual(b.lo, a.hi));
+}
+
+// A box around everywhere caster box `c` may cast its shadow under `light`, out to `reach`
+// metres: a sun's shadow is the box swept along the sun's travel; a point or spot light's lies
+// in the box's image under the scaling about the light by reach / (the light's distance to the
+// box), with the box itself the convex hull of the rays from the light through it, cut at reach.
+// The whole world when the light is in the box.
+Box shadowReach(const world::Light& light, const Box& c, float reach) {
+    Box r = c;
+    glm::vec3 shift(0.0f);
+    float scale = 1.0f;
+    if (light.type == world::LightType::kDirectional) {
+        shift = glm::normalize(light.direction) * reach;
+    } else {
+        const float distance =
+            glm::length(glm::clamp(light.position, c.lo, c.hi) - light.position);
+        if (distance < 1e-4f) return {glm::vec3(-1e30f), glm::vec3(1e30f)};
+        scale = std::max(reach / distance, 1.0f);
+    }
+    for (int k = 0; k < 8; ++k) {
+        const glm::vec3 corner((k & 1) ? c.hi.x : c.lo.x, (k & 2) ? c.hi.y : c.lo.y,
+                               (k & 4) ? c.hi.z : c.lo.z);
+        const glm::vec3 far = light.type == world::LightType::kDirectional
+                                  ? corner + shift
+                                  : light.position + (corner - light.position) * scale;
+        r.lo = glm::min(r.lo, far);
+        r.hi = glm::max(r.hi, far);
+    }
+    return r;
+}
+
 // The pipeline key of draw d (static when it has no entity) of its material.
 uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& options, const Draw& d,
                    bool effectLights) {
@@ -60,7 +99,7 @@ uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& optio
                                                 : glsl::SECONDARY_CONSTANT;
     return drawPipelineKey(materials, options, d.material,
                            dynamic ? uint32_t(glsl::PRIMARY_ANY) : d.primaryKind,
-                           uint32_t(secondary), effectLights);
+                           uint32_t(secondary), effectLights, d.primaryShadow);
 }
 
 }  // namespace
@@ -125,10 +164,30 @@ FrameView frameViewOf(const LevelData& level, float aspect, const FrameInputs& i
     return v;
 }
 
-DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& materials,
-                       const world::Visibility& visibility, const RendererOptions& options,
-                       size_t entityCount, const FrameView& view, FrameStats& stats) {
+DrawList buildDrawList(const Scene& scene, const RendererOptions& options, const FrameView& view,
+                       FrameStats& stats) {
+    const SceneGeometry& geometry = scene.geometry;
+    const SceneMaterials& materials = scene.materials;
+    const world::Visibility& visibility = scene.baked.visibility;
+    const size_t entityCount = scene.level.entities.size();
     DrawList list;
+    // Every dynamic caster, seen or not: its shadow may fall in view.
+    std::vector<Box> casters;
+    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
+        Box b;
+        worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, b.lo, b.hi);
+        casters.push_back(b);
+    }
+    const float levelReach = glm::length(scene.level.boundsMax - scene.level.boundsMin) + 1.0f;
+    // Whether a dynamic caster's shadow may reach static surface s under its primary.
+    auto dynamicShadowOn = [&](const DrawSurface& s) {
+        if (!s.unoccluded || casters.empty()) return false;
+        const world::Light& light = scene.level.lights.at(s.primaryLight);
+        const float reach = light.range > 0.0f ? light.range : levelReach;
+        for (const Box& c : casters)
+            if (overlap(shadowReach(light, c, reach), {s.boundsMin, s.boundsMax})) return true;
+        return false;
+    };
     const Frustum frustum = frustumOf(view.viewProj);
     const glm::vec3 eye = view.camera.position;
     const uint32_t materialCount = uint32_t(materials.classes.size());
@@ -140,7 +199,8 @@ DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& mate
         const glm::vec3 toCentre = 0.5f * (lo + hi) - eye;
         d.distance2 = glm::dot(toCentre, toCentre);
         list.draws.push_back(d);
-        if (d.primaryLight != kNoIndex) list.visibleLights.push_back(d.primaryLight);
+        if (d.primaryLight != kNoIndex && d.primaryShadow)
+            list.visibleLights.push_back(d.primaryLight);
     };
     const uint32_t visibleRow =
         options.visibilityCulling ? world::visibilityRowAt(visibility, eye) : kNoIndex;
@@ -156,7 +216,8 @@ DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& mate
             ++stats.surfacesHidden;
             continue;
         }
-        add(drawOf(surface), surface.material, surface.boundsMin, surface.boundsMax);
+        add(drawOf(surface, dynamicShadowOn(surface)), surface.material, surface.boundsMin,
+            surface.boundsMax);
         ++stats.surfacesDrawn;
     }
     list.entityVisible.assign(entityCount, 0);
@@ -196,7 +257,12 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
         }
         return added;
     };
-    for (const DrawSurface& surface : geometry.surfaces) add(drawOf(surface), surface.material);
+    for (const DrawSurface& surface : geometry.surfaces) {
+        add(drawOf(surface, false), surface.material);
+        // An unoccluded surface is drawn with its shadow while a dynamic caster's may reach it.
+        if (surface.unoccluded && !geometry.dynamicMeshes.empty())
+            add(drawOf(surface, true), surface.material);
+    }
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes)
         if (add(drawOf(mesh, kNoIndex), mesh.material)) list.entityVisible[mesh.entity] = 1;
     if (shadowedLight != kNoIndex && !options.flatShading) list.visibleLights = {shadowedLight};

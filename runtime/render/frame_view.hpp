@@ -28,6 +28,7 @@ struct Draw {
     uint32_t primaryLight = kNoIndex, atlas = kNoIndex;
     uint32_t primaryKind = 0;    // a static surface's PRIMARY_* (DrawSurface::primaryKind)
     uint32_t entity = kNoIndex;  // kNoIndex for static; a dynamic object's record in objectLighting
+    bool primaryShadow = true;   // false: an unoccluded surface no dynamic shadow reaches
     float distance2 = 0.0f;      // squared metres from the camera: dynamic draws front to back
 };
 
@@ -56,11 +57,10 @@ struct DrawList {
     std::vector<uint32_t> visibleLights;  // sorted, unique
     std::vector<uint8_t> entityVisible;   // per entity
 };
-/// Culls static surfaces (against the frustum and `visibility`) and dynamic meshes (against the
-/// frustum); counts them in `stats`.
-[[nodiscard]] DrawList buildDrawList(const SceneGeometry& geometry, const SceneMaterials& materials,
-                                     const world::Visibility& visibility,
-                                     const RendererOptions& options, size_t entityCount,
+/// Culls static surfaces (against the frustum and the baked visibility) and dynamic meshes
+/// (against the frustum); counts them in `stats`. An unoccluded surface is drawn with its
+/// primary's shadow when a dynamic caster's shadow may reach it (any dynamic mesh, seen or not).
+[[nodiscard]] DrawList buildDrawList(const Scene& scene, const RendererOptions& options,
                                      const FrameView& view, FrameStats& stats);
 
 /// The warm-up frame's draws (createRenderer): one triangle of the first surface or dynamic mesh

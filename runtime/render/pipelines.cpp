@@ -43,7 +43,8 @@ std::string permutationName(const PermutationKey& k) {
     }
     static const char* const kPrimary[5] = {" no-primary", "", " directional", " point", " spot"};
     name += kPrimary[std::min(k.primary, 4u)];
-    return name + kSecondary[k.secondary & 3u] + (k.effectLights ? "" : " no-effects");
+    return name + (k.primaryShadow ? "" : " unoccluded") + kSecondary[k.secondary & 3u] +
+           (k.effectLights ? "" : " no-effects");
 }
 
 // The pipeline keys the level's draws use: each static surface's and each dynamic mesh's, for
@@ -54,10 +55,18 @@ std::vector<uint32_t> forwardKeys(const SceneGeometry& geometry, const SceneMate
     std::vector<uint32_t> keys;
     for (const bool effects : {false, true}) {
         for (const DrawSurface& s : geometry.surfaces)
-            keys.push_back(drawPipelineKey(
-                materials, options, std::min(s.material, materialCount - 1), s.primaryKind,
-                uint32_t(s.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP : glsl::SECONDARY_CONSTANT),
-                effects));
+            for (const bool shadow : {false, true}) {
+                // An unoccluded surface's shadowed variant: while a dynamic caster may reach it.
+                if (!shadow && !s.unoccluded) continue;
+                if (shadow && s.unoccluded && geometry.dynamicMeshes.empty()) continue;
+                keys.push_back(drawPipelineKey(materials, options,
+                                               std::min(s.material, materialCount - 1),
+                                               s.primaryKind,
+                                               uint32_t(s.atlas != kNoIndex
+                                                            ? glsl::SECONDARY_LIGHTMAP
+                                                            : glsl::SECONDARY_CONSTANT),
+                                               effects, shadow));
+            }
         for (const DrawDynamicMesh& d : geometry.dynamicMeshes)
             keys.push_back(drawPipelineKey(
                 materials, options, std::min(d.material, materialCount - 1),
@@ -171,7 +180,8 @@ void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeo
                             {glsl::SPEC_PRIMARY, int(k.primary)},
                             {glsl::SPEC_SECONDARY, int(k.secondary)},
                             {glsl::SPEC_EFFECT_LIGHTS, k.effectLights ? 1 : 0},
-                            {glsl::SPEC_FEATURES_OFF, int(options.featuresOff)}}}};
+                            {glsl::SPEC_FEATURES_OFF, int(options.featuresOff)},
+                            {glsl::SPEC_PRIMARY_SHADOW, k.primaryShadow ? 1 : 0}}}};
         p.forward[key] = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
         p.permutations.push_back(permutationName(k));
     }
@@ -237,7 +247,7 @@ void createSkyPipeline(const vk::Context& ctx, Pipelines& p, const ForwardChoice
 
 uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions& options,
                          uint32_t material, uint32_t primary, uint32_t secondary,
-                         bool effectLights) {
+                         bool effectLights, bool primaryShadow) {
     if (options.flatShading) return 0u;
     PermutationKey k;
     k.materialClass = materials.classes[material];
@@ -249,6 +259,7 @@ uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions&
         k.primary = primary;
         k.secondary = secondary;
         k.effectLights = effectLights;
+        k.primaryShadow = primaryShadow;
     }
     return permutationKey(k);
 }

@@ -31,19 +31,22 @@ struct PermutationKey {
     uint32_t secondary = uint32_t(glsl::SECONDARY_ANY);
     bool effectLights = true;  // false: for frames without effect lights
     bool alphaBlend = false;   // glTF BLEND: blended over what is behind, drawn last, back to front
+    bool primaryShadow = true;  // false: its draws' primary is unoccluded (DrawSurface::unoccluded)
 };
 
 /// The key packed into a pipeline's map key: class bits 0-1, double-sided 2, alpha mask 3,
 /// texture slots 4-9, primary 10-12, secondary 13-14, effect lights 15, alpha blend 16 (so that
-/// blended draws sort after every opaque one).
+/// blended draws sort after every opaque one), no primary shadow 17.
 [[nodiscard]] inline uint32_t permutationKey(const PermutationKey& k) {
     return k.materialClass | (k.doubleSided ? 4u : 0u) | (k.alphaMask ? 8u : 0u) |
            (k.textures & 63u) << 4 | (k.primary & 7u) << 10 | (k.secondary & 3u) << 13 |
-           (k.effectLights ? 1u << 15 : 0u) | (k.alphaBlend ? 1u << 16 : 0u);
+           (k.effectLights ? 1u << 15 : 0u) | (k.alphaBlend ? 1u << 16 : 0u) |
+           (k.primaryShadow ? 0u : 1u << 17);
 }
 [[nodiscard]] inline PermutationKey unpackPermutationKey(uint32_t key) {
     return {key & 3u,         (key & 4u) != 0,  (key & 8u) != 0,        (key >> 4) & 63u,
-            (key >> 10) & 7u, (key >> 13) & 3u, (key & (1u << 15)) != 0, (key & (1u << 16)) != 0};
+            (key >> 10) & 7u, (key >> 13) & 3u, (key & (1u << 15)) != 0, (key & (1u << 16)) != 0,
+            (key & (1u << 17)) == 0};
 }
 [[nodiscard]] inline bool keyDoubleSided(uint32_t key) {
     return (key & 4u) != 0;
@@ -59,11 +62,13 @@ struct PermutationKey {
 /// PRIMARY_NONE or its primary's PRIMARY_<type>, `secondary` SECONDARY_LIGHTMAP or
 /// SECONDARY_CONSTANT; a dynamic mesh: PRIMARY_ANY (the game picks it per frame) and
 /// SECONDARY_OBJECT;
-/// `effectLights` whether the frame has any. Without options.specializeDraws every draw of a
-/// material shares the general pipeline.
+/// `effectLights` whether the frame has any; `primaryShadow` false for a static surface drawn
+/// without its primary's shadow (DrawSurface::unoccluded). Without options.specializeDraws every
+/// draw of a material shares the general pipeline.
 [[nodiscard]] uint32_t drawPipelineKey(const SceneMaterials& materials,
                                        const RendererOptions& options, uint32_t material,
-                                       uint32_t primary, uint32_t secondary, bool effectLights);
+                                       uint32_t primary, uint32_t secondary, bool effectLights,
+                                       bool primaryShadow = true);
 
 /// What the forward permutations are specialized for, besides the materials.
 struct ForwardChoices {

@@ -187,6 +187,12 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
         s.info.probes = scene.probes.baked;
         s.info.probeBytes = scene.probes.bytes;
         s.info.skyImage = scene.sky.present;
+        for (size_t i = 0; i < scene.geometry.surfaces.size(); ++i) {
+            if (level.level.surfaces[i].primaryLight == kNoIndex) continue;
+            ++s.info.surfacesWithPrimary;
+            s.info.surfacesUnoccluded += scene.geometry.surfaces[i].unoccluded ? 1u : 0u;
+            s.info.surfacesInShadow += scene.geometry.surfaces[i].primaryLight == kNoIndex ? 1u : 0u;
+        }
         s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
 
         createShadows(ctx, s.shadows, scene.level, options, !scene.geometry.dynamicMeshes.empty());
@@ -274,8 +280,7 @@ FrameStats drawFrame(Renderer& renderer, const FrameInputs& inputs, const FrameO
         frameViewOf(scene.level, float(s.targets.width) / float(s.targets.height), inputs);
     stats.ev100 = view.ev100;
     stats.exposure = view.exposure;
-    const DrawList list = buildDrawList(scene.geometry, scene.materials, scene.baked.visibility,
-                                        s.options, scene.level.entities.size(), view, stats);
+    const DrawList list = buildDrawList(scene, s.options, view, stats);
     return drawList(s, inputs, output, view, list, stats, cpuStart);
 }
 

@@ -114,6 +114,13 @@ struct RendererOptions {
     uint32_t requestedMsaa = 2;     // Black Ops' choice; the nearest supported is used
     uint32_t shadowMapSize = 1024;  // texels, every shadow layer
     uint32_t maxShadowLayers = 48;  // sun sunCascades, spot 1, omni 6 layers
+    // Static surfaces whose baked shadow mask is one value over all of them (world/
+    // surface_shadow.hpp) skip their primary's shadow lookups: a wholly lit one is drawn
+    // unshadowed while no dynamic caster's shadow may reach it, a wholly shadowed one without
+    // its primary. Not exact: a shadow finer than the mask's texels (a thin pole's) is lost on
+    // them (onelight-bench-render --view gives the pixels it changes). Off: every surface with a
+    // primary looks up both shadows.
+    bool skipUniformShadows = true;
     // The sun's shadow in cascades (render/shadows.hpp): 1 is one map over the whole radius,
     // whose 10 cm texels stair-step the courtyard's shadows near the camera.
     uint32_t sunCascades = 3;
@@ -180,6 +187,9 @@ struct RendererInfo {
     uint64_t probeBytes = 0;  // their cube array, every mip
     bool skyImage = false;    // the sky pass draws the level's sky image behind it
     double warmUpMs = 0.0;    // the warm-up frame in createRenderer (RendererOptions::warmUp)
+    // Static surfaces with a primary whose baked mask is lit over all of them, and those it
+    // shadows whole (RendererOptions::skipUniformShadows), of those with a primary.
+    uint32_t surfacesUnoccluded = 0, surfacesInShadow = 0, surfacesWithPrimary = 0;
 };
 
 struct RendererState;  // render/renderer_state.hpp

@@ -17,6 +17,7 @@
 #include "render/probe_records.hpp"
 #include "shading.hpp"
 #include "world/package/probe_section.hpp"
+#include "world/surface_shadow.hpp"
 
 namespace onelight::render {
 
@@ -716,6 +717,21 @@ void destroyGeometry(const vk::Context& ctx, SceneGeometry& geometry) {
     vk::destroyBuffer(ctx, geometry.vertices);
 }
 
+// The surfaces whose baked shadow mask is one value over all of them (world/surface_shadow.hpp):
+// wholly lit ones unoccluded, wholly shadowed ones without their primary.
+void applySurfaceShadows(SceneGeometry& geometry, const assets::LoadedLevel& loaded) {
+    const std::vector<world::SurfaceShadow> shadows =
+        world::surfaceShadows(loaded.level, loaded.baked);
+    for (size_t i = 0; i < geometry.surfaces.size() && i < shadows.size(); ++i) {
+        DrawSurface& s = geometry.surfaces[i];
+        if (shadows[i] == world::SurfaceShadow::kLit) s.unoccluded = true;
+        if (shadows[i] == world::SurfaceShadow::kShadowed) {
+            s.primaryLight = kNoIndex;
+            s.primaryKind = uint32_t(glsl::PRIMARY_NONE);
+        }
+    }
+}
+
 }  // namespace
 
 void createLightRecords(const vk::Context& ctx, vk::Buffer& buffer,
@@ -735,6 +751,8 @@ void createScene(const vk::Context& ctx, Scene& scene, const assets::LoadedLevel
     createGeometry(ctx, scene.geometry, loaded.level);
     createMaterials(ctx, scene.materials, loaded, options, scene.tables.linearClamp);
     createBakedLighting(ctx, scene.baked, loaded, scene.level.ambientLux);
+    if (scene.baked.present && options.skipUniformShadows && !options.flatShading)
+        applySurfaceShadows(scene.geometry, loaded);
     createProbes(ctx, scene.probes, loaded.baked.probes, scene.baked.present && options.probes,
                  scene.level.boundsMin, scene.level.boundsMax);
     createSky(ctx, scene.sky, loaded.sky);

@@ -46,6 +46,10 @@ struct DrawSurface {
     uint32_t firstIndex = 0, indexCount = 0;
     uint32_t material = 0, primaryLight = kNoIndex, atlas = kNoIndex;
     uint32_t primaryKind = 0;  // PRIMARY_*: none, else its primary light's type
+    // Its baked shadow mask is fully lit over all of it (world/surface_shadow.hpp): drawn
+    // without its primary's shadow lookups while no dynamic caster's shadow may reach it. (A
+    // surface the mask shadows whole is drawn without its primary: primaryKind PRIMARY_NONE.)
+    bool unoccluded = false;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
 };
 

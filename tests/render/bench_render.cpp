@@ -251,7 +251,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
         const char* name;
         render::RendererOptions options;
     };
-    std::vector<Config> configs(16);
+    std::vector<Config> configs(17);
     for (Config& c : configs) c.options.requestedMsaa = 4;
     configs[0].name = "full frame, as the game draws it";
     configs[1].name = "general pipelines (choices at run time)";
@@ -283,6 +283,8 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     configs[14].name = "full frame again (the run's noise)";
     configs[15].name = "the sun in one map (no cascades)";
     configs[15].options.sunCascades = 1;
+    configs[16].name = "shadow lookups on every lit surface";
+    configs[16].options.skipUniformShadows = false;
     std::vector<render::Renderer> renderers(configs.size());
     for (size_t c = 0; c < configs.size(); ++c) {
         render::createRenderer(renderers[c], ctx, level, configs[c].options);
@@ -330,6 +332,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     }
     std::vector<std::string> permutations = render::rendererInfo(renderers[0]).permutations;
     const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
+    const render::RendererInfo info = render::rendererInfo(renderers[0]);
     for (auto it = renderers.rbegin(); it != renderers.rend(); ++it) render::destroyRenderer(*it);
     std::printf(
         "onelight-bench-render --view %s %s: 1280x720, MSAA %ux, %s, %d interleaved frames, "
@@ -345,6 +348,9 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
                     median(gpu[c]), median(shadows[c]), median(forward[c]), median(tonemap[c]),
                     median(gpu[c]) / floor, changed[c]);
     std::printf("  full frame with its readback (wall): %.2f ms\n", median(withReadback));
+    std::printf("  static surfaces with a primary: %u, of which their baked masks light %u whole "
+                "and shadow %u whole\n",
+                info.surfacesWithPrimary, info.surfacesUnoccluded, info.surfacesInShadow);
     std::printf("  permutations:");
     for (const std::string& p : permutations) std::printf(" [%s]", p.c_str());
     std::printf("\n");

@@ -32,6 +32,7 @@ layout(constant_id = SPEC_SECONDARY) const int SECONDARY = SECONDARY_ANY;
 // (llvmpipe runs a loop's body once even for no iteration, and both sides of every branch).
 layout(constant_id = SPEC_EFFECT_LIGHTS) const int EFFECT_LIGHTS = 1;
 layout(constant_id = SPEC_FEATURES_OFF) const int FEATURES_OFF = 0;  // benchmarks only
+layout(constant_id = SPEC_PRIMARY_SHADOW) const int PRIMARY_SHADOW = 1;
 bool featureOn(int feature) { return (FEATURES_OFF & feature) == 0; }
 
 // Whether material m fills texture slot `slot` and the pipeline's materials may.
@@ -237,12 +238,15 @@ void main() {
         BrdfDots d = brdfDots(n, v, s.l);
         if (dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0) {
             float radius = frame.shadowParams.x;
-            float baked = featureOn(FEATURE_BAKED_SHADOW) && viewDistance > radius - frame.shadowParams.y
-                              ? bakedShadow() : 1.0;
-            float runtime = featureOn(FEATURE_RUNTIME_SHADOW) && viewDistance < radius
-                                ? runtimeShadow(light, type, p, geometricNormal, s.l, viewDistance) : 1.0;
-            float shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
-                                       frame.shadowParams.y);
+            float shadow = 1.0;
+            if (PRIMARY_SHADOW == 1) {
+                float baked = featureOn(FEATURE_BAKED_SHADOW) && viewDistance > radius - frame.shadowParams.y
+                                  ? bakedShadow() : 1.0;
+                float runtime = featureOn(FEATURE_RUNTIME_SHADOW) && viewDistance < radius
+                                    ? runtimeShadow(light, type, p, geometricNormal, s.l, viewDistance) : 1.0;
+                shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
+                                     frame.shadowParams.y);
+            }
             radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
                                            cavity, d) * s.illuminance * shadow;
         }
