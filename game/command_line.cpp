@@ -45,6 +45,10 @@ const world::CommandTable& commandTable() {
                               "none"),
             world::integerOption("--msaa", "N", 1, 64, "samples, the nearest supported is used",
                                  std::to_string(d.msaa)),
+            world::flagOption("--fxaa",
+                              "post-process anti-aliasing of the tonemapped frame (FXAA), with "
+                              "--msaa 1 in place of MSAA",
+                              "off"),
             world::integerOption("--anisotropy", "N", 1, 16,
                                  "material textures' anisotropic filtering taps (1: off), "
                                  "clamped to the device's",
@@ -127,6 +131,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
     out.capture = parsed.text("--capture");
     out.msaa = countOf(parsed, "--msaa", out.msaa);
     out.anisotropy = countOf(parsed, "--anisotropy", out.anisotropy);
+    out.fxaa = parsed.has("--fxaa");
     out.shadowMapSize = countOf(parsed, "--shadow-map-size", out.shadowMapSize);
     out.sunCascades = countOf(parsed, "--sun-cascades", out.sunCascades);
     out.shadowDistance = realOf(parsed, "--shadow-distance", out.shadowDistance);

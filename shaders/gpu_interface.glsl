@@ -50,6 +50,9 @@ const int TEXTURE_SLOT_COUNT = 6;
 const int BINDING_TONEMAP_HDR = 0;  // sampler2D, the resolved pre-exposed frame
 const int BINDING_TONEMAP_LUT = 1;  // sampler3D, the colour LUT
 
+// The post-process anti-aliasing pass's set 0 (RendererOptions::fxaa).
+const int BINDING_FXAA_INPUT = 0;  // sampler2D, the tonemapped frame
+
 // Specialization constants of forward.frag.
 const int SPEC_MATERIAL_CLASS = 0;     // MATERIAL_* of lighting.glsl
 const int SPEC_ALPHA_MODE = 1;         // ALPHA_MODE_*: the materials' glTF alpha mode

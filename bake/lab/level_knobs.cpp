@@ -42,6 +42,9 @@ std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, const std::strin
     // The runtime's knobs: the baseline's package, one onelight option changed.
     for (const std::string& v : pick({"1", "4"}, quick))
         out.push_back(setting("MSAA", v + "x", {}, {"--msaa", v}));
+    // Post-process anti-aliasing against MSAA (docs/frame-rate.md, "Anti-aliasing").
+    for (const std::string& v : pick({"1", "4"}, quick))
+        out.push_back(setting("MSAA + FXAA", v + "x + FXAA", {}, {"--msaa", v, "--fxaa"}));
     for (const std::string& v : pick({"16", "4"}, quick))
         out.push_back(setting("anisotropy", v, {}, {"--anisotropy", v}));
     out.push_back(setting("probes", "off", {}, {"--no-probes"}));

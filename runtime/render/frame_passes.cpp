@@ -72,6 +72,23 @@ void beginForwardRendering(const Scene& scene, const RenderTargets& targets, VkC
     vk::beginRendering(cmd, extentOf(targets), &color, &depth);
 }
 
+// A full-screen triangle of `pipeline` (with its one set) into `target`, whatever was in it.
+void fullscreenPass(VkCommandBuffer cmd, const RenderTargets& targets, const vk::Image& target,
+                    VkPipeline pipeline, VkPipelineLayout layout, VkDescriptorSet set) {
+    vk::imageBarrier(
+        cmd, target,
+        vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                          0, kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
+    const VkRenderingAttachmentInfo color = vk::colorAttachment(
+        target.view, VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_STORE);
+    vk::beginRendering(cmd, extentOf(targets), &color, nullptr);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0, nullptr);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    vkCmdEndRendering(cmd);
+}
+
 // The sky pass, after the opaque draws: only the pixels they left at the far plane run it.
 void recordSky(VkCommandBuffer cmd, const Pipelines& pipelines) {
     if (!pipelines.sky) return;
@@ -164,19 +181,19 @@ void recordTonemapPass(VkCommandBuffer cmd, const RenderTargets& targets,
                           VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kColorStage,
                           VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                           VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+    // With FXAA the tonemap writes its input, and the FXAA pass the display image.
+    const bool fxaa = pipelines.fxaa && targets.tonemapped.image;
+    fullscreenPass(cmd, targets, fxaa ? targets.tonemapped : targets.display, pipelines.tonemap,
+                   pipelines.tonemapLayout.layout, sets.tonemap);
+    if (!fxaa) return;
     vk::imageBarrier(
-        cmd, targets.display,
-        vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          VK_PIPELINE_STAGE_TRANSFER_BIT, 0, kColorStage,
-                          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
-    const VkRenderingAttachmentInfo color = vk::colorAttachment(
-        targets.display.view, VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_STORE);
-    vk::beginRendering(cmd, extentOf(targets), &color, nullptr);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.tonemap);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.tonemapLayout.layout, 0,
-                            1, &sets.tonemap, 0, nullptr);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
-    vkCmdEndRendering(cmd);
+        cmd, targets.tonemapped,
+        vk::layoutBarrier(VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kColorStage,
+                          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+    fullscreenPass(cmd, targets, targets.display, pipelines.fxaa, pipelines.fxaaLayout.layout,
+                   sets.fxaa);
 }
 
 void recordOutputs(const vk::Context& ctx, VkCommandBuffer cmd, const RenderTargets& targets,

@@ -13,6 +13,7 @@
 #include "forward.frag.spv.h"
 #include "forward.vert.spv.h"
 #include "fullscreen.vert.spv.h"
+#include "fxaa.frag.spv.h"
 #include "shadow.vert.spv.h"
 #include "shadow_masked.frag.spv.h"
 #include "shadow_masked.vert.spv.h"
@@ -144,6 +145,9 @@ void createLayouts(const vk::Context& ctx, Pipelines& p) {
         {vk::layoutBinding(glsl::BINDING_TONEMAP_HDR, kSampled, kFragment),
          vk::layoutBinding(glsl::BINDING_TONEMAP_LUT, kSampled, kFragment)}};
     vk::createPipelineLayout(ctx, p.tonemapLayout, tonemapSets, 0, 0);
+    const std::vector<std::vector<VkDescriptorSetLayoutBinding>> fxaaSets = {
+        {vk::layoutBinding(glsl::BINDING_FXAA_INPUT, kSampled, kFragment)}};
+    vk::createPipelineLayout(ctx, p.fxaaLayout, fxaaSets, 0, 0);
 }
 
 // Forward permutations: only those the level's draws use (and the flat one for benchmarks).
@@ -206,7 +210,7 @@ void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeo
     }
 }
 
-void createShadowAndTonemapPipelines(const vk::Context& ctx, Pipelines& p) {
+void createShadowAndTonemapPipelines(const vk::Context& ctx, Pipelines& p, bool fxaa) {
     vk::GraphicsPipelineDesc shadow;
     shadow.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kShadowVertSpirv, {}}};
     shadow.vertexBindings = {{0, sizeof(world::Vertex), VK_VERTEX_INPUT_RATE_VERTEX}};
@@ -227,6 +231,11 @@ void createShadowAndTonemapPipelines(const vk::Context& ctx, Pipelines& p) {
     tonemap.depthTest = tonemap.depthWrite = false;
     tonemap.colorFormats = {kDisplayFormat};
     p.tonemap = vk::createGraphicsPipeline(ctx, p.tonemapLayout, tonemap);
+    if (fxaa) {
+        tonemap.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kFullscreenVertSpirv, {}},
+                          {VK_SHADER_STAGE_FRAGMENT_BIT, kFxaaFragSpirv, {}}};
+        p.fxaa = vk::createGraphicsPipeline(ctx, p.fxaaLayout, tonemap);
+    }
 }
 
 // The sky pass: the forward pass's layout and targets, no depth writes, behind everything.
@@ -269,12 +278,12 @@ void createPipelines(const vk::Context& ctx, Pipelines& pipelines, const SceneGe
                      const ForwardChoices& choices) {
     createLayouts(ctx, pipelines);
     createForwardPipelines(ctx, pipelines, geometry, materials, options, choices);
-    createShadowAndTonemapPipelines(ctx, pipelines);
+    createShadowAndTonemapPipelines(ctx, pipelines, options.fxaa);
     createSkyPipeline(ctx, pipelines, choices);
 }
 
 void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines) {
-    for (VkPipeline* p : {&pipelines.sky, &pipelines.tonemap, &pipelines.shadow,
+    for (VkPipeline* p : {&pipelines.sky, &pipelines.tonemap, &pipelines.fxaa, &pipelines.shadow,
                           &pipelines.maskedShadow, &pipelines.flat,
                           &pipelines.depth[0], &pipelines.depth[1]}) {
         if (*p) vkDestroyPipeline(ctx.device, *p, nullptr);
@@ -283,6 +292,7 @@ void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines) {
     for (auto& [key, pipeline] : pipelines.forward)
         vkDestroyPipeline(ctx.device, pipeline, nullptr);
     pipelines.forward.clear();
+    vk::destroyPipelineLayout(ctx, pipelines.fxaaLayout);
     vk::destroyPipelineLayout(ctx, pipelines.tonemapLayout);
     vk::destroyPipelineLayout(ctx, pipelines.maskedShadowLayout);
     vk::destroyPipelineLayout(ctx, pipelines.shadowLayout);
@@ -299,8 +309,8 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
         {kUniform, kFramesInFlight * countOf(frame, kUniform)},
         {kStorage, kFramesInFlight * countOf(frame, kStorage)},
         {kSampled, kFramesInFlight * countOf(frame, kSampled) +
-                       materials * uint32_t(glsl::TEXTURE_SLOT_COUNT) + 2}};
-    sets.pool = vk::createDescriptorPool(ctx, kFramesInFlight + materials + 1, sizes);
+                       materials * uint32_t(glsl::TEXTURE_SLOT_COUNT) + 3}};
+    sets.pool = vk::createDescriptorPool(ctx, kFramesInFlight + materials + 2, sizes);
 
     const LookupTables& tables = scene.tables;
     const vk::Image& shadowMaps = sampledShadowMaps(shadows);
@@ -334,6 +344,8 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
         sets.material.push_back(m.set);
     }
     sets.tonemap = vk::allocateDescriptorSet(ctx, sets.pool, pipelines.tonemapLayout.setLayouts[0]);
+    if (pipelines.fxaa)
+        sets.fxaa = vk::allocateDescriptorSet(ctx, sets.pool, pipelines.fxaaLayout.setLayouts[0]);
     writeTonemapSet(ctx, sets, targets, tables);
 }
 
@@ -341,7 +353,7 @@ void destroyDescriptorSets(const vk::Context& ctx, DescriptorSets& sets) {
     if (sets.pool) vkDestroyDescriptorPool(ctx.device, sets.pool, nullptr);
     sets.pool = VK_NULL_HANDLE;
     sets.material.clear();
-    sets.tonemap = VK_NULL_HANDLE;
+    sets.tonemap = sets.fxaa = VK_NULL_HANDLE;
     sets.frame.fill(VK_NULL_HANDLE);
 }
 
@@ -352,6 +364,12 @@ void writeTonemapSet(const vk::Context& ctx, const DescriptorSets& sets,
     w.image(glsl::BINDING_TONEMAP_HDR, targets.hdr.view, tables.nearestClamp);
     w.image(glsl::BINDING_TONEMAP_LUT, tables.lut.view, tables.linearClamp);
     w.update(ctx);
+    if (sets.fxaa && targets.tonemapped.image) {
+        vk::DescriptorWriter f;
+        f.set = sets.fxaa;
+        f.image(glsl::BINDING_FXAA_INPUT, targets.tonemapped.view, tables.linearClamp);
+        f.update(ctx);
+    }
 }
 
 }  // namespace onelight::render

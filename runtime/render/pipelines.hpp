@@ -80,7 +80,7 @@ struct ForwardChoices {
 };
 
 struct Pipelines {
-    vk::PipelineLayout forwardLayout, shadowLayout, tonemapLayout;  // owned
+    vk::PipelineLayout forwardLayout, shadowLayout, tonemapLayout, fxaaLayout;  // owned
     // Alpha-masked shadow casters: a material's set (set 1 of forwardLayout) as set 0.
     vk::PipelineLayout maskedShadowLayout;  // owned
     std::map<uint32_t, VkPipeline> forward;                         // owned, by permutationKey
@@ -90,6 +90,7 @@ struct Pipelines {
     VkPipeline shadow = VK_NULL_HANDLE;     // owned
     VkPipeline maskedShadow = VK_NULL_HANDLE;  // owned: alpha-masked casters' coverage test
     VkPipeline tonemap = VK_NULL_HANDLE;    // owned
+    VkPipeline fxaa = VK_NULL_HANDLE;       // owned, with RendererOptions::fxaa
     VkPipeline sky = VK_NULL_HANDLE;        // owned, when the level's sky is an image
     std::vector<std::string> permutations;  // the forward pipelines built, by name
 };
@@ -108,13 +109,15 @@ struct DescriptorSets {
     std::array<VkDescriptorSet, kFramesInFlight> frame{};  // set 0 of the forward pass, per slot
     std::vector<VkDescriptorSet> material;                 // set 1, per material
     VkDescriptorSet tonemap = VK_NULL_HANDLE;
+    VkDescriptorSet fxaa = VK_NULL_HANDLE;  // with RendererOptions::fxaa
 };
 
 void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pipelines& pipelines,
                           const FrameSlots& frames, const Scene& scene, const ShadowMaps& shadows,
                           const vk::Buffer& lightRecords, const RenderTargets& targets);
 void destroyDescriptorSets(const vk::Context& ctx, DescriptorSets& sets);
-/// Points the tonemap set at the current HDR target (after createTargets).
+/// Points the tonemap set at the current HDR target, and the FXAA set at the tonemapped one
+/// (after createTargets).
 void writeTonemapSet(const vk::Context& ctx, const DescriptorSets& sets,
                      const RenderTargets& targets, const LookupTables& tables);
 

@@ -199,7 +199,7 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
         s.info.shadowLayers = s.shadows.layers;
         createLightRecords(ctx, s.lightRecords, scene.level.lights, lightShadowViews(s.shadows));
         createTargets(ctx, s.targets, std::max(options.width, 1u), std::max(options.height, 1u),
-                      samples);
+                      samples, options.fxaa);
         createReadback(ctx, s.readback, s.targets.width, s.targets.height);
         createFrameSlots(ctx, s.frames, s.shadows.views.size(), scene.level.entities.size());
         ForwardChoices choices;
@@ -256,7 +256,8 @@ void resizeRenderer(Renderer& renderer, uint32_t width, uint32_t height) {
     const VkSampleCountFlagBits samples = s.targets.samples;
     destroyReadback(ctx, s.readback);
     destroyTargets(ctx, s.targets);
-    createTargets(ctx, s.targets, std::max(width, 1u), std::max(height, 1u), samples);
+    createTargets(ctx, s.targets, std::max(width, 1u), std::max(height, 1u), samples,
+                  s.options.fxaa);
     createReadback(ctx, s.readback, s.targets.width, s.targets.height);
     writeTonemapSet(ctx, s.descriptors, s.targets, s.scene.tables);
 }

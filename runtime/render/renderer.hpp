@@ -114,6 +114,9 @@ struct RendererOptions {
     uint32_t requestedMsaa = 2;     // Black Ops' choice; the nearest supported is used
     uint32_t shadowMapSize = 1024;  // texels, every shadow layer
     uint32_t maxShadowLayers = 48;  // sun sunCascades, spot 1, omni 6 layers
+    // Post-process anti-aliasing of the tonemapped frame (FXAA, runtime/render/shaders/
+    // fxaa.frag), for MSAA 1x: docs/frame-rate.md compares the two on frame time and edge error.
+    bool fxaa = false;
     // Static surfaces whose baked shadow mask is one value over all of them (world/
     // surface_shadow.hpp) skip their primary's shadow lookups: a wholly lit one is drawn
     // unshadowed while no dynamic caster's shadow may reach it, a wholly shadowed one without

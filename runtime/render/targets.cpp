@@ -24,7 +24,7 @@ VkSampleCountFlagBits pickSamples(const vk::Context& ctx, uint32_t requested) {
 }
 
 void createTargets(const vk::Context& ctx, RenderTargets& targets, uint32_t width, uint32_t height,
-                   VkSampleCountFlagBits samples) {
+                   VkSampleCountFlagBits samples, bool fxaa) {
     targets.width = width;
     targets.height = height;
     targets.samples = samples;
@@ -38,6 +38,10 @@ void createTargets(const vk::Context& ctx, RenderTargets& targets, uint32_t widt
     desc.format = kDisplayFormat;
     desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     vk::createImage(ctx, targets.display, desc);
+    if (fxaa) {
+        desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+        vk::createImage(ctx, targets.tonemapped, desc);
+    }
     desc.samples = samples;
     if (samples != VK_SAMPLE_COUNT_1_BIT) {
         desc.format = kHdrFormat;
@@ -52,6 +56,7 @@ void createTargets(const vk::Context& ctx, RenderTargets& targets, uint32_t widt
 void destroyTargets(const vk::Context& ctx, RenderTargets& targets) {
     vk::destroyImage(ctx, targets.depth);
     vk::destroyImage(ctx, targets.msaaColor);
+    vk::destroyImage(ctx, targets.tonemapped);
     vk::destroyImage(ctx, targets.display);
     vk::destroyImage(ctx, targets.hdr);
 }

@@ -25,11 +25,13 @@ struct RenderTargets {
     vk::Image msaaColor;  // owned, only when samples > 1
     vk::Image depth;      // owned
     vk::Image hdr;        // owned, RGBA16F, the forward pass's output, the tonemap's input
-    vk::Image display;    // owned, B8G8R8A8, the tonemap's output
+    vk::Image display;    // owned, B8G8R8A8, the tonemap's output (with FXAA, the FXAA pass's)
+    vk::Image tonemapped;  // owned, B8G8R8A8, with FXAA only: the tonemap's output, its input
 };
 
+/// The targets for `samples` per pixel, and the FXAA pass's input when `fxaa`.
 void createTargets(const vk::Context& ctx, RenderTargets& targets, uint32_t width, uint32_t height,
-                   VkSampleCountFlagBits samples);
+                   VkSampleCountFlagBits samples, bool fxaa);
 void destroyTargets(const vk::Context& ctx, RenderTargets& targets);
 
 /// Host buffers the frame is copied into when read back, and the last frame read back.
