@@ -5,7 +5,7 @@
 #   scripts/fuzz.sh --seconds S     S seconds per target
 #   scripts/fuzz.sh --runs N        N executions per target (the benchmark: 10000000)
 #   scripts/fuzz.sh ... --only T,U  only the targets named (fuzz_gltf, fuzz_q3, fuzz_q3_text,
-#                                   fuzz_image, fuzz_zip, fuzz_package, fuzz_replay,
+#                                   fuzz_md3, fuzz_image, fuzz_zip, fuzz_package, fuzz_replay,
 #                                   fuzz_command_line)
 #   scripts/fuzz.sh ... --timeout S one input running longer than S wall seconds is a finding
 #                                   (20; raise it on a loaded machine, where a starved process
@@ -16,7 +16,7 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$root/build-fuzz
 limit=(-max_total_time=60)
-all="fuzz_gltf fuzz_q3 fuzz_q3_text fuzz_image fuzz_zip fuzz_package fuzz_replay fuzz_command_line"
+all="fuzz_gltf fuzz_q3 fuzz_q3_text fuzz_md3 fuzz_image fuzz_zip fuzz_package fuzz_replay fuzz_command_line"
 targets=$all
 timeout=20
 usage="usage: scripts/fuzz.sh [--seconds S | --runs N] [--only TARGET,...] [--timeout S]"
@@ -106,16 +106,17 @@ def map_excerpt(text, budget=32768):
         size += end - begin
     return "".join(out)
 
-counts = {".tga": 0, ".jpg": 0, ".png": 0, ".shader": 0, ".map": 0}
+counts = {".tga": 0, ".jpg": 0, ".png": 0, ".shader": 0, ".map": 0, ".md3": 0}
 limits = {".tga": (8, 65536), ".jpg": (8, 65536), ".png": (4, 65536), ".shader": (8, 16384),
-          ".map": (3, 1 << 20)}
+          ".map": (3, 1 << 20), ".md3": (12, 16384)}
 for pk3 in sorted(glob.glob(os.path.join(folder, "*.pk3"))):
     with zipfile.ZipFile(pk3) as z:
         for info in z.infolist():
             ext = os.path.splitext(info.filename)[1].lower()
             if ext not in counts or counts[ext] >= limits[ext][0] or info.file_size > limits[ext][1]:
                 continue
-            target = "fuzz_image" if ext in (".tga", ".jpg", ".png") else "fuzz_q3_text"
+            target = ("fuzz_image" if ext in (".tga", ".jpg", ".png")
+                      else "fuzz_md3" if ext == ".md3" else "fuzz_q3_text")
             name = f"{counts[ext]}{ext}"
             data = z.read(info)
             if ext == ".map":

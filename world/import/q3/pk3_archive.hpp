@@ -47,10 +47,12 @@ private:
 /// alphabetical: a later one wins). Empty when the folder does not exist.
 [[nodiscard]] std::vector<std::string> pk3sInLoadOrder(const std::string& folder);
 
-/// The largest file of each kind read from a game (docs/limits.md): a map and a shader script
-/// (a map's source .map: kMaxMapSourceBytes; images: kMaxEncodedImageBytes).
+/// The largest file of each kind read from a game (docs/limits.md): a map, a shader script and a
+/// model (MD3; the game's largest real ones are under 1 MiB) (a map's source .map:
+/// kMaxMapSourceBytes; images: kMaxEncodedImageBytes).
 inline constexpr size_t kMaxMapBytes = size_t(1) << 30;
 inline constexpr size_t kMaxShaderScriptBytes = size_t(16) << 20;
+inline constexpr size_t kMaxModelBytes = size_t(64) << 20;
 
 /// The most loose files a game folder may hold (its tree, pk3s left out).
 inline constexpr size_t kMaxLooseFiles = 200000;
