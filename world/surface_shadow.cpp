@@ -22,7 +22,8 @@ std::vector<SurfaceShadow> surfaceShadows(const CompiledLevel& level, const Bake
             continue;
         bool anyLit = false, anyShadowed = false, anyBetween = false;
         for (uint32_t y = s.lightmapY; y < s.lightmapY + s.lightmapHeight && !anyBetween; ++y) {
-            const uint8_t* row = &baked.shadowMask[atlasOffset[s.atlas] + uint64_t(y) * atlas.width];
+            const uint8_t* row =
+                &baked.shadowMask[atlasOffset[s.atlas] + uint64_t(y) * atlas.width];
             for (uint32_t x = s.lightmapX; x < s.lightmapX + s.lightmapWidth; ++x) {
                 anyLit |= row[x] == 255;
                 anyShadowed |= row[x] == 0;

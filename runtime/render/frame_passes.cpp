@@ -78,8 +78,8 @@ void fullscreenPass(VkCommandBuffer cmd, const RenderTargets& targets, const vk:
     vk::imageBarrier(
         cmd, target,
         vk::layoutBarrier(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                          VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                          0, kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
+                          VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
+                          kColorStage, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT));
     const VkRenderingAttachmentInfo color = vk::colorAttachment(
         target.view, VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_STORE);
     vk::beginRendering(cmd, extentOf(targets), &color, nullptr);

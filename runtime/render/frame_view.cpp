@@ -73,8 +73,7 @@ Box shadowReach(const world::Light& light, const Box& c, float reach) {
     if (light.type == world::LightType::kDirectional) {
         shift = glm::normalize(light.direction) * reach;
     } else {
-        const float distance =
-            glm::length(glm::clamp(light.position, c.lo, c.hi) - light.position);
+        const float distance = glm::length(glm::clamp(light.position, c.lo, c.hi) - light.position);
         if (distance < 1e-4f) return {glm::vec3(-1e30f), glm::vec3(1e30f)};
         scale = std::max(reach / distance, 1.0f);
     }

@@ -35,7 +35,7 @@ std::string permutationName(const PermutationKey& k) {
     static const char* const kSecondary[4] = {"", " lightmap", " object", " constant"};
     std::string name = std::string(kClassNames[k.materialClass]) +
                        (k.doubleSided ? "+double-sided" : "") + (k.alphaMask ? "+alpha-mask" : "") +
-           (k.alphaBlend ? "+alpha-blend" : "");
+                       (k.alphaBlend ? "+alpha-blend" : "");
     if (k.textures != uint32_t(glsl::ALL_TEXTURES)) {
         std::string slots;
         for (int t = 0; t < 6; ++t)
@@ -60,13 +60,11 @@ std::vector<uint32_t> forwardKeys(const SceneGeometry& geometry, const SceneMate
                 // An unoccluded surface's shadowed variant: while a dynamic caster may reach it.
                 if (!shadow && !s.unoccluded) continue;
                 if (shadow && s.unoccluded && geometry.dynamicMeshes.empty()) continue;
-                keys.push_back(drawPipelineKey(materials, options,
-                                               std::min(s.material, materialCount - 1),
-                                               s.primaryKind,
-                                               uint32_t(s.atlas != kNoIndex
-                                                            ? glsl::SECONDARY_LIGHTMAP
-                                                            : glsl::SECONDARY_CONSTANT),
-                                               effects, shadow));
+                keys.push_back(drawPipelineKey(
+                    materials, options, std::min(s.material, materialCount - 1), s.primaryKind,
+                    uint32_t(s.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP
+                                                 : glsl::SECONDARY_CONSTANT),
+                    effects, shadow));
             }
         for (const DrawDynamicMesh& d : geometry.dynamicMeshes)
             keys.push_back(drawPipelineKey(
@@ -255,8 +253,8 @@ void createSkyPipeline(const vk::Context& ctx, Pipelines& p, const ForwardChoice
 }  // namespace
 
 uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions& options,
-                         uint32_t material, uint32_t primary, uint32_t secondary,
-                         bool effectLights, bool primaryShadow) {
+                         uint32_t material, uint32_t primary, uint32_t secondary, bool effectLights,
+                         bool primaryShadow) {
     if (options.flatShading) return 0u;
     PermutationKey k;
     k.materialClass = materials.classes[material];
@@ -283,9 +281,9 @@ void createPipelines(const vk::Context& ctx, Pipelines& pipelines, const SceneGe
 }
 
 void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines) {
-    for (VkPipeline* p : {&pipelines.sky, &pipelines.tonemap, &pipelines.fxaa, &pipelines.shadow,
-                          &pipelines.maskedShadow, &pipelines.flat,
-                          &pipelines.depth[0], &pipelines.depth[1]}) {
+    for (VkPipeline* p :
+         {&pipelines.sky, &pipelines.tonemap, &pipelines.fxaa, &pipelines.shadow,
+          &pipelines.maskedShadow, &pipelines.flat, &pipelines.depth[0], &pipelines.depth[1]}) {
         if (*p) vkDestroyPipeline(ctx.device, *p, nullptr);
         *p = VK_NULL_HANDLE;
     }

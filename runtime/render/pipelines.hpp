@@ -44,8 +44,14 @@ struct PermutationKey {
            (k.primaryShadow ? 0u : 1u << 17);
 }
 [[nodiscard]] inline PermutationKey unpackPermutationKey(uint32_t key) {
-    return {key & 3u,         (key & 4u) != 0,  (key & 8u) != 0,        (key >> 4) & 63u,
-            (key >> 10) & 7u, (key >> 13) & 3u, (key & (1u << 15)) != 0, (key & (1u << 16)) != 0,
+    return {key & 3u,
+            (key & 4u) != 0,
+            (key & 8u) != 0,
+            (key >> 4) & 63u,
+            (key >> 10) & 7u,
+            (key >> 13) & 3u,
+            (key & (1u << 15)) != 0,
+            (key & (1u << 16)) != 0,
             (key & (1u << 17)) == 0};
 }
 [[nodiscard]] inline bool keyDoubleSided(uint32_t key) {
@@ -82,17 +88,17 @@ struct ForwardChoices {
 struct Pipelines {
     vk::PipelineLayout forwardLayout, shadowLayout, tonemapLayout, fxaaLayout;  // owned
     // Alpha-masked shadow casters: a material's set (set 1 of forwardLayout) as set 0.
-    vk::PipelineLayout maskedShadowLayout;  // owned
-    std::map<uint32_t, VkPipeline> forward;                         // owned, by permutationKey
-    VkPipeline flat = VK_NULL_HANDLE;  // owned, only with RendererOptions::flatShading
+    vk::PipelineLayout maskedShadowLayout;   // owned
+    std::map<uint32_t, VkPipeline> forward;  // owned, by permutationKey
+    VkPipeline flat = VK_NULL_HANDLE;        // owned, only with RendererOptions::flatShading
     // The depth pre-pass: forward.vert alone, depth only, culling back faces or none (owned).
     VkPipeline depth[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-    VkPipeline shadow = VK_NULL_HANDLE;     // owned
+    VkPipeline shadow = VK_NULL_HANDLE;        // owned
     VkPipeline maskedShadow = VK_NULL_HANDLE;  // owned: alpha-masked casters' coverage test
-    VkPipeline tonemap = VK_NULL_HANDLE;    // owned
-    VkPipeline fxaa = VK_NULL_HANDLE;       // owned, with RendererOptions::fxaa
-    VkPipeline sky = VK_NULL_HANDLE;        // owned, when the level's sky is an image
-    std::vector<std::string> permutations;  // the forward pipelines built, by name
+    VkPipeline tonemap = VK_NULL_HANDLE;       // owned
+    VkPipeline fxaa = VK_NULL_HANDLE;          // owned, with RendererOptions::fxaa
+    VkPipeline sky = VK_NULL_HANDLE;           // owned, when the level's sky is an image
+    std::vector<std::string> permutations;     // the forward pipelines built, by name
 };
 
 /// Pipeline layouts, the forward permutations the draws of `geometry` use, the shadow, sky and

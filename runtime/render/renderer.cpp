@@ -55,12 +55,11 @@ void recordFrame(RendererState& s, uint32_t slotIndex, const FrameView& view, co
     const VkCommandBuffer cmd = slot.cmd;
     vk::beginOneTimeCommands(cmd);
     writeTimestamp(s.frames, cmd, slot, 0);
-    stats.shadowViewsRendered =
-        recordShadowPasses(s.shadows, cmd,
-                           {s.pipelines.shadow, s.pipelines.maskedShadow,
-                            s.pipelines.shadowLayout.layout, s.pipelines.maskedShadowLayout.layout,
-                            &s.scene.materials, &s.descriptors.material},
-                           s.scene.geometry, list.visibleLights, view.entityTransforms);
+    stats.shadowViewsRendered = recordShadowPasses(
+        s.shadows, cmd,
+        {s.pipelines.shadow, s.pipelines.maskedShadow, s.pipelines.shadowLayout.layout,
+         s.pipelines.maskedShadowLayout.layout, &s.scene.materials, &s.descriptors.material},
+        s.scene.geometry, list.visibleLights, view.entityTransforms);
     writeTimestamp(s.frames, cmd, slot, 1);
     recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors,
                       s.descriptors.frame[slotIndex], view, list, stats);
@@ -191,7 +190,8 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
             if (level.level.surfaces[i].primaryLight == kNoIndex) continue;
             ++s.info.surfacesWithPrimary;
             s.info.surfacesUnoccluded += scene.geometry.surfaces[i].unoccluded ? 1u : 0u;
-            s.info.surfacesInShadow += scene.geometry.surfaces[i].primaryLight == kNoIndex ? 1u : 0u;
+            s.info.surfacesInShadow +=
+                scene.geometry.surfaces[i].primaryLight == kNoIndex ? 1u : 0u;
         }
         s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
 

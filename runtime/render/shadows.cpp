@@ -199,9 +199,10 @@ void createShadows(const vk::Context& ctx, ShadowMaps& shadows, const LevelData&
     uint32_t layers = 0;
     for (uint32_t i = 0; i < lights.size(); ++i) {
         if (lights[i].role != world::LightRole::kPrimary || options.flatShading) continue;
-        const uint32_t need = lights[i].type == world::LightType::kPoint         ? 6u
-                              : lights[i].type == world::LightType::kDirectional ? uint32_t(splits.size())
-                                                                                 : 1u;
+        const uint32_t need = lights[i].type == world::LightType::kPoint ? 6u
+                              : lights[i].type == world::LightType::kDirectional
+                                  ? uint32_t(splits.size())
+                                  : 1u;
         if (layers + need > options.maxShadowLayers) continue;
         ShadowSlot slot;
         slot.light = i;
@@ -215,7 +216,8 @@ void createShadows(const vk::Context& ctx, ShadowMaps& shadows, const LevelData&
     shadows.layers = layers;
     for (const ShadowSlot& slot : shadows.slots)
         if (lights[slot.light].type == world::LightType::kDirectional)
-            for (uint32_t k = 0; k < slot.viewCount; ++k) shadows.views[slot.firstView + k].split = splits[k];
+            for (uint32_t k = 0; k < slot.viewCount; ++k)
+                shadows.views[slot.firstView + k].split = splits[k];
 
     vk::ImageDesc desc;
     desc.format = kDepthFormat;
@@ -290,7 +292,8 @@ const vk::Image& sampledShadowMaps(const ShadowMaps& shadows) {
     return shadows.frameShadows.image ? shadows.frameShadows : shadows.staticShadows;
 }
 
-void updateShadowViews(ShadowMaps& shadows, const LevelData& level, const Camera& camera, const std::vector<uint32_t>& visibleLights) {
+void updateShadowViews(ShadowMaps& shadows, const LevelData& level, const Camera& camera,
+                       const std::vector<uint32_t>& visibleLights) {
     for (uint32_t light : visibleLights) {
         if (shadows.lightSlot[light] == kNoIndex) continue;
         const ShadowSlot& slot = shadows.slots[shadows.lightSlot[light]];

@@ -41,7 +41,7 @@ struct ShadowSlot {
 
 struct ShadowView {
     glm::mat4 viewProj{1.0f};
-    glm::vec4 params{0.0f};  // GpuShadowView::params
+    glm::vec4 params{0.0f};       // GpuShadowView::params
     float depthBiasClamp = 0.0f;  // depth units, the slope bias's limit; 0: none
     bool staticValid = false;     // its static casters are rendered and still fit
     glm::vec2 sunCell{1e30f};     // a sun cascade: the snapped camera cell it was fitted around
@@ -76,7 +76,8 @@ void destroyShadows(const vk::Context& ctx, ShadowMaps& shadows);
 [[nodiscard]] const vk::Image& sampledShadowMaps(const ShadowMaps& shadows);
 
 /// Fits the views of the slots of `visibleLights` for this camera; marks slots to redraw.
-void updateShadowViews(ShadowMaps& shadows, const LevelData& level, const Camera& camera, const std::vector<uint32_t>& visibleLights);
+void updateShadowViews(ShadowMaps& shadows, const LevelData& level, const Camera& camera,
+                       const std::vector<uint32_t>& visibleLights);
 /// Copies the shadow views fitted for this frame into `out` (GpuShadowView per view).
 void writeShadowViews(const ShadowMaps& shadows, GpuShadowView* out);
 /// What the shadow passes draw with: opaque casters depth only; alpha-masked ones (glTF MASK)

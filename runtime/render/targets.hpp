@@ -22,10 +22,10 @@ inline constexpr VkFormat kDisplayFormat = VK_FORMAT_B8G8R8A8_UNORM;  // as the 
 struct RenderTargets {
     uint32_t width = 0, height = 0;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    vk::Image msaaColor;  // owned, only when samples > 1
-    vk::Image depth;      // owned
-    vk::Image hdr;        // owned, RGBA16F, the forward pass's output, the tonemap's input
-    vk::Image display;    // owned, B8G8R8A8, the tonemap's output (with FXAA, the FXAA pass's)
+    vk::Image msaaColor;   // owned, only when samples > 1
+    vk::Image depth;       // owned
+    vk::Image hdr;         // owned, RGBA16F, the forward pass's output, the tonemap's input
+    vk::Image display;     // owned, B8G8R8A8, the tonemap's output (with FXAA, the FXAA pass's)
     vk::Image tonemapped;  // owned, B8G8R8A8, with FXAA only: the tonemap's output, its input
 };
 

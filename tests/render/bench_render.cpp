@@ -351,9 +351,10 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
                     median(gpu[c]), median(shadows[c]), median(forward[c]), median(tonemap[c]),
                     median(gpu[c]) / floor, changed[c]);
     std::printf("  full frame with its readback (wall): %.2f ms\n", median(withReadback));
-    std::printf("  static surfaces with a primary: %u, of which their baked masks light %u whole "
-                "and shadow %u whole\n",
-                info.surfacesWithPrimary, info.surfacesUnoccluded, info.surfacesInShadow);
+    std::printf(
+        "  static surfaces with a primary: %u, of which their baked masks light %u whole "
+        "and shadow %u whole\n",
+        info.surfacesWithPrimary, info.surfacesUnoccluded, info.surfacesInShadow);
     std::printf("  permutations:");
     for (const std::string& p : permutations) std::printf(" [%s]", p.c_str());
     std::printf("\n");
@@ -366,7 +367,8 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
 // is measured where geometry aliases: the edge pixels, those whose MSAA 1x and 4x frames differ by
 // more than 2/255 (MSAA changes nothing else). Reports each configuration's mean error over them
 // (in 1/255) and the share of them off by more than 8/255.
-void benchAntiAliasing(vk::Context& ctx, const std::string& package, const std::string& cameraName) {
+void benchAntiAliasing(vk::Context& ctx, const std::string& package,
+                       const std::string& cameraName) {
     const assets::LoadedLevel level = assets::loadLevel(package);
     const world::Camera* camera = nullptr;
     for (const world::Camera& c : level.level.cameras)
@@ -425,25 +427,28 @@ void benchAntiAliasing(vk::Context& ctx, const std::string& package, const std::
                 double sum = 0.0;
                 for (uint32_t dy = 0; dy < 2; ++dy)
                     for (uint32_t dx = 0; dx < 2; ++dx)
-                        sum += double(linear[((size_t(2 * y + dy) * 2560) + 2 * x + dx) * 4 + size_t(k)]);
+                        sum += double(
+                            linear[((size_t(2 * y + dy) * 2560) + 2 * x + dx) * 4 + size_t(k)]);
                 const float display = glsl::displayValue(float(sum / 4.0) * s.exposure);
                 reference[(size_t(y) * 1280 + x) * 4 + size_t(k)] =
                     uint8_t(std::lround(std::clamp(display, 0.0f, 1.0f) * 255.0f));
             }
     auto diff = [](const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, size_t i) {
         int worst = 0;
-        for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(int(a[i + size_t(k)]) - int(b[i + size_t(k)])));
+        for (int k = 0; k < 3; ++k)
+            worst = std::max(worst, std::abs(int(a[i + size_t(k)]) - int(b[i + size_t(k)])));
         return worst;
     };
     std::vector<size_t> edges;
     for (size_t i = 0; i + 3 < frames[0].size(); i += 4)
         if (diff(frames[0], frames[1], i) > 2) edges.push_back(i);
-    std::printf("onelight-bench-render --aa %s %s: 1280x720, %s, %d interleaved frames, medians; "
-                "%zu edge pixels (%.2f%%), reference 16 samples a pixel\n",
-                package.c_str(), cameraName.c_str(), ctx.properties.deviceName, kFrames,
-                edges.size(), 100.0 * double(edges.size()) / (1280.0 * 720.0));
-    std::printf("  %-18s %9s %16s %14s %16s %14s\n", "configuration", "GPU ms",
-                "tonemap+AA ms", "edge error", "edge px > 8/255", "all px > 8/255");
+    std::printf(
+        "onelight-bench-render --aa %s %s: 1280x720, %s, %d interleaved frames, medians; "
+        "%zu edge pixels (%.2f%%), reference 16 samples a pixel\n",
+        package.c_str(), cameraName.c_str(), ctx.properties.deviceName, kFrames, edges.size(),
+        100.0 * double(edges.size()) / (1280.0 * 720.0));
+    std::printf("  %-18s %9s %16s %14s %16s %14s\n", "configuration", "GPU ms", "tonemap+AA ms",
+                "edge error", "edge px > 8/255", "all px > 8/255");
     for (size_t c = 0; c < kConfigs; ++c) {
         double sum = 0.0;
         size_t over = 0, overAll = 0;
@@ -452,9 +457,11 @@ void benchAntiAliasing(vk::Context& ctx, const std::string& package, const std::
             sum += d;
             over += d > 8 ? 1 : 0;
         }
-        for (size_t i = 0; i + 3 < frames[c].size(); i += 4) overAll += diff(frames[c], reference, i) > 8;
+        for (size_t i = 0; i + 3 < frames[c].size(); i += 4)
+            overAll += diff(frames[c], reference, i) > 8;
         std::printf("  %-18s %9.2f %16.2f %14.2f %15.2f%% %13.2f%%\n", configs[c].name,
-                    median(gpu[c]), median(post[c]), sum / double(std::max<size_t>(edges.size(), 1)),
+                    median(gpu[c]), median(post[c]),
+                    sum / double(std::max<size_t>(edges.size(), 1)),
                     100.0 * double(over) / double(std::max<size_t>(edges.size(), 1)),
                     100.0 * double(overAll) / (1280.0 * 720.0));
     }

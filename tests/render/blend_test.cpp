@@ -84,8 +84,7 @@ glm::vec3 radianceAt(const render::CapturedFrame& frame, glm::vec3 p) {
 
 void expectNear(glm::vec3 got, glm::vec3 want, const char* where) {
     for (int c = 0; c < 3; ++c)  // RGBA16F: 11 bits of mantissa, one rounding per blend
-        EXPECT_NEAR(got[c], want[c], 0.01f * std::max(want[c], 1.0f))
-            << where << ", channel " << c;
+        EXPECT_NEAR(got[c], want[c], 0.01f * std::max(want[c], 1.0f)) << where << ", channel " << c;
 }
 
 void checkSheets(bool skyImage) {
@@ -104,12 +103,12 @@ void checkSheets(bool skyImage) {
     const glm::vec3 redOnly = radianceAt(r.frame, {-0.7f, 0.0f, -2.0f});
     const glm::vec3 blueOnly = radianceAt(r.frame, {1.2f, 0.0f, -3.0f});
     const glm::vec3 both = radianceAt(r.frame, {0.0f, 0.0f, -2.0f});
-    std::printf("[ blend ] %s: sky %.2f %.2f %.2f; red over sky %.2f %.2f %.2f; blue over sky "
-                "%.2f %.2f %.2f; red over blue over sky %.2f %.2f %.2f\n",
-                skyImage ? "sky image" : "uniform sky", double(sky.r), double(sky.g),
-                double(sky.b), double(redOnly.r), double(redOnly.g), double(redOnly.b),
-                double(blueOnly.r), double(blueOnly.g), double(blueOnly.b), double(both.r),
-                double(both.g), double(both.b));
+    std::printf(
+        "[ blend ] %s: sky %.2f %.2f %.2f; red over sky %.2f %.2f %.2f; blue over sky "
+        "%.2f %.2f %.2f; red over blue over sky %.2f %.2f %.2f\n",
+        skyImage ? "sky image" : "uniform sky", double(sky.r), double(sky.g), double(sky.b),
+        double(redOnly.r), double(redOnly.g), double(redOnly.b), double(blueOnly.r),
+        double(blueOnly.g), double(blueOnly.b), double(both.r), double(both.g), double(both.b));
     expectNear(sky, kSky, "the sky");
     expectNear(redOnly, a * kRed + (1.0f - a) * kSky, "red over the sky");
     expectNear(blueOnly, a * kBlue + (1.0f - a) * kSky, "blue over the sky");

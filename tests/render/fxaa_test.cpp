@@ -16,7 +16,8 @@ constexpr uint32_t kWidth = 320, kHeight = 180;
 
 test::Scene boxYard() {
     test::Scene s;
-    s.materials = {{{0.7f, 0.7f, 0.68f, 1.0f}, 0.0f, 1.0f}, {{0.1f, 0.1f, 0.12f, 1.0f}, 0.0f, 0.6f}};
+    s.materials = {{{0.7f, 0.7f, 0.68f, 1.0f}, 0.0f, 1.0f},
+                   {{0.1f, 0.1f, 0.12f, 1.0f}, 0.0f, 0.6f}};
     test::addFloor(s, 0.0f, 0.0f, 12.0f, 0.0f, 0);
     test::addBox(s, {-3.0f, 0.0f, -2.0f}, {-1.5f, 2.0f, -0.5f}, 1);
     test::addBox(s, {1.0f, 0.0f, -3.0f}, {2.5f, 1.0f, -1.5f}, 1);
@@ -68,10 +69,11 @@ TEST(PostAntiAliasing, FxaaBringsTheEdgesTowardsMsaaAndLeavesTheRest) {
         }
     }
     ASSERT_GT(edges, 200u) << "the yard's edges should alias at MSAA 1x";
-    std::printf("[ fxaa ] %zu edge pixels: MSAA 1x %.1f/255 from the 4x frame, with FXAA %.1f; "
-                "%.2f%% of the other pixels changed by more than 8/255\n",
-                edges, edgeOne / double(edges), edgeFxaa / double(edges),
-                100.0 * double(restChanged) / double(rest));
+    std::printf(
+        "[ fxaa ] %zu edge pixels: MSAA 1x %.1f/255 from the 4x frame, with FXAA %.1f; "
+        "%.2f%% of the other pixels changed by more than 8/255\n",
+        edges, edgeOne / double(edges), edgeFxaa / double(edges),
+        100.0 * double(restChanged) / double(rest));
     EXPECT_LT(edgeFxaa, 0.8 * edgeOne);
     EXPECT_LT(double(restChanged) / double(rest), 0.01);
 }

@@ -42,8 +42,8 @@ void writeGrateTexture(const std::string& path) {
 world::MeshData quad(const char* name, float half, float height, int material, bool uv) {
     world::MeshData m;
     m.name = name;
-    m.positions = {{-half, height, -half}, {half, height, -half}, {half, height, half},
-                   {-half, height, half}};
+    m.positions = {
+        {-half, height, -half}, {half, height, -half}, {half, height, half}, {-half, height, half}};
     m.normals.assign(4, glm::vec3(0.0f, 1.0f, 0.0f));
     if (uv)
         for (const glm::vec3& p : m.positions)
@@ -95,11 +95,10 @@ std::vector<double> luminanceOf(const assets::LoadedLevel& level, float shadowRa
         options.shadowRadius = shadowRadius;
         options.shadowBand = 0.5f * shadowRadius;
     }
-    const glm::vec3 floorPoint =
-        glm::vec3(0.0f, 1.0f, 0.0f) + kSunTravel * (1.0f / -kSunTravel.y);
+    const glm::vec3 floorPoint = glm::vec3(0.0f, 1.0f, 0.0f) + kSunTravel * (1.0f / -kSunTravel.y);
     render::FrameInputs inputs;
-    inputs.camera = render::cameraFromYawPitch(floorPoint + glm::vec3(0.0f, kCameraHeight, 0.0f),
-                                               0.0f, -90.0f);
+    inputs.camera =
+        render::cameraFromYawPitch(floorPoint + glm::vec3(0.0f, kCameraHeight, 0.0f), 0.0f, -90.0f);
     inputs.camera.yfov = kYfov;
     const test::RenderedFrame r = test::renderOnce(level, options, inputs);
     EXPECT_EQ(r.validationErrors, 0u);
@@ -112,7 +111,7 @@ std::vector<double> luminanceOf(const assets::LoadedLevel& level, float shadowRa
 }
 
 struct Openness {
-    double mean = 0.0;            // the floor's share of the sun over one period of the grate
+    double mean = 0.0;              // the floor's share of the sun over one period of the grate
     double open = 0.0, shut = 0.0;  // pixels over 90% and under 10% of the sun
 };
 
@@ -146,10 +145,10 @@ TEST(MaskedShadowCasters, AGrateLetsTheSunThroughItsHolesAsTheBakedMaskDoes) {
     // 0.2 m one the baked mask.
     const Openness runtime = opennessOf(luminanceOf(level, 0.0f, 0), noPrimary, unshadowed);
     const Openness baked = opennessOf(luminanceOf(level, 0.2f, 0), noPrimary, unshadowed);
-    std::printf("[ masked casters ] open fraction %.3f; runtime shadow %.3f (%.0f%% of pixels "
-                "open, %.0f%% shut); baked mask %.3f\n",
-                kOpenFraction, runtime.mean, 100.0 * runtime.open, 100.0 * runtime.shut,
-                baked.mean);
+    std::printf(
+        "[ masked casters ] open fraction %.3f; runtime shadow %.3f (%.0f%% of pixels "
+        "open, %.0f%% shut); baked mask %.3f\n",
+        kOpenFraction, runtime.mean, 100.0 * runtime.open, 100.0 * runtime.shut, baked.mean);
     // The runtime map resolves the 12.5 cm holes with 1.1 cm texels: their share of one period
     // is the open fraction but for the filter's and the offsets' blur along the holes' edges.
     EXPECT_NEAR(runtime.mean, kOpenFraction, 0.03);

@@ -16,9 +16,9 @@ namespace {
 using namespace onelight;
 
 constexpr uint32_t kWidth = 64, kHeight = 360;
-constexpr float kYfov = 0.3f;       // radians: 5 mm a pixel row at 3 m, 5 cm at 30 m
-constexpr float kWallTop = 3.0f;    // metres
-constexpr float kWallFar = 0.2f;    // the wall's far face, z
+constexpr float kYfov = 0.3f;                  // radians: 5 mm a pixel row at 3 m, 5 cm at 30 m
+constexpr float kWallTop = 3.0f;               // metres
+constexpr float kWallFar = 0.2f;               // the wall's far face, z
 constexpr float kEdgeZ = kWallFar + kWallTop;  // the sun at 45 degrees: the shadow's edge
 
 // A 120 m floor and a wall along x, 3 m high, lit by a 45-degree sun travelling towards +z: the
@@ -65,8 +65,8 @@ Edge edgeSeenFrom(const assets::LoadedLevel& level, float height, uint32_t casca
         lum[row] = 0.2126f * px[0] + 0.7152f * px[1] + 0.0722f * px[2];
     }
     auto at = [&](float zw) {
-        const int row = std::clamp(int(std::floor((zw - kEdgeZ) / pixel + 0.5f * float(kHeight))), 0,
-                                   int(kHeight) - 1);
+        const int row = std::clamp(int(std::floor((zw - kEdgeZ) / pixel + 0.5f * float(kHeight))),
+                                   0, int(kHeight) - 1);
         return lum[size_t(row)];
     };
     const float shadowed = at(kEdgeZ - 1.0f), lit = at(kEdgeZ + 1.0f);
@@ -106,10 +106,11 @@ TEST(SunCascades, TheShadowEdgeIsWhereTheGeometryPutsItAndAsSharpAsItsCascade) {
         const Edge e = edgeSeenFrom(level, height, 3);
         const float texel = cascadeTexel(height, diagonal);
         const float pixel = 2.0f * height * std::tan(0.5f * kYfov) / float(kHeight);
-        std::printf("[ sun cascades ] %4.0f m: texel %.2f cm, pixel %.2f cm; edge at %+.2f cm "
-                    "from the geometry's, 10-90%% width %.2f cm, contrast %.1f\n",
-                    double(height), 100.0 * double(texel), 100.0 * double(pixel),
-                    100.0 * double(e.position - kEdgeZ), 100.0 * double(e.width), double(e.contrast));
+        std::printf(
+            "[ sun cascades ] %4.0f m: texel %.2f cm, pixel %.2f cm; edge at %+.2f cm "
+            "from the geometry's, 10-90%% width %.2f cm, contrast %.1f\n",
+            double(height), 100.0 * double(texel), 100.0 * double(pixel),
+            100.0 * double(e.position - kEdgeZ), 100.0 * double(e.width), double(e.contrast));
         EXPECT_GT(e.contrast, 5.0f) << height << " m: no shadow, or no sun";
         // The filter is a 3-texel tent (10-90%: about 2 texels), plus a pixel's footprint.
         EXPECT_LT(e.width, 2.5f * texel + 2.0f * pixel) << height << " m";

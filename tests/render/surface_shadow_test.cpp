@@ -19,8 +19,7 @@ constexpr uint32_t kWidth = 320, kHeight = 180;
 
 test::Scene tiledYard() {
     test::Scene s;
-    s.materials = {{{0.6f, 0.6f, 0.58f, 1.0f}, 0.0f, 1.0f},
-                   {{0.8f, 0.3f, 0.2f, 1.0f}, 0.0f, 0.5f}};
+    s.materials = {{{0.6f, 0.6f, 0.58f, 1.0f}, 0.0f, 1.0f}, {{0.8f, 0.3f, 0.2f, 1.0f}, 0.0f, 0.5f}};
     test::addTiles(s, {-8.0f, 0.0f, 8.0f}, {8.0f, 0.0f, 8.0f}, {8.0f, 0.0f, -8.0f},
                    {-8.0f, 0.0f, -8.0f}, 8, 8, 0);
     test::addBox(s, {-1.0f, 0.0f, -1.0f}, {1.0f, 2.0f, 1.0f}, 1);
@@ -85,9 +84,10 @@ TEST(SurfaceShadows, SkippingTheLookupsAUniformMaskMakesMootKeepsTheFrameAndDyna
     EXPECT_FALSE(anyNamed(reference.permutations, "unoccluded"));
     const double boxAndShadow = changedShare(reference, noBox);
     const double changed = changedShare(skipped, reference);
-    std::printf("[ surface shadows ] the dynamic box and its shadow: %.2f%% of pixels; skipping "
-                "the moot lookups changes %.3f%%\n",
-                100.0 * boxAndShadow, 100.0 * changed);
+    std::printf(
+        "[ surface shadows ] the dynamic box and its shadow: %.2f%% of pixels; skipping "
+        "the moot lookups changes %.3f%%\n",
+        100.0 * boxAndShadow, 100.0 * changed);
     // The test sees the box's shadow, which falls on tiles the mask lights whole...
     ASSERT_GT(boxAndShadow, 0.005);
     // ...and the skipped lookups keep it (without the dynamic casters' reach, the shadow goes).

@@ -32,7 +32,7 @@ void setName(char (&field)[N], const char* name) {
 // One frame, one tag, one surface of one triangle over three vertices and one shader.
 struct SmallModel {
     std::vector<uint8_t> bytes;
-    size_t surface = 0;  // the surface's offset
+    size_t surface = 0;                          // the surface's offset
     size_t frame = 0, triangle = 0, vertex = 0;  // offsets of records the tests damage
 };
 
@@ -126,11 +126,11 @@ TEST(Md3Models, AModelBuiltHereReadsBackAsWritten) {
 
 // The stored normal's two angles: (cos a sin b, sin a sin b, cos b), a step 2 pi / 256.
 TEST(Md3Models, NormalsDecodeFromTheirTwoAngles) {
-    EXPECT_NEAR(md3Normal(0).z, 1.0f, 1e-6f);                  // b = 0: up
-    EXPECT_NEAR(md3Normal(int16_t(128)).z, -1.0f, 1e-6f);      // b = pi: down
-    const glm::vec3 x = md3Normal(int16_t(64));                // a = 0, b = pi / 2: +x
+    EXPECT_NEAR(md3Normal(0).z, 1.0f, 1e-6f);              // b = 0: up
+    EXPECT_NEAR(md3Normal(int16_t(128)).z, -1.0f, 1e-6f);  // b = pi: down
+    const glm::vec3 x = md3Normal(int16_t(64));            // a = 0, b = pi / 2: +x
     EXPECT_NEAR(x.x, 1.0f, 1e-6f);
-    const glm::vec3 y = md3Normal(int16_t((64 << 8) | 64));    // a = pi / 2, b = pi / 2: +y
+    const glm::vec3 y = md3Normal(int16_t((64 << 8) | 64));  // a = pi / 2, b = pi / 2: +y
     EXPECT_NEAR(y.y, 1.0f, 1e-6f);
     for (int bits = 0; bits < 65536; bits += 97)
         EXPECT_NEAR(glm::length(md3Normal(int16_t(uint16_t(bits)))), 1.0f, 1e-5f);
@@ -203,17 +203,20 @@ TEST(Md3Models, EveryInstalledModelReadsAndMostKeepInsideTheirFramesBounds) {
                 triangles += s.indices.size() / 3;
                 for (size_t k = 0; k < s.positions.size(); ++k) {
                     const Md3FrameInfo& f = m.frames[k / s.vertexCount];
-                    inside &= glm::all(glm::greaterThanEqual(s.positions[k], f.boundsMin - 1.0f / 32.0f)) &&
-                              glm::all(glm::lessThanEqual(s.positions[k], f.boundsMax + 1.0f / 32.0f));
+                    inside &=
+                        glm::all(
+                            glm::greaterThanEqual(s.positions[k], f.boundsMin - 1.0f / 32.0f)) &&
+                        glm::all(glm::lessThanEqual(s.positions[k], f.boundsMax + 1.0f / 32.0f));
                     EXPECT_NEAR(glm::length(s.normals[k]), 1.0f, 1e-5f);
                 }
             }
             if (!inside && outside++ == 0) firstOutside = files.where(key);
         }
     }
-    std::printf("[ md3 ] %zu installed models, %zu triangles; %zu with vertices "
-                "outside their frames' stored bounds (the first: %s)\n",
-                models, triangles, outside, firstOutside.c_str());
+    std::printf(
+        "[ md3 ] %zu installed models, %zu triangles; %zu with vertices "
+        "outside their frames' stored bounds (the first: %s)\n",
+        models, triangles, outside, firstOutside.c_str());
     EXPECT_GT(models, 100u);
     EXPECT_LT(double(outside), 0.1 * double(models));
 }

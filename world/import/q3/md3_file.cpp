@@ -31,7 +31,8 @@ template <typename Record>
 void checkBlock(const std::string& place, const char* what, int64_t offset, int64_t count,
                 uint64_t begin, uint64_t end) {
     const uint64_t bytes = uint64_t(count) * sizeof(Record);
-    if (offset < 0 || uint64_t(offset) < begin || uint64_t(offset) > end || bytes > end - uint64_t(offset))
+    if (offset < 0 || uint64_t(offset) < begin || uint64_t(offset) > end ||
+        bytes > end - uint64_t(offset))
         throw Error(place + ": " + what + " at byte " + std::to_string(offset) + ", " +
                     std::to_string(count) + " of " + std::to_string(sizeof(Record)) +
                     " bytes, reach past bytes " + std::to_string(begin) + ".." +
@@ -67,21 +68,24 @@ Md3Surface readSurface(std::span<const uint8_t> bytes, uint64_t start, int32_t f
     checkCount(place, "shaders", h.shaderCount, 0, kMd3MaxShaders);
     checkCount(place, "vertices", h.vertexCount, 0, kMd3MaxVertices);
     checkCount(place, "triangles", h.triangleCount, 0, kMd3MaxTriangles);
-    if (h.endOffset < int32_t(sizeof(Md3SurfaceHeader)) || uint64_t(h.endOffset) > bytes.size() - start)
+    if (h.endOffset < int32_t(sizeof(Md3SurfaceHeader)) ||
+        uint64_t(h.endOffset) > bytes.size() - start)
         throw Error(place + ": ends at byte " + std::to_string(int64_t(start) + h.endOffset) +
                     " of the file's " + std::to_string(bytes.size()) +
                     "; expected its end inside the file, after its header");
     const uint64_t end = start + uint64_t(h.endOffset);
-    checkBlock<Md3Shader>(place, "shaders", int64_t(start) + h.shadersOffset, h.shaderCount, start, end);
-    checkBlock<Md3Triangle>(place, "triangles", int64_t(start) + h.trianglesOffset,
-                            h.triangleCount, start, end);
+    checkBlock<Md3Shader>(place, "shaders", int64_t(start) + h.shadersOffset, h.shaderCount, start,
+                          end);
+    checkBlock<Md3Triangle>(place, "triangles", int64_t(start) + h.trianglesOffset, h.triangleCount,
+                            start, end);
     checkBlock<Md3TexCoord>(place, "texture coordinates", int64_t(start) + h.texCoordsOffset,
                             h.vertexCount, start, end);
     checkBlock<Md3Vertex>(place, "vertices", int64_t(start) + h.verticesOffset,
                           int64_t(h.vertexCount) * frameCount, start, end);
     for (int32_t k = 0; k < h.shaderCount; ++k)
-        s.shaders.push_back(nameOf(
-            recordAt<Md3Shader>(bytes, start + uint64_t(h.shadersOffset) + uint64_t(k) * sizeof(Md3Shader)).name));
+        s.shaders.push_back(nameOf(recordAt<Md3Shader>(bytes, start + uint64_t(h.shadersOffset) +
+                                                                  uint64_t(k) * sizeof(Md3Shader))
+                                       .name));
     s.vertexCount = uint32_t(h.vertexCount);
     s.indices.reserve(size_t(h.triangleCount) * 3);
     for (int32_t t = 0; t < h.triangleCount; ++t) {
@@ -127,8 +131,9 @@ glm::vec3 md3Normal(int16_t encoded) {
 
 Md3Model parseMd3(std::span<const uint8_t> bytes, const std::string& where) {
     if (bytes.size() < sizeof(Md3Header))
-        throw Error(where + ": " + std::to_string(bytes.size()) + " bytes; expected an MD3 of at least " +
-                    std::to_string(sizeof(Md3Header)) + " (its header)");
+        throw Error(where + ": " + std::to_string(bytes.size()) +
+                    " bytes; expected an MD3 of at least " + std::to_string(sizeof(Md3Header)) +
+                    " (its header)");
     const Md3Header h = recordAt<Md3Header>(bytes, 0);
     if (std::memcmp(h.magic, kMd3Magic, 4) != 0)
         throw Error(where + ": does not start with IDP3; expected a Quake 3 model (MD3)");
