@@ -71,31 +71,48 @@ def maps_of(folder):
 
 def held_seconds(holds, start, end):
     """Seconds of [start, end] (epoch) during which the run was held: stopped by scripts/hold,
-    which appends "START END" (epoch seconds) to the file `holds` (the work folder's). A held step's
-    wall time less these is what it took, so that a run can share the machine with a build."""
+    which appends "START END" (epoch seconds) to the file `holds` (the work folder's). A held
+    step's wall time less these is what it took, so that a run can share the machine with a
+    build. Overlapping holds count once."""
     if not holds or not os.path.exists(holds):
         return 0.0
-    total = 0.0
+    spans = []
     for line in open(holds):
         parts = line.split()
         if len(parts) == 2:
-            a, b = float(parts[0]), float(parts[1])
-            total += max(0.0, min(b, end) - max(a, start))
+            a, b = max(float(parts[0]), start), min(float(parts[1]), end)
+            if b > a:
+                spans.append((a, b))
+    total, reached = 0.0, start
+    for a, b in sorted(spans):
+        a = max(a, reached)
+        if b > a:
+            total += b - a
+            reached = b
     return total
 
 
 def run(argv, args):
-    """(exit code, output, seconds) of argv within args.timeout; exit code None on a timeout.
-    The seconds leave out the time the run was held (held_seconds of args.holds)."""
+    """(exit code, output, seconds) of argv; exit code None when it ran past args.timeout. The
+    seconds, and the time the timeout counts, leave out the time the run was held
+    (held_seconds of args.holds)."""
     start, wall = time.monotonic(), time.time()
-    try:
-        p = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                           timeout=args.timeout, text=True, errors="replace")
-        code, out = p.returncode, p.stdout
-    except subprocess.TimeoutExpired as e:
-        out = e.stdout.decode(errors="replace") if isinstance(e.stdout, bytes) else e.stdout
-        code, out = None, out or ""
-    return code, out, time.monotonic() - start - held_seconds(args.holds, wall, time.time())
+    with tempfile.TemporaryFile(mode="w+", errors="replace") as out:
+        p = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, text=True)
+        code = None
+        while True:
+            try:
+                code = p.wait(timeout=1.0)
+                break
+            except subprocess.TimeoutExpired:
+                ran = time.monotonic() - start - held_seconds(args.holds, wall, time.time())
+                if ran > args.timeout:
+                    p.kill()
+                    p.wait()
+                    break
+        out.seek(0)
+        text = out.read()
+    return code, text, time.monotonic() - start - held_seconds(args.holds, wall, time.time())
 
 
 def reason(output, fallback):

@@ -238,18 +238,22 @@ void benchMaterialPipeline(vk::Context& ctx, const std::string& package) {
     }
 }
 
+// The level's camera `name`; throws naming the package when it has none of that name.
+render::Camera cameraNamed(const assets::LoadedLevel& level, const std::string& package,
+                           const std::string& name) {
+    for (const world::Camera& c : level.level.cameras)
+        if (c.name == name) return render::cameraFromLevel(c);
+    throw std::runtime_error(package + ": no camera named '" + name + "'");
+}
+
 // Where a real level's frame goes: one view of a package (`onelight-bench-render --view PACKAGE
 // CAMERA`, e.g. a Quake 3 map's spawn0) at 1280x720 with MSAA 4x, configurations interleaved
 // frame by frame: the frame as the game draws it, and with one feature changed each, down to
 // the raster floor. Each row's difference to the full frame is that feature's cost.
 void benchView(vk::Context& ctx, const std::string& package, const std::string& cameraName) {
     const assets::LoadedLevel level = assets::loadLevel(package);
-    const world::Camera* camera = nullptr;
-    for (const world::Camera& c : level.level.cameras)
-        if (c.name == cameraName) camera = &c;
-    if (!camera) throw std::runtime_error(package + ": no camera named '" + cameraName + "'");
     render::FrameInputs inputs;
-    inputs.camera = render::cameraFromLevel(*camera);
+    inputs.camera = cameraNamed(level, package, cameraName);
     struct Config {
         const char* name;
         render::RendererOptions options;
@@ -321,18 +325,8 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
         render::drawFrame(renderers[c], inputs, readback);
         frames[c] = render::capturedFrame(renderers[c]);
     }
-    for (size_t c = 0; c < configs.size(); ++c) {
-        const std::vector<uint8_t>&a = frames[0].rgba8, &b = frames[c].rgba8;
-        if (a.size() != b.size()) continue;
-        size_t offPixels = 0;
-        for (size_t i = 0; i + 3 < a.size(); i += 4)
-            for (int k = 0; k < 3; ++k)
-                if (std::abs(int(a[i + k]) - int(b[i + k])) > 8) {
-                    ++offPixels;
-                    break;
-                }
-        changed[c] = 100.0 * double(offPixels) / double(a.size() / 4);
-    }
+    for (size_t c = 0; c < configs.size(); ++c)
+        changed[c] = 100.0 * test::shareOfPixelsOff(frames[0].rgba8, frames[c].rgba8);
     std::vector<std::string> permutations = render::rendererInfo(renderers[0]).permutations;
     const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
     const render::RendererInfo info = render::rendererInfo(renderers[0]);
@@ -370,12 +364,8 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
 void benchAntiAliasing(vk::Context& ctx, const std::string& package,
                        const std::string& cameraName) {
     const assets::LoadedLevel level = assets::loadLevel(package);
-    const world::Camera* camera = nullptr;
-    for (const world::Camera& c : level.level.cameras)
-        if (c.name == cameraName) camera = &c;
-    if (!camera) throw std::runtime_error(package + ": no camera named '" + cameraName + "'");
     render::FrameInputs inputs;
-    inputs.camera = render::cameraFromLevel(*camera);
+    inputs.camera = cameraNamed(level, package, cameraName);
     struct Config {
         const char* name;
         uint32_t msaa;
@@ -434,10 +424,7 @@ void benchAntiAliasing(vk::Context& ctx, const std::string& package,
                     uint8_t(std::lround(std::clamp(display, 0.0f, 1.0f) * 255.0f));
             }
     auto diff = [](const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, size_t i) {
-        int worst = 0;
-        for (int k = 0; k < 3; ++k)
-            worst = std::max(worst, std::abs(int(a[i + size_t(k)]) - int(b[i + size_t(k)])));
-        return worst;
+        return test::worstChannelDifference(a, b, i / 4);
     };
     std::vector<size_t> edges;
     for (size_t i = 0; i + 3 < frames[0].size(); i += 4)

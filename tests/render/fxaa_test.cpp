@@ -43,12 +43,6 @@ std::vector<uint8_t> frameOf(const assets::LoadedLevel& level, uint32_t msaa, bo
     return r.frame.rgba8;
 }
 
-int worstChannel(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, size_t i) {
-    int worst = 0;
-    for (size_t k = 0; k < 3; ++k) worst = std::max(worst, std::abs(int(a[i + k]) - int(b[i + k])));
-    return worst;
-}
-
 TEST(PostAntiAliasing, FxaaBringsTheEdgesTowardsMsaaAndLeavesTheRest) {
     const std::string dir = test::outputDir();
     test::writeGltf(boxYard(), dir + "/fxaa_yard.gltf");
@@ -58,14 +52,14 @@ TEST(PostAntiAliasing, FxaaBringsTheEdgesTowardsMsaaAndLeavesTheRest) {
                                fxaa = frameOf(level, 1, true);
     double edgeOne = 0.0, edgeFxaa = 0.0;
     size_t edges = 0, restChanged = 0, rest = 0;
-    for (size_t i = 0; i + 3 < one.size(); i += 4) {
-        if (worstChannel(one, four, i) > 2) {
+    for (size_t p = 0; p < one.size() / 4; ++p) {
+        if (test::worstChannelDifference(one, four, p) > 2) {
             ++edges;
-            edgeOne += worstChannel(one, four, i);
-            edgeFxaa += worstChannel(fxaa, four, i);
+            edgeOne += test::worstChannelDifference(one, four, p);
+            edgeFxaa += test::worstChannelDifference(fxaa, four, p);
         } else {
             ++rest;
-            restChanged += worstChannel(fxaa, one, i) > 8 ? 1 : 0;
+            restChanged += test::worstChannelDifference(fxaa, one, p) > 8 ? 1 : 0;
         }
     }
     ASSERT_GT(edges, 200u) << "the yard's edges should alias at MSAA 1x";

@@ -74,11 +74,6 @@ render::RendererOptions smallFrame(bool specialize) {
     return o;
 }
 
-bool anyNamed(const std::vector<std::string>& names, const char* part) {
-    return std::any_of(names.begin(), names.end(),
-                       [&](const std::string& n) { return n.find(part) != std::string::npos; });
-}
-
 // The frame with specialized pipelines and with general ones: the same bits, PNG and linear.
 void expectSameFrame(const assets::LoadedLevel& level, const render::FrameInputs& inputs,
                      std::vector<std::string>& permutations) {
@@ -142,12 +137,12 @@ TEST(RenderSpecialization, DrawsWithAndWithoutPrimariesLightmapsAndGridLightChan
         seen.insert(seen.end(), permutations.begin(), permutations.end());
     }
     // Each choice was specialized in a frame compared.
-    EXPECT_TRUE(anyNamed(seen, "no-primary"));
-    EXPECT_TRUE(anyNamed(seen, " point"));
-    EXPECT_TRUE(anyNamed(seen, " spot"));
-    EXPECT_TRUE(anyNamed(seen, " lightmap"));
-    EXPECT_TRUE(anyNamed(seen, " object"));
-    EXPECT_TRUE(anyNamed(seen, "textures=none"));
+    EXPECT_TRUE(test::anyNamed(seen, "no-primary"));
+    EXPECT_TRUE(test::anyNamed(seen, " point"));
+    EXPECT_TRUE(test::anyNamed(seen, " spot"));
+    EXPECT_TRUE(test::anyNamed(seen, " lightmap"));
+    EXPECT_TRUE(test::anyNamed(seen, " object"));
+    EXPECT_TRUE(test::anyNamed(seen, "textures=none"));
 }
 
 TEST(RenderSpecialization, MaterialsWithSomeTextureSlotsChangeNoPixel) {
@@ -161,7 +156,7 @@ TEST(RenderSpecialization, MaterialsWithSomeTextureSlotsChangeNoPixel) {
     std::vector<std::string> permutations;
     expectSameFrame(level, inputs, permutations);
     // The floor's slots: no base colour texture, so its fetch is compiled out.
-    EXPECT_TRUE(anyNamed(permutations, "textures=metal-rough,normal,cavity directional"));
+    EXPECT_TRUE(test::anyNamed(permutations, "textures=metal-rough,normal,cavity directional"));
 }
 
 }  // namespace

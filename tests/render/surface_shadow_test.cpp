@@ -51,24 +51,6 @@ test::RenderedFrame yardFrom(const assets::LoadedLevel& level, bool skip, glm::v
     return r;
 }
 
-// The share of pixels off by more than 8/255 in a channel.
-double changedShare(const test::RenderedFrame& a, const test::RenderedFrame& b) {
-    size_t off = 0;
-    for (size_t i = 0; i + 3 < a.frame.rgba8.size(); i += 4)
-        for (int c = 0; c < 3; ++c)
-            if (std::abs(int(a.frame.rgba8[i + c]) - int(b.frame.rgba8[i + c])) > 8) {
-                ++off;
-                break;
-            }
-    return double(off) / double(a.frame.rgba8.size() / 4);
-}
-
-bool anyNamed(const std::vector<std::string>& names, const char* part) {
-    for (const std::string& n : names)
-        if (n.find(part) != std::string::npos) return true;
-    return false;
-}
-
 TEST(SurfaceShadows, SkippingTheLookupsAUniformMaskMakesMootKeepsTheFrameAndDynamicShadows) {
     const std::string dir = test::outputDir();
     test::writeGltf(tiledYard(), dir + "/tiled_yard.gltf");
@@ -79,11 +61,11 @@ TEST(SurfaceShadows, SkippingTheLookupsAUniformMaskMakesMootKeepsTheFrameAndDyna
     const test::RenderedFrame reference = yardFrom(level, false, inTheSun);
     const test::RenderedFrame noBox = yardFrom(level, false, farAway);
     // The mask lights some tiles whole and shadows some faces whole: both variants are drawn.
-    EXPECT_TRUE(anyNamed(skipped.permutations, "unoccluded"));
-    EXPECT_TRUE(anyNamed(skipped.permutations, "no-primary"));
-    EXPECT_FALSE(anyNamed(reference.permutations, "unoccluded"));
-    const double boxAndShadow = changedShare(reference, noBox);
-    const double changed = changedShare(skipped, reference);
+    EXPECT_TRUE(test::anyNamed(skipped.permutations, "unoccluded"));
+    EXPECT_TRUE(test::anyNamed(skipped.permutations, "no-primary"));
+    EXPECT_FALSE(test::anyNamed(reference.permutations, "unoccluded"));
+    const double boxAndShadow = test::shareOfPixelsOff(reference.frame.rgba8, noBox.frame.rgba8);
+    const double changed = test::shareOfPixelsOff(skipped.frame.rgba8, reference.frame.rgba8);
     std::printf(
         "[ surface shadows ] the dynamic box and its shadow: %.2f%% of pixels; skipping "
         "the moot lookups changes %.3f%%\n",

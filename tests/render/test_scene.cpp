@@ -381,4 +381,26 @@ void writeReferenceComparison(const std::string& path, uint32_t width, uint32_t 
     world::writePngFile(path, columns * width, height, rgba);
 }
 
+bool anyNamed(const std::vector<std::string>& names, const char* part) {
+    for (const std::string& n : names)
+        if (n.find(part) != std::string::npos) return true;
+    return false;
+}
+
+int worstChannelDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b,
+                           size_t pixel) {
+    int worst = 0;
+    for (size_t k = 0; k < 3; ++k)
+        worst = std::max(worst, std::abs(int(a[4 * pixel + k]) - int(b[4 * pixel + k])));
+    return worst;
+}
+
+double shareOfPixelsOff(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b,
+                        int threshold) {
+    const size_t pixels = std::min(a.size(), b.size()) / 4;
+    size_t off = 0;
+    for (size_t p = 0; p < pixels; ++p) off += worstChannelDifference(a, b, p) > threshold ? 1 : 0;
+    return pixels == 0 ? 0.0 : double(off) / double(pixels);
+}
+
 }  // namespace onelight::test

@@ -103,6 +103,18 @@ struct RenderedFrame {
 RenderedFrame renderOnce(const assets::LoadedLevel& level, const render::RendererOptions& options,
                          const render::FrameInputs& inputs, int frames = 1);
 
+/// Whether any of `names` (e.g. the forward pipelines built) contains `part`.
+[[nodiscard]] bool anyNamed(const std::vector<std::string>& names, const char* part);
+
+/// The largest difference over R, G and B of pixel `pixel` of two RGBA8 frames.
+[[nodiscard]] int worstChannelDifference(const std::vector<uint8_t>& a,
+                                         const std::vector<uint8_t>& b, size_t pixel);
+
+/// The share of pixels of two RGBA8 frames of one size whose worstChannelDifference exceeds
+/// `threshold` (the goldens' is 8).
+[[nodiscard]] double shareOfPixelsOff(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b,
+                                      int threshold = 8);
+
 /// The reference (linear RGB, 3 floats a pixel) and frames (linear RGBA, 4 floats) of
 /// `width` x `height` side by side in one PNG: a common scale putting the reference's mean
 /// luminance at `mean`, then x / (1 + x) and sRGB gamma: a picture of where the errors are.
