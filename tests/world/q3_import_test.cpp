@@ -982,5 +982,88 @@ TEST(Quake3Maps, InstalledMapsWithUnsetFieldsAndExternalLightmapsImport) {
     EXPECT_GT(paged * 10, l.triangles.size() * 9);
 }
 
+// The world's BSP tree and its potentially visible set: a node's children must lie later in the
+// lump or be leaves (so that a walk down the tree ends), a leaf's cluster inside the visibility
+// lump's, whose rows must fit it.
+TEST(Quake3Bsp, TheTreeAndThePotentiallyVisibleSetAreChecked) {
+    const auto withTree = [] {
+        Quake3BspBuilder b = mapWithCollision();
+        b.nodes = {{0, {1, -1}, {0, 0, 0}, {0, 0, 0}}, {1, {-2, -3}, {0, 0, 0}, {0, 0, 0}}};
+        b.leafs.assign(3, BspLeaf{});
+        b.leafs[0].cluster = -1;
+        b.leafs[1].cluster = 0;
+        b.leafs[2].cluster = 1;
+        const BspVisibilityHeader h{2, 1};
+        b.visibility.resize(sizeof h);
+        std::memcpy(b.visibility.data(), &h, sizeof h);
+        b.visibility.insert(b.visibility.end(), {0x3, 0x3});
+        return b;
+    };
+    const BspFile good = parseBsp(withTree().bytes(), "test.bsp");
+    EXPECT_EQ(good.nodes.size(), 2u);
+    EXPECT_EQ(good.leafs.size(), 3u);
+    EXPECT_EQ(good.clusterCount, 2);
+    EXPECT_EQ(good.visibility, (std::vector<uint8_t>{0x3, 0x3}));
+    Quake3BspBuilder b = withTree();
+    b.nodes[1].children[0] = 0;  // back to the root: a walk would never end
+    EXPECT_EQ(parseError(b.bytes()),
+              "test.bsp: node 1: child 0; expected a node after it (of 2) or a leaf -(l + 1) of 3");
+    b = withTree();
+    b.nodes[0].children[1] = -4;
+    EXPECT_EQ(
+        parseError(b.bytes()),
+        "test.bsp: node 0: child -4; expected a node after it (of 2) or a leaf -(l + 1) of 3");
+    b = withTree();
+    b.nodes[0].plane = 999;
+    EXPECT_EQ(parseError(b.bytes()),
+              "test.bsp: node 0: plane 999 of 30; expected an index into the planes");
+    b = withTree();
+    b.leafs[2].cluster = 5;
+    EXPECT_EQ(parseError(b.bytes()),
+              "test.bsp: leaf 2: cluster 5 of 2; expected -1 (solid) or a cluster of the "
+              "visibility lump");
+    b = withTree();
+    const BspVisibilityHeader tooMany{4, 1};
+    std::memcpy(b.visibility.data(), &tooMany, sizeof tooMany);
+    EXPECT_EQ(parseError(b.bytes()),
+              "test.bsp: lump 16 (visibility): 4 clusters of 1 bytes in 2 bytes; expected rows "
+              "of at least one bit a cluster inside the lump");
+}
+
+// Every installed map's tree and potentially visible set read, and every cluster sees itself.
+TEST(Quake3Maps, EveryInstalledMapsTreeAndVisibilityRead) {
+    std::vector<std::string> folders = defaultQuake3Folders();
+    if (std::filesystem::exists("/usr/share/games/nexuiz/data"))
+        folders.push_back("/usr/share/games/nexuiz/data");
+    if (folders.empty()) GTEST_SKIP() << "OpenArena is not installed (openarena-data)";
+    size_t maps = 0, withVisibility = 0, leafs = 0;
+    for (const std::string& folder : folders) {
+        GameFiles files;
+        files.addGameFolder(folder);
+        for (const auto& [key, file] : files.files) {
+            if (key.rfind("maps/", 0) != 0 || key.size() < 9 ||
+                key.compare(key.size() - 4, 4, ".bsp") != 0)
+                continue;
+            const std::vector<uint8_t> bytes = *files.read(key, kMaxMapBytes, "a map");
+            if (bytes.size() < 8 || std::memcmp(bytes.data(), "IBSP\x2e\0\0\0", 8) != 0) continue;
+            const BspFile bsp = parseBsp(bytes, files.where(key));
+            ++maps;
+            leafs += bsp.leafs.size();
+            if (bsp.clusterCount == 0) continue;
+            ++withVisibility;
+            for (int32_t c = 0; c < bsp.clusterCount; ++c)
+                EXPECT_TRUE(
+                    (bsp.visibility[size_t(c) * size_t(bsp.bytesPerCluster) + size_t(c) / 8] >>
+                     (c % 8)) &
+                    1)
+                    << files.where(key) << " cluster " << c;
+        }
+    }
+    std::printf("[ bsp trees ] %zu maps, %zu with a potentially visible set, %zu leafs\n", maps,
+                withVisibility, leafs);
+    EXPECT_GT(maps, 50u);
+    EXPECT_GT(withVisibility * 10, maps * 9);
+}
+
 }  // namespace
 }  // namespace onelight::world::q3

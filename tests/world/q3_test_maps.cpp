@@ -66,6 +66,9 @@ Bytes Quake3BspBuilder::bytes() const {
     lump(kLumpModels, models.data(), models.size() * sizeof(BspModel));
     lump(kLumpBrushes, brushes.data(), brushes.size() * sizeof(BspBrush));
     lump(kLumpBrushSides, brushSides.data(), brushSides.size() * sizeof(BspBrushSide));
+    lump(kLumpNodes, nodes.data(), nodes.size() * sizeof(BspNode));
+    lump(kLumpLeafs, leafs.data(), leafs.size() * sizeof(BspLeaf));
+    lump(kLumpVisibility, visibility.data(), visibility.size());
     Bytes out(sizeof h + body.size());
     std::memcpy(out.data(), &h, sizeof h);
     if (!body.empty()) std::memcpy(out.data() + sizeof h, body.data(), body.size());

@@ -32,6 +32,9 @@ struct Quake3BspBuilder {
     std::vector<world::q3::BspModel> models;
     std::vector<world::q3::BspBrush> brushes;
     std::vector<world::q3::BspBrushSide> brushSides;
+    std::vector<world::q3::BspNode> nodes;
+    std::vector<world::q3::BspLeaf> leafs;
+    std::vector<uint8_t> visibility;  // the lump whole (header and rows), or empty
 
     explicit Quake3BspBuilder(float side = 64.0f, std::string_view shader = "textures/test/wall");
 

@@ -123,6 +123,53 @@ void checkBrushes(const BspFile& bsp, const std::string& where) {
     }
 }
 
+// The world's BSP tree and the potentially visible set: every node's plane, its children a node
+// later in the lump (so that every walk down the tree ends) or a leaf; every leaf's cluster -1
+// (solid) or inside the visibility lump's; the lump's rows inside it and wide enough.
+void checkTree(BspFile& bsp, std::span<const uint8_t> vis, const std::string& where) {
+    if (!vis.empty()) {
+        BspVisibilityHeader h;
+        if (vis.size() < sizeof h)
+            throw Error(where + ": lump 16 (visibility) holds " + std::to_string(vis.size()) +
+                        " bytes; expected at least its 8-byte header");
+        std::memcpy(&h, vis.data(), sizeof h);
+        const uint64_t rowBytes = (uint64_t(std::max(h.clusterCount, 0)) + 7) / 8;
+        if (h.clusterCount < 0 || h.bytesPerCluster < 0 || uint64_t(h.bytesPerCluster) < rowBytes ||
+            uint64_t(h.clusterCount) * uint64_t(h.bytesPerCluster) > vis.size() - sizeof h)
+            throw Error(where + ": lump 16 (visibility): " + std::to_string(h.clusterCount) +
+                        " clusters of " + std::to_string(h.bytesPerCluster) + " bytes in " +
+                        std::to_string(vis.size() - sizeof h) +
+                        " bytes; expected rows of at least one bit a cluster inside the lump");
+        bsp.clusterCount = h.clusterCount;
+        bsp.bytesPerCluster = h.bytesPerCluster;
+        bsp.visibility.assign(
+            vis.begin() + sizeof h,
+            vis.begin() + sizeof h + size_t(h.clusterCount) * size_t(h.bytesPerCluster));
+    }
+    for (size_t n = 0; n < bsp.nodes.size(); ++n) {
+        const BspNode& node = bsp.nodes[n];
+        const std::string place = where + ": node " + std::to_string(n);
+        checkIndex(place, "plane", node.plane, bsp.planes.size(), "planes");
+        for (int32_t child : node.children) {
+            const bool laterNode =
+                child >= 0 && size_t(child) > n && size_t(child) < bsp.nodes.size();
+            const bool leaf = child < 0 && int64_t(-1) - child < int64_t(bsp.leafs.size());
+            if (!laterNode && !leaf)
+                throw Error(place + ": child " + std::to_string(child) +
+                            "; expected a node after it (of " + std::to_string(bsp.nodes.size()) +
+                            ") or a leaf -(l + 1) of " + std::to_string(bsp.leafs.size()));
+        }
+    }
+    for (size_t l = 0; l < bsp.leafs.size(); ++l) {
+        // Without a visibility lump (q3map2 without -vis) the clusters are never looked up.
+        const int32_t cluster = bsp.leafs[l].cluster;
+        if (cluster < -1 || (bsp.clusterCount > 0 && cluster >= bsp.clusterCount))
+            throw Error(where + ": leaf " + std::to_string(l) + ": cluster " +
+                        std::to_string(cluster) + " of " + std::to_string(bsp.clusterCount) +
+                        "; expected -1 (solid) or a cluster of the visibility lump");
+    }
+}
+
 bool finite(const float* x, int n) {
     for (int i = 0; i < n; ++i)
         if (!std::isfinite(x[i])) return false;
@@ -214,12 +261,16 @@ BspFile parseBsp(std::span<const uint8_t> bytes, const std::string& where) {
     bsp.models = readLump<BspModel>(bytes, header, kLumpModels, where);
     bsp.brushes = readLump<BspBrush>(bytes, header, kLumpBrushes, where);
     bsp.brushSides = readLump<BspBrushSide>(bytes, header, kLumpBrushSides, where);
+    bsp.nodes = readLump<BspNode>(bytes, header, kLumpNodes, where);
+    bsp.leafs = readLump<BspLeaf>(bytes, header, kLumpLeafs, where);
+    const std::vector<uint8_t> vis = readLump<uint8_t>(bytes, header, kLumpVisibility, where);
     if (bsp.lightmaps.size() % kLightmapPageBytes != 0)
         throw Error(where + ": lump 14 (lightmaps) holds " + std::to_string(bsp.lightmaps.size()) +
                     " bytes; expected whole pages of " + std::to_string(kLightmapPageBytes) +
                     " bytes");
     for (size_t s = 0; s < bsp.surfaces.size(); ++s) checkSurface(bsp, s, where);
     checkBrushes(bsp, where);
+    checkTree(bsp, vis, where);
     checkVertices(bsp, where);
     return bsp;
 }

@@ -74,6 +74,31 @@ struct BspBrushPlane {
 };
 static_assert(sizeof(BspBrushPlane) == 16);
 
+/// A node of the world's BSP tree (qfiles.h dnode_t): a point in front of its plane goes to
+/// children[0], else children[1]; a child >= 0 is a node, one < 0 the leaf -(child + 1).
+struct BspNode {
+    int32_t plane;  // into the plane lump
+    int32_t children[2];
+    int32_t mins[3], maxs[3];  // map units, for culling
+};
+static_assert(sizeof(BspNode) == 36);
+
+/// A leaf of the world's BSP tree (qfiles.h dleaf_t): a convex region of one visibility cluster
+/// (-1: inside solid, no cluster).
+struct BspLeaf {
+    int32_t cluster, area;
+    int32_t mins[3], maxs[3];  // map units
+    int32_t firstLeafSurface, leafSurfaceCount;
+    int32_t firstLeafBrush, leafBrushCount;
+};
+static_assert(sizeof(BspLeaf) == 48);
+
+/// The visibility lump's header: clusterCount rows of bytesPerCluster bytes follow, bit c of
+/// row r set when cluster c may be seen from cluster r (q3map2 -vis's potentially visible set).
+struct BspVisibilityHeader {
+    int32_t clusterCount, bytesPerCluster;
+};
+
 /// A brush model (qfiles.h dmodel_t): model 0 is the world, model N is "*N" of an entity.
 struct BspModel {
     float mins[3], maxs[3];  // map units, Z up
