@@ -130,6 +130,24 @@ TEST(SunCascades, TheShadowEdgeIsWhereTheGeometryPutsItAndAsSharpAsItsCascade) {
     EXPECT_GT(single.width, 5.0f * nearTexel);
 }
 
+// Over the last tenth of a cascade's range the lookup blends into the next cascade's: an edge
+// seen from just inside the band is wider than just before it and narrower than just past the
+// split (without the blend it jumps from cascade 0's width to cascade 1's at the split).
+TEST(SunCascades, AnEdgeSoftensGraduallyAcrossASplit) {
+    const assets::LoadedLevel level = wallInTheSun();
+    const float diagonal = glm::length(glm::vec3(120.0f, 3.0f, 120.0f));
+    const float split = render::sunCascadeSplits(world::kRuntimeShadowRadius, 3, diagonal)[0];
+    const Edge before = edgeSeenFrom(level, 0.89f * split, 3);
+    const Edge inBand = edgeSeenFrom(level, 0.95f * split, 3);
+    const Edge past = edgeSeenFrom(level, 1.01f * split, 3);
+    std::printf("[ sun cascades ] across the split at %.2f m: 10-90%% width %.2f cm at 0.89 of "
+                "it, %.2f cm at 0.95, %.2f cm at 1.01\n",
+                double(split), 100.0 * double(before.width), 100.0 * double(inBand.width),
+                100.0 * double(past.width));
+    EXPECT_GT(inBand.width, 1.4f * before.width);
+    EXPECT_LT(inBand.width, 0.9f * past.width);
+}
+
 // A level smaller than the near cascades needs only the one map that already spans it.
 TEST(SunCascades, ALevelSmallerThanACascadeHasOnlyOne) {
     EXPECT_EQ(render::sunCascadeSplits(40.0f, 3, 4.0f).size(), 1u);

@@ -58,25 +58,17 @@ layout(location = 4) in vec2 inUv1;
 
 layout(location = 0) out vec4 outColor;
 
-// Percentage-closer filtering: 2x2 taps, half a texel apart, of the hardware 2x2 bilinear
-// comparison: a 3x3-texel tent for four fetches. The receiver is looked up 1.5 texels off its
-// surface along the normal n, scaled by the sine of the light's angle to it (l towards the
-// light): a surface the light grazes needs the whole offset against acne, one facing it hardly
-// any, and a full offset there moves the point towards the light, past a thin wall's depth,
-// so that a floor under a high sun was lit along the foot of every wall in front of it.
-// A sun's cascade is the nearest whose far distance reaches the point's view distance (as a
-// loop: a CPU rasterizer stops one once no pixel of its block is still in it).
-float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float viewDistance) {
-    uint view = light.info.y;
-    if (view == NO_INDEX) return 1.0;
-    if (type == LIGHT_POINT) view += uint(cubeFace(p - light.positionRange.xyz));
-    if (type == LIGHT_DIRECTIONAL)
-        for (uint last = view + light.info.z - 1u; view < last && viewDistance > shadowViews[view].params.z;)
-            ++view;
+// Percentage-closer filtering in shadow view `view`: 2x2 taps, half a texel apart, of the
+// hardware 2x2 bilinear comparison: a 3x3-texel tent for four fetches; 1 outside the view. The
+// receiver is looked up 1.5 texels off its surface along the normal n, scaled by the sine of the
+// light's angle to it (NoL): a surface the light grazes needs the whole offset against acne, one
+// facing it hardly any, and a full offset there moves the point towards the light, past a thin
+// wall's depth, so that a floor under a high sun was lit along the foot of every wall in front of
+// it.
+float shadowViewLookup(uint view, GpuLight light, vec3 p, vec3 n, float NoL) {
     GpuShadowView sv = shadowViews[view];
     float texelWorld = sv.params.x;
     if (sv.params.y > 0.5) texelWorld *= length(p - light.positionRange.xyz);
-    float NoL = clamp(dot(n, l), 0.0, 1.0);
     float offset = 1.5 * texelWorld * clamp(sqrt(1.0 - NoL * NoL), 0.1, 1.0);
     vec4 clip = sv.viewProj * vec4(p + n * offset, 1.0);
     if (clip.w <= 0.0) return 1.0;
@@ -89,6 +81,29 @@ float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float view
         for (int x = 0; x < 2; ++x)
             sum += texture(shadowMaps, vec4(uv + (vec2(x, y) - 0.5) * texel, float(view), ndc.z));
     return sum * 0.25;
+}
+
+// The primary's runtime shadow at p (l towards the light): an omni's cube face, a spot's view,
+// or the sun's cascade, the nearest whose far distance reaches the point's view distance. Over
+// the last tenth of a cascade's range the lookup blends into the next cascade's, so that a shadow
+// edge crossing a split sharpens or softens gradually, not at a line. Loops, so that a CPU
+// rasterizer stops once no pixel of its block needs another step (the second lookup is paid only
+// in the bands).
+float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float viewDistance) {
+    uint view = light.info.y;
+    if (view == NO_INDEX) return 1.0;
+    float NoL = clamp(dot(n, l), 0.0, 1.0);
+    if (type == LIGHT_POINT) view += uint(cubeFace(p - light.positionRange.xyz));
+    if (type != LIGHT_DIRECTIONAL) return shadowViewLookup(view, light, p, n, NoL);
+    uint last = view + light.info.z - 1u;
+    while (view < last && viewDistance > shadowViews[view].params.z) ++view;
+    float split = shadowViews[view].params.z;
+    float t = view < last ? clamp((viewDistance - 0.9 * split) / (0.1 * split), 0.0, 1.0) : 0.0;
+    int lookups = t > 0.0 ? 2 : 1;
+    float shadow = 0.0;
+    for (int i = 0; i < lookups; ++i)
+        shadow += (i == 0 ? 1.0 - t : t) * shadowViewLookup(view + uint(i), light, p, n, NoL);
+    return shadow;
 }
 
 // Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
