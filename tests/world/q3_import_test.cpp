@@ -1065,5 +1065,66 @@ TEST(Quake3Maps, EveryInstalledMapsTreeAndVisibilityRead) {
     EXPECT_GT(withVisibility * 10, maps * 9);
 }
 
+// The map's own visible set in the level's space: a tree of one node whose plane is the map's
+// y = 0 (the level's z = 0, facing -z), a leaf in front (cluster 0) and one behind (cluster 1)
+// that cannot see each other.
+TEST(Quake3Visibility, TheMapsOwnSetImportsInMetresWithYUp) {
+    Quake3BspBuilder b = mapWithCollision();
+    b.planes.push_back({{0.0f, 1.0f, 0.0f}, 0.0f});
+    b.nodes = {{int32_t(b.planes.size() - 1), {-1, -2}, {0, 0, 0}, {0, 0, 0}}};
+    b.leafs.assign(2, BspLeaf{});
+    b.leafs[0] = {0, 0, {-256, 0, -16}, {256, 256, 128}, 0, 0, 0, 0};
+    b.leafs[1] = {1, 0, {-256, -256, -16}, {256, 0, 128}, 0, 0, 0, 0};
+    const BspVisibilityHeader h{2, 1};
+    b.visibility.resize(sizeof h);
+    std::memcpy(b.visibility.data(), &h, sizeof h);
+    b.visibility.insert(b.visibility.end(), {0x1, 0x2});
+    const SourceLevel level =
+        importLevel(b.write("visibility", "visibility"), withoutGame("visibility"));
+    const ImportedVisibility& v = level.importedVisibility;
+    ASSERT_FALSE(v.empty());
+    EXPECT_EQ(v.nodes[0].plane.normal, glm::vec3(0.0f, 0.0f, -1.0f));
+    // Map y = +32 units is the level's z = -1 m: in front of the plane.
+    EXPECT_EQ(importedLeafAt(v, {0.0f, 0.0f, -1.0f}), 0u);
+    EXPECT_EQ(importedLeafAt(v, {0.0f, 0.0f, 1.0f}), 1u);
+    EXPECT_EQ(v.leafs[0].boundsMin, glm::vec3(-8.0f, -0.5f, -8.0f));
+    EXPECT_EQ(v.leafs[0].boundsMax, glm::vec3(8.0f, 4.0f, 0.0f));
+    std::vector<uint32_t> leaves;
+    importedLeavesIn(v, {-1.0f, 0.0f, -1.0f}, {1.0f, 1.0f, 1.0f}, leaves);
+    EXPECT_EQ(leaves, (std::vector<uint32_t>{0, 1}));
+    leaves.clear();
+    importedLeavesIn(v, {-1.0f, 0.0f, 0.5f}, {1.0f, 1.0f, 1.0f}, leaves);
+    EXPECT_EQ(leaves, (std::vector<uint32_t>{1}));
+    EXPECT_TRUE(importedClusterSees(v, 0, 0));
+    EXPECT_FALSE(importedClusterSees(v, 0, 1));
+    EXPECT_TRUE(importedClusterSees(v, 1, 1));
+}
+
+// A real map's: every spawn stands in a leaf of a cluster (open space), which sees itself.
+TEST(Quake3Visibility, EverySpawnOfARealMapStandsInAClusterOfItsSet) {
+    if (defaultQuake3Folders().empty())
+        GTEST_SKIP() << "OpenArena is not installed (openarena-data, openarena-081-maps)";
+    for (const char* name : {"q3dm6ish", "kaos", "aggressor", "oa_bases3"}) {
+        const SourceLevel level = importLevel(name);
+        const ImportedVisibility& v = level.importedVisibility;
+        ASSERT_FALSE(v.empty()) << name;
+        size_t spawns = 0;
+        for (const Camera& c : level.cameras) {
+            const ImportedVisibility::Leaf& leaf = v.leafs[importedLeafAt(v, c.position)];
+            EXPECT_GE(leaf.cluster, 0) << name << " " << c.name;
+            if (leaf.cluster >= 0) {
+                EXPECT_TRUE(importedClusterSees(v, uint32_t(leaf.cluster), uint32_t(leaf.cluster)));
+                EXPECT_TRUE(glm::all(glm::greaterThanEqual(c.position, leaf.boundsMin - 0.05f)) &&
+                            glm::all(glm::lessThanEqual(c.position, leaf.boundsMax + 0.05f)))
+                    << name << " " << c.name;
+            }
+            ++spawns;
+        }
+        std::printf("[ %s ] %zu clusters, %zu leafs; %zu spawns, each in a cluster's leaf\n", name,
+                    size_t(v.clusterCount), v.leafs.size(), spawns);
+        EXPECT_GT(spawns, 0u);
+    }
+}
+
 }  // namespace
 }  // namespace onelight::world::q3

@@ -27,6 +27,7 @@
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/q3map2_command_line.hpp"
 #include "world/import/q3/shader_script.hpp"
+#include "world/import/q3/visibility_import.hpp"
 #include "world/light_model.hpp"
 
 namespace onelight::world {
@@ -792,6 +793,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         nonsolid.push_back(script && script->surfaceParms.count("nonsolid"));
     }
     level.collision = importCollision(bsp, entities, nonsolid, map.where, level.importNotes);
+    level.importedVisibility = importVisibility(bsp, map.where);
     addComputedSpawn(level, map.where);
     const size_t skyLights = level.lights.size();
     addLights(level, entities, map.where, q3map2);
