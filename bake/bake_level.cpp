@@ -322,9 +322,13 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
         start = std::chrono::steady_clock::now();
         const BakeScene levelScene(world.device, level);
         VisibilityStats stats;
+        // A Quake 3 map's own set (q3map2 -vis) instead of rays, when asked.
+        const world::ImportedVisibility* imported =
+            options.ownVisibility ? &source.importedVisibility : nullptr;
         baked.visibility =
             bakeVisibility(levelScene, level, options.visibilitySettings, options.showProgress,
-                           &stats, options.shardIndex, options.shardCount);
+                           &stats, options.shardIndex, options.shardCount, imported);
+        report.visibilitySource = imported && !imported->empty() ? "the source's own" : "sampled";
         report.stages.push_back({"visibility", secondsSince(start), stats.rays, stats.cells});
         report.visibilityCells = stats.cells;
         report.visibilityClusters = stats.clusters;

@@ -62,6 +62,11 @@ struct BakeOptions {
     bool adaptiveDensity = false;
     // The potentially visible set (bake/visibility/), which the runtime culls by.
     bool visibility = true;
+    // Take the source's own set where it has one (a Quake 3 map's q3map2 -vis,
+    // SourceLevel::importedVisibility) instead of sampling one with rays: kaos bakes in 38 s
+    // instead of 108, but the set is looser (a spawn's view drew 669 surfaces instead of 161,
+    // 21% more frame time), so the rays stay the default.
+    bool ownVisibility = false;
     VisibilitySettings visibilitySettings;
     // Overrides of the quality preset; 0 keeps the preset.
     uint32_t shadowSamples = 0, indirectSamples = 0, gridSamples = 0;

@@ -96,6 +96,11 @@ std::vector<CommandOption> bakeOptions() {
                                     "cached bounce passes")),
         forwarded(world::flagOption(
             "--no-denoise", "the lightmaps' indirect light as estimated, unfiltered", "denoised")),
+        forwarded(world::flagOption("--own-visibility",
+                                    "take the map's own potentially visible set (a Quake 3 map's "
+                                    "q3map2 -vis) instead of sampling one: a faster bake, a looser "
+                                    "set",
+                                    "sampled with rays")),
         forwarded(
             world::flagOption("--uniform-density", "every chart at the requested density",
                               "fewer texels on charts whose light a pilot pass finds smooth")),
@@ -196,6 +201,7 @@ BakePlan resolveBakePlan(const world::ParsedOptions& parsed) {
 
     BakeOptions& options = plan.options;
     options.adaptiveDensity = !parsed.has("--uniform-density");
+    options.ownVisibility = parsed.has("--own-visibility");
     if (parsed.has("--quality")) (void)parseQuality(parsed.text("--quality"), options.quality);
     if (parsed.has("--shard")) {
         const std::string s = parsed.text("--shard");

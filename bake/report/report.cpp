@@ -76,7 +76,8 @@ std::string reportJson(const BakeReport& r) {
     j["visibility"] = {{"cells", r.visibilityCells},
                        {"clusters", r.visibilityClusters},
                        {"rows", r.visibilityRows},
-                       {"mean_visible_fraction", r.visibilityMeanFraction}};
+                       {"mean_visible_fraction", r.visibilityMeanFraction},
+                       {"source", r.visibilitySource}};
     nlohmann::json textures = nlohmann::json::array();
     for (const TextureReport& t : r.textures)
         textures.push_back({{"name", t.name},
@@ -175,9 +176,9 @@ std::string reportSummary(const BakeReport& r) {
     if (r.visibilityCells && r.visibilityRows) {
         std::snprintf(
             line, sizeof line,
-            "  visibility %u cells, %u clusters of surfaces, %u distinct sets; an open cell "
+            "  visibility %u cells, %u clusters of surfaces, %u distinct sets (%s); an open cell "
             "sees %.1f%% of the clusters on average\n",
-            r.visibilityCells, r.visibilityClusters, r.visibilityRows,
+            r.visibilityCells, r.visibilityClusters, r.visibilityRows, r.visibilitySource.c_str(),
             100.0 * r.visibilityMeanFraction);
         s += line;
     } else if (r.visibilityCells) {  // parts of a sharded bake: the merge joins the sets

@@ -154,6 +154,42 @@ bool boxesOverlap(glm::vec3 aMin, glm::vec3 aMax, glm::vec3 bMin, glm::vec3 bMax
     return glm::all(glm::lessThanEqual(aMin, bMax)) && glm::all(glm::lessThanEqual(bMin, aMax));
 }
 
+// The source's clusters (sorted, unique, solid left out) of the leaves the box [lo, hi] reaches.
+std::vector<uint32_t> importedClustersIn(const world::ImportedVisibility& v, glm::vec3 lo,
+                                         glm::vec3 hi) {
+    std::vector<uint32_t> leaves, out;
+    world::importedLeavesIn(v, lo, hi, leaves);
+    for (uint32_t leaf : leaves)
+        if (v.leafs[leaf].cluster >= 0) out.push_back(uint32_t(v.leafs[leaf].cluster));
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+// Step 3 from the source's own set for the cell [cellMin, cellMax]: the clusters of the leaves
+// the cell reaches see the union of their rows; each of our clusters one of whose source
+// clusters is in it is marked, and so is one whose bounds reach into the cell or its
+// neighbours. A cell that reaches no leaf of a cluster (inside solid) is not open.
+template <typename Mark>
+bool markFromImported(const world::ImportedVisibility& v,
+                      const std::vector<std::vector<uint32_t>>& importedClusters, glm::vec3 cellMin,
+                      glm::vec3 cellMax, const std::vector<Cluster>& clusters, float cellSize,
+                      Mark&& mark) {
+    const std::vector<uint32_t> from = importedClustersIn(v, cellMin, cellMax);
+    if (from.empty()) return false;
+    std::vector<uint8_t> seen(v.clusterCount, 0);
+    for (uint32_t a : from)
+        for (uint32_t b = 0; b < v.clusterCount; ++b)
+            seen[b] |= world::importedClusterSees(v, a, b);
+    const glm::vec3 nearMin = cellMin - cellSize, nearMax = cellMax + cellSize;
+    for (uint32_t c = 0; c < clusters.size(); ++c) {
+        bool visible = boxesOverlap(clusters[c].boundsMin, clusters[c].boundsMax, nearMin, nearMax);
+        for (uint32_t s : importedClusters[c]) visible = visible || seen[s] != 0;
+        if (visible) mark(c);
+    }
+    return true;
+}
+
 // Step 1: per static surface its cluster, and the cluster count.
 std::vector<uint32_t> clusterSurfaces(const world::CompiledLevel& level,
                                       const VisibilitySettings& settings, uint32_t& clusterCount) {
@@ -171,7 +207,8 @@ std::vector<uint32_t> clusterSurfaces(const world::CompiledLevel& level,
 
 world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLevel& level,
                                  const VisibilitySettings& settings, bool showProgress,
-                                 VisibilityStats* stats, uint32_t part, uint32_t parts) {
+                                 VisibilityStats* stats, uint32_t part, uint32_t parts,
+                                 const world::ImportedVisibility* imported) {
     parts = std::max(parts, 1u);
     world::Visibility v;
     if (level.indices.empty() || level.surfaces.empty() || level.bspLeaves.empty()) return v;
@@ -203,6 +240,17 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
     std::vector<uint8_t> openCell(cellCount, 0);
 
     const float reach = scene.sceneDiameter();
+    // With the source's own set: each of our clusters' clusters of it (the leaves its bounds
+    // reach), instead of rays.
+    if (imported && imported->empty()) imported = nullptr;
+    std::vector<std::vector<uint32_t>> importedClusters;
+    if (imported)
+        for (const Cluster& c : clusters)
+            // Grown by 2 cm: a face lying on a splitting plane reaches only the side in front
+            // of it, which can be the solid behind the face when the tree split there with the
+            // plane turned the other way.
+            importedClusters.push_back(
+                importedClustersIn(*imported, c.boundsMin - 0.02f, c.boundsMax + 0.02f));
     tbb::enumerable_thread_specific<RayCounts> rays;
     // Part `part` of `parts` bakes every parts-th cell from `part` (interleaved: solid and open
     // cells spread evenly over the parts).
@@ -220,6 +268,12 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
             auto marked = [&](uint32_t cluster) {
                 return (row[cluster / 32] >> (cluster % 32)) & 1u;
             };
+            if (imported) {
+                openCell[cell] = markFromImported(*imported, importedClusters, cellMin,
+                                                  cellMin + v.cellSize, clusters, v.cellSize, mark);
+                progress.advance(1);
+                continue;
+            }
             std::vector<glm::vec3> points;
             for (uint32_t k = 0; k < settings.pointsPerCell; ++k) {
                 Rng rng{seedFrom(cell, k, 0x5650u)};

@@ -27,6 +27,7 @@
 
 #include "bake/embree/bake_scene.hpp"
 #include "world/compiled_level.hpp"
+#include "world/imported_visibility.hpp"
 #include "world/visibility.hpp"
 
 namespace onelight::bake {
@@ -52,12 +53,17 @@ struct VisibilityStats {
 /// (BakeScene(device, level)). Empty for a level without static triangles. With parts > 1, part
 /// `part` of a sharded bake: only every parts-th cell from `part` is sampled (interleaved, so
 /// that solid and open cells spread evenly), and the result holds those cells' own sets (step
-/// 3, rows deduplicated; kNoIndex for every other cell) for mergeVisibilityParts.
+/// 3, rows deduplicated; kNoIndex for every other cell) for mergeVisibilityParts. With
+/// `imported` (the source's own set, not empty: a Quake 3 map's), step 3 takes it instead of
+/// rays: a cell sees the union of the rows of the source's clusters whose leaves it reaches, and
+/// one of our clusters is marked when a source cluster its bounds reach is in it; a cell that
+/// reaches only solid leaves culls nothing. Steps 1, 2 and 4 are the same.
 [[nodiscard]] world::Visibility bakeVisibility(const BakeScene& scene,
                                                const world::CompiledLevel& level,
                                                const VisibilitySettings& settings,
                                                bool showProgress, VisibilityStats* stats = nullptr,
-                                               uint32_t part = 0, uint32_t parts = 1);
+                                               uint32_t part = 0, uint32_t parts = 1,
+                                               const world::ImportedVisibility* imported = nullptr);
 
 /// Step 4 over the cells' own sets (`raw`, wordsPerRow words per cell; `openCell` per cell):
 /// each open cell's set is the union of its own and its 26 neighbours', rows deduplicated.

@@ -4,6 +4,7 @@
 // two walls into three rooms joined by a chicane must cull the far room; the bake gives the same
 // set on any thread count; the section round-trips and rejects lying indices.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -71,12 +72,14 @@ struct Baked {
     VisibilityStats stats;
 };
 
+// With `ownSet`, the source's own set (a Quake 3 map's) instead of rays.
 Baked bake(const world::SourceLevel& source, const EmbreeDevice& device,
-           const VisibilitySettings& settings = {}) {
+           const VisibilitySettings& settings = {}, bool ownSet = false) {
     Baked b;
     b.level = world::compileLevel(source, test::testOptions(2.0f).compile).level;
     const BakeScene scene(device, b.level);
-    b.visibility = bakeVisibility(scene, b.level, settings, false, &b.stats);
+    b.visibility = bakeVisibility(scene, b.level, settings, false, &b.stats, 0, 1,
+                                  ownSet ? &source.importedVisibility : nullptr);
     return b;
 }
 
@@ -307,12 +310,18 @@ TEST(Visibility, TheSectionRoundTripsAndRejectsLyingIndices) {
     }
 }
 
-// A map we did not make: OpenArena's aggressor, from points around its spawns.
-TEST(Visibility, AQuake3MapsSetsHoldWhatItsSpawnsSee) {
+// A map we did not make: OpenArena's aggressor, from points around its spawns, with the set
+// sampled by rays and with the map's own (q3map2 -vis), which takes no ray.
+void checkAggressorFromItsSpawns(bool ownSet) {
     const std::string pk3 = "/usr/share/games/openarena/baseoa/pak1-maps.pk3";
     if (!std::filesystem::exists(pk3)) GTEST_SKIP() << pk3 << " is missing: install openarena-data";
     const EmbreeDevice device;
-    const Baked b = bake(world::importLevel(pk3 + ":maps/aggressor.bsp"), device);
+    const world::SourceLevel source = world::importLevel(pk3 + ":maps/aggressor.bsp");
+    ASSERT_FALSE(source.importedVisibility.empty());
+    const auto start = std::chrono::steady_clock::now();
+    const Baked b = bake(source, device, {}, ownSet);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const BakeScene scene(device, b.level);
     std::vector<uint32_t> triangleCluster;
     uint32_t eyes = 0, missed = 0, slivers = 0;
@@ -328,12 +337,24 @@ TEST(Visibility, AQuake3MapsSetsHoldWhatItsSpawnsSee) {
         }
     }
     std::printf(
-        "aggressor: %u clusters, %u cells, a cell sees %.0f%%; %u misses (and %u rays on "
-        "slivers) from %u points\n",
-        b.stats.clusters, b.stats.cells, 100.0 * b.stats.meanVisibleFraction, missed, slivers,
-        eyes);
+        "aggressor (%s set): %u clusters, %u cells, a cell sees %.0f%%, %llu rays, compile and "
+        "set %.1f s; %u misses (and %u rays on slivers) from %u points\n",
+        ownSet ? "its own" : "sampled", b.stats.clusters, b.stats.cells,
+        100.0 * b.stats.meanVisibleFraction, static_cast<unsigned long long>(b.stats.rays.total()),
+        seconds, missed, slivers, eyes);
+    if (ownSet) {
+        EXPECT_EQ(b.stats.rays.total(), 0u);
+    }
     ASSERT_GT(eyes, 20u);
     EXPECT_EQ(missed, 0u);
+}
+
+TEST(Visibility, AQuake3MapsSetsHoldWhatItsSpawnsSee) {
+    checkAggressorFromItsSpawns(false);
+}
+
+TEST(Visibility, AQuake3MapsOwnSetHoldsWhatItsSpawnsSee) {
+    checkAggressorFromItsSpawns(true);
 }
 
 }  // namespace
