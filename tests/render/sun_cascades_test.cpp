@@ -140,10 +140,11 @@ TEST(SunCascades, AnEdgeSoftensGraduallyAcrossASplit) {
     const Edge before = edgeSeenFrom(level, 0.89f * split, 3);
     const Edge inBand = edgeSeenFrom(level, 0.95f * split, 3);
     const Edge past = edgeSeenFrom(level, 1.01f * split, 3);
-    std::printf("[ sun cascades ] across the split at %.2f m: 10-90%% width %.2f cm at 0.89 of "
-                "it, %.2f cm at 0.95, %.2f cm at 1.01\n",
-                double(split), 100.0 * double(before.width), 100.0 * double(inBand.width),
-                100.0 * double(past.width));
+    std::printf(
+        "[ sun cascades ] across the split at %.2f m: 10-90%% width %.2f cm at 0.89 of "
+        "it, %.2f cm at 0.95, %.2f cm at 1.01\n",
+        double(split), 100.0 * double(before.width), 100.0 * double(inBand.width),
+        100.0 * double(past.width));
     EXPECT_GT(inBand.width, 1.4f * before.width);
     EXPECT_LT(inBand.width, 0.9f * past.width);
 }
