@@ -178,13 +178,20 @@ DrawList buildDrawList(const Scene& scene, const RendererOptions& options, const
         casters.push_back(b);
     }
     const float levelReach = glm::length(scene.level.boundsMax - scene.level.boundsMin) + 1.0f;
+    // Per primary light, where each caster's shadow may reach: made once a frame, when the first
+    // unoccluded surface of that light asks.
+    std::vector<std::vector<Box>> reachOf(casters.empty() ? 0 : scene.level.lights.size());
     // Whether a dynamic caster's shadow may reach static surface s under its primary.
     auto dynamicShadowOn = [&](const DrawSurface& s) {
         if (!s.unoccluded || casters.empty()) return false;
-        const world::Light& light = scene.level.lights.at(s.primaryLight);
-        const float reach = light.range > 0.0f ? light.range : levelReach;
-        for (const Box& c : casters)
-            if (overlap(shadowReach(light, c, reach), {s.boundsMin, s.boundsMax})) return true;
+        std::vector<Box>& reaches = reachOf.at(s.primaryLight);
+        if (reaches.empty()) {
+            const world::Light& light = scene.level.lights[s.primaryLight];
+            const float reach = light.range > 0.0f ? light.range : levelReach;
+            for (const Box& c : casters) reaches.push_back(shadowReach(light, c, reach));
+        }
+        for (const Box& r : reaches)
+            if (overlap(r, {s.boundsMin, s.boundsMax})) return true;
         return false;
     };
     const Frustum frustum = frustumOf(view.viewProj);

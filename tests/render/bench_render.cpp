@@ -423,12 +423,9 @@ void benchAntiAliasing(vk::Context& ctx, const std::string& package,
                 reference[(size_t(y) * 1280 + x) * 4 + size_t(k)] =
                     uint8_t(std::lround(std::clamp(display, 0.0f, 1.0f) * 255.0f));
             }
-    auto diff = [](const std::vector<uint8_t>& a, const std::vector<uint8_t>& b, size_t i) {
-        return test::worstChannelDifference(a, b, i / 4);
-    };
-    std::vector<size_t> edges;
-    for (size_t i = 0; i + 3 < frames[0].size(); i += 4)
-        if (diff(frames[0], frames[1], i) > 2) edges.push_back(i);
+    std::vector<size_t> edges;  // pixels
+    for (size_t p = 0; p < frames[0].size() / 4; ++p)
+        if (test::worstChannelDifference(frames[0], frames[1], p) > 2) edges.push_back(p);
     std::printf(
         "onelight-bench-render --aa %s %s: 1280x720, %s, %d interleaved frames, medians; "
         "%zu edge pixels (%.2f%%), reference 16 samples a pixel\n",
@@ -438,19 +435,17 @@ void benchAntiAliasing(vk::Context& ctx, const std::string& package,
                 "edge error", "edge px > 8/255", "all px > 8/255");
     for (size_t c = 0; c < kConfigs; ++c) {
         double sum = 0.0;
-        size_t over = 0, overAll = 0;
-        for (size_t i : edges) {
-            const int d = diff(frames[c], reference, i);
+        size_t over = 0;
+        for (size_t p : edges) {
+            const int d = test::worstChannelDifference(frames[c], reference, p);
             sum += d;
             over += d > 8 ? 1 : 0;
         }
-        for (size_t i = 0; i + 3 < frames[c].size(); i += 4)
-            overAll += diff(frames[c], reference, i) > 8;
         std::printf("  %-18s %9.2f %16.2f %14.2f %15.2f%% %13.2f%%\n", configs[c].name,
                     median(gpu[c]), median(post[c]),
                     sum / double(std::max<size_t>(edges.size(), 1)),
                     100.0 * double(over) / double(std::max<size_t>(edges.size(), 1)),
-                    100.0 * double(overAll) / (1280.0 * 720.0));
+                    100.0 * test::shareOfPixelsOff(frames[c], reference));
     }
 }
 
