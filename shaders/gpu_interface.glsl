@@ -1,7 +1,7 @@
 // The renderer's GPU interface, written once for GLSL and C++ (see common.glsl for the dialect):
 // the limits, the descriptor bindings, the specialization constants, the material texture slots
 // and the records the renderer shares with its shaders, laid out byte for byte: std140 for the
-// frame's uniform block, std430 for the storage buffers and the push constants. Every member is a
+// uniform blocks, std430 for the storage buffers and the push constants. Every member is a
 // vec4, a mat4 or a 4-byte scalar in an order without padding, so both layouts equal C++'s.
 //
 // Only constants and structs live here (no functions): C++ includes it once, outside an anonymous
@@ -21,23 +21,28 @@ const float HDR_MAX = 65000.0f;     // the RGBA16F targets' cap (half's largest 
 // ---------------------------------------------------------------------------------------------
 // Descriptor set 0: the frame's resources.
 
-const int BINDING_FRAME = 0;            // uniform FrameUniforms
-const int BINDING_LIGHTS = 1;           // storage GpuLight[]
-const int BINDING_SHADOW_VIEWS = 2;     // storage GpuShadowView[]
-const int BINDING_SHADOW_MAPS = 3;      // sampler2DArrayShadow
-const int BINDING_LIGHTMAP = 4;         // sampler2DArray
-const int BINDING_SHADOW_MASK = 5;      // sampler2DArray
-const int BINDING_OBJECT_LIGHTING = 6;  // storage GpuObjectLighting[]
-const int BINDING_PROBES = 7;           // samplerCubeArray
-const int BINDING_MATERIALS = 8;        // storage GpuMaterial[]
-const int BINDING_ENV_BRDF = 9;         // sampler2D
-const int BINDING_PROBE_RECORDS = 10;   // storage GpuProbe[]
-const int BINDING_SKY = 11;             // sampler2D, the sky image (shaders/sky.glsl)
-const int BINDING_PROBE_CELLS = 12;     // storage GpuProbeGrid then uint[] (probe_records.hpp)
-const int FRAME_BINDING_COUNT = 13;
+const int BINDING_FRAME = 0;          // uniform FrameUniforms
+const int BINDING_SHADOW_VIEWS = 1;   // uniform GpuShadowView[MAX_SHADOW_VIEWS]
+const int BINDING_SHADOW_MAPS = 2;    // sampler2DArrayShadow
+const int BINDING_LIGHTMAP = 3;       // sampler2DArray
+const int BINDING_SHADOW_MASK = 4;    // sampler2DArray
+const int BINDING_PROBES = 5;         // samplerCubeArray
+const int BINDING_ENV_BRDF = 6;       // sampler2D
+const int BINDING_PROBE_RECORDS = 7;  // storage GpuProbe[]
+const int BINDING_SKY = 8;            // sampler2D, the sky image (shaders/sky.glsl)
+const int BINDING_PROBE_CELLS = 9;    // storage GpuProbeGrid then uint[] (probe_records.hpp)
+// The draw's records: uniform buffers at dynamic offsets, the set bound again where they change.
+// Read at a draw-uniform place, a CPU rasterizer loads them once for a block of pixels, where a
+// storage buffer's element is loaded per pixel (llvmpipe gathers every lane).
+const int BINDING_DRAW_PRIMARY = 10;          // uniform GpuLight, the draw's primary light
+const int BINDING_DRAW_OBJECT_LIGHTING = 11;  // uniform GpuObjectLighting, a dynamic object's
+const int FRAME_BINDING_COUNT = 12;
+// The shadow views a frame can hold (RendererOptions::maxShadowLayers is clamped to it): 15 KiB,
+// under Vulkan's smallest guaranteed uniform range (16 KiB).
+const uint MAX_SHADOW_VIEWS = 192u;
 
-// Descriptor set 1: a material's textures, binding = slot. GpuMaterial.textures.x holds bit
-// (1 << slot) for every slot the material fills (the others hold placeholders).
+// Descriptor set 1: a material's textures, binding = slot, and its record. GpuMaterial.textures.x
+// holds bit (1 << slot) for every slot the material fills (the others hold placeholders).
 const int TEXTURE_BASE_COLOR = 0;
 const int TEXTURE_METALLIC_ROUGHNESS = 1;
 const int TEXTURE_NORMAL = 2;
@@ -45,6 +50,7 @@ const int TEXTURE_OCCLUSION = 3;
 const int TEXTURE_EMISSIVE = 4;
 const int TEXTURE_CAVITY = 5;  // R8, made from the normal map by the texture stage
 const int TEXTURE_SLOT_COUNT = 6;
+const int BINDING_MATERIAL_RECORD = 6;  // uniform GpuMaterial, the material's own record
 
 // The tonemap pass's set 0.
 const int BINDING_TONEMAP_HDR = 0;  // sampler2D, the resolved pre-exposed frame
@@ -165,10 +171,10 @@ struct GpuProbeGrid {
 // Per draw (push constants).
 struct DrawPush {
     mat4 model;            // world from object (identity for static surfaces)
-    uint material;         // into materials
-    uint primaryLight;     // into lights or NO_INDEX
+    uint material;         // the level's material (set 1 is its set)
+    uint primaryLight;     // the level's light (drawPrimary is its record), or NO_INDEX
     uint lightmapAtlas;    // a static surface's atlas, NO_INDEX for a dynamic object (grid)
-    uint objectLighting;   // a dynamic object's record in objectLighting[], or NO_INDEX
+    uint objectLighting;   // a dynamic object's entity (drawObjectLighting is its), or NO_INDEX
     vec4 lightmapScale;    // xy: uv1 (over the surface's atlas) to the lightmap array's uv
 };
 

@@ -22,22 +22,22 @@ struct FrameSlot {
     VkFence done = VK_NULL_HANDLE;            // owned, signalled when its last submit finished
     VkQueryPool timestamps = VK_NULL_HANDLE;  // owned, kTimestampCount (when supported)
     vk::Buffer uniforms;                      // owned, FrameUniforms
-    vk::Buffer shadowViews;                   // owned, GpuShadowView per shadow view
-    vk::Buffer objectLighting;                // owned, GpuObjectLighting per entity
-    uint64_t frame = 0;                       // the frame it last submitted
-    bool pending = false;                     // submitted and not waited for yet
+    vk::Buffer shadowViews;                   // owned, MAX_SHADOW_VIEWS GpuShadowView
+    vk::Buffer objectLighting;  // owned, GpuObjectLighting per entity, objectLightingStride apart
+    uint64_t frame = 0;         // the frame it last submitted
+    bool pending = false;       // submitted and not waited for yet
 };
 
 /// kFramesInFlight slots used in turn: frame n records into slots[n % kFramesInFlight].
 struct FrameSlots {
     std::array<FrameSlot, kFramesInFlight> slots;
-    uint64_t submitted = 0;   // frames submitted so far
-    bool timestamps = false;  // the device writes timestamps
+    uint64_t submitted = 0;                                   // frames submitted so far
+    bool timestamps = false;                                  // the device writes timestamps
+    size_t objectLightingStride = sizeof(GpuObjectLighting);  // bytes between entities' records
 };
 
-/// Slots whose buffers hold `shadowViews` shadow views and `entities` entities (at least one).
-void createFrameSlots(const vk::Context& ctx, FrameSlots& frames, size_t shadowViews,
-                      size_t entities);
+/// Slots whose buffers hold the shadow views and `entities` entities (at least one).
+void createFrameSlots(const vk::Context& ctx, FrameSlots& frames, size_t entities);
 void destroyFrameSlots(const vk::Context& ctx, FrameSlots& frames);
 
 /// Waits for the slot's last frame, if one is pending, and reports its GPU times in `stats`

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <set>
 #include <tuple>
 
@@ -313,15 +314,16 @@ void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
 }
 
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                         const FrameView& view, const DrawList& list, GpuObjectLighting* out) {
+                         const FrameView& view, const DrawList& list, uint8_t* out, size_t stride) {
     const bool useGrid = baked.present && !baked.grid.cells.empty();
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
-        GpuObjectLighting& o = out[e];
+        GpuObjectLighting o{};
         if (!useGrid) {  // the placeholder textures' neutral values: the ambient, visible
             for (glm::vec4& face : o.ambientCube)
                 face = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
             o.ambientCube[0].w = 1.0f;
+            std::memcpy(out + e * stride, &o, sizeof(o));
             continue;
         }
         const world::LightGridSample sample =
@@ -330,6 +332,7 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
         const uint32_t primary = view.entityPrimary[e];
         o.ambientCube[0].w =
             primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
+        std::memcpy(out + e * stride, &o, sizeof(o));
     }
 }
 

@@ -72,9 +72,10 @@ struct DrawList {
                                       const RendererOptions& options, size_t entityCount,
                                       uint32_t shadowedLight);
 
-/// The grid's lighting of every visible dynamic object, into `out` (one record per entity).
+/// The grid's lighting of every visible dynamic object, into `out` (entity e's record at byte
+/// e * stride).
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                         const FrameView& view, const DrawList& list, GpuObjectLighting* out);
+                         const FrameView& view, const DrawList& list, uint8_t* out, size_t stride);
 
 /// The frame's uniforms: camera, exposure, shadow and baked parameters, effect lights.
 [[nodiscard]] FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options,

@@ -84,6 +84,7 @@ constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags kVertexFragment =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+constexpr VkDescriptorType kUniformDynamic = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 
@@ -91,19 +92,30 @@ constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 const std::vector<VkDescriptorSetLayoutBinding>& frameBindings() {
     static const std::vector<VkDescriptorSetLayoutBinding> bindings = {
         vk::layoutBinding(glsl::BINDING_FRAME, kUniform, kVertexFragment),
-        vk::layoutBinding(glsl::BINDING_LIGHTS, kStorage, kFragment),
-        vk::layoutBinding(glsl::BINDING_SHADOW_VIEWS, kStorage, kFragment),
+        vk::layoutBinding(glsl::BINDING_SHADOW_VIEWS, kUniform, kFragment),
         vk::layoutBinding(glsl::BINDING_SHADOW_MAPS, kSampled, kFragment),
         vk::layoutBinding(glsl::BINDING_LIGHTMAP, kSampled, kFragment),
         vk::layoutBinding(glsl::BINDING_SHADOW_MASK, kSampled, kFragment),
-        vk::layoutBinding(glsl::BINDING_OBJECT_LIGHTING, kStorage, kFragment),
         vk::layoutBinding(glsl::BINDING_PROBES, kSampled, kFragment),
-        vk::layoutBinding(glsl::BINDING_MATERIALS, kStorage, kFragment),
         vk::layoutBinding(glsl::BINDING_ENV_BRDF, kSampled, kFragment),
         vk::layoutBinding(glsl::BINDING_PROBE_RECORDS, kStorage, kFragment),
         vk::layoutBinding(glsl::BINDING_SKY, kSampled, kFragment),
-        vk::layoutBinding(glsl::BINDING_PROBE_CELLS, kStorage, kFragment)};
-    static_assert(glsl::FRAME_BINDING_COUNT == 13, "one layout binding per frame binding");
+        vk::layoutBinding(glsl::BINDING_PROBE_CELLS, kStorage, kFragment),
+        vk::layoutBinding(glsl::BINDING_DRAW_PRIMARY, kUniformDynamic, kFragment),
+        vk::layoutBinding(glsl::BINDING_DRAW_OBJECT_LIGHTING, kUniformDynamic, kFragment)};
+    static_assert(glsl::FRAME_BINDING_COUNT == 12, "one layout binding per frame binding");
+    return bindings;
+}
+
+// Set 1: a material's textures, slot by slot, and its record.
+const std::vector<VkDescriptorSetLayoutBinding>& materialBindings() {
+    static const std::vector<VkDescriptorSetLayoutBinding> bindings = [] {
+        std::vector<VkDescriptorSetLayoutBinding> b;
+        for (int slot = 0; slot < glsl::TEXTURE_SLOT_COUNT; ++slot)
+            b.push_back(vk::layoutBinding(uint32_t(slot), kSampled, kFragment));
+        b.push_back(vk::layoutBinding(glsl::BINDING_MATERIAL_RECORD, kUniform, kFragment));
+        return b;
+    }();
     return bindings;
 }
 
@@ -127,16 +139,13 @@ std::vector<VkVertexInputAttributeDescription> vertexAttributes(bool positionOnl
 }
 
 void createLayouts(const vk::Context& ctx, Pipelines& p) {
-    std::vector<VkDescriptorSetLayoutBinding> materialBindings;
-    for (int slot = 0; slot < glsl::TEXTURE_SLOT_COUNT; ++slot)
-        materialBindings.push_back(vk::layoutBinding(uint32_t(slot), kSampled, kFragment));
     const std::vector<std::vector<VkDescriptorSetLayoutBinding>> forwardSets = {frameBindings(),
-                                                                                materialBindings};
+                                                                                materialBindings()};
     vk::createPipelineLayout(ctx, p.forwardLayout, forwardSets, sizeof(DrawPush), kVertexFragment);
     const std::vector<std::vector<VkDescriptorSetLayoutBinding>> noSets;
     vk::createPipelineLayout(ctx, p.shadowLayout, noSets, sizeof(glm::mat4),
                              VK_SHADER_STAGE_VERTEX_BIT);
-    const std::vector<std::vector<VkDescriptorSetLayoutBinding>> maskedSets = {materialBindings};
+    const std::vector<std::vector<VkDescriptorSetLayoutBinding>> maskedSets = {materialBindings()};
     vk::createPipelineLayout(ctx, p.maskedShadowLayout, maskedSets, sizeof(MaskedShadowPush),
                              kVertexFragment);
     const std::vector<std::vector<VkDescriptorSetLayoutBinding>> tonemapSets = {
@@ -303,11 +312,14 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
                           const vk::Buffer& lightRecords, const RenderTargets& targets) {
     const uint32_t materials = uint32_t(scene.materials.bound.size());
     const std::vector<VkDescriptorSetLayoutBinding>& frame = frameBindings();
+    const std::vector<VkDescriptorSetLayoutBinding>& material = materialBindings();
     const VkDescriptorPoolSize sizes[] = {
-        {kUniform, kFramesInFlight * countOf(frame, kUniform)},
+        {kUniform,
+         kFramesInFlight * countOf(frame, kUniform) + materials * countOf(material, kUniform)},
+        {kUniformDynamic, kFramesInFlight * countOf(frame, kUniformDynamic)},
         {kStorage, kFramesInFlight * countOf(frame, kStorage)},
-        {kSampled, kFramesInFlight * countOf(frame, kSampled) +
-                       materials * uint32_t(glsl::TEXTURE_SLOT_COUNT) + 3}};
+        {kSampled,
+         kFramesInFlight * countOf(frame, kSampled) + materials * countOf(material, kSampled) + 3}};
     sets.pool = vk::createDescriptorPool(ctx, kFramesInFlight + materials + 2, sizes);
 
     const LookupTables& tables = scene.tables;
@@ -319,25 +331,31 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
         vk::DescriptorWriter w;
         w.set = sets.frame[i];
         w.buffer(glsl::BINDING_FRAME, kUniform, slot.uniforms.buffer);
-        w.buffer(glsl::BINDING_LIGHTS, kStorage, lightRecords.buffer);
-        w.buffer(glsl::BINDING_SHADOW_VIEWS, kStorage, slot.shadowViews.buffer);
+        w.buffer(glsl::BINDING_SHADOW_VIEWS, kUniform, slot.shadowViews.buffer);
         w.image(glsl::BINDING_SHADOW_MAPS, shadowMaps.view, shadows.sampler);
         w.image(glsl::BINDING_LIGHTMAP, scene.baked.lightmap.view, tables.linearClamp);
         w.image(glsl::BINDING_SHADOW_MASK, scene.baked.shadowMask.view, tables.linearClamp);
-        w.buffer(glsl::BINDING_OBJECT_LIGHTING, kStorage, slot.objectLighting.buffer);
         w.image(glsl::BINDING_PROBES, scene.probes.cubes.view, tables.linearClamp);
-        w.buffer(glsl::BINDING_MATERIALS, kStorage, scene.materials.records.buffer);
         w.image(glsl::BINDING_ENV_BRDF, tables.envBrdf.view, tables.linearClamp);
         w.buffer(glsl::BINDING_PROBE_RECORDS, kStorage, scene.probes.records.buffer);
         w.image(glsl::BINDING_SKY, scene.sky.image.view, scene.sky.sampler);
         w.buffer(glsl::BINDING_PROBE_CELLS, kStorage, scene.probes.cells.buffer);
+        w.buffer(glsl::BINDING_DRAW_PRIMARY, kUniformDynamic, lightRecords.buffer, 0,
+                 sizeof(GpuLight));
+        w.buffer(glsl::BINDING_DRAW_OBJECT_LIGHTING, kUniformDynamic, slot.objectLighting.buffer, 0,
+                 sizeof(GpuObjectLighting));
         w.update(ctx);
     }
-    for (const MaterialTextures& textures : scene.materials.bound) {
+    sets.lightStride = vk::uniformRecordStride(ctx, sizeof(GpuLight));
+    sets.objectLightingStride = frames.objectLightingStride;
+    for (size_t i = 0; i < scene.materials.bound.size(); ++i) {
+        const MaterialTextures& textures = scene.materials.bound[i];
         vk::DescriptorWriter m;
         m.set = vk::allocateDescriptorSet(ctx, sets.pool, pipelines.forwardLayout.setLayouts[1]);
         for (uint32_t t = 0; t < uint32_t(glsl::TEXTURE_SLOT_COUNT); ++t)
             m.image(t, textures[t].first, textures[t].second);
+        m.buffer(glsl::BINDING_MATERIAL_RECORD, kUniform, scene.materials.records.buffer,
+                 i * scene.materials.recordStride, sizeof(GpuMaterial));
         m.update(ctx);
         sets.material.push_back(m.set);
     }

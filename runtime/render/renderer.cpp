@@ -61,8 +61,8 @@ void recordFrame(RendererState& s, uint32_t slotIndex, const FrameView& view, co
          s.pipelines.maskedShadowLayout.layout, &s.scene.materials, &s.descriptors.material},
         s.scene.geometry, list.visibleLights, view.entityTransforms);
     writeTimestamp(s.frames, cmd, slot, 1);
-    recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors,
-                      s.descriptors.frame[slotIndex], view, list, stats);
+    recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors, slotIndex, view, list,
+                      stats);
     writeTimestamp(s.frames, cmd, slot, 2);
     recordTonemapPass(cmd, s.targets, s.pipelines, s.descriptors);
     writeTimestamp(s.frames, cmd, slot, 3);
@@ -93,7 +93,8 @@ FrameStats drawList(RendererState& s, const FrameInputs& inputs, const FrameOutp
     const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
     FrameSlot& slot = s.frames.slots[slotIndex];
     writeObjectLighting(scene.level, scene.baked, view, list,
-                        static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
+                        static_cast<uint8_t*>(slot.objectLighting.mapped),
+                        s.frames.objectLightingStride);
     const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
     std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));
     updateShadowViews(s.shadows, scene.level, view.camera, list.visibleLights);
@@ -201,7 +202,7 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
         createTargets(ctx, s.targets, std::max(options.width, 1u), std::max(options.height, 1u),
                       samples, options.fxaa);
         createReadback(ctx, s.readback, s.targets.width, s.targets.height);
-        createFrameSlots(ctx, s.frames, s.shadows.views.size(), scene.level.entities.size());
+        createFrameSlots(ctx, s.frames, scene.level.entities.size());
         ForwardChoices choices;
         choices.samples = samples;
         choices.fetchBakedLighting = scene.baked.present || options.samplePlaceholders;

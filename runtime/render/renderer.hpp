@@ -113,7 +113,7 @@ struct RendererOptions {
     uint32_t width = 1280, height = 720;
     uint32_t requestedMsaa = 2;     // Black Ops' choice; the nearest supported is used
     uint32_t shadowMapSize = 1024;  // texels, every shadow layer
-    uint32_t maxShadowLayers = 48;  // sun sunCascades, spot 1, omni 6 layers
+    uint32_t maxShadowLayers = 48;  // sun sunCascades, spot 1, omni 6 layers; <= MAX_SHADOW_VIEWS
     // Post-process anti-aliasing of the tonemapped frame (FXAA, runtime/render/shaders/
     // fxaa.frag), for MSAA 1x: docs/frame-rate.md compares the two on frame time and edge error.
     bool fxaa = false;

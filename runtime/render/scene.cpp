@@ -360,7 +360,11 @@ void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
         gpu[0].baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
         gpu[0].params = glm::vec4(0.0f, 1.0f, 1.0f, 1.0f);
     }
-    createRecordBuffer(ctx, materials.records, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    materials.recordStride = vk::uniformRecordStride(ctx, sizeof(GpuMaterial));
+    vk::createDeviceBuffer(
+        ctx, materials.records,
+        vk::stridedBytes(std::span<const GpuMaterial>(gpu), materials.recordStride),
+        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 }
 
 void createPlaceholders(const vk::Context& ctx, SceneMaterials& materials) {
@@ -741,7 +745,10 @@ void createLightRecords(const vk::Context& ctx, vk::Buffer& buffer,
     for (uint32_t i = 0; i < lights.size(); ++i)
         gpu.push_back(gpuLightOf(lights[i], shadowViews.at(i)));
     if (gpu.empty()) gpu.emplace_back();  // a binding needs a record
-    createRecordBuffer(ctx, buffer, gpu, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    vk::createDeviceBuffer(ctx, buffer,
+                           vk::stridedBytes(std::span<const GpuLight>(gpu),
+                                            vk::uniformRecordStride(ctx, sizeof(GpuLight))),
+                           VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 }
 
 void createScene(const vk::Context& ctx, Scene& scene, const assets::LoadedLevel& loaded,

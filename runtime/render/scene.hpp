@@ -76,7 +76,8 @@ using MaterialTextures =
 /// The materials: their GPU records, their decoded textures and samplers, and what picks their
 /// forward permutation. At least one material (a default when the level has none).
 struct SceneMaterials {
-    vk::Buffer records;                         // owned, GpuMaterial per material
+    vk::Buffer records;  // owned, GpuMaterial per material, recordStride apart (uniform reads)
+    VkDeviceSize recordStride = sizeof(GpuMaterial);
     std::deque<vk::Image> textures;             // owned, decoded level images (never moved)
     std::map<uint64_t, uint32_t> textureIndex;  // (image << 1 | srgb) -> textures
     std::map<uint64_t, VkSampler> samplers;     // owned, by glTF sampler state
@@ -139,8 +140,9 @@ struct ShadowViewRange {
     uint32_t first = kNoIndex, count = 0;
 };
 
-/// The level's lights (GpuLight, device-local) with their shadow views, or one empty record
-/// without lights: after createShadows has given them views (`shadowViews` per light).
+/// The level's lights (GpuLight, device-local, vk::uniformRecordStride apart: each draw reads its
+/// primary's as a uniform buffer) with their shadow views, or one empty record without lights:
+/// after createShadows has given them views (`shadowViews` per light).
 void createLightRecords(const vk::Context& ctx, vk::Buffer& buffer,
                         const std::vector<world::Light>& lights,
                         const std::vector<ShadowViewRange>& shadowViews);

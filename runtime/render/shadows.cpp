@@ -194,7 +194,8 @@ void createShadows(const vk::Context& ctx, ShadowMaps& shadows, const LevelData&
     const std::vector<float> splits =
         sunCascadeSplits(options.shadowRadius, options.sunCascades, levelDiagonal(level));
     // Slots for every primary light a surface uses (and every primary, for dynamic objects),
-    // while layers last.
+    // while layers last (and the forward pass's uniform array of views holds them).
+    const uint32_t maxLayers = std::min(options.maxShadowLayers, glsl::MAX_SHADOW_VIEWS);
     shadows.lightSlot.assign(lights.size(), kNoIndex);
     uint32_t layers = 0;
     for (uint32_t i = 0; i < lights.size(); ++i) {
@@ -203,7 +204,7 @@ void createShadows(const vk::Context& ctx, ShadowMaps& shadows, const LevelData&
                               : lights[i].type == world::LightType::kDirectional
                                   ? uint32_t(splits.size())
                                   : 1u;
-        if (layers + need > options.maxShadowLayers) continue;
+        if (layers + need > maxLayers) continue;
         ShadowSlot slot;
         slot.light = i;
         slot.firstView = layers;

@@ -6,7 +6,9 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <cstring>
 #include <span>
+#include <vector>
 
 #include "vk/context.hpp"
 
@@ -45,6 +47,19 @@ void createDeviceBuffer(const Context& ctx, Buffer& buffer, std::span<const uint
 template <class T>
 [[nodiscard]] std::span<const uint8_t> bytesOf(std::span<const T> records) {
     return {reinterpret_cast<const uint8_t*>(records.data()), records.size_bytes()};
+}
+
+// The distance between records of `recordBytes` read as uniform buffers at their own offsets:
+// the record rounded up to the device's minUniformBufferOffsetAlignment.
+[[nodiscard]] VkDeviceSize uniformRecordStride(const Context& ctx, VkDeviceSize recordBytes);
+
+// `records` laid out `stride` bytes apart (stride >= sizeof(T)), the gaps zero.
+template <class T>
+[[nodiscard]] std::vector<uint8_t> stridedBytes(std::span<const T> records, VkDeviceSize stride) {
+    std::vector<uint8_t> bytes(records.size() * stride, 0);
+    for (size_t i = 0; i < records.size(); ++i)
+        std::memcpy(bytes.data() + i * stride, &records[i], sizeof(T));
+    return bytes;
 }
 
 // Unmaps, destroys and frees. Safe on an empty Buffer.

@@ -72,8 +72,9 @@ VkDescriptorSet allocateDescriptorSet(const Context& ctx, VkDescriptorPool pool,
     return set;
 }
 
-void DescriptorWriter::buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer) {
-    pending_.push_back({binding, 0, type, {buffer, 0, VK_WHOLE_SIZE}, {}});
+void DescriptorWriter::buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer,
+                              VkDeviceSize offset, VkDeviceSize range) {
+    pending_.push_back({binding, 0, type, {buffer, offset, range}, {}});
 }
 
 void DescriptorWriter::image(uint32_t binding, VkImageView view, VkSampler sampler,

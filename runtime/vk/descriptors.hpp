@@ -44,7 +44,9 @@ void destroyDescriptorSet(const Context& ctx, DescriptorSet& set);
 struct DescriptorWriter {
     VkDescriptorSet set = VK_NULL_HANDLE;  // borrowed
 
-    void buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer);
+    // The whole buffer, or `range` bytes from `offset` (a dynamic binding's range: the record).
+    void buffer(uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset = 0,
+                VkDeviceSize range = VK_WHOLE_SIZE);
     void image(uint32_t binding, VkImageView view, VkSampler sampler,
                VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                uint32_t arrayElement = 0);

@@ -8,11 +8,16 @@
 
 // Set 0: the frame.
 layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUniforms frame; };
-layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = BINDING_SHADOW_VIEWS, std430) readonly buffer ShadowViews {
-    GpuShadowView shadowViews[];
+layout(set = 0, binding = BINDING_SHADOW_VIEWS, std140) uniform ShadowViews {
+    GpuShadowView shadowViews[MAX_SHADOW_VIEWS];
 };
 layout(set = 0, binding = BINDING_SHADOW_MAPS) uniform sampler2DArrayShadow shadowMaps;
+// The draw's records (valid where draw.primaryLight and draw.objectLighting are): its primary
+// light, and a dynamic object's baked lighting, the light grid sampled at its origin.
+layout(set = 0, binding = BINDING_DRAW_PRIMARY, std140) uniform PrimaryRecord { GpuLight drawPrimary; };
+layout(set = 0, binding = BINDING_DRAW_OBJECT_LIGHTING, std140) uniform ObjectLightingRecord {
+    GpuObjectLighting drawObjectLighting;
+};
 
 // Baked lighting from the package (neutral placeholders for a level without it).
 // Lightmap: layer 3 * atlas + channel holds (c0, cx, cy, cz) of irradianceLinear, times a
@@ -21,10 +26,6 @@ layout(set = 0, binding = BINDING_SHADOW_MAPS) uniform sampler2DArrayShadow shad
 layout(set = 0, binding = BINDING_LIGHTMAP) uniform sampler2DArray lightmap;
 // Layer atlas: r = the primary's baked visibility.
 layout(set = 0, binding = BINDING_SHADOW_MASK) uniform sampler2DArray shadowMask;
-// Dynamic objects: the light grid sampled at each object's origin.
-layout(set = 0, binding = BINDING_OBJECT_LIGHTING, std430) readonly buffer ObjectLighting {
-    GpuObjectLighting objectLighting[];
-};
 // Environment probes (runtime/render/probe_records.hpp): cube i of the array is record i, in
 // blending order; RGB9E5 normalised radiance, mip m prefiltered for probeGlossOfMip(m).
 layout(set = 0, binding = BINDING_PROBES) uniform samplerCubeArray probes;
@@ -34,9 +35,6 @@ layout(set = 0, binding = BINDING_PROBE_RECORDS, std430) readonly buffer Probes 
 layout(set = 0, binding = BINDING_PROBE_CELLS, std430) readonly buffer ProbeCells {
     GpuProbeGrid probeGrid;
     uint probeCells[];
-};
-layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer Materials {
-    GpuMaterial materials[];
 };
 // The split-sum table (shaders/lighting.glsl, env_brdf_table.hpp; rg = scale, bias), read at
 // envBrdfTableCoord(NoV, gloss): the probes' environment "Fresnel" and the diffuse's energy
@@ -52,6 +50,9 @@ layout(set = 1, binding = TEXTURE_NORMAL) uniform sampler2D normalTexture;
 layout(set = 1, binding = TEXTURE_OCCLUSION) uniform sampler2D occlusionTexture;
 layout(set = 1, binding = TEXTURE_EMISSIVE) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = TEXTURE_CAVITY) uniform sampler2D cavityTexture;
+layout(set = 1, binding = BINDING_MATERIAL_RECORD, std140) uniform MaterialRecord {
+    GpuMaterial drawMaterial;
+};
 
 // Per draw.
 layout(push_constant) uniform DrawBlock { DrawPush draw; };
