@@ -71,6 +71,17 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
         s.registry.emplace<DynamicLighting>(entity);
         if (e.flags & world::kEntityMover)
             s.registry.emplace<Mover>(entity, Mover{e.position, e.moverOffset, e.moverPeriod});
+        if (e.flags & world::kEntityItem) {
+            Item item{e.position, e.itemRespawn, i};
+            // An item whose box starts in a brush is left out, as the game leaves it out.
+            if (!dropItem(level.collision.brushes.empty() ? nullptr : &s.brushes, e.position,
+                          (e.flags & world::kEntitySuspended) != 0, item.rest)) {
+                item.present = false;
+                item.respawnSeconds = -1.0f;
+            }
+            s.registry.get<Transform>(entity).position = item.rest;
+            s.registry.emplace<Item>(entity, item);
+        }
     }
     for (uint32_t i = 0; i < level.lights.size(); ++i) {
         s.lightNames.push_back(level.lights[i].name);
@@ -142,6 +153,7 @@ void stepSession(Session& s) {
     s.world.brushes = s.level->level.collision.brushes.empty() ? nullptr : &s.brushes;
     playerSystem(s.registry, tick, s.input, s.tuning, s.world);
     triggerSystem(s.registry, s.tuning, s.world);
+    itemSystem(s.registry, tick, s.player);
     moverSystem(s.registry, tick);
     effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);
     primarySelectionSystem(s.registry, s.primaryCandidates, [&s](uint32_t light, glm::vec3 p) {
@@ -191,10 +203,11 @@ render::FrameInputs frameInputsOf(const Session& s,
     for (auto [e, transform, link] : r.view<Transform, LevelEntity>().each()) {
         render::DynamicTransform d;
         d.entity = link.index;
-        d.worldFromObject =
-            world::worldFromObject(s.level->level.entities[link.index], transform.position);
+        d.worldFromObject = world::worldFromObject(s.level->level.entities[link.index],
+                                                   transform.position, transform.yaw);
         if (const DynamicLighting* lit = r.tryGet<DynamicLighting>(e))
             d.primary = lit->pick.primary;
+        if (const Item* item = r.tryGet<Item>(e)) d.hidden = !item->present;
         transforms.push_back(d);
     }
     in.dynamicTransforms = transforms;

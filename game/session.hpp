@@ -10,6 +10,7 @@
 #include "render/renderer.hpp"
 #include "sim/components.hpp"
 #include "sim/input.hpp"
+#include "sim/items.hpp"
 #include "sim/systems.hpp"
 #include "sim/tuning.hpp"
 
@@ -44,8 +45,8 @@ struct Session {
 // with quake3Tuning() on them; others with the default tuning on their drawn surfaces.
 void startSession(Session& session, const assets::LoadedLevel& level);
 
-// Runs one fixed tick: player, triggers, movers, effect lights, primary selection; then clears the
-// tick's one-shot input.
+// Runs one fixed tick: player, triggers, items, movers, effect lights, primary selection; then
+// clears the tick's one-shot input.
 void stepSession(Session& session);
 
 // The player's eye as a camera, with the adapted exposure.

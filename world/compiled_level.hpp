@@ -173,13 +173,15 @@ struct DynamicMesh {
 };
 
 enum EntityFlags : uint32_t {
-    kEntityDynamic = 1u << 0,  // owns dynamic meshes, lit by the grid
-    kEntityMover = 1u << 1,    // moves back and forth by moverOffset over moverPeriod
-    kEntitySpawn = 1u << 2,    // a player spawn point
-    kEntityProbe = 1u << 3,    // an environment probe position
+    kEntityDynamic = 1u << 0,    // owns dynamic meshes, lit by the grid
+    kEntityMover = 1u << 1,      // moves back and forth by moverOffset over moverPeriod
+    kEntitySpawn = 1u << 2,      // a player spawn point
+    kEntityProbe = 1u << 3,      // an environment probe position
+    kEntityItem = 1u << 4,       // a pickup: spins and bobs, taken on touch, back after itemRespawn
+    kEntitySuspended = 1u << 5,  // an item that hangs where placed (else it drops to the floor)
 };
 inline constexpr uint32_t kAllEntityFlags =
-    kEntityDynamic | kEntityMover | kEntitySpawn | kEntityProbe;
+    kEntityDynamic | kEntityMover | kEntitySpawn | kEntityProbe | kEntityItem | kEntitySuspended;
 
 /// A node the game or the baker needs by name: dynamic meshes, movers, spawns, probes.
 struct Entity {
@@ -192,6 +194,7 @@ struct Entity {
     glm::vec3 moverOffset{0.0f};  // metres, world space
     float moverPeriod = 0.0f;     // seconds for a full back-and-forth; > 0 for movers
     glm::vec3 probeBoxMin{0.0f}, probeBoxMax{0.0f};  // world; empty box = no box projection
+    float itemRespawn = 0.0f;  // items: seconds taken before it comes back; < 0 never
 };
 
 enum FeatureFlags : uint32_t {

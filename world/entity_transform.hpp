@@ -10,9 +10,13 @@
 namespace onelight::world {
 
 /// World from object for entity `e` with its origin at `position` (metres, world): e's scale,
-/// then its rotation (normalised), then the translation.
-[[nodiscard]] inline glm::mat4 worldFromObject(const Entity& e, glm::vec3 position) {
-    glm::mat4 m = glm::mat4_cast(glm::normalize(e.rotation));
+/// then its rotation (normalised), then a turn of `yaw` radians about +y (a spinning item's;
+/// positive turns left seen from above), then the translation.
+[[nodiscard]] inline glm::mat4 worldFromObject(const Entity& e, glm::vec3 position,
+                                               float yaw = 0.0f) {
+    glm::quat rotation = glm::normalize(e.rotation);
+    if (yaw != 0.0f) rotation = glm::angleAxis(yaw, glm::vec3(0.0f, 1.0f, 0.0f)) * rotation;
+    glm::mat4 m = glm::mat4_cast(rotation);
     m[0] *= e.scale.x;
     m[1] *= e.scale.y;
     m[2] *= e.scale.z;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "items.hpp"
+
 namespace onelight::game {
 
 namespace {
@@ -93,6 +95,14 @@ ReplayRunner makeReplayRunner(replay::Script script, std::vector<std::string> li
     if (player != ecs::kNullEntity && registry.allOf<Transform>(player))
         r.origin = registry.get<Transform>(player).position;
     for (const Command& c : r.script.commands) {
+        if (c.kind == CommandKind::kExpectItem) {
+            const ecs::Entity e = findNamed(registry, c.name);
+            if (e == ecs::kNullEntity || !registry.allOf<Item>(e))
+                throw ReplayFailure(place(r, c) + "unknown item '" + c.name +
+                                    "' (the level's items are named CLASSNAME_N, e.g. "
+                                    "weapon_rocketlauncher_1)");
+            continue;
+        }
         if (c.kind != CommandKind::kExpectPrimary) continue;
         ecs::Entity e = findNamed(registry, c.name);
         if (e == ecs::kNullEntity)
@@ -183,6 +193,15 @@ ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, const ecs::Regi
             case CommandKind::kExpectRespawns:
                 checkPlayer(r, c, registry);
                 break;
+            case CommandKind::kExpectItem: {
+                const Item& item = registry.get<Item>(findNamed(registry, c.name));
+                if (item.present != c.on)
+                    throw ReplayFailure(place(r, c) + "expected item '" + c.name + "' " +
+                                        (c.on ? "visible" : "taken") + ", but it is " +
+                                        (item.present ? "visible" : "taken") + " (taken " +
+                                        std::to_string(item.timesTaken) + " times so far)");
+                break;
+            }
             case CommandKind::kExpectOnGround:
             case CommandKind::kExpectMoved: {
                 const ecs::Entity player = findNamed(registry, "player");

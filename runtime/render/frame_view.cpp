@@ -154,12 +154,14 @@ FrameView frameViewOf(const LevelData& level, float aspect, const FrameInputs& i
     const std::vector<world::Entity>& entities = level.entities;
     v.entityTransforms.resize(entities.size());
     v.entityPrimary.assign(entities.size(), kNoIndex);
+    v.entityHidden.assign(entities.size(), 0);
     for (size_t e = 0; e < entities.size(); ++e)
         v.entityTransforms[e] = world::worldFromObject(entities[e], entities[e].position);
     for (const DynamicTransform& t : inputs.dynamicTransforms) {
         if (t.entity >= v.entityTransforms.size()) continue;
         v.entityTransforms[t.entity] = t.worldFromObject;
         if (t.primary < level.lights.size()) v.entityPrimary[t.entity] = t.primary;
+        v.entityHidden[t.entity] = t.hidden ? 1 : 0;
     }
     return v;
 }
@@ -174,6 +176,7 @@ DrawList buildDrawList(const Scene& scene, const RendererOptions& options, const
     // Every dynamic caster, seen or not: its shadow may fall in view.
     std::vector<Box> casters;
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
+        if (view.entityHidden[mesh.entity]) continue;
         Box b;
         worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, b.lo, b.hi);
         casters.push_back(b);
@@ -229,6 +232,7 @@ DrawList buildDrawList(const Scene& scene, const RendererOptions& options, const
     }
     list.entityVisible.assign(entityCount, 0);
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
+        if (view.entityHidden[mesh.entity]) continue;
         glm::vec3 lo, hi;
         worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, lo, hi);
         if (!intersects(frustum, lo, hi)) continue;

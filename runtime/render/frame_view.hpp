@@ -39,6 +39,7 @@ struct FrameView {
     float ev100 = 0.0f, exposure = 1.0f;
     std::vector<glm::mat4> entityTransforms;  // per entity: given, else its placement
     std::vector<uint32_t> entityPrimary;      // per entity: the game's pick, or kNoIndex
+    std::vector<uint8_t> entityHidden;        // per entity: 1 = not drawn, no shadow
     bool effectLights = false;                // any effect omni or the spot is on
 };
 /// The view of a frame `aspect` wide per unit of height.

@@ -59,7 +59,7 @@ void recordFrame(RendererState& s, uint32_t slotIndex, const FrameView& view, co
         s.shadows, cmd,
         {s.pipelines.shadow, s.pipelines.maskedShadow, s.pipelines.shadowLayout.layout,
          s.pipelines.maskedShadowLayout.layout, &s.scene.materials, &s.descriptors.material},
-        s.scene.geometry, list.visibleLights, view.entityTransforms);
+        s.scene.geometry, list.visibleLights, view.entityTransforms, view.entityHidden);
     writeTimestamp(s.frames, cmd, slot, 1);
     recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors, slotIndex, view, list,
                       stats);

@@ -149,8 +149,10 @@ void drawStaticCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const SceneG
 }
 
 void drawDynamicCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const SceneGeometry& geometry,
-                        const ShadowView& view, const std::vector<glm::mat4>& entityTransforms) {
+                        const ShadowView& view, const std::vector<glm::mat4>& entityTransforms,
+                        const std::vector<uint8_t>& entityHidden) {
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
+        if (entityHidden[mesh.entity]) continue;
         const glm::mat4 clip = view.viewProj * entityTransforms[mesh.entity];
         if (masked(draw, mesh.material)) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.masked);
@@ -317,7 +319,8 @@ void writeShadowViews(const ShadowMaps& shadows, GpuShadowView* out) {
 uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, const ShadowDraw& draw,
                             const SceneGeometry& geometry,
                             const std::vector<uint32_t>& visibleLights,
-                            const std::vector<glm::mat4>& entityTransforms) {
+                            const std::vector<glm::mat4>& entityTransforms,
+                            const std::vector<uint8_t>& entityHidden) {
     const uint32_t size = shadows.mapSize;
     const VkDeviceSize offset = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &geometry.vertices.buffer, &offset);
@@ -390,7 +393,8 @@ uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, const Shad
         for (uint32_t v = slot.firstView; v < slot.firstView + slot.viewCount; ++v) {
             beginDepthRendering(cmd, shadows.views[v].frameLayer, size, false,
                                 shadows.views[v].depthBiasClamp);
-            drawDynamicCasters(cmd, draw, geometry, shadows.views[v], entityTransforms);
+            drawDynamicCasters(cmd, draw, geometry, shadows.views[v], entityTransforms,
+                               entityHidden);
             vkCmdEndRendering(cmd);
         }
         vk::imageBarrier(

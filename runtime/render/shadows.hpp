@@ -94,6 +94,7 @@ struct ShadowDraw {
 [[nodiscard]] uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd,
                                           const ShadowDraw& draw, const SceneGeometry& geometry,
                                           const std::vector<uint32_t>& visibleLights,
-                                          const std::vector<glm::mat4>& entityTransforms);
+                                          const std::vector<glm::mat4>& entityTransforms,
+                                          const std::vector<uint8_t>& entityHidden);
 
 }  // namespace onelight::render

@@ -197,7 +197,7 @@ Script parseScript(std::string_view text, const std::string& path) {
                 p.fail("expected a capture name without '/' or '..', found '" +
                        LineParser::quoted(c.name) + "'");
         } else if (head == "expect") {
-            std::string_view what = p.word("'primary', 'effect-lights' or 'player'");
+            std::string_view what = p.word("'primary', 'effect-lights', 'player' or 'item'");
             if (what == "primary") {
                 c.kind = CommandKind::kExpectPrimary;
                 c.name = std::string(p.word("an entity name"));
@@ -251,9 +251,19 @@ Script parseScript(std::string_view text, const std::string& path) {
                     p.fail(std::string("expected ") + kPlayerChecks +
                            " after 'expect player', found '" + LineParser::quoted(check) + "'");
                 }
+            } else if (what == "item") {
+                c.kind = CommandKind::kExpectItem;
+                c.name = std::string(p.word("an item's name"));
+                const std::string_view state = p.word("'visible' or 'taken'");
+                if (state != "visible" && state != "taken")
+                    p.fail("expected 'visible' or 'taken' after the item's name, found '" +
+                           LineParser::quoted(state) + "'");
+                c.on = state == "visible";
             } else {
-                p.fail("expected 'primary', 'effect-lights' or 'player' after 'expect', found '" +
-                       LineParser::quoted(what) + "'");
+                p.fail(
+                    "expected 'primary', 'effect-lights', 'player' or 'item' after 'expect', "
+                    "found '" +
+                    LineParser::quoted(what) + "'");
             }
         } else if (head == "quit") {
             c.kind = CommandKind::kQuit;

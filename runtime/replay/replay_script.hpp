@@ -26,6 +26,8 @@
 //   expect player teleports N      exactly N teleports so far (also launches: jump pads, respawns:
 //   expect player launches N       hurt triggers and falls below the level), counted from the
 //   expect player respawns N       start of the replay
+//   expect item NAME visible       a level item (e.g. weapon_rocketlauncher_1) is there to take
+//   expect item NAME taken         ... is taken and not back yet
 //   quit
 //
 // Parsing checks the syntax, numbers and times; entity and light names are resolved (and
@@ -66,6 +68,7 @@ enum class CommandKind {
     kExpectTeleports,  // count
     kExpectLaunches,   // count
     kExpectRespawns,   // count
+    kExpectItem,       // name: the item; on: visible (else taken)
     kQuit
 };
 
@@ -76,7 +79,7 @@ struct Command {
     double time;           // seconds, as written
     std::string name;      // Spawn: "player"; Key: key; Capture: file stem; ExpectPrimary: entity
     std::string light;     // ExpectPrimary: the light's name
-    bool on = false;       // Key: down; Flashlight: on
+    bool on = false;       // Key: down; Flashlight: on; ExpectItem: visible
     float values[5] = {};  // Spawn: x y z yaw pitch; Look: dyaw dpitch; ExpectMoved: metres;
                            // ExpectFeet, ExpectVelocity: x y z tolerance; ExpectHeight: min max
     int count = 0;         // ExpectEffectLights, ExpectTeleports, ExpectLaunches, ExpectRespawns

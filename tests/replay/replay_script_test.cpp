@@ -51,6 +51,20 @@ at 4.0  quit
     EXPECT_EQ(s.commands[8].tick, 240u);
 }
 
+TEST(ReplayScript, ExpectsAnItemVisibleOrTaken) {
+    Script s = parseScript(
+        "at 1 expect item weapon_rocketlauncher_1 taken\n"
+        "at 2 expect item item_health_3 visible\n",
+        "items.replay");
+    ASSERT_EQ(s.commands.size(), 2u);
+    EXPECT_EQ(s.commands[0].kind, CommandKind::kExpectItem);
+    EXPECT_EQ(s.commands[0].name, "weapon_rocketlauncher_1");
+    EXPECT_FALSE(s.commands[0].on);
+    EXPECT_EQ(s.commands[1].name, "item_health_3");
+    EXPECT_TRUE(s.commands[1].on);
+    EXPECT_EQ(s.commands[1].tick, 120u);
+}
+
 TEST(ReplayScript, WaitMovesTheCursorAndTickRateScalesTicks) {
     Script s = parseScript(
         "tick 30\n# comment\n\nfire\nwait 0.5\nfire   # trailing comment\n"
@@ -94,7 +108,12 @@ TEST(ReplayScript, BadInputNamesFileLineAndExpectation) {
         {"expect player teleports 1.5\n", "s.replay:1: expected a whole count from 0 to 1000000"},
         {"expect player moved -1\n", "s.replay:1: expected a distance from 0 to 1e6 metres"},
         {"expect player moved\n", "s.replay:1: expected a distance in metres"},
-        {"expect weather\n", "s.replay:1: expected 'primary', 'effect-lights' or 'player'"},
+        {"expect weather\n",
+         "s.replay:1: expected 'primary', 'effect-lights', 'player' or 'item' after 'expect', "
+         "found 'weather'"},
+        {"expect item weapon_shotgun_1 gone\n",
+         "s.replay:1: expected 'visible' or 'taken' after the item's name, found 'gone'"},
+        {"expect item\n", "s.replay:1: expected an item's name"},
     };
     for (auto& c : cases) {
         std::string e = errorOf(c.text);

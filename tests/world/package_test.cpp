@@ -245,7 +245,7 @@ TEST(Package, UnknownEntityFlagsAreRejected) {
     const std::vector<uint8_t> bytes = serializePackage(sampleLevel());
     expectRejected(patched(bytes, kSectionEntities, 0, offsetof(DiskEntity, flags),
                            world::kAllEntityFlags + 1),
-                   "section entities record 0: flags 16 has unknown bits");
+                   "section entities record 0: flags 64 has unknown bits");
 }
 
 TEST(Package, ASurfaceHoldsItsChartsLightmapRectangle) {

@@ -27,7 +27,8 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 4;  // 2: DiskLevel holds the sky; 3: its image; 4: models
+inline constexpr uint32_t kVersion = 5;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
+                                         // 5: items
 using world::kNoIndex;                   // world/no_index.hpp
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -272,8 +273,8 @@ struct DiskDynamicMesh {
 static_assert(sizeof(DiskDynamicMesh) == 28);
 
 struct DiskEntity {
-    StringRef name;             // node name
-    uint32_t flags;             // bit 0 dynamic, 1 mover, 2 spawn, 3 probe; no other bit
+    StringRef name;  // node name
+    uint32_t flags;  // bit 0 dynamic, 1 mover, 2 spawn, 3 probe, 4 item, 5 suspended; no other
     uint32_t firstDynamicMesh;  // into dynamic_meshes
     uint32_t dynamicMeshCount;
     float moverPeriod;  // seconds, > 0 for movers
@@ -283,8 +284,9 @@ struct DiskEntity {
     float moverOffset[3];  // metres, world
     float probeBoxMin[3];  // metres, world; empty box = no box projection
     float probeBoxMax[3];
+    float itemRespawn;  // items: seconds taken before it comes back; < 0 never
 };
-static_assert(sizeof(DiskEntity) == 100);
+static_assert(sizeof(DiskEntity) == 104);
 
 struct DiskFeatures {
     uint32_t flags;              // world::FeatureFlags

@@ -553,6 +553,7 @@ private:
         checkFinite(id, i, "moverOffset", d.moverOffset);
         checkFinite(id, i, "probeBoxMin", d.probeBoxMin);
         checkFinite(id, i, "probeBoxMax", d.probeBoxMax);
+        checkFinite(id, i, "itemRespawn", d.itemRespawn);
     }
 
     void check(uint32_t id, size_t i, const DiskFeatures& d) const {

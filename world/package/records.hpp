@@ -511,6 +511,7 @@ namespace records {
     put(d.moverOffset, e.moverOffset);
     put(d.probeBoxMin, e.probeBoxMin);
     put(d.probeBoxMax, e.probeBoxMax);
+    d.itemRespawn = e.itemRespawn;
     return d;
 }
 
@@ -528,6 +529,7 @@ namespace records {
     e.moverOffset = vec(d.moverOffset);
     e.probeBoxMin = vec(d.probeBoxMin);
     e.probeBoxMax = vec(d.probeBoxMax);
+    e.itemRespawn = d.itemRespawn;
     return e;
 }
 

@@ -20,6 +20,7 @@
 #include "world/import/q3/computed_view.hpp"
 #include "world/import/q3/entity_lump.hpp"
 #include "world/import/q3/game_search_path.hpp"
+#include "world/import/q3/item_import.hpp"
 #include "world/import/q3/lightmap_pages.hpp"
 #include "world/import/q3/map_axes.hpp"
 #include "world/import/q3/map_source.hpp"
@@ -60,9 +61,13 @@ ShaderScripts loadShaderScripts(const GameFiles& files) {
     return out;
 }
 
-const ShaderScript* scriptOf(const ShaderScripts& scripts, const BspShader& shader) {
-    const auto found = scripts.find(fileKey(shaderName(shader)));
+const ShaderScript* scriptNamed(const ShaderScripts& scripts, const std::string& name) {
+    const auto found = scripts.find(fileKey(name));
     return found == scripts.end() ? nullptr : &found->second;
+}
+
+const ShaderScript* scriptOf(const ShaderScripts& scripts, const BspShader& shader) {
+    return scriptNamed(scripts, shaderName(shader));
 }
 
 // Whether a shader's surfaces are drawn, or left out: sky, clip, triggers, nodraw, fog, hints.
@@ -135,6 +140,7 @@ struct MaterialTable {
     SourceLevel& level;
     const GameFiles& files;
     std::map<int32_t, uint32_t> byShader;
+    std::map<std::string, uint32_t> byName;          // a model's shader or image names (file keys)
     std::map<std::string, uint32_t> textureByImage;  // (name + sRGB) -> textures
     uint32_t missingImages = 0;
     float areaScale = 1.0f;  // q3map2's -area / -scale (q3map2_command_line.hpp)
@@ -171,8 +177,20 @@ struct MaterialTable {
     uint32_t materialOf(const BspShader& shader, int32_t index, const ShaderScript* script) {
         const auto found = byShader.find(index);
         if (found != byShader.end()) return found->second;
+        return byShader[index] = makeMaterial(shaderName(shader), script);
+    }
+
+    // A model surface's material: its shader's script where one is named so, else the image.
+    uint32_t materialNamed(const std::string& name, const ShaderScript* script) {
+        const std::string key = fileKey(withoutImageExtension(name));
+        const auto found = byName.find(key);
+        if (found != byName.end()) return found->second;
+        return byName[key] = makeMaterial(name, script);
+    }
+
+    uint32_t makeMaterial(const std::string& name, const ShaderScript* script) {
         Material m;
-        m.name = shaderName(shader);
+        m.name = name;
         m.materialClass = MaterialClass::kLambert;
         m.metallic = 0.0f;
         m.roughness = 1.0f;
@@ -216,7 +234,7 @@ struct MaterialTable {
         }
         m.albedo = glm::vec3(m.baseColor);
         level.materials.push_back(m);
-        return byShader[index] = uint32_t(level.materials.size() - 1);
+        return uint32_t(level.materials.size() - 1);
     }
 };
 
@@ -735,7 +753,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     }
     const ShaderScripts scripts = loadShaderScripts(files);
     checkSurfaceSizes(bsp, scripts, options.patchLevel, map.where);
-    MaterialTable materials{level, files, {}, {}, 0, q3map2.areaScale};
+    MaterialTable materials{level, files, {}, {}, {}, 0, q3map2.areaScale};
     std::map<uint32_t, MeshInstance> meshes;  // by material
     for (size_t s = 0; s < bsp.surfaces.size(); ++s) {
         const BspSurface& f = bsp.surfaces[s];
@@ -787,6 +805,26 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     if (!(luxelUnits > 0.0f)) throw Error(map.where + ": worldspawn's _lightmapscale is not > 0");
     level.texelsPerMetre = float(1.0 / (double(luxelUnits) * kQuake3MetresPerUnit));
     addSpawns(level, entities, map.where);
+    addItems(
+        level, entities, files,
+        [&](const std::string& name) {
+            const ShaderScript* script = scriptNamed(scripts, name);
+            if (!script) script = scriptNamed(scripts, withoutImageExtension(name));
+            const uint32_t m = materials.materialNamed(name, script);
+            Material& made = level.materials[m];
+            if (made.baseColorTexture != kNoIndex || !script || script->stages.empty() ||
+                script->stages[0].tcGen != "environment")
+                return m;
+            // Drawn by environment mapping alone (a health cross, its sphere), which the
+            // engine does not model: a blended shell is left out rather than drawn as a grey
+            // shell over the item; an opaque body takes its image's mean colour.
+            const ShaderStage& first = script->stages[0];
+            if (!first.blendFunc.empty() && first.blendFunc != "gl_one gl_zero") return kNoIndex;
+            made.baseColor = glm::vec4(meanColours(files, first.map).linear, 1.0f);
+            made.albedo = glm::vec3(made.baseColor);
+            return m;
+        },
+        map.where);
     std::vector<bool> nonsolid;  // surfaceparm nonsolid, which the brushes' contents may miss
     for (const BspShader& shader : bsp.shaders) {
         const ShaderScript* script = scriptOf(scripts, shader);
