@@ -31,12 +31,15 @@ const int BINDING_ENV_BRDF = 6;       // sampler2D
 const int BINDING_PROBE_RECORDS = 7;  // storage GpuProbe[]
 const int BINDING_SKY = 8;            // sampler2D, the sky image (shaders/sky.glsl)
 const int BINDING_PROBE_CELLS = 9;    // storage GpuProbeGrid then uint[] (probe_records.hpp)
-// The draw's records: uniform buffers at dynamic offsets, the set bound again where they change.
-// Read at a draw-uniform place, a CPU rasterizer loads them once for a block of pixels, where a
-// storage buffer's element is loaded per pixel (llvmpipe gathers every lane).
-const int BINDING_DRAW_PRIMARY = 10;          // uniform GpuLight, the draw's primary light
-const int BINDING_DRAW_OBJECT_LIGHTING = 11;  // uniform GpuObjectLighting, a dynamic object's
+// The primary lights' records, a uniform array read at the draw's index (draw.primaryLight): at
+// a draw-uniform place a CPU rasterizer loads a uniform block's element once for a block of
+// pixels, where a storage buffer's is loaded per pixel (llvmpipe gathers every lane).
+const int BINDING_PRIMARY_LIGHTS = 10;   // uniform GpuLight[MAX_PRIMARY_RECORDS]
+const int BINDING_OBJECT_LIGHTING = 11;  // storage GpuObjectLighting[], per entity
 const int FRAME_BINDING_COUNT = 12;
+// The primary lights a level may have (40 KiB of records; the renderer refuses more, and a
+// device whose uniform range is smaller).
+const uint MAX_PRIMARY_RECORDS = 512u;
 // The shadow views a frame can hold (RendererOptions::maxShadowLayers is clamped to it): 15 KiB,
 // under Vulkan's smallest guaranteed uniform range (16 KiB).
 const uint MAX_SHADOW_VIEWS = 192u;
@@ -172,9 +175,9 @@ struct GpuProbeGrid {
 struct DrawPush {
     mat4 model;            // world from object (identity for static surfaces)
     uint material;         // the level's material (set 1 is its set)
-    uint primaryLight;     // the level's light (drawPrimary is its record), or NO_INDEX
+    uint primaryLight;     // its primary light's record in primaryLights[], or NO_INDEX
     uint lightmapAtlas;    // a static surface's atlas, NO_INDEX for a dynamic object (grid)
-    uint objectLighting;   // a dynamic object's entity (drawObjectLighting is its), or NO_INDEX
+    uint objectLighting;   // a dynamic object's record in objectLighting[], or NO_INDEX
     vec4 lightmapScale;    // xy: uv1 (over the surface's atlas) to the lightmap array's uv
 };
 

@@ -96,12 +96,14 @@ void recordSky(VkCommandBuffer cmd, const Pipelines& pipelines) {
     vkCmdDraw(cmd, 3, 1, 0, 0);
 }
 
-DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale, const FrameView& view,
+DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale,
+                    const std::vector<uint32_t>& primaryRecord, const FrameView& view,
                     const Draw& d) {
     DrawPush push{};
     push.model = d.entity == kNoIndex ? glm::mat4(1.0f) : view.entityTransforms[d.entity];
     push.material = d.material;
-    push.primaryLight = d.primaryLight;
+    push.primaryLight =
+        d.primaryLight < primaryRecord.size() ? primaryRecord[d.primaryLight] : kNoIndex;
     push.lightmapAtlas = d.atlas;
     push.objectLighting = d.entity;
     push.lightmapScale = glm::vec4(1.0f);
@@ -110,20 +112,12 @@ DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale, const FrameView&
     return push;
 }
 
-// Set 0, the frame's, with its draw records at light `light`'s and entity `entity`'s.
-void bindFrameSet(VkCommandBuffer cmd, VkPipelineLayout layout, const DescriptorSets& sets,
-                  uint32_t slot, uint32_t light, uint32_t entity) {
-    const uint32_t offsets[] = {uint32_t(light * sets.lightStride),
-                                uint32_t(entity * sets.objectLightingStride)};
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &sets.frame[slot],
-                            2, offsets);
-}
-
 }  // namespace
 
 void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTargets& targets,
                        const Pipelines& pipelines, const DescriptorSets& sets, uint32_t slot,
-                       const FrameView& view, const DrawList& list, FrameStats& stats) {
+                       const std::vector<uint32_t>& primaryRecord, const FrameView& view,
+                       const DrawList& list, FrameStats& stats) {
     const std::vector<glm::vec2>& atlasUvScale = scene.baked.atlasUvScale;
     const VkPipelineLayout layout = pipelines.forwardLayout.layout;
     prepareForwardTargets(targets, cmd);
@@ -131,8 +125,8 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &scene.geometry.vertices.buffer, &zero);
     vkCmdBindIndexBuffer(cmd, scene.geometry.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-    uint32_t boundLight = 0, boundEntity = 0;
-    bindFrameSet(cmd, layout, sets, slot, boundLight, boundEntity);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &sets.frame[slot],
+                            0, nullptr);
     if (pipelines.depth[0] != VK_NULL_HANDLE) {
         int bound = -1;
         for (const Draw& d : list.draws) {
@@ -144,7 +138,7 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
                                   pipelines.depth[doubleSided]);
                 bound = doubleSided;
             }
-            const DrawPush push = drawPushOf(atlasUvScale, view, d);
+            const DrawPush push = drawPushOf(atlasUvScale, primaryRecord, view, d);
             vkCmdPushConstants(cmd, layout,
                                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                sizeof(push), &push);
@@ -171,15 +165,7 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
                                     &sets.material[d.material], 0, nullptr);
             boundMaterial = d.material;
         }
-        // The records the draw reads (any valid one where it reads none).
-        const uint32_t light = d.primaryLight != kNoIndex ? d.primaryLight : boundLight;
-        const uint32_t entity = d.entity != kNoIndex ? d.entity : boundEntity;
-        if (light != boundLight || entity != boundEntity) {
-            bindFrameSet(cmd, layout, sets, slot, light, entity);
-            boundLight = light;
-            boundEntity = entity;
-        }
-        const DrawPush push = drawPushOf(atlasUvScale, view, d);
+        const DrawPush push = drawPushOf(atlasUvScale, primaryRecord, view, d);
         vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                            0, sizeof(push), &push);
         vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);

@@ -13,7 +13,6 @@ namespace onelight::render {
 
 void createFrameSlots(const vk::Context& ctx, FrameSlots& frames, size_t entities) {
     frames.timestamps = vk::timestampsSupported(ctx);
-    frames.objectLightingStride = vk::uniformRecordStride(ctx, sizeof(GpuObjectLighting));
     entities = std::max<size_t>(entities, 1);
     for (FrameSlot& slot : frames.slots) {
         slot.cmd = vk::allocateCommandBuffer(ctx);
@@ -23,8 +22,8 @@ void createFrameSlots(const vk::Context& ctx, FrameSlots& frames, size_t entitie
                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         vk::createHostBuffer(ctx, slot.shadowViews, glsl::MAX_SHADOW_VIEWS * sizeof(GpuShadowView),
                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-        vk::createHostBuffer(ctx, slot.objectLighting, entities * frames.objectLightingStride,
-                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+        vk::createHostBuffer(ctx, slot.objectLighting, entities * sizeof(GpuObjectLighting),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         std::memset(slot.shadowViews.mapped, 0, slot.shadowViews.size);
         std::memset(slot.objectLighting.mapped, 0, slot.objectLighting.size);
     }

@@ -23,17 +23,16 @@ struct FrameSlot {
     VkQueryPool timestamps = VK_NULL_HANDLE;  // owned, kTimestampCount (when supported)
     vk::Buffer uniforms;                      // owned, FrameUniforms
     vk::Buffer shadowViews;                   // owned, MAX_SHADOW_VIEWS GpuShadowView
-    vk::Buffer objectLighting;  // owned, GpuObjectLighting per entity, objectLightingStride apart
-    uint64_t frame = 0;         // the frame it last submitted
-    bool pending = false;       // submitted and not waited for yet
+    vk::Buffer objectLighting;                // owned, GpuObjectLighting per entity
+    uint64_t frame = 0;                       // the frame it last submitted
+    bool pending = false;                     // submitted and not waited for yet
 };
 
 /// kFramesInFlight slots used in turn: frame n records into slots[n % kFramesInFlight].
 struct FrameSlots {
     std::array<FrameSlot, kFramesInFlight> slots;
-    uint64_t submitted = 0;                                   // frames submitted so far
-    bool timestamps = false;                                  // the device writes timestamps
-    size_t objectLightingStride = sizeof(GpuObjectLighting);  // bytes between entities' records
+    uint64_t submitted = 0;   // frames submitted so far
+    bool timestamps = false;  // the device writes timestamps
 };
 
 /// Slots whose buffers hold the shadow views and `entities` entities (at least one).

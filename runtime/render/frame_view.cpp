@@ -176,7 +176,7 @@ DrawList buildDrawList(const Scene& scene, const RendererOptions& options, const
     // Every dynamic caster, seen or not: its shadow may fall in view.
     std::vector<Box> casters;
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
-        if (view.entityHidden[mesh.entity]) continue;
+        if (!mesh.castsShadow || view.entityHidden[mesh.entity]) continue;
         Box b;
         worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, b.lo, b.hi);
         casters.push_back(b);
@@ -271,7 +271,7 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
     for (const DrawSurface& surface : geometry.surfaces) {
         add(drawOf(surface, false), surface.material);
         // An unoccluded surface is drawn with its shadow while a dynamic caster's may reach it.
-        if (surface.unoccluded && !geometry.dynamicMeshes.empty())
+        if (surface.unoccluded && geometry.dynamicCasters)
             add(drawOf(surface, true), surface.material);
     }
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes)
@@ -318,7 +318,7 @@ void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
 }
 
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                         const FrameView& view, const DrawList& list, uint8_t* out, size_t stride) {
+                         const FrameView& view, const DrawList& list, GpuObjectLighting* out) {
     const bool useGrid = baked.present && !baked.grid.cells.empty();
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
@@ -327,7 +327,7 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
             for (glm::vec4& face : o.ambientCube)
                 face = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
             o.ambientCube[0].w = 1.0f;
-            std::memcpy(out + e * stride, &o, sizeof(o));
+            out[e] = o;
             continue;
         }
         const world::LightGridSample sample =
@@ -336,7 +336,7 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
         const uint32_t primary = view.entityPrimary[e];
         o.ambientCube[0].w =
             primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
-        std::memcpy(out + e * stride, &o, sizeof(o));
+        out[e] = o;
     }
 }
 

@@ -73,10 +73,9 @@ struct DrawList {
                                       const RendererOptions& options, size_t entityCount,
                                       uint32_t shadowedLight);
 
-/// The grid's lighting of every visible dynamic object, into `out` (entity e's record at byte
-/// e * stride).
+/// The grid's lighting of every visible dynamic object, into `out` (one record per entity).
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                         const FrameView& view, const DrawList& list, uint8_t* out, size_t stride);
+                         const FrameView& view, const DrawList& list, GpuObjectLighting* out);
 
 /// The frame's uniforms: camera, exposure, shadow and baked parameters, effect lights.
 [[nodiscard]] FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options,

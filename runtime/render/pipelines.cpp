@@ -59,7 +59,7 @@ std::vector<uint32_t> forwardKeys(const SceneGeometry& geometry, const SceneMate
             for (const bool shadow : {false, true}) {
                 // An unoccluded surface's shadowed variant: while a dynamic caster may reach it.
                 if (!shadow && !s.unoccluded) continue;
-                if (shadow && s.unoccluded && geometry.dynamicMeshes.empty()) continue;
+                if (shadow && s.unoccluded && !geometry.dynamicCasters) continue;
                 keys.push_back(drawPipelineKey(
                     materials, options, std::min(s.material, materialCount - 1), s.primaryKind,
                     uint32_t(s.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP
@@ -84,7 +84,6 @@ constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags kVertexFragment =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-constexpr VkDescriptorType kUniformDynamic = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 
@@ -101,8 +100,8 @@ const std::vector<VkDescriptorSetLayoutBinding>& frameBindings() {
         vk::layoutBinding(glsl::BINDING_PROBE_RECORDS, kStorage, kFragment),
         vk::layoutBinding(glsl::BINDING_SKY, kSampled, kFragment),
         vk::layoutBinding(glsl::BINDING_PROBE_CELLS, kStorage, kFragment),
-        vk::layoutBinding(glsl::BINDING_DRAW_PRIMARY, kUniformDynamic, kFragment),
-        vk::layoutBinding(glsl::BINDING_DRAW_OBJECT_LIGHTING, kUniformDynamic, kFragment)};
+        vk::layoutBinding(glsl::BINDING_PRIMARY_LIGHTS, kUniform, kFragment),
+        vk::layoutBinding(glsl::BINDING_OBJECT_LIGHTING, kStorage, kFragment)};
     static_assert(glsl::FRAME_BINDING_COUNT == 12, "one layout binding per frame binding");
     return bindings;
 }
@@ -309,14 +308,13 @@ void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines) {
 // One frame set per frame slot, one material set per material, the tonemap set.
 void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pipelines& pipelines,
                           const FrameSlots& frames, const Scene& scene, const ShadowMaps& shadows,
-                          const vk::Buffer& lightRecords, const RenderTargets& targets) {
+                          const vk::Buffer& primaryLights, const RenderTargets& targets) {
     const uint32_t materials = uint32_t(scene.materials.bound.size());
     const std::vector<VkDescriptorSetLayoutBinding>& frame = frameBindings();
     const std::vector<VkDescriptorSetLayoutBinding>& material = materialBindings();
     const VkDescriptorPoolSize sizes[] = {
         {kUniform,
          kFramesInFlight * countOf(frame, kUniform) + materials * countOf(material, kUniform)},
-        {kUniformDynamic, kFramesInFlight * countOf(frame, kUniformDynamic)},
         {kStorage, kFramesInFlight * countOf(frame, kStorage)},
         {kSampled,
          kFramesInFlight * countOf(frame, kSampled) + materials * countOf(material, kSampled) + 3}};
@@ -340,14 +338,10 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
         w.buffer(glsl::BINDING_PROBE_RECORDS, kStorage, scene.probes.records.buffer);
         w.image(glsl::BINDING_SKY, scene.sky.image.view, scene.sky.sampler);
         w.buffer(glsl::BINDING_PROBE_CELLS, kStorage, scene.probes.cells.buffer);
-        w.buffer(glsl::BINDING_DRAW_PRIMARY, kUniformDynamic, lightRecords.buffer, 0,
-                 sizeof(GpuLight));
-        w.buffer(glsl::BINDING_DRAW_OBJECT_LIGHTING, kUniformDynamic, slot.objectLighting.buffer, 0,
-                 sizeof(GpuObjectLighting));
+        w.buffer(glsl::BINDING_PRIMARY_LIGHTS, kUniform, primaryLights.buffer);
+        w.buffer(glsl::BINDING_OBJECT_LIGHTING, kStorage, slot.objectLighting.buffer);
         w.update(ctx);
     }
-    sets.lightStride = vk::uniformRecordStride(ctx, sizeof(GpuLight));
-    sets.objectLightingStride = frames.objectLightingStride;
     for (size_t i = 0; i < scene.materials.bound.size(); ++i) {
         const MaterialTextures& textures = scene.materials.bound[i];
         vk::DescriptorWriter m;

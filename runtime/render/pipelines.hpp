@@ -111,20 +111,16 @@ void destroyPipelines(const vk::Context& ctx, Pipelines& pipelines);
 /// The descriptor sets, from one pool: one frame set per frame slot, one per material, the
 /// tonemap set. They borrow every buffer, image and sampler they point at.
 struct DescriptorSets {
-    VkDescriptorPool pool = VK_NULL_HANDLE;  // owned, frees the sets
-    // Set 0 of the forward pass, per slot. Its dynamic offsets place the draw's records: its
-    // primary light's at lightStride x the light, its entity's grid lighting at
-    // objectLightingStride x the entity.
-    std::array<VkDescriptorSet, kFramesInFlight> frame{};
-    VkDeviceSize lightStride = 0, objectLightingStride = 0;
-    std::vector<VkDescriptorSet> material;  // set 1, per material
+    VkDescriptorPool pool = VK_NULL_HANDLE;                // owned, frees the sets
+    std::array<VkDescriptorSet, kFramesInFlight> frame{};  // set 0 of the forward pass, per slot
+    std::vector<VkDescriptorSet> material;                 // set 1, per material
     VkDescriptorSet tonemap = VK_NULL_HANDLE;
     VkDescriptorSet fxaa = VK_NULL_HANDLE;  // with RendererOptions::fxaa
 };
 
 void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pipelines& pipelines,
                           const FrameSlots& frames, const Scene& scene, const ShadowMaps& shadows,
-                          const vk::Buffer& lightRecords, const RenderTargets& targets);
+                          const vk::Buffer& primaryLights, const RenderTargets& targets);
 void destroyDescriptorSets(const vk::Context& ctx, DescriptorSets& sets);
 /// Points the tonemap set at the current HDR target, and the FXAA set at the tonemapped one
 /// (after createTargets).

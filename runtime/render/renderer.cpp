@@ -26,12 +26,12 @@ struct RendererState {
     vk::Context* ctx = nullptr;  // borrowed
     RendererOptions options;
     RendererInfo info;
-    Scene scene;              // the level on the CPU and the GPU, uploaded once
-    ShadowMaps shadows;       // the shadow slots, views and maps
-    vk::Buffer lightRecords;  // GpuLight per level light, with its first shadow view
-    RenderTargets targets;    // recreated by resizeRenderer
-    FrameReadback readback;   // recreated by resizeRenderer (the captured frame kept)
-    FrameSlots frames;        // the frames in flight
+    Scene scene;                    // the level on the CPU and the GPU, uploaded once
+    ShadowMaps shadows;             // the shadow slots, views and maps
+    PrimaryRecords primaryRecords;  // the primary lights', with their shadow views
+    RenderTargets targets;          // recreated by resizeRenderer
+    FrameReadback readback;         // recreated by resizeRenderer (the captured frame kept)
+    FrameSlots frames;              // the frames in flight
     Pipelines pipelines;
     DescriptorSets descriptors;          // borrow every part above
     std::vector<uint32_t> drawnPrimary;  // per entity: the primary its last drawn frame used
@@ -61,8 +61,8 @@ void recordFrame(RendererState& s, uint32_t slotIndex, const FrameView& view, co
          s.pipelines.maskedShadowLayout.layout, &s.scene.materials, &s.descriptors.material},
         s.scene.geometry, list.visibleLights, view.entityTransforms, view.entityHidden);
     writeTimestamp(s.frames, cmd, slot, 1);
-    recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors, slotIndex, view, list,
-                      stats);
+    recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors, slotIndex,
+                      s.primaryRecords.recordOf, view, list, stats);
     writeTimestamp(s.frames, cmd, slot, 2);
     recordTonemapPass(cmd, s.targets, s.pipelines, s.descriptors);
     writeTimestamp(s.frames, cmd, slot, 3);
@@ -93,8 +93,7 @@ FrameStats drawList(RendererState& s, const FrameInputs& inputs, const FrameOutp
     const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
     FrameSlot& slot = s.frames.slots[slotIndex];
     writeObjectLighting(scene.level, scene.baked, view, list,
-                        static_cast<uint8_t*>(slot.objectLighting.mapped),
-                        s.frames.objectLightingStride);
+                        static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
     const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
     std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));
     updateShadowViews(s.shadows, scene.level, view.camera, list.visibleLights);
@@ -196,9 +195,10 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
         }
         s.drawnPrimary.assign(scene.level.entities.size(), kNoIndex);
 
-        createShadows(ctx, s.shadows, scene.level, options, !scene.geometry.dynamicMeshes.empty());
+        createShadows(ctx, s.shadows, scene.level, options, scene.geometry.dynamicCasters);
         s.info.shadowLayers = s.shadows.layers;
-        createLightRecords(ctx, s.lightRecords, scene.level.lights, lightShadowViews(s.shadows));
+        createPrimaryRecords(ctx, s.primaryRecords, scene.level.lights,
+                             lightShadowViews(s.shadows));
         createTargets(ctx, s.targets, std::max(options.width, 1u), std::max(options.height, 1u),
                       samples, options.fxaa);
         createReadback(ctx, s.readback, s.targets.width, s.targets.height);
@@ -212,7 +212,7 @@ void createRenderer(Renderer& renderer, vk::Context& ctx, const assets::LoadedLe
         createPipelines(ctx, s.pipelines, scene.geometry, scene.materials, options, choices);
         s.info.permutations = s.pipelines.permutations;
         createDescriptorSets(ctx, s.descriptors, s.pipelines, s.frames, scene, s.shadows,
-                             s.lightRecords, s.targets);
+                             s.primaryRecords.buffer, s.targets);
         if (options.warmUp) warmUp(s);
     } catch (...) {
         destroyRenderer(renderer);
@@ -230,7 +230,7 @@ void destroyRenderer(Renderer& renderer) {
     destroyFrameSlots(ctx, s.frames);
     destroyReadback(ctx, s.readback);
     destroyTargets(ctx, s.targets);
-    vk::destroyBuffer(ctx, s.lightRecords);
+    vk::destroyBuffer(ctx, s.primaryRecords.buffer);
     destroyShadows(ctx, s.shadows);
     destroyScene(ctx, s.scene);
     renderer.state.reset();

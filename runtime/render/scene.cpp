@@ -310,6 +310,8 @@ void createGeometry(const vk::Context& ctx, SceneGeometry& geometry,
             d.indexCount = mesh.indexCount;
             d.vertexOffset = int32_t(staticVertices + mesh.firstVertex);
             d.material = mesh.material;
+            d.castsShadow = !(entity.flags & world::kEntityItem);
+            geometry.dynamicCasters = geometry.dynamicCasters || d.castsShadow;
             d.boundsMin = glm::vec3(1e30f);
             d.boundsMax = glm::vec3(-1e30f);
             for (uint32_t v = 0; v < mesh.vertexCount; ++v) {
@@ -738,16 +740,28 @@ void applySurfaceShadows(SceneGeometry& geometry, const assets::LoadedLevel& loa
 
 }  // namespace
 
-void createLightRecords(const vk::Context& ctx, vk::Buffer& buffer,
-                        const std::vector<world::Light>& lights,
-                        const std::vector<ShadowViewRange>& shadowViews) {
-    std::vector<GpuLight> gpu;
-    for (uint32_t i = 0; i < lights.size(); ++i)
-        gpu.push_back(gpuLightOf(lights[i], shadowViews.at(i)));
-    if (gpu.empty()) gpu.emplace_back();  // a binding needs a record
-    vk::createDeviceBuffer(ctx, buffer,
-                           vk::stridedBytes(std::span<const GpuLight>(gpu),
-                                            vk::uniformRecordStride(ctx, sizeof(GpuLight))),
+void createPrimaryRecords(const vk::Context& ctx, PrimaryRecords& records,
+                          const std::vector<world::Light>& lights,
+                          const std::vector<ShadowViewRange>& shadowViews) {
+    std::vector<GpuLight> gpu(glsl::MAX_PRIMARY_RECORDS);
+    records.recordOf.assign(lights.size(), kNoIndex);
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        if (lights[i].role != world::LightRole::kPrimary) continue;
+        if (count == glsl::MAX_PRIMARY_RECORDS)
+            throw std::runtime_error("the level has more than " +
+                                     std::to_string(glsl::MAX_PRIMARY_RECORDS) +
+                                     " primary lights; the renderer holds at most that many");
+        records.recordOf[i] = count;
+        gpu[count++] = gpuLightOf(lights[i], shadowViews.at(i));
+    }
+    const VkDeviceSize bytes = gpu.size() * sizeof(GpuLight);
+    if (ctx.properties.limits.maxUniformBufferRange < bytes)
+        throw std::runtime_error("the device's uniform buffers hold " +
+                                 std::to_string(ctx.properties.limits.maxUniformBufferRange) +
+                                 " bytes; the primary lights' records need " +
+                                 std::to_string(bytes));
+    vk::createDeviceBuffer(ctx, records.buffer, vk::bytesOf(std::span<const GpuLight>(gpu)),
                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 }
 

@@ -60,6 +60,7 @@ struct DrawDynamicMesh {
     int32_t vertexOffset = 0;                 // into the shared vertex buffer
     uint32_t material = 0;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // object space
+    bool castsShadow = true;  // false for an item: Quake 3 draws items without shadows
 };
 
 /// The level's vertices and indices (static, then dynamic) and the draws into them.
@@ -67,6 +68,7 @@ struct SceneGeometry {
     vk::Buffer vertices, indices;  // owned, device-local
     std::vector<DrawSurface> surfaces;
     std::vector<DrawDynamicMesh> dynamicMeshes;
+    bool dynamicCasters = false;  // some dynamic mesh casts a runtime shadow
 };
 
 /// A material's texture slots (TEXTURE_* of gpu_interface.glsl): view and sampler each.
@@ -140,11 +142,19 @@ struct ShadowViewRange {
     uint32_t first = kNoIndex, count = 0;
 };
 
-/// The level's lights (GpuLight, device-local, vk::uniformRecordStride apart: each draw reads its
-/// primary's as a uniform buffer) with their shadow views, or one empty record without lights:
-/// after createShadows has given them views (`shadowViews` per light).
-void createLightRecords(const vk::Context& ctx, vk::Buffer& buffer,
-                        const std::vector<world::Light>& lights,
-                        const std::vector<ShadowViewRange>& shadowViews);
+/// The primary lights' records: GpuLight, device-local, MAX_PRIMARY_RECORDS of them (read as a
+/// uniform array at the draw's index), each with its shadow views, and each level light's record
+/// (kNoIndex for a light that is not a primary).
+struct PrimaryRecords {
+    vk::Buffer buffer;               // owned
+    std::vector<uint32_t> recordOf;  // per level light
+};
+
+/// After createShadows has given the lights their views (`shadowViews` per light). Throws
+/// std::runtime_error naming the counts when the level has more than MAX_PRIMARY_RECORDS
+/// primaries or the device's uniform range cannot hold them.
+void createPrimaryRecords(const vk::Context& ctx, PrimaryRecords& records,
+                          const std::vector<world::Light>& lights,
+                          const std::vector<ShadowViewRange>& shadowViews);
 
 }  // namespace onelight::render

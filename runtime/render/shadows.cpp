@@ -152,7 +152,7 @@ void drawDynamicCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const Scene
                         const ShadowView& view, const std::vector<glm::mat4>& entityTransforms,
                         const std::vector<uint8_t>& entityHidden) {
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
-        if (entityHidden[mesh.entity]) continue;
+        if (!mesh.castsShadow || entityHidden[mesh.entity]) continue;
         const glm::mat4 clip = view.viewProj * entityTransforms[mesh.entity];
         if (masked(draw, mesh.material)) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.masked);
@@ -356,7 +356,7 @@ uint32_t recordShadowPasses(ShadowMaps& shadows, VkCommandBuffer cmd, const Shad
             ++rendered;
         }
     }
-    if (geometry.dynamicMeshes.empty()) return rendered;
+    if (!geometry.dynamicCasters) return rendered;
 
     // Dynamic casters: the cached static layers, copied, plus the moving objects.
     for (uint32_t light : visibleLights) {

@@ -25,6 +25,7 @@
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
+#include "world/entity_transform.hpp"
 
 namespace {
 
@@ -257,8 +258,9 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     struct Config {
         const char* name;
         render::RendererOptions options;
+        bool withoutItems = false;  // the map's pickups hidden (a Quake 3 map's items)
     };
-    std::vector<Config> configs(17);
+    std::vector<Config> configs(18);
     for (Config& c : configs) c.options.requestedMsaa = 4;
     configs[0].name = "full frame, as the game draws it";
     configs[1].name = "general pipelines (choices at run time)";
@@ -292,10 +294,28 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     configs[15].options.sunCascades = 1;
     configs[16].name = "shadow lookups on every lit surface";
     configs[16].options.skipUniformShadows = false;
+    configs[17].name = "without the level's items";
+    configs[17].withoutItems = true;
+    // The items where the level places them (as inputs without transforms draw them), hidden.
+    std::vector<render::DynamicTransform> hiddenItems;
+    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
+        if (level.level.entities[e].flags & world::kEntityItem) {
+            render::DynamicTransform t;
+            t.entity = e;
+            t.worldFromObject =
+                world::worldFromObject(level.level.entities[e], level.level.entities[e].position);
+            t.hidden = true;
+            hiddenItems.push_back(t);
+        }
+    render::FrameInputs noItems = inputs;
+    noItems.dynamicTransforms = hiddenItems;
+    auto inputsOf = [&](size_t c) -> const render::FrameInputs& {
+        return configs[c].withoutItems ? noItems : inputs;
+    };
     std::vector<render::Renderer> renderers(configs.size());
     for (size_t c = 0; c < configs.size(); ++c) {
         render::createRenderer(renderers[c], ctx, level, configs[c].options);
-        for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderers[c], inputs, waited);
+        for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderers[c], inputsOf(c), waited);
     }
     render::FrameOutput readback = waited;
     readback.readback = true;
@@ -305,7 +325,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     std::vector<render::FrameStats> last(configs.size());
     for (int i = 0; i < kFrames; ++i) {
         for (size_t c = 0; c < configs.size(); ++c) {
-            last[c] = render::drawFrame(renderers[c], inputs, waited);
+            last[c] = render::drawFrame(renderers[c], inputsOf(c), waited);
             gpu[c].push_back(last[c].gpuMs);
             forward[c].push_back(last[c].gpuForwardMs);
             tonemap[c].push_back(last[c].gpuTonemapMs);
@@ -322,7 +342,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     std::vector<double> changed(configs.size());
     std::vector<render::CapturedFrame> frames(configs.size());
     for (size_t c = 0; c < configs.size(); ++c) {
-        render::drawFrame(renderers[c], inputs, readback);
+        render::drawFrame(renderers[c], inputsOf(c), readback);
         frames[c] = render::capturedFrame(renderers[c]);
     }
     for (size_t c = 0; c < configs.size(); ++c)

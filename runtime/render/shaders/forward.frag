@@ -119,7 +119,7 @@ vec3 secondaryIrradiance(vec3 n) {
         return e * frame.baked.y;
     }
     if (drawHasObjectLighting()) {
-        GpuObjectLighting o = drawObjectLighting;
+        GpuObjectLighting o = objectLighting[draw.objectLighting];
         return irradianceAmbientCube(o.ambientCube[0].rgb, o.ambientCube[1].rgb, o.ambientCube[2].rgb,
                                      o.ambientCube[3].rgb, o.ambientCube[4].rgb, o.ambientCube[5].rgb, n);
     }
@@ -132,7 +132,7 @@ float bakedShadow() {
     if (BAKED_LIGHTING == 0) return 1.0;
     if (drawHasLightmap())
         return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
-    if (drawHasObjectLighting()) return drawObjectLighting.ambientCube[0].w;
+    if (drawHasObjectLighting()) return objectLighting[draw.objectLighting].ambientCube[0].w;
     return 1.0;
 }
 
@@ -247,7 +247,7 @@ void main() {
 
     // The one primary light, times its shadow.
     if (PRIMARY != PRIMARY_NONE && featureOn(FEATURE_PRIMARY) && draw.primaryLight != NO_INDEX) {
-        GpuLight light = drawPrimary;
+        GpuLight light = primaryLights[draw.primaryLight];
         int type = primaryType(light);
         LightSample s = evaluateGpuLight(light, type, p);
         BrdfDots d = brdfDots(n, v, s.l);

@@ -12,11 +12,12 @@ layout(set = 0, binding = BINDING_SHADOW_VIEWS, std140) uniform ShadowViews {
     GpuShadowView shadowViews[MAX_SHADOW_VIEWS];
 };
 layout(set = 0, binding = BINDING_SHADOW_MAPS) uniform sampler2DArrayShadow shadowMaps;
-// The draw's records (valid where draw.primaryLight and draw.objectLighting are): its primary
-// light, and a dynamic object's baked lighting, the light grid sampled at its origin.
-layout(set = 0, binding = BINDING_DRAW_PRIMARY, std140) uniform PrimaryRecord { GpuLight drawPrimary; };
-layout(set = 0, binding = BINDING_DRAW_OBJECT_LIGHTING, std140) uniform ObjectLightingRecord {
-    GpuObjectLighting drawObjectLighting;
+layout(set = 0, binding = BINDING_PRIMARY_LIGHTS, std140) uniform PrimaryLights {
+    GpuLight primaryLights[MAX_PRIMARY_RECORDS];
+};
+// Dynamic objects: the light grid sampled at each object's origin.
+layout(set = 0, binding = BINDING_OBJECT_LIGHTING, std430) readonly buffer ObjectLighting {
+    GpuObjectLighting objectLighting[];
 };
 
 // Baked lighting from the package (neutral placeholders for a level without it).
