@@ -168,8 +168,9 @@ def main():
     rows, figures = [], []
     for game_map in args.maps.split(","):
         package = os.path.join(args.out, game_map + ".olpak")
-        if not os.path.exists(package):
-            log(f"{game_map}: baking at draft quality")
+        baker = os.path.join(BIN, "onelight-bake")
+        if not os.path.exists(package) or os.path.getmtime(package) < os.path.getmtime(baker):
+            log(f"{game_map}: baking at draft quality (no package, or one older than the baker)")
             run([os.path.join(BIN, "onelight-bake"), MAPS.get(game_map, game_map), "-o", package,
                  "--quality", "draft", "--quiet"], "onelight-bake")
         for spawn in (f"spawn{s}" for s in args.spawns.split(",")):
