@@ -156,9 +156,9 @@ void stepSession(Session& s) {
     itemSystem(s.registry, tick, s.player);
     moverSystem(s.registry, tick);
     effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);
-    primarySelectionSystem(s.registry, s.primaryCandidates, [&s](uint32_t light, glm::vec3 p) {
-        return primaryPickScore(s, light, p);
-    });
+    primarySelectionSystem(
+        s.registry, tick, s.primaryCandidates,
+        [&s](uint32_t light, glm::vec3 p) { return primaryPickScore(s, light, p); });
     s.input.endTick();
 }
 
@@ -205,8 +205,11 @@ render::FrameInputs frameInputsOf(const Session& s,
         d.entity = link.index;
         d.worldFromObject = world::worldFromObject(s.level->level.entities[link.index],
                                                    transform.position, transform.yaw);
-        if (const DynamicLighting* lit = r.tryGet<DynamicLighting>(e))
+        if (const DynamicLighting* lit = r.tryGet<DynamicLighting>(e)) {
             d.primary = lit->pick.primary;
+            d.fadeWeight = primaryWeight(*lit, double(s.tick) * s.tickSeconds);
+            if (d.fadeWeight < 1.0f) d.fadingFrom = lit->fadingFrom;
+        }
         if (const Item* item = r.tryGet<Item>(e)) d.hidden = !item->present;
         transforms.push_back(d);
     }

@@ -82,6 +82,9 @@ const int SPEC_FEATURES_OFF = 11;
 // 0: its draws' primary is unoccluded (their baked masks are lit over them and no dynamic caster's
 // shadow may reach them): neither shadow is looked up. 1: the runtime map and the baked mask.
 const int SPEC_PRIMARY_SHADOW = 12;
+// 1: its draws may cross-fade a dynamic object's primary switch (draw.fadeLight, when not
+// NO_INDEX, lit at 1 - draw.primaryWeight); 0: compiled out (no draw of it fades).
+const int SPEC_PRIMARY_FADE = 13;
 const int FEATURE_BASE_TEXTURE = 1;      // base colour texel: 1
 const int FEATURE_LIGHTMAP = 2;          // a static surface's lightmap: the constant ambient
 const int FEATURE_RUNTIME_SHADOW = 4;    // the primary's shadow map: unshadowed
@@ -179,6 +182,10 @@ struct DrawPush {
     uint lightmapAtlas;    // a static surface's atlas, NO_INDEX for a dynamic object (grid)
     uint objectLighting;   // a dynamic object's record in objectLighting[], or NO_INDEX
     vec4 lightmapScale;    // xy: uv1 (over the surface's atlas) to the lightmap array's uv
+    uint fadeLight;        // a dynamic object's old primary's record while it cross-fades, else
+                           // NO_INDEX
+    float primaryWeight;   // primaryLight's share of the light (fadeLight's is 1 - this)
+    uint drawPad0, drawPad1;
 };
 
 // Per draw of an alpha-masked shadow caster (push constants; its material's set 1 bound as set 0).

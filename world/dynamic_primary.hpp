@@ -23,6 +23,9 @@ inline constexpr float kPrimarySwitchRatio = 1.25f;
 inline constexpr int kPrimarySwitchEvaluations = 6;
 /// An object is evaluated again once its lighting origin has moved this far (metres).
 inline constexpr float kPrimaryEvaluationDistance = 0.01f;
+/// A switch cross-fades the old primary's light into the new one's over this long (seconds), so
+/// that the object's lighting does not pop (the game's DynamicLighting keeps the fade).
+inline constexpr float kPrimaryFadeSeconds = 0.25f;
 
 /// A dynamic object's pick and its hysteresis state.
 struct DynamicPrimary {

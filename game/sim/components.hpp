@@ -62,6 +62,18 @@ struct GunFlash {
 // handed to the renderer with its transform.
 struct DynamicLighting {
     world::DynamicPrimary pick;  // pick.primary: into the level's lights, or world::kNoIndex
+    // A switch's cross-fade (world::kPrimaryFadeSeconds): the primary it left, lit at
+    // 1 - primaryWeight(), and when the new one started to take over (seconds).
+    uint32_t fadingFrom = world::kNoIndex;
+    double fadeStart = 0.0;
 };
+
+// The weight of a dynamic object's primary at `seconds` (its old primary's is 1 - this): from 0
+// at the switch to 1 kPrimaryFadeSeconds later; 1 when not fading.
+[[nodiscard]] inline float primaryWeight(const DynamicLighting& lit, double seconds) {
+    if (lit.fadingFrom == world::kNoIndex) return 1.0f;
+    const double w = (seconds - lit.fadeStart) / double(world::kPrimaryFadeSeconds);
+    return float(w < 0.0 ? 0.0 : w > 1.0 ? 1.0 : w);
+}
 
 }  // namespace onelight::game

@@ -204,10 +204,27 @@ void effectLightSystem(ecs::Registry& registry, const ecs::Tick& tick, const Inp
     }
 }
 
-void primarySelectionSystem(ecs::Registry& registry, std::span<const uint32_t> candidates,
+void primarySelectionSystem(ecs::Registry& registry, const ecs::Tick& tick,
+                            std::span<const uint32_t> candidates,
                             const world::PrimaryScore& score) {
-    for (auto [e, transform, lit] : registry.view<Transform, DynamicLighting>().each())
+    const double now = tick.time();
+    for (auto [e, transform, lit] : registry.view<Transform, DynamicLighting>().each()) {
+        const uint32_t before = lit.pick.primary;
+        const float weight = primaryWeight(lit, now);  // of `before`, were it to switch now
+        if (weight >= 1.0f) lit.fadingFrom = world::kNoIndex;
         world::updateDynamicPrimary(lit.pick, transform.position, candidates, score);
+        if (lit.pick.primary == before || before == world::kNoIndex) continue;
+        if (lit.pick.primary == lit.fadingFrom) {
+            // Back to the light it was leaving: the fade turns round where it stood.
+            lit.fadingFrom = before;
+            lit.fadeStart = now - double(1.0f - weight) * double(world::kPrimaryFadeSeconds);
+        } else {
+            // A new light: it starts from nothing (a third light's share, if one was still
+            // fading out, is dropped: the rarest case, a small step).
+            lit.fadingFrom = before;
+            lit.fadeStart = now;
+        }
+    }
 }
 
 }  // namespace onelight::game

@@ -74,8 +74,9 @@ void effectLightSystem(ecs::Registry& registry, const ecs::Tick& tick, const Inp
 // Re-picks the primary of every dynamic object whose lighting origin moved, by
 // world::updateDynamicPrimary (its hysteresis and constants) over `candidates` scored by `score`:
 // the shadowed contribution of a light at a point (the light grid's answer, or a direct evaluation
-// with visibility).
-void primarySelectionSystem(ecs::Registry& registry, std::span<const uint32_t> candidates,
-                            const world::PrimaryScore& score);
+// with visibility). A switch starts a cross-fade from the old primary (DynamicLighting); one
+// during a fade continues from the weights it had, so the light never jumps.
+void primarySelectionSystem(ecs::Registry& registry, const ecs::Tick& tick,
+                            std::span<const uint32_t> candidates, const world::PrimaryScore& score);
 
 }  // namespace onelight::game

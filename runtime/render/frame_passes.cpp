@@ -2,6 +2,9 @@
 // pass, the copies out (readback, swapchain), and the readback itself once the frame is done.
 #include "render/frame_passes.hpp"
 
+#include <cstdio>
+#include <cstdlib>
+
 #include <algorithm>
 
 #include <glm/gtc/packing.hpp>
@@ -104,6 +107,8 @@ DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale,
     push.material = d.material;
     push.primaryLight =
         d.primaryLight < primaryRecord.size() ? primaryRecord[d.primaryLight] : kNoIndex;
+    push.fadeLight = d.fadeLight < primaryRecord.size() ? primaryRecord[d.fadeLight] : kNoIndex;
+    push.primaryWeight = push.fadeLight != kNoIndex ? d.primaryWeight : 1.0f;
     push.lightmapAtlas = d.atlas;
     push.objectLighting = d.entity;
     push.lightmapScale = glm::vec4(1.0f);

@@ -97,9 +97,9 @@ uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& optio
     const int secondary = dynamic               ? glsl::SECONDARY_OBJECT
                           : d.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP
                                                 : glsl::SECONDARY_CONSTANT;
-    return drawPipelineKey(materials, options, d.material,
-                           dynamic ? uint32_t(glsl::PRIMARY_ANY) : d.primaryKind,
-                           uint32_t(secondary), effectLights, d.primaryShadow);
+    return drawPipelineKey(
+        materials, options, d.material, dynamic ? uint32_t(glsl::PRIMARY_ANY) : d.primaryKind,
+        uint32_t(secondary), effectLights, d.primaryShadow, d.fadeLight != kNoIndex);
 }
 
 }  // namespace
@@ -155,6 +155,8 @@ FrameView frameViewOf(const LevelData& level, float aspect, const FrameInputs& i
     v.entityTransforms.resize(entities.size());
     v.entityPrimary.assign(entities.size(), kNoIndex);
     v.entityHidden.assign(entities.size(), 0);
+    v.entityFadeFrom.assign(entities.size(), kNoIndex);
+    v.entityPrimaryWeight.assign(entities.size(), 1.0f);
     for (size_t e = 0; e < entities.size(); ++e)
         v.entityTransforms[e] = world::worldFromObject(entities[e], entities[e].position);
     for (const DynamicTransform& t : inputs.dynamicTransforms) {
@@ -162,6 +164,11 @@ FrameView frameViewOf(const LevelData& level, float aspect, const FrameInputs& i
         v.entityTransforms[t.entity] = t.worldFromObject;
         if (t.primary < level.lights.size()) v.entityPrimary[t.entity] = t.primary;
         v.entityHidden[t.entity] = t.hidden ? 1 : 0;
+        if (v.entityPrimary[t.entity] != kNoIndex && t.fadingFrom < level.lights.size() &&
+            t.fadingFrom != t.primary && t.fadeWeight < 1.0f) {
+            v.entityFadeFrom[t.entity] = t.fadingFrom;
+            v.entityPrimaryWeight[t.entity] = std::clamp(t.fadeWeight, 0.0f, 1.0f);
+        }
     }
     return v;
 }
@@ -237,7 +244,11 @@ DrawList buildDrawList(const Scene& scene, const RendererOptions& options, const
         worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, lo, hi);
         if (!intersects(frustum, lo, hi)) continue;
         list.entityVisible[mesh.entity] = 1;
-        add(drawOf(mesh, view.entityPrimary[mesh.entity]), mesh.material, lo, hi);
+        Draw d = drawOf(mesh, view.entityPrimary[mesh.entity]);
+        d.fadeLight = view.entityFadeFrom[mesh.entity];
+        d.primaryWeight = view.entityPrimaryWeight[mesh.entity];
+        if (d.fadeLight != kNoIndex) list.visibleLights.push_back(d.fadeLight);
+        add(d, mesh.material, lo, hi);
         ++stats.dynamicMeshesDrawn;
     }
     std::sort(list.visibleLights.begin(), list.visibleLights.end());
@@ -274,8 +285,12 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
         if (surface.unoccluded && geometry.dynamicCasters)
             add(drawOf(surface, true), surface.material);
     }
-    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes)
+    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
         if (add(drawOf(mesh, kNoIndex), mesh.material)) list.entityVisible[mesh.entity] = 1;
+        Draw fading = drawOf(mesh, kNoIndex);  // the pipeline of a primary switch's fade
+        fading.fadeLight = 0;
+        if (add(fading, mesh.material)) list.entityVisible[mesh.entity] = 1;
+    }
     if (shadowedLight != kNoIndex && !options.flatShading) list.visibleLights = {shadowedLight};
     batchDraws(list.draws, options.rasterFloor);
     return list;

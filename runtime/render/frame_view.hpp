@@ -28,8 +28,10 @@ struct Draw {
     uint32_t primaryLight = kNoIndex, atlas = kNoIndex;
     uint32_t primaryKind = 0;    // a static surface's PRIMARY_* (DrawSurface::primaryKind)
     uint32_t entity = kNoIndex;  // kNoIndex for static; a dynamic object's record in objectLighting
-    bool primaryShadow = true;   // false: an unoccluded surface no dynamic shadow reaches
-    float distance2 = 0.0f;      // squared metres from the camera: dynamic draws front to back
+    uint32_t fadeLight = kNoIndex;  // a dynamic object's old primary while it cross-fades
+    float primaryWeight = 1.0f;     // primaryLight's share (fadeLight's is 1 - this)
+    bool primaryShadow = true;      // false: an unoccluded surface no dynamic shadow reaches
+    float distance2 = 0.0f;         // squared metres from the camera: dynamic draws front to back
 };
 
 /// The camera, the exposure and the dynamic objects' transforms and primaries of one frame.
@@ -40,6 +42,8 @@ struct FrameView {
     std::vector<glm::mat4> entityTransforms;  // per entity: given, else its placement
     std::vector<uint32_t> entityPrimary;      // per entity: the game's pick, or kNoIndex
     std::vector<uint8_t> entityHidden;        // per entity: 1 = not drawn, no shadow
+    std::vector<uint32_t> entityFadeFrom;     // per entity: the primary it cross-fades from
+    std::vector<float> entityPrimaryWeight;   // per entity: its primary's share (1 not fading)
     bool effectLights = false;                // any effect omni or the spot is on
 };
 /// The view of a frame `aspect` wide per unit of height.

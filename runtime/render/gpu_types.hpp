@@ -36,7 +36,7 @@ static_assert(sizeof(GpuMaterial) == 80);
 static_assert(sizeof(GpuObjectLighting) == 96);
 static_assert(sizeof(GpuProbe) == 80);
 static_assert(sizeof(GpuProbeGrid) == 48);
-static_assert(sizeof(DrawPush) == 96);
+static_assert(sizeof(DrawPush) == 112);
 static_assert(sizeof(MaskedShadowPush) == 80);
 
 }  // namespace onelight::render

@@ -45,7 +45,7 @@ std::string permutationName(const PermutationKey& k) {
     static const char* const kPrimary[5] = {" no-primary", "", " directional", " point", " spot"};
     name += kPrimary[std::min(k.primary, 4u)];
     return name + (k.primaryShadow ? "" : " unoccluded") + kSecondary[k.secondary & 3u] +
-           (k.effectLights ? "" : " no-effects");
+           (k.effectLights ? "" : " no-effects") + (k.primaryFade ? " fade" : "");
 }
 
 // The pipeline keys the level's draws use: each static surface's and each dynamic mesh's, for
@@ -67,9 +67,11 @@ std::vector<uint32_t> forwardKeys(const SceneGeometry& geometry, const SceneMate
                     effects, shadow));
             }
         for (const DrawDynamicMesh& d : geometry.dynamicMeshes)
-            keys.push_back(drawPipelineKey(
-                materials, options, std::min(d.material, materialCount - 1),
-                uint32_t(glsl::PRIMARY_ANY), uint32_t(glsl::SECONDARY_OBJECT), effects));
+            for (const bool fade : {false, true})  // while its primary switch cross-fades
+                keys.push_back(
+                    drawPipelineKey(materials, options, std::min(d.material, materialCount - 1),
+                                    uint32_t(glsl::PRIMARY_ANY), uint32_t(glsl::SECONDARY_OBJECT),
+                                    effects, true, fade));
         // A level with nothing to draw still gets a pipeline.
         if (geometry.surfaces.empty() && geometry.dynamicMeshes.empty())
             keys.push_back(drawPipelineKey(materials, options, 0, uint32_t(glsl::PRIMARY_ANY),
@@ -191,7 +193,8 @@ void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeo
                             {glsl::SPEC_SECONDARY, int(k.secondary)},
                             {glsl::SPEC_EFFECT_LIGHTS, k.effectLights ? 1 : 0},
                             {glsl::SPEC_FEATURES_OFF, int(options.featuresOff)},
-                            {glsl::SPEC_PRIMARY_SHADOW, k.primaryShadow ? 1 : 0}}}};
+                            {glsl::SPEC_PRIMARY_SHADOW, k.primaryShadow ? 1 : 0},
+                            {glsl::SPEC_PRIMARY_FADE, k.primaryFade ? 1 : 0}}}};
         p.forward[key] = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
         p.permutations.push_back(permutationName(k));
     }
@@ -262,7 +265,7 @@ void createSkyPipeline(const vk::Context& ctx, Pipelines& p, const ForwardChoice
 
 uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions& options,
                          uint32_t material, uint32_t primary, uint32_t secondary, bool effectLights,
-                         bool primaryShadow) {
+                         bool primaryShadow, bool primaryFade) {
     if (options.flatShading) return 0u;
     PermutationKey k;
     k.materialClass = materials.classes[material];
@@ -275,6 +278,7 @@ uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions&
         k.secondary = secondary;
         k.effectLights = effectLights;
         k.primaryShadow = primaryShadow;
+        k.primaryFade = primaryFade;
     }
     return permutationKey(k);
 }

@@ -62,7 +62,11 @@ struct DynamicTransform {
     uint32_t entity = 0;  // into level.entities
     glm::mat4 worldFromObject{1.0f};
     uint32_t primary = kNoIndex;  // the game's pick, into level.lights; kNoIndex: no primary
-    bool hidden = false;          // not drawn and casting no shadow (a taken item)
+    // While the pick cross-fades (world::kPrimaryFadeSeconds): the primary it leaves, lit at
+    // 1 - fadeWeight, and `primary` at fadeWeight.
+    uint32_t fadingFrom = kNoIndex;
+    float fadeWeight = 1.0f;
+    bool hidden = false;  // not drawn and casting no shadow (a taken item)
 };
 
 /// Everything a frame depends on besides the level: the same inputs give the same pixels.

@@ -46,7 +46,7 @@ struct MiniGame {
             playerSystem(registry, t, input, tuning, nullptr);
             moverSystem(registry, t);
             effectLightSystem(registry, t, input, tuning, shots);
-            primarySelectionSystem(registry, candidates, score);
+            primarySelectionSystem(registry, t, candidates, score);
             input.endTick();
             ReplayAfterTick after = finishReplayTick(runner, tick, registry);
             for (auto& c : after.captures) captures.emplace_back(tick, c);

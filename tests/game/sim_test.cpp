@@ -181,30 +181,72 @@ TEST(GameSim, PrimarySelectionHasHysteresisAtABoundary) {
     world::PrimaryScore score = [](uint32_t light, glm::vec3 p) {
         return light == 0 ? std::exp(-p.x) : std::exp(p.x);
     };
-    primarySelectionSystem(r, lights, score);
+    primarySelectionSystem(r, ecs::Tick{}, lights, score);
     EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 0u);
     // Jitter across the boundary: +-2 cm moves, each re-evaluated; no flicker.
     int switches = 0;
     uint32_t last = 0;
     for (int i = 0; i < 100; ++i) {
         r.get<Transform>(crate).position.x = (i % 2 ? 0.02f : -0.02f);
-        primarySelectionSystem(r, lights, score);
+        primarySelectionSystem(r, ecs::Tick{}, lights, score);
         switches += r.get<DynamicLighting>(crate).pick.primary != last;
         last = r.get<DynamicLighting>(crate).pick.primary;
     }
     EXPECT_EQ(switches, 0);
     // Crossing decisively: light 1 beats light 0 by more than the ratio at once.
     r.get<Transform>(crate).position.x = 1.0f;
-    primarySelectionSystem(r, lights, score);
+    primarySelectionSystem(r, ecs::Tick{}, lights, score);
     EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 1u);
     // Resting just past the boundary, moving a little each tick: it switches after
     // kPrimarySwitchEvaluations evaluations even though the margin stays small.
     r.get<Transform>(crate).position.x = -0.05f;
-    primarySelectionSystem(r, lights, score);
+    primarySelectionSystem(r, ecs::Tick{}, lights, score);
     EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 1u);
     for (int i = 1; i < world::kPrimarySwitchEvaluations; ++i) {
         r.get<Transform>(crate).position.x = -0.05f - 0.02f * i;
-        primarySelectionSystem(r, lights, score);
+        primarySelectionSystem(r, ecs::Tick{}, lights, score);
     }
     EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 0u);
+}
+
+// A switch cross-fades (world::kPrimaryFadeSeconds): the old primary's weight falls from 1 to
+// 0 over the fade, a tick at a time; switching back mid-fade turns the fade round where it
+// stood, so the light never jumps.
+TEST(GameSim, APrimarySwitchCrossFadesAndTurnsRoundWithoutAJump) {
+    ecs::Registry r;
+    ecs::Entity crate = r.create();
+    r.emplace<Transform>(crate, Transform{{-3, 0, 0}});
+    r.emplace<DynamicLighting>(crate);
+    const uint32_t lights[] = {0, 1};
+    world::PrimaryScore score = [](uint32_t light, glm::vec3 p) {
+        return light == 0 ? std::exp(-p.x) : std::exp(p.x);
+    };
+    const double dt = 1.0 / 60.0;
+    primarySelectionSystem(r, ecs::Tick{0, dt}, lights, score);
+    const DynamicLighting& lit = r.get<DynamicLighting>(crate);
+    EXPECT_EQ(lit.pick.primary, 0u);
+    EXPECT_EQ(lit.fadingFrom, world::kNoIndex);  // the first pick does not fade in
+    EXPECT_FLOAT_EQ(primaryWeight(lit, 0.0), 1.0f);
+    // Crossing decisively at tick 10: light 1 takes over, light 0 fades out over 0.25 s.
+    r.get<Transform>(crate).position.x = 1.0f;
+    primarySelectionSystem(r, ecs::Tick{10, dt}, lights, score);
+    EXPECT_EQ(lit.pick.primary, 1u);
+    EXPECT_EQ(lit.fadingFrom, 0u);
+    const double t0 = 10 * dt;
+    EXPECT_FLOAT_EQ(primaryWeight(lit, t0), 0.0f);
+    EXPECT_NEAR(primaryWeight(lit, t0 + 0.125), 0.5f, 1e-5f);
+    EXPECT_FLOAT_EQ(primaryWeight(lit, t0 + double(world::kPrimaryFadeSeconds)), 1.0f);
+    // Back to light 0 at 0.1 s into the fade (light 1 at weight 0.4): light 0 now starts at
+    // 0.6, where it stood, and rises.
+    const uint64_t back = 10 + 6;  // 0.1 s later
+    r.get<Transform>(crate).position.x = -1.0f;
+    primarySelectionSystem(r, ecs::Tick{back, dt}, lights, score);
+    EXPECT_EQ(lit.pick.primary, 0u);
+    EXPECT_EQ(lit.fadingFrom, 1u);
+    EXPECT_NEAR(primaryWeight(lit, back * dt), 0.6f, 1e-4f);
+    // After the fade the old primary is forgotten at the next evaluation.
+    r.get<Transform>(crate).position.x = -1.1f;
+    primarySelectionSystem(r, ecs::Tick{back + 60, dt}, lights, score);
+    EXPECT_EQ(lit.fadingFrom, world::kNoIndex);
+    EXPECT_FLOAT_EQ(primaryWeight(lit, (back + 60) * dt), 1.0f);
 }

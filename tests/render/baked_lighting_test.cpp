@@ -213,9 +213,9 @@ test::Scene bakedScene() {
 }
 
 // Each test bakes its own package (ctest may run them in parallel): ~1.5 s at draft quality.
-assets::LoadedLevel bake(const std::string& name) {
+assets::LoadedLevel bake(const std::string& name, const test::Scene& scene = bakedScene()) {
     const std::string gltf = test::outputDir() + "/" + name + ".gltf";
-    test::writeGltf(bakedScene(), gltf);
+    test::writeGltf(scene, gltf);
     assets::LoadedLevel level = test::bakeAndLoad(gltf, test::outputDir() + "/" + name + ".olpak");
     EXPECT_TRUE(level.hasBakedLighting);
     return level;
@@ -575,6 +575,81 @@ TEST(RenderBaked, DynamicObjectFollowsGrid) {
     EXPECT_EQ(ctx.validationCounts.errors.load(), 0u);
     EXPECT_GT(secondary[0].x, 3.0f * secondary[1].x);  // a bright cell and a dark one...
     EXPECT_GT(rendered[0].x - rendered[1].x, 0.5f * (secondary[0].x - secondary[1].x));  // ...seen
+}
+
+// A dynamic object's primary switch cross-fades (world::kPrimaryFadeSeconds): drawn with primary
+// B fading from A at weight w, every pixel of the frame is (1 - w) x the frame lit by A plus w x
+// the frame lit by B, the rest of its light being the same in all three (closed form, linear
+// light). Tolerance: the RGBA16F target's step (2^-11 relative) on each of the three frames, and
+// 1e-3 of the brightest channel for the half-float rounding of sums. With 15 steps of w (0.25 s
+// at 60 Hz) the largest change between consecutive frames is a fifteenth of the switch's pop.
+TEST(RenderBaked, APrimarySwitchCrossFadesLinearlyBetweenTheTwoLights) {
+    test::Scene scene = bakedScene();
+    scene.lights[1].role = nullptr;  // the second light a primary too
+    const assets::LoadedLevel level = bake("baked_fade", scene);
+    uint32_t entity = world::kNoIndex;
+    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
+        if (level.level.entities[e].flags & world::kEntityDynamic) entity = e;
+    ASSERT_NE(entity, world::kNoIndex);
+    std::vector<uint32_t> primaries;
+    for (uint32_t l = 0; l < level.level.lights.size(); ++l)
+        if (level.level.lights[l].role == world::LightRole::kPrimary) primaries.push_back(l);
+    ASSERT_GE(primaries.size(), 2u);
+    const render::Camera camera = testCamera();
+    const glm::vec3 place(0.5f, 0.5f, -1.0f);
+
+    render::RenderDeviceFeatures features;
+    vk::Context ctx;
+    vk::createContext(ctx, render::renderContextOptions(features, {}));
+    {
+        render::Renderer renderer;
+        render::createRenderer(renderer, ctx, level, options(40.0f, 8.0f));
+        auto frameWith = [&](uint32_t primary, uint32_t from, float weight) {
+            render::DynamicTransform t{entity, glm::translate(glm::mat4(1.0f), place), primary};
+            t.fadingFrom = from;
+            t.fadeWeight = weight;
+            render::FrameInputs inputs;
+            inputs.camera = camera;
+            inputs.dynamicTransforms = {&t, 1};
+            render::FrameOutput output;
+            output.readback = true;
+            render::drawFrame(renderer, inputs, output);
+            return render::capturedFrame(renderer).linearRgba;
+        };
+        const std::vector<float> a = frameWith(primaries[0], world::kNoIndex, 1.0f);
+        const std::vector<float> b = frameWith(primaries[1], world::kNoIndex, 1.0f);
+        float pop = 0.0f, brightest = 0.0f;
+        for (size_t i = 0; i < a.size(); ++i) {
+            pop = std::max(pop, std::abs(a[i] - b[i]));
+            brightest = std::max({brightest, a[i], b[i]});
+        }
+        std::printf("[ fade ] the switch's pop: %.4g (brightest %.4g)\n", double(pop),
+                    double(brightest));
+        ASSERT_GT(pop, 0.05f * brightest);  // the two lights light the object differently
+        std::vector<float> previous = a;
+        float worstStep = 0.0f;
+        for (int k = 0; k <= 15; ++k) {
+            const float w = float(k) / 15.0f;
+            const std::vector<float> f = frameWith(primaries[1], primaries[0], w);
+            float worst = 0.0f;
+            for (size_t i = 0; i < f.size(); ++i) {
+                const float expected = (1.0f - w) * a[i] + w * b[i];
+                const float tolerance =
+                    3.0f * std::ldexp(std::max({std::abs(a[i]), std::abs(b[i]), 1e-6f}), -11) +
+                    1e-3f * brightest;
+                worst = std::max(worst, std::abs(f[i] - expected) - tolerance);
+                worstStep = std::max(worstStep, std::abs(f[i] - previous[i]));
+            }
+            EXPECT_LE(worst, 0.0f) << "at weight " << w;
+            previous = f;
+        }
+        std::printf("[ fade ] worst step between consecutive frames: %.4g (%.3f of the pop)\n",
+                    double(worstStep), double(worstStep / pop));
+        EXPECT_LE(worstStep, pop / 15.0f + 2e-3f * brightest);
+        render::destroyRenderer(renderer);
+    }
+    vk::destroyContext(ctx);
+    EXPECT_EQ(ctx.validationCounts.errors.load(), 0u);
 }
 
 // A Lambert floor under a uniform sky of radiance L and nothing else sees sky over its whole

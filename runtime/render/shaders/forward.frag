@@ -33,6 +33,7 @@ layout(constant_id = SPEC_SECONDARY) const int SECONDARY = SECONDARY_ANY;
 layout(constant_id = SPEC_EFFECT_LIGHTS) const int EFFECT_LIGHTS = 1;
 layout(constant_id = SPEC_FEATURES_OFF) const int FEATURES_OFF = 0;  // benchmarks only
 layout(constant_id = SPEC_PRIMARY_SHADOW) const int PRIMARY_SHADOW = 1;
+layout(constant_id = SPEC_PRIMARY_FADE) const int PRIMARY_FADE = 1;
 bool featureOn(int feature) { return (FEATURES_OFF & feature) == 0; }
 
 // Whether material m fills texture slot `slot` and the pipeline's materials may.
@@ -196,6 +197,26 @@ LightSample evaluateGpuLight(GpuLight light, int type, vec3 p) {
                                  light.cones.y, p);
 }
 
+// The radiance primary light `light` (of type `type`) reflects at p, times its shadow.
+vec3 primaryRadiance(GpuLight light, int type, vec3 p, vec3 n, vec3 v, vec3 geometricNormal,
+                     float viewDistance, vec3 albedo, vec3 f0, float gloss, vec2 directEnv,
+                     float cavity) {
+    LightSample s = evaluateGpuLight(light, type, p);
+    BrdfDots d = brdfDots(n, v, s.l);
+    if (!(dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0)) return vec3(0.0);
+    float radius = frame.shadowParams.x;
+    float shadow = 1.0;
+    if (PRIMARY_SHADOW == 1) {
+        float baked = featureOn(FEATURE_BAKED_SHADOW) && viewDistance > radius - frame.shadowParams.y
+                          ? bakedShadow() : 1.0;
+        float runtime = featureOn(FEATURE_RUNTIME_SHADOW) && viewDistance < radius
+                            ? runtimeShadow(light, type, p, geometricNormal, s.l, viewDistance) : 1.0;
+        shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x, frame.shadowParams.y);
+    }
+    return surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity, d) *
+           s.illuminance * shadow;
+}
+
 void main() {
     if (FLAT_SHADING == 1) {
         outColor = vec4(0.18, 0.18, 0.18, 1.0);
@@ -245,25 +266,18 @@ void main() {
     float cavity = MATERIAL_PIPELINE == 1 && materialHas(m, TEXTURE_CAVITY) ? texture(cavityTexture, inUv0).r : 1.0;
     vec2 directEnv = MATERIAL_PIPELINE == 1 ? env : vec2(0.0);  // the direct lights' energy weight
 
-    // The one primary light, times its shadow.
+    // The one primary light, times its shadow; a dynamic object's two while its switch
+    // cross-fades (draw.fadeLight at 1 - draw.primaryWeight; PRIMARY_FADE pipelines only, so
+    // that the others pay nothing for it).
     if (PRIMARY != PRIMARY_NONE && featureOn(FEATURE_PRIMARY) && draw.primaryLight != NO_INDEX) {
         GpuLight light = primaryLights[draw.primaryLight];
-        int type = primaryType(light);
-        LightSample s = evaluateGpuLight(light, type, p);
-        BrdfDots d = brdfDots(n, v, s.l);
-        if (dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0) {
-            float radius = frame.shadowParams.x;
-            float shadow = 1.0;
-            if (PRIMARY_SHADOW == 1) {
-                float baked = featureOn(FEATURE_BAKED_SHADOW) && viewDistance > radius - frame.shadowParams.y
-                                  ? bakedShadow() : 1.0;
-                float runtime = featureOn(FEATURE_RUNTIME_SHADOW) && viewDistance < radius
-                                    ? runtimeShadow(light, type, p, geometricNormal, s.l, viewDistance) : 1.0;
-                shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x,
-                                     frame.shadowParams.y);
-            }
-            radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
-                                           cavity, d) * s.illuminance * shadow;
+        float share = PRIMARY_FADE == 1 && draw.fadeLight != NO_INDEX ? draw.primaryWeight : 1.0;
+        radiance += primaryRadiance(light, primaryType(light), p, n, v, geometricNormal, viewDistance,
+                                    albedo, f0, gloss, directEnv, cavity) * share;
+        if (PRIMARY_FADE == 1 && draw.fadeLight != NO_INDEX) {
+            GpuLight old = primaryLights[draw.fadeLight];
+            radiance += primaryRadiance(old, int(old.info.x), p, n, v, geometricNormal, viewDistance,
+                                        albedo, f0, gloss, directEnv, cavity) * (1.0 - share);
         }
     }
 
