@@ -20,11 +20,13 @@ struct MeshInstance {
     uint32_t primitive = 0;        // index within the glTF mesh
     uint32_t material = kNoIndex;  // into SourceLevel::materials (a default is added if needed)
     glm::dmat4 worldFromLocal{1.0};
-    std::vector<Vertex> vertices;   // local space
-    std::vector<uint32_t> indices;  // triangles
-    bool hasUv1 = false;            // TEXCOORD_1 was present
-    bool dynamic = false;           // not part of the BSP, lit by the grid
-    uint32_t entity = kNoIndex;     // into SourceLevel::entities when dynamic
+    std::vector<Vertex> vertices;    // local space
+    std::vector<uint32_t> indices;   // triangles
+    bool hasUv1 = false;             // TEXCOORD_1 was present
+    bool dynamic = false;            // not part of the BSP, lit by the grid
+    uint32_t entity = kNoIndex;      // into SourceLevel::entities when dynamic
+    bool prop = false;               // static, one primary for all of it, chosen at:
+    glm::dvec3 lightingOrigin{0.0};  // world metres (a prop's node: given, or its bounds' centre)
 };
 
 /// How the source stored its light values as bytes, inverted by bake::decodeImportedValue. For

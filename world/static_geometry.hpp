@@ -35,6 +35,8 @@ struct StaticGeometry {
     std::vector<StaticTriangle> triangles;
     std::vector<uint8_t> instanceHasUv1;     // per source instance
     std::vector<std::string> instanceNames;  // per source instance, "node/mesh"
+    std::vector<uint8_t> instanceIsProp;     // per source instance: one primary, at its origin
+    std::vector<glm::dvec3> instanceLightingOrigin;  // per source instance (props'), world
 };
 
 /// Attribute-wise interpolation a + t (b - a), normal and tangent renormalised.

@@ -87,6 +87,8 @@ SplitLevel splitStaticDynamic(const SourceLevel& level) {
         const std::string name = instance.nodeName + "/" + instance.meshName;
         geometry.instanceHasUv1.push_back(instance.hasUv1 ? 1 : 0);
         geometry.instanceNames.push_back(name);
+        geometry.instanceIsProp.push_back(instance.prop ? 1 : 0);
+        geometry.instanceLightingOrigin.push_back(instance.lightingOrigin);
         if (instance.dynamic) continue;
         const glm::dmat4& m = instance.worldFromLocal;
         const glm::dmat3 normalMatrix = normalMatrixOf(m);

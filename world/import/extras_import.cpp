@@ -79,6 +79,18 @@ NodeExtras parseNodeExtras(const tinygltf::Value& extras, const std::string& whe
     }
     if (o.Has("dynamic")) out.dynamic = readBool(o.Get("dynamic"), base + ".dynamic");
     if (o.Has("spawn")) out.spawn = readBool(o.Get("spawn"), base + ".spawn");
+    if (o.Has("prop")) {
+        const tinygltf::Value& prop = o.Get("prop");
+        if (prop.IsBool()) {
+            out.prop = prop.Get<bool>();
+        } else if (prop.IsObject() && prop.Has("lighting_origin")) {
+            out.prop = out.hasLightingOrigin = true;
+            out.lightingOrigin =
+                readVec3(prop.Get("lighting_origin"), base + ".prop.lighting_origin");
+        } else {
+            throw Error(base + ".prop: expected true, false or {\"lighting_origin\": [x, y, z]}");
+        }
+    }
     if (o.Has("probe")) {
         const tinygltf::Value& probe = o.Get("probe");
         if (probe.IsBool()) {
@@ -172,6 +184,10 @@ NodeExtras parseNodeExtras(const tinygltf::Value& extras, const std::string& whe
         out.hasExposure = true;
         out.exposureEv100 = readNumber(o.Get("exposure"), base + ".exposure");
     }
+    if (out.prop && out.dynamic)
+        throw Error(base +
+                    ": a prop is static (one primary, baked); it cannot also be dynamic "
+                    "or a mover");
     return out;
 }
 

@@ -26,7 +26,11 @@ struct NodeExtras {
     glm::vec3 probeBoxMin{0.0f}, probeBoxMax{0.0f};  // world metres
     bool mover = false;
     glm::vec3 moverOffset{0.0f};  // metres, world space
-    float moverPeriod = 0.0f;     // seconds, > 0
+    bool prop = false;            // a static prop: one primary, chosen at its lighting origin
+    bool hasLightingOrigin = false;
+    glm::vec3 lightingOrigin{
+        0.0f};                 // the prop's, in the node's space (default: its bounds' centre)
+    float moverPeriod = 0.0f;  // seconds, > 0
     bool hasGrid = false;
     glm::vec3 gridMin{0.0f}, gridMax{0.0f};  // world metres, min < max
     bool hasExposure = false;

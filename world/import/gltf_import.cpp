@@ -20,6 +20,27 @@
 namespace onelight::world {
 namespace {
 
+// A prop node's lighting origin, world metres, on its instances from `first`: the one its extras
+// give (node space), else the centre of its vertices' world bounds.
+void setLightingOrigin(SourceLevel& level, size_t first, const glm::dmat4& world,
+                       const NodeExtras& extras) {
+    glm::dvec3 origin(0.0);
+    if (extras.hasLightingOrigin) {
+        origin = glm::dvec3(world * glm::dvec4(glm::dvec3(extras.lightingOrigin), 1.0));
+    } else {
+        glm::dvec3 lo(1e300), hi(-1e300);
+        for (size_t i = first; i < level.instances.size(); ++i)
+            for (const Vertex& v : level.instances[i].vertices) {
+                const glm::dvec3 p(world * glm::dvec4(glm::dvec3(v.position), 1.0));
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+        if (lo.x <= hi.x) origin = 0.5 * (lo + hi);
+    }
+    for (size_t i = first; i < level.instances.size(); ++i)
+        level.instances[i].lightingOrigin = origin;
+}
+
 /// Image loader for tinygltf: pixels are not decoded at compile; embedded images keep their
 /// encoded bytes, file references keep only their uri.
 bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
@@ -185,6 +206,7 @@ struct Importer {
                 throw Error(where + ": mesh index " + std::to_string(node.mesh) +
                             " is out of range");
             const tinygltf::Mesh& mesh = model.meshes[static_cast<size_t>(node.mesh)];
+            const size_t firstOfNode = level.instances.size();
             for (size_t p = 0; p < mesh.primitives.size(); ++p) {
                 ImportedPrimitive imported =
                     importPrimitive(model, node.mesh, static_cast<int>(p), file);
@@ -201,8 +223,10 @@ struct Importer {
                 instance.hasUv1 = imported.hasUv1;
                 instance.dynamic = entity != kNoIndex;
                 instance.entity = entity;
+                instance.prop = extras.prop && !instance.dynamic;
                 level.instances.push_back(std::move(instance));
             }
+            if (extras.prop) setLightingOrigin(level, firstOfNode, world, extras);
         }
         for (int child : node.children) visit(child, world, entity, seen, depth + 1);
     }

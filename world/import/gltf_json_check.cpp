@@ -242,14 +242,16 @@ private:
         if (e.contains("onelight")) {
             static const char* const kKeys[] = {
                 "role",     "dynamic",          "spawn",         "probe", "mover",   "grid",
-                "exposure", "texels_per_metre", "probe_spacing", "sky",   "diffuse", "gloss_mips"};
+                "exposure", "texels_per_metre", "probe_spacing", "sky",   "diffuse", "gloss_mips",
+                "prop"};
             for (const auto& [key, value] : e["onelight"].items()) {
                 bool known = false;
                 for (const char* k : kKeys) known |= key == k;
                 if (!known)
                     fail(at + ".extras.onelight." + clipForMessage(key),
                          "is not a setting; expected role, dynamic, spawn, probe, mover, grid, "
-                         "exposure, texels_per_metre, probe_spacing, sky, diffuse or gloss_mips");
+                         "exposure, texels_per_metre, probe_spacing, sky, diffuse, gloss_mips or "
+                         "prop");
                 if (value.is_null())
                     fail(at + ".extras.onelight." + key,
                          "is null; expected a value (leave the setting out for its default)");

@@ -342,6 +342,20 @@ RegionStats assignPrimaryRegions(StaticGeometry& geometry, uint32_t primaryCount
         while (end < triangles.size() && triangles[end].instance == triangles[begin].instance &&
                triangles[end].material == triangles[begin].material)
             ++end;
+        const uint32_t instance = triangles[begin].instance;
+        if (instance < geometry.instanceIsProp.size() && geometry.instanceIsProp[instance]) {
+            // A prop: not split; the primary dominant at its lighting origin, whichever way a
+            // surface faces (a zero normal), for all of it.
+            std::vector<double> at(primaryCount, 0.0);
+            illuminance(geometry.instanceLightingOrigin[instance], glm::vec3(0.0f), at);
+            const uint32_t primary = dominantPrimary(at);
+            for (size_t t = begin; t < end; ++t) {
+                out.push_back(triangles[t]);
+                out.back().primary = primary;
+            }
+            begin = end;
+            continue;
+        }
         InstanceSplitter splitter(geometry, dominance, options, stats);
         const std::vector<StaticTriangle> group(
             triangles.begin() + static_cast<std::ptrdiff_t>(begin),

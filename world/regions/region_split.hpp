@@ -29,7 +29,8 @@ struct RegionStats {
 };
 
 /// Sets StaticTriangle::primary on every triangle (kNoIndex only when primaryCount == 0),
-/// splitting triangles as needed. Total area is preserved.
+/// splitting triangles as needed; a prop's (StaticGeometry::instanceIsProp) are not split and
+/// all take the primary dominant at its lighting origin. Total area is preserved.
 RegionStats assignPrimaryRegions(StaticGeometry& geometry, uint32_t primaryCount,
                                  const PrimaryIlluminanceFn& illuminance,
                                  const RegionOptions& options);
