@@ -9,6 +9,7 @@
 #include <string>
 
 #include "world/compile/compile_level.hpp"
+#include "world/error.hpp"
 #include "world/import/level_import.hpp"
 #include "world/import/q3/item_import.hpp"
 #include "world/import/q3/q3_import.hpp"
@@ -114,6 +115,43 @@ TEST(Quake3Items, ARealMapsPickupsBecomeDynamicEntitiesWithTheirModels) {
     for (const Entity& e : compiled.entities)
         if (e.flags & kEntityItem) owning += e.dynamicMeshCount > 0;
     EXPECT_EQ(owning, items);
+}
+
+}  // namespace
+}  // namespace onelight::world::q3
+
+namespace onelight::world::q3 {
+namespace {
+
+// A Nexuiz map's pickups take Nexuiz's models (its own classes, and the classes it shares with
+// Quake 3 where the Quake 3 models are absent) and Nexuiz's respawn times.
+TEST(Quake3Items, ANexuizMapsPickupsTakeNexuizModelsAndTimes) {
+    const SourceLevel level = [] {
+        try {
+            return importLevel("bluesky");
+        } catch (const Error&) {
+            return SourceLevel{};
+        }
+    }();
+    if (level.instances.empty()) GTEST_SKIP() << "Nexuiz is not installed (nexuiz-data)";
+    size_t items = 0;
+    std::set<std::string> classes;
+    for (const Entity& e : level.entities) {
+        if (!(e.flags & kEntityItem)) continue;
+        ++items;
+        classes.insert(e.name.substr(0, e.name.rfind('_')));
+        const ItemClass* item = itemClassOf(e.name.substr(0, e.name.rfind('_')));
+        ASSERT_NE(item, nullptr) << e.name;
+        EXPECT_EQ(e.itemRespawn, item->nexuizRespawnSeconds) << e.name;
+    }
+    std::string list;
+    for (const std::string& c : classes) list += " " + c;
+    std::printf("[ items ] bluesky: %zu items of%s\n", items, list.c_str());
+    EXPECT_GT(items, 5u);
+    EXPECT_TRUE(classes.count("item_armor25")) << list;
+    EXPECT_TRUE(classes.count("weapon_electro")) << list;
+    for (const std::string& note : level.importNotes)
+        EXPECT_EQ(note.find("item models no archive holds"), std::string::npos) << note;
 }
 
 }  // namespace

@@ -16,44 +16,141 @@ namespace {
 // Quake 3's respawn defaults (g_items.c) in a free-for-all game.
 constexpr float kArmour = 25.0f, kHealth = 35.0f, kAmmo = 40.0f, kHoldable = 60.0f,
                 kPowerup = 120.0f, kWeapon = 5.0f;
+// Nexuiz's (balance.cfg g_pickup_respawntime_*): short, medium and long items, powerups,
+// weapons, ammo; a class's size as its name reads (1: short, 25/medium: medium, 50/100: long).
+constexpr float kNexShort = 15.0f, kNexMedium = 20.0f, kNexLong = 30.0f, kNexPowerup = 120.0f,
+                kNexWeapon = 15.0f, kNexAmmo = 15.0f;
 
-// The game's item list (Quake 3's and the mission pack's, which OpenArena ships), by class.
+// The game's item list (Quake 3's and the mission pack's, which OpenArena ships, and Nexuiz's),
+// by class.
 constexpr ItemClass kItems[] = {
-    {"item_armor_shard", {"models/powerups/armor/shard.md3", ""}, kArmour},
-    {"item_armor_combat", {"models/powerups/armor/armor_yel.md3", ""}, kArmour},
-    {"item_armor_body", {"models/powerups/armor/armor_red.md3", ""}, kArmour},
+    {"item_armor_shard",
+     {"models/powerups/armor/shard.md3", ""},
+     kArmour,
+     false,
+     "models/items/g_a1.md3",
+     kNexShort},
+    {"item_armor_combat",
+     {"models/powerups/armor/armor_yel.md3", ""},
+     kArmour,
+     false,
+     "models/items/g_armormedium.md3",
+     kNexMedium},
+    {"item_armor_body",
+     {"models/powerups/armor/armor_red.md3", ""},
+     kArmour,
+     false,
+     "models/items/g_a25.md3",
+     kNexMedium},
     {"item_health_small",
      {"models/powerups/health/small_cross.md3", "models/powerups/health/small_sphere.md3"},
-     kHealth},
+     kHealth,
+     false,
+     "models/items/g_h1.md3",
+     kNexShort},
     {"item_health",
      {"models/powerups/health/medium_cross.md3", "models/powerups/health/medium_sphere.md3"},
-     kHealth},
+     kHealth,
+     false,
+     "models/items/g_h25.md3",
+     kNexMedium},
     {"item_health_large",
      {"models/powerups/health/large_cross.md3", "models/powerups/health/large_sphere.md3"},
-     kHealth},
+     kHealth,
+     false,
+     "models/items/g_h50.md3",
+     kNexLong},
     {"item_health_mega",
      {"models/powerups/health/mega_cross.md3", "models/powerups/health/mega_sphere.md3"},
-     kHealth},
+     kHealth,
+     false,
+     "models/items/g_h100.md3",
+     kNexLong},
     {"weapon_gauntlet", {"models/weapons2/gauntlet/gauntlet.md3", ""}, kWeapon, true},
-    {"weapon_shotgun", {"models/weapons2/shotgun/shotgun.md3", ""}, kWeapon, true},
-    {"weapon_machinegun", {"models/weapons2/machinegun/machinegun.md3", ""}, kWeapon, true},
-    {"weapon_grenadelauncher", {"models/weapons2/grenadel/grenadel.md3", ""}, kWeapon, true},
-    {"weapon_rocketlauncher", {"models/weapons2/rocketl/rocketl.md3", ""}, kWeapon, true},
-    {"weapon_lightning", {"models/weapons2/lightning/lightning.md3", ""}, kWeapon, true},
-    {"weapon_railgun", {"models/weapons2/railgun/railgun.md3", ""}, kWeapon, true},
-    {"weapon_plasmagun", {"models/weapons2/plasma/plasma.md3", ""}, kWeapon, true},
+    {"weapon_shotgun",
+     {"models/weapons2/shotgun/shotgun.md3", ""},
+     kWeapon,
+     true,
+     "models/weapons/g_shotgun.md3",
+     kNexWeapon},
+    {"weapon_machinegun",
+     {"models/weapons2/machinegun/machinegun.md3", ""},
+     kWeapon,
+     true,
+     "models/weapons/g_uzi.md3",
+     kNexWeapon},
+    {"weapon_grenadelauncher",
+     {"models/weapons2/grenadel/grenadel.md3", ""},
+     kWeapon,
+     true,
+     "models/weapons/g_gl.md3",
+     kNexWeapon},
+    {"weapon_rocketlauncher",
+     {"models/weapons2/rocketl/rocketl.md3", ""},
+     kWeapon,
+     true,
+     "models/weapons/g_rl.md3",
+     kNexWeapon},
+    {"weapon_lightning",
+     {"models/weapons2/lightning/lightning.md3", ""},
+     kWeapon,
+     true,
+     "models/weapons/g_electro.md3",
+     kNexWeapon},
+    {"weapon_railgun",
+     {"models/weapons2/railgun/railgun.md3", ""},
+     kWeapon,
+     true,
+     "models/weapons/g_nex.md3",
+     kNexWeapon},
+    {"weapon_plasmagun",
+     {"models/weapons2/plasma/plasma.md3", ""},
+     kWeapon,
+     true,
+     "models/weapons/g_hagar.md3",
+     kNexWeapon},
     {"weapon_bfg", {"models/weapons2/bfg/bfg.md3", ""}, kWeapon, true},
     {"weapon_grapplinghook", {"models/weapons2/grapple/grapple.md3", ""}, kWeapon, true},
     {"weapon_nailgun", {"models/weapons/nailgun/nailgun.md3", ""}, kWeapon, true},
     {"weapon_prox_launcher", {"models/weapons/proxmine/proxmine.md3", ""}, kWeapon, true},
     {"weapon_chaingun", {"models/weapons/vulcan/vulcan.md3", ""}, kWeapon, true},
-    {"ammo_shells", {"models/powerups/ammo/shotgunam.md3", ""}, kAmmo},
-    {"ammo_bullets", {"models/powerups/ammo/machinegunam.md3", ""}, kAmmo},
-    {"ammo_grenades", {"models/powerups/ammo/grenadeam.md3", ""}, kAmmo},
-    {"ammo_cells", {"models/powerups/ammo/plasmaam.md3", ""}, kAmmo},
+    {"ammo_shells",
+     {"models/powerups/ammo/shotgunam.md3", ""},
+     kAmmo,
+     false,
+     "models/items/a_shells.md3",
+     kNexAmmo},
+    {"ammo_bullets",
+     {"models/powerups/ammo/machinegunam.md3", ""},
+     kAmmo,
+     false,
+     "models/items/a_bullets.md3",
+     kNexAmmo},
+    {"ammo_grenades",
+     {"models/powerups/ammo/grenadeam.md3", ""},
+     kAmmo,
+     false,
+     "models/items/a_rockets.md3",
+     kNexAmmo},
+    {"ammo_cells",
+     {"models/powerups/ammo/plasmaam.md3", ""},
+     kAmmo,
+     false,
+     "models/items/a_cells.md3",
+     kNexAmmo},
     {"ammo_lightning", {"models/powerups/ammo/lightningam.md3", ""}, kAmmo},
-    {"ammo_rockets", {"models/powerups/ammo/rocketam.md3", ""}, kAmmo},
-    {"ammo_slugs", {"models/powerups/ammo/railgunam.md3", ""}, kAmmo},
+    {"ammo_rockets",
+     {"models/powerups/ammo/rocketam.md3", ""},
+     kAmmo,
+     false,
+     "models/items/a_rockets.md3",
+     kNexAmmo},
+    {"ammo_slugs",
+     {"models/powerups/ammo/railgunam.md3", ""},
+     kAmmo,
+     false,
+     "models/items/a_cells.md3",
+     kNexAmmo},
     {"ammo_bfg", {"models/powerups/ammo/bfgam.md3", ""}, kAmmo},
     {"ammo_nails", {"models/powerups/ammo/nailgunam.md3", ""}, kAmmo},
     {"ammo_mines", {"models/powerups/ammo/proxmineam.md3", ""}, kAmmo},
@@ -64,7 +161,10 @@ constexpr ItemClass kItems[] = {
     {"holdable_invulnerability", {"models/powerups/holdable/invulnerability.md3", ""}, kHoldable},
     {"item_quad",
      {"models/powerups/instant/quad.md3", "models/powerups/instant/quad_ring.md3"},
-     kPowerup},
+     kPowerup,
+     false,
+     "models/items/g_strength.md3",
+     kNexPowerup},
     {"item_enviro",
      {"models/powerups/instant/enviro.md3", "models/powerups/instant/enviro_ring.md3"},
      kPowerup},
@@ -84,6 +184,38 @@ constexpr ItemClass kItems[] = {
     {"item_guard", {"models/powerups/guard.md3", ""}, kPowerup},
     {"item_doubler", {"models/powerups/doubler.md3", ""}, kPowerup},
     {"item_ammoregen", {"models/powerups/ammo.md3", ""}, kPowerup},
+    // Nexuiz's own classes (its models under models/items and models/weapons/g_*). The Quake 3
+    // classes above that a Nexuiz map places take the Nexuiz model named with them.
+    {"item_armor1", {}, 0.0f, false, "models/items/g_a1.md3", kNexShort},
+    {"item_armor25", {}, 0.0f, false, "models/items/g_a25.md3", kNexMedium},
+    {"item_armor_medium", {}, 0.0f, false, "models/items/g_armormedium.md3", kNexMedium},
+    {"item_armor_large", {}, 0.0f, false, "models/items/g_a50.md3", kNexLong},
+    {"item_health1", {}, 0.0f, false, "models/items/g_h1.md3", kNexShort},
+    {"item_health25", {}, 0.0f, false, "models/items/g_h25.md3", kNexMedium},
+    {"item_health50", {}, 0.0f, false, "models/items/g_h50.md3", kNexLong},
+    {"item_health100", {}, 0.0f, false, "models/items/g_h100.md3", kNexLong},
+    {"item_bullets", {}, 0.0f, false, "models/items/a_bullets.md3", kNexAmmo},
+    {"item_cells", {}, 0.0f, false, "models/items/a_cells.md3", kNexAmmo},
+    {"item_rockets", {}, 0.0f, false, "models/items/a_rockets.md3", kNexAmmo},
+    {"item_shells", {}, 0.0f, false, "models/items/a_shells.md3", kNexAmmo},
+    {"item_fuel", {}, 0.0f, false, "models/items/g_fuel.md3", kNexAmmo},
+    {"item_fuel_regen", {}, 0.0f, false, "models/items/g_fuelregen.md3", kNexPowerup},
+    {"item_jetpack", {}, 0.0f, false, "models/items/g_jetpack.md3", kNexPowerup},
+    {"item_strength", {}, 0.0f, false, "models/items/g_strength.md3", kNexPowerup},
+    {"item_invincible", {}, 0.0f, false, "models/items/g_invincible.md3", kNexPowerup},
+    {"weapon_laser", {}, 0.0f, false, "models/weapons/g_laser.md3", kNexWeapon},
+    {"weapon_uzi", {}, 0.0f, false, "models/weapons/g_uzi.md3", kNexWeapon},
+    {"weapon_electro", {}, 0.0f, false, "models/weapons/g_electro.md3", kNexWeapon},
+    {"weapon_crylink", {}, 0.0f, false, "models/weapons/g_crylink.md3", kNexWeapon},
+    {"weapon_nex", {}, 0.0f, false, "models/weapons/g_nex.md3", kNexWeapon},
+    {"weapon_minstanex", {}, 0.0f, false, "models/weapons/g_minstanex.md3", kNexWeapon},
+    {"weapon_hagar", {}, 0.0f, false, "models/weapons/g_hagar.md3", kNexWeapon},
+    {"weapon_porto", {}, 0.0f, false, "models/weapons/g_porto.md3", kNexWeapon},
+    {"weapon_hook", {}, 0.0f, false, "models/weapons/g_hookgun.md3", kNexWeapon},
+    {"weapon_hlac", {}, 0.0f, false, "models/weapons/g_hlac.md3", kNexWeapon},
+    {"weapon_campingrifle", {}, 0.0f, false, "models/weapons/g_campingrifle.md3", kNexWeapon},
+    {"weapon_fireball", {}, 0.0f, false, "models/weapons/g_fireball.md3", kNexWeapon},
+    {"weapon_tuba", {}, 0.0f, false, "models/weapons/g_tuba.md3", kNexWeapon},
 };
 
 // Whether an entity class is a pickup the list may hold (the game's prefixes).
@@ -94,13 +226,14 @@ bool looksLikeItem(const std::string& classname) {
 }
 
 // A model's frame 0 surfaces as meshes in the level's space (metres, Y up), about the item's
-// origin: weapons 1.5x about their bounds' midpoint (cgame's CG_Item).
+// origin: a Quake 3 weapon 1.5x about its bounds' midpoint (cgame's CG_Item).
 std::vector<MeshInstance> itemMeshes(
-    const Md3Model& model, const ItemClass& item,
+    const Md3Model& model, bool quake3Weapon,
     const std::function<uint32_t(const std::string&)>& materialOf) {
     const Md3FrameInfo& frame = model.frames.front();
-    const glm::vec3 pivot = item.weapon ? 0.5f * (frame.boundsMin + frame.boundsMax) : glm::vec3(0);
-    const float scale = item.weapon ? 1.5f : 1.0f;
+    const glm::vec3 pivot =
+        quake3Weapon ? 0.5f * (frame.boundsMin + frame.boundsMax) : glm::vec3(0);
+    const float scale = quake3Weapon ? 1.5f : 1.0f;
     std::vector<MeshInstance> meshes;
     for (const Md3Surface& surface : model.surfaces) {
         if (surface.vertexCount == 0 || surface.indices.empty()) continue;
@@ -164,9 +297,17 @@ void addItems(SourceLevel& level, const std::vector<MapEntity>& entities, const 
             ++notFree;
             continue;
         }
+        // Quake 3's models where the archives hold them, else Nexuiz's.
+        const bool quake3 = !item->models[0].empty() && files.has(std::string(item->models[0]));
+        std::vector<std::string_view> paths;
+        if (quake3 || item->nexuizModel.empty()) {
+            for (std::string_view path : item->models)
+                if (!path.empty()) paths.push_back(path);
+        } else {
+            paths.push_back(item->nexuizModel);
+        }
         std::vector<MeshInstance> meshes;
-        for (std::string_view path : item->models) {
-            if (path.empty()) continue;
+        for (std::string_view path : paths) {
             const std::string name(path);
             auto found = models.find(name);
             if (found == models.end()) {
@@ -175,7 +316,7 @@ void addItems(SourceLevel& level, const std::vector<MapEntity>& entities, const 
                     files.read(name, kMaxModelBytes, "a model");
                 if (bytes) {
                     const Md3Model model = parseMd3(*bytes, files.where(name));
-                    loaded = itemMeshes(model, *item, materialOf);
+                    loaded = itemMeshes(model, quake3 && item->weapon, materialOf);
                 } else {
                     missing.insert(name);
                 }
@@ -191,7 +332,8 @@ void addItems(SourceLevel& level, const std::vector<MapEntity>& entities, const 
         entity.position = levelPoint(vectorKey(e, "origin", glm::vec3(0.0f), where));
         // "wait": seconds before it comes back (-1: never), else the class's default.
         entity.itemRespawn = numberKey(e, "wait", 0.0f, where);
-        if (entity.itemRespawn == 0.0f) entity.itemRespawn = item->respawnSeconds;
+        if (entity.itemRespawn == 0.0f)
+            entity.itemRespawn = quake3 ? item->respawnSeconds : item->nexuizRespawnSeconds;
         if (entity.itemRespawn < 0.0f) entity.itemRespawn = -1.0f;
         level.entities.push_back(entity);
         for (MeshInstance& mesh : meshes) {

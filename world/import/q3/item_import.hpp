@@ -17,13 +17,17 @@
 
 namespace onelight::world::q3 {
 
-/// An item class of Quake 3 and OpenArena (the game's item list): its world models (one or two:
-/// health's cross and sphere, a powerup's body and ring) and how long it stays taken.
+/// An item class of Quake 3 and OpenArena (the game's item list) or Nexuiz: its world models
+/// and how long it stays taken, per game. A map takes the Quake 3 models when its archives hold
+/// them, else the Nexuiz one.
 struct ItemClass {
     std::string_view classname;
-    std::array<std::string_view, 2> models;  // the second may be empty
+    std::array<std::string_view, 2> models;  // Quake 3's (one or two: health's cross and
+                                             // sphere, a powerup's body and ring), or none
     float respawnSeconds = 0.0f;             // Quake 3's defaults (g_items.c, FFA)
-    bool weapon = false;  // drawn 1.5x, turning about its model's midpoint (cgame's CG_Item)
+    bool weapon = false;  // Quake 3 draws it 1.5x, turning about its midpoint (CG_Item)
+    std::string_view nexuizModel = {};  // Nexuiz's world model, or none
+    float nexuizRespawnSeconds = 0.0f;  // Nexuiz's balance.cfg g_pickup_respawntime_*
 };
 
 /// The class named `classname` (case as the entity lump writes it), or nullptr.
