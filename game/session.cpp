@@ -80,6 +80,9 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
                 item.respawnSeconds = -1.0f;
             }
             s.registry.get<Transform>(entity).position = item.rest;
+            DynamicLighting& lit = s.registry.get<DynamicLighting>(entity);
+            lit.fixedOrigin = true;
+            lit.origin = item.rest;
             s.registry.emplace<Item>(entity, item);
         }
     }

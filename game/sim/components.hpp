@@ -66,6 +66,11 @@ struct DynamicLighting {
     // 1 - primaryWeight(), and when the new one started to take over (seconds).
     uint32_t fadingFrom = world::kNoIndex;
     double fadeStart = 0.0;
+    // Where its primary is picked from when that is not where it is drawn: an item's rest (its
+    // bob is for show; picked at the bobbing origin, an item on a boundary switched lights with
+    // every bob).
+    bool fixedOrigin = false;
+    glm::vec3 origin{0.0f};
 };
 
 // The weight of a dynamic object's primary at `seconds` (its old primary's is 1 - this): from 0

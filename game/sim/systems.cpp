@@ -212,7 +212,8 @@ void primarySelectionSystem(ecs::Registry& registry, const ecs::Tick& tick,
         const uint32_t before = lit.pick.primary;
         const float weight = primaryWeight(lit, now);  // of `before`, were it to switch now
         if (weight >= 1.0f) lit.fadingFrom = world::kNoIndex;
-        world::updateDynamicPrimary(lit.pick, transform.position, candidates, score);
+        world::updateDynamicPrimary(lit.pick, lit.fixedOrigin ? lit.origin : transform.position,
+                                    candidates, score);
         if (lit.pick.primary == before || before == world::kNoIndex) continue;
         if (lit.pick.primary == lit.fadingFrom) {
             // Back to the light it was leaving: the fade turns round where it stood.

@@ -250,3 +250,36 @@ TEST(GameSim, APrimarySwitchCrossFadesAndTurnsRoundWithoutAJump) {
     EXPECT_EQ(lit.fadingFrom, world::kNoIndex);
     EXPECT_FLOAT_EQ(primaryWeight(lit, (back + 60) * dt), 1.0f);
 }
+
+// An object lit from a fixed origin (an item's rest: its bob is for show) keeps its pick while
+// what is drawn moves across a boundary between two lights.
+TEST(GameSim, AFixedLightingOriginKeepsThePickWhereverTheObjectIsDrawn) {
+    ecs::Registry r;
+    ecs::Entity item = r.create();
+    r.emplace<Transform>(item, Transform{{-0.05f, 0, 0}});
+    DynamicLighting fixed;
+    fixed.fixedOrigin = true;
+    fixed.origin = {-0.05f, 0, 0};
+    r.emplace<DynamicLighting>(item, fixed);
+    const uint32_t lights[] = {0, 1};
+    world::PrimaryScore score = [](uint32_t light, glm::vec3 p) {
+        return light == 0 ? std::exp(-p.x) : std::exp(p.x);
+    };
+    for (uint64_t t = 0; t < 600; ++t) {
+        // Drawn swinging 30 cm either side of the boundary at x = 0.
+        r.get<Transform>(item).position.x = 0.3f * std::sin(0.1f * float(t));
+        primarySelectionSystem(r, ecs::Tick{t}, lights, score);
+        ASSERT_EQ(r.get<DynamicLighting>(item).pick.primary, 0u) << "tick " << t;
+    }
+    // Picked where it is drawn instead, the same swing switches it.
+    r.get<DynamicLighting>(item).fixedOrigin = false;
+    int switches = 0;
+    uint32_t last = 0;
+    for (uint64_t t = 600; t < 1200; ++t) {
+        r.get<Transform>(item).position.x = 0.3f * std::sin(0.1f * float(t));
+        primarySelectionSystem(r, ecs::Tick{t}, lights, score);
+        switches += r.get<DynamicLighting>(item).pick.primary != last;
+        last = r.get<DynamicLighting>(item).pick.primary;
+    }
+    EXPECT_GT(switches, 2);
+}
