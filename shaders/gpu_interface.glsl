@@ -150,8 +150,16 @@ struct GpuMaterial {
 };
 
 // A dynamic object's baked lighting: the light grid sampled at its origin.
+// A dynamic object's baked lighting. One longer than a grid cell takes up to MAX_OBJECT_SAMPLES
+// samples, evenly along its longest axis from end to end, and a pixel mixes the two it lies
+// between; a shorter one the one at its origin.
+const uint MAX_OBJECT_SAMPLES = 5u;
 struct GpuObjectLighting {
-    vec4 ambientCube[6];  // rgb lux facing +x -x +y -y +z -z; [0].w baked visibility of the primary
+    vec4 from;  // xyz world metres: the axis's start; w the samples along it (1: the origin's)
+    vec4 axis;  // xyz (to - from) / |to - from|^2 (zero for one sample)
+    vec4 ambientCube[MAX_OBJECT_SAMPLES * 6u];  // sample s's faces at 6 s .. 6 s + 5: rgb lux
+                                                // facing +x -x +y -y +z -z; [6 s].w the baked
+                                                // visibility of the primary there
 };
 
 // An environment probe (runtime/render/probe_records.hpp; shaders/probe.glsl for the rules).

@@ -333,24 +333,62 @@ void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
 }
 
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                         const FrameView& view, const DrawList& list, GpuObjectLighting* out) {
+                         const SceneGeometry& geometry, const FrameView& view, const DrawList& list,
+                         GpuObjectLighting* out) {
     const bool useGrid = baked.present && !baked.grid.cells.empty();
+    // Each entity's object-space bounds, over its meshes.
+    std::vector<glm::vec3> lo(level.entities.size(), glm::vec3(1e30f)),
+        hi(level.entities.size(), glm::vec3(-1e30f));
+    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
+        lo[mesh.entity] = glm::min(lo[mesh.entity], mesh.boundsMin);
+        hi[mesh.entity] = glm::max(hi[mesh.entity], mesh.boundsMax);
+    }
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
         GpuObjectLighting o{};
+        o.from = glm::vec4(glm::vec3(view.entityTransforms[e][3]), 1.0f);
         if (!useGrid) {  // the placeholder textures' neutral values: the ambient, visible
-            for (glm::vec4& face : o.ambientCube)
-                face = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
+            for (size_t f = 0; f < 6; ++f)
+                o.ambientCube[f] = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
             o.ambientCube[0].w = 1.0f;
             out[e] = o;
             continue;
         }
-        const world::LightGridSample sample =
-            world::sampleLightGrid(baked.grid, glm::vec3(view.entityTransforms[e][3]));
-        for (size_t f = 0; f < 6; ++f) o.ambientCube[f] = glm::vec4(sample.ambientCube[f], 0.0f);
+        const glm::mat4& m = view.entityTransforms[e];
         const uint32_t primary = view.entityPrimary[e];
-        o.ambientCube[0].w =
-            primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
+        auto sampleAt = [&](glm::vec3 point, uint32_t s) {
+            const world::LightGridSample sample = world::sampleLightGrid(baked.grid, point);
+            for (size_t f = 0; f < 6; ++f)
+                o.ambientCube[6 * s + f] = glm::vec4(sample.ambientCube[f], 0.0f);
+            o.ambientCube[6 * s].w =
+                primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
+        };
+        // The longest axis of its bounds, in the world: samples a grid cell or less apart along
+        // it, end to end (at most MAX_OBJECT_SAMPLES), when it is longer than a cell's smallest
+        // side; else one at its origin.
+        glm::vec3 from(m[3]), to(m[3]);
+        if (lo[e].x <= hi[e].x) {
+            const glm::vec3 centre = 0.5f * (lo[e] + hi[e]), half = 0.5f * (hi[e] - lo[e]);
+            const int k = half.x >= half.y && half.x >= half.z ? 0 : half.y >= half.z ? 1 : 2;
+            glm::vec3 along(0.0f);
+            along[k] = half[k];
+            from = glm::vec3(m * glm::vec4(centre - along, 1.0f));
+            to = glm::vec3(m * glm::vec4(centre + along, 1.0f));
+        }
+        const glm::vec3 d = to - from;
+        const float length = glm::length(d);
+        const float cell =
+            std::min({baked.grid.cellSize.x, baked.grid.cellSize.y, baked.grid.cellSize.z});
+        if (length > cell) {
+            const uint32_t samples = std::min(uint32_t(std::ceil(length / cell)) + 1u,
+                                              uint32_t(glsl::MAX_OBJECT_SAMPLES));
+            for (uint32_t s = 0; s < samples; ++s)
+                sampleAt(from + d * (float(s) / float(samples - 1)), s);
+            o.from = glm::vec4(from, float(samples));
+            o.axis = glm::vec4(d / (length * length), 0.0f);
+        } else {
+            sampleAt(glm::vec3(m[3]), 0);
+        }
         out[e] = o;
     }
 }

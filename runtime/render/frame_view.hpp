@@ -77,9 +77,12 @@ struct DrawList {
                                       const RendererOptions& options, size_t entityCount,
                                       uint32_t shadowedLight);
 
-/// The grid's lighting of every visible dynamic object, into `out` (one record per entity).
+/// The grid's lighting of every visible dynamic object, into `out` (one record per entity): at
+/// its origin, or for an object longer than a grid cell at up to MAX_OBJECT_SAMPLES points along
+/// its bounds' longest axis (GpuObjectLighting).
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                         const FrameView& view, const DrawList& list, GpuObjectLighting* out);
+                         const SceneGeometry& geometry, const FrameView& view, const DrawList& list,
+                         GpuObjectLighting* out);
 
 /// The frame's uniforms: camera, exposure, shadow and baked parameters, effect lights.
 [[nodiscard]] FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options,

@@ -92,7 +92,7 @@ FrameStats drawList(RendererState& s, const FrameInputs& inputs, const FrameOutp
     const Scene& scene = s.scene;
     const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
     FrameSlot& slot = s.frames.slots[slotIndex];
-    writeObjectLighting(scene.level, scene.baked, view, list,
+    writeObjectLighting(scene.level, scene.baked, scene.geometry, view, list,
                         static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
     const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
     std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));

@@ -652,6 +652,97 @@ TEST(RenderBaked, APrimarySwitchCrossFadesLinearlyBetweenTheTwoLights) {
     EXPECT_EQ(ctx.validationCounts.errors.load(), 0u);
 }
 
+// A dynamic bar 6 m long, longer than a grid cell, takes its secondary light from grid samples
+// along its long axis (MAX_OBJECT_SAMPLES, end to end), a pixel mixing the two it lies between.
+// Against the grid sampled at each pixel's own point (what a long object should get), along its
+// top face the rendered radiance is closer than the one sample at its origin was, and it is what
+// the samples give (within 2%: the RGBA16F target against the mix computed here).
+TEST(RenderBaked, ALongDynamicObjectTakesItsLightAlongItsLength) {
+    test::Scene scene = bakedScene();
+    scene.lights[1].role = nullptr;  // a second primary: the secondary light varies more
+    // The bar's vertices are in the world (its node at the origin): from (-3, 0.3, -4.4) to
+    // (3, 0.7, -3.6), its long axis from (-3, 0.5, -4) to (3, 0.5, -4).
+    test::addBox(scene, {-3.0f, 0.3f, -4.4f}, {3.0f, 0.7f, -3.6f}, 2, true);
+    const assets::LoadedLevel level = bake("baked_long", scene);
+    uint32_t bar = world::kNoIndex, box = world::kNoIndex;
+    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
+        if (level.level.entities[e].flags & world::kEntityDynamic) {
+            box = bar == world::kNoIndex ? box : bar;
+            bar = e;  // the last one: the bar
+        }
+    ASSERT_NE(bar, world::kNoIndex);
+    const render::Camera camera = render::cameraFromYawPitch({0.0f, 6.0f, 1.0f}, 0.0f, -45.0f);
+    render::RenderDeviceFeatures features;
+    vk::Context ctx;
+    vk::createContext(ctx, render::renderContextOptions(features, {}));
+    {
+        render::Renderer renderer;
+        render::createRenderer(renderer, ctx, level, options(40.0f, 8.0f));
+        // The small box out of the way; no primary: the secondary alone.
+        std::vector<render::DynamicTransform> transforms = {
+            {bar, glm::mat4(1.0f), world::kNoIndex}};
+        if (box != world::kNoIndex)
+            transforms.push_back(
+                {box, glm::translate(glm::mat4(1.0f), {4.0f, 0.3f, 3.0f}), world::kNoIndex});
+        render::FrameInputs inputs;
+        inputs.camera = camera;
+        inputs.dynamicTransforms = transforms;
+        render::FrameOutput output;
+        output.readback = true;
+        render::drawFrame(renderer, inputs, output);
+        const render::CapturedFrame& frame = render::capturedFrame(renderer);
+        const world::LightGrid& grid = level.baked.grid;
+        auto upAt = [&](glm::vec3 p) { return world::sampleLightGrid(grid, p).ambientCube[2]; };
+        const uint32_t samples = glsl::MAX_OBJECT_SAMPLES;  // 6 m: more than the cap of cells
+        ASSERT_LE(grid.cellSize.x, 6.0f / float(samples - 1));
+        std::vector<glm::vec3> along;
+        for (uint32_t k = 0; k < samples; ++k)
+            along.push_back(upAt({-3.0f + 6.0f * float(k) / float(samples - 1), 0.5f, -4.0f}));
+        auto mixed = [&](float t) {
+            const float x = t * float(samples - 1);
+            const uint32_t k = std::min(uint32_t(x), samples - 2);
+            return glm::mix(along[k], along[k + 1], x - float(k));
+        };
+        const glm::vec3 origin = upAt({0.0f, 0.5f, -4.0f});
+        const uint32_t material =
+            level.level.dynamicMeshes.at(level.level.entities[bar].firstDynamicMesh).material;
+        float worstSamples = 0.0f, worstOne = 0.0f;
+        for (const float aim : {0.1f, 0.3f, 0.5f, 0.7f, 0.9f}) {
+            const glm::uvec2 px = floorPixelNear(camera, {-3.0f + 6.0f * aim, 0.7f, -4.0f});
+            // Where the pixel's centre meets the top face (y = 0.7), and how far along it is.
+            const Ray r = pixelRay(camera, float(px.x) + 0.5f, float(px.y) + 0.5f);
+            const glm::vec3 top = r.origin + ((0.7f - r.origin.y) / r.direction.y) * r.direction;
+            const float t = (top.x + 3.0f) / 6.0f;
+            const size_t at = (size_t(px.y) * kWidth + px.x) * 4;
+            const glm::vec3 rendered(frame.linearRgba[at], frame.linearRgba[at + 1],
+                                     frame.linearRgba[at + 2]);
+            auto radianceOf = [&](glm::vec3 up) {
+                return lambertRadiance(level.level, material, world::kNoIndex, 0.0f, up, top, kUp,
+                                       camera.position);
+            };
+            const glm::vec3 samplesGive = radianceOf(mixed(t));
+            const glm::vec3 reference = radianceOf(upAt({top.x, 0.5f, -4.0f}));
+            const glm::vec3 oneSample = radianceOf(origin);
+            EXPECT_LT(relativeError(rendered, samplesGive, 1e-4), 0.02) << "t " << t;
+            worstSamples = std::max(worstSamples, float(relativeError(rendered, reference, 1e-4)));
+            worstOne = std::max(worstOne, float(relativeError(oneSample, reference, 1e-4)));
+            std::printf(
+                "[ long ] t %.1f: rendered %.4g, the samples' mix %.4g, the grid there "
+                "%.4g, one sample %.4g (red)\n",
+                double(t), double(rendered.x), double(samplesGive.x), double(reference.x),
+                double(oneSample.x));
+        }
+        std::printf(
+            "[ long ] worst error against the grid at each pixel: %u samples %.3f, one "
+            "sample %.3f\n",
+            samples, double(worstSamples), double(worstOne));
+        EXPECT_LT(worstSamples, worstOne);
+        render::destroyRenderer(renderer);
+    }
+    vk::destroyContext(ctx);
+    EXPECT_EQ(ctx.validationCounts.errors.load(), 0u);
+}
+
 // A Lambert floor under a uniform sky of radiance L and nothing else sees sky over its whole
 // upper hemisphere: E = pi L, so its radiance is albedo L (closed form; and noise-free, as
 // every path escapes at its first ray). Where the frame shows no geometry it shows the sky, L.

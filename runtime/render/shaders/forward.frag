@@ -107,6 +107,19 @@ float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float view
     return shadow;
 }
 
+// The two samples of a dynamic object's lighting a pixel lies between (their first faces'
+// indices) and its weight towards the second.
+struct ObjectSamples {
+    uint a, b;
+    float t;
+};
+ObjectSamples objectSamples(GpuObjectLighting o) {
+    uint samples = uint(o.from.w);
+    float x = clamp(dot(inWorldPosition - o.from.xyz, o.axis.xyz), 0.0, 1.0) * float(samples - 1u);
+    uint s = min(uint(x), samples > 1u ? samples - 2u : 0u);
+    return ObjectSamples(6u * s, samples > 1u ? 6u * (s + 1u) : 0u, samples > 1u ? x - float(s) : 0.0);
+}
+
 // Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
 // (bilinear), a dynamic object's ambient cube from the light grid, else the constant ambient.
 vec3 secondaryIrradiance(vec3 n) {
@@ -121,8 +134,11 @@ vec3 secondaryIrradiance(vec3 n) {
     }
     if (drawHasObjectLighting()) {
         GpuObjectLighting o = objectLighting[draw.objectLighting];
-        return irradianceAmbientCube(o.ambientCube[0].rgb, o.ambientCube[1].rgb, o.ambientCube[2].rgb,
-                                     o.ambientCube[3].rgb, o.ambientCube[4].rgb, o.ambientCube[5].rgb, n);
+        ObjectSamples k = objectSamples(o);
+        vec3 c[6];
+        for (uint i = 0u; i < 6u; ++i)
+            c[i] = mix(o.ambientCube[k.a + i].rgb, o.ambientCube[k.b + i].rgb, k.t);
+        return irradianceAmbientCube(c[0], c[1], c[2], c[3], c[4], c[5], n);
     }
     return vec3(frame.baked.x);
 }
@@ -133,7 +149,11 @@ float bakedShadow() {
     if (BAKED_LIGHTING == 0) return 1.0;
     if (drawHasLightmap())
         return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
-    if (drawHasObjectLighting()) return objectLighting[draw.objectLighting].ambientCube[0].w;
+    if (drawHasObjectLighting()) {
+        GpuObjectLighting o = objectLighting[draw.objectLighting];
+        ObjectSamples k = objectSamples(o);
+        return mix(o.ambientCube[k.a].w, o.ambientCube[k.b].w, k.t);
+    }
     return 1.0;
 }
 
