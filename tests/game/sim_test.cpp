@@ -172,15 +172,17 @@ TEST(GameSim, FlashlightTogglesAndFollowsReplayOrders) {
 }
 
 // Light 0 dominates for x < 0 and light 1 for x > 0 (equal at x = 0).
+static world::PrimaryScore lightsEitherSideOfX() {
+    return [](uint32_t light, glm::vec3 p) { return light == 0 ? std::exp(-p.x) : std::exp(p.x); };
+}
+
 TEST(GameSim, PrimarySelectionHasHysteresisAtABoundary) {
     ecs::Registry r;
     ecs::Entity crate = r.create();
     r.emplace<Transform>(crate, Transform{{-3, 0, 0}});
     r.emplace<DynamicLighting>(crate);
     const uint32_t lights[] = {0, 1};
-    world::PrimaryScore score = [](uint32_t light, glm::vec3 p) {
-        return light == 0 ? std::exp(-p.x) : std::exp(p.x);
-    };
+    const world::PrimaryScore score = lightsEitherSideOfX();
     primarySelectionSystem(r, ecs::Tick{}, lights, score);
     EXPECT_EQ(r.get<DynamicLighting>(crate).pick.primary, 0u);
     // Jitter across the boundary: +-2 cm moves, each re-evaluated; no flicker.
@@ -218,9 +220,7 @@ TEST(GameSim, APrimarySwitchCrossFadesAndTurnsRoundWithoutAJump) {
     r.emplace<Transform>(crate, Transform{{-3, 0, 0}});
     r.emplace<DynamicLighting>(crate);
     const uint32_t lights[] = {0, 1};
-    world::PrimaryScore score = [](uint32_t light, glm::vec3 p) {
-        return light == 0 ? std::exp(-p.x) : std::exp(p.x);
-    };
+    const world::PrimaryScore score = lightsEitherSideOfX();
     const double dt = 1.0 / 60.0;
     primarySelectionSystem(r, ecs::Tick{0, dt}, lights, score);
     const DynamicLighting& lit = r.get<DynamicLighting>(crate);
@@ -262,9 +262,7 @@ TEST(GameSim, AFixedLightingOriginKeepsThePickWhereverTheObjectIsDrawn) {
     fixed.origin = {-0.05f, 0, 0};
     r.emplace<DynamicLighting>(item, fixed);
     const uint32_t lights[] = {0, 1};
-    world::PrimaryScore score = [](uint32_t light, glm::vec3 p) {
-        return light == 0 ? std::exp(-p.x) : std::exp(p.x);
-    };
+    const world::PrimaryScore score = lightsEitherSideOfX();
     for (uint64_t t = 0; t < 600; ++t) {
         // Drawn swinging 30 cm either side of the boundary at x = 0.
         r.get<Transform>(item).position.x = 0.3f * std::sin(0.1f * float(t));
