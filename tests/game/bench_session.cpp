@@ -46,9 +46,9 @@ int main(int argc, char** argv) {
                 before.push_back(lit.pick.primary);
             const auto start = std::chrono::steady_clock::now();
             game::stepSession(session);
-            ms.push_back(std::chrono::duration<double, std::milli>(
-                             std::chrono::steady_clock::now() - start)
-                             .count());
+            ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
             size_t i = 0;
             for (auto [e, lit] : session.registry.view<game::DynamicLighting>().each())
                 switches += before[i++] != lit.pick.primary && before[i - 1] != world::kNoIndex;
@@ -65,8 +65,9 @@ int main(int argc, char** argv) {
             "items), %zu primary candidates\n",
             argv[1], ticks, seconds, 1.0 / session.tickSeconds, dynamic, items,
             session.primaryCandidates.size());
-        std::printf("  ECS update per tick: median %.3f ms, 95th percentile %.3f ms, mean %.3f ms\n",
-                    ms[ms.size() / 2], ms[ms.size() * 95 / 100], mean);
+        std::printf(
+            "  ECS update per tick: median %.3f ms, 95th percentile %.3f ms, mean %.3f ms\n",
+            ms[ms.size() / 2], ms[ms.size() * 95 / 100], mean);
         std::printf("  primary re-picks: %llu (%.2f per second); items taken: %u\n",
                     static_cast<unsigned long long>(switches), double(switches) / seconds, taken);
         return 0;

@@ -23,9 +23,8 @@ std::string writePlank(const std::string& label, const nlohmann::json& prop, dou
     const int plankMaterial = gltf.addMaterial({{"name", "plank"}});
     MeshData plank = boxMesh("plank", {-2.0f, 0.4f, -0.2f}, {2.0f, 0.5f, 0.2f}, 4, true);
     plank.material = plankMaterial;
-    nlohmann::json node = {{"name", "plank"},
-                           {"mesh", gltf.addMesh(plank)},
-                           {"translation", {centreX, 0.0, 0.0}}};
+    nlohmann::json node = {
+        {"name", "plank"}, {"mesh", gltf.addMesh(plank)}, {"translation", {centreX, 0.0, 0.0}}};
     if (!prop.is_null()) node["extras"] = {{"onelight", {{"prop", prop}}}};
     gltf.addNode(node);
     for (int i = 0; i < 2; ++i) {
