@@ -2,9 +2,6 @@
 // pass, the copies out (readback, swapchain), and the readback itself once the frame is done.
 #include "render/frame_passes.hpp"
 
-#include <cstdio>
-#include <cstdlib>
-
 #include <algorithm>
 
 #include <glm/gtc/packing.hpp>

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <set>
 #include <tuple>
 
@@ -336,13 +335,8 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
                          const SceneGeometry& geometry, const FrameView& view, const DrawList& list,
                          GpuObjectLighting* out) {
     const bool useGrid = baked.present && !baked.grid.cells.empty();
-    // Each entity's object-space bounds, over its meshes.
-    std::vector<glm::vec3> lo(level.entities.size(), glm::vec3(1e30f)),
-        hi(level.entities.size(), glm::vec3(-1e30f));
-    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
-        lo[mesh.entity] = glm::min(lo[mesh.entity], mesh.boundsMin);
-        hi[mesh.entity] = glm::max(hi[mesh.entity], mesh.boundsMax);
-    }
+    const std::vector<glm::vec3>& lo = geometry.entityBoundsMin;
+    const std::vector<glm::vec3>& hi = geometry.entityBoundsMax;
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
         GpuObjectLighting o{};

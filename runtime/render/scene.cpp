@@ -322,6 +322,14 @@ void createGeometry(const vk::Context& ctx, SceneGeometry& geometry,
             geometry.dynamicMeshes.push_back(d);
         }
     }
+    geometry.entityBoundsMin.assign(level.entities.size(), glm::vec3(1e30f));
+    geometry.entityBoundsMax.assign(level.entities.size(), glm::vec3(-1e30f));
+    for (const DrawDynamicMesh& d : geometry.dynamicMeshes) {
+        geometry.entityBoundsMin[d.entity] =
+            glm::min(geometry.entityBoundsMin[d.entity], d.boundsMin);
+        geometry.entityBoundsMax[d.entity] =
+            glm::max(geometry.entityBoundsMax[d.entity], d.boundsMax);
+    }
 }
 
 // The materials' records and the classes, sidedness and alpha mode that pick their permutation.

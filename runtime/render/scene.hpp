@@ -69,6 +69,8 @@ struct SceneGeometry {
     std::vector<DrawSurface> surfaces;
     std::vector<DrawDynamicMesh> dynamicMeshes;
     bool dynamicCasters = false;  // some dynamic mesh casts a runtime shadow
+    // Per entity, object space: the bounds of its dynamic meshes (min > max without any).
+    std::vector<glm::vec3> entityBoundsMin, entityBoundsMax;
 };
 
 /// A material's texture slots (TEXTURE_* of gpu_interface.glsl): view and sampler each.

@@ -33,10 +33,6 @@ struct ItemClass {
 /// The class named `classname` (case as the entity lump writes it), or nullptr.
 [[nodiscard]] const ItemClass* itemClassOf(std::string_view classname);
 
-/// The units a Quake 3 item's box extends each way from its origin (ITEM_RADIUS): what it
-/// drops on, and what the player touches to take it.
-inline constexpr float kItemRadiusUnits = 15.0f;
-
 /// Adds every item of `entities` that a free-for-all game spawns (not "notfree") to `level`:
 /// an entity named CLASSNAME_N (N from 1 in the lump's order, per class) with its models'
 /// meshes, whose surfaces take `materialOf(shader or image name)` (kNoIndex: the surface is
