@@ -11,9 +11,9 @@
 
 #include "world/error.hpp"
 #include "world/import/q3/md3_file.hpp"
+#include "world/import/q3/game_search_path.hpp"
 #include "world/import/q3/md3_format.hpp"
 #include "world/import/q3/pk3_archive.hpp"
-#include "world/import/q3/q3_import.hpp"
 
 namespace onelight::world::q3 {
 namespace {
@@ -155,7 +155,7 @@ TEST(Md3Models, DamageIsRefusedInOneLineNamingThePlace) {
     b = good.bytes;
     count = 100000;
     std::memcpy(&b[offsetof(Md3Header, frameCount)], &count, 4);
-    EXPECT_EQ(errorOf(b), "tri.md3: 100000 frames; expected 1..1024 (Quake 3's limit)");
+    EXPECT_EQ(errorOf(b), "tri.md3: 100000 frames; expected 1..1024 (the games' limit)");
     // A triangle naming a vertex the surface does not have.
     b = good.bytes;
     put(b, good.triangle, Md3Triangle{{0, 1, 3}});
@@ -186,13 +186,15 @@ TEST(Md3Models, DamageIsRefusedInOneLineNamingThePlace) {
 // tools wrote bounds that miss their vertices: a wrong decode (scale, layout) would miss in
 // nearly all. The engine computes its own bounds from the vertices.
 TEST(Md3Models, EveryInstalledModelReadsAndMostKeepInsideTheirFramesBounds) {
-    std::vector<std::string> folders = defaultQuake3Folders();
-    if (folders.empty()) GTEST_SKIP() << "OpenArena is not installed (openarena-data)";
+    // Every installed game's models, each game's files as that game finds them: Nexuiz's too,
+    // whose surfaces pass Quake 3's vertex limit.
+    const std::vector<InstalledGame> games = installedGames();
+    if (games.empty()) GTEST_SKIP() << "OpenArena is not installed (openarena-data)";
     size_t models = 0, triangles = 0, outside = 0;
     std::string firstOutside;
-    for (const std::string& folder : folders) {
+    for (const InstalledGame& game : games) {
         GameFiles files;
-        files.addGameFolder(folder);
+        files.addGameFolder(game.folder);
         for (const auto& [key, file] : files.files) {
             if (key.size() < 4 || key.compare(key.size() - 4, 4, ".md3") != 0) continue;
             const std::vector<uint8_t> bytes = *files.read(key, kMaxModelBytes, "a model");

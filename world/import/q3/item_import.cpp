@@ -186,13 +186,17 @@ constexpr ItemClass kItems[] = {
     {"item_ammoregen", {"models/powerups/ammo.md3", ""}, kPowerup},
     // Nexuiz's own classes (its models under models/items and models/weapons/g_*). The Quake 3
     // classes above that a Nexuiz map places take the Nexuiz model named with them.
-    {"item_armor1", {}, 0.0f, false, "models/items/g_a1.md3", kNexShort},
-    {"item_armor25", {}, 0.0f, false, "models/items/g_a25.md3", kNexMedium},
+    // Its armour and health by size (small, medium, big or large, mega), and the older names it
+    // keeps for them (armor1, armor25, health1, health25, health100).
+    {"item_armor_small", {}, 0.0f, false, "models/items/g_a1.md3", kNexShort},
     {"item_armor_medium", {}, 0.0f, false, "models/items/g_armormedium.md3", kNexMedium},
-    {"item_armor_large", {}, 0.0f, false, "models/items/g_a50.md3", kNexLong},
+    {"item_armor_big", {}, 0.0f, false, "models/items/g_a50.md3", kNexLong},
+    {"item_armor_large", {}, 0.0f, false, "models/items/g_a25.md3", kNexLong},
+    {"item_health_medium", {}, 0.0f, false, "models/items/g_h25.md3", kNexMedium},
+    {"item_armor1", {}, 0.0f, false, "models/items/g_a1.md3", kNexShort},
+    {"item_armor25", {}, 0.0f, false, "models/items/g_a25.md3", kNexLong},
     {"item_health1", {}, 0.0f, false, "models/items/g_h1.md3", kNexShort},
     {"item_health25", {}, 0.0f, false, "models/items/g_h25.md3", kNexMedium},
-    {"item_health50", {}, 0.0f, false, "models/items/g_h50.md3", kNexLong},
     {"item_health100", {}, 0.0f, false, "models/items/g_h100.md3", kNexLong},
     {"item_bullets", {}, 0.0f, false, "models/items/a_bullets.md3", kNexAmmo},
     {"item_cells", {}, 0.0f, false, "models/items/a_cells.md3", kNexAmmo},

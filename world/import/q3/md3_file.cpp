@@ -43,7 +43,7 @@ void checkCount(const std::string& place, const char* what, int32_t count, int32
                 int32_t most) {
     if (count < least || count > most)
         throw Error(place + ": " + std::to_string(count) + " " + what + "; expected " +
-                    std::to_string(least) + ".." + std::to_string(most) + " (Quake 3's limit)");
+                    std::to_string(least) + ".." + std::to_string(most) + " (the games' limit)");
 }
 
 void checkFinite(const std::string& place, const char* what, const float* values, int n) {
