@@ -30,7 +30,7 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
     const world::CompiledLevel& level = loaded.level;
     s.bsp = world::bspView(level);
     if (!level.collision.brushes.empty()) s.tuning = quake3Tuning();
-    s.brushes = makeBrushWorld(level.collision);
+    s.brushes = makeBrushWorld(level.collision, level.movers.movers.size());
     s.world.fallLimitY = level.settings.boundsMin.y - s.tuning.fallMargin;
     for (const world::Entity& e : level.entities)
         if (e.flags & world::kEntitySpawn) {
@@ -61,16 +61,16 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
     s.registry.emplace<Flashlight>(s.player);
     s.registry.emplace<TriggerEvents>(s.player);
 
+    std::vector<ecs::Entity> ecsOf(level.entities.size(), ecs::kNullEntity);
     for (uint32_t i = 0; i < level.entities.size(); ++i) {
         const world::Entity& e = level.entities[i];
         if (!(e.flags & world::kEntityDynamic)) continue;
         ecs::Entity entity = s.registry.create();
+        ecsOf[i] = entity;
         s.registry.emplace<Name>(entity, Name{e.name});
         s.registry.emplace<Transform>(entity, Transform{e.position, e.scale});
         s.registry.emplace<LevelEntity>(entity, LevelEntity{i});
         s.registry.emplace<DynamicLighting>(entity);
-        if (e.flags & world::kEntityMover)
-            s.registry.emplace<Mover>(entity, Mover{e.position, e.moverOffset, e.moverPeriod});
         if (e.flags & world::kEntityItem) {
             Item item{e.position, e.itemRespawn, i};
             // An item whose box starts in a brush is left out, as the game leaves it out.
@@ -86,6 +86,10 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
             s.registry.emplace<Item>(entity, item);
         }
     }
+    std::vector<ecs::Entity> moverEntities;
+    for (const world::Mover& mover : level.movers.movers)
+        moverEntities.push_back(ecsOf[mover.entity]);
+    s.movers = startMovers(level, std::move(moverEntities));
     for (uint32_t i = 0; i < level.lights.size(); ++i) {
         s.lightNames.push_back(level.lights[i].name);
         if (level.lights[i].role == world::LightRole::kPrimary) s.primaryCandidates.push_back(i);
@@ -154,10 +158,10 @@ void stepSession(Session& s) {
     ecs::Tick tick{s.tick++, s.tickSeconds};
     s.world.surfaces = &s.bsp;
     s.world.brushes = s.level->level.collision.brushes.empty() ? nullptr : &s.brushes;
+    moverSystem(s.registry, tick, s.movers, s.brushes, s.tuning, s.world, s.player);
     playerSystem(s.registry, tick, s.input, s.tuning, s.world);
-    triggerSystem(s.registry, s.tuning, s.world);
+    triggerSystem(s.registry, s.tuning, s.world, &s.movers);
     itemSystem(s.registry, tick, s.player);
-    moverSystem(s.registry, tick);
     effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);
     primarySelectionSystem(
         s.registry, tick, s.primaryCandidates,
@@ -206,8 +210,9 @@ render::FrameInputs frameInputsOf(const Session& s,
     for (auto [e, transform, link] : r.view<Transform, LevelEntity>().each()) {
         render::DynamicTransform d;
         d.entity = link.index;
-        d.worldFromObject = world::worldFromObject(s.level->level.entities[link.index],
-                                                   transform.position, transform.yaw);
+        d.worldFromObject = world::worldFromObject(
+            s.level->level.entities[link.index], transform.position,
+            transform.turn * glm::angleAxis(transform.yaw, glm::vec3(0.0f, 1.0f, 0.0f)));
         if (const DynamicLighting* lit = r.tryGet<DynamicLighting>(e)) {
             d.primary = lit->pick.primary;
             d.fadeWeight = primaryWeight(*lit, double(s.tick) * s.tickSeconds);

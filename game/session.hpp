@@ -26,6 +26,7 @@ struct Session {
     world::BspView bsp;                          // collision (glTF levels) and visibility
     BrushWorld brushes;  // a Quake 3 map's collision brushes and triggers (empty otherwise)
     PlayerWorld world;   // what the player moves through; its pointers are set each tick
+    MoverWorld movers;   // the level's movers as they run
     ecs::Registry registry;
     ecs::Entity player = ecs::kNullEntity;
     Tuning tuning;
@@ -45,7 +46,7 @@ struct Session {
 // with quake3Tuning() on them; others with the default tuning on their drawn surfaces.
 void startSession(Session& session, const assets::LoadedLevel& level);
 
-// Runs one fixed tick: player, triggers, items, movers, effect lights, primary selection; then
+// Runs one fixed tick: movers, player, triggers, items, effect lights, primary selection; then
 // clears the tick's one-shot input.
 void stepSession(Session& session);
 

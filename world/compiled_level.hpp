@@ -11,6 +11,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include "world/collision.hpp"
+#include "world/movers.hpp"
 #include "world/gloss_mip_method.hpp"
 #include "world/no_index.hpp"
 
@@ -174,7 +175,7 @@ struct DynamicMesh {
 
 enum EntityFlags : uint32_t {
     kEntityDynamic = 1u << 0,    // owns dynamic meshes, lit by the grid
-    kEntityMover = 1u << 1,      // moves back and forth by moverOffset over moverPeriod
+    kEntityMover = 1u << 1,      // moved by a mover (world/movers.hpp)
     kEntitySpawn = 1u << 2,      // a player spawn point
     kEntityProbe = 1u << 3,      // an environment probe position
     kEntityItem = 1u << 4,       // a pickup: spins and bobs, taken on touch, back after itemRespawn
@@ -191,8 +192,6 @@ struct Entity {
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
     glm::vec3 scale{1.0f};
     uint32_t firstDynamicMesh = 0, dynamicMeshCount = 0;
-    glm::vec3 moverOffset{0.0f};  // metres, world space
-    float moverPeriod = 0.0f;     // seconds for a full back-and-forth; > 0 for movers
     glm::vec3 probeBoxMin{0.0f}, probeBoxMax{0.0f};  // world; empty box = no box projection
     float itemRespawn = 0.0f;  // items: seconds taken before it comes back; < 0 never
 };
@@ -266,6 +265,7 @@ struct CompiledLevel {
     std::vector<Entity> entities;
     Features features;
     LevelCollision collision;  // a Quake 3 map's brushes and triggers; empty for glTF levels
+    LevelMovers movers;        // what moves the movers' entities (kEntityMover)
 };
 
 }  // namespace onelight::world

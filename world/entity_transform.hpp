@@ -24,4 +24,15 @@ namespace onelight::world {
     return m;
 }
 
+/// The same with a general `turn` after e's rotation (a mover's, world/movers.hpp).
+[[nodiscard]] inline glm::mat4 worldFromObject(const Entity& e, glm::vec3 position,
+                                               glm::quat turn) {
+    glm::mat4 m = glm::mat4_cast(glm::normalize(turn * glm::normalize(e.rotation)));
+    m[0] *= e.scale.x;
+    m[1] *= e.scale.y;
+    m[2] *= e.scale.z;
+    m[3] = glm::vec4(position, 1.0f);
+    return m;
+}
+
 }  // namespace onelight::world

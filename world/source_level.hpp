@@ -87,6 +87,7 @@ struct SourceLevel {
     glm::vec3 gridMin{0.0f}, gridMax{0.0f};
     ImportedLightmap importedLightmap;      // the source's own bake, if it carries one
     LevelCollision collision;               // a Quake 3 map's brushes and triggers, as compiled
+    LevelMovers movers;                     // the movers of kEntityMover entities, as compiled
     ImportedVisibility importedVisibility;  // the source's own visible set (q3map2 -vis), if any
     std::vector<std::string> importNotes;   // what the import approximated or ignored, one line
                                             // each; the bake reports them as warnings

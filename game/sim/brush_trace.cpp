@@ -4,9 +4,10 @@
 
 namespace onelight::game {
 
-BrushWorld makeBrushWorld(const world::LevelCollision& collision) {
+BrushWorld makeBrushWorld(const world::LevelCollision& collision, size_t moverCount) {
     BrushWorld w;
     w.collision = &collision;
+    w.moverPoses.resize(moverCount);
     const float inf = std::numeric_limits<float>::infinity();
     for (const world::CollisionBrush& b : collision.brushes) {
         glm::vec3 lo(-inf), hi(inf);
@@ -72,20 +73,58 @@ void traceThroughBrush(const world::LevelCollision& c, const world::CollisionBru
 }  // namespace
 
 BoxTrace traceBox(const BrushWorld& w, glm::vec3 start, glm::vec3 end, glm::vec3 mins,
-                  glm::vec3 maxs, float epsilon) {
+                  glm::vec3 maxs, float epsilon, TraceFilter filter) {
     BoxTrace trace;
     double fraction = 1.0;
     if (w.collision) {
-        const glm::vec3 margin(epsilon);
-        const glm::vec3 lo = glm::min(start, end) + mins - margin;
-        const glm::vec3 hi = glm::max(start, end) + maxs + margin;
         const world::LevelCollision& c = *w.collision;
+        const glm::vec3 margin(epsilon);
+        // The sweep in the space of the brushes met last (the world's, or one mover's).
+        uint32_t space = world::kNoIndex;
+        glm::vec3 from = start, to = end, lo = mins, hi = maxs;
+        glm::quat toWorld(1.0f, 0.0f, 0.0f, 0.0f);
+        glm::vec3 reachMin = glm::min(from, to) + lo - margin;
+        glm::vec3 reachMax = glm::max(from, to) + hi + margin;
         for (size_t b = 0; b < c.brushes.size() && !trace.allSolid; ++b) {
-            if (glm::any(glm::greaterThan(lo, w.brushMax[b])) ||
-                glm::any(glm::lessThan(hi, w.brushMin[b])))
+            const uint32_t mover = c.brushes[b].mover;
+            if (filter.brushes == TraceBrushes::kOneMover && mover != filter.mover) continue;
+            if (filter.brushes == TraceBrushes::kButMover && mover == filter.mover) continue;
+            if (mover != space) {
+                space = mover;
+                from = start, to = end, lo = mins, hi = maxs;
+                toWorld = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+                if (mover != world::kNoIndex && mover < w.moverPoses.size()) {
+                    const BrushPose& pose = w.moverPoses[mover];
+                    toWorld = pose.rotation;
+                    const glm::quat toObject = glm::inverse(pose.rotation);
+                    from = toObject * (start - pose.origin);
+                    to = toObject * (end - pose.origin);
+                    // The box's bounds in the object's space: its centre turned, its half sizes
+                    // by the turn's absolute matrix.
+                    const glm::vec3 centre = 0.5f * (mins + maxs), half = 0.5f * (maxs - mins);
+                    const glm::mat3 r = glm::mat3_cast(toObject);
+                    const glm::vec3 turnedHalf = glm::abs(r[0]) * half.x +
+                                                 glm::abs(r[1]) * half.y + glm::abs(r[2]) * half.z;
+                    const glm::vec3 turnedCentre = toObject * centre;
+                    from += turnedCentre, to += turnedCentre;
+                    lo = -turnedHalf, hi = turnedHalf;
+                }
+                reachMin = glm::min(from, to) + lo - margin;
+                reachMax = glm::max(from, to) + hi + margin;
+            }
+            if (glm::any(glm::greaterThan(reachMin, w.brushMax[b])) ||
+                glm::any(glm::lessThan(reachMax, w.brushMin[b])))
                 continue;
-            traceThroughBrush(c, c.brushes[b], glm::dvec3(start), glm::dvec3(end), glm::dvec3(mins),
-                              glm::dvec3(maxs), double(epsilon), trace, fraction);
+            const double before = fraction;
+            const bool wasStartSolid = trace.startSolid;
+            traceThroughBrush(c, c.brushes[b], glm::dvec3(from), glm::dvec3(to), glm::dvec3(lo),
+                              glm::dvec3(hi), double(epsilon), trace, fraction);
+            if (fraction < before) {
+                trace.normal = toWorld * trace.normal;
+                trace.mover = mover;
+            } else if (trace.startSolid && !wasStartSolid) {
+                trace.mover = mover;
+            }
         }
     }
     trace.fraction = float(fraction);

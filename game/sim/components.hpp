@@ -5,6 +5,7 @@
 #include <string>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "world/dynamic_primary.hpp"
 
@@ -18,6 +19,7 @@ struct Transform {
     glm::vec3 position{0.0f};  // metres, world
     glm::vec3 scale{1.0f};
     float yaw = 0.0f;  // radians about +y, 0 looks down -z
+    glm::quat turn{1.0f, 0.0f, 0.0f, 0.0f};  // a mover's turn (after the yaw), world
 };
 
 // The player: feet position in Transform, view angles here.
@@ -28,6 +30,8 @@ struct Player {
     bool onGround = false;
     bool jumpHeld = false;          // Quake movement: jumped, the key not yet released
     float knockbackSeconds = 0.0f;  // Quake movement: no ground friction for this long
+    uint32_t groundMover = world::kNoIndex;  // Quake movement: the mover it stands on (into the
+                                             // level's movers), which carries it
 };
 
 // What a level's triggers did to the player (game/sim/systems.hpp triggerSystem), counted from
@@ -37,13 +41,6 @@ struct TriggerEvents {
     uint32_t jumpPadLaunches = 0;       // a pad counts once until the player leaves it
     uint32_t respawns = 0;              // by a hurt trigger or by falling below the level
     uint32_t touchingPad = UINT32_MAX;  // the jump pad touched last tick (into the triggers)
-};
-
-// Moves back and forth between `start` and `start + offset`, one round trip per `period`.
-struct Mover {
-    glm::vec3 start{0.0f};
-    glm::vec3 offset{0.0f};
-    float period = 1.0f;  // seconds, > 0
 };
 
 // The one spot effect light, carried by the player (the flashlight).
@@ -68,7 +65,7 @@ struct DynamicLighting {
     double fadeStart = 0.0;
     // Where its primary is picked from when that is not where it is drawn: an item's rest (its
     // bob is for show; picked at the bobbing origin, an item on a boundary switched lights with
-    // every bob).
+    // every bob), a mover's bounds' centre where it is (a door's origin is the map's).
     bool fixedOrigin = false;
     glm::vec3 origin{0.0f};
 };

@@ -40,6 +40,7 @@ void groundTrace(Move& m) {
     const BoxTrace t = m.trace(m.feet, m.feet - glm::vec3(0.0f, m.tuning.groundProbe, 0.0f));
     m.groundPlane = m.walking = false;
     m.player.onGround = false;
+    m.player.groundMover = world::kNoIndex;
     if (t.allSolid || t.fraction == 1.0f) return;  // stuck, or in free fall
     const glm::vec3& v = m.player.velocity;
     // Thrown off the ground (a jump, a jump pad).
@@ -49,6 +50,7 @@ void groundTrace(Move& m) {
     if (t.normal.y < m.tuning.maxSlopeCos) return;  // too steep: slides
     m.walking = true;
     m.player.onGround = true;
+    m.player.groundMover = t.mover;  // PM_GroundTrace's groundEntityNum
 }
 
 void friction(Move& m) {
@@ -191,6 +193,7 @@ void walkMove(Move& m, const MoveIntent& intent, glm::vec3 forward, glm::vec3 ri
     if (intent.jump && !m.player.jumpHeld) {  // PM_CheckJump
         m.groundPlane = m.walking = false;
         m.player.onGround = false;
+        m.player.groundMover = world::kNoIndex;
         m.player.jumpHeld = true;
         m.player.velocity.y = m.tuning.jumpSpeed;
         airMove(m, intent, forward, right);

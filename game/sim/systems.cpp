@@ -114,12 +114,23 @@ void respawn(glm::vec3& feet, Player& player, TriggerEvents* events, const Tunin
     player.pitch = 0.0f;
     player.knockbackSeconds = 0.0f;
     player.onGround = false;
+    player.groundMover = world::kNoIndex;
     if (events) ++events->respawns;
 }
 
 }  // namespace
 
-void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWorld& world) {
+void respawnPlayer(ecs::Registry& registry, ecs::Entity player, const Tuning& tuning,
+                   const PlayerWorld& world) {
+    Transform* body = registry.tryGet<Transform>(player);
+    Player* state = registry.tryGet<Player>(player);
+    if (!body || !state) return;
+    respawn(body->position, *state, registry.tryGet<TriggerEvents>(player), tuning, world);
+    body->yaw = state->yaw;
+}
+
+void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWorld& world,
+                   MoverWorld* movers) {
     const std::vector<world::Trigger>* triggers =
         world.brushes && world.brushes->collision ? &world.brushes->collision->triggers : nullptr;
     for (auto [e, transform, player] : registry.view<Transform, Player>().each()) {
@@ -138,8 +149,12 @@ void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWo
                 if (v == glm::vec3(0.0f)) continue;
                 player.velocity = v;  // BG_TouchJumpPad, every tick it is touched
                 player.onGround = false;
+                player.groundMover = world::kNoIndex;
                 pad = uint32_t(i);
                 if (events && events->touchingPad != pad) ++events->jumpPadLaunches;
+            } else if (t.kind == world::TriggerKind::kUseMover ||
+                       t.kind == world::TriggerKind::kRaisePlat) {
+                if (movers) touchMoverTrigger(*movers, t);
             } else if (t.kind == world::TriggerKind::kTeleport) {
                 feet = t.target;  // TeleportPlayer
                 player.yaw = t.targetYaw;
@@ -147,6 +162,7 @@ void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWo
                 player.velocity = viewDirection(t.targetYaw, 0.0f) * tuning.teleportSpeed;
                 player.knockbackSeconds = tuning.knockbackSeconds;
                 player.onGround = false;
+                player.groundMover = world::kNoIndex;
                 if (events) ++events->teleports;
                 break;
             } else {
@@ -157,16 +173,6 @@ void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWo
         if (events) events->touchingPad = pad;
         if (feet.y < world.fallLimitY) respawn(feet, player, events, tuning, world);
         transform.yaw = player.yaw;
-    }
-}
-
-void moverSystem(ecs::Registry& registry, const ecs::Tick& tick) {
-    double t = tick.time();
-    for (auto [e, transform, mover] : registry.view<Transform, Mover>().each()) {
-        // A triangle wave from 0 to 1 and back over one period.
-        double phase = std::fmod(t / double(mover.period), 1.0);
-        float s = float(phase < 0.5 ? 2.0 * phase : 2.0 - 2.0 * phase);
-        transform.position = mover.start + mover.offset * s;
     }
 }
 

@@ -1,5 +1,6 @@
 // The demo game's systems: free functions over the registry, run once per fixed tick in the
-// order stepSession calls them (player, triggers, movers, effect lights, primary selection).
+// order stepSession calls them (movers, player, triggers, items, effect lights, primary
+// selection; the movers' own system is movers.hpp's).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include "ecs/registry.hpp"
 #include "ecs/schedule.hpp"
 #include "input.hpp"
+#include "movers.hpp"
 #include "tuning.hpp"
 #include "world/bsp/bsp_query.hpp"
 
@@ -53,18 +55,22 @@ void playerSystem(ecs::Registry& registry, const ecs::Tick& tick, const InputSta
 
 // After the move: the triggers the player's box overlaps act (a jump pad launches it to reach
 // its target at the apex, Quake 3's AimAtTarget; a teleporter sends it to its destination
-// facing its yaw at tuning.teleportSpeed; a hurt trigger respawns it), and a player whose feet
-// fell below world.fallLimitY respawns. Counts each in TriggerEvents when the player has one.
-void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWorld& world);
+// facing its yaw at tuning.teleportSpeed; a hurt trigger respawns it; a door's, button's or
+// plat's trigger asks `movers` for a use, when there are movers), and a player whose feet fell
+// below world.fallLimitY respawns. Counts each in TriggerEvents when the player has one.
+void triggerSystem(ecs::Registry& registry, const Tuning& tuning, const PlayerWorld& world,
+                   MoverWorld* movers = nullptr);
+
+// Puts `player` at the next of world.spawns (in turn), still, facing the spawn's yaw, and counts
+// the respawn in its TriggerEvents; nothing when the world has no spawn.
+void respawnPlayer(ecs::Registry& registry, ecs::Entity player, const Tuning& tuning,
+                   const PlayerWorld& world);
 
 // The launch velocity of a jump pad whose box is centred at `centre` aiming at `target`, under
 // `gravity` (Quake 3's AimAtTarget, g_trigger.c): time = sqrt(height / (gravity / 2)),
 // horizontal speed = distance / time, vertical = time * gravity. Zero when the target is not
 // above the centre.
 [[nodiscard]] glm::vec3 jumpPadVelocity(glm::vec3 centre, glm::vec3 target, float gravity);
-
-// Places every mover on its back-and-forth path at this tick's time (a pure function of time).
-void moverSystem(ecs::Registry& registry, const ecs::Tick& tick);
 
 // The flashlight toggle and the gun flashes: a shot spawns one in front of the eye; flashes die
 // after tuning.gunFlashSeconds; beyond tuning.maxGunFlashes the oldest gives way.

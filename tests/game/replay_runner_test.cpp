@@ -11,10 +11,31 @@ namespace {
 
 // A tiny game: a player and a crate that moves from x = -5 to x = +5 and back every 4 s; light
 // 0 ("sun") wins for x < 0, light 1 ("lamp") for x > 0.
+// A level of one entity, the crate, shuttling from `from` by `offset` and back every `period`.
+world::CompiledLevel shuttleLevel(glm::vec3 from, glm::vec3 offset, float period) {
+    world::CompiledLevel level;
+    world::Entity crate;
+    crate.name = "crate_1";
+    crate.flags = world::kEntityDynamic | world::kEntityMover;
+    crate.position = from;
+    level.entities.push_back(crate);
+    world::Mover shuttle;
+    shuttle.entity = 0;
+    shuttle.pos1 = from;
+    shuttle.pos2 = from + offset;
+    shuttle.period = period;
+    level.movers.movers.push_back(shuttle);
+    return level;
+}
+
 struct MiniGame {
+    world::CompiledLevel level = shuttleLevel({-5, 0, 0}, {10, 0, 0}, 4.0f);
     ecs::Registry registry;
     ecs::Entity player = registry.create();
     ecs::Entity crate = registry.create();
+    MoverWorld movers;
+    BrushWorld brushes;
+    PlayerWorld world;
     Tuning tuning;
     InputState input;
     uint64_t shots = 0;
@@ -27,8 +48,8 @@ struct MiniGame {
         registry.emplace<Flashlight>(player);
         registry.emplace<Name>(crate, Name{"crate_1"});
         registry.emplace<Transform>(crate);
-        registry.emplace<Mover>(crate, Mover{{-5, 0, 0}, {10, 0, 0}, 4.0f});
         registry.emplace<DynamicLighting>(crate);
+        movers = startMovers(level, {crate});
     }
 
     // Runs the script to its end; returns the captures requested, with their ticks.
@@ -44,7 +65,7 @@ struct MiniGame {
             ecs::Tick t{tick};
             applyReplayInput(runner, tick, input, registry, player, tuning);
             playerSystem(registry, t, input, tuning, nullptr);
-            moverSystem(registry, t);
+            moverSystem(registry, t, movers, brushes, tuning, world, player);
             effectLightSystem(registry, t, input, tuning, shots);
             primarySelectionSystem(registry, t, candidates, score);
             input.endTick();

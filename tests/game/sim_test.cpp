@@ -56,7 +56,6 @@ struct Sim {
         for (int i = 0; i < ticks; ++i) {
             ecs::Tick t{tick++};
             playerSystem(registry, t, input, tuning, &bsp);
-            moverSystem(registry, t);
             effectLightSystem(registry, t, input, tuning, shots);
             input.endTick();
         }
@@ -116,17 +115,32 @@ TEST(GameSim, MouseLookTurnsAndClampsPitch) {
     EXPECT_NEAR(d.x, -1.0f, 1e-6f);
 }
 
-TEST(GameSim, MoversFollowTheirPathAsAFunctionOfTime) {
-    Sim sim({0, 0, 0});
-    ecs::Entity crate = sim.registry.create();
-    sim.registry.emplace<Transform>(crate);
-    sim.registry.emplace<Mover>(crate, Mover{{1, 0.5f, 0}, {10, 0, 0}, 4.0f});
-    sim.step(1);  // tick 0: at the start
-    EXPECT_NEAR(sim.registry.get<Transform>(crate).position.x, 1.0f, 1e-5f);
-    sim.step(120);  // tick 120 = 2 s, half a period: at the far end
-    EXPECT_NEAR(sim.registry.get<Transform>(crate).position.x, 11.0f, 1e-4f);
-    sim.step(120);  // 4 s: back at the start
-    EXPECT_NEAR(sim.registry.get<Transform>(crate).position.x, 1.0f, 1e-4f);
+TEST(GameSim, ShuttlesFollowTheirPathAsAFunctionOfTime) {
+    world::CompiledLevel level;
+    world::Entity box;
+    box.flags = world::kEntityDynamic | world::kEntityMover;
+    level.entities.push_back(box);
+    world::Mover shuttle;
+    shuttle.entity = 0;
+    shuttle.pos1 = {1, 0.5f, 0};
+    shuttle.pos2 = {11, 0.5f, 0};
+    shuttle.period = 4.0f;
+    level.movers.movers.push_back(shuttle);
+    ecs::Registry registry;
+    ecs::Entity crate = registry.create();
+    registry.emplace<Transform>(crate);
+    MoverWorld movers = startMovers(level, {crate});
+    BrushWorld brushes;
+    const auto xAtTick = [&](uint64_t tick) {
+        moverSystem(registry, ecs::Tick{tick}, movers, brushes, Tuning{}, PlayerWorld{},
+                    ecs::kNullEntity);
+        return registry.get<Transform>(crate).position.x;
+    };
+    EXPECT_NEAR(xAtTick(0), 1.0f, 1e-5f);     // at the start
+    EXPECT_NEAR(xAtTick(60), 6.0f, 1e-4f);    // 1 s, a quarter period: half way
+    EXPECT_NEAR(xAtTick(120), 11.0f, 1e-4f);  // 2 s, half a period: at the far end
+    EXPECT_NEAR(xAtTick(240), 1.0f, 1e-4f);   // 4 s: back at the start
+    EXPECT_NEAR(registry.get<Transform>(crate).position.y, 0.5f, 1e-6f);
 }
 
 TEST(GameSim, FiveShotsInARowNeverMakeMoreThanFourFlashes) {

@@ -183,7 +183,6 @@ TEST(Compile, DynamicObjectReachCoversEveryMoversPath) {
     mover.scale = glm::vec3(2.0f);
     mover.rotation = glm::angleAxis(glm::radians(90.0f), glm::vec3(0.0f, 0.0f, 1.0f));  // x -> y
     mover.dynamicMeshCount = 1;
-    mover.moverOffset = glm::vec3(0.0f, 0.0f, -6.0f);
     Entity still = mover;
     still.flags = kEntityDynamic;
     still.position = glm::vec3(-3.0f, 0.0f, 0.0f);
@@ -194,6 +193,12 @@ TEST(Compile, DynamicObjectReachCoversEveryMoversPath) {
     Entity broken = still;
     broken.firstDynamicMesh = 7;  // past the meshes: nothing
     level.entities = {mover, still, spawn, broken};
+    Mover shuttle;
+    shuttle.entity = 0;
+    shuttle.pos1 = mover.position;
+    shuttle.pos2 = mover.position + glm::vec3(0.0f, 0.0f, -6.0f);
+    shuttle.period = 1.0f;
+    level.movers.movers = {shuttle};
     ASSERT_TRUE(dynamicObjectReach(level, lo, hi));
     // The mover's mesh spans y 0..4 at x 10, z 0 and z -6; the still one x -5..-1 at y 0, z 0.
     const glm::vec3 wantLo(-5.0f, 0.0f, -6.0f), wantHi(10.0f, 4.0f, 0.0f);

@@ -189,7 +189,11 @@ TEST(Import, ExtrasMarkDynamicMoversSpawnsProbesGrid) {
     const world::SourceLevel level = importGltf(gltf.write(freshFolder("extras"), "extras"));
     ASSERT_EQ(level.entities.size(), 3u);
     EXPECT_EQ(level.entities[0].flags, world::kEntityDynamic | world::kEntityMover);
-    EXPECT_FLOAT_EQ(level.entities[0].moverPeriod, 4.0f);
+    ASSERT_EQ(level.movers.movers.size(), 1u);
+    EXPECT_EQ(level.movers.movers[0].entity, 0u);
+    EXPECT_EQ(level.movers.movers[0].kind, world::MoverKind::kShuttle);
+    EXPECT_FLOAT_EQ(level.movers.movers[0].period, 4.0f);
+    EXPECT_EQ(level.movers.movers[0].pos2 - level.movers.movers[0].pos1, glm::vec3(0, 3, 0));
     EXPECT_TRUE(level.instances[0].dynamic);
     EXPECT_EQ(level.entities[1].flags, world::kEntitySpawn);
     EXPECT_EQ(level.entities[2].flags, world::kEntityProbe);

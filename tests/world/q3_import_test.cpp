@@ -675,7 +675,7 @@ TEST(Quake3Collision, TheSectionReaderRefusesBadIndicesAndNonFinitePlanes) {
     good.triggers = {t};
     const auto decodeError = [](const std::vector<package::RawSection>& s) {
         return errorMessage(
-            [&] { (void)package::decodeCollisionSections(&s[0], &s[1], "hostile.olpak"); });
+            [&] { (void)package::decodeCollisionSections(&s[0], &s[1], 0, "hostile.olpak"); });
     };
     EXPECT_EQ(decodeError(package::encodeCollisionSections(good)), "");
     const auto expectRefused = [&](const LevelCollision& bad, const std::string& expected) {

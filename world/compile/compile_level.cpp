@@ -215,6 +215,7 @@ CompileResult compileLevel(const SourceLevel& source, const CompileOptions& opti
     level.dynamicMeshes = std::move(split.dynamicMeshes);
     level.entities = std::move(split.entities);
     level.collision = source.collision;  // already in metres, Y up
+    level.movers = source.movers;        // by entity index, which the split keeps
 
     LevelSettings& settings = level.settings;
     settings.exposureEv100 = source.exposureEv100;

@@ -78,11 +78,15 @@ bool dynamicObjectReach(const CompiledLevel& level, glm::vec3& boxMin, glm::vec3
     boxMin = glm::vec3(std::numeric_limits<float>::max());
     boxMax = glm::vec3(std::numeric_limits<float>::lowest());
     bool any = false;
-    for (const Entity& e : level.entities) {
+    std::vector<std::vector<MoverPose>> poses(level.entities.size());  // a mover's reach
+    for (const Mover& mover : level.movers.movers)
+        if (mover.entity < poses.size()) poses[mover.entity] = moverReach(level.movers, mover);
+    for (size_t i = 0; i < level.entities.size(); ++i) {
+        const Entity& e = level.entities[i];
         if (!(e.flags & kEntityDynamic)) continue;
-        const glm::vec3 ends[2] = {e.position, e.position + e.moverOffset};
-        for (int end = 0; end < ((e.flags & kEntityMover) ? 2 : 1); ++end) {
-            const glm::mat4 world = worldFromObject(e, ends[end]);
+        if (poses[i].empty()) poses[i].push_back({e.position});
+        for (const MoverPose& pose : poses[i]) {
+            const glm::mat4 world = worldFromObject(e, pose.origin, pose.turn);
             for (uint32_t m = e.firstDynamicMesh;
                  m < e.firstDynamicMesh + e.dynamicMeshCount && m < level.dynamicMeshes.size();
                  ++m) {

@@ -167,14 +167,21 @@ struct Importer {
             e.scale =
                 glm::vec3(glm::length(glm::dvec3(world[0])), glm::length(glm::dvec3(world[1])),
                           glm::length(glm::dvec3(world[2])));
-            e.moverOffset = extras.moverOffset;
-            e.moverPeriod = extras.moverPeriod;
             if (extras.hasProbeBox) {
                 e.probeBoxMin = extras.probeBoxMin;
                 e.probeBoxMax = extras.probeBoxMax;
             }
             level.entities.push_back(e);
             if (extras.dynamic) entity = static_cast<uint32_t>(level.entities.size() - 1);
+            if (extras.mover) {
+                Mover shuttle;
+                shuttle.entity = static_cast<uint32_t>(level.entities.size() - 1);
+                shuttle.kind = MoverKind::kShuttle;
+                shuttle.pos1 = shuttle.pos2 = e.position;
+                shuttle.pos2 += extras.moverOffset;
+                shuttle.period = extras.moverPeriod;
+                level.movers.movers.push_back(shuttle);
+            }
         }
 
         const auto lightExtension = node.extensions.find("KHR_lights_punctual");

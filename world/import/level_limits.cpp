@@ -55,11 +55,17 @@ void checkLevelLimits(const SourceLevel& level) {
         checkPoint(level, camera.position, "camera '" + camera.name + "'");
     for (const Entity& entity : level.entities) {
         checkPoint(level, entity.position, "entity '" + entity.name + "'");
-        checkPoint(level, glm::dvec3(entity.position) + glm::dvec3(entity.moverOffset),
-                   "entity '" + entity.name + "' mover's far end");
         checkPoint(level, entity.probeBoxMin, "entity '" + entity.name + "' probe box min");
         checkPoint(level, entity.probeBoxMax, "entity '" + entity.name + "' probe box max");
     }
+    for (const Mover& mover : level.movers.movers)
+        for (const MoverPose& pose : moverReach(level.movers, mover))
+            checkPoint(level, pose.origin,
+                       "entity '" +
+                           (mover.entity < level.entities.size()
+                                ? level.entities[mover.entity].name
+                                : std::to_string(mover.entity)) +
+                           "' mover's reach");
     if (level.hasGridBounds) {
         checkPoint(level, level.gridMin, "the light grid's min");
         checkPoint(level, level.gridMax, "the light grid's max");

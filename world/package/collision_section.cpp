@@ -48,7 +48,7 @@ std::vector<RawSection> encodeCollisionSections(const world::LevelCollision& c) 
         append(brushes.bytes, DiskCollisionPlane{{p.normal.x, p.normal.y, p.normal.z}, p.distance});
     for (uint32_t plane : c.sidePlanes) append(brushes.bytes, plane);
     for (const world::CollisionBrush& b : c.brushes)
-        append(brushes.bytes, DiskCollisionBrush{b.firstSide, b.sideCount, b.contents, 0});
+        append(brushes.bytes, DiskCollisionBrush{b.firstSide, b.sideCount, b.contents, b.mover});
     brushes.count = uint32_t(brushes.bytes.size());
     out.push_back(std::move(brushes));
 
@@ -61,14 +61,14 @@ std::vector<RawSection> encodeCollisionSections(const world::LevelCollision& c) 
                                            {t.boundsMax.x, t.boundsMax.y, t.boundsMax.z},
                                            {t.target.x, t.target.y, t.target.z},
                                            t.targetYaw,
-                                           0});
+                                           t.mover});
     triggers.count = uint32_t(c.triggers.size());
     out.push_back(std::move(triggers));
     return out;
 }
 
 world::LevelCollision decodeCollisionSections(const RawSection* brushes, const RawSection* triggers,
-                                              const std::string& name) {
+                                              uint32_t moverCount, const std::string& name) {
     world::LevelCollision c;
     if (brushes) {
         const std::string at = name + ": section collision: ";
@@ -125,8 +125,11 @@ world::LevelCollision decodeCollisionSections(const RawSection* brushes, const R
             if (b.contents == 0 || (b.contents & ~world::kPlayerSolidContents) != 0)
                 throw world::Error(brush + " has contents " + std::to_string(b.contents) +
                                    "; expected solid (1), player clip (65536) or both");
-            if (b.reserved != 0) throw world::Error(brush + ": reserved is not 0");
-            c.brushes.push_back({b.firstSide, b.sideCount, b.contents});
+            if (b.mover != world::kNoIndex && b.mover >= moverCount)
+                throw world::Error(brush + " has mover " + std::to_string(b.mover) +
+                                   "; expected one of the level's " + std::to_string(moverCount) +
+                                   " movers, or none");
+            c.brushes.push_back({b.firstSide, b.sideCount, b.contents, b.mover});
         }
     }
     if (triggers) {
@@ -139,10 +142,10 @@ world::LevelCollision decodeCollisionSections(const RawSection* brushes, const R
         for (uint32_t i = 0; i < triggers->count; ++i) {
             const auto t = readAt<DiskTrigger>(triggers->bytes, size_t(i) * sizeof(DiskTrigger));
             const std::string trigger = at + "trigger " + std::to_string(i);
-            if (t.kind < uint32_t(world::TriggerKind::kPush) ||
-                t.kind > uint32_t(world::TriggerKind::kHurt))
+            if (t.kind < uint32_t(world::TriggerKind::kPush) || t.kind > world::kTriggerKindLast)
                 throw world::Error(trigger + " has kind " + std::to_string(t.kind) +
-                                   "; expected 1 (push), 2 (teleport) or 3 (hurt)");
+                                   "; expected 1 (push), 2 (teleport), 3 (hurt), 4 (use a mover) "
+                                   "or 5 (raise a plat)");
             if (!finite3(t.boundsMin) || !finite3(t.boundsMax) || !finite3(t.target) ||
                 !std::isfinite(t.targetYaw))
                 throw world::Error(trigger + " is NaN or Inf; expected finite numbers");
@@ -150,13 +153,19 @@ world::LevelCollision decodeCollisionSections(const RawSection* brushes, const R
                 if (!(t.boundsMin[k] <= t.boundsMax[k]))
                     throw world::Error(trigger + " has boundsMin[" + std::to_string(k) +
                                        "] above boundsMax; expected min <= max");
-            if (t.reserved != 0) throw world::Error(trigger + ": reserved is not 0");
+            const bool usesMover = t.kind >= uint32_t(world::TriggerKind::kUseMover);
+            if (usesMover ? t.mover >= moverCount : t.mover != world::kNoIndex)
+                throw world::Error(trigger + " has mover " + std::to_string(t.mover) +
+                                   (usesMover ? "; expected one of the level's " +
+                                                    std::to_string(moverCount) + " movers"
+                                              : "; expected none for its kind"));
             world::Trigger out;
             out.kind = world::TriggerKind(t.kind);
             out.boundsMin = glm::vec3(t.boundsMin[0], t.boundsMin[1], t.boundsMin[2]);
             out.boundsMax = glm::vec3(t.boundsMax[0], t.boundsMax[1], t.boundsMax[2]);
             out.target = glm::vec3(t.target[0], t.target[1], t.target[2]);
             out.targetYaw = t.targetYaw;
+            out.mover = t.mover;
             c.triggers.push_back(out);
         }
     }

@@ -17,10 +17,11 @@ namespace onelight::package {
 [[nodiscard]] std::vector<RawSection> encodeCollisionSections(
     const world::LevelCollision& collision);
 
-/// The collision in `brushes` (41) and `triggers` (42), either null when absent. `name`
-/// prefixes errors.
+/// The collision in `brushes` (41) and `triggers` (42), either null when absent, whose mover
+/// indices are checked against the level's `moverCount`. `name` prefixes errors.
 [[nodiscard]] world::LevelCollision decodeCollisionSections(const RawSection* brushes,
                                                             const RawSection* triggers,
+                                                            uint32_t moverCount,
                                                             const std::string& name);
 
 }  // namespace onelight::package

@@ -27,8 +27,8 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 5;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
-                                         // 5: items
+inline constexpr uint32_t kVersion = 6;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
+                                         // 5: items; 6: movers
 using world::kNoIndex;                   // world/no_index.hpp
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -56,7 +56,9 @@ enum SectionId : uint32_t {
     kSectionDynamicMeshes = 19,    // DiskDynamicMesh[]
     kSectionEntities = 20,         // DiskEntity[]
     kSectionFeatures = 21,         // DiskFeatures[1]
-    kCoreSectionCount = 22,        // ids below this are required, exactly once each
+    kSectionMovers = 22,           // DiskMover[]
+    kSectionMoverPoints = 23,      // DiskMoverPoint[]: trains' paths, ranges owned by movers
+    kCoreSectionCount = 24,        // ids below this are required, exactly once each
     // Baked lighting, added by the baker; unknown to `compile`, kept raw by the reader.
     kSectionLightmapTexels = 32,    // directional secondary irradiance per atlas
     kSectionShadowMasks = 33,       // baked primary shadow masks per atlas
@@ -277,16 +279,45 @@ struct DiskEntity {
     uint32_t flags;  // bit 0 dynamic, 1 mover, 2 spawn, 3 probe, 4 item, 5 suspended; no other
     uint32_t firstDynamicMesh;  // into dynamic_meshes
     uint32_t dynamicMeshCount;
-    float moverPeriod;  // seconds, > 0 for movers
     float position[3];  // metres, world
     float rotation[4];  // unit quaternion x, y, z, w
     float scale[3];
-    float moverOffset[3];  // metres, world
     float probeBoxMin[3];  // metres, world; empty box = no box projection
     float probeBoxMax[3];
     float itemRespawn;  // items: seconds taken before it comes back; < 0 never
 };
-static_assert(sizeof(DiskEntity) == 104);
+static_assert(sizeof(DiskEntity) == 88);
+
+// A mover (world/movers.hpp, where each field's meaning per kind is). Metres, seconds, radians.
+struct DiskMover {
+    uint32_t entity;      // into entities, one with the mover flag (bit 1), one mover each
+    uint32_t kind;        // world::MoverKind: 0 shuttle, 1 door, 2 plat, 3 button, 4 bobbing,
+                          // 5 rotating, 6 pendulum, 7 train
+    uint32_t flags;       // world::MoverFlags: bit 0 crusher; no other
+    float pos1[3];        // finite
+    float pos2[3];        // finite
+    float amplitude[3];   // finite
+    float axis[3];        // unit (length within 1e-3 of 1)
+    float speed;          // finite
+    float period;         // seconds: > 0 for shuttle, bobbing, pendulum
+    float phase;          // finite
+    float travelSeconds;  // > 0 for door, plat, button
+    float wait;           // finite
+    uint32_t teamMaster;  // into movers, a mover that is its own master (kNoIndex), or kNoIndex
+    uint32_t name;        // an id of the level's, or kNoIndex
+    uint32_t target;      // an id of the level's, or kNoIndex
+    uint32_t firstPoint;  // into mover_points; a train's >= 2, others none
+    uint32_t pointCount;
+    uint32_t reserved;  // 0
+};
+static_assert(sizeof(DiskMover) == 104);
+
+struct DiskMoverPoint {
+    float position[3];  // metres, world, finite
+    float wait;         // seconds, finite, >= 0
+    float legSeconds;   // seconds to the next point, finite, > 0
+};
+static_assert(sizeof(DiskMoverPoint) == 20);
 
 struct DiskFeatures {
     uint32_t flags;              // world::FeatureFlags
@@ -573,17 +604,18 @@ struct DiskCollisionBrush {
     uint32_t firstSide;  // into the side planes
     uint32_t sideCount;  // >= 1; firstSide + sideCount <= sideCount of the header
     uint32_t contents;   // world::kContentsSolid | world::kContentsPlayerClip, no other bit, != 0
-    uint32_t reserved;   // 0
+    uint32_t mover;      // into movers: its planes in the mover's object space; kNoIndex: fixed
 };
 static_assert(sizeof(DiskCollisionBrush) == 16);
 
 struct DiskTrigger {
-    uint32_t kind;       // world::TriggerKind: 1 push, 2 teleport, 3 hurt
+    uint32_t kind;       // world::TriggerKind: 1 push, 2 teleport, 3 hurt, 4 use a mover,
+                         // 5 raise a plat
     float boundsMin[3];  // metres, world, finite
     float boundsMax[3];  // metres, world, finite, >= boundsMin
     float target[3];     // metres, world, finite: push, the apex; teleport, the feet; hurt, 0
     float targetYaw;     // teleport: radians about +y (0 looks down -z), finite; else 0
-    uint32_t reserved;   // 0
+    uint32_t mover;      // kinds 4 and 5: into movers; others kNoIndex
 };
 static_assert(sizeof(DiskTrigger) == 48);
 

@@ -25,7 +25,7 @@ const char* sectionName(uint32_t id) {
         "image_bytes", "lights",          "cameras",          "vertices",        "indices",
         "surfaces",    "given_up_lights", "charts",           "atlases",         "bsp_planes",
         "bsp_nodes",   "bsp_leaves",      "dynamic_vertices", "dynamic_indices", "dynamic_meshes",
-        "entities",    "features"};
+        "entities",    "features",        "movers",           "mover_points"};
     return id < kCoreSectionCount ? names[id] : "baked";
 }
 
@@ -75,6 +75,10 @@ uint32_t expectedElementSize(uint32_t id) {
             return sizeof(DiskEntity);
         case kSectionFeatures:
             return sizeof(DiskFeatures);
+        case kSectionMovers:
+            return sizeof(DiskMover);
+        case kSectionMoverPoints:
+            return sizeof(DiskMoverPoint);
         default:
             return 0;
     }
@@ -109,6 +113,9 @@ public:
         load<DiskDynamicMesh>(kSectionDynamicMeshes, level, level.dynamicMeshes);
         load<DiskEntity>(kSectionEntities, level, level.entities);
         level.features = fromDisk(single<DiskFeatures>(kSectionFeatures));
+        load<DiskMoverPoint>(kSectionMoverPoints, level, level.movers.path);
+        load<DiskMover>(kSectionMovers, level, level.movers.movers);
+        checkMoverLinks(level);
     }
 
 private:
@@ -546,14 +553,79 @@ private:
             fail(id, i, "flags " + std::to_string(d.flags) + " has unknown bits");
         checkRange(id, i, "dynamic meshes", d.firstDynamicMesh, d.dynamicMeshCount,
                    level.dynamicMeshes.size(), "dynamic meshes");
-        checkFinite(id, i, "moverPeriod", d.moverPeriod);
         checkFinite(id, i, "position", d.position);
         checkFinite(id, i, "rotation", d.rotation);
         checkFinite(id, i, "scale", d.scale);
-        checkFinite(id, i, "moverOffset", d.moverOffset);
         checkFinite(id, i, "probeBoxMin", d.probeBoxMin);
         checkFinite(id, i, "probeBoxMax", d.probeBoxMax);
         checkFinite(id, i, "itemRespawn", d.itemRespawn);
+    }
+
+    void check(uint32_t id, size_t i, const DiskMoverPoint& d, const CompiledLevel&) const {
+        checkFinite(id, i, "position", d.position);
+        if (!(d.wait >= 0.0f) || !std::isfinite(d.wait))
+            fail(id, i, "wait " + std::to_string(d.wait) + "; expected seconds >= 0");
+        if (!(d.legSeconds > 0.0f) || !std::isfinite(d.legSeconds))
+            fail(id, i, "legSeconds " + std::to_string(d.legSeconds) + "; expected seconds > 0");
+    }
+
+    void check(uint32_t id, size_t i, const DiskMover& d, const CompiledLevel& level) const {
+        checkIndex(id, i, "entity", d.entity, level.entities.size(), "entities", false);
+        if (!(level.entities[d.entity].flags & kEntityMover))
+            fail(id, i, "entity " + std::to_string(d.entity) + " is not flagged as moved");
+        if (d.kind >= kMoverKindCount)
+            fail(id, i,
+                 "kind " + std::to_string(d.kind) + "; expected 0 .. " +
+                     std::to_string(kMoverKindCount - 1));
+        if (d.flags & ~kAllMoverFlags)
+            fail(id, i, "flags " + std::to_string(d.flags) + " has unknown bits");
+        checkFinite(id, i, "pos1", d.pos1);
+        checkFinite(id, i, "pos2", d.pos2);
+        checkFinite(id, i, "amplitude", d.amplitude);
+        checkFinite(id, i, "axis", d.axis);
+        const float axisLength = std::sqrt(d.axis[0] * d.axis[0] + d.axis[1] * d.axis[1] +
+                                           d.axis[2] * d.axis[2]);
+        if (!(std::fabs(axisLength - 1.0f) <= 1e-3f))
+            fail(id, i, "axis of length " + std::to_string(axisLength) + "; expected 1");
+        checkFinite(id, i, "speed", d.speed);
+        checkFinite(id, i, "period", d.period);
+        checkFinite(id, i, "phase", d.phase);
+        checkFinite(id, i, "travelSeconds", d.travelSeconds);
+        checkFinite(id, i, "wait", d.wait);
+        const MoverKind kind = MoverKind(d.kind);
+        if ((kind == MoverKind::kShuttle || kind == MoverKind::kBobbing ||
+             kind == MoverKind::kPendulum) &&
+            !(d.period > 0.0f))
+            fail(id, i, "period " + std::to_string(d.period) + "; expected seconds > 0");
+        if (isBinaryMover(kind) && !(d.travelSeconds > 0.0f))
+            fail(id, i,
+                 "travelSeconds " + std::to_string(d.travelSeconds) + "; expected seconds > 0");
+        checkRange(id, i, "points", d.firstPoint, d.pointCount, level.movers.path.size(),
+                   "mover points");
+        if ((kind == MoverKind::kTrain) != (d.pointCount >= 2))
+            fail(id, i,
+                 std::to_string(d.pointCount) +
+                     " points; expected at least 2 for a train (kind 7), none otherwise");
+        if (d.reserved != 0) fail(id, i, "reserved " + std::to_string(d.reserved) + "; expected 0");
+    }
+
+    /// Across the movers: one mover an entity, every team master its own master.
+    void checkMoverLinks(const CompiledLevel& level) const {
+        std::vector<bool> moved(level.entities.size(), false);
+        const std::vector<Mover>& movers = level.movers.movers;
+        for (size_t i = 0; i < movers.size(); ++i) {
+            if (moved[movers[i].entity])
+                fail(kSectionMovers, i,
+                     "entity " + std::to_string(movers[i].entity) + " has a mover already");
+            moved[movers[i].entity] = true;
+            const uint32_t master = movers[i].teamMaster;
+            if (master != kNoIndex &&
+                (master >= movers.size() || master == i || movers[master].teamMaster != kNoIndex))
+                fail(kSectionMovers, i,
+                     "teamMaster " + std::to_string(master) + " of " +
+                         std::to_string(movers.size()) +
+                         " movers; expected another mover whose teamMaster is none");
+        }
     }
 
     void check(uint32_t id, size_t i, const DiskFeatures& d) const {
@@ -598,7 +670,8 @@ PackageContents parsePackage(std::span<const uint8_t> bytes, const std::string& 
             if (raw.id == kSectionCollision) brushes = &raw;
             if (raw.id == kSectionTriggers) triggers = &raw;
         }
-        contents.level.collision = decodeCollisionSections(brushes, triggers, name);
+        contents.level.collision = decodeCollisionSections(
+            brushes, triggers, uint32_t(contents.level.movers.movers.size()), name);
         std::erase_if(contents.bakedSections, [](const RawSection& raw) {
             return raw.id == kSectionCollision || raw.id == kSectionTriggers;
         });

@@ -86,6 +86,8 @@ void buildSections(const CompiledLevel& level, Sections& sections) {
     addRecords<DiskDynamicMesh>(sections, kSectionDynamicMeshes, level.dynamicMeshes, blobs);
     addRecords<DiskEntity>(sections, kSectionEntities, level.entities, blobs);
     addRecords<DiskFeatures>(sections, kSectionFeatures, std::vector{level.features});
+    addRecords<DiskMover>(sections, kSectionMovers, level.movers.movers);
+    addRecords<DiskMoverPoint>(sections, kSectionMoverPoints, level.movers.path);
     addBytes(sections, kSectionStrings, std::move(blobs.strings));
     addBytes(sections, kSectionImageBytes, std::move(blobs.imageBytes));
 }

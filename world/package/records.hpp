@@ -504,11 +504,9 @@ namespace records {
     d.flags = e.flags;
     d.firstDynamicMesh = e.firstDynamicMesh;
     d.dynamicMeshCount = e.dynamicMeshCount;
-    d.moverPeriod = e.moverPeriod;
     put(d.position, e.position);
     put(d.rotation, e.rotation);
     put(d.scale, e.scale);
-    put(d.moverOffset, e.moverOffset);
     put(d.probeBoxMin, e.probeBoxMin);
     put(d.probeBoxMax, e.probeBoxMax);
     d.itemRespawn = e.itemRespawn;
@@ -522,15 +520,69 @@ namespace records {
     e.flags = d.flags;
     e.firstDynamicMesh = d.firstDynamicMesh;
     e.dynamicMeshCount = d.dynamicMeshCount;
-    e.moverPeriod = d.moverPeriod;
     e.position = vec(d.position);
     e.rotation = quat(d.rotation);
     e.scale = vec(d.scale);
-    e.moverOffset = vec(d.moverOffset);
     e.probeBoxMin = vec(d.probeBoxMin);
     e.probeBoxMax = vec(d.probeBoxMax);
     e.itemRespawn = d.itemRespawn;
     return e;
+}
+
+[[nodiscard]] inline DiskMover toDisk(const world::Mover& m) {
+    DiskMover d{};
+    d.entity = m.entity;
+    d.kind = uint32_t(m.kind);
+    d.flags = m.flags;
+    put(d.pos1, m.pos1);
+    put(d.pos2, m.pos2);
+    put(d.amplitude, m.amplitude);
+    put(d.axis, m.axis);
+    d.speed = m.speed;
+    d.period = m.period;
+    d.phase = m.phase;
+    d.travelSeconds = m.travelSeconds;
+    d.wait = m.wait;
+    d.teamMaster = m.teamMaster;
+    d.name = m.name;
+    d.target = m.target;
+    d.firstPoint = m.firstPoint;
+    d.pointCount = m.pointCount;
+    return d;
+}
+
+[[nodiscard]] inline world::Mover fromDisk(const DiskMover& d) {
+    world::Mover m;
+    m.entity = d.entity;
+    m.kind = world::MoverKind(d.kind);
+    m.flags = d.flags;
+    m.pos1 = vec(d.pos1);
+    m.pos2 = vec(d.pos2);
+    m.amplitude = vec(d.amplitude);
+    m.axis = vec(d.axis);
+    m.speed = d.speed;
+    m.period = d.period;
+    m.phase = d.phase;
+    m.travelSeconds = d.travelSeconds;
+    m.wait = d.wait;
+    m.teamMaster = d.teamMaster;
+    m.name = d.name;
+    m.target = d.target;
+    m.firstPoint = d.firstPoint;
+    m.pointCount = d.pointCount;
+    return m;
+}
+
+[[nodiscard]] inline DiskMoverPoint toDisk(const world::MoverPoint& p) {
+    DiskMoverPoint d{};
+    put(d.position, p.position);
+    d.wait = p.wait;
+    d.legSeconds = p.legSeconds;
+    return d;
+}
+
+[[nodiscard]] inline world::MoverPoint fromDisk(const DiskMoverPoint& d) {
+    return {vec(d.position), d.wait, d.legSeconds};
 }
 
 /// Features -> DiskFeatures.
