@@ -34,6 +34,68 @@ Quake3BspBuilder::Quake3BspBuilder(float side, std::string_view shader) {
     surfaces.push_back(f);
 }
 
+int32_t Quake3BspBuilder::addBoxModel(const std::vector<std::pair<glm::vec3, glm::vec3>>& boxes,
+                                      int32_t shader) {
+    if (models.empty()) {  // the world: the constructor's square goes
+        vertices.clear();
+        indices.clear();
+        surfaces.clear();
+    }
+    BspModel model{};
+    model.firstSurface = int32_t(surfaces.size());
+    model.firstBrush = int32_t(brushes.size());
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (const auto& [a, b] : boxes) {
+        lo = glm::min(lo, a);
+        hi = glm::max(hi, b);
+        BspBrush brush{int32_t(brushSides.size()), 6, shader};
+        brushes.push_back(brush);
+        for (int axis = 0; axis < 3; ++axis)
+            for (int sign : {1, -1}) {
+                BspBrushPlane plane{};
+                plane.normal[axis] = float(sign);
+                plane.dist = sign > 0 ? b[axis] : -a[axis];
+                brushSides.push_back({int32_t(planes.size()), shader});
+                planes.push_back(plane);
+                // The face: four corners on the plane, wound so the normal faces out.
+                const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+                BspSurface f{};
+                f.shader = shader;
+                f.fog = -1;
+                f.type = kSurfacePlanar;
+                f.firstVertex = int32_t(vertices.size());
+                f.vertexCount = 4;
+                f.firstIndex = int32_t(indices.size());
+                f.indexCount = 6;
+                f.lightmap = -1;
+                for (const auto& [su, sv] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+                    BspVertex vertex{};
+                    vertex.position[axis] = sign > 0 ? b[axis] : a[axis];
+                    vertex.position[u] = su ? b[u] : a[u];
+                    vertex.position[v] = sv ? b[v] : a[v];
+                    vertex.texcoord[0] = vertex.position[u] / 64.0f;
+                    vertex.texcoord[1] = vertex.position[v] / 64.0f;
+                    vertex.normal[axis] = float(sign);
+                    vertices.push_back(vertex);
+                }
+                // (u, v) is right-handed about +axis: counter-clockwise seen from +axis.
+                if (sign > 0)
+                    indices.insert(indices.end(), {0, 1, 2, 0, 2, 3});
+                else
+                    indices.insert(indices.end(), {0, 2, 1, 0, 3, 2});
+                surfaces.push_back(f);
+            }
+    }
+    model.surfaceCount = int32_t(surfaces.size()) - model.firstSurface;
+    model.brushCount = int32_t(brushes.size()) - model.firstBrush;
+    for (int k = 0; k < 3; ++k) {
+        model.mins[k] = lo[k];
+        model.maxs[k] = hi[k];
+    }
+    models.push_back(model);
+    return int32_t(models.size()) - 1;
+}
+
 Quake3BspBuilder floorSquare(uint8_t lightmapValue) {
     Quake3BspBuilder b(256.0f, "textures/test/floor");
     for (BspVertex& v : b.vertices) {

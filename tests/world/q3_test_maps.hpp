@@ -38,6 +38,15 @@ struct Quake3BspBuilder {
 
     explicit Quake3BspBuilder(float side = 64.0f, std::string_view shader = "textures/test/wall");
 
+    /// Appends brush model `models.size()` of axis-aligned boxes (map units, [lo, hi]) with
+    /// shader `shader`: a solid brush and six outward quads per box (lightmap page none), its
+    /// surfaces and brushes contiguous, its bounds theirs. Model 0 is the world: call this first
+    /// with the world's boxes (the square of the constructor is then dropped). A box's
+    /// coordinates are as stored: relative to its entity's origin for an origin-brush model.
+    /// Returns the model's number.
+    int32_t addBoxModel(const std::vector<std::pair<glm::vec3, glm::vec3>>& boxes,
+                        int32_t shader = 0);
+
     [[nodiscard]] Bytes bytes() const;
     [[nodiscard]] std::string text() const;
     /// Writes NAME.bsp into the fresh folder `folder` (test::freshFolder) and returns its path.

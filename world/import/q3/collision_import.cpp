@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "world/error.hpp"
 #include "world/import/q3/map_axes.hpp"
@@ -14,18 +15,22 @@ namespace {
 constexpr int32_t kPassable =
     kContentsTrigger | kContentsWater | kContentsLava | kContentsSlime | kContentsFog;
 
-void addBrushes(LevelCollision& out, const BspFile& bsp, const std::vector<bool>& nonsolid,
-                const std::string& where) {
-    // The world is model 0; a map without a model lump has only world brushes.
+// The blocking brushes of brush model `model` (the world is model 0; a map without a model lump
+// has only world brushes), moved by `offset` (metres) and owned by `mover`. `planeOf` maps the
+// map's planes to the level's, for one space (the world's, or one mover's).
+void addBrushes(LevelCollision& out, const BspFile& bsp, size_t model, uint32_t mover,
+                glm::vec3 offset, std::map<int32_t, uint32_t>& planeOf,
+                const std::vector<bool>& nonsolid, const std::string& where) {
     int32_t first = 0, count = int32_t(bsp.brushes.size());
-    if (!bsp.models.empty()) first = bsp.models[0].firstBrush, count = bsp.models[0].brushCount;
-    std::map<int32_t, uint32_t> planeOf;  // the map's plane -> the level's
+    if (model < bsp.models.size())
+        first = bsp.models[model].firstBrush, count = bsp.models[model].brushCount;
     for (int32_t b = first; b < first + count; ++b) {
         const BspBrush& brush = bsp.brushes[size_t(b)];
         const int32_t contents = bsp.shaders[size_t(brush.shader)].contentFlags;
         const uint32_t blocking = uint32_t(contents) & kPlayerSolidContents;
         if (blocking == 0 || (contents & kPassable) || nonsolid[size_t(brush.shader)]) continue;
-        CollisionBrush kept{uint32_t(out.sidePlanes.size()), uint32_t(brush.sideCount), blocking};
+        CollisionBrush kept{uint32_t(out.sidePlanes.size()), uint32_t(brush.sideCount), blocking,
+                            mover};
         if (kept.sideCount == 0) continue;
         for (int32_t s = 0; s < brush.sideCount; ++s) {
             const int32_t p = bsp.brushSides[size_t(brush.firstSide + s)].plane;
@@ -38,8 +43,10 @@ void addBrushes(LevelCollision& out, const BspFile& bsp, const std::vector<bool>
                     throw Error(where + ": plane " + std::to_string(p) +
                                 " has a normal of length " + std::to_string(length) +
                                 "; expected a unit normal");
-                out.planes.push_back({n / length, float(double(plane.dist) * kQuake3MetresPerUnit /
-                                                        double(length))});
+                const glm::vec3 unit = n / length;
+                out.planes.push_back({unit, float(double(plane.dist) * kQuake3MetresPerUnit /
+                                                      double(length) +
+                                                  double(glm::dot(unit, offset)))});
             }
             out.sidePlanes.push_back(found->second);
         }
@@ -109,11 +116,34 @@ void addTriggers(LevelCollision& out, const BspFile& bsp, const std::vector<MapE
 }  // namespace
 
 LevelCollision importCollision(const BspFile& bsp, const std::vector<MapEntity>& entities,
-                               const std::vector<bool>& nonsolidShaders, const std::string& where,
+                               const std::vector<bool>& nonsolidShaders,
+                               const ImportedMovers& movers, const std::string& where,
                                std::vector<std::string>& notes) {
     LevelCollision out;
-    addBrushes(out, bsp, nonsolidShaders, where);
+    std::map<int32_t, uint32_t> worldPlanes;
+    addBrushes(out, bsp, 0, kNoIndex, glm::vec3(0.0f), worldPlanes, nonsolidShaders, where);
+    // func_static: still, where its origin puts it.
+    std::set<size_t> still;
+    for (const MapEntity& e : entities)
+        if (e.get("classname") == "func_static") {
+            const std::string model = e.get("model");
+            size_t n = 0;
+            const char* end = model.data() + model.size();
+            if (model.size() >= 2 && model[0] == '*' &&
+                std::from_chars(model.data() + 1, end, n).ptr == end && n >= 1 &&
+                n < bsp.models.size() && movers.moverOfModel[n] == kNoIndex && still.insert(n).second)
+                addBrushes(out, bsp, n, kNoIndex, movers.originOfModel[n], worldPlanes,
+                           nonsolidShaders, where);
+        }
+    // A mover's brushes, in its object space (the model's own).
+    for (size_t n = 1; n < movers.moverOfModel.size(); ++n)
+        if (movers.moverOfModel[n] != kNoIndex) {
+            std::map<int32_t, uint32_t> planes;
+            addBrushes(out, bsp, n, movers.moverOfModel[n], glm::vec3(0.0f), planes,
+                       nonsolidShaders, where);
+        }
     addTriggers(out, bsp, entities, where, notes);
+    out.triggers.insert(out.triggers.end(), movers.triggers.begin(), movers.triggers.end());
     return out;
 }
 

@@ -10,6 +10,7 @@
 #include "world/collision.hpp"
 #include "world/import/q3/bsp_file.hpp"
 #include "world/import/q3/entity_lump.hpp"
+#include "world/import/q3/mover_import.hpp"
 
 namespace onelight::world::q3 {
 
@@ -25,12 +26,15 @@ namespace onelight::world::q3 {
    game frees it.
 */
 
-/// `nonsolidShaders[s]`: shader s's script says surfaceparm nonsolid. Appends a note per trigger
-/// left out to `notes`. Throws world::Error naming `where` and the entity's line for a trigger
-/// whose model is not a brush model of the map.
+/// `nonsolidShaders[s]`: shader s's script says surfaceparm nonsolid. Besides the world's
+/// brushes: a func_static's, where its origin puts them; each of `movers`' brush models', owned
+/// by its mover (in its object space); and `movers`' triggers after the map's. Appends a note per
+/// trigger left out to `notes`. Throws world::Error naming `where` and the entity's line for a
+/// trigger whose model is not a brush model of the map.
 [[nodiscard]] LevelCollision importCollision(const BspFile& bsp,
                                              const std::vector<MapEntity>& entities,
                                              const std::vector<bool>& nonsolidShaders,
+                                             const ImportedMovers& movers,
                                              const std::string& where,
                                              std::vector<std::string>& notes);
 

@@ -8,6 +8,7 @@
 #include <map>
 #include <numbers>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include "shading.hpp"
@@ -24,6 +25,7 @@
 #include "world/import/q3/lightmap_pages.hpp"
 #include "world/import/q3/map_axes.hpp"
 #include "world/import/q3/map_source.hpp"
+#include "world/import/q3/mover_import.hpp"
 #include "world/import/q3/patch_tessellation.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 #include "world/import/q3/q3map2_command_line.hpp"
@@ -754,15 +756,32 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     const ShaderScripts scripts = loadShaderScripts(files);
     checkSurfaceSizes(bsp, scripts, options.patchLevel, map.where);
     MaterialTable materials{level, files, {}, {}, {}, 0, q3map2.areaScale};
-    std::map<uint32_t, MeshInstance> meshes;  // by material
+    // The movers: their entities first, then their surfaces as their dynamic meshes.
+    ImportedMovers movers = importMovers(bsp, entities, map.where);
+    level.importNotes.insert(level.importNotes.end(), movers.notes.begin(), movers.notes.end());
+    const uint32_t firstMoverEntity = uint32_t(level.entities.size());
+    level.entities.insert(level.entities.end(), movers.entities.begin(), movers.entities.end());
+    level.movers = movers.movers;
+    for (Mover& m : level.movers.movers) m.entity += firstMoverEntity;
+    std::vector<uint32_t> modelOfSurface(bsp.surfaces.size(), 0);
+    for (size_t n = 1; n < bsp.models.size(); ++n)
+        for (int32_t k = 0; k < bsp.models[n].surfaceCount; ++k) {
+            const size_t surface = size_t(bsp.models[n].firstSurface + k);
+            if (surface < modelOfSurface.size()) modelOfSurface[surface] = uint32_t(n);
+        }
+    std::map<uint32_t, MeshInstance> meshes;                       // static, by material
+    std::map<std::pair<uint32_t, uint32_t>, MeshInstance> moving;  // by mover and material
     for (size_t s = 0; s < bsp.surfaces.size(); ++s) {
         const BspSurface& f = bsp.surfaces[s];
         if (f.type == kSurfaceFlare || f.vertexCount == 0) continue;
+        const uint32_t model = modelOfSurface[s];
         const BspShader& shader = bsp.shaders[size_t(f.shader)];
         const ShaderScript* script = scriptOf(scripts, shader);
         if (!drawn(shader, script)) continue;
         const uint32_t material = materials.materialOf(shader, f.shader, script);
-        MeshInstance& mesh = meshes[material];
+        const uint32_t mover = model < movers.moverOfModel.size() ? movers.moverOfModel[model]
+                                                                  : kNoIndex;
+        MeshInstance& mesh = mover == kNoIndex ? meshes[material] : moving[{mover, material}];
         std::vector<PatchPoint> points;
         std::vector<uint32_t> triangles;
         if (f.type == kSurfacePatch) {
@@ -781,6 +800,18 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         }
         std::vector<Vertex> vertices;
         for (const PatchPoint& p : points) vertices.push_back(levelVertex(p));
+        if (mover != kNoIndex) {  // in the mover's object space: the model's own
+            appendOriented(mesh, vertices, triangles);
+            continue;
+        }
+        // Another brush model (a func_static's) is drawn where its entity's origin puts it.
+        const glm::vec3 offset =
+            model < movers.originOfModel.size() ? movers.originOfModel[model] : glm::vec3(0.0f);
+        if (offset != glm::vec3(0.0f)) {
+            for (Vertex& v : vertices) v.position += offset;
+            for (PatchPoint& p : points) p.position += glm::vec3(offset.x, -offset.z, offset.y) /
+                                                       float(kQuake3MetresPerUnit);
+        }
         appendOriented(mesh, vertices, triangles);
         const uint32_t page = lightmaps.colourPage(f.lightmap);
         appendImportedLight(level.importedLightmap, points, triangles,
@@ -789,6 +820,17 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     for (auto& [material, mesh] : meshes) {
         mesh.material = material;
         mesh.nodeName = mesh.meshName = level.materials[material].name;
+        level.instances.push_back(std::move(mesh));
+    }
+    for (auto& [key, mesh] : moving) {
+        const Entity& entity = level.entities[level.movers.movers[key.first].entity];
+        mesh.material = key.second;
+        mesh.dynamic = true;
+        mesh.entity = level.movers.movers[key.first].entity;
+        mesh.nodeName = entity.name;
+        mesh.meshName = level.materials[key.second].name;
+        mesh.worldFromLocal = glm::translate(glm::dmat4(1.0), glm::dvec3(entity.position)) *
+                              glm::dmat4(glm::mat4_cast(entity.rotation));
         level.instances.push_back(std::move(mesh));
     }
     level.importedLightmap.producer = "q3map2";
@@ -830,7 +872,8 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         const ShaderScript* script = scriptOf(scripts, shader);
         nonsolid.push_back(script && script->surfaceParms.count("nonsolid"));
     }
-    level.collision = importCollision(bsp, entities, nonsolid, map.where, level.importNotes);
+    level.collision =
+        importCollision(bsp, entities, nonsolid, movers, map.where, level.importNotes);
     level.importedVisibility = importVisibility(bsp, map.where);
     addComputedSpawn(level, map.where);
     const size_t skyLights = level.lights.size();
