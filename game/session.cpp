@@ -89,7 +89,7 @@ void startSession(Session& s, const assets::LoadedLevel& loaded) {
     std::vector<ecs::Entity> moverEntities;
     for (const world::Mover& mover : level.movers.movers)
         moverEntities.push_back(ecsOf[mover.entity]);
-    s.movers = startMovers(level, std::move(moverEntities));
+    s.movers = startMovers(level, std::move(moverEntities), &s.registry);
     for (uint32_t i = 0; i < level.lights.size(); ++i) {
         s.lightNames.push_back(level.lights[i].name);
         if (level.lights[i].role == world::LightRole::kPrimary) s.primaryCandidates.push_back(i);

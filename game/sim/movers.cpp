@@ -211,7 +211,8 @@ glm::vec3 evaluate(const Trajectory& t, double seconds) {
     return t.base;
 }
 
-MoverWorld startMovers(const world::CompiledLevel& level, std::vector<ecs::Entity> entityOf) {
+MoverWorld startMovers(const world::CompiledLevel& level, std::vector<ecs::Entity> entityOf,
+                       ecs::Registry* registry) {
     MoverWorld w;
     w.level = &level;
     w.entityOf = std::move(entityOf);
@@ -268,6 +269,8 @@ MoverWorld startMovers(const world::CompiledLevel& level, std::vector<ecs::Entit
                 break;
         }
         m.pose = poseAt(w, i, 0.0);
+        if (registry && i < w.entityOf.size() && w.entityOf[i] != ecs::kNullEntity)
+            registry->emplace<MoverState>(w.entityOf[i], MoverState{i, moverPhase(w, i)});
     }
     return w;
 }
@@ -371,6 +374,7 @@ void moverSystem(ecs::Registry& registry, const ecs::Tick& tick, MoverWorld& w,
             t->position = pose.origin;
             t->turn = pose.turn;
         }
+        if (MoverState* state = registry.tryGet<MoverState>(e)) *state = {i, moverPhase(w, i)};
         if (DynamicLighting* lit = registry.tryGet<DynamicLighting>(e)) {
             const world::Entity& entity = w.level->entities[all[i].entity];
             lit->fixedOrigin = true;

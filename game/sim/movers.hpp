@@ -39,6 +39,13 @@ struct Trajectory {
 // A binary mover's state (Quake 3's moverState).
 enum class MoverPhase { kAtPos1, kToPos2, kAtPos2, kToPos1 };
 
+// On a mover's ECS entity: which mover it is and its phase this tick (moverPhase's), for
+// replays.
+struct MoverState {
+    uint32_t index = 0;  // into the level's movers
+    MoverPhase phase = MoverPhase::kAtPos1;
+};
+
 // One mover's motion this tick.
 struct MoverMotion {
     Trajectory position;            // of its origin
@@ -63,9 +70,11 @@ struct MoverWorld {
 };
 
 // Every mover at rest at time 0 (a train at its first corner); `entityOf` links each to the ECS
-// entity that draws it, whose Transform and DynamicLighting the system keeps up to date.
+// entity that draws it, whose Transform, DynamicLighting and MoverState (added here when
+// `registry` is given) the system keeps up to date.
 [[nodiscard]] MoverWorld startMovers(const world::CompiledLevel& level,
-                                     std::vector<ecs::Entity> entityOf);
+                                     std::vector<ecs::Entity> entityOf,
+                                     ecs::Registry* registry = nullptr);
 
 // Quake 3's Use_BinaryMover on mover `index` (its team's master acts): from rest it starts to
 // pos2 50 ms later; at pos2 it holds another `wait`; moving, it turns round where it stands.

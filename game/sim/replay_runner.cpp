@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "items.hpp"
+#include "movers.hpp"
 
 namespace onelight::game {
 
@@ -95,6 +96,14 @@ ReplayRunner makeReplayRunner(replay::Script script, std::vector<std::string> li
     if (player != ecs::kNullEntity && registry.allOf<Transform>(player))
         r.origin = registry.get<Transform>(player).position;
     for (const Command& c : r.script.commands) {
+        if (c.kind == CommandKind::kExpectMover || c.kind == CommandKind::kExpectRiding) {
+            const ecs::Entity e = findNamed(registry, c.name);
+            if (e == ecs::kNullEntity || !registry.allOf<MoverState>(e))
+                throw ReplayFailure(place(r, c) + "unknown mover '" + c.name +
+                                    "' (the level's movers are named CLASSNAME_N, e.g. "
+                                    "func_door_1)");
+            continue;
+        }
         if (c.kind == CommandKind::kExpectItem) {
             const ecs::Entity e = findNamed(registry, c.name);
             if (e == ecs::kNullEntity || !registry.allOf<Item>(e))
@@ -200,6 +209,33 @@ ReplayAfterTick finishReplayTick(ReplayRunner& r, uint64_t tick, const ecs::Regi
                                         (c.on ? "visible" : "taken") + ", but it is " +
                                         (item.present ? "visible" : "taken") + " (taken " +
                                         std::to_string(item.timesTaken) + " times so far)");
+                break;
+            }
+            case CommandKind::kExpectMover: {
+                static constexpr const char* kWords[] = {"rest", "open", "moving"};
+                const MoverPhase phase =
+                    registry.get<MoverState>(findNamed(registry, c.name)).phase;
+                const int found = phase == MoverPhase::kAtPos1   ? 0
+                                  : phase == MoverPhase::kAtPos2 ? 1
+                                                                 : 2;
+                if (found != c.count)
+                    throw ReplayFailure(place(r, c) + "expected mover '" + c.name + "' " +
+                                        kWords[c.count] + ", but it is " + kWords[found]);
+                break;
+            }
+            case CommandKind::kExpectRiding: {
+                const ecs::Entity player = findNamed(registry, "player");
+                if (player == ecs::kNullEntity || !registry.allOf<Player>(player))
+                    throw ReplayFailure(place(r, c) + "there is no player");
+                const uint32_t mover = registry.get<MoverState>(findNamed(registry, c.name)).index;
+                const uint32_t ground = registry.get<Player>(player).groundMover;
+                if (ground != mover) {
+                    std::string on = "on no mover";
+                    for (auto [e, name, state] : registry.view<Name, MoverState>().each())
+                        if (state.index == ground) on = "on " + name.value;
+                    throw ReplayFailure(place(r, c) + "expected the player riding '" + c.name +
+                                        "', but it stands " + on);
+                }
                 break;
             }
             case CommandKind::kExpectOnGround:

@@ -90,7 +90,7 @@ const std::set<std::string_view>& knownKeys() {
 }
 
 constexpr const char* kPlayerChecks =
-    "on-ground, in-air, moved, feet, height, velocity, teleports, launches or respawns";
+    "on-ground, in-air, moved, feet, height, velocity, teleports, launches, respawns or riding";
 
 }  // namespace
 
@@ -197,7 +197,8 @@ Script parseScript(std::string_view text, const std::string& path) {
                 p.fail("expected a capture name without '/' or '..', found '" +
                        LineParser::quoted(c.name) + "'");
         } else if (head == "expect") {
-            std::string_view what = p.word("'primary', 'effect-lights', 'player' or 'item'");
+            std::string_view what =
+                p.word("'primary', 'effect-lights', 'player', 'item' or 'mover'");
             if (what == "primary") {
                 c.kind = CommandKind::kExpectPrimary;
                 c.name = std::string(p.word("an entity name"));
@@ -239,6 +240,9 @@ Script parseScript(std::string_view text, const std::string& path) {
                         float(p.bounded("a highest height in metres", kMaxScriptCoordinate));
                     if (!(c.values[0] <= c.values[1]))
                         p.fail("expected the lowest height first (MIN <= MAX)");
+                } else if (check == "riding") {
+                    c.kind = CommandKind::kExpectRiding;
+                    c.name = std::string(p.word("a mover's name"));
                 } else if (check == "teleports" || check == "launches" || check == "respawns") {
                     c.kind = check == "teleports"  ? CommandKind::kExpectTeleports
                              : check == "launches" ? CommandKind::kExpectLaunches
@@ -259,10 +263,18 @@ Script parseScript(std::string_view text, const std::string& path) {
                     p.fail("expected 'visible' or 'taken' after the item's name, found '" +
                            LineParser::quoted(state) + "'");
                 c.on = state == "visible";
+            } else if (what == "mover") {
+                c.kind = CommandKind::kExpectMover;
+                c.name = std::string(p.word("a mover's name"));
+                const std::string_view state = p.word("'rest', 'open' or 'moving'");
+                if (state != "rest" && state != "open" && state != "moving")
+                    p.fail("expected 'rest', 'open' or 'moving' after the mover's name, found '" +
+                           LineParser::quoted(state) + "'");
+                c.count = state == "rest" ? 0 : state == "open" ? 1 : 2;
             } else {
                 p.fail(
-                    "expected 'primary', 'effect-lights', 'player' or 'item' after 'expect', "
-                    "found '" +
+                    "expected 'primary', 'effect-lights', 'player', 'item' or 'mover' after "
+                    "'expect', found '" +
                     LineParser::quoted(what) + "'");
             }
         } else if (head == "quit") {

@@ -28,6 +28,11 @@
 //   expect player respawns N       start of the replay
 //   expect item NAME visible       a level item (e.g. weapon_rocketlauncher_1) is there to take
 //   expect item NAME taken         ... is taken and not back yet
+//   expect mover NAME rest|open|moving
+//                                  a level mover (e.g. func_door_1): a door, plat or button at
+//                                  rest, at its open end, or on its way; a train held at a
+//                                  corner (rest) or on a leg (moving); others are at rest
+//   expect player riding NAME      the player stands on mover NAME
 //   quit
 //
 // Parsing checks the syntax, numbers and times; entity and light names are resolved (and
@@ -69,6 +74,8 @@ enum class CommandKind {
     kExpectLaunches,   // count
     kExpectRespawns,   // count
     kExpectItem,       // name: the item; on: visible (else taken)
+    kExpectMover,      // name: the mover; count: 0 rest, 1 open, 2 moving
+    kExpectRiding,     // name: the mover the player stands on
     kQuit
 };
 
