@@ -1,5 +1,7 @@
 #include "bake/grid/light_grid.hpp"
 
+#include "world/features/feature_analysis.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -8,6 +10,7 @@
 
 #include "bake/lighting/direct_light.hpp"
 #include "bake/parallel_for.hpp"
+#include "world/features/feature_analysis.hpp"
 
 namespace onelight::bake {
 namespace {
@@ -92,6 +95,13 @@ world::LightGrid layoutLightGrid(const world::CompiledLevel& level, const GridSe
     if (level.features.flags & world::kFeatureAuthoredGrid) {
         lo = level.features.gridMin;
         hi = level.features.gridMax;
+    } else {
+        // Wherever a dynamic object goes too (a mover rising above an open floor).
+        glm::vec3 reachMin, reachMax;
+        if (world::dynamicObjectReach(level, reachMin, reachMax)) {
+            lo = glm::min(lo, reachMin);
+            hi = glm::max(hi, reachMax);
+        }
     }
     return layoutLightGridOver(lo, hi, settings);
 }

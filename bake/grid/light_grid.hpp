@@ -24,7 +24,8 @@ struct GridSettings {
 };
 
 /// Origin, cell size and dimensions (cells empty) over the authored grid bounds when the
-/// level has them, else over the static geometry's bounds.
+/// level has them, else over the static geometry's bounds and wherever its dynamic objects go
+/// (world::dynamicObjectReach: a mover may rise above an open floor).
 [[nodiscard]] world::LightGrid layoutLightGrid(const world::CompiledLevel& level,
                                                const GridSettings& settings);
 /// The same over the box [boxMin, boxMax].

@@ -65,6 +65,24 @@ TEST(ReplayScript, ExpectsAnItemVisibleOrTaken) {
     EXPECT_EQ(s.commands[1].tick, 120u);
 }
 
+TEST(ReplayScript, ExpectsAMoversStateAndThePlayerRidingIt) {
+    Script s = parseScript(
+        "at 1 expect mover func_door_1 rest\n"
+        "at 1 expect mover func_plat_2 open\n"
+        "at 1 expect mover func_train_1 moving\n"
+        "at 2 expect player riding func_plat_2\n",
+        "movers.replay");
+    ASSERT_EQ(s.commands.size(), 4u);
+    EXPECT_EQ(s.commands[0].kind, CommandKind::kExpectMover);
+    EXPECT_EQ(s.commands[0].name, "func_door_1");
+    EXPECT_EQ(s.commands[0].count, 0);
+    EXPECT_EQ(s.commands[1].count, 1);
+    EXPECT_EQ(s.commands[2].count, 2);
+    EXPECT_EQ(s.commands[3].kind, CommandKind::kExpectRiding);
+    EXPECT_EQ(s.commands[3].name, "func_plat_2");
+    EXPECT_EQ(s.commands[3].tick, 120u);
+}
+
 TEST(ReplayScript, WaitMovesTheCursorAndTickRateScalesTicks) {
     Script s = parseScript(
         "tick 30\n# comment\n\nfire\nwait 0.5\nfire   # trailing comment\n"
@@ -100,7 +118,8 @@ TEST(ReplayScript, BadInputNamesFileLineAndExpectation) {
         {"tick 0\n", "s.replay:1: expected a tick rate between 1 and 1000 Hz"},
         {"expect player flying\n",
          "s.replay:1: expected on-ground, in-air, moved, feet, height, velocity, teleports, "
-         "launches or respawns after 'expect player', found 'flying'"},
+         "launches, respawns or riding after 'expect player', found 'flying'"},
+        {"expect player riding\n", "s.replay:1: expected a mover's name"},
         {"expect player feet 1 2 3\n", "s.replay:1: expected within at the end of the line"},
         {"expect player velocity 1 2 3 within -1\n",
          "s.replay:1: expected a tolerance of zero or more"},
@@ -109,8 +128,11 @@ TEST(ReplayScript, BadInputNamesFileLineAndExpectation) {
         {"expect player moved -1\n", "s.replay:1: expected a distance from 0 to 1e6 metres"},
         {"expect player moved\n", "s.replay:1: expected a distance in metres"},
         {"expect weather\n",
-         "s.replay:1: expected 'primary', 'effect-lights', 'player' or 'item' after 'expect', "
-         "found 'weather'"},
+         "s.replay:1: expected 'primary', 'effect-lights', 'player', 'item' or 'mover' after "
+         "'expect', found 'weather'"},
+        {"expect mover func_door_1 ajar\n",
+         "s.replay:1: expected 'rest', 'open' or 'moving' after the mover's name, found 'ajar'"},
+        {"expect mover\n", "s.replay:1: expected a mover's name"},
         {"expect item weapon_shotgun_1 gone\n",
          "s.replay:1: expected 'visible' or 'taken' after the item's name, found 'gone'"},
         {"expect item\n", "s.replay:1: expected an item's name"},

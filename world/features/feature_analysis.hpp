@@ -14,9 +14,9 @@ namespace onelight::world {
                                        const glm::vec3& authoredGridMax, float gridMargin = 1.0f);
 
 /// Where the level's dynamic objects can go: the world box of every dynamic entity's meshes at
-/// its place and, for a mover, at the far end of its path (its triangle wave goes between the
-/// two, and the box of a straight move is the union of its ends' boxes). False when the level
-/// has no dynamic entity with a vertex.
+/// its place and, for a mover, at the poses that bound its path (world::moverReach: a straight
+/// move's box is the union of its ends' boxes; a turn's is sampled every eighth of a turn). False
+/// when the level has no dynamic entity with a vertex.
 [[nodiscard]] bool dynamicObjectReach(const CompiledLevel& level, glm::vec3& boxMin,
                                       glm::vec3& boxMax);
 
