@@ -278,6 +278,23 @@ TEST(Quake3Replay, KaosTeleportsAndJumpsAsQuake3Does) {
     expectCapturesMatchGoldens(dir, "kaos", {"start", "teleported", "apex", "landed"});
 }
 
+// OpenArena's oa_dm2 with its movers (game/replays/oa_dm2.replay): the player takes an armour,
+// then rides the map's plat up as its trigger raises it, checked by the replay's expect lines,
+// with goldens of the three captures (compiled, not baked, as kaos).
+TEST(Quake3Replay, OaDm2TakesAnArmourAndRidesThePlatUp) {
+    if (const std::string missing = missingOpenArena(); !missing.empty()) GTEST_SKIP() << missing;
+    const std::string dir = outputDir("oa_dm2");
+    const std::string package = dir + "/oa_dm2.olpak";
+    CommandResult compile = onelight::test::runCommand(std::string(ONELIGHT_BAKE_EXE) +
+                                                       " compile oa_dm2 -o " + package);
+    ASSERT_EQ(compile.exitCode, 0) << compile.output;
+    CommandResult play = runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
+                                     "/oa_dm2.replay --headless --size 320x180 --capture-dir " +
+                                     dir);
+    ASSERT_EQ(play.exitCode, 0) << play.output;
+    expectCapturesMatchGoldens(dir, "oa_dm2", {"start", "plat", "up"});
+}
+
 // A package that does not come from a Quake 3 map has no q3map2 lightmaps to show.
 TEST(Quake3Replay, TheQ3map2ViewOfAnotherLevelIsRefused) {
     CommandResult r =
