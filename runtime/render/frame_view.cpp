@@ -17,6 +17,10 @@ namespace onelight::render {
 
 namespace {
 
+// How far around a dynamic object the static surfaces that stand for it in the potentially
+// visible set reach (metres): an item's floor, a door's frame, a plat's shaft.
+constexpr float kDynamicCullMargin = 1.0f;
+
 // The world-space box around an object-space box moved by m.
 void worldBounds(const glm::mat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec3& outMin,
                  glm::vec3& outMax) {
@@ -236,12 +240,35 @@ DrawList buildDrawList(const Scene& scene, const RendererOptions& options, const
             surface.boundsMax);
         ++stats.surfacesDrawn;
     }
+    // A dynamic object is out of sight when the static surfaces around it (the clusters whose
+    // bounds meet its box grown by kDynamicCullMargin) are all out of the eye's potentially
+    // visible set; one near no surface (in the open) is never culled so.
+    const std::vector<glm::vec3>& clusterMin = scene.baked.clusterMin;
+    const std::vector<glm::vec3>& clusterMax = scene.baked.clusterMax;
+    auto hiddenByVisibility = [&](glm::vec3 lo, glm::vec3 hi) {
+        if (visibleRow == kNoIndex || clusterMin.empty()) return false;
+        lo -= glm::vec3(kDynamicCullMargin);
+        hi += glm::vec3(kDynamicCullMargin);
+        bool near = false;
+        for (uint32_t c = 0; c < clusterMin.size(); ++c) {
+            if (glm::any(glm::greaterThan(lo, clusterMax[c])) ||
+                glm::any(glm::lessThan(hi, clusterMin[c])))
+                continue;
+            if (world::clusterInRow(visibility, visibleRow, c)) return false;
+            near = true;
+        }
+        return near;
+    };
     list.entityVisible.assign(entityCount, 0);
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
         if (view.entityHidden[mesh.entity]) continue;
         glm::vec3 lo, hi;
         worldBounds(view.entityTransforms[mesh.entity], mesh.boundsMin, mesh.boundsMax, lo, hi);
         if (!intersects(frustum, lo, hi)) continue;
+        if (hiddenByVisibility(lo, hi)) {
+            ++stats.dynamicMeshesHidden;
+            continue;
+        }
         list.entityVisible[mesh.entity] = 1;
         Draw d = drawOf(mesh, view.entityPrimary[mesh.entity]);
         d.fadeLight = view.entityFadeFrom[mesh.entity];
@@ -296,16 +323,18 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
 }
 
 void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
-    // Opaque draws first, sorted by pipeline, then static before dynamic, then by what a draw
-    // binds and pushes, then by index range, so that the surfaces a draw could share lie side
-    // by side; dynamic meshes front to back. With geometryOnly (the raster floor) only the index
-    // range counts. Static and dynamic draws never share a state, so the two orders never meet
-    // (a strict weak order). Blended draws (keyAlphaBlend) last, back to front by their bounds'
+    // Opaque draws first: static before dynamic (the level's walls fill the depth buffer
+    // first, so that a dynamic object behind them is rejected before it is shaded: a map's
+    // items and movers are mostly out of sight), then by pipeline, then by what a draw binds and
+    // pushes, then by index range, so that the surfaces a draw could share lie side by side;
+    // dynamic meshes front to back. With geometryOnly (the raster floor) only the index range
+    // counts. Static and dynamic draws never share a state, so the two orders never meet (a
+    // strict weak order). Blended draws (keyAlphaBlend) last, back to front by their bounds'
     // centres, each over what is behind it.
     const auto state = [geometryOnly](const Draw& d) {
         const uint32_t dynamic = d.entity == kNoIndex ? 0u : 1u;
-        return geometryOnly ? std::make_tuple(0u, dynamic, 0u, 0u, 0u)
-                            : std::make_tuple(d.key, dynamic, d.material, d.primaryLight, d.atlas);
+        return geometryOnly ? std::make_tuple(dynamic, 0u, 0u, 0u, 0u)
+                            : std::make_tuple(dynamic, d.key, d.material, d.primaryLight, d.atlas);
     };
     std::stable_sort(draws.begin(), draws.end(), [&](const Draw& a, const Draw& b) {
         const bool blendA = !geometryOnly && keyAlphaBlend(a.key);
@@ -331,32 +360,27 @@ void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
     draws.resize(kept);
 }
 
-void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                         const SceneGeometry& geometry, const FrameView& view, const DrawList& list,
-                         GpuObjectLighting* out) {
+uint32_t writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
+                             const SceneGeometry& geometry, const FrameView& view,
+                             const DrawList& list, glm::vec4* out,
+                             std::vector<uint32_t>& recordOf) {
     const bool useGrid = baked.present && !baked.grid.cells.empty();
     const std::vector<glm::vec3>& lo = geometry.entityBoundsMin;
     const std::vector<glm::vec3>& hi = geometry.entityBoundsMax;
+    const uint32_t header = glsl::OBJECT_RECORD_HEADER;
+    // The placeholder at vector 0: the constant ambient (the neutral textures' value), visible.
+    out[0] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    out[1] = glm::vec4(0.0f);
+    for (uint32_t f = 0; f < 6; ++f) out[header + f] = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
+    out[header].w = 1.0f;
+    uint32_t next = header + 6, overflow = 0;
+    recordOf.assign(level.entities.size(), kNoIndex);
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
-        GpuObjectLighting o{};
-        o.from = glm::vec4(glm::vec3(view.entityTransforms[e][3]), 1.0f);
-        if (!useGrid) {  // the placeholder textures' neutral values: the ambient, visible
-            for (size_t f = 0; f < 6; ++f)
-                o.ambientCube[f] = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
-            o.ambientCube[0].w = 1.0f;
-            out[e] = o;
-            continue;
-        }
+        recordOf[e] = 0;
+        if (!useGrid) continue;
         const glm::mat4& m = view.entityTransforms[e];
         const uint32_t primary = view.entityPrimary[e];
-        auto sampleAt = [&](glm::vec3 point, uint32_t s) {
-            const world::LightGridSample sample = world::sampleLightGrid(baked.grid, point);
-            for (size_t f = 0; f < 6; ++f)
-                o.ambientCube[6 * s + f] = glm::vec4(sample.ambientCube[f], 0.0f);
-            o.ambientCube[6 * s].w =
-                primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
-        };
         // The longest axis of its bounds, in the world: samples a grid cell or less apart along
         // it, end to end (at most MAX_OBJECT_SAMPLES), when it is longer than a cell's smallest
         // side; else one at its origin.
@@ -373,18 +397,36 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
         const float length = glm::length(d);
         const float cell =
             std::min({baked.grid.cellSize.x, baked.grid.cellSize.y, baked.grid.cellSize.z});
-        if (length > cell) {
-            const uint32_t samples = std::min(uint32_t(std::ceil(length / cell)) + 1u,
-                                              uint32_t(glsl::MAX_OBJECT_SAMPLES));
+        const uint32_t samples =
+            length > cell ? std::min(uint32_t(std::ceil(length / cell)) + 1u,
+                                     uint32_t(glsl::MAX_OBJECT_SAMPLES))
+                          : 1u;
+        if (next + header + 6 * samples > glsl::MAX_OBJECT_VECTORS) {
+            ++overflow;  // past the array's room: the placeholder
+            continue;
+        }
+        glm::vec4* r = out + next;
+        recordOf[e] = next;
+        next += header + 6 * samples;
+        auto sampleAt = [&](glm::vec3 point, uint32_t s) {
+            const world::LightGridSample sample = world::sampleLightGrid(baked.grid, point);
+            for (uint32_t f = 0; f < 6; ++f)
+                r[header + 6 * s + f] = glm::vec4(sample.ambientCube[f], 0.0f);
+            r[header + 6 * s].w =
+                primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
+        };
+        if (samples > 1) {
             for (uint32_t s = 0; s < samples; ++s)
                 sampleAt(from + d * (float(s) / float(samples - 1)), s);
-            o.from = glm::vec4(from, float(samples));
-            o.axis = glm::vec4(d / (length * length), 0.0f);
+            r[0] = glm::vec4(from, float(samples));
+            r[1] = glm::vec4(d / (length * length), 0.0f);
         } else {
             sampleAt(glm::vec3(m[3]), 0);
+            r[0] = glm::vec4(glm::vec3(m[3]), 1.0f);
+            r[1] = glm::vec4(0.0f);
         }
-        out[e] = o;
     }
+    return overflow;
 }
 
 FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options,

@@ -3,6 +3,7 @@
 #include "render/scene.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -782,6 +783,18 @@ void createScene(const vk::Context& ctx, Scene& scene, const assets::LoadedLevel
     createBakedLighting(ctx, scene.baked, loaded, scene.level.ambientLux);
     if (scene.baked.present && options.skipUniformShadows && !options.flatShading)
         applySurfaceShadows(scene.geometry, loaded);
+    const world::Visibility& visibility = scene.baked.visibility;
+    if (!visibility.empty() && visibility.surfaceCluster.size() == scene.geometry.surfaces.size()) {
+        scene.baked.clusterMin.assign(visibility.clusterCount, glm::vec3(FLT_MAX));
+        scene.baked.clusterMax.assign(visibility.clusterCount, glm::vec3(-FLT_MAX));
+        for (size_t i = 0; i < scene.geometry.surfaces.size(); ++i) {
+            const uint32_t c = visibility.surfaceCluster[i];
+            scene.baked.clusterMin[c] =
+                glm::min(scene.baked.clusterMin[c], scene.geometry.surfaces[i].boundsMin);
+            scene.baked.clusterMax[c] =
+                glm::max(scene.baked.clusterMax[c], scene.geometry.surfaces[i].boundsMax);
+        }
+    }
     createProbes(ctx, scene.probes, loaded.baked.probes, scene.baked.present && options.probes,
                  scene.level.boundsMin, scene.level.boundsMax);
     createSky(ctx, scene.sky, loaded.sky);

@@ -103,6 +103,9 @@ struct BakedLightingMaps {
     std::vector<glm::vec2> atlasUvScale;  // per atlas: uv1 to the lightmap array's uv
     world::LightGrid grid;                // empty without baked lighting
     world::Visibility visibility;         // the package's potentially visible set; may be empty
+    // Each cluster's surfaces' bounds (world), for culling a dynamic object by the clusters
+    // around it (frame_view.cpp); empty without visibility.
+    std::vector<glm::vec3> clusterMin, clusterMax;
 };
 
 /// The environment probes' cube array and records, or one uniform placeholder cube.

@@ -258,7 +258,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     struct Config {
         const char* name;
         render::RendererOptions options;
-        bool withoutItems = false;  // the map's pickups hidden (a Quake 3 map's items)
+        bool withoutItems = false;  // the map's pickups and movers hidden (a Quake 3 map's)
     };
     std::vector<Config> configs(18);
     for (Config& c : configs) c.options.requestedMsaa = 4;
@@ -294,12 +294,13 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     configs[15].options.sunCascades = 1;
     configs[16].name = "shadow lookups on every lit surface";
     configs[16].options.skipUniformShadows = false;
-    configs[17].name = "without the level's items";
+    configs[17].name = "without the level's items and movers";
     configs[17].withoutItems = true;
-    // The items where the level places them (as inputs without transforms draw them), hidden.
+    // The items and movers where the level places them (as inputs without transforms draw
+    // them), hidden.
     std::vector<render::DynamicTransform> hiddenItems;
     for (uint32_t e = 0; e < level.level.entities.size(); ++e)
-        if (level.level.entities[e].flags & world::kEntityItem) {
+        if (level.level.entities[e].flags & (world::kEntityItem | world::kEntityMover)) {
             render::DynamicTransform t;
             t.entity = e;
             t.worldFromObject =
@@ -353,10 +354,12 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     for (auto it = renderers.rbegin(); it != renderers.rend(); ++it) render::destroyRenderer(*it);
     std::printf(
         "onelight-bench-render --view %s %s: 1280x720, MSAA %ux, %s, %d interleaved frames, "
-        "medians; %u surfaces, %llu triangles drawn, %u draws\n",
+        "medians; %u surfaces, %u dynamic meshes (%u more in view hidden by the visible set), "
+        "%llu triangles drawn (%llu without the items and movers), %u draws\n",
         package.c_str(), cameraName.c_str(), msaa, ctx.properties.deviceName, kFrames,
-        last[0].surfacesDrawn, static_cast<unsigned long long>(last[0].trianglesDrawn),
-        last[0].draws);
+        last[0].surfacesDrawn, last[0].dynamicMeshesDrawn, last[0].dynamicMeshesHidden,
+        static_cast<unsigned long long>(last[0].trianglesDrawn),
+        static_cast<unsigned long long>(last[17].trianglesDrawn), last[0].draws);
     std::printf("  %-42s %9s %9s %9s %9s %9s %11s\n", "configuration", "GPU ms", "shadows",
                 "forward", "tonemap", "/ floor", "px off %");
     const double floor = median(gpu[12]);
