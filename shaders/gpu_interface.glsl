@@ -62,7 +62,7 @@ const int BINDING_TONEMAP_LUT = 1;  // sampler3D, the colour LUT
 // The post-process anti-aliasing pass's set 0 (RendererOptions::fxaa).
 const int BINDING_FXAA_INPUT = 0;  // sampler2D, the tonemapped frame
 
-// Specialization constants of forward.frag.
+// Specialization constants of forward_shading.glsl.
 const int SPEC_MATERIAL_CLASS = 0;     // MATERIAL_* of lighting.glsl
 const int SPEC_ALPHA_MODE = 1;         // ALPHA_MODE_*: the materials' glTF alpha mode
 const int SPEC_FLAT_SHADING = 2;       // 1: constant colour (the benchmark floor)

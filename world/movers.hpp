@@ -41,22 +41,22 @@ inline constexpr uint32_t kAllMoverFlags = kMoverCrusher;
 struct Mover {
     uint32_t entity = kNoIndex;  // into CompiledLevel::entities: its meshes, drawn at its origin
     MoverKind kind = MoverKind::kShuttle;
-    uint32_t flags = 0;             // MoverFlags
-    glm::vec3 pos1{0.0f};           // where its origin rests (shuttle, binary); bobbing,
-                                    // rotating, pendulum: where it stays; train: unused (0)
-    glm::vec3 pos2{0.0f};           // shuttle, binary: the other end; otherwise pos1
-    glm::vec3 amplitude{0.0f};      // bobbing: the sine's peak offset; otherwise 0
+    uint32_t flags = 0;                // MoverFlags
+    glm::vec3 pos1{0.0f};              // where its origin rests (shuttle, binary); bobbing,
+                                       // rotating, pendulum: where it stays; train: unused (0)
+    glm::vec3 pos2{0.0f};              // shuttle, binary: the other end; otherwise pos1
+    glm::vec3 amplitude{0.0f};         // bobbing: the sine's peak offset; otherwise 0
     glm::vec3 axis{0.0f, 1.0f, 0.0f};  // rotating, pendulum: unit, world; otherwise +y
-    float speed = 0.0f;           // rotating: radians a second; pendulum: peak angle, radians
-    float period = 0.0f;          // shuttle, bobbing, pendulum: seconds, > 0; otherwise 0
-    float phase = 0.0f;           // bobbing, pendulum: the cycle starts phase x period late
-    float travelSeconds = 0.0f;   // binary: pos1 -> pos2 (and back), > 0; otherwise 0
-    float wait = 0.0f;            // binary: seconds held at pos2; < 0: back at once
-    uint32_t teamMaster = kNoIndex;  // a team member's master (into movers): the master's use,
-                                     // state and clock move it; kNoIndex: its own master
-    uint32_t name = kNoIndex;     // the name others use it by (an id of the level's, e.g. a
-                                  // Quake 3 targetname), or kNoIndex
-    uint32_t target = kNoIndex;   // binary: on reaching pos2 it uses every mover of this name
+    float speed = 0.0f;                // rotating: radians a second; pendulum: peak angle, radians
+    float period = 0.0f;               // shuttle, bobbing, pendulum: seconds, > 0; otherwise 0
+    float phase = 0.0f;                // bobbing, pendulum: the cycle starts phase x period late
+    float travelSeconds = 0.0f;        // binary: pos1 -> pos2 (and back), > 0; otherwise 0
+    float wait = 0.0f;                 // binary: seconds held at pos2; < 0: back at once
+    uint32_t teamMaster = kNoIndex;    // a team member's master (into movers): the master's use,
+                                       // state and clock move it; kNoIndex: its own master
+    uint32_t name = kNoIndex;          // the name others use it by (an id of the level's, e.g. a
+                                       // Quake 3 targetname), or kNoIndex
+    uint32_t target = kNoIndex;        // binary: on reaching pos2 it uses every mover of this name
     uint32_t firstPoint = 0, pointCount = 0;  // train: into LevelMovers::path, >= 2
 };
 

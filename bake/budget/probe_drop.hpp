@@ -30,7 +30,7 @@ struct ProbeDropPrediction {
 
 /// What the runtime's secondary specular changes by, seen from each of `views`, when the probes'
 /// normalised radiance P(r) is replaced by the uniform 1 / pi (runtime/render/shaders/
-/// forward.frag without probes), relative to the pixel's whole radiance, per block as
+/// forward_shading.glsl without probes), relative to the pixel's whole radiance, per block as
 /// level-report measures (bake/lab/block_error.hpp).
 /*
    At a sample's first hit x (normal n, view v, reflection r), secondaryRadiance of

@@ -103,8 +103,8 @@ BoxTrace traceBox(const BrushWorld& w, glm::vec3 start, glm::vec3 end, glm::vec3
                     // by the turn's absolute matrix.
                     const glm::vec3 centre = 0.5f * (mins + maxs), half = 0.5f * (maxs - mins);
                     const glm::mat3 r = glm::mat3_cast(toObject);
-                    const glm::vec3 turnedHalf = glm::abs(r[0]) * half.x +
-                                                 glm::abs(r[1]) * half.y + glm::abs(r[2]) * half.z;
+                    const glm::vec3 turnedHalf =
+                        glm::abs(r[0]) * half.x + glm::abs(r[1]) * half.y + glm::abs(r[2]) * half.z;
                     const glm::vec3 turnedCentre = toObject * centre;
                     from += turnedCentre, to += turnedCentre;
                     lo = -turnedHalf, hi = turnedHalf;

@@ -34,20 +34,20 @@ struct BrushWorld {
                                         size_t moverCount = 0);
 
 struct BoxTrace {
-    float fraction = 1.0f;    // of the move done, [0, 1]
-    glm::vec3 end{0.0f};      // start + fraction (end - start)
-    glm::vec3 normal{0.0f};   // the plane it stopped at (when fraction < 1)
-    bool startSolid = false;  // the box starts inside a brush
-    bool allSolid = false;    // ... and stays inside it
+    float fraction = 1.0f;             // of the move done, [0, 1]
+    glm::vec3 end{0.0f};               // start + fraction (end - start)
+    glm::vec3 normal{0.0f};            // the plane it stopped at (when fraction < 1)
+    bool startSolid = false;           // the box starts inside a brush
+    bool allSolid = false;             // ... and stays inside it
     uint32_t mover = world::kNoIndex;  // the mover whose brush it stopped at; kNoIndex: the
                                        // world's, or none
 };
 
 // Which brushes a trace meets.
 enum class TraceBrushes {
-    kAll,        // the world's and every mover's
-    kOneMover,   // only mover `TraceFilter::mover`'s
-    kButMover,   // all but mover `TraceFilter::mover`'s
+    kAll,       // the world's and every mover's
+    kOneMover,  // only mover `TraceFilter::mover`'s
+    kButMover,  // all but mover `TraceFilter::mover`'s
 };
 struct TraceFilter {
     TraceBrushes brushes = TraceBrushes::kAll;

@@ -170,8 +170,8 @@ bool moveTeam(ecs::Registry& registry, MoverWorld& w, uint32_t master, double se
         if (!player) continue;  // nothing to push (no brushes: a glTF level)
         const world::MoverPose to = poseAt(w, part, seconds);
         brushes.moverPoses[part] = brushPoseOf(w, part, to);
-        const Push push = pushPlayer(w, part, w.motion[part].pose, to, brushes, tuning,
-                                     body->position, *player);
+        const Push push =
+            pushPlayer(w, part, w.motion[part].pose, to, brushes, tuning, body->position, *player);
         if (push == Push::kBlocked) break;
         crushed |= push == Push::kCrushed;
     }
@@ -253,16 +253,15 @@ MoverWorld startMovers(const world::CompiledLevel& level, std::vector<ecs::Entit
                 setPhase(w, i, MoverPhase::kAtPos1, 0.0);
                 break;
             case world::MoverKind::kBobbing:
-                m.position = {Trajectory::Type::kSine, r.pos1, r.amplitude, late,
-                              double(r.period)};
+                m.position = {Trajectory::Type::kSine, r.pos1, r.amplitude, late, double(r.period)};
                 break;
             case world::MoverKind::kRotating:
                 m.angle = {Trajectory::Type::kLinear, glm::vec3(0.0f),
                            glm::vec3(r.speed, 0.0f, 0.0f), 0.0, 0.0};
                 break;
             case world::MoverKind::kPendulum:
-                m.angle = {Trajectory::Type::kSine, glm::vec3(0.0f),
-                           glm::vec3(r.speed, 0.0f, 0.0f), late, double(r.period)};
+                m.angle = {Trajectory::Type::kSine, glm::vec3(0.0f), glm::vec3(r.speed, 0.0f, 0.0f),
+                           late, double(r.period)};
                 break;
             case world::MoverKind::kTrain:
                 trainAt(w, i, 0, 0.0);
@@ -305,14 +304,13 @@ void touchMoverTrigger(MoverWorld& w, const world::Trigger& trigger) {
     const MoverPhase phase = w.motion[masterOf(w, trigger.mover)].phase;
     const bool use = r.kind == world::MoverKind::kDoor ? phase != MoverPhase::kToPos2
                                                        : phase == MoverPhase::kAtPos1;
-    if (use && std::find(w.pendingUses.begin(), w.pendingUses.end(), trigger.mover) ==
-                   w.pendingUses.end())
+    if (use &&
+        std::find(w.pendingUses.begin(), w.pendingUses.end(), trigger.mover) == w.pendingUses.end())
         w.pendingUses.push_back(trigger.mover);
 }
 
-void moverSystem(ecs::Registry& registry, const ecs::Tick& tick, MoverWorld& w,
-                 BrushWorld& brushes, const Tuning& tuning, const PlayerWorld& playerWorld,
-                 ecs::Entity player) {
+void moverSystem(ecs::Registry& registry, const ecs::Tick& tick, MoverWorld& w, BrushWorld& brushes,
+                 const Tuning& tuning, const PlayerWorld& playerWorld, ecs::Entity player) {
     if (w.motion.empty()) return;
     const double now = tick.time();
     const std::vector<world::Mover>& all = w.level->movers.movers;

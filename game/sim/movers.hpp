@@ -48,13 +48,13 @@ struct MoverState {
 
 // One mover's motion this tick.
 struct MoverMotion {
-    Trajectory position;            // of its origin
-    Trajectory angle;               // x: radians about the mover's axis
+    Trajectory position;  // of its origin
+    Trajectory angle;     // x: radians about the mover's axis
     MoverPhase phase = MoverPhase::kAtPos1;
-    double thinkAt = -1.0;          // seconds: binary at pos2, when it returns; a train at a
-                                    // corner, when it leaves; < 0: nothing due
-    uint32_t point = 0;             // a train: the corner it left last (into its points)
-    world::MoverPose pose;          // where it is now
+    double thinkAt = -1.0;  // seconds: binary at pos2, when it returns; a train at a
+                            // corner, when it leaves; < 0: nothing due
+    uint32_t point = 0;     // a train: the corner it left last (into its points)
+    world::MoverPose pose;  // where it is now
 };
 
 // Every mover's motion, by the level's mover index, and the uses that triggers and buttons asked

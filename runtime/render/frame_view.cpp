@@ -397,10 +397,9 @@ uint32_t writeObjectLighting(const LevelData& level, const BakedLightingMaps& ba
         const float length = glm::length(d);
         const float cell =
             std::min({baked.grid.cellSize.x, baked.grid.cellSize.y, baked.grid.cellSize.z});
-        const uint32_t samples =
-            length > cell ? std::min(uint32_t(std::ceil(length / cell)) + 1u,
-                                     uint32_t(glsl::MAX_OBJECT_SAMPLES))
-                          : 1u;
+        const uint32_t samples = length > cell ? std::min(uint32_t(std::ceil(length / cell)) + 1u,
+                                                          uint32_t(glsl::MAX_OBJECT_SAMPLES))
+                                               : 1u;
         if (next + header + 6 * samples > glsl::MAX_OBJECT_VECTORS) {
             ++overflow;  // past the array's room: the placeholder
             continue;

@@ -12,6 +12,7 @@
 
 #include "forward.frag.spv.h"
 #include "forward.vert.spv.h"
+#include "forward_masked.frag.spv.h"
 #include "fullscreen.vert.spv.h"
 #include "fxaa.frag.spv.h"
 #include "shadow.vert.spv.h"
@@ -176,25 +177,27 @@ void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeo
         forward.cullMode = k.doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
         forward.alphaBlend = k.alphaBlend;
         forward.depthWrite = !k.alphaBlend;
-        forward.stages = {{VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}},
-                          {VK_SHADER_STAGE_FRAGMENT_BIT,
-                           kForwardFragSpirv,
-                           {{glsl::SPEC_MATERIAL_CLASS, materialClass},
-                            {glsl::SPEC_ALPHA_MODE, k.alphaBlend  ? glsl::ALPHA_MODE_BLEND
-                                                    : k.alphaMask ? glsl::ALPHA_MODE_MASK
-                                                                  : glsl::ALPHA_MODE_OPAQUE},
-                            {glsl::SPEC_FLAT_SHADING, 0},
-                            {glsl::SPEC_BAKED_LIGHTING, bakedLighting},
-                            {glsl::SPEC_DIFFUSE_MODEL, choices.diffuseModel},
-                            {glsl::SPEC_MATERIAL_PIPELINE, options.materialPipeline ? 1 : 0},
-                            {glsl::SPEC_PROBES, choices.probes ? 1 : 0},
-                            {glsl::SPEC_TEXTURES, int(k.textures)},
-                            {glsl::SPEC_PRIMARY, int(k.primary)},
-                            {glsl::SPEC_SECONDARY, int(k.secondary)},
-                            {glsl::SPEC_EFFECT_LIGHTS, k.effectLights ? 1 : 0},
-                            {glsl::SPEC_FEATURES_OFF, int(options.featuresOff)},
-                            {glsl::SPEC_PRIMARY_SHADOW, k.primaryShadow ? 1 : 0},
-                            {glsl::SPEC_PRIMARY_FADE, k.primaryFade ? 1 : 0}}}};
+        forward.stages = {
+            {VK_SHADER_STAGE_VERTEX_BIT, kForwardVertSpirv, {}},
+            {VK_SHADER_STAGE_FRAGMENT_BIT,
+             k.alphaMask && !k.alphaBlend ? std::span<const uint32_t>(kForwardMaskedFragSpirv)
+                                          : std::span<const uint32_t>(kForwardFragSpirv),
+             {{glsl::SPEC_MATERIAL_CLASS, materialClass},
+              {glsl::SPEC_ALPHA_MODE, k.alphaBlend  ? glsl::ALPHA_MODE_BLEND
+                                      : k.alphaMask ? glsl::ALPHA_MODE_MASK
+                                                    : glsl::ALPHA_MODE_OPAQUE},
+              {glsl::SPEC_FLAT_SHADING, 0},
+              {glsl::SPEC_BAKED_LIGHTING, bakedLighting},
+              {glsl::SPEC_DIFFUSE_MODEL, choices.diffuseModel},
+              {glsl::SPEC_MATERIAL_PIPELINE, options.materialPipeline ? 1 : 0},
+              {glsl::SPEC_PROBES, choices.probes ? 1 : 0},
+              {glsl::SPEC_TEXTURES, int(k.textures)},
+              {glsl::SPEC_PRIMARY, int(k.primary)},
+              {glsl::SPEC_SECONDARY, int(k.secondary)},
+              {glsl::SPEC_EFFECT_LIGHTS, k.effectLights ? 1 : 0},
+              {glsl::SPEC_FEATURES_OFF, int(options.featuresOff)},
+              {glsl::SPEC_PRIMARY_SHADOW, k.primaryShadow ? 1 : 0},
+              {glsl::SPEC_PRIMARY_FADE, k.primaryFade ? 1 : 0}}}};
         p.forward[key] = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
         p.permutations.push_back(permutationName(k));
     }

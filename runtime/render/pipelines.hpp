@@ -21,7 +21,7 @@ namespace onelight::render {
 
 /// What a forward pipeline is specialized for: its materials' class, sidedness, alpha mode and
 /// texture slots, and its draws' primary light and source of secondary lighting
-/// (forward.frag's SPEC_TEXTURES, SPEC_PRIMARY and SPEC_SECONDARY), and whether the frame has
+/// (forward_shading.glsl's SPEC_TEXTURES, SPEC_PRIMARY and SPEC_SECONDARY), and whether the frame has
 /// effect lights (SPEC_EFFECT_LIGHTS).
 struct PermutationKey {
     uint32_t materialClass = 0;

@@ -160,13 +160,13 @@ struct RendererOptions {
     // so that the shader variants a driver compiles at first draw are compiled at load and the
     // first frame shown does not stall (the stall is 3x a frame on lavapipe; off: to measure it).
     bool warmUp = true;
-    // Forward pipelines specialized by what their draws need (forward.frag SPEC_TEXTURES,
+    // Forward pipelines specialized by what their draws need (forward_shading.glsl SPEC_TEXTURES,
     // SPEC_PRIMARY, SPEC_SECONDARY): the same pixels, without the fetches of the texture slots a
     // material leaves empty, of the primary's shadows where a surface has none, and of the
     // lightmap or grid record a draw does not read. Off: one pipeline per material class,
     // sidedness and alpha mode, choosing at run time (to measure it, and as the reference).
     bool specializeDraws = true;
-    // Benchmarks only: forward.frag's FEATURE_* bits left out, each a constant instead
+    // Benchmarks only: forward_shading.glsl's FEATURE_* bits left out, each a constant instead
     // (onelight-bench-render --view measures what each costs; the frame is then wrong).
     uint32_t featuresOff = 0;
     // Anisotropic filtering of the material textures (1: off, else up to 16 taps along a

@@ -3,8 +3,8 @@
 #include "render/scene.hpp"
 
 #include <algorithm>
-#include <cfloat>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <span>

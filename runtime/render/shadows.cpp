@@ -58,7 +58,7 @@ void fitSunCascade(ShadowMaps& shadows, ShadowView& v, const LevelData& level,
     // The slope bias grows without bound on a caster the sun grazes: a wall 14 degrees off the
     // sun's rays got ~8 texels (0.8 m) of depth bias, and the room it stands in was sunlit for
     // 0.8 m behind it (bright bands along every wall of a room lit through a roof opening).
-    // Two texels of depth are enough beside the receivers' normal offset (forward.frag).
+    // Two texels of depth are enough beside the receivers' normal offset (forward_shading.glsl).
     v.depthBiasClamp = kSunBiasClampTexels * v.params.x / (2.0f * depth);
 }
 
@@ -78,7 +78,7 @@ void fitSpotOrOmni(ShadowMaps& shadows, const ShadowSlot& slot, const LevelData&
         v.staticValid = false;
         return;
     }
-    // Omni: faces +X, -X, +Y, -Y, +Z, -Z (forward.frag picks them by the major axis), each a
+    // Omni: faces +X, -X, +Y, -Y, +Z, -Z (forward_shading.glsl picks them by the major axis), each a
     // little wider than 90 degrees so that the filter taps at a face's border stay inside it.
     const float tanHalf = 1.0f + 3.0f / size;
     const float fov = 2.0f * std::atan(tanHalf);

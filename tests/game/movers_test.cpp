@@ -20,7 +20,9 @@ namespace {
 
 constexpr float kUnit = 1.0f / 32.0f;
 
-glm::vec3 level(float x, float y, float z) { return glm::vec3(x, z, -y) * kUnit; }
+glm::vec3 level(float x, float y, float z) {
+    return glm::vec3(x, z, -y) * kUnit;
+}
 
 /*
    The map (units, Z up): a floor 1024 square, top z = 0.
@@ -211,8 +213,8 @@ TEST(QuakeMovers, TheTrainFollowsItsCornersAndCarriesItsRider) {
     game.stepSeconds(0.96);
     EXPECT_NEAR(glm::distance(game.origin(train), second), 0.0f, 1e-4f);
     // A rider on its top goes with it: set on the train at c2, it comes back to c1 with it.
-    game.registry.get<Transform>(game.player).position = second + glm::vec3(0.0f, 8.0f * kUnit,
-                                                                            0.0f);
+    game.registry.get<Transform>(game.player).position =
+        second + glm::vec3(0.0f, 8.0f * kUnit, 0.0f);
     game.stepSeconds(1.92 + 0.05);
     EXPECT_EQ(game.registry.get<Player>(game.player).groundMover, train);
     EXPECT_NEAR(game.feet().x, first.x, 0.05f);

@@ -78,9 +78,9 @@ TEST(GamePrimaryPick, TheRendererDrawsThePickTheGameReports) {
 
 // A Quake 3 map's mover is drawn with the primary the game picks as it moves: a map written here
 // with two lamps over a floor, 16 m apart, and a door that slides from under the one to under the
-// other (lip -478: 512 units, 5.12 s at 100 u/s), baked at draft, seen whole from the spawn. At every drawn frame the
-// renderer's primary for the door is the game's pick, which goes from the first lamp to the
-// second as it crosses, and its lighting origin follows its bounds' centre.
+// other (lip -478: 512 units, 5.12 s at 100 u/s), baked at draft, seen whole from the spawn. At
+// every drawn frame the renderer's primary for the door is the game's pick, which goes from the
+// first lamp to the second as it crosses, and its lighting origin follows its bounds' centre.
 TEST(GamePrimaryPick, AQuakeMoverCrossingTwoLampsIsDrawnWithTheGamesPick) {
     test::Quake3BspBuilder map;
     map.shaders[0].contentFlags = 1;
@@ -132,8 +132,8 @@ TEST(GamePrimaryPick, AQuakeMoverCrossingTwoLampsIsDrawnWithTheGamesPick) {
             if (tick % 15 != 0) continue;
             const game::DynamicLighting& lit = session.registry.get<game::DynamicLighting>(door);
             // Its lighting origin: its box's centre, where the door is now.
-            const glm::vec3 centre = session.movers.motion[0].pose.origin +
-                                     glm::vec3(-256.0f, 32.0f, 0.0f) / 32.0f;
+            const glm::vec3 centre =
+                session.movers.motion[0].pose.origin + glm::vec3(-256.0f, 32.0f, 0.0f) / 32.0f;
             EXPECT_LT(glm::distance(lit.origin, centre), 1e-3f) << "tick " << tick;
             render::drawFrame(renderer, game::frameInputsOf(session, transforms));
             ASSERT_NE(lit.pick.primary, world::kNoIndex) << "tick " << tick;

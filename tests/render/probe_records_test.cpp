@@ -26,7 +26,7 @@ float weight(const render::GpuProbe& g, glm::vec3 p) {
                                       g.influenceMin.w);
 }
 
-// The shader's blend (forward.frag probeRadiance): the first two records that reach p, c1 = w1,
+// The shader's blend (forward_shading.glsl probeRadiance): the first two records that reach p, c1 = w1,
 // c2 = (1 - w1) w2, normalised. Returns the weight of each record.
 std::vector<float> blend(const render::ProbeRecords& r, glm::vec3 p) {
     std::vector<float> c(r.records.size(), 0.0f);
@@ -43,7 +43,7 @@ std::vector<float> blend(const render::ProbeRecords& r, glm::vec3 p) {
     return c;
 }
 
-// The shader's choice (forward.frag probeRadiance) over candidate lists: the blend weight of
+// The shader's choice (forward_shading.glsl probeRadiance) over candidate lists: the blend weight of
 // each record, and the record captured nearest to p (used when no influence reaches p).
 struct Choice {
     std::vector<float> weights;

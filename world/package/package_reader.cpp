@@ -583,8 +583,8 @@ private:
         checkFinite(id, i, "pos2", d.pos2);
         checkFinite(id, i, "amplitude", d.amplitude);
         checkFinite(id, i, "axis", d.axis);
-        const float axisLength = std::sqrt(d.axis[0] * d.axis[0] + d.axis[1] * d.axis[1] +
-                                           d.axis[2] * d.axis[2]);
+        const float axisLength =
+            std::sqrt(d.axis[0] * d.axis[0] + d.axis[1] * d.axis[1] + d.axis[2] * d.axis[2]);
         if (!(std::fabs(axisLength - 1.0f) <= 1e-3f))
             fail(id, i, "axis of length " + std::to_string(axisLength) + "; expected 1");
         checkFinite(id, i, "speed", d.speed);

@@ -44,9 +44,9 @@ void addBrushes(LevelCollision& out, const BspFile& bsp, size_t model, uint32_t 
                                 " has a normal of length " + std::to_string(length) +
                                 "; expected a unit normal");
                 const glm::vec3 unit = n / length;
-                out.planes.push_back({unit, float(double(plane.dist) * kQuake3MetresPerUnit /
-                                                      double(length) +
-                                                  double(glm::dot(unit, offset)))});
+                out.planes.push_back(
+                    {unit, float(double(plane.dist) * kQuake3MetresPerUnit / double(length) +
+                                 double(glm::dot(unit, offset)))});
             }
             out.sidePlanes.push_back(found->second);
         }
@@ -131,7 +131,8 @@ LevelCollision importCollision(const BspFile& bsp, const std::vector<MapEntity>&
             const char* end = model.data() + model.size();
             if (model.size() >= 2 && model[0] == '*' &&
                 std::from_chars(model.data() + 1, end, n).ptr == end && n >= 1 &&
-                n < bsp.models.size() && movers.moverOfModel[n] == kNoIndex && still.insert(n).second)
+                n < bsp.models.size() && movers.moverOfModel[n] == kNoIndex &&
+                still.insert(n).second)
                 addBrushes(out, bsp, n, kNoIndex, movers.originOfModel[n], worldPlanes,
                            nonsolidShaders, where);
         }

@@ -67,8 +67,7 @@ int32_t modelNumber(const MapEntity& e) {
     const std::string model = e.get("model");
     int32_t n = -1;
     const char* end = model.data() + model.size();
-    if (model.size() < 2 || model[0] != '*' ||
-        std::from_chars(model.data() + 1, end, n).ptr != end)
+    if (model.size() < 2 || model[0] != '*' || std::from_chars(model.data() + 1, end, n).ptr != end)
         return -1;
     return n;
 }
@@ -165,19 +164,18 @@ ImportedMovers importMovers(const BspFile& bsp, const std::vector<MapEntity>& en
             mover.kind = MoverKind::kPlat;
             const double speed = speedKey != 0.0 ? speedKey : 200.0;
             const double lip = numberKey(e, "lip", 8.0f, where);
-            const double height = e.keys.count("height")
-                                      ? double(numberKey(e, "height", 0.0f, where))
-                                      : size.z - lip;
+            const double height =
+                e.keys.count("height") ? double(numberKey(e, "height", 0.0f, where)) : size.z - lip;
             s.pos2 = s.origin;
             s.pos1 = s.origin - glm::dvec3(0.0, 0.0, height);
             mover.wait = 1.0f;  // the game ignores the key
             mover.travelSeconds = travelSeconds(std::fabs(height), speed);
         } else if (type == "func_bobbing") {
             mover.kind = MoverKind::kBobbing;
-            mover.period = float(std::max(std::floor(keyOr(e, "speed", 4.0, where) * 1000.0), 1.0) /
-                                 1000.0);
+            mover.period =
+                float(std::max(std::floor(keyOr(e, "speed", 4.0, where) * 1000.0), 1.0) / 1000.0);
             const double height = keyOr(e, "height", 32.0, where);
-            const glm::dvec3 axis = (flags & 1) ? glm::dvec3(1, 0, 0)
+            const glm::dvec3 axis = (flags & 1)   ? glm::dvec3(1, 0, 0)
                                     : (flags & 2) ? glm::dvec3(0, 1, 0)
                                                   : glm::dvec3(0, 0, 1);
             mover.amplitude = levelVector(axis * height);
@@ -241,8 +239,7 @@ ImportedMovers importMovers(const BspFile& bsp, const std::vector<MapEntity>& en
                 const MapEntity& to = *corners[(c + 1) % corners.size()];
                 const glm::dvec3 a(vectorKey(from, "origin", glm::vec3(0.0f), where));
                 const glm::dvec3 b(vectorKey(to, "origin", glm::vec3(0.0f), where));
-                const double speed =
-                    std::max(keyOr(from, "speed", trainSpeed, where), 1.0);
+                const double speed = std::max(keyOr(from, "speed", trainSpeed, where), 1.0);
                 MoverPoint p;
                 p.position = levelPoint(glm::vec3(a));
                 p.wait = std::max(0.0f, numberKey(from, "wait", 0.0f, where));

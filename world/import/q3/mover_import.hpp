@@ -45,17 +45,18 @@ namespace onelight::world::q3 {
 */
 
 struct ImportedMovers {
-    std::vector<Entity> entities;        // to append to the level's, in this order
-    LevelMovers movers;                  // Mover::entity into `entities`
-    std::vector<Trigger> triggers;       // the doors', plats' and buttons'; mover into `movers`
-    std::vector<uint32_t> moverOfModel;  // per BSP model: the mover it is, or kNoIndex
+    std::vector<Entity> entities;          // to append to the level's, in this order
+    LevelMovers movers;                    // Mover::entity into `entities`
+    std::vector<Trigger> triggers;         // the doors', plats' and buttons'; mover into `movers`
+    std::vector<uint32_t> moverOfModel;    // per BSP model: the mover it is, or kNoIndex
     std::vector<glm::vec3> originOfModel;  // per BSP model: its entity's origin, metres (world:
                                            // 0); a model's geometry is relative to it
     std::vector<std::string> notes;
 };
 
 /// Throws world::Error naming `where` and the entity's line for a key that is not a number.
-[[nodiscard]] ImportedMovers importMovers(const BspFile& bsp, const std::vector<MapEntity>& entities,
+[[nodiscard]] ImportedMovers importMovers(const BspFile& bsp,
+                                          const std::vector<MapEntity>& entities,
                                           const std::string& where);
 
 }  // namespace onelight::world::q3

@@ -779,8 +779,8 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
         const ShaderScript* script = scriptOf(scripts, shader);
         if (!drawn(shader, script)) continue;
         const uint32_t material = materials.materialOf(shader, f.shader, script);
-        const uint32_t mover = model < movers.moverOfModel.size() ? movers.moverOfModel[model]
-                                                                  : kNoIndex;
+        const uint32_t mover =
+            model < movers.moverOfModel.size() ? movers.moverOfModel[model] : kNoIndex;
         MeshInstance& mesh = mover == kNoIndex ? meshes[material] : moving[{mover, material}];
         std::vector<PatchPoint> points;
         std::vector<uint32_t> triangles;
@@ -809,8 +809,9 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
             model < movers.originOfModel.size() ? movers.originOfModel[model] : glm::vec3(0.0f);
         if (offset != glm::vec3(0.0f)) {
             for (Vertex& v : vertices) v.position += offset;
-            for (PatchPoint& p : points) p.position += glm::vec3(offset.x, -offset.z, offset.y) /
-                                                       float(kQuake3MetresPerUnit);
+            for (PatchPoint& p : points)
+                p.position +=
+                    glm::vec3(offset.x, -offset.z, offset.y) / float(kQuake3MetresPerUnit);
         }
         appendOriented(mesh, vertices, triangles);
         const uint32_t page = lightmaps.colourPage(f.lightmap);

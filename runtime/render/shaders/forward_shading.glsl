@@ -1,0 +1,348 @@
+// Forward pass (the body of forward.frag and forward_masked.frag): one primary light with its
+// shadow, the effect lights, baked secondary lighting, per pixel, for one material class
+// (specialization constant). All lighting math is shared with C++ (shaders/lighting.glsl,
+// material.glsl, brdf.glsl); this file only fetches and sums.
+#include "frame_interface.glsl"
+#include "lighting.glsl"
+#include "material.glsl"
+
+layout(constant_id = SPEC_MATERIAL_CLASS) const int MATERIAL_CLASS = MATERIAL_FULL;
+layout(constant_id = SPEC_ALPHA_MODE) const int ALPHA_MODE = ALPHA_MODE_OPAQUE;
+layout(constant_id = SPEC_FLAT_SHADING) const int FLAT_SHADING = 0;  // 1: constant colour
+// 1: the level supplies baked lighting (lightmaps, shadow masks, grid samples per object; or
+// their placeholders in tests); 0: the neutral placeholder (a constant ambient of frame.baked.x
+// lux, no baked shadow, a uniform environment of normalised radiance 1 / pi) without any fetch.
+layout(constant_id = SPEC_BAKED_LIGHTING) const int BAKED_LIGHTING = 1;
+layout(constant_id = SPEC_DIFFUSE_MODEL) const int DIFFUSE_MODEL = DIFFUSE_LAMBERT;
+// 0: the frame as it was before the material pipeline (docs/materials.md), for its cost in
+// onelight-bench-render only: no fold of the filter's spread into gloss, no cavity fetch, no
+// energy-conservation weight on the direct lights.
+layout(constant_id = SPEC_MATERIAL_PIPELINE) const int MATERIAL_PIPELINE = 1;
+// 0: no probe in use (the package has none, e.g. an error budget dropped them, or --no-probes):
+// the uniform environment of normalised radiance 1 / pi without walking or fetching anything.
+layout(constant_id = SPEC_PROBES) const int PROBES = 1;
+// The draws' needs (gpu_interface.glsl): each default keeps the choice at run time, from the
+// material record and the draw's push; a value the draws all share compiles the rest out, the
+// same displayed pixels with fewer fetches (RendererOptions::specializeDraws).
+layout(constant_id = SPEC_TEXTURES) const int TEXTURES = ALL_TEXTURES;
+layout(constant_id = SPEC_PRIMARY) const int PRIMARY = PRIMARY_ANY;
+layout(constant_id = SPEC_SECONDARY) const int SECONDARY = SECONDARY_ANY;
+// Per frame: the renderer draws with the pipelines without effect lights when the frame has none
+// (llvmpipe runs a loop's body once even for no iteration, and both sides of every branch).
+layout(constant_id = SPEC_EFFECT_LIGHTS) const int EFFECT_LIGHTS = 1;
+layout(constant_id = SPEC_FEATURES_OFF) const int FEATURES_OFF = 0;  // benchmarks only
+layout(constant_id = SPEC_PRIMARY_SHADOW) const int PRIMARY_SHADOW = 1;
+layout(constant_id = SPEC_PRIMARY_FADE) const int PRIMARY_FADE = 1;
+bool featureOn(int feature) { return (FEATURES_OFF & feature) == 0; }
+
+// Whether material m fills texture slot `slot` and the pipeline's materials may.
+bool materialHas(GpuMaterial m, int slot) {
+    return (TEXTURES & (1 << slot)) != 0 && hasTexture(m, slot);
+}
+// The primary light's type: the pipeline's when its draws share one, else the record's.
+int primaryType(GpuLight light) {
+    return PRIMARY >= PRIMARY_DIRECTIONAL ? PRIMARY - PRIMARY_DIRECTIONAL : int(light.info.x);
+}
+bool drawHasLightmap() {
+    return SECONDARY == SECONDARY_LIGHTMAP || (SECONDARY == SECONDARY_ANY && draw.lightmapAtlas != NO_INDEX);
+}
+bool drawHasObjectLighting() {
+    return SECONDARY == SECONDARY_OBJECT || (SECONDARY == SECONDARY_ANY && draw.objectLighting != NO_INDEX);
+}
+
+layout(location = 0) in vec3 inWorldPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inTangent;
+layout(location = 3) in vec2 inUv0;
+layout(location = 4) in vec2 inUv1;
+
+layout(location = 0) out vec4 outColor;
+
+// Percentage-closer filtering in shadow view `view`: 2x2 taps, half a texel apart, of the
+// hardware 2x2 bilinear comparison: a 3x3-texel tent for four fetches; 1 outside the view. The
+// receiver is looked up 1.5 texels off its surface along the normal n, scaled by the sine of the
+// light's angle to it (NoL): a surface the light grazes needs the whole offset against acne, one
+// facing it hardly any, and a full offset there moves the point towards the light, past a thin
+// wall's depth, so that a floor under a high sun was lit along the foot of every wall in front of
+// it.
+float shadowViewLookup(uint view, GpuLight light, vec3 p, vec3 n, float NoL) {
+    GpuShadowView sv = shadowViews[view];
+    float texelWorld = sv.params.x;
+    if (sv.params.y > 0.5) texelWorld *= length(p - light.positionRange.xyz);
+    float offset = 1.5 * texelWorld * clamp(sqrt(1.0 - NoL * NoL), 0.1, 1.0);
+    vec4 clip = sv.viewProj * vec4(p + n * offset, 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    vec3 ndc = clip.xyz / clip.w;
+    vec2 uv = ndc.xy * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0) return 1.0;
+    float texel = frame.shadowParams.z;
+    float sum = 0.0;
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 2; ++x)
+            sum += texture(shadowMaps, vec4(uv + (vec2(x, y) - 0.5) * texel, float(view), ndc.z));
+    return sum * 0.25;
+}
+
+// The primary's runtime shadow at p (l towards the light): an omni's cube face, a spot's view,
+// or the sun's cascade, the nearest whose far distance reaches the point's view distance. Over
+// the last tenth of a cascade's range the lookup blends into the next cascade's, so that a shadow
+// edge crossing a split sharpens or softens gradually, not at a line. Loops, so that a CPU
+// rasterizer stops once no pixel of its block needs another step (the second lookup is paid only
+// in the bands).
+float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float viewDistance) {
+    uint view = light.info.y;
+    if (view == NO_INDEX) return 1.0;
+    float NoL = clamp(dot(n, l), 0.0, 1.0);
+    if (type == LIGHT_POINT) view += uint(cubeFace(p - light.positionRange.xyz));
+    if (type != LIGHT_DIRECTIONAL) return shadowViewLookup(view, light, p, n, NoL);
+    uint last = view + light.info.z - 1u;
+    while (view < last && viewDistance > shadowViews[view].params.z) ++view;
+    float split = shadowViews[view].params.z;
+    float t = view < last ? clamp((viewDistance - 0.9 * split) / (0.1 * split), 0.0, 1.0) : 0.0;
+    int lookups = t > 0.0 ? 2 : 1;
+    float shadow = 0.0;
+    for (int i = 0; i < lookups; ++i)
+        shadow += (i == 0 ? 1.0 - t : t) * shadowViewLookup(view + uint(i), light, p, n, NoL);
+    return shadow;
+}
+
+// A pixel's weight of each sample of a dynamic object's record r (gpu_interface.glsl): along its
+// axis it mixes the two samples it lies between. Every read of the record is at an offset the
+// whole draw shares (one load a block of pixels); the samples are then weighed per pixel.
+float objectSampleWeight(uint r, uint s) {
+    vec4 from = objectRecords[r];
+    uint samples = uint(from.w);
+    if (samples <= 1u) return 1.0;
+    float x = clamp(dot(inWorldPosition - from.xyz, objectRecords[r + 1u].xyz), 0.0, 1.0) *
+              float(samples - 1u);
+    return max(0.0, 1.0 - abs(x - float(s)));
+}
+
+// Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
+// (bilinear), a dynamic object's ambient cube from the light grid, else the constant ambient.
+vec3 secondaryIrradiance(vec3 n) {
+    if (BAKED_LIGHTING == 0) return vec3(frame.baked.x);
+    if (drawHasLightmap() && featureOn(FEATURE_LIGHTMAP)) {
+        vec2 uv = inUv1 * draw.lightmapScale.xy;
+        float base = float(draw.lightmapAtlas * 3u);
+        vec3 e = vec3(irradianceLinear(texture(lightmap, vec3(uv, base)), n),
+                      irradianceLinear(texture(lightmap, vec3(uv, base + 1.0)), n),
+                      irradianceLinear(texture(lightmap, vec3(uv, base + 2.0)), n));
+        return e * frame.baked.y;
+    }
+    if (drawHasObjectLighting()) {
+        uint r = draw.objectLighting;
+        uint samples = uint(objectRecords[r].w);
+        vec3 c[6] = vec3[6](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+        for (uint s = 0u; s < samples && s < MAX_OBJECT_SAMPLES; ++s) {
+            float w = objectSampleWeight(r, s);
+            for (uint i = 0u; i < 6u; ++i)
+                c[i] += w * objectRecords[r + OBJECT_RECORD_HEADER + 6u * s + i].rgb;
+        }
+        return irradianceAmbientCube(c[0], c[1], c[2], c[3], c[4], c[5], n);
+    }
+    return vec3(frame.baked.x);
+}
+
+// The baked visibility of the draw's primary: a static surface's shadow mask, a dynamic object's
+// visibility from the light grid; 1 without baked lighting.
+float bakedShadow() {
+    if (BAKED_LIGHTING == 0) return 1.0;
+    if (drawHasLightmap())
+        return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
+    if (drawHasObjectLighting()) {
+        uint r = draw.objectLighting;
+        uint samples = uint(objectRecords[r].w);
+        float v = 0.0;
+        for (uint s = 0u; s < samples && s < MAX_OBJECT_SAMPLES; ++s)
+            v += objectSampleWeight(r, s) * objectRecords[r + OBJECT_RECORD_HEADER + 6u * s].w;
+        return v;
+    }
+    return 1.0;
+}
+
+// One probe's normalised radiance for the reflection ray (p, r): box-projected when the probe
+// has a box, at the mip of the gloss.
+vec3 sampleProbe(uint i, vec3 p, vec3 r, float lod) {
+    GpuProbe g = probeRecords[i];
+    vec3 dir = g.boxMin.w > 0.5 ? boxProjectedDirection(p, r, g.boxMin.xyz, g.boxMax.xyz, g.position.xyz) : r;
+    return textureLod(probes, vec4(dir, float(i)), lod).rgb;
+}
+
+// The secondary specular's normalised radiance (shaders/probe.glsl, "Influence"): the first two
+// records, in order, whose influence reaches p, weighted c1 = w1, c2 = (1 - w1) w2 and
+// normalised; outside every influence volume, the probe captured nearest to p. Inside the probe
+// grid only p's cell's lists are walked (runtime/render/probe_records.hpp), which pick the same.
+vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
+    if (BAKED_LIGHTING == 0) return vec3(INV_PI);
+    float lod = probeMipOfGloss(gloss, int(frame.probeParams.x));
+    uint listed = 0u, influenceCount = frame.counts.z, nearestCount = frame.counts.z;
+    vec3 f = floor((p - probeGrid.origin.xyz) / probeGrid.cellSize.xyz);
+    if (probeGrid.dims.w != 0u && all(greaterThanEqual(f, vec3(0.0))) &&
+        all(lessThan(f, vec3(probeGrid.dims.xyz)))) {
+        uvec3 c = uvec3(f);
+        uint cell = c.x + probeGrid.dims.x * (c.y + probeGrid.dims.y * c.z);
+        listed = probeCells[2u * cell];
+        influenceCount = probeCells[2u * cell + 1u] & 0xFFFFu;
+        nearestCount = probeCells[2u * cell + 1u] >> 16u;
+    }
+    vec3 sum = vec3(0.0);
+    float weight = 0.0;
+    uint taken = 0u;
+    for (uint k = 0u; k < influenceCount && taken < 2u && weight < 1.0; ++k) {
+        uint i = listed != 0u ? probeCells[listed + k] : k;
+        GpuProbe g = probeRecords[i];
+        float w = probeInfluenceWeight(p, g.influenceMin.xyz, g.influenceMax.xyz, g.influenceMin.w) *
+                  (1.0 - weight);
+        if (w <= 0.0) continue;
+        sum += w * sampleProbe(i, p, r, lod);
+        weight += w;
+        ++taken;
+    }
+    if (weight > 0.0) return sum / weight;
+    uint nearest = 0u;
+    float best = 1e30;
+    for (uint k = 0u; k < nearestCount; ++k) {
+        uint i = listed != 0u ? probeCells[listed + influenceCount + k] : k;
+        vec3 d = p - probeRecords[i].position.xyz;
+        if (dot(d, d) < best) {
+            best = dot(d, d);
+            nearest = i;
+        }
+    }
+    return sampleProbe(nearest, p, r, lod);
+}
+
+// A light record of type `type` seen from p, by the shared light model (its colour holds the
+// intensity).
+LightSample evaluateGpuLight(GpuLight light, int type, vec3 p) {
+    return evaluatePunctualLight(type, light.color.rgb, 1.0, light.positionRange.w,
+                                 light.positionRange.xyz, light.direction.xyz, light.cones.x,
+                                 light.cones.y, p);
+}
+
+// The radiance primary light `light` (of type `type`) reflects at p, times its shadow.
+vec3 primaryRadiance(GpuLight light, int type, vec3 p, vec3 n, vec3 v, vec3 geometricNormal,
+                     float viewDistance, vec3 albedo, vec3 f0, float gloss, vec2 directEnv,
+                     float cavity) {
+    LightSample s = evaluateGpuLight(light, type, p);
+    BrdfDots d = brdfDots(n, v, s.l);
+    if (!(dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0)) return vec3(0.0);
+    float radius = frame.shadowParams.x;
+    float shadow = 1.0;
+    if (PRIMARY_SHADOW == 1) {
+        float baked = featureOn(FEATURE_BAKED_SHADOW) && viewDistance > radius - frame.shadowParams.y
+                          ? bakedShadow() : 1.0;
+        float runtime = featureOn(FEATURE_RUNTIME_SHADOW) && viewDistance < radius
+                            ? runtimeShadow(light, type, p, geometricNormal, s.l, viewDistance) : 1.0;
+        shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x, frame.shadowParams.y);
+    }
+    return surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity, d) *
+           s.illuminance * shadow;
+}
+
+void main() {
+    if (FLAT_SHADING == 1) {
+        outColor = vec4(0.18, 0.18, 0.18, 1.0);
+        return;
+    }
+    GpuMaterial m = drawMaterial;
+
+    vec4 base = m.baseColor;
+    if (materialHas(m, TEXTURE_BASE_COLOR) && featureOn(FEATURE_BASE_TEXTURE))
+        base *= texture(baseColorTexture, inUv0);
+    if (ALPHA_MODE == ALPHA_MODE_MASK && base.a < m.emissive.a) discard;
+
+    // Material parameters per texel (shaders/material.glsl), by class.
+    vec2 mr = vec2(m.params.x, m.params.y);
+    if (materialHas(m, TEXTURE_METALLIC_ROUGHNESS))
+        mr = metallicRoughness_fromTexel(MATERIAL_CLASS, mr.x, mr.y,
+                                         texture(metallicRoughnessTexture, inUv0));
+    MaterialPoint point = materialPoint(MATERIAL_CLASS, base.rgb, mr.x, mr.y, m.f0Gloss.x);
+    vec3 albedo = point.albedo;
+    vec3 f0 = point.f0;
+    float gloss = point.gloss;
+
+    vec3 p = inWorldPosition;
+    vec3 geometricNormal = normalize(inNormal);
+    if (!gl_FrontFacing) geometricNormal = -geometricNormal;
+    vec3 n = geometricNormal;
+    if (materialHas(m, TEXTURE_NORMAL)) {
+        vec3 t = inTangent.xyz - geometricNormal * dot(geometricNormal, inTangent.xyz);
+        float tl = length(t);
+        vec3 texel = texture(normalTexture, inUv0).rgb;
+        if (tl > 1e-6) n = normal_fromTangentSpace(texel, m.params.z, geometricNormal, t / tl, inTangent.w);
+        // The filter's spread of the normals under this pixel folds into its gloss.
+        if (MATERIAL_PIPELINE == 1 && MATERIAL_CLASS != MATERIAL_LAMBERT)
+            gloss = gloss_withFilteredNormal(gloss, texel * 2.0 - 1.0);
+    }
+    vec3 toCamera = frame.cameraPosition.xyz - p;
+    float viewDistance = length(toCamera);
+    vec3 v = toCamera / max(viewDistance, 1e-6);
+
+    vec3 radiance = vec3(0.0);
+
+    // The specular lobe's directional albedo (split-sum table): the probes' environment
+    // "Fresnel", and the diffuse's energy-conservation weight (lighting.glsl).
+    float NoV = clamp(dot(n, v), MIN_NOV, 1.0);
+    vec2 env = vec2(0.0);
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT) env = texture(envBrdfTable, envBrdfTableCoord(NoV, gloss)).rg;
+    float cavity = MATERIAL_PIPELINE == 1 && materialHas(m, TEXTURE_CAVITY) ? texture(cavityTexture, inUv0).r : 1.0;
+    vec2 directEnv = MATERIAL_PIPELINE == 1 ? env : vec2(0.0);  // the direct lights' energy weight
+
+    // The one primary light, times its shadow; a dynamic object's two while its switch
+    // cross-fades (draw.fadeLight at 1 - draw.primaryWeight; PRIMARY_FADE pipelines only, so
+    // that the others pay nothing for it).
+    if (PRIMARY != PRIMARY_NONE && featureOn(FEATURE_PRIMARY) && draw.primaryLight != NO_INDEX) {
+        GpuLight light = primaryLights[draw.primaryLight];
+        float share = PRIMARY_FADE == 1 && draw.fadeLight != NO_INDEX ? draw.primaryWeight : 1.0;
+        radiance += primaryRadiance(light, primaryType(light), p, n, v, geometricNormal, viewDistance,
+                                    albedo, f0, gloss, directEnv, cavity) * share;
+        if (PRIMARY_FADE == 1 && draw.fadeLight != NO_INDEX) {
+            GpuLight old = primaryLights[draw.fadeLight];
+            radiance += primaryRadiance(old, int(old.info.x), p, n, v, geometricNormal, viewDistance,
+                                        albedo, f0, gloss, directEnv, cavity) * (1.0 - share);
+        }
+    }
+
+    // Effect lights: up to 4 diffuse-only omnis (gun flashes) and the flashlight spot.
+    if (EFFECT_LIGHTS == 1 && MATERIAL_CLASS != MATERIAL_METAL) {
+        for (uint i = 0u; i < frame.counts.x; ++i) {
+            LightSample s = evaluateGpuLight(frame.effectOmnis[i], LIGHT_POINT, p);
+            radiance += diffuseReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
+                                           cavity, brdfDots(n, v, s.l)) * s.illuminance;
+        }
+    }
+    if (EFFECT_LIGHTS == 1 && frame.counts.y != 0u) {
+        LightSample s = evaluateGpuLight(frame.effectSpot, LIGHT_SPOT, p);
+        radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity,
+                                       brdfDots(n, v, s.l)) * s.illuminance;
+    }
+
+    // Baked secondary lighting: diffuse from the lightmap or grid, specular from the probes
+    // de-normalised by the same irradiance (shaders/probe.glsl, "Normalization").
+    vec3 irradiance = secondaryIrradiance(n);
+    float ao = 1.0;
+    if (materialHas(m, TEXTURE_OCCLUSION))
+        ao = occlusion_fromTexel(texture(occlusionTexture, inUv0).r, m.params.w);
+    vec3 probeSample = vec3(0.0);
+    float so = 1.0;
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT) {
+        probeSample = PROBES == 1 ? probeRadiance(p, reflect(-v, n), gloss) : vec3(INV_PI);
+        so = specularOcclusion(NoV, ao, ggxAlpha_fromGloss(gloss));
+    }
+    radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, ao, so, probeSample);
+
+    // Emission in cd/m^2 like every other radiance (world/import/README.md), then the whole
+    // pre-exposed.
+    vec3 emissive = m.emissive.rgb;
+    if (materialHas(m, TEXTURE_EMISSIVE) && featureOn(FEATURE_EMISSIVE_TEXTURE))
+        emissive *= texture(emissiveTexture, inUv0).rgb;
+    float exposure = frame.cameraPosition.w;
+    vec3 color = (radiance + emissive) * exposure;
+    if (any(isnan(color)) || any(isinf(color))) color = vec3(0.0);
+    // A blended material's colour goes over what is behind by its alpha (the pipeline's blend:
+    // rgb = src.rgb a + dst.rgb (1 - a)), its lit radiance and emission alike.
+    float alpha = ALPHA_MODE == ALPHA_MODE_BLEND ? clamp(base.a, 0.0, 1.0) : 1.0;
+    outColor = vec4(min(color, vec3(HDR_MAX)), alpha);
+}
