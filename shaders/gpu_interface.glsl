@@ -35,7 +35,7 @@ const int BINDING_PROBE_CELLS = 9;    // storage GpuProbeGrid then uint[] (probe
 // a draw-uniform place a CPU rasterizer loads a uniform block's element once for a block of
 // pixels, where a storage buffer's is loaded per pixel (llvmpipe gathers every lane).
 const int BINDING_PRIMARY_LIGHTS = 10;   // uniform GpuLight[MAX_PRIMARY_RECORDS]
-const int BINDING_OBJECT_LIGHTING = 11;  // uniform vec4[MAX_OBJECT_VECTORS]: objects' records
+const int BINDING_OBJECT_LIGHTING = 11;  // storage GpuObjectLighting[], per entity
 const int FRAME_BINDING_COUNT = 12;
 // The primary lights a level may have (40 KiB of records; the renderer refuses more, and a
 // device whose uniform range is smaller).
@@ -149,20 +149,18 @@ struct GpuMaterial {
     uvec4 textures;  // x bit mask (1 << TEXTURE_*)
 };
 
-// A dynamic object's baked lighting: the light grid sampled at its origin or, for one longer
-// than a grid cell, at up to MAX_OBJECT_SAMPLES points evenly along its longest axis from end to
-// end (a pixel mixes the two it lies between). The frame's records lie in one uniform array of
-// vec4 (read at the draw's offset: one load a block of pixels, where a storage buffer's element
-// is gathered lane by lane), each visible object's from vector r = DrawPush.objectLighting:
-//   [r]                xyz world metres: the axis's start; w the samples (1: the origin's)
-//   [r + 1]            xyz (to - from) / |to - from|^2 (zero for one sample)
-//   [r + 2 + 6 s + f]  sample s's face f: rgb lux facing +x -x +y -y +z -z; [r + 2 + 6 s].w the
-//                      baked visibility of the primary there
-// Vectors 0 .. OBJECT_RECORD_HEADER + 5 hold the placeholder record (the constant ambient, fully
-// visible), which an object past the array's room is drawn with.
+// A dynamic object's baked lighting: the light grid sampled at its origin.
+// A dynamic object's baked lighting. One longer than a grid cell takes up to MAX_OBJECT_SAMPLES
+// samples, evenly along its longest axis from end to end, and a pixel mixes the two it lies
+// between; a shorter one the one at its origin.
 const uint MAX_OBJECT_SAMPLES = 5u;
-const uint OBJECT_RECORD_HEADER = 2u;
-const uint MAX_OBJECT_VECTORS = 4096u;  // 64 KiB: 511 one-sample records besides the placeholder
+struct GpuObjectLighting {
+    vec4 from;  // xyz world metres: the axis's start; w the samples along it (1: the origin's)
+    vec4 axis;  // xyz (to - from) / |to - from|^2 (zero for one sample)
+    vec4 ambientCube[MAX_OBJECT_SAMPLES * 6u];  // sample s's faces at 6 s .. 6 s + 5: rgb lux
+                                                // facing +x -x +y -y +z -z; [6 s].w the baked
+                                                // visibility of the primary there
+};
 
 // An environment probe (runtime/render/probe_records.hpp; shaders/probe.glsl for the rules).
 struct GpuProbe {
@@ -190,7 +188,7 @@ struct DrawPush {
     uint material;         // the level's material (set 1 is its set)
     uint primaryLight;     // its primary light's record in primaryLights[], or NO_INDEX
     uint lightmapAtlas;    // a static surface's atlas, NO_INDEX for a dynamic object (grid)
-    uint objectLighting;   // a dynamic object's first vector in objectRecords[], or NO_INDEX
+    uint objectLighting;   // a dynamic object's record in objectLighting[], or NO_INDEX
     vec4 lightmapScale;    // xy: uv1 (over the surface's atlas) to the lightmap array's uv
     uint fadeLight;        // a dynamic object's old primary's record while it cross-fades, else
                            // NO_INDEX

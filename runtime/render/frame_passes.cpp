@@ -97,8 +97,7 @@ void recordSky(VkCommandBuffer cmd, const Pipelines& pipelines) {
 }
 
 DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale,
-                    const std::vector<uint32_t>& primaryRecord,
-                    const std::vector<uint32_t>& objectRecord, const FrameView& view,
+                    const std::vector<uint32_t>& primaryRecord, const FrameView& view,
                     const Draw& d) {
     DrawPush push{};
     push.model = d.entity == kNoIndex ? glm::mat4(1.0f) : view.entityTransforms[d.entity];
@@ -108,7 +107,7 @@ DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale,
     push.fadeLight = d.fadeLight < primaryRecord.size() ? primaryRecord[d.fadeLight] : kNoIndex;
     push.primaryWeight = push.fadeLight != kNoIndex ? d.primaryWeight : 1.0f;
     push.lightmapAtlas = d.atlas;
-    push.objectLighting = d.entity < objectRecord.size() ? objectRecord[d.entity] : kNoIndex;
+    push.objectLighting = d.entity;
     push.lightmapScale = glm::vec4(1.0f);
     if (d.atlas < atlasUvScale.size())
         push.lightmapScale = glm::vec4(atlasUvScale[d.atlas], 0.0f, 0.0f);
@@ -119,8 +118,7 @@ DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale,
 
 void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTargets& targets,
                        const Pipelines& pipelines, const DescriptorSets& sets, uint32_t slot,
-                       const std::vector<uint32_t>& primaryRecord,
-                       const std::vector<uint32_t>& objectRecord, const FrameView& view,
+                       const std::vector<uint32_t>& primaryRecord, const FrameView& view,
                        const DrawList& list, FrameStats& stats) {
     const std::vector<glm::vec2>& atlasUvScale = scene.baked.atlasUvScale;
     const VkPipelineLayout layout = pipelines.forwardLayout.layout;
@@ -142,7 +140,7 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
                                   pipelines.depth[doubleSided]);
                 bound = doubleSided;
             }
-            const DrawPush push = drawPushOf(atlasUvScale, primaryRecord, objectRecord, view, d);
+            const DrawPush push = drawPushOf(atlasUvScale, primaryRecord, view, d);
             vkCmdPushConstants(cmd, layout,
                                VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                sizeof(push), &push);
@@ -169,7 +167,7 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
                                     &sets.material[d.material], 0, nullptr);
             boundMaterial = d.material;
         }
-        const DrawPush push = drawPushOf(atlasUvScale, primaryRecord, objectRecord, view, d);
+        const DrawPush push = drawPushOf(atlasUvScale, primaryRecord, view, d);
         vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,
                            0, sizeof(push), &push);
         vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, d.vertexOffset, 0);

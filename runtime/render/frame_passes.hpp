@@ -12,12 +12,11 @@
 namespace onelight::render {
 
 /// The forward pass into the HDR target (resolved from MSAA) with frame slot `slot`'s descriptor
-/// sets, each draw's primary light at its record (`primaryRecord` per level light) and a dynamic
-/// object's lighting at its record (`objectRecord` per entity); counts triangles in `stats`.
+/// sets, each draw's primary light at its record (`primaryRecord` per level light); counts
+/// triangles in `stats`.
 void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTargets& targets,
                        const Pipelines& pipelines, const DescriptorSets& sets, uint32_t slot,
-                       const std::vector<uint32_t>& primaryRecord,
-                       const std::vector<uint32_t>& objectRecord, const FrameView& view,
+                       const std::vector<uint32_t>& primaryRecord, const FrameView& view,
                        const DrawList& list, FrameStats& stats);
 /// The tonemap pass from the HDR target into the display target.
 void recordTonemapPass(VkCommandBuffer cmd, const RenderTargets& targets,

@@ -22,8 +22,8 @@ void createFrameSlots(const vk::Context& ctx, FrameSlots& frames, size_t entitie
                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
         vk::createHostBuffer(ctx, slot.shadowViews, glsl::MAX_SHADOW_VIEWS * sizeof(GpuShadowView),
                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-        vk::createHostBuffer(ctx, slot.objectLighting, glsl::MAX_OBJECT_VECTORS * sizeof(glm::vec4),
-                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+        vk::createHostBuffer(ctx, slot.objectLighting, entities * sizeof(GpuObjectLighting),
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
         std::memset(slot.shadowViews.mapped, 0, slot.shadowViews.size);
         std::memset(slot.objectLighting.mapped, 0, slot.objectLighting.size);
     }

@@ -23,7 +23,7 @@ struct FrameSlot {
     VkQueryPool timestamps = VK_NULL_HANDLE;  // owned, kTimestampCount (when supported)
     vk::Buffer uniforms;                      // owned, FrameUniforms
     vk::Buffer shadowViews;                   // owned, MAX_SHADOW_VIEWS GpuShadowView
-    vk::Buffer objectLighting;                // owned, the objects' records (MAX_OBJECT_VECTORS)
+    vk::Buffer objectLighting;                // owned, GpuObjectLighting per entity
     uint64_t frame = 0;                       // the frame it last submitted
     bool pending = false;                     // submitted and not waited for yet
 };

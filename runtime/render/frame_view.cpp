@@ -360,27 +360,32 @@ void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
     draws.resize(kept);
 }
 
-uint32_t writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                             const SceneGeometry& geometry, const FrameView& view,
-                             const DrawList& list, glm::vec4* out,
-                             std::vector<uint32_t>& recordOf) {
+void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
+                         const SceneGeometry& geometry, const FrameView& view, const DrawList& list,
+                         GpuObjectLighting* out) {
     const bool useGrid = baked.present && !baked.grid.cells.empty();
     const std::vector<glm::vec3>& lo = geometry.entityBoundsMin;
     const std::vector<glm::vec3>& hi = geometry.entityBoundsMax;
-    const uint32_t header = glsl::OBJECT_RECORD_HEADER;
-    // The placeholder at vector 0: the constant ambient (the neutral textures' value), visible.
-    out[0] = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    out[1] = glm::vec4(0.0f);
-    for (uint32_t f = 0; f < 6; ++f) out[header + f] = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
-    out[header].w = 1.0f;
-    uint32_t next = header + 6, overflow = 0;
-    recordOf.assign(level.entities.size(), kNoIndex);
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
-        recordOf[e] = 0;
-        if (!useGrid) continue;
+        GpuObjectLighting o{};
+        o.from = glm::vec4(glm::vec3(view.entityTransforms[e][3]), 1.0f);
+        if (!useGrid) {  // the placeholder textures' neutral values: the ambient, visible
+            for (size_t f = 0; f < 6; ++f)
+                o.ambientCube[f] = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
+            o.ambientCube[0].w = 1.0f;
+            out[e] = o;
+            continue;
+        }
         const glm::mat4& m = view.entityTransforms[e];
         const uint32_t primary = view.entityPrimary[e];
+        auto sampleAt = [&](glm::vec3 point, uint32_t s) {
+            const world::LightGridSample sample = world::sampleLightGrid(baked.grid, point);
+            for (size_t f = 0; f < 6; ++f)
+                o.ambientCube[6 * s + f] = glm::vec4(sample.ambientCube[f], 0.0f);
+            o.ambientCube[6 * s].w =
+                primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
+        };
         // The longest axis of its bounds, in the world: samples a grid cell or less apart along
         // it, end to end (at most MAX_OBJECT_SAMPLES), when it is longer than a cell's smallest
         // side; else one at its origin.
@@ -397,35 +402,18 @@ uint32_t writeObjectLighting(const LevelData& level, const BakedLightingMaps& ba
         const float length = glm::length(d);
         const float cell =
             std::min({baked.grid.cellSize.x, baked.grid.cellSize.y, baked.grid.cellSize.z});
-        const uint32_t samples = length > cell ? std::min(uint32_t(std::ceil(length / cell)) + 1u,
-                                                          uint32_t(glsl::MAX_OBJECT_SAMPLES))
-                                               : 1u;
-        if (next + header + 6 * samples > glsl::MAX_OBJECT_VECTORS) {
-            ++overflow;  // past the array's room: the placeholder
-            continue;
-        }
-        glm::vec4* r = out + next;
-        recordOf[e] = next;
-        next += header + 6 * samples;
-        auto sampleAt = [&](glm::vec3 point, uint32_t s) {
-            const world::LightGridSample sample = world::sampleLightGrid(baked.grid, point);
-            for (uint32_t f = 0; f < 6; ++f)
-                r[header + 6 * s + f] = glm::vec4(sample.ambientCube[f], 0.0f);
-            r[header + 6 * s].w =
-                primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
-        };
-        if (samples > 1) {
+        if (length > cell) {
+            const uint32_t samples = std::min(uint32_t(std::ceil(length / cell)) + 1u,
+                                              uint32_t(glsl::MAX_OBJECT_SAMPLES));
             for (uint32_t s = 0; s < samples; ++s)
                 sampleAt(from + d * (float(s) / float(samples - 1)), s);
-            r[0] = glm::vec4(from, float(samples));
-            r[1] = glm::vec4(d / (length * length), 0.0f);
+            o.from = glm::vec4(from, float(samples));
+            o.axis = glm::vec4(d / (length * length), 0.0f);
         } else {
             sampleAt(glm::vec3(m[3]), 0);
-            r[0] = glm::vec4(glm::vec3(m[3]), 1.0f);
-            r[1] = glm::vec4(0.0f);
         }
+        out[e] = o;
     }
-    return overflow;
 }
 
 FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options,

@@ -27,7 +27,7 @@ struct Draw {
     int32_t vertexOffset = 0;
     uint32_t primaryLight = kNoIndex, atlas = kNoIndex;
     uint32_t primaryKind = 0;    // a static surface's PRIMARY_* (DrawSurface::primaryKind)
-    uint32_t entity = kNoIndex;  // kNoIndex for static; a dynamic object's entity
+    uint32_t entity = kNoIndex;  // kNoIndex for static; a dynamic object's record in objectLighting
     uint32_t fadeLight = kNoIndex;  // a dynamic object's old primary while it cross-fades
     float primaryWeight = 1.0f;     // primaryLight's share (fadeLight's is 1 - this)
     bool primaryShadow = true;      // false: an unoccluded surface no dynamic shadow reaches
@@ -77,15 +77,12 @@ struct DrawList {
                                       const RendererOptions& options, size_t entityCount,
                                       uint32_t shadowedLight);
 
-/// The grid's lighting of every visible dynamic object, as records in `out` (MAX_OBJECT_VECTORS
-/// vectors, the layout in shaders/gpu_interface.glsl): at its origin, or for an object longer
-/// than a grid cell at up to MAX_OBJECT_SAMPLES points along its bounds' longest axis.
-/// `recordOf[e]`: entity e's first vector (0, the placeholder's, without a grid or past the
-/// array's room), kNoIndex when it is not visible. Returns how many objects found no room.
-[[nodiscard]] uint32_t writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
-                                           const SceneGeometry& geometry, const FrameView& view,
-                                           const DrawList& list, glm::vec4* out,
-                                           std::vector<uint32_t>& recordOf);
+/// The grid's lighting of every visible dynamic object, into `out` (one record per entity): at
+/// its origin, or for an object longer than a grid cell at up to MAX_OBJECT_SAMPLES points along
+/// its bounds' longest axis (GpuObjectLighting).
+void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
+                         const SceneGeometry& geometry, const FrameView& view, const DrawList& list,
+                         GpuObjectLighting* out);
 
 /// The frame's uniforms: camera, exposure, shadow and baked parameters, effect lights.
 [[nodiscard]] FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options,

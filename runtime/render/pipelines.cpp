@@ -104,7 +104,7 @@ const std::vector<VkDescriptorSetLayoutBinding>& frameBindings() {
         vk::layoutBinding(glsl::BINDING_SKY, kSampled, kFragment),
         vk::layoutBinding(glsl::BINDING_PROBE_CELLS, kStorage, kFragment),
         vk::layoutBinding(glsl::BINDING_PRIMARY_LIGHTS, kUniform, kFragment),
-        vk::layoutBinding(glsl::BINDING_OBJECT_LIGHTING, kUniform, kFragment)};
+        vk::layoutBinding(glsl::BINDING_OBJECT_LIGHTING, kStorage, kFragment)};
     static_assert(glsl::FRAME_BINDING_COUNT == 12, "one layout binding per frame binding");
     return bindings;
 }
@@ -346,7 +346,7 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
         w.image(glsl::BINDING_SKY, scene.sky.image.view, scene.sky.sampler);
         w.buffer(glsl::BINDING_PROBE_CELLS, kStorage, scene.probes.cells.buffer);
         w.buffer(glsl::BINDING_PRIMARY_LIGHTS, kUniform, primaryLights.buffer);
-        w.buffer(glsl::BINDING_OBJECT_LIGHTING, kUniform, slot.objectLighting.buffer);
+        w.buffer(glsl::BINDING_OBJECT_LIGHTING, kStorage, slot.objectLighting.buffer);
         w.update(ctx);
     }
     for (size_t i = 0; i < scene.materials.bound.size(); ++i) {

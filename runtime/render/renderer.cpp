@@ -35,7 +35,6 @@ struct RendererState {
     Pipelines pipelines;
     DescriptorSets descriptors;          // borrow every part above
     std::vector<uint32_t> drawnPrimary;  // per entity: the primary its last drawn frame used
-    std::vector<uint32_t> objectRecord;  // per entity: its record this frame (writeObjectLighting)
 };
 
 namespace {
@@ -63,7 +62,7 @@ void recordFrame(RendererState& s, uint32_t slotIndex, const FrameView& view, co
         s.scene.geometry, list.visibleLights, view.entityTransforms, view.entityHidden);
     writeTimestamp(s.frames, cmd, slot, 1);
     recordForwardPass(cmd, s.scene, s.targets, s.pipelines, s.descriptors, slotIndex,
-                      s.primaryRecords.recordOf, s.objectRecord, view, list, stats);
+                      s.primaryRecords.recordOf, view, list, stats);
     writeTimestamp(s.frames, cmd, slot, 2);
     recordTonemapPass(cmd, s.targets, s.pipelines, s.descriptors);
     writeTimestamp(s.frames, cmd, slot, 3);
@@ -93,9 +92,8 @@ FrameStats drawList(RendererState& s, const FrameInputs& inputs, const FrameOutp
     const Scene& scene = s.scene;
     const uint32_t slotIndex = uint32_t(s.frames.submitted % kFramesInFlight);
     FrameSlot& slot = s.frames.slots[slotIndex];
-    stats.objectsWithoutRoom =
-        writeObjectLighting(scene.level, scene.baked, scene.geometry, view, list,
-                            static_cast<glm::vec4*>(slot.objectLighting.mapped), s.objectRecord);
+    writeObjectLighting(scene.level, scene.baked, scene.geometry, view, list,
+                        static_cast<GpuObjectLighting*>(slot.objectLighting.mapped));
     const FrameUniforms uniforms = frameUniformsOf(scene, s.options, view, inputs.effects);
     std::memcpy(slot.uniforms.mapped, &uniforms, sizeof(uniforms));
     updateShadowViews(s.shadows, scene.level, view.camera, list.visibleLights);

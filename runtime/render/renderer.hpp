@@ -101,8 +101,6 @@ struct FrameStats {
     uint32_t surfacesDrawn = 0, surfacesCulled = 0, dynamicMeshesDrawn = 0;
     uint32_t surfacesHidden = 0;       // of the culled, outside the potentially visible set
     uint32_t dynamicMeshesHidden = 0;  // in the frustum, but every surface around them hidden
-    uint32_t objectsWithoutRoom = 0;   // visible objects past the object records' room, drawn
-                                       // with the constant ambient
     uint32_t draws = 0;                // forward-pass draw calls, after batching
     uint32_t shadowViewsRendered = 0;  // static views redrawn this frame
     uint64_t trianglesDrawn = 0;       // forward pass

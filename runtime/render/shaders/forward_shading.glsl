@@ -106,16 +106,17 @@ float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float view
     return shadow;
 }
 
-// A pixel's weight of each sample of a dynamic object's record r (gpu_interface.glsl): along its
-// axis it mixes the two samples it lies between. Every read of the record is at an offset the
-// whole draw shares (one load a block of pixels); the samples are then weighed per pixel.
-float objectSampleWeight(uint r, uint s) {
-    vec4 from = objectRecords[r];
-    uint samples = uint(from.w);
-    if (samples <= 1u) return 1.0;
-    float x = clamp(dot(inWorldPosition - from.xyz, objectRecords[r + 1u].xyz), 0.0, 1.0) *
-              float(samples - 1u);
-    return max(0.0, 1.0 - abs(x - float(s)));
+// The two samples of a dynamic object's lighting a pixel lies between (their first faces'
+// indices) and its weight towards the second.
+struct ObjectSamples {
+    uint a, b;
+    float t;
+};
+ObjectSamples objectSamples(GpuObjectLighting o) {
+    uint samples = uint(o.from.w);
+    float x = clamp(dot(inWorldPosition - o.from.xyz, o.axis.xyz), 0.0, 1.0) * float(samples - 1u);
+    uint s = min(uint(x), samples > 1u ? samples - 2u : 0u);
+    return ObjectSamples(6u * s, samples > 1u ? 6u * (s + 1u) : 0u, samples > 1u ? x - float(s) : 0.0);
 }
 
 // Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
@@ -131,14 +132,11 @@ vec3 secondaryIrradiance(vec3 n) {
         return e * frame.baked.y;
     }
     if (drawHasObjectLighting()) {
-        uint r = draw.objectLighting;
-        uint samples = uint(objectRecords[r].w);
-        vec3 c[6] = vec3[6](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-        for (uint s = 0u; s < samples && s < MAX_OBJECT_SAMPLES; ++s) {
-            float w = objectSampleWeight(r, s);
-            for (uint i = 0u; i < 6u; ++i)
-                c[i] += w * objectRecords[r + OBJECT_RECORD_HEADER + 6u * s + i].rgb;
-        }
+        GpuObjectLighting o = objectLighting[draw.objectLighting];
+        ObjectSamples k = objectSamples(o);
+        vec3 c[6];
+        for (uint i = 0u; i < 6u; ++i)
+            c[i] = mix(o.ambientCube[k.a + i].rgb, o.ambientCube[k.b + i].rgb, k.t);
         return irradianceAmbientCube(c[0], c[1], c[2], c[3], c[4], c[5], n);
     }
     return vec3(frame.baked.x);
@@ -151,12 +149,9 @@ float bakedShadow() {
     if (drawHasLightmap())
         return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
     if (drawHasObjectLighting()) {
-        uint r = draw.objectLighting;
-        uint samples = uint(objectRecords[r].w);
-        float v = 0.0;
-        for (uint s = 0u; s < samples && s < MAX_OBJECT_SAMPLES; ++s)
-            v += objectSampleWeight(r, s) * objectRecords[r + OBJECT_RECORD_HEADER + 6u * s].w;
-        return v;
+        GpuObjectLighting o = objectLighting[draw.objectLighting];
+        ObjectSamples k = objectSamples(o);
+        return mix(o.ambientCube[k.a].w, o.ambientCube[k.b].w, k.t);
     }
     return 1.0;
 }

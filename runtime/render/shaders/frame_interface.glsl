@@ -15,9 +15,9 @@ layout(set = 0, binding = BINDING_SHADOW_MAPS) uniform sampler2DArrayShadow shad
 layout(set = 0, binding = BINDING_PRIMARY_LIGHTS, std140) uniform PrimaryLights {
     GpuLight primaryLights[MAX_PRIMARY_RECORDS];
 };
-// Dynamic objects: the light grid sampled where each visible object is (gpu_interface.glsl).
-layout(set = 0, binding = BINDING_OBJECT_LIGHTING, std140) uniform ObjectLighting {
-    vec4 objectRecords[MAX_OBJECT_VECTORS];
+// Dynamic objects: the light grid sampled at each object's origin.
+layout(set = 0, binding = BINDING_OBJECT_LIGHTING, std430) readonly buffer ObjectLighting {
+    GpuObjectLighting objectLighting[];
 };
 
 // Baked lighting from the package (neutral placeholders for a level without it).
