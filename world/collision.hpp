@@ -1,7 +1,8 @@
 // What the player collides with and the volumes that act on it, from a Quake 3 map's brushes and
 // trigger entities (world/import/q3/collision_import.hpp), in metres and Y up like the rest of
-// the level. A mover's brushes (world/movers.hpp) are in its object space and move with it. A glTF level has none (the game then collides with the drawn surfaces' BSP).
-// The package stores it in sections 41 and 42 (package/format.hpp, package/collision_section).
+// the level. A mover's brushes (world/movers.hpp) are in its object space and move with it. A glTF
+// level has none (the game then collides with the drawn surfaces' BSP). The package stores it in
+// sections 41 and 42 (package/format.hpp, package/collision_section).
 #pragma once
 
 #include <cstdint>
@@ -27,19 +28,19 @@ struct CollisionPlane {
 
 /// A convex solid: the sides sidePlanes[firstSide, firstSide + sideCount).
 struct CollisionBrush {
-    uint32_t firstSide = 0;  // into LevelCollision::sidePlanes
-    uint32_t sideCount = 0;  // >= 1
-    uint32_t contents = 0;   // kContentsSolid and/or kContentsPlayerClip, nothing else
+    uint32_t firstSide = 0;     // into LevelCollision::sidePlanes
+    uint32_t sideCount = 0;     // >= 1
+    uint32_t contents = 0;      // kContentsSolid and/or kContentsPlayerClip, nothing else
     uint32_t mover = kNoIndex;  // into LevelMovers::movers: its planes are in the mover's
                                 // object space; kNoIndex: the world's, fixed
 };
 
 enum class TriggerKind : uint32_t {
-    kPush = 1,      // a jump pad: launches the player to reach `target` at its apex
-    kTeleport = 2,  // moves the player to `target`, facing `targetYaw`
-    kHurt = 3,      // respawns the player
-    kUseMover = 4,  // uses `mover` (a door's trigger, a button's touch): Quake 3's
-                    // Touch_DoorTrigger, Touch_Button
+    kPush = 1,       // a jump pad: launches the player to reach `target` at its apex
+    kTeleport = 2,   // moves the player to `target`, facing `targetYaw`
+    kHurt = 3,       // respawns the player
+    kUseMover = 4,   // uses `mover` (a door's trigger, a button's touch): Quake 3's
+                     // Touch_DoorTrigger, Touch_Button
     kRaisePlat = 5,  // uses plat `mover` when it rests at the bottom (Touch_PlatCenterTrigger)
 };
 inline constexpr uint32_t kTriggerKindLast = uint32_t(TriggerKind::kRaisePlat);
@@ -48,9 +49,9 @@ inline constexpr uint32_t kTriggerKindLast = uint32_t(TriggerKind::kRaisePlat);
 struct Trigger {
     TriggerKind kind = TriggerKind::kHurt;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // metres, world, min <= max
-    glm::vec3 target{0.0f};  // metres, world: push, the apex point (Quake's target_position);
-                             // teleport, where the player's feet go; hurt, unused (0)
-    float targetYaw = 0.0f;  // teleport: radians about +y, 0 looks down -z; otherwise 0
+    glm::vec3 target{0.0f};     // metres, world: push, the apex point (Quake's target_position);
+                                // teleport, where the player's feet go; hurt, unused (0)
+    float targetYaw = 0.0f;     // teleport: radians about +y, 0 looks down -z; otherwise 0
     uint32_t mover = kNoIndex;  // kUseMover, kRaisePlat: into LevelMovers::movers; else none
 };
 

@@ -11,8 +11,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include "world/collision.hpp"
-#include "world/movers.hpp"
 #include "world/gloss_mip_method.hpp"
+#include "world/movers.hpp"
 #include "world/no_index.hpp"
 
 namespace onelight::world {

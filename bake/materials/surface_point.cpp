@@ -90,8 +90,8 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
                        0.0f, 1.0f);
     s.emission = sampleEmission(materials, material, a, backFace, width);
 
-    // The normal as forward_shading.glsl builds it: the interpolated normal (flipped on a back face),
-    // the tangent made orthogonal to it, the map's texel in that frame.
+    // The normal as forward_shading.glsl builds it: the interpolated normal (flipped on a back
+    // face), the tangent made orthogonal to it, the map's texel in that frame.
     glm::vec3 n = geometricNormal;
     const float length2 = glm::dot(a.normal, a.normal);
     if (length2 > 1e-12f) n = (backFace ? -a.normal : a.normal) / std::sqrt(length2);
@@ -102,8 +102,8 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
         const glm::vec3 normalTexel(texel(materials, set.normal, a, width));
         if (tl > 1e-6f)
             n = glsl::normal_fromTangentSpace(normalTexel, normalScale, n, t / tl, a.tangent.w);
-        // The filter's spread of the normals folds into the gloss, as forward_shading.glsl does; a point
-        // sample (the reference's camera rays, footprint 0) sees one normal, no mixture.
+        // The filter's spread of the normals folds into the gloss, as forward_shading.glsl does; a
+        // point sample (the reference's camera rays, footprint 0) sees one normal, no mixture.
         if (m.materialClass != world::MaterialClass::kLambert && width > 0.0f)
             s.bsdf.gloss = glsl::gloss_withFilteredNormal(s.bsdf.gloss, normalTexel * 2.0f - 1.0f);
     }

@@ -18,7 +18,7 @@ struct Name {
 struct Transform {
     glm::vec3 position{0.0f};  // metres, world
     glm::vec3 scale{1.0f};
-    float yaw = 0.0f;  // radians about +y, 0 looks down -z
+    float yaw = 0.0f;                        // radians about +y, 0 looks down -z
     glm::quat turn{1.0f, 0.0f, 0.0f, 0.0f};  // a mover's turn (after the yaw), world
 };
 
@@ -28,8 +28,8 @@ struct Player {
     float pitch = 0.0f;        // radians, positive looks up, clamped to +-89 degrees
     glm::vec3 velocity{0.0f};  // metres per second
     bool onGround = false;
-    bool jumpHeld = false;          // Quake movement: jumped, the key not yet released
-    float knockbackSeconds = 0.0f;  // Quake movement: no ground friction for this long
+    bool jumpHeld = false;                   // Quake movement: jumped, the key not yet released
+    float knockbackSeconds = 0.0f;           // Quake movement: no ground friction for this long
     uint32_t groundMover = world::kNoIndex;  // Quake movement: the mover it stands on (into the
                                              // level's movers), which carries it
 };

@@ -21,8 +21,8 @@ namespace onelight::render {
 
 /// What a forward pipeline is specialized for: its materials' class, sidedness, alpha mode and
 /// texture slots, and its draws' primary light and source of secondary lighting
-/// (forward_shading.glsl's SPEC_TEXTURES, SPEC_PRIMARY and SPEC_SECONDARY), and whether the frame has
-/// effect lights (SPEC_EFFECT_LIGHTS).
+/// (forward_shading.glsl's SPEC_TEXTURES, SPEC_PRIMARY and SPEC_SECONDARY), and whether the frame
+/// has effect lights (SPEC_EFFECT_LIGHTS).
 struct PermutationKey {
     uint32_t materialClass = 0;
     bool doubleSided = false, alphaMask = false;

@@ -78,8 +78,8 @@ void fitSpotOrOmni(ShadowMaps& shadows, const ShadowSlot& slot, const LevelData&
         v.staticValid = false;
         return;
     }
-    // Omni: faces +X, -X, +Y, -Y, +Z, -Z (forward_shading.glsl picks them by the major axis), each a
-    // little wider than 90 degrees so that the filter taps at a face's border stay inside it.
+    // Omni: faces +X, -X, +Y, -Y, +Z, -Z (forward_shading.glsl picks them by the major axis), each
+    // a little wider than 90 degrees so that the filter taps at a face's border stay inside it.
     const float tanHalf = 1.0f + 3.0f / size;
     const float fov = 2.0f * std::atan(tanHalf);
     const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};

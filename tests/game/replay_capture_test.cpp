@@ -288,9 +288,9 @@ TEST(Quake3Replay, OaDm2TakesAnArmourAndRidesThePlatUp) {
     CommandResult compile = onelight::test::runCommand(std::string(ONELIGHT_BAKE_EXE) +
                                                        " compile oa_dm2 -o " + package);
     ASSERT_EQ(compile.exitCode, 0) << compile.output;
-    CommandResult play = runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
-                                     "/oa_dm2.replay --headless --size 320x180 --capture-dir " +
-                                     dir);
+    CommandResult play =
+        runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
+                    "/oa_dm2.replay --headless --size 320x180 --capture-dir " + dir);
     ASSERT_EQ(play.exitCode, 0) << play.output;
     expectCapturesMatchGoldens(dir, "oa_dm2", {"start", "plat", "up"});
 }

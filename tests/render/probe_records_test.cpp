@@ -26,8 +26,8 @@ float weight(const render::GpuProbe& g, glm::vec3 p) {
                                       g.influenceMin.w);
 }
 
-// The shader's blend (forward_shading.glsl probeRadiance): the first two records that reach p, c1 = w1,
-// c2 = (1 - w1) w2, normalised. Returns the weight of each record.
+// The shader's blend (forward_shading.glsl probeRadiance): the first two records that reach p, c1 =
+// w1, c2 = (1 - w1) w2, normalised. Returns the weight of each record.
 std::vector<float> blend(const render::ProbeRecords& r, glm::vec3 p) {
     std::vector<float> c(r.records.size(), 0.0f);
     float total = 0.0f;
@@ -43,8 +43,8 @@ std::vector<float> blend(const render::ProbeRecords& r, glm::vec3 p) {
     return c;
 }
 
-// The shader's choice (forward_shading.glsl probeRadiance) over candidate lists: the blend weight of
-// each record, and the record captured nearest to p (used when no influence reaches p).
+// The shader's choice (forward_shading.glsl probeRadiance) over candidate lists: the blend weight
+// of each record, and the record captured nearest to p (used when no influence reaches p).
 struct Choice {
     std::vector<float> weights;
     uint32_t nearest = 0;

@@ -114,8 +114,8 @@ TEST(SunCascades, TheShadowEdgeIsWhereTheGeometryPutsItAndAsSharpAsItsCascade) {
         EXPECT_GT(e.contrast, 5.0f) << height << " m: no shadow, or no sun";
         // The filter is a 3-texel tent (10-90%: about 2 texels), plus a pixel's footprint.
         EXPECT_LT(e.width, 2.5f * texel + 2.0f * pixel) << height << " m";
-        // The receiver's lookup moves up to 1.5 texels along the normal (forward_shading.glsl), which
-        // at 45 degrees moves the edge as far; the depth bias a little more.
+        // The receiver's lookup moves up to 1.5 texels along the normal (forward_shading.glsl),
+        // which at 45 degrees moves the edge as far; the depth bias a little more.
         EXPECT_LT(std::fabs(e.position - kEdgeZ), 2.5f * texel + pixel) << height << " m";
         if (height == 3.0f) {
             nearTexel = texel;

@@ -10,8 +10,8 @@
 #include <limits>
 
 #include "world/error.hpp"
-#include "world/import/q3/md3_file.hpp"
 #include "world/import/q3/game_search_path.hpp"
+#include "world/import/q3/md3_file.hpp"
 #include "world/import/q3/md3_format.hpp"
 #include "world/import/q3/pk3_archive.hpp"
 

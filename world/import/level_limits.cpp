@@ -62,9 +62,8 @@ void checkLevelLimits(const SourceLevel& level) {
         for (const MoverPose& pose : moverReach(level.movers, mover))
             checkPoint(level, pose.origin,
                        "entity '" +
-                           (mover.entity < level.entities.size()
-                                ? level.entities[mover.entity].name
-                                : std::to_string(mover.entity)) +
+                           (mover.entity < level.entities.size() ? level.entities[mover.entity].name
+                                                                 : std::to_string(mover.entity)) +
                            "' mover's reach");
     if (level.hasGridBounds) {
         checkPoint(level, level.gridMin, "the light grid's min");

@@ -34,8 +34,7 @@ namespace onelight::world::q3 {
 [[nodiscard]] LevelCollision importCollision(const BspFile& bsp,
                                              const std::vector<MapEntity>& entities,
                                              const std::vector<bool>& nonsolidShaders,
-                                             const ImportedMovers& movers,
-                                             const std::string& where,
+                                             const ImportedMovers& movers, const std::string& where,
                                              std::vector<std::string>& notes);
 
 }  // namespace onelight::world::q3

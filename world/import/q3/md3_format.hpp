@@ -13,10 +13,10 @@ inline constexpr int32_t kMd3Version = 15;
 // The games' limits: Quake 3's own (qfiles.h MD3_MAX_*), but per surface Nexuiz's engine
 // (DarkPlaces) loads 16-bit vertex counts, and Nexuiz's models use them (its tuba item has 4832
 // vertices in one surface).
-inline constexpr int32_t kMd3MaxFrames = 1024;     // per model
-inline constexpr int32_t kMd3MaxTags = 16;         // per frame
-inline constexpr int32_t kMd3MaxSurfaces = 32;     // per model
-inline constexpr int32_t kMd3MaxShaders = 256;     // per surface
+inline constexpr int32_t kMd3MaxFrames = 1024;       // per model
+inline constexpr int32_t kMd3MaxTags = 16;           // per frame
+inline constexpr int32_t kMd3MaxSurfaces = 32;       // per model
+inline constexpr int32_t kMd3MaxShaders = 256;       // per surface
 inline constexpr int32_t kMd3MaxVertices = 65536;    // per surface
 inline constexpr int32_t kMd3MaxTriangles = 131072;  // per surface
 
