@@ -18,6 +18,15 @@ namespace {
 
 using namespace onelight;
 
+// A small frame (160x90, no MSAA): enough to draw and ask what was drawn with.
+render::RendererOptions smallView() {
+    render::RendererOptions options;
+    options.width = 160;
+    options.height = 90;
+    options.requestedMsaa = 1;
+    return options;
+}
+
 TEST(GamePrimaryPick, TheRendererDrawsThePickTheGameReports) {
     const assets::LoadedLevel level = assets::loadLevel(ONELIGHT_DEMO_PACKAGE);
 
@@ -42,11 +51,7 @@ TEST(GamePrimaryPick, TheRendererDrawsThePickTheGameReports) {
     std::vector<uint32_t> picks;  // the game's pick at each drawn frame
     {
         render::Renderer renderer;
-        render::RendererOptions options;
-        options.width = 160;
-        options.height = 90;
-        options.requestedMsaa = 1;
-        render::createRenderer(renderer, ctx, level, options);
+        render::createRenderer(renderer, ctx, level, smallView());
         std::vector<render::DynamicTransform> transforms;
         const int ticks = int(9.0 / session.tickSeconds);  // past one round trip
         for (int tick = 0; tick < ticks; ++tick) {
@@ -120,11 +125,7 @@ TEST(GamePrimaryPick, AQuakeMoverCrossingTwoLampsIsDrawnWithTheGamesPick) {
     std::vector<uint32_t> picks;
     {
         render::Renderer renderer;
-        render::RendererOptions options;
-        options.width = 160;
-        options.height = 90;
-        options.requestedMsaa = 1;
-        render::createRenderer(renderer, ctx, level, options);
+        render::createRenderer(renderer, ctx, level, smallView());
         std::vector<render::DynamicTransform> transforms;
         const int ticks = int(6.0 / session.tickSeconds);  // past its 5.12 s slide
         for (int tick = 0; tick < ticks; ++tick) {

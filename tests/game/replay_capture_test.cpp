@@ -261,38 +261,37 @@ TEST(Quake3Replay, Q3dm6ishBakesAndPlays) {
     EXPECT_TRUE(g.ok) << g.message;
 }
 
+namespace {
+
+// Installed map MAP compiled (not baked: seconds instead of minutes; its frames show the
+// primaries alone, which is what the goldens hold), then game/replays/MAP.replay played headless
+// at 320x180: its expect lines must hold and its captures match golden/MAP_CAPTURE.png.
+void expectCompiledMapReplay(const std::string& map, const std::vector<std::string>& captures) {
+    const std::string dir = outputDir(map);
+    const std::string package = dir + "/" + map + ".olpak";
+    CommandResult compile = onelight::test::runCommand(std::string(ONELIGHT_BAKE_EXE) +
+                                                       " compile " + map + " -o " + package);
+    ASSERT_EQ(compile.exitCode, 0) << compile.output;
+    CommandResult play = runOnelight(package + " --replay " + ONELIGHT_REPLAYS + "/" + map +
+                                     ".replay --headless --size 320x180 --capture-dir " + dir);
+    ASSERT_EQ(play.exitCode, 0) << play.output;
+    expectCapturesMatchGoldens(dir, map, captures);
+}
+
+}  // namespace
+
 // OpenArena's kaos as `./play` plays it headless (game/replays/kaos.replay): the map's own
-// teleporter and jump pad, checked by the replay's expect lines on its imported brushes, with
-// goldens of the four captures. The package is compiled, not baked (seconds instead of two
-// minutes): its frames show the primaries alone, which is what the goldens hold.
+// teleporter and jump pad, checked by the replay's expect lines on its imported brushes.
 TEST(Quake3Replay, KaosTeleportsAndJumpsAsQuake3Does) {
     if (const std::string missing = missingOpenArena(); !missing.empty()) GTEST_SKIP() << missing;
-    const std::string dir = outputDir("kaos");
-    const std::string package = dir + "/kaos.olpak";
-    CommandResult compile =
-        onelight::test::runCommand(std::string(ONELIGHT_BAKE_EXE) + " compile kaos -o " + package);
-    ASSERT_EQ(compile.exitCode, 0) << compile.output;
-    CommandResult play = runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
-                                     "/kaos.replay --headless --size 320x180 --capture-dir " + dir);
-    ASSERT_EQ(play.exitCode, 0) << play.output;
-    expectCapturesMatchGoldens(dir, "kaos", {"start", "teleported", "apex", "landed"});
+    expectCompiledMapReplay("kaos", {"start", "teleported", "apex", "landed"});
 }
 
 // OpenArena's oa_dm2 with its movers (game/replays/oa_dm2.replay): the player takes an armour,
-// then rides the map's plat up as its trigger raises it, checked by the replay's expect lines,
-// with goldens of the three captures (compiled, not baked, as kaos).
+// then rides the map's plat up as its trigger raises it, checked by the replay's expect lines.
 TEST(Quake3Replay, OaDm2TakesAnArmourAndRidesThePlatUp) {
     if (const std::string missing = missingOpenArena(); !missing.empty()) GTEST_SKIP() << missing;
-    const std::string dir = outputDir("oa_dm2");
-    const std::string package = dir + "/oa_dm2.olpak";
-    CommandResult compile = onelight::test::runCommand(std::string(ONELIGHT_BAKE_EXE) +
-                                                       " compile oa_dm2 -o " + package);
-    ASSERT_EQ(compile.exitCode, 0) << compile.output;
-    CommandResult play =
-        runOnelight(package + " --replay " + ONELIGHT_REPLAYS +
-                    "/oa_dm2.replay --headless --size 320x180 --capture-dir " + dir);
-    ASSERT_EQ(play.exitCode, 0) << play.output;
-    expectCapturesMatchGoldens(dir, "oa_dm2", {"start", "plat", "up"});
+    expectCompiledMapReplay("oa_dm2", {"start", "plat", "up"});
 }
 
 // A package that does not come from a Quake 3 map has no q3map2 lightmaps to show.
