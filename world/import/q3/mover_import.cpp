@@ -30,7 +30,7 @@ float travelSeconds(double units, double unitsPerSecond) {
 
 // A key's number, or `fallback` when it is absent or 0 (the game's "if 0, the default").
 double keyOr(const MapEntity& e, const char* key, double fallback, const std::string& where) {
-    const double v = numberKey(e, key, 0.0f, where);
+    const double v = double(numberKey(e, key, 0.0f, where));
     return v != 0.0 ? v : fallback;
 }
 
@@ -143,7 +143,7 @@ ImportedMovers importMovers(const BspFile& bsp, const std::vector<MapEntity>& en
 
         Mover mover;
         mover.pos1 = mover.pos2 = levelPoint(glm::vec3(s.origin));
-        const double speedKey = numberKey(e, "speed", 0.0f, where);
+        const double speedKey = double(numberKey(e, "speed", 0.0f, where));
         const int flags = int(numberKey(e, "spawnflags", 0.0f, where));
         glm::quat rotation(1.0f, 0.0f, 0.0f, 0.0f);
         if (type == "func_door" || type == "func_button") {
@@ -151,7 +151,7 @@ ImportedMovers importMovers(const BspFile& bsp, const std::vector<MapEntity>& en
             mover.kind = door ? MoverKind::kDoor : MoverKind::kButton;
             const double speed = speedKey != 0.0 ? speedKey : (door ? 400.0 : 40.0);
             mover.wait = float(keyOr(e, "wait", door ? 2.0 : 1.0, where));
-            const double lip = numberKey(e, "lip", door ? 8.0f : 4.0f, where);
+            const double lip = double(numberKey(e, "lip", door ? 8.0f : 4.0f, where));
             const glm::dvec3 dir = moveDirection(e, where);
             const double distance = std::fabs(dir.x) * size.x + std::fabs(dir.y) * size.y +
                                     std::fabs(dir.z) * size.z - lip;
@@ -163,7 +163,7 @@ ImportedMovers importMovers(const BspFile& bsp, const std::vector<MapEntity>& en
         } else if (type == "func_plat") {
             mover.kind = MoverKind::kPlat;
             const double speed = speedKey != 0.0 ? speedKey : 200.0;
-            const double lip = numberKey(e, "lip", 8.0f, where);
+            const double lip = double(numberKey(e, "lip", 8.0f, where));
             const double height =
                 e.keys.count("height") ? double(numberKey(e, "height", 0.0f, where)) : size.z - lip;
             s.pos2 = s.origin;
