@@ -14,12 +14,14 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-glm::vec3 levelVector(glm::dvec3 v) {  // a map-space offset (units) in metres, Y up
-    const double s = kQuake3MetresPerUnit;
-    return glm::vec3(float(v.x * s), float(v.z * s), float(-v.y * s));
+// A map-space offset (units) in metres and a map-space direction as a unit vector, Y up: the
+// linear part of map_axes.hpp's conversion.
+glm::vec3 levelVector(glm::dvec3 v) {
+    return levelPoint(glm::vec3(v));
 }
-glm::vec3 levelAxis(glm::dvec3 v) {  // a map-space direction, Y up, unit
-    return glm::normalize(glm::vec3(float(v.x), float(v.z), float(-v.y)));
+glm::vec3 levelAxis(glm::dvec3 v) {
+    const float n[3] = {float(v.x), float(v.y), float(v.z)};
+    return glm::normalize(levelDirection(n));
 }
 
 // The game's duration of a move: whole milliseconds, at least 1 (InitMover, Reached_Train).
