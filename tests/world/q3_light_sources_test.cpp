@@ -183,6 +183,18 @@ TEST(Quake3LightSources, AMapWithNoLightIsNotBakedBlackInSilence) {
     EXPECT_TRUE(mentions(level.lightSources, "no light at all"));
 }
 
+// A placeholder map with nothing to draw (Nexuiz's _init: one caulk brush for a dedicated
+// server) has no light either, but nothing is lost by baking it: it is not lightless.
+TEST(Quake3LightSources, AMapWithNothingToDrawIsNotRefusedForItsDark) {
+    const auto folder = freshFolder("placeholder");
+    writeFile(folder / "init.bsp", Quake3BspBuilder(8.0f, "common/caulk").text());
+    const SourceLevel level =
+        importLevel((folder / "init.bsp").string(), quake3GameIn(freshFolder("placeholder_game")));
+    EXPECT_TRUE(level.instances.empty());
+    EXPECT_TRUE(level.lightless.empty()) << level.lightless;
+    EXPECT_TRUE(mentions(level.lightSources, "nothing drawn")) << level.lightSources.back();
+}
+
 TEST(Quake3MapSource, HostileTextGivesOneLineNamingTheLine) {
     const auto parse = [](const std::string& text) {
         return errorMessage([&] { (void)parseMapSource(text, "bad.map"); });

@@ -559,7 +559,8 @@ bool importedLightmapLit(const ImportedLightmap& imported) {
 
 // Which source each kind of the map's light came from (SourceLevel::lightSources), and the
 // q3map2-lightmap path where the light entities are lost (q3_import.hpp, "Where the lights
-// come from"). A map that nothing lights is marked lightless: the bake refuses it.
+// come from"). A map that nothing lights is marked lightless: the bake refuses it; a map
+// with nothing to draw is not (it bakes empty).
 void settleLightSources(SourceLevel& level, size_t entityLights, const std::string& entityWhere,
                         const std::string& mapWhere) {
     std::vector<std::string>& out = level.lightSources;
@@ -592,6 +593,14 @@ void settleLightSources(SourceLevel& level, size_t entityLights, const std::stri
             "lightmaps: recovered from q3map2's own (the map's lightmap lump) in place "
             "of the engine's bake, since its light entities are lost; the sun, sky "
             "and surface lights light the grid and probes only");
+        return;
+    }
+    size_t drawn = 0;
+    for (const MeshInstance& mesh : level.instances) drawn += mesh.indices.size() / 3;
+    if (drawn == 0) {
+        // Nothing to light (a placeholder map, such as a dedicated server's one caulk brush):
+        // an empty level bakes and draws, black, which is what it holds.
+        out.push_back("nothing drawn: the map has no visible surface, so nothing to light");
         return;
     }
     if (level.lights.empty() && shaders == 0 && !(sky > 0.0f)) {

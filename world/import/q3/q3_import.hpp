@@ -41,8 +41,9 @@ namespace onelight::world {
    entities as the BSP's would be, those more than half the map's size (>= 16 m) outside its
    geometry left out, a source that fails to parse ignored with a note; else q3map2's own
    lightmaps are the level's (SourceLevel::lightmapIsImported: the bake copies them and the
-   remaining lights, all baked, light the grid and probes only). A map with no light source at
-   all is SourceLevel::lightless, which the bake refuses. SourceLevel::lightSources says which,
+   remaining lights, all baked, light the grid and probes only). A map with surfaces to draw
+   and no light source at all is SourceLevel::lightless, which the bake refuses; one with no
+   visible surface (a placeholder) bakes empty. SourceLevel::lightSources says which,
    one line per kind.
    Which lights are primaries (the lights the runtime draws with shadow maps): a light is a
    candidate when it is the brightest on at least kQuake3PrimaryAreaShare of the map's surface
