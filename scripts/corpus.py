@@ -167,9 +167,11 @@ def chromaticity(rgb):
     return None if s <= 1e-9 else (x / s, y / s)
 
 
-def one_map(name, pk3, inner, args, work):
+def one_map(name, pk3, inner, args, work, stem):
+    """One map through compile, draft bake and the two frames. Its files in `work` are named
+    `stem` (the game's key and the map's name: two games may ship maps of one name)."""
     spec = f"{pk3}:{inner}"
-    package = os.path.join(work, re.sub(r"[^A-Za-z0-9_.-]", "_", name) + ".olpak")
+    package = os.path.join(work, stem + ".olpak")
     report = package[:-6] + ".json"
     row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused", "why": ""}
     code, out, row["compile_s"] = run([args.bake, "compile", spec, "-o", package], args)
@@ -179,7 +181,7 @@ def one_map(name, pk3, inner, args, work):
     row["q3map2"] = q3map2_options(out)
     row["light_from"] = light_from(out)
     if args.no_bake:
-        return compiled_map(row, out, package, name, args, work)
+        return compiled_map(row, out, package, stem, args, work)
     code, out, row["bake_s"] = run([args.bake, spec, "-o", package, "--quality", "draft",
                                     "--quiet", "--report", report], args)
     if code != 0:
@@ -197,7 +199,7 @@ def one_map(name, pk3, inner, args, work):
     row["package_mib"] = os.path.getsize(package) / 2**20
     captures = os.path.join(work, "captures")
     base = [args.game_exe, package, "--headless", "--frames", "1", "--size", args.size]
-    own = os.path.join(captures, name.replace("/", "_") + "-onelight")
+    own = os.path.join(captures, stem + "-onelight")
     code, out, _ = run(base + ["--capture", own], args)
     if code != 0:
         row["why"] = "draw: " + (reason(out, "failed") if code is not None else "timed out")
@@ -208,7 +210,7 @@ def one_map(name, pk3, inner, args, work):
         ev100 = capture["camera"]["ev100"]
         mean = frame_radiance(own + ".json")
         row["luminance"] = luminance(mean)
-        q3 = os.path.join(captures, name.replace("/", "_") + "-q3map2")
+        q3 = os.path.join(captures, stem + "-q3map2")
         code, out, _ = run(base + ["--view", "q3map2", "--ev100", f"{ev100:.4f}", "--capture", q3],
                            args)
         if code == 0:
@@ -228,12 +230,12 @@ def one_map(name, pk3, inner, args, work):
     return row
 
 
-def compiled_map(row, compile_output, package, name, args, work):
+def compiled_map(row, compile_output, package, stem, args, work):
     """--no-bake: the compiled, unbaked package drawn from spawn 0 (the primaries alone: the
     q3map2 lightmaps come with the bake); reports the compile's warnings and the frame."""
     row["package_mib"] = os.path.getsize(package) / 2**20
     row["peak_mib"] = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
-    own = os.path.join(work, "captures", name.replace("/", "_") + "-compiled")
+    own = os.path.join(work, "captures", stem + "-compiled")
     code, out, _ = run([args.game_exe, package, "--headless", "--frames", "1", "--size",
                         args.size, "--capture", own], args)
     if code != 0:
@@ -332,10 +334,10 @@ def main():
     mode = "no-bake" if args.no_bake else "draft"
     pattern = re.compile(args.maps) if args.maps else None
     sections, counts, started = [], {"OK": 0, "approximated": 0, "refused": 0}, time.monotonic()
-    for key in args.games.split(","):
-        if key not in GAMES:
-            sys.exit(f"corpus: --games {key}: expected one of {', '.join(GAMES)}")
-        game, folder = GAMES[key]
+    for game_key in args.games.split(","):
+        if game_key not in GAMES:
+            sys.exit(f"corpus: --games {game_key}: expected one of {', '.join(GAMES)}")
+        game, folder = GAMES[game_key]
         maps, shadowed = maps_of(folder)
         if pattern:
             maps = [m for m in maps if pattern.search(m[0])]
@@ -356,7 +358,8 @@ def main():
                         row["q3map2"] = q3map2_options(out)
             else:
                 try:
-                    row = one_map(name, pk3, inner, args, work)
+                    stem = game_key + "-" + re.sub(r"[^A-Za-z0-9_.-]", "_", name)
+                    row = one_map(name, pk3, inner, args, work, stem)
                 except Exception as e:  # a map must never stop the run
                     row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused",
                            "why": f"corpus script: {e}"}
