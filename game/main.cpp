@@ -220,6 +220,11 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
     game::Session meter;
     game::startSession(meter, level);
     meter.secondaryLux = std::max(info.ambientLux, 1.0f);
+    // The dynamic objects as the game starts them (items on the floor, each object with the
+    // primary the game picks where it stands), nothing moving: a view, not a game.
+    game::pickPrimariesAtRest(meter);
+    std::vector<render::DynamicTransform> dynamicObjects;  // frameInputsOf fills it
+    (void)game::frameInputsOf(meter, dynamicObjects);
     const bool metered = !cl.hasEv100 && !camera.hasExposure && !level.level.settings.hasExposure;
     const auto expose = [&](render::Camera c) {
         if (cl.hasEv100) {
@@ -250,6 +255,7 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
             render::FrameInputs inputs;
             inputs.camera = camera;
             inputs.effects = effectsFor(cl, camera);
+            inputs.dynamicTransforms = dynamicObjects;
             const bool readback = lastFrame && !cl.capture.empty();
             const auto frameStart = std::chrono::steady_clock::now();
             const render::FrameStats stats = game::drawToTarget(

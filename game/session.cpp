@@ -169,6 +169,13 @@ void stepSession(Session& s) {
     s.input.endTick();
 }
 
+void pickPrimariesAtRest(Session& s) {
+    const ecs::Tick tick{s.tick, s.tickSeconds};
+    primarySelectionSystem(
+        s.registry, tick, s.primaryCandidates,
+        [&s](uint32_t light, glm::vec3 p) { return primaryPickScore(s, light, p); });
+}
+
 render::Camera playerCamera(const Session& s) {
     const Transform& t = s.registry.get<Transform>(s.player);
     const Player& p = s.registry.get<Player>(s.player);

@@ -50,6 +50,10 @@ void startSession(Session& session, const assets::LoadedLevel& level);
 // clears the tick's one-shot input.
 void stepSession(Session& session);
 
+// Picks every dynamic object's primary where it stands, as the tick's last system does, with no
+// time passing: what a view of the level (not a game) draws them with.
+void pickPrimariesAtRest(Session& session);
+
 // The player's eye as a camera, with the adapted exposure.
 [[nodiscard]] render::Camera playerCamera(const Session& session);
 

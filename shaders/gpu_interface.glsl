@@ -149,17 +149,18 @@ struct GpuMaterial {
     uvec4 textures;  // x bit mask (1 << TEXTURE_*)
 };
 
-// A dynamic object's baked lighting: the light grid sampled at its origin.
-// A dynamic object's baked lighting. One longer than a grid cell takes up to MAX_OBJECT_SAMPLES
-// samples, evenly along its longest axis from end to end, and a pixel mixes the two it lies
-// between; a shorter one the one at its origin.
-const uint MAX_OBJECT_SAMPLES = 5u;
+// A dynamic object's baked lighting: the light grid sampled at its origin, or, for an object
+// longer than a grid cell, at a lattice over its bounds (runtime/render/frame_view.hpp,
+// writeObjectLighting), which a pixel interpolates trilinearly by where it lies in the box.
+const uint MAX_OBJECT_SAMPLES = 48u;  // 8 x 3 x 2: along the box's longest, middle, shortest edge
 struct GpuObjectLighting {
-    vec4 from;  // xyz world metres: the axis's start; w the samples along it (1: the origin's)
-    vec4 axis;  // xyz (to - from) / |to - from|^2 (zero for one sample)
-    vec4 ambientCube[MAX_OBJECT_SAMPLES * 6u];  // sample s's faces at 6 s .. 6 s + 5: rgb lux
-                                                // facing +x -x +y -y +z -z; [6 s].w the baked
-                                                // visibility of the primary there
+    vec4 from;     // xyz world metres: the lattice's first sample (a corner of the box)
+    vec4 axes[3];  // xyz: the box's edge a in the world over its squared length (a point's
+                   // dot with it from `from` is its place along the edge, 0..1); w: samples
+                   // along it (1: one, and the edge is ignored)
+    vec4 ambientCube[MAX_OBJECT_SAMPLES * 6u];  // sample s = i + n0 (j + n1 k) at 6 s .. 6 s + 5:
+                                                // rgb lux facing +x -x +y -y +z -z; [6 s].w the
+                                                // baked visibility of the primary there
 };
 
 // An environment probe (runtime/render/probe_records.hpp; shaders/probe.glsl for the rules).

@@ -360,16 +360,34 @@ void batchDraws(std::vector<Draw>& draws, bool geometryOnly) {
     draws.resize(kept);
 }
 
+namespace {
+
+// How many lattice samples an object takes along an edge of its bounds `extent` metres long,
+// for a grid of `cell` metres, where the edge's rank among the three is `rank` (0 the longest):
+// a cell or less apart from end to end, up to 8, 3 and 2 along the longest, middle and shortest
+// edge; two (its two faces) along an edge of at least a quarter cell; else one.
+uint32_t latticeSamples(float extent, float cell, int rank) {
+    const uint32_t cap = rank == 0 ? 8u : rank == 1 ? 3u : 2u;
+    if (extent > cell) return std::min(uint32_t(std::ceil(extent / cell)) + 1u, cap);
+    return extent >= 0.25f * cell ? 2u : 1u;
+}
+
+}  // namespace
+
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
                          const SceneGeometry& geometry, const FrameView& view, const DrawList& list,
                          GpuObjectLighting* out) {
     const bool useGrid = baked.present && !baked.grid.cells.empty();
     const std::vector<glm::vec3>& lo = geometry.entityBoundsMin;
     const std::vector<glm::vec3>& hi = geometry.entityBoundsMax;
+    const float cell =
+        std::min({baked.grid.cellSize.x, baked.grid.cellSize.y, baked.grid.cellSize.z});
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
         GpuObjectLighting o{};
-        o.from = glm::vec4(glm::vec3(view.entityTransforms[e][3]), 1.0f);
+        const glm::mat4& m = view.entityTransforms[e];
+        o.from = glm::vec4(glm::vec3(m[3]), 1.0f);
+        for (glm::vec4& axis : o.axes) axis = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
         if (!useGrid) {  // the placeholder textures' neutral values: the ambient, visible
             for (size_t f = 0; f < 6; ++f)
                 o.ambientCube[f] = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
@@ -377,7 +395,6 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
             out[e] = o;
             continue;
         }
-        const glm::mat4& m = view.entityTransforms[e];
         const uint32_t primary = view.entityPrimary[e];
         auto sampleAt = [&](glm::vec3 point, uint32_t s) {
             const world::LightGridSample sample = world::sampleLightGrid(baked.grid, point);
@@ -386,32 +403,45 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
             o.ambientCube[6 * s].w =
                 primary != kNoIndex ? world::bakedVisibility(baked.grid, sample, primary) : 1.0f;
         };
-        // The longest axis of its bounds, in the world: samples a grid cell or less apart along
-        // it, end to end (at most MAX_OBJECT_SAMPLES), when it is longer than a cell's smallest
-        // side; else one at its origin.
-        glm::vec3 from(m[3]), to(m[3]);
+        // Its bounds' edges in the world (rotation and uniform scale keep them square).
+        glm::vec3 corner(m[3]), edge[3] = {glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+        float length[3] = {0.0f, 0.0f, 0.0f};
         if (lo[e].x <= hi[e].x) {
-            const glm::vec3 centre = 0.5f * (lo[e] + hi[e]), half = 0.5f * (hi[e] - lo[e]);
-            const int k = half.x >= half.y && half.x >= half.z ? 0 : half.y >= half.z ? 1 : 2;
-            glm::vec3 along(0.0f);
-            along[k] = half[k];
-            from = glm::vec3(m * glm::vec4(centre - along, 1.0f));
-            to = glm::vec3(m * glm::vec4(centre + along, 1.0f));
+            corner = glm::vec3(m * glm::vec4(lo[e], 1.0f));
+            for (int a = 0; a < 3; ++a) {
+                glm::vec3 side(0.0f);
+                side[a] = hi[e][a] - lo[e][a];
+                edge[a] = glm::vec3(m * glm::vec4(side, 0.0f));
+                length[a] = glm::length(edge[a]);
+            }
         }
-        const glm::vec3 d = to - from;
-        const float length = glm::length(d);
-        const float cell =
-            std::min({baked.grid.cellSize.x, baked.grid.cellSize.y, baked.grid.cellSize.z});
-        if (length > cell) {
-            const uint32_t samples = std::min(uint32_t(std::ceil(length / cell)) + 1u,
-                                              uint32_t(glsl::MAX_OBJECT_SAMPLES));
-            for (uint32_t s = 0; s < samples; ++s)
-                sampleAt(from + d * (float(s) / float(samples - 1)), s);
-            o.from = glm::vec4(from, float(samples));
-            o.axis = glm::vec4(d / (length * length), 0.0f);
-        } else {
+        const float longest = std::max({length[0], length[1], length[2]});
+        if (!(longest > cell)) {  // within a cell: the one sample at its origin
             sampleAt(glm::vec3(m[3]), 0);
+            out[e] = o;
+            continue;
         }
+        uint32_t n[3];
+        for (int a = 0; a < 3; ++a) {
+            int rank = 0;  // edges longer than this one, ties broken by axis order
+            for (int b = 0; b < 3; ++b)
+                rank += length[b] > length[a] || (length[b] == length[a] && b < a) ? 1 : 0;
+            n[a] = latticeSamples(length[a], cell, rank);
+            o.axes[a] = n[a] > 1u ? glm::vec4(edge[a] / (length[a] * length[a]), float(n[a]))
+                                  : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        }
+        // One sample edge's single sample sits mid-way across it; more span it end to end.
+        auto along = [&](int a, uint32_t i) {
+            return n[a] > 1u ? float(i) / float(n[a] - 1u) : 0.5f;
+        };
+        o.from = glm::vec4(
+            corner + along(0, 0) * edge[0] + along(1, 0) * edge[1] + along(2, 0) * edge[2], 1.0f);
+        for (uint32_t k = 0; k < n[2]; ++k)
+            for (uint32_t j = 0; j < n[1]; ++j)
+                for (uint32_t i = 0; i < n[0]; ++i)
+                    sampleAt(corner + along(0, i) * edge[0] + along(1, j) * edge[1] +
+                                 along(2, k) * edge[2],
+                             i + n[0] * (j + n[1] * k));
         out[e] = o;
     }
 }

@@ -78,8 +78,9 @@ struct DrawList {
                                       uint32_t shadowedLight);
 
 /// The grid's lighting of every visible dynamic object, into `out` (one record per entity): at
-/// its origin, or for an object longer than a grid cell at up to MAX_OBJECT_SAMPLES points along
-/// its bounds' longest axis (GpuObjectLighting).
+/// its origin, or for an object longer than a grid cell at a lattice over its bounds, a cell or
+/// less apart along each edge and on both faces of a thin one (at most 8 x 3 x 2 =
+/// MAX_OBJECT_SAMPLES; GpuObjectLighting), which the shader interpolates trilinearly.
 void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
                          const SceneGeometry& geometry, const FrameView& view, const DrawList& list,
                          GpuObjectLighting* out);

@@ -33,7 +33,7 @@ static_assert(sizeof(GpuLight) == 80);
 static_assert(sizeof(FrameUniforms) == 224 + 80 * (kMaxEffectOmnis + 1));
 static_assert(sizeof(GpuShadowView) == 80);
 static_assert(sizeof(GpuMaterial) == 80);
-static_assert(sizeof(GpuObjectLighting) == 32 + 96 * glsl::MAX_OBJECT_SAMPLES);
+static_assert(sizeof(GpuObjectLighting) == 64 + 96 * glsl::MAX_OBJECT_SAMPLES);
 static_assert(sizeof(GpuProbe) == 80);
 static_assert(sizeof(GpuProbeGrid) == 48);
 static_assert(sizeof(DrawPush) == 112);

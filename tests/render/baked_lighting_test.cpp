@@ -652,11 +652,13 @@ TEST(RenderBaked, APrimarySwitchCrossFadesLinearlyBetweenTheTwoLights) {
     EXPECT_EQ(ctx.validationCounts.errors.load(), 0u);
 }
 
-// A dynamic bar 6 m long, longer than a grid cell, takes its secondary light from grid samples
-// along its long axis (MAX_OBJECT_SAMPLES, end to end), a pixel mixing the two it lies between.
-// Against the grid sampled at each pixel's own point (what a long object should get), along its
-// top face the rendered radiance is closer than the one sample at its origin was, and it is what
-// the samples give (within 2%: the RGBA16F target against the mix computed here).
+// A dynamic bar 6 m long, longer than a grid cell, takes its secondary light from a lattice of
+// grid samples over its bounds (a cell or less apart along it, on both faces across it), a pixel
+// interpolating those around it. Along its top face the rendered radiance is within 5% of the
+// grid sampled at each pixel's own point (what the lattice stands in for: the grid is trilinear
+// over 1 m cells and the lattice's samples are up to a cell apart and not on the cells' centres,
+// so the two interpolations differ where the light curves; measured 2.8%; and the RGBA16F target),
+// where the one sample at its origin was several times off.
 TEST(RenderBaked, ALongDynamicObjectTakesItsLightAlongItsLength) {
     test::Scene scene = bakedScene();
     scene.lights[1].role = nullptr;  // a second primary: the secondary light varies more
@@ -693,26 +695,15 @@ TEST(RenderBaked, ALongDynamicObjectTakesItsLightAlongItsLength) {
         const render::CapturedFrame& frame = render::capturedFrame(renderer);
         const world::LightGrid& grid = level.baked.grid;
         auto upAt = [&](glm::vec3 p) { return world::sampleLightGrid(grid, p).ambientCube[2]; };
-        const uint32_t samples = glsl::MAX_OBJECT_SAMPLES;  // 6 m: more than the cap of cells
-        ASSERT_LE(grid.cellSize.x, 6.0f / float(samples - 1));
-        std::vector<glm::vec3> along;
-        for (uint32_t k = 0; k < samples; ++k)
-            along.push_back(upAt({-3.0f + 6.0f * float(k) / float(samples - 1), 0.5f, -4.0f}));
-        auto mixed = [&](float t) {
-            const float x = t * float(samples - 1);
-            const uint32_t k = std::min(uint32_t(x), samples - 2);
-            return glm::mix(along[k], along[k + 1], x - float(k));
-        };
         const glm::vec3 origin = upAt({0.0f, 0.5f, -4.0f});
         const uint32_t material =
             level.level.dynamicMeshes.at(level.level.entities[bar].firstDynamicMesh).material;
         float worstSamples = 0.0f, worstOne = 0.0f;
         for (const float aim : {0.1f, 0.3f, 0.5f, 0.7f, 0.9f}) {
             const glm::uvec2 px = floorPixelNear(camera, {-3.0f + 6.0f * aim, 0.7f, -4.0f});
-            // Where the pixel's centre meets the top face (y = 0.7), and how far along it is.
+            // Where the pixel's centre meets the top face (y = 0.7).
             const Ray r = pixelRay(camera, float(px.x) + 0.5f, float(px.y) + 0.5f);
             const glm::vec3 top = r.origin + ((0.7f - r.origin.y) / r.direction.y) * r.direction;
-            const float t = (top.x + 3.0f) / 6.0f;
             const size_t at = (size_t(px.y) * kWidth + px.x) * 4;
             const glm::vec3 rendered(frame.linearRgba[at], frame.linearRgba[at + 1],
                                      frame.linearRgba[at + 2]);
@@ -720,23 +711,161 @@ TEST(RenderBaked, ALongDynamicObjectTakesItsLightAlongItsLength) {
                 return lambertRadiance(level.level, material, world::kNoIndex, 0.0f, up, top, kUp,
                                        camera.position);
             };
-            const glm::vec3 samplesGive = radianceOf(mixed(t));
-            const glm::vec3 reference = radianceOf(upAt({top.x, 0.5f, -4.0f}));
+            const glm::vec3 reference = radianceOf(upAt(top));
             const glm::vec3 oneSample = radianceOf(origin);
-            EXPECT_LT(relativeError(rendered, samplesGive, 1e-4), 0.02) << "t " << t;
             worstSamples = std::max(worstSamples, float(relativeError(rendered, reference, 1e-4)));
             worstOne = std::max(worstOne, float(relativeError(oneSample, reference, 1e-4)));
             std::printf(
-                "[ long ] t %.1f: rendered %.4g, the samples' mix %.4g, the grid there "
-                "%.4g, one sample %.4g (red)\n",
-                double(t), double(rendered.x), double(samplesGive.x), double(reference.x),
-                double(oneSample.x));
+                "[ long ] x %+.2f: rendered %.4g, the grid there %.4g, one sample %.4g (red)\n",
+                double(top.x), double(rendered.x), double(reference.x), double(oneSample.x));
         }
         std::printf(
-            "[ long ] worst error against the grid at each pixel: %u samples %.3f, one "
-            "sample %.3f\n",
-            samples, double(worstSamples), double(worstOne));
+            "[ long ] worst error against the grid at each pixel: the lattice %.3f, one sample "
+            "%.3f\n",
+            double(worstSamples), double(worstOne));
+        EXPECT_LT(worstSamples, 0.05);
         EXPECT_LT(worstSamples, worstOne);
+        render::destroyRenderer(renderer);
+    }
+    vk::destroyContext(ctx);
+    EXPECT_EQ(ctx.validationCounts.errors.load(), 0u);
+}
+
+// The same 6 m bar, now a mover's stand-in lit as the game lights it (its primary, with a
+// runtime shadow; the grid's secondary at its lattice), against the path tracer's image of the
+// same scene with the bar standing there as static geometry (every light at full strength, the
+// bar's own shadows and bounces included). Measured on the bar's top in six 1 m bands along it:
+// each band's mean radiance, the frame's against the reference's. The secondary light changes
+// several fold along the bar (the baked lamp stands 2.2 m from its end), which one sample at its
+// origin cannot follow; the same bands evaluated on the CPU with the grid at the origin alone, and
+// with the grid at each pixel's own point, give the error the lattice removes and the grid's own.
+// Measured (2026-12-06): worst band 5.4% (the grid at each pixel: 1.8%; one sample at the
+// origin: 54%; samples along the bar's axis only, before the lattice: 27%).
+// Tolerance: the worst band under 10%: the reference's own noise at 256 paths per pixel over a
+// band's ~100 pixels is under 1%, the grid's own error ~2% here, and the lattice's samples, up
+// to a cell apart, interpolate a lamp's 1 / r^2 falloff 2 m away linearly (a few %).
+TEST(RenderBaked, ALongDynamicObjectIsLitCloseToThePathTracer) {
+    test::Scene scene = bakedScene();
+    const glm::vec3 lo(-3.0f, 0.3f, -4.4f), hi(3.0f, 0.7f, -3.6f);
+    test::addBox(scene, lo, hi, 2, true);
+    const render::Camera camera = render::cameraFromYawPitch({0.0f, 6.0f, 1.0f}, 0.0f, -45.0f);
+    scene.viewPosition = camera.position;
+    scene.viewRotation = camera.rotation;
+    scene.viewYfov = camera.yfov;
+    scene.viewAspect = float(kWidth) / float(kHeight);
+    const assets::LoadedLevel level = bake("baked_long_reference", scene);
+    uint32_t bar = world::kNoIndex, box = world::kNoIndex;
+    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
+        if (level.level.entities[e].flags & world::kEntityDynamic) {
+            box = bar == world::kNoIndex ? box : bar;
+            bar = e;  // the last one: the bar
+        }
+    ASSERT_NE(bar, world::kNoIndex);
+
+    // The reference: the bar static, the small dynamic box left out of both (moved away below).
+    test::Scene still = scene;
+    still.meshes.back().dynamic = false;
+    for (size_t m = 0; m + 1 < still.meshes.size(); ++m)
+        if (still.meshes[m].dynamic) still.meshes[m].positions.clear();
+    std::erase_if(still.meshes, [](const test::SceneMesh& m) { return m.positions.empty(); });
+    const std::string folder = test::outputDir();
+    test::writeGltf(still, folder + "/long_reference.gltf");
+    const std::string exr = folder + "/long_reference.exr";
+    const world::ChildResult pathTraced = world::runChild(
+        {ONELIGHT_BAKE_PATH, "reference", folder + "/long_reference.gltf", "--camera", "view",
+         "--size", std::to_string(kWidth) + "x" + std::to_string(kHeight), "--spp", "256", "-o",
+         exr});
+    ASSERT_EQ(pathTraced.exitCode, 0) << pathTraced.err;
+    const world::FloatImage reference = world::readExrFile(exr);
+    ASSERT_EQ(reference.width, kWidth);
+    ASSERT_EQ(reference.height, kHeight);
+
+    vk::Context ctx;
+    render::RenderDeviceFeatures features;
+    vk::createContext(ctx, render::renderContextOptions(features, {}));
+    {
+        render::Renderer renderer;
+        render::createRenderer(renderer, ctx, level, options(40.0f, 8.0f));
+        const glm::vec3 centre = 0.5f * (lo + hi);
+        uint32_t primary = world::kNoIndex;  // the scene's one primary: the game's pick
+        for (uint32_t l = 0; l < level.level.lights.size(); ++l)
+            if (level.level.lights[l].role == world::LightRole::kPrimary) primary = l;
+        ASSERT_NE(primary, world::kNoIndex);
+        std::vector<render::DynamicTransform> transforms = {{bar, glm::mat4(1.0f), primary}};
+        if (box != world::kNoIndex)  // far off the floor, out of the view
+            transforms.push_back(
+                {box, glm::translate(glm::mat4(1.0f), {0.0f, -50.0f, 0.0f}), world::kNoIndex});
+        render::FrameInputs inputs;
+        inputs.camera = camera;
+        inputs.dynamicTransforms = transforms;
+        render::FrameOutput output;
+        output.readback = true;
+        render::drawFrame(renderer, inputs, output);
+        const render::CapturedFrame& frame = render::capturedFrame(renderer);
+        world::writeExrFile(folder + "/long_frame.exr", kWidth, kHeight, frame.linearRgba);
+
+        const world::LightGrid& grid = level.baked.grid;
+        const uint32_t material =
+            level.level.dynamicMeshes.at(level.level.entities[bar].firstDynamicMesh).material;
+        const glm::vec3 atOrigin = world::sampleLightGrid(grid, centre).ambientCube[2];
+        const auto luminance = [](glm::dvec3 c) {
+            return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+        };
+        constexpr int kBands = 6;
+        glm::dvec3 rendered[kBands] = {}, traced[kBands] = {}, oneSample[kBands] = {},
+                   atPixel[kBands] = {};
+        int pixels[kBands] = {};
+        for (uint32_t y = 0; y < kHeight; ++y)
+            for (uint32_t x = 0; x < kWidth; ++x) {
+                // Pixels whose whole footprint lies on the top face, 5 cm in from its edges.
+                bool inside = true;
+                glm::vec3 top(0.0f);
+                for (const float o : {0.0f, 0.5f, 1.0f}) {
+                    const Ray r = pixelRay(camera, float(x) + o, float(y) + o);
+                    const glm::vec3 p =
+                        r.origin + ((hi.y - r.origin.y) / r.direction.y) * r.direction;
+                    inside = inside && p.x > lo.x + 0.05f && p.x < hi.x - 0.05f &&
+                             p.z > lo.z + 0.05f && p.z < hi.z - 0.05f;
+                    if (o == 0.5f) top = p;
+                }
+                if (!inside) continue;
+                const int band = std::clamp(int(top.x - lo.x), 0, kBands - 1);
+                const size_t at = (size_t(y) * kWidth + x) * 4;
+                rendered[band] += glm::dvec3(frame.linearRgba[at], frame.linearRgba[at + 1],
+                                             frame.linearRgba[at + 2]);
+                traced[band] +=
+                    glm::dvec3(reference.rgba[at], reference.rgba[at + 1], reference.rgba[at + 2]);
+                oneSample[band] += glm::dvec3(lambertRadiance(level.level, material, primary, 1.0f,
+                                                              atOrigin, top, kUp, camera.position));
+                atPixel[band] += glm::dvec3(lambertRadiance(
+                    level.level, material, primary, 1.0f,
+                    world::sampleLightGrid(grid, top).ambientCube[2], top, kUp, camera.position));
+                ++pixels[band];
+            }
+        double worstFrame = 0.0, worstOne = 0.0;
+        for (int b = 0; b < kBands; ++b) {
+            ASSERT_GT(pixels[b], 20) << "band " << b;
+            const double want = luminance(traced[b]);
+            const double frameError = std::fabs(luminance(rendered[b]) - want) / want;
+            const double oneError = std::fabs(luminance(oneSample[b]) - want) / want;
+            worstFrame = std::max(worstFrame, frameError);
+            worstOne = std::max(worstOne, oneError);
+            std::printf(
+                "[ long/reference ] band x %+.0f..%+.0f m (%d px): reference %.4g, frame %.4g "
+                "(%+.1f%%), the grid at each pixel %.4g (%+.1f%%), one grid sample at the origin "
+                "%.4g (%+.1f%%) cd/m^2\n",
+                double(lo.x) + b, double(lo.x) + b + 1, pixels[b], want / pixels[b],
+                luminance(rendered[b]) / pixels[b], 100.0 * (luminance(rendered[b]) - want) / want,
+                luminance(atPixel[b]) / pixels[b], 100.0 * (luminance(atPixel[b]) - want) / want,
+                luminance(oneSample[b]) / pixels[b],
+                100.0 * (luminance(oneSample[b]) - want) / want);
+        }
+        std::printf(
+            "[ long/reference ] worst band against the path tracer: frame %.1f%%, one grid "
+            "sample at the origin %.1f%%\n",
+            100.0 * worstFrame, 100.0 * worstOne);
+        EXPECT_LT(worstFrame, 0.10);
+        EXPECT_LT(worstFrame, worstOne);
         render::destroyRenderer(renderer);
     }
     vk::destroyContext(ctx);

@@ -258,6 +258,14 @@ void writeGltf(const Scene& scene, const std::string& path) {
              {"extras", {{"onelight", {{"sky", {{"image", scene.skyImage}, {"scale", sky}}}}}}}});
     else if (scene.sky != glm::vec3(0.0f))
         nodes.push_back({{"name", "level_settings"}, {"extras", {{"onelight", {{"sky", sky}}}}}});
+    if (scene.viewAspect > 0.0f) {
+        const glm::vec3 t = scene.viewPosition;
+        const glm::quat q = scene.viewRotation;
+        nodes.push_back({{"name", "view"},
+                         {"camera", 0},
+                         {"translation", {t.x, t.y, t.z}},
+                         {"rotation", {q.x, q.y, q.z, q.w}}});
+    }
     json sceneNodes = json::array();
     for (size_t i = 0; i < nodes.size(); ++i) sceneNodes.push_back(i);
     json gltf = {{"asset", {{"version", "2.0"}}},
@@ -271,6 +279,11 @@ void writeGltf(const Scene& scene, const std::string& path) {
                  {"buffers",
                   {{{"byteLength", buffer.size()},
                     {"uri", "data:application/octet-stream;base64," + base64(buffer)}}}}};
+    if (scene.viewAspect > 0.0f)
+        gltf["cameras"] = {
+            {{"type", "perspective"},
+             {"perspective",
+              {{"yfov", scene.viewYfov}, {"aspectRatio", scene.viewAspect}, {"znear", 0.05}}}}};
     if (!scene.lights.empty()) {
         gltf["extensionsUsed"] = {"KHR_lights_punctual"};
         gltf["extensions"] = {{"KHR_lights_punctual", {{"lights", lights}}}};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "assets/level_assets.hpp"
 #include "render/renderer.hpp"
@@ -46,6 +47,11 @@ struct Scene {
     std::vector<SceneLight> lights;
     glm::vec3 sky{0.0f};   // cd/m^2: extras.onelight.sky of a settings node when non-zero...
     std::string skyImage;  // ...or the scale of this .hdr (relative to the glTF) when given
+    // A perspective camera node named "view" (for `onelight-bake reference --camera view`) when
+    // viewAspect > 0: its place, its rotation (world from camera, looking down -Z) and yfov.
+    glm::vec3 viewPosition{0.0f};
+    glm::quat viewRotation{1.0f, 0.0f, 0.0f, 0.0f};
+    float viewYfov = 1.0f, viewAspect = 0.0f;
 };
 
 /// A quad in the plane y = height, facing +Y, of half size `half` around (cx, cz).

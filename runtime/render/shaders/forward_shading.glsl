@@ -106,17 +106,45 @@ float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float view
     return shadow;
 }
 
-// The two samples of a dynamic object's lighting a pixel lies between (their first faces'
-// indices) and its weight towards the second.
-struct ObjectSamples {
-    uint a, b;
-    float t;
+// Where a pixel lies in a dynamic object's lattice of grid samples (GpuObjectLighting): the
+// first of the eight samples around it, the index steps to the next along each edge (0 along
+// an edge of one sample), and its weights towards them.
+struct ObjectLattice {
+    uint first;
+    uvec3 step;
+    vec3 t;
 };
-ObjectSamples objectSamples(GpuObjectLighting o) {
-    uint samples = uint(o.from.w);
-    float x = clamp(dot(inWorldPosition - o.from.xyz, o.axis.xyz), 0.0, 1.0) * float(samples - 1u);
-    uint s = min(uint(x), samples > 1u ? samples - 2u : 0u);
-    return ObjectSamples(6u * s, samples > 1u ? 6u * (s + 1u) : 0u, samples > 1u ? x - float(s) : 0.0);
+ObjectLattice objectLattice(uint record) {
+    ObjectLattice k = ObjectLattice(0u, uvec3(0u), vec3(0.0));
+    uint stride = 1u;
+    for (int a = 0; a < 3; ++a) {
+        vec4 axis = objectLighting[record].axes[a];
+        uint n = max(uint(axis.w), 1u);
+        if (n > 1u) {
+            float x = clamp(dot(inWorldPosition - objectLighting[record].from.xyz, axis.xyz), 0.0, 1.0) * float(n - 1u);
+            uint s = min(uint(x), n - 2u);
+            k.first += s * stride;
+            k.step[a] = stride;
+            k.t[a] = x - float(s);
+        }
+        stride *= n;
+    }
+    return k;
+}
+
+// Face `face` of the object's ambient cube where the pixel lies: its lattice samples' faces,
+// trilinearly (rgb lux; w the primary's baked visibility for face 0).
+vec4 objectCubeFace(uint record, ObjectLattice k, uint face) {
+    vec4 sum = vec4(0.0);
+    for (uint c = 0u; c < 8u; ++c) {
+        uvec3 bit = uvec3(c & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
+        vec3 w3 = mix(1.0 - k.t, k.t, vec3(bit));
+        float w = w3.x * w3.y * w3.z;
+        if (w == 0.0) continue;  // every corner past an edge of one sample, and exact hits
+        uint s = k.first + bit.x * k.step.x + bit.y * k.step.y + bit.z * k.step.z;
+        sum += w * objectLighting[record].ambientCube[6u * s + face];
+    }
+    return sum;
 }
 
 // Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
@@ -132,11 +160,9 @@ vec3 secondaryIrradiance(vec3 n) {
         return e * frame.baked.y;
     }
     if (drawHasObjectLighting()) {
-        GpuObjectLighting o = objectLighting[draw.objectLighting];
-        ObjectSamples k = objectSamples(o);
+        ObjectLattice k = objectLattice(draw.objectLighting);
         vec3 c[6];
-        for (uint i = 0u; i < 6u; ++i)
-            c[i] = mix(o.ambientCube[k.a + i].rgb, o.ambientCube[k.b + i].rgb, k.t);
+        for (uint i = 0u; i < 6u; ++i) c[i] = objectCubeFace(draw.objectLighting, k, i).rgb;
         return irradianceAmbientCube(c[0], c[1], c[2], c[3], c[4], c[5], n);
     }
     return vec3(frame.baked.x);
@@ -149,9 +175,7 @@ float bakedShadow() {
     if (drawHasLightmap())
         return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
     if (drawHasObjectLighting()) {
-        GpuObjectLighting o = objectLighting[draw.objectLighting];
-        ObjectSamples k = objectSamples(o);
-        return mix(o.ambientCube[k.a].w, o.ambientCube[k.b].w, k.t);
+        return objectCubeFace(draw.objectLighting, objectLattice(draw.objectLighting), 0u).w;
     }
     return 1.0;
 }
