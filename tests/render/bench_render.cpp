@@ -258,9 +258,11 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     struct Config {
         const char* name;
         render::RendererOptions options;
-        bool withoutItems = false;  // the map's pickups and movers hidden (a Quake 3 map's)
+        uint32_t hide = 0;    // entity flags whose objects are hidden (a Quake 3 map's pickups,
+                              // movers)...
+        bool shrink = false;  // ...or drawn shrunk to a hundredth instead
     };
-    std::vector<Config> configs(18);
+    std::vector<Config> configs(21);
     for (Config& c : configs) c.options.requestedMsaa = 4;
     configs[0].name = "full frame, as the game draws it";
     configs[1].name = "general pipelines (choices at run time)";
@@ -295,23 +297,36 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     configs[16].name = "shadow lookups on every lit surface";
     configs[16].options.skipUniformShadows = false;
     configs[17].name = "without the level's items and movers";
-    configs[17].withoutItems = true;
-    // The items and movers where the level places them (as inputs without transforms draw
-    // them), hidden.
-    std::vector<render::DynamicTransform> hiddenItems;
-    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
-        if (level.level.entities[e].flags & (world::kEntityItem | world::kEntityMover)) {
-            render::DynamicTransform t;
-            t.entity = e;
-            t.worldFromObject =
-                world::worldFromObject(level.level.entities[e], level.level.entities[e].position);
-            t.hidden = true;
-            hiddenItems.push_back(t);
-        }
-    render::FrameInputs noItems = inputs;
-    noItems.dynamicTransforms = hiddenItems;
+    configs[17].hide = world::kEntityItem | world::kEntityMover;
+    configs[18].name = "without the level's items";
+    configs[18].hide = world::kEntityItem;
+    configs[19].name = "without the level's movers";
+    configs[19].hide = world::kEntityMover;
+    // The same draws, each object shrunk about its origin to a hundredth (its pixels gone, its
+    // draw, pipeline, textures and vertices kept): what the objects cost per draw.
+    configs[20].name = "items and movers shrunk to a hundredth";
+    configs[20].hide = world::kEntityItem | world::kEntityMover;
+    configs[20].shrink = true;
+    // The hidden objects where the level places them (as inputs without transforms draw them).
+    std::vector<render::FrameInputs> hiddenInputs(configs.size(), inputs);
+    std::vector<std::vector<render::DynamicTransform>> hidden(configs.size());
+    for (size_t c = 0; c < configs.size(); ++c) {
+        if (!configs[c].hide) continue;
+        for (uint32_t e = 0; e < level.level.entities.size(); ++e)
+            if (level.level.entities[e].flags & configs[c].hide) {
+                render::DynamicTransform t;
+                t.entity = e;
+                t.worldFromObject = world::worldFromObject(level.level.entities[e],
+                                                           level.level.entities[e].position);
+                t.hidden = !configs[c].shrink;
+                if (configs[c].shrink)
+                    t.worldFromObject = glm::scale(t.worldFromObject, glm::vec3(0.01f));
+                hidden[c].push_back(t);
+            }
+        hiddenInputs[c].dynamicTransforms = hidden[c];
+    }
     auto inputsOf = [&](size_t c) -> const render::FrameInputs& {
-        return configs[c].withoutItems ? noItems : inputs;
+        return configs[c].hide ? hiddenInputs[c] : inputs;
     };
     std::vector<render::Renderer> renderers(configs.size());
     for (size_t c = 0; c < configs.size(); ++c) {
