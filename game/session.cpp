@@ -160,6 +160,7 @@ void stepSession(Session& s) {
     s.world.brushes = s.level->level.collision.brushes.empty() ? nullptr : &s.brushes;
     moverSystem(s.registry, tick, s.movers, s.brushes, s.tuning, s.world, s.player);
     playerSystem(s.registry, tick, s.input, s.tuning, s.world);
+    shotSystem(s.registry, s.input, s.tuning, s.movers, s.brushes);
     triggerSystem(s.registry, s.tuning, s.world, &s.movers);
     itemSystem(s.registry, tick, s.player);
     effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);

@@ -46,8 +46,8 @@ struct Session {
 // with quake3Tuning() on them; others with the default tuning on their drawn surfaces.
 void startSession(Session& session, const assets::LoadedLevel& level);
 
-// Runs one fixed tick: movers, player, triggers, items, effect lights, primary selection; then
-// clears the tick's one-shot input.
+// Runs one fixed tick: movers, player, its shot, triggers, items, effect lights, primary selection;
+// then clears the tick's one-shot input.
 void stepSession(Session& session);
 
 // Picks every dynamic object's primary where it stands, as the tick's last system does, with no

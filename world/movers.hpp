@@ -29,9 +29,11 @@ enum class MoverKind : uint32_t {
 inline constexpr uint32_t kMoverKindCount = 8;
 
 enum MoverFlags : uint32_t {
-    kMoverCrusher = 1u << 0,  // a blocked door or plat keeps pushing instead of reversing
+    kMoverCrusher = 1u << 0,    // a blocked door or plat keeps pushing instead of reversing
+    kMoverShootable = 1u << 1,  // a door or button that a shot uses at rest (instead of a
+                                // touch; Quake 3's health key)
 };
-inline constexpr uint32_t kAllMoverFlags = kMoverCrusher;
+inline constexpr uint32_t kAllMoverFlags = kMoverCrusher | kMoverShootable;
 
 /// A binary mover's kind (door, plat, button).
 [[nodiscard]] inline bool isBinaryMover(MoverKind kind) {

@@ -89,6 +89,7 @@ BoxTrace traceBox(const BrushWorld& w, glm::vec3 start, glm::vec3 end, glm::vec3
             const uint32_t mover = c.brushes[b].mover;
             if (filter.brushes == TraceBrushes::kOneMover && mover != filter.mover) continue;
             if (filter.brushes == TraceBrushes::kButMover && mover == filter.mover) continue;
+            if (!(c.brushes[b].contents & filter.contents)) continue;
             if (mover != space) {
                 space = mover;
                 from = start, to = end, lo = mins, hi = maxs;

@@ -52,6 +52,8 @@ enum class TraceBrushes {
 struct TraceFilter {
     TraceBrushes brushes = TraceBrushes::kAll;
     uint32_t mover = world::kNoIndex;
+    uint32_t contents = world::kPlayerSolidContents;  // brushes with any of these (a shot:
+                                                      // kContentsSolid, through player clips)
 };
 
 // Sweeps the box [start + mins, start + maxs] to `end` through the brushes. A mover's brushes

@@ -309,6 +309,31 @@ void touchMoverTrigger(MoverWorld& w, const world::Trigger& trigger) {
         w.pendingUses.push_back(trigger.mover);
 }
 
+uint32_t shootMovers(MoverWorld& w, const BrushWorld& brushes, glm::vec3 eye, glm::vec3 direction,
+                     float range) {
+    TraceFilter shot;
+    shot.contents = world::kContentsSolid;
+    const BoxTrace hit = traceBox(brushes, eye, eye + direction * range, glm::vec3(0.0f),
+                                  glm::vec3(0.0f), 0.0f, shot);
+    if (hit.fraction >= 1.0f || hit.mover >= w.motion.size()) return world::kNoIndex;
+    const world::Mover& r = recordOf(w, hit.mover);
+    if ((r.flags & world::kMoverShootable) &&
+        w.motion[masterOf(w, hit.mover)].phase == MoverPhase::kAtPos1 &&
+        std::find(w.pendingUses.begin(), w.pendingUses.end(), hit.mover) == w.pendingUses.end())
+        w.pendingUses.push_back(hit.mover);
+    return hit.mover;
+}
+
+void shotSystem(ecs::Registry& registry, const InputState& input, const Tuning& tuning,
+                MoverWorld& movers, const BrushWorld& brushes) {
+    if (!input.fire || movers.motion.empty()) return;
+    for (auto [e, transform, player] : registry.view<Transform, Player>().each()) {
+        const glm::vec3 eye = transform.position + glm::vec3(0.0f, tuning.eyeHeight, 0.0f);
+        (void)shootMovers(movers, brushes, eye, viewDirection(player.yaw, player.pitch),
+                          tuning.shotRange);
+    }
+}
+
 void moverSystem(ecs::Registry& registry, const ecs::Tick& tick, MoverWorld& w, BrushWorld& brushes,
                  const Tuning& tuning, const PlayerWorld& playerWorld, ecs::Entity player) {
     if (w.motion.empty()) return;

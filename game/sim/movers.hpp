@@ -16,6 +16,7 @@
 #include "components.hpp"
 #include "ecs/registry.hpp"
 #include "ecs/schedule.hpp"
+#include "input.hpp"
 #include "tuning.hpp"
 #include "world/compiled_level.hpp"
 
@@ -85,6 +86,17 @@ void useMover(MoverWorld& movers, uint32_t index, double now);
 // used (Touch_DoorTrigger); a button or plat only at rest at pos1 (Touch_Button,
 // Touch_PlatCenterTrigger). The use runs at the start of the next tick.
 void touchMoverTrigger(MoverWorld& movers, const world::Trigger& trigger);
+
+// A shot from `eye` along unit `direction` reaching `range` metres, through solid brushes (not
+// player clips, as Quake 3's MASK_SHOT): the mover whose brush it meets first is used at the
+// next tick when it is shootable (kMoverShootable) and its team at rest at pos1 (G_Damage on a
+// mover). Returns the mover it met, or kNoIndex (a wall, or nothing).
+uint32_t shootMovers(MoverWorld& movers, const BrushWorld& brushes, glm::vec3 eye,
+                     glm::vec3 direction, float range);
+
+// The player fires (InputState::fire): its shot from the eye along its view (shootMovers).
+void shotSystem(ecs::Registry& registry, const InputState& input, const Tuning& tuning,
+                MoverWorld& movers, const BrushWorld& brushes);
 
 // One tick: the pending uses, then every team master's move (parts that push the player carry
 // it; one that cannot is paused and, a door or plat, reversed; a bobber or pendulum respawns it

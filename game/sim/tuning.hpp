@@ -23,6 +23,7 @@ struct Tuning {
     float flashlightInnerDeg = 12.0f;     // half-angle where the cone starts to fall off
     float flashlightOuterDeg = 25.0f;     // half-angle where it reaches zero
     int maxGunFlashes = 4;                // the Black Ops budget of omni effect lights
+    float shotRange = 4096.0f;            // m a shot reaches (Quake 3's bullets: 131072 units)
 
     // Quake 3's movement on brushes (game/sim/quake_move.hpp), Quake's constants at 1/32 m per
     // unit: bg_local.h, bg_pmove.c, cm_local.h, g_misc.c.

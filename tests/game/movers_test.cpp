@@ -35,9 +35,9 @@ glm::vec3 level(float x, float y, float z) {
      -> (0, 704, 64) -> back; 100 u/s: 1.92 s a leg, holding 1 s at the first.
    Button *4 (x 400..416, y 200..216, z 32..48, pushed along +x, "target" "gate") opens door *5
      ("targetname" "gate", a slab x 480..496, y 128..256, z 0..128, which has no trigger of its
-     own).
+     own). With `shootableButton` the button has health: a shot uses it, a touch does not.
 */
-std::string craftedMap(const std::string& folder) {
+std::string craftedMap(const std::string& folder, bool shootableButton) {
     test::Quake3BspBuilder map;
     map.shaders[0].contentFlags = 1;  // solid
     map.addBoxModel({{{-512, -512, -16}, {512, 512, 0}}});
@@ -59,14 +59,17 @@ std::string craftedMap(const std::string& folder) {
         "{\n\"classname\" \"path_corner\"\n\"targetname\" \"c2\"\n\"target\" \"c1\"\n"
         "\"origin\" \"0 704 64\"\n}\n"
         "{\n\"classname\" \"func_button\"\n\"model\" \"*4\"\n\"angle\" \"0\"\n"
-        "\"target\" \"gate\"\n}\n"
+        "\"target\" \"gate\"\n" +
+        std::string(shootableButton ? "\"health\" \"1\"\n" : "") +
+        "}\n"
         "{\n\"classname\" \"func_door\"\n\"model\" \"*5\"\n\"angle\" \"-1\"\n"
         "\"targetname\" \"gate\"\n\"wait\" \"3\"\n}\n";
     return map.write(folder, "movers");
 }
 
-world::CompiledLevel compiledCraftedMap() {
-    const std::string bsp = craftedMap("movers_map");
+world::CompiledLevel compiledCraftedMap(bool shootableButton = false) {
+    const std::string bsp =
+        craftedMap(shootableButton ? "movers_shot_map" : "movers_map", shootableButton);
     world::Quake3Options options;
     options.gameFolders = {test::freshFolder("movers_game").string()};
     const world::SourceLevel source = world::importQuake3(bsp, options);
@@ -82,8 +85,8 @@ uint32_t moverNamed(const world::CompiledLevel& level, const std::string& name) 
 
 // The game's systems in stepSession's order on the crafted map, a player at `feet`.
 struct MoverGame {
-    world::CompiledLevel level = compiledCraftedMap();
-    BrushWorld brushes = makeBrushWorld(level.collision, level.movers.movers.size());
+    world::CompiledLevel level;
+    BrushWorld brushes;
     PlayerWorld world;
     ecs::Registry registry;
     ecs::Entity player = registry.create();
@@ -92,7 +95,9 @@ struct MoverGame {
     InputState input;
     uint64_t tick = 0;
 
-    explicit MoverGame(glm::vec3 feet) {
+    explicit MoverGame(glm::vec3 feet, bool shootableButton = false)
+        : level(compiledCraftedMap(shootableButton)),
+          brushes(makeBrushWorld(level.collision, level.movers.movers.size())) {
         world.brushes = &brushes;
         registry.emplace<Transform>(player, Transform{feet});
         registry.emplace<Player>(player);
@@ -111,6 +116,7 @@ struct MoverGame {
             ecs::Tick t{tick++};
             moverSystem(registry, t, movers, brushes, tuning, world, player);
             playerSystem(registry, t, input, tuning, world);
+            shotSystem(registry, input, tuning, movers, brushes);
             triggerSystem(registry, tuning, world, &movers);
             input.endTick();
         }
@@ -237,6 +243,62 @@ TEST(QuakeMovers, AButtonPressedOpensTheDoorItTargets) {
     EXPECT_NE(moverPhase(game.movers, gate), MoverPhase::kAtPos1) << "the gate opens";
     game.stepSeconds(1.0);
     EXPECT_EQ(moverPhase(game.movers, gate), MoverPhase::kAtPos2);
+}
+
+// G_Damage on a mover: a button with health is used by a shot at rest, and makes no touch
+// trigger (SP_func_button); a shot stopped by the world, or meeting a mover without health,
+// uses nothing.
+TEST(QuakeMovers, AShootableButtonIsUsedByAShotNotByATouch) {
+    MoverGame game(level(360, 208, 0), true);
+    const uint32_t button = moverNamed(game.level, "func_button_1");
+    const uint32_t gate = moverNamed(game.level, "func_door_2");
+    EXPECT_TRUE(game.level.movers.movers[button].flags & world::kMoverShootable);
+    EXPECT_FALSE(game.level.movers.movers[gate].flags & world::kMoverShootable);
+    Player& player = game.registry.get<Player>(game.player);
+    player.yaw = glm::radians(-90.0f);  // looks down +x
+    game.step(5);
+    game.input.keysDown.insert("W");  // walks into it
+    game.stepSeconds(1.0);
+    game.input.keysDown.erase("W");
+    game.stepSeconds(1.0);
+    EXPECT_EQ(moverPhase(game.movers, button), MoverPhase::kAtPos1) << "a touch does nothing";
+    EXPECT_EQ(moverPhase(game.movers, gate), MoverPhase::kAtPos1);
+    // At the floor (the world's brush first): nothing.
+    player.pitch = glm::radians(-60.0f);
+    game.input.fire = true;
+    game.step();
+    game.stepSeconds(0.5);
+    EXPECT_EQ(moverPhase(game.movers, button), MoverPhase::kAtPos1) << "the floor took the shot";
+    // At the button: the eye (z 50) aims at its face's centre (z 40).
+    const glm::vec3 eye = game.feet() + glm::vec3(0.0f, game.tuning.eyeHeight, 0.0f);
+    const glm::vec3 aim = level(400, 208, 40) - eye;
+    player.pitch = std::atan2(aim.y, glm::length(glm::vec2(aim.x, aim.z)));
+    EXPECT_EQ(shootMovers(game.movers, game.brushes, eye, glm::normalize(aim), 100.0f), button);
+    game.movers.pendingUses.clear();  // the probe above asked for a use: the tick's shot does
+    game.input.fire = true;
+    game.step();
+    game.step();
+    EXPECT_NE(moverPhase(game.movers, button), MoverPhase::kAtPos1) << "shot, it is pressed";
+    game.stepSeconds(1.0);
+    EXPECT_NE(moverPhase(game.movers, gate), MoverPhase::kAtPos1) << "and opens the gate";
+}
+
+// The first door has no health: shot, it stays (its trigger alone opens it).
+TEST(QuakeMovers, ADoorWithoutHealthIgnoresShots) {
+    MoverGame game(level(0, 0, 0));
+    const uint32_t door = moverNamed(game.level, "func_door_1");
+    Player& player = game.registry.get<Player>(game.player);
+    player.yaw = glm::radians(-90.0f);  // down +x, at the slab 256 units away, outside its trigger
+    game.step(5);
+    const glm::vec3 eye = game.feet() + glm::vec3(0.0f, game.tuning.eyeHeight, 0.0f);
+    EXPECT_EQ(shootMovers(game.movers, game.brushes, eye, glm::vec3(1.0f, 0.0f, 0.0f), 100.0f),
+              door)
+        << "the shot meets it";
+    EXPECT_TRUE(game.movers.pendingUses.empty());
+    game.input.fire = true;
+    game.step();
+    game.stepSeconds(0.5);
+    EXPECT_EQ(moverPhase(game.movers, door), MoverPhase::kAtPos1);
 }
 
 TEST(QuakeMovers, ADoorClosingOnThePlayerTurnsRound) {

@@ -282,11 +282,15 @@ ImportedMovers importMovers(const BspFile& bsp, const std::vector<MapEntity>& en
 
     // The triggers the spawn functions make.
     for (uint32_t i = 0; i < out.movers.movers.size(); ++i) {
-        const Mover& m = out.movers.movers[i];
+        Mover& m = out.movers.movers[i];
         const Spawned& s = spawned[i];
         const MapEntity& e = *s.source;
         const bool hasName = e.keys.count("targetname") > 0;
-        const bool shootable = numberKey(e, "health", 0.0f, where) != 0.0f;
+        // A door or button with health takes damage: shot at rest, it is used (G_Damage), and
+        // it makes no touch trigger.
+        const bool shootable = (m.kind == MoverKind::kDoor || m.kind == MoverKind::kButton) &&
+                               numberKey(e, "health", 0.0f, where) != 0.0f;
+        if (shootable) m.flags |= kMoverShootable;
         Trigger t;
         t.mover = i;
         if (m.kind == MoverKind::kDoor && m.teamMaster == kNoIndex && !hasName && !shootable) {
@@ -324,10 +328,6 @@ ImportedMovers importMovers(const BspFile& bsp, const std::vector<MapEntity>& en
             t.kind = TriggerKind::kUseMover;
             levelBox(s.pos1 + s.mins - 1.0, s.pos1 + s.maxs + 1.0, t.boundsMin, t.boundsMax);
             out.triggers.push_back(t);
-        } else if ((m.kind == MoverKind::kDoor || m.kind == MoverKind::kButton) && shootable) {
-            out.notes.push_back(where + ": entities line " + std::to_string(e.line) + ": " +
-                                e.get("classname") +
-                                " opens when shot (health), which nothing here does");
         }
     }
     return out;

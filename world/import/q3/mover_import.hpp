@@ -28,6 +28,8 @@ namespace onelight::world::q3 {
    rests lowered by height (pos1) and rises to where it was built; without a targetname, a
    trigger over its top (inset 33 units, up to 8 above).
    Button: speed 40, wait 1 s, lip 4, moved like a door; touched (no health), it uses its target.
+   A door or button with "health" (not 0) takes damage instead of a trigger: kMoverShootable, a
+   shot used at rest (G_Damage; game/sim/movers.hpp shootMovers).
    Binary travel: the distance over the speed in whole milliseconds (at least 1), as the game.
    Bobbing: period "speed" 4 s, "height" 32 along z (X_AXIS 1: x, Y_AXIS 2: y), "phase" 0.
    Rotating: "speed" 100 degrees a second about z (X_AXIS 4: x, Y_AXIS 8: y).
@@ -40,8 +42,7 @@ namespace onelight::world::q3 {
    Teams ("team"): the first mover of a team in the lump is its master; the others move with it.
    Names: "targetname" and "target" become ids shared by the level's movers.
    Left out, with a note: a mover whose model is not a brush model of the map, a train whose path
-   breaks or does not close on its first corner (its surfaces stand still where built), health
-   (shootable) doors and buttons' triggers (nothing shoots), damage.
+   breaks or does not close on its first corner (its surfaces stand still where built); damage.
 */
 
 struct ImportedMovers {
