@@ -38,7 +38,9 @@ const world::CommandTable& commandTable() {
             world::sizeOption("--size", 1, 16384, "frame size",
                               std::to_string(d.width) + "x" + std::to_string(d.height)),
             world::textOption("--camera", "NAME|x,y,z,yaw,pitch",
-                              "view from a level camera or a pose",
+                              "view from a level camera or a pose (the level as the game "
+                              "starts it, nothing moving; each dynamic object with the primary "
+                              "the game picks where it stands)",
                               "the player in a window; headless, the level's first camera, else "
                               "one framing the level"),
             world::textOption("--capture", "out/NAME", "write NAME.png, NAME.exr and NAME.json",
