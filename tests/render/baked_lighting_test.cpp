@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
@@ -652,6 +653,35 @@ TEST(RenderBaked, APrimarySwitchCrossFadesLinearlyBetweenTheTwoLights) {
     EXPECT_EQ(ctx.validationCounts.errors.load(), 0u);
 }
 
+// The bar scenes' dynamic entities: the bar (the last one) and bakedScene's small box before it
+// (kNoIndex where missing).
+std::pair<uint32_t, uint32_t> barAndBox(const assets::LoadedLevel& level) {
+    uint32_t bar = world::kNoIndex, box = world::kNoIndex;
+    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
+        if (level.level.entities[e].flags & world::kEntityDynamic) {
+            box = bar == world::kNoIndex ? box : bar;
+            bar = e;
+        }
+    return {bar, box};
+}
+
+// Draws the bar at rest with primary `primary` and the small box moved to `boxAt`; the frame as
+// read back.
+const render::CapturedFrame& drawBarFrame(render::Renderer& renderer, const render::Camera& camera,
+                                          uint32_t bar, uint32_t primary, uint32_t box,
+                                          glm::vec3 boxAt) {
+    std::vector<render::DynamicTransform> transforms = {{bar, glm::mat4(1.0f), primary}};
+    if (box != world::kNoIndex)
+        transforms.push_back({box, glm::translate(glm::mat4(1.0f), boxAt), world::kNoIndex});
+    render::FrameInputs inputs;
+    inputs.camera = camera;
+    inputs.dynamicTransforms = transforms;
+    render::FrameOutput output;
+    output.readback = true;
+    render::drawFrame(renderer, inputs, output);
+    return render::capturedFrame(renderer);
+}
+
 // A dynamic bar 6 m long, longer than a grid cell, takes its secondary light from a lattice of
 // grid samples over its bounds (a cell or less apart along it, on both faces across it), a pixel
 // interpolating those around it. Along its top face the rendered radiance is within 5% of the
@@ -666,12 +696,7 @@ TEST(RenderBaked, ALongDynamicObjectTakesItsLightAlongItsLength) {
     // (3, 0.7, -3.6), its long axis from (-3, 0.5, -4) to (3, 0.5, -4).
     test::addBox(scene, {-3.0f, 0.3f, -4.4f}, {3.0f, 0.7f, -3.6f}, 2, true);
     const assets::LoadedLevel level = bake("baked_long", scene);
-    uint32_t bar = world::kNoIndex, box = world::kNoIndex;
-    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
-        if (level.level.entities[e].flags & world::kEntityDynamic) {
-            box = bar == world::kNoIndex ? box : bar;
-            bar = e;  // the last one: the bar
-        }
+    const auto [bar, box] = barAndBox(level);
     ASSERT_NE(bar, world::kNoIndex);
     const render::Camera camera = render::cameraFromYawPitch({0.0f, 6.0f, 1.0f}, 0.0f, -45.0f);
     render::RenderDeviceFeatures features;
@@ -681,18 +706,8 @@ TEST(RenderBaked, ALongDynamicObjectTakesItsLightAlongItsLength) {
         render::Renderer renderer;
         render::createRenderer(renderer, ctx, level, options(40.0f, 8.0f));
         // The small box out of the way; no primary: the secondary alone.
-        std::vector<render::DynamicTransform> transforms = {
-            {bar, glm::mat4(1.0f), world::kNoIndex}};
-        if (box != world::kNoIndex)
-            transforms.push_back(
-                {box, glm::translate(glm::mat4(1.0f), {4.0f, 0.3f, 3.0f}), world::kNoIndex});
-        render::FrameInputs inputs;
-        inputs.camera = camera;
-        inputs.dynamicTransforms = transforms;
-        render::FrameOutput output;
-        output.readback = true;
-        render::drawFrame(renderer, inputs, output);
-        const render::CapturedFrame& frame = render::capturedFrame(renderer);
+        const render::CapturedFrame& frame =
+            drawBarFrame(renderer, camera, bar, world::kNoIndex, box, {4.0f, 0.3f, 3.0f});
         const world::LightGrid& grid = level.baked.grid;
         auto upAt = [&](glm::vec3 p) { return world::sampleLightGrid(grid, p).ambientCube[2]; };
         const glm::vec3 origin = upAt({0.0f, 0.5f, -4.0f});
@@ -754,12 +769,7 @@ TEST(RenderBaked, ALongDynamicObjectIsLitCloseToThePathTracer) {
     scene.viewYfov = camera.yfov;
     scene.viewAspect = float(kWidth) / float(kHeight);
     const assets::LoadedLevel level = bake("baked_long_reference", scene);
-    uint32_t bar = world::kNoIndex, box = world::kNoIndex;
-    for (uint32_t e = 0; e < level.level.entities.size(); ++e)
-        if (level.level.entities[e].flags & world::kEntityDynamic) {
-            box = bar == world::kNoIndex ? box : bar;
-            bar = e;  // the last one: the bar
-        }
+    const auto [bar, box] = barAndBox(level);
     ASSERT_NE(bar, world::kNoIndex);
 
     // The reference: the bar static, the small dynamic box left out of both (moved away below).
@@ -791,17 +801,9 @@ TEST(RenderBaked, ALongDynamicObjectIsLitCloseToThePathTracer) {
         for (uint32_t l = 0; l < level.level.lights.size(); ++l)
             if (level.level.lights[l].role == world::LightRole::kPrimary) primary = l;
         ASSERT_NE(primary, world::kNoIndex);
-        std::vector<render::DynamicTransform> transforms = {{bar, glm::mat4(1.0f), primary}};
-        if (box != world::kNoIndex)  // far off the floor, out of the view
-            transforms.push_back(
-                {box, glm::translate(glm::mat4(1.0f), {0.0f, -50.0f, 0.0f}), world::kNoIndex});
-        render::FrameInputs inputs;
-        inputs.camera = camera;
-        inputs.dynamicTransforms = transforms;
-        render::FrameOutput output;
-        output.readback = true;
-        render::drawFrame(renderer, inputs, output);
-        const render::CapturedFrame& frame = render::capturedFrame(renderer);
+        // The small box far off the floor, out of the view.
+        const render::CapturedFrame& frame =
+            drawBarFrame(renderer, camera, bar, primary, box, {0.0f, -50.0f, 0.0f});
         world::writeExrFile(folder + "/long_frame.exr", kWidth, kHeight, frame.linearRgba);
 
         const world::LightGrid& grid = level.baked.grid;
