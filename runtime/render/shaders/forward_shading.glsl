@@ -106,28 +106,41 @@ float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float view
     return shadow;
 }
 
-// Where a pixel lies in a dynamic object's lattice of grid samples (GpuObjectLighting): the
-// first of the eight samples around it, the index steps to the next along each edge (0 along
-// an edge of one sample), and its weights towards them.
+// The samples of a dynamic object's lattice (GpuObjectLighting) around a pixel and their
+// trilinear weights: up to eight, fewer along an edge of one sample (an object within a cell
+// has one).
 struct ObjectLattice {
-    uint first;
-    uvec3 step;
-    vec3 t;
+    uint count;
+    uint index[8];
+    float weight[8];
 };
 ObjectLattice objectLattice(uint record) {
-    ObjectLattice k = ObjectLattice(0u, uvec3(0u), vec3(0.0));
-    uint stride = 1u;
+    uint first = 0u, stride = 1u;
+    uvec3 step = uvec3(0u);
+    vec3 t = vec3(0.0);
     for (int a = 0; a < 3; ++a) {
         vec4 axis = objectLighting[record].axes[a];
         uint n = max(uint(axis.w), 1u);
         if (n > 1u) {
             float x = clamp(dot(inWorldPosition - objectLighting[record].from.xyz, axis.xyz), 0.0, 1.0) * float(n - 1u);
             uint s = min(uint(x), n - 2u);
-            k.first += s * stride;
-            k.step[a] = stride;
-            k.t[a] = x - float(s);
+            first += s * stride;
+            step[a] = stride;
+            t[a] = x - float(s);
         }
         stride *= n;
+    }
+    ObjectLattice k;
+    k.count = 0u;
+    for (uint c = 0u; c < 8u; ++c) {
+        uvec3 bit = uvec3(c & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
+        if ((bit.x == 1u && step.x == 0u) || (bit.y == 1u && step.y == 0u) ||
+            (bit.z == 1u && step.z == 0u))
+            continue;  // past an edge of one sample
+        vec3 w3 = mix(1.0 - t, t, vec3(bit));
+        k.index[k.count] = first + bit.x * step.x + bit.y * step.y + bit.z * step.z;
+        k.weight[k.count] = w3.x * w3.y * w3.z;
+        ++k.count;
     }
     return k;
 }
@@ -136,14 +149,8 @@ ObjectLattice objectLattice(uint record) {
 // trilinearly (rgb lux; w the primary's baked visibility for face 0).
 vec4 objectCubeFace(uint record, ObjectLattice k, uint face) {
     vec4 sum = vec4(0.0);
-    for (uint c = 0u; c < 8u; ++c) {
-        uvec3 bit = uvec3(c & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
-        vec3 w3 = mix(1.0 - k.t, k.t, vec3(bit));
-        float w = w3.x * w3.y * w3.z;
-        if (w == 0.0) continue;  // every corner past an edge of one sample, and exact hits
-        uint s = k.first + bit.x * k.step.x + bit.y * k.step.y + bit.z * k.step.z;
-        sum += w * objectLighting[record].ambientCube[6u * s + face];
-    }
+    for (uint i = 0u; i < k.count; ++i)
+        sum += k.weight[i] * objectLighting[record].ambientCube[6u * k.index[i] + face];
     return sum;
 }
 
