@@ -92,11 +92,25 @@ def held_seconds(holds, start, end):
     return total
 
 
+def cpu_seconds(pid):
+    """CPU seconds (user and system, every thread) process `pid` has used so far; 0 once it is
+    gone."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    except (OSError, IndexError, ValueError):
+        return 0.0
+
+
 def run(argv, args):
     """(exit code, output, seconds) of argv; exit code None when it ran past args.timeout. The
-    seconds, and the time the timeout counts, leave out the time the run was held
-    (held_seconds of args.holds)."""
+    seconds leave out the time the run was held (held_seconds of args.holds). The timeout counts
+    the step's work, not the machine's: its CPU seconds over the cores (a step slowed down by
+    other work beside it is not cut short), and, for a step that hangs without working, four
+    timeouts of wall time (held time left out)."""
     start, wall = time.monotonic(), time.time()
+    cores = os.cpu_count() or 1
     with tempfile.TemporaryFile(mode="w+", errors="replace") as out:
         p = subprocess.Popen(argv, stdout=out, stderr=subprocess.STDOUT, text=True)
         code = None
@@ -106,7 +120,7 @@ def run(argv, args):
                 break
             except subprocess.TimeoutExpired:
                 ran = time.monotonic() - start - held_seconds(args.holds, wall, time.time())
-                if ran > args.timeout:
+                if cpu_seconds(p.pid) / cores > args.timeout or ran > 4 * args.timeout:
                     p.kill()
                     p.wait()
                     break
@@ -304,7 +318,8 @@ def main():
     p.add_argument("--bin", default=os.path.join(here, "..", "build", "bin"))
     p.add_argument("--work", default="", help="where packages and captures go (default: temp)")
     p.add_argument("--size", default="320x180", help="the frames' size")
-    p.add_argument("--timeout", type=float, default=1800, help="seconds per step")
+    p.add_argument("--timeout", type=float, default=1800, help="seconds per step (of its "
+                   "CPU time over the cores; a step that hangs: four times this, wall)")
     p.add_argument("--no-bake", action="store_true", help="compile and draw unbaked only: "
                    "every map checked in minutes, without the bake's columns")
     p.add_argument("--resume", action="store_true", help="with --work: keep the rows of maps "
