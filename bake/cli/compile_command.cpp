@@ -26,12 +26,13 @@ void printSummary(const std::string& output, const world::CompileStats& s, size_
     std::printf("compiled %s (%zu bytes)\n", output.c_str(), bytes);
     std::printf(
         "  triangles  %llu static (%llu imported, %llu degenerate and %llu duplicate removed), "
-        "%llu dynamic\n",
+        "%llu dynamic (%llu of them drawn from a shared copy)\n",
         static_cast<unsigned long long>(s.triangles),
         static_cast<unsigned long long>(s.sourceTriangles),
         static_cast<unsigned long long>(s.degenerateRemoved),
         static_cast<unsigned long long>(s.duplicatesRemoved),
-        static_cast<unsigned long long>(s.dynamicTriangles));
+        static_cast<unsigned long long>(s.dynamicTriangles),
+        static_cast<unsigned long long>(s.dynamicTrianglesShared));
     std::printf("  surfaces   %llu\n", static_cast<unsigned long long>(s.surfaces));
     std::printf("  bsp        depth %u, %llu leaves, %llu nodes, %llu triangles cut\n", s.bspDepth,
                 static_cast<unsigned long long>(s.bspLeaves),

@@ -1,4 +1,6 @@
 #include <cmath>
+#include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -126,6 +128,44 @@ TEST(Compile, DynamicNodeWithZeroScaleIsAnError) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("ghost"), std::string::npos) << e.what();
     }
+}
+
+// Dynamic nodes whose meshes are the same in their own space (one box placed three times, at
+// different places and turns) draw from one copy of its vertices and indices; a mirrored one
+// (its winding flipped) and a box of another size keep their own; each still draws its whole
+// box, and the package round-trips.
+TEST(Compile, IdenticalDynamicMeshesShareOneCopy) {
+    GltfBuilder gltf;
+    const int box = gltf.addMesh(boxMesh("box", glm::vec3(0.0f), glm::vec3(1.0f), 1, false));
+    const int big = gltf.addMesh(boxMesh("big", glm::vec3(0.0f), glm::vec3(2.0f), 1, false));
+    const nlohmann::json dynamic = {{"onelight", {{"dynamic", true}}}};
+    gltf.addNode({{"name", "a"}, {"mesh", box}, {"extras", dynamic}});
+    gltf.addNode(
+        {{"name", "b"}, {"mesh", box}, {"translation", {5.0, 0.0, 0.0}}, {"extras", dynamic}});
+    gltf.addNode({{"name", "c"},
+                  {"mesh", box},
+                  {"rotation", {0.0, 0.7071068, 0.0, 0.7071068}},
+                  {"extras", dynamic}});
+    gltf.addNode(
+        {{"name", "mirrored"}, {"mesh", box}, {"scale", {-1.0, 1.0, 1.0}}, {"extras", dynamic}});
+    gltf.addNode({{"name", "big"}, {"mesh", big}, {"extras", dynamic}});
+    const CompileResult result = compileFile(gltf.write(freshFolder("shared"), "shared"));
+    const CompiledLevel& level = result.level;
+    ASSERT_EQ(level.dynamicMeshes.size(), 5u);
+    std::map<std::string, DynamicMesh> byNode;
+    for (const DynamicMesh& m : level.dynamicMeshes) byNode[m.name.substr(0, m.name.find('/'))] = m;
+    ASSERT_EQ(byNode.size(), 5u);
+    for (const char* name : {"b", "c"}) {
+        EXPECT_EQ(byNode[name].firstVertex, byNode["a"].firstVertex) << name;
+        EXPECT_EQ(byNode[name].firstIndex, byNode["a"].firstIndex) << name;
+    }
+    EXPECT_NE(byNode["mirrored"].firstIndex, byNode["a"].firstIndex);
+    EXPECT_NE(byNode["big"].firstVertex, byNode["a"].firstVertex);
+    for (const auto& [name, mesh] : byNode) EXPECT_EQ(mesh.indexCount, 36u) << name;
+    EXPECT_EQ(result.stats.dynamicTriangles, 5u * 12u);
+    EXPECT_EQ(result.stats.dynamicTrianglesShared, 2u * 12u);
+    EXPECT_EQ(level.dynamicIndices.size(), 3u * 36u);
+    expectRoundTrip(level);
 }
 
 TEST(Compile, GeneratedLevelFeatures) {

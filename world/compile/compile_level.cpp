@@ -167,7 +167,9 @@ CompileResult compileLevel(const SourceLevel& source, const CompileOptions& opti
     stats.duplicatesRemoved = split.duplicatesRemoved;
     stats.sourceTriangles =
         geometry.triangles.size() + split.degenerateRemoved + split.duplicatesRemoved;
-    stats.dynamicTriangles = split.dynamicIndices.size() / 3;
+    for (const DynamicMesh& mesh : split.dynamicMeshes)
+        stats.dynamicTriangles += mesh.indexCount / 3;
+    stats.dynamicTrianglesShared = stats.dynamicTriangles - split.dynamicIndices.size() / 3;
     stats.secondsSplit = secondsSince(start);
 
     std::vector<Light> primaries;

@@ -29,8 +29,9 @@ struct CompileStats {
     uint64_t sourceTriangles = 0;  // static triangles imported
     uint64_t degenerateRemoved = 0;
     uint64_t duplicatesRemoved = 0;
-    uint64_t triangles = 0;  // static triangles in the package
-    uint64_t dynamicTriangles = 0;
+    uint64_t triangles = 0;               // static triangles in the package
+    uint64_t dynamicTriangles = 0;        // every dynamic mesh's, as drawn
+    uint64_t dynamicTrianglesShared = 0;  // ...of which drawn from another mesh's copy
     uint64_t surfaces = 0;
     uint32_t bspDepth = 0;
     uint64_t bspLeaves = 0;

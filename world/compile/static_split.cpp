@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <map>
+#include <string_view>
+#include <unordered_map>
 
 #include "world/error.hpp"
 
@@ -132,7 +135,10 @@ SplitLevel splitStaticDynamic(const SourceLevel& level) {
         }
     }
 
-    // Dynamic meshes, grouped by entity, in the entity's space.
+    // Dynamic meshes, grouped by entity, in the entity's space. Meshes whose vertices and
+    // indices come out identical there (the items of a class, placed many times) share one copy:
+    // the first one's ranges (bucketed by a hash of their bytes, compared whole).
+    std::unordered_multimap<size_t, size_t> copies;  // hash -> a dynamic mesh holding that copy
     std::vector<size_t> dynamicInstances;
     for (size_t i = 0; i < level.instances.size(); ++i)
         if (level.instances[i].dynamic) dynamicInstances.push_back(i);
@@ -150,28 +156,66 @@ SplitLevel splitStaticDynamic(const SourceLevel& level) {
         if (!(std::abs(det) > 1e-30) || !std::isfinite(det))
             throw Error(level.sourcePath + ": node '" + entity.name +
                         "': a dynamic node needs an invertible transform (no zero scale)");
-        const glm::dmat4 m = glm::inverse(world) * instance.worldFromLocal;
+        glm::dmat4 m = glm::inverse(world) * instance.worldFromLocal;
+        // A mesh placed by its entity alone (the usual case) is in the entity's space already:
+        // the product above is the identity but for rounding (the entity keeps its turn in
+        // floats), which is dropped, so that copies of one mesh placed by different entities
+        // come out bit for bit alike (and share one copy below).
+        bool identity = true;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r)
+                identity = identity && std::abs(m[c][r] - (c == r ? 1.0 : 0.0)) < 1e-6;
+        if (identity) m = glm::dmat4(1.0);
         const glm::dmat3 normalMatrix = normalMatrixOf(m);
         const bool mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
         DynamicMesh mesh;
         mesh.name = instance.nodeName + "/" + instance.meshName;
         mesh.material = instance.material;
-        mesh.firstVertex = static_cast<uint32_t>(out.dynamicVertices.size());
-        mesh.vertexCount = static_cast<uint32_t>(instance.vertices.size());
-        mesh.firstIndex = static_cast<uint32_t>(out.dynamicIndices.size());
-        mesh.indexCount = static_cast<uint32_t>(instance.indices.size());
+        std::vector<Vertex> vertices;
+        vertices.reserve(instance.vertices.size());
         for (const Vertex& v : instance.vertices) {
             const Vertex w = transformVertex(v, m, normalMatrix, mirrored ? -1.0f : 1.0f);
             if (!std::isfinite(w.position.x) || !std::isfinite(w.position.y) ||
                 !std::isfinite(w.position.z))
                 throw Error(level.sourcePath + ": mesh '" + instance.meshName + "' of node '" +
                             instance.nodeName + "': position is NaN or Inf in its entity's space");
-            out.dynamicVertices.push_back(w);
+            vertices.push_back(w);
         }
+        std::vector<uint32_t> indices;
+        indices.reserve(instance.indices.size());
         for (size_t t = 0; t + 2 < instance.indices.size(); t += 3) {
-            out.dynamicIndices.push_back(instance.indices[t]);
-            out.dynamicIndices.push_back(instance.indices[t + (mirrored ? 2 : 1)]);
-            out.dynamicIndices.push_back(instance.indices[t + (mirrored ? 1 : 2)]);
+            indices.push_back(instance.indices[t]);
+            indices.push_back(instance.indices[t + (mirrored ? 2 : 1)]);
+            indices.push_back(instance.indices[t + (mirrored ? 1 : 2)]);
+        }
+        mesh.vertexCount = static_cast<uint32_t>(vertices.size());
+        mesh.indexCount = static_cast<uint32_t>(indices.size());
+        const std::string_view vertexBytes(reinterpret_cast<const char*>(vertices.data()),
+                                           vertices.size() * sizeof(Vertex));
+        const std::string_view indexBytes(reinterpret_cast<const char*>(indices.data()),
+                                          indices.size() * sizeof(uint32_t));
+        const size_t hash = std::hash<std::string_view>{}(vertexBytes)*31u +
+                            std::hash<std::string_view>{}(indexBytes);
+        bool shared = false;
+        for (auto [at, end] = copies.equal_range(hash); at != end && !shared; ++at) {
+            const DynamicMesh& copy = out.dynamicMeshes[at->second];
+            shared = copy.vertexCount == mesh.vertexCount && copy.indexCount == mesh.indexCount &&
+                     std::memcmp(&out.dynamicVertices[copy.firstVertex], vertices.data(),
+                                 vertexBytes.size()) == 0 &&
+                     std::memcmp(&out.dynamicIndices[copy.firstIndex], indices.data(),
+                                 indexBytes.size()) == 0;
+            if (shared) {
+                mesh.firstVertex = copy.firstVertex;
+                mesh.firstIndex = copy.firstIndex;
+                ++out.dynamicMeshesShared;
+            }
+        }
+        if (!shared) {
+            mesh.firstVertex = static_cast<uint32_t>(out.dynamicVertices.size());
+            mesh.firstIndex = static_cast<uint32_t>(out.dynamicIndices.size());
+            out.dynamicVertices.insert(out.dynamicVertices.end(), vertices.begin(), vertices.end());
+            out.dynamicIndices.insert(out.dynamicIndices.end(), indices.begin(), indices.end());
+            copies.emplace(hash, out.dynamicMeshes.size());
         }
         out.dynamicMeshes.push_back(std::move(mesh));
     }

@@ -1,6 +1,7 @@
 // The static/dynamic split: static mesh instances become one world-space triangle soup for the
 // BSP, without degenerate (zero-area) triangles or exact duplicates; dynamic instances stay in
-// their entity's space as dynamic meshes.
+// their entity's space as dynamic meshes, identical ones (the items of a class) sharing one copy
+// of their vertices and indices.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,7 @@ struct SplitLevel {
     std::vector<Entity> entities;            // with their dynamic-mesh ranges filled
     uint32_t degenerateRemoved = 0;          // zero-area triangles dropped
     uint32_t duplicatesRemoved = 0;          // exact duplicates (same corners, same winding)
+    uint32_t dynamicMeshesShared = 0;        // dynamic meshes drawn from an earlier one's copy
 };
 
 /// Throws Error when a world transform turns a position into NaN or Inf.
