@@ -161,11 +161,13 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                               pipelines.flat ? pipelines.flat : pipelines.forward.at(d.key));
             boundKey = d.key;
+            ++stats.pipelineBinds;
         }
         if (d.material != boundMaterial) {
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1,
                                     &sets.material[d.material], 0, nullptr);
             boundMaterial = d.material;
+            ++stats.materialBinds;
         }
         const DrawPush push = drawPushOf(atlasUvScale, primaryRecord, view, d);
         vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT,

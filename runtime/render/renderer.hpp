@@ -102,6 +102,8 @@ struct FrameStats {
     uint32_t surfacesHidden = 0;       // of the culled, outside the potentially visible set
     uint32_t dynamicMeshesHidden = 0;  // in the frustum, but every surface around them hidden
     uint32_t draws = 0;                // forward-pass draw calls, after batching
+    uint32_t pipelineBinds = 0;        // ...the pipelines and material sets they bind (each a
+    uint32_t materialBinds = 0;        // change from the draw before)
     uint32_t shadowViewsRendered = 0;  // static views redrawn this frame
     uint64_t trianglesDrawn = 0;       // forward pass
     float ev100 = 0.0f, exposure = 1.0f;

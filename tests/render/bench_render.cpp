@@ -370,11 +370,14 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     std::printf(
         "onelight-bench-render --view %s %s: 1280x720, MSAA %ux, %s, %d interleaved frames, "
         "medians; %u surfaces, %u dynamic meshes (%u more in view hidden by the visible set), "
-        "%llu triangles drawn (%llu without the items and movers), %u draws\n",
+        "%llu triangles drawn (%llu without the items and movers), %u draws binding %u "
+        "pipelines and %u material sets (without the items and movers: %u draws, %u and %u)\n",
         package.c_str(), cameraName.c_str(), msaa, ctx.properties.deviceName, kFrames,
         last[0].surfacesDrawn, last[0].dynamicMeshesDrawn, last[0].dynamicMeshesHidden,
         static_cast<unsigned long long>(last[0].trianglesDrawn),
-        static_cast<unsigned long long>(last[17].trianglesDrawn), last[0].draws);
+        static_cast<unsigned long long>(last[17].trianglesDrawn), last[0].draws,
+        last[0].pipelineBinds, last[0].materialBinds, last[17].draws, last[17].pipelineBinds,
+        last[17].materialBinds);
     std::printf("  %-42s %9s %9s %9s %9s %9s %11s\n", "configuration", "GPU ms", "shadows",
                 "forward", "tonemap", "/ floor", "px off %");
     const double floor = median(gpu[12]);
