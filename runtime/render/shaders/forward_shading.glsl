@@ -106,51 +106,51 @@ float runtimeShadow(GpuLight light, int type, vec3 p, vec3 n, vec3 l, float view
     return shadow;
 }
 
-// The samples of a dynamic object's lattice (GpuObjectLighting) around a pixel and their
-// trilinear weights: up to eight, fewer along an edge of one sample (an object within a cell
-// has one).
+// Where a pixel lies in its dynamic object's lattice of grid samples (GpuObjectLighting): the
+// first of the eight samples around it, the index steps to the next along each edge (0 along
+// an edge of one sample) and its weights towards them. `single`: the object has one sample (the
+// draw takes the one-load path; llvmpipe pays for every load a pixel makes).
 struct ObjectLattice {
-    uint count;
-    uint index[8];
-    float weight[8];
+    uint first;
+    uvec3 step;
+    vec3 t;
+    bool single;
 };
 ObjectLattice objectLattice(uint record) {
-    uint first = 0u, stride = 1u;
-    uvec3 step = uvec3(0u);
-    vec3 t = vec3(0.0);
+    ObjectLattice k = ObjectLattice(0u, uvec3(0u), vec3(0.0), true);
+    uint stride = 1u;
     for (int a = 0; a < 3; ++a) {
         vec4 axis = objectLighting[record].axes[a];
         uint n = max(uint(axis.w), 1u);
         if (n > 1u) {
             float x = clamp(dot(inWorldPosition - objectLighting[record].from.xyz, axis.xyz), 0.0, 1.0) * float(n - 1u);
             uint s = min(uint(x), n - 2u);
-            first += s * stride;
-            step[a] = stride;
-            t[a] = x - float(s);
+            k.first += s * stride;
+            k.step[a] = stride;
+            k.t[a] = x - float(s);
+            k.single = false;
         }
         stride *= n;
-    }
-    ObjectLattice k;
-    k.count = 0u;
-    for (uint c = 0u; c < 8u; ++c) {
-        uvec3 bit = uvec3(c & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
-        if ((bit.x == 1u && step.x == 0u) || (bit.y == 1u && step.y == 0u) ||
-            (bit.z == 1u && step.z == 0u))
-            continue;  // past an edge of one sample
-        vec3 w3 = mix(1.0 - t, t, vec3(bit));
-        k.index[k.count] = first + bit.x * step.x + bit.y * step.y + bit.z * step.z;
-        k.weight[k.count] = w3.x * w3.y * w3.z;
-        ++k.count;
     }
     return k;
 }
 
+// The pixel's place in its dynamic object's lattice, found once at the start of main() (the
+// secondary light and every primary's baked shadow read it).
+ObjectLattice pixelLattice;
+
 // Face `face` of the object's ambient cube where the pixel lies: its lattice samples' faces,
-// trilinearly (rgb lux; w the primary's baked visibility for face 0).
+// trilinearly (rgb lux; w the primary's baked visibility for face 0). A corner past an edge of
+// one sample has weight 0 and reads the first sample.
 vec4 objectCubeFace(uint record, ObjectLattice k, uint face) {
+    if (k.single) return objectLighting[record].ambientCube[face];
     vec4 sum = vec4(0.0);
-    for (uint i = 0u; i < k.count; ++i)
-        sum += k.weight[i] * objectLighting[record].ambientCube[6u * k.index[i] + face];
+    for (uint c = 0u; c < 8u; ++c) {
+        uvec3 bit = uvec3(c & 1u, (c >> 1u) & 1u, (c >> 2u) & 1u);
+        vec3 w3 = mix(1.0 - k.t, k.t, vec3(bit));
+        uint s = k.first + bit.x * k.step.x + bit.y * k.step.y + bit.z * k.step.z;
+        sum += (w3.x * w3.y * w3.z) * objectLighting[record].ambientCube[6u * s + face];
+    }
     return sum;
 }
 
@@ -167,10 +167,11 @@ vec3 secondaryIrradiance(vec3 n) {
         return e * frame.baked.y;
     }
     if (drawHasObjectLighting()) {
-        ObjectLattice k = objectLattice(draw.objectLighting);
-        vec3 c[6];
-        for (uint i = 0u; i < 6u; ++i) c[i] = objectCubeFace(draw.objectLighting, k, i).rgb;
-        return irradianceAmbientCube(c[0], c[1], c[2], c[3], c[4], c[5], n);
+        // Only the three faces n looks towards weigh (irradianceAmbientCube picks them).
+        vec3 cx = objectCubeFace(draw.objectLighting, pixelLattice, n.x >= 0.0 ? 0u : 1u).rgb;
+        vec3 cy = objectCubeFace(draw.objectLighting, pixelLattice, n.y >= 0.0 ? 2u : 3u).rgb;
+        vec3 cz = objectCubeFace(draw.objectLighting, pixelLattice, n.z >= 0.0 ? 4u : 5u).rgb;
+        return irradianceAmbientCube(cx, cx, cy, cy, cz, cz, n);
     }
     return vec3(frame.baked.x);
 }
@@ -181,9 +182,7 @@ float bakedShadow() {
     if (BAKED_LIGHTING == 0) return 1.0;
     if (drawHasLightmap())
         return texture(shadowMask, vec3(inUv1 * draw.lightmapScale.xy, float(draw.lightmapAtlas))).r;
-    if (drawHasObjectLighting()) {
-        return objectCubeFace(draw.objectLighting, objectLattice(draw.objectLighting), 0u).w;
-    }
+    if (drawHasObjectLighting()) return objectCubeFace(draw.objectLighting, pixelLattice, 0u).w;
     return 1.0;
 }
 
@@ -272,6 +271,7 @@ void main() {
         outColor = vec4(0.18, 0.18, 0.18, 1.0);
         return;
     }
+    if (BAKED_LIGHTING != 0 && drawHasObjectLighting()) pixelLattice = objectLattice(draw.objectLighting);
     GpuMaterial m = drawMaterial;
 
     vec4 base = m.baseColor;
