@@ -384,7 +384,9 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
         std::min({baked.grid.cellSize.x, baked.grid.cellSize.y, baked.grid.cellSize.z});
     for (uint32_t e = 0; e < level.entities.size(); ++e) {
         if (!list.entityVisible[e]) continue;
-        GpuObjectLighting o{};
+        // Written in place, the header and the samples the shader reads only (a record holds
+        // room for MAX_OBJECT_SAMPLES; most objects take one).
+        GpuObjectLighting& o = out[e];
         const glm::mat4& m = view.entityTransforms[e];
         o.from = glm::vec4(glm::vec3(m[3]), 1.0f);
         for (glm::vec4& axis : o.axes) axis = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
@@ -392,7 +394,6 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
             for (size_t f = 0; f < 6; ++f)
                 o.ambientCube[f] = glm::vec4(glm::vec3(level.ambientLux), 0.0f);
             o.ambientCube[0].w = 1.0f;
-            out[e] = o;
             continue;
         }
         const uint32_t primary = view.entityPrimary[e];
@@ -418,7 +419,6 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
         const float longest = std::max({length[0], length[1], length[2]});
         if (!(longest > cell)) {  // within a cell: the one sample at its origin
             sampleAt(glm::vec3(m[3]), 0);
-            out[e] = o;
             continue;
         }
         uint32_t n[3];
@@ -442,7 +442,6 @@ void writeObjectLighting(const LevelData& level, const BakedLightingMaps& baked,
                     sampleAt(corner + along(0, i) * edge[0] + along(1, j) * edge[1] +
                                  along(2, k) * edge[2],
                              i + n[0] * (j + n[1] * k));
-        out[e] = o;
     }
 }
 
