@@ -147,6 +147,17 @@ float meteredEv100(const Session& s, const render::Camera& camera, float fallbac
     return hits ? std::clamp(float(sumLog2 / hits), 1.0f, 17.0f) : fallback;
 }
 
+namespace {
+
+// The tick's last system: every dynamic object's primary, scored as the renderer draws it.
+void selectPrimaries(Session& s, const ecs::Tick& tick) {
+    primarySelectionSystem(
+        s.registry, tick, s.primaryCandidates,
+        [&s](uint32_t light, glm::vec3 p) { return primaryPickScore(s, light, p); });
+}
+
+}  // namespace
+
 void stepSession(Session& s) {
     // The eye adapts to the metered exposure with a 0.4 s time constant (from the first tick
     // on, it starts adapted).
@@ -164,23 +175,18 @@ void stepSession(Session& s) {
     triggerSystem(s.registry, s.tuning, s.world, &s.movers);
     itemSystem(s.registry, tick, s.player);
     effectLightSystem(s.registry, tick, s.input, s.tuning, s.shotSerial);
-    primarySelectionSystem(
-        s.registry, tick, s.primaryCandidates,
-        [&s](uint32_t light, glm::vec3 p) { return primaryPickScore(s, light, p); });
+    selectPrimaries(s, tick);
     s.input.endTick();
 }
 
 void pickPrimariesAtRest(Session& s) {
-    const ecs::Tick tick{s.tick, s.tickSeconds};
-    primarySelectionSystem(
-        s.registry, tick, s.primaryCandidates,
-        [&s](uint32_t light, glm::vec3 p) { return primaryPickScore(s, light, p); });
+    selectPrimaries(s, ecs::Tick{s.tick, s.tickSeconds});
 }
 
 render::Camera playerCamera(const Session& s) {
     const Transform& t = s.registry.get<Transform>(s.player);
     const Player& p = s.registry.get<Player>(s.player);
-    glm::vec3 eye = t.position + glm::vec3(0.0f, s.tuning.eyeHeight, 0.0f);
+    const glm::vec3 eye = eyeOf(t, s.tuning);
     render::Camera camera =
         render::cameraFromYawPitch(eye, glm::degrees(p.yaw), glm::degrees(p.pitch));
     camera.hasExposure = true;

@@ -328,9 +328,8 @@ void shotSystem(ecs::Registry& registry, const InputState& input, const Tuning& 
                 MoverWorld& movers, const BrushWorld& brushes) {
     if (!input.fire || movers.motion.empty()) return;
     for (auto [e, transform, player] : registry.view<Transform, Player>().each()) {
-        const glm::vec3 eye = transform.position + glm::vec3(0.0f, tuning.eyeHeight, 0.0f);
-        (void)shootMovers(movers, brushes, eye, viewDirection(player.yaw, player.pitch),
-                          tuning.shotRange);
+        (void)shootMovers(movers, brushes, eyeOf(transform, tuning),
+                          viewDirection(player.yaw, player.pitch), tuning.shotRange);
     }
 }
 

@@ -13,6 +13,10 @@ glm::vec3 viewDirection(float yaw, float pitch) {
     return {-std::sin(yaw) * c, std::sin(pitch), -std::cos(yaw) * c};
 }
 
+glm::vec3 eyeOf(const Transform& transform, const Tuning& tuning) {
+    return transform.position + glm::vec3(0.0f, tuning.eyeHeight, 0.0f);
+}
+
 glm::vec3 moveAndSlide(const world::BspView* bsp, glm::vec3 center, glm::vec3 delta, float radius,
                        float skin, float floorCos, bool& floor) {
     floor = false;
@@ -191,7 +195,7 @@ void effectLightSystem(ecs::Registry& registry, const ecs::Tick& tick, const Inp
         if (input.toggleFlashlight) flashlight.on = !flashlight.on;
         if (input.setFlashlight) flashlight.on = input.flashlightValue;
         if (!input.fire) continue;
-        glm::vec3 eye = transform.position + glm::vec3(0.0f, tuning.eyeHeight, 0.0f);
+        const glm::vec3 eye = eyeOf(transform, tuning);
         muzzles.push_back(eye + viewDirection(player.yaw, player.pitch) * tuning.gunFlashRange);
     }
     for (const glm::vec3& muzzle : muzzles) {

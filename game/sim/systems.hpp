@@ -23,6 +23,9 @@ namespace onelight::game {
 // Unit view direction for yaw/pitch in radians (yaw 0 looks down -z, positive turns left).
 [[nodiscard]] glm::vec3 viewDirection(float yaw, float pitch);
 
+// The player's eye: `tuning.eyeHeight` above the feet at `transform.position`.
+[[nodiscard]] glm::vec3 eyeOf(const Transform& transform, const Tuning& tuning);
+
 // Moves a sphere of `radius` from `center` by `delta`, sliding along what it touches (at most
 // four contacts a move). Returns the new centre; `floor` tells whether it stood on a surface
 // whose normal.y exceeds `floorCos`. Without a BSP (an empty level) it moves freely.

@@ -270,7 +270,7 @@ TEST(QuakeMovers, AShootableButtonIsUsedByAShotNotByATouch) {
     game.stepSeconds(0.5);
     EXPECT_EQ(moverPhase(game.movers, button), MoverPhase::kAtPos1) << "the floor took the shot";
     // At the button: the eye (z 50) aims at its face's centre (z 40).
-    const glm::vec3 eye = game.feet() + glm::vec3(0.0f, game.tuning.eyeHeight, 0.0f);
+    const glm::vec3 eye = eyeOf(game.registry.get<Transform>(game.player), game.tuning);
     const glm::vec3 aim = level(400, 208, 40) - eye;
     player.pitch = std::atan2(aim.y, glm::length(glm::vec2(aim.x, aim.z)));
     EXPECT_EQ(shootMovers(game.movers, game.brushes, eye, glm::normalize(aim), 100.0f), button);
@@ -290,7 +290,7 @@ TEST(QuakeMovers, ADoorWithoutHealthIgnoresShots) {
     Player& player = game.registry.get<Player>(game.player);
     player.yaw = glm::radians(-90.0f);  // down +x, at the slab 256 units away, outside its trigger
     game.step(5);
-    const glm::vec3 eye = game.feet() + glm::vec3(0.0f, game.tuning.eyeHeight, 0.0f);
+    const glm::vec3 eye = eyeOf(game.registry.get<Transform>(game.player), game.tuning);
     EXPECT_EQ(shootMovers(game.movers, game.brushes, eye, glm::vec3(1.0f, 0.0f, 0.0f), 100.0f),
               door)
         << "the shot meets it";
