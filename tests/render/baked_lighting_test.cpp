@@ -1195,6 +1195,10 @@ TEST(RenderBaked, CullingByTheVisibleSetChangesNoPixel) {
             double(view.eye.x), double(view.eye.z), culled.stats.surfacesDrawn,
             all.stats.surfacesDrawn, culled.stats.surfacesHidden);
         EXPECT_EQ(all.stats.surfacesHidden, 0u);
+        // The level's one material is bound once; a pipeline at most once a draw.
+        EXPECT_EQ(culled.stats.materialBinds, 1u);
+        EXPECT_GE(culled.stats.pipelineBinds, 1u);
+        EXPECT_LE(culled.stats.pipelineBinds, culled.stats.draws);
         if (view.hidesSome) {
             EXPECT_GT(culled.stats.surfacesHidden, 20u);
         }
