@@ -36,7 +36,15 @@ const int BINDING_PROBE_CELLS = 9;    // storage GpuProbeGrid then uint[] (probe
 // pixels, where a storage buffer's is loaded per pixel (llvmpipe gathers every lane).
 const int BINDING_PRIMARY_LIGHTS = 10;   // uniform GpuLight[MAX_PRIMARY_RECORDS]
 const int BINDING_OBJECT_LIGHTING = 11;  // storage GpuObjectLighting[], per entity
-const int FRAME_BINDING_COUNT = 12;
+// The materials' records, a uniform array read at the draw's index (draw.material), bound once
+// for the pass: a page of up to MAX_MATERIAL_RECORDS at a dynamic offset (a level of more
+// materials rebinds the set where its draws cross to another page). Not a uniform block of its
+// own per material: lavapipe re-specialises the bound shaders to the values of a uniform block
+// (its uniform inlining) at every bind of one, about 1.3 ms each (docs/frame-rate.md); nor a
+// storage buffer, which llvmpipe loads lane by lane.
+const int BINDING_MATERIAL_RECORDS = 12;  // uniform GpuMaterial[MAX_MATERIAL_RECORDS], dynamic
+const int FRAME_BINDING_COUNT = 13;
+const uint MAX_MATERIAL_RECORDS = 512u;  // a page: 40 KiB of records
 // The primary lights a level may have (40 KiB of records; the renderer refuses more, and a
 // device whose uniform range is smaller).
 const uint MAX_PRIMARY_RECORDS = 512u;
@@ -44,8 +52,9 @@ const uint MAX_PRIMARY_RECORDS = 512u;
 // under Vulkan's smallest guaranteed uniform range (16 KiB).
 const uint MAX_SHADOW_VIEWS = 192u;
 
-// Descriptor set 1: a material's textures, binding = slot, and its record. GpuMaterial.textures.x
-// holds bit (1 << slot) for every slot the material fills (the others hold placeholders).
+// Descriptor set 1: a material's textures, binding = slot (images only: binding one costs no
+// re-specialisation). GpuMaterial.textures.x holds bit (1 << slot) for every slot the material
+// fills (the others hold placeholders).
 const int TEXTURE_BASE_COLOR = 0;
 const int TEXTURE_METALLIC_ROUGHNESS = 1;
 const int TEXTURE_NORMAL = 2;
@@ -53,7 +62,6 @@ const int TEXTURE_OCCLUSION = 3;
 const int TEXTURE_EMISSIVE = 4;
 const int TEXTURE_CAVITY = 5;  // R8, made from the normal map by the texture stage
 const int TEXTURE_SLOT_COUNT = 6;
-const int BINDING_MATERIAL_RECORD = 6;  // uniform GpuMaterial, the material's own record
 
 // The tonemap pass's set 0.
 const int BINDING_TONEMAP_HDR = 0;  // sampler2D, the resolved pre-exposed frame
@@ -186,7 +194,7 @@ struct GpuProbeGrid {
 // Per draw (push constants).
 struct DrawPush {
     mat4 model;            // world from object (identity for static surfaces)
-    uint material;         // the level's material (set 1 is its set)
+    uint material;         // its material's record in the bound page of materialRecords[]
     uint primaryLight;     // its primary light's record in primaryLights[], or NO_INDEX
     uint lightmapAtlas;    // a static surface's atlas, NO_INDEX for a dynamic object (grid)
     uint objectLighting;   // a dynamic object's record in objectLighting[], or NO_INDEX

@@ -101,7 +101,7 @@ DrawPush drawPushOf(const std::vector<glm::vec2>& atlasUvScale,
                     const Draw& d) {
     DrawPush push{};
     push.model = d.entity == kNoIndex ? glm::mat4(1.0f) : view.entityTransforms[d.entity];
-    push.material = d.material;
+    push.material = d.material % glsl::MAX_MATERIAL_RECORDS;  // in its page
     push.primaryLight =
         d.primaryLight < primaryRecord.size() ? primaryRecord[d.primaryLight] : kNoIndex;
     push.fadeLight = d.fadeLight < primaryRecord.size() ? primaryRecord[d.fadeLight] : kNoIndex;
@@ -127,8 +127,19 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &scene.geometry.vertices.buffer, &zero);
     vkCmdBindIndexBuffer(cmd, scene.geometry.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &sets.frame[slot],
-                            0, nullptr);
+    // Set 0 with the page of material records the draw's material is in (one page but for a
+    // level of more than MAX_MATERIAL_RECORDS materials).
+    uint32_t boundPage = kNoIndex;
+    auto bindFrameSet = [&](uint32_t material) {
+        const uint32_t page = material / glsl::MAX_MATERIAL_RECORDS;
+        if (page == boundPage) return;
+        const uint32_t offset = uint32_t(page * scene.materials.pageBytes);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1,
+                                &sets.frame[slot], 1, &offset);
+        stats.frameSetBinds += boundPage != kNoIndex ? 1 : 0;
+        boundPage = page;
+    };
+    bindFrameSet(0);
     if (pipelines.depth[0] != VK_NULL_HANDLE) {
         int bound = -1;
         for (const Draw& d : list.draws) {
@@ -164,6 +175,7 @@ void recordForwardPass(VkCommandBuffer cmd, const Scene& scene, const RenderTarg
             ++stats.pipelineBinds;
         }
         if (d.material != boundMaterial) {
+            bindFrameSet(d.material);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1,
                                     &sets.material[d.material], 0, nullptr);
             boundMaterial = d.material;

@@ -87,6 +87,7 @@ constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkShaderStageFlags kVertexFragment =
     VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+constexpr VkDescriptorType kUniformDynamic = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 
@@ -104,18 +105,18 @@ const std::vector<VkDescriptorSetLayoutBinding>& frameBindings() {
         vk::layoutBinding(glsl::BINDING_SKY, kSampled, kFragment),
         vk::layoutBinding(glsl::BINDING_PROBE_CELLS, kStorage, kFragment),
         vk::layoutBinding(glsl::BINDING_PRIMARY_LIGHTS, kUniform, kFragment),
-        vk::layoutBinding(glsl::BINDING_OBJECT_LIGHTING, kStorage, kFragment)};
-    static_assert(glsl::FRAME_BINDING_COUNT == 12, "one layout binding per frame binding");
+        vk::layoutBinding(glsl::BINDING_OBJECT_LIGHTING, kStorage, kFragment),
+        vk::layoutBinding(glsl::BINDING_MATERIAL_RECORDS, kUniformDynamic, kFragment)};
+    static_assert(glsl::FRAME_BINDING_COUNT == 13, "one layout binding per frame binding");
     return bindings;
 }
 
-// Set 1: a material's textures, slot by slot, and its record.
+// Set 1: a material's textures, slot by slot.
 const std::vector<VkDescriptorSetLayoutBinding>& materialBindings() {
     static const std::vector<VkDescriptorSetLayoutBinding> bindings = [] {
         std::vector<VkDescriptorSetLayoutBinding> b;
         for (int slot = 0; slot < glsl::TEXTURE_SLOT_COUNT; ++slot)
             b.push_back(vk::layoutBinding(uint32_t(slot), kSampled, kFragment));
-        b.push_back(vk::layoutBinding(glsl::BINDING_MATERIAL_RECORD, kUniform, kFragment));
         return b;
     }();
     return bindings;
@@ -320,8 +321,8 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
     const std::vector<VkDescriptorSetLayoutBinding>& frame = frameBindings();
     const std::vector<VkDescriptorSetLayoutBinding>& material = materialBindings();
     const VkDescriptorPoolSize sizes[] = {
-        {kUniform,
-         kFramesInFlight * countOf(frame, kUniform) + materials * countOf(material, kUniform)},
+        {kUniform, kFramesInFlight * countOf(frame, kUniform)},
+        {kUniformDynamic, kFramesInFlight * countOf(frame, kUniformDynamic)},
         {kStorage, kFramesInFlight * countOf(frame, kStorage)},
         {kSampled,
          kFramesInFlight * countOf(frame, kSampled) + materials * countOf(material, kSampled) + 3}};
@@ -347,6 +348,8 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
         w.buffer(glsl::BINDING_PROBE_CELLS, kStorage, scene.probes.cells.buffer);
         w.buffer(glsl::BINDING_PRIMARY_LIGHTS, kUniform, primaryLights.buffer);
         w.buffer(glsl::BINDING_OBJECT_LIGHTING, kStorage, slot.objectLighting.buffer);
+        w.buffer(glsl::BINDING_MATERIAL_RECORDS, kUniformDynamic, scene.materials.records.buffer, 0,
+                 scene.materials.pageBytes);
         w.update(ctx);
     }
     for (size_t i = 0; i < scene.materials.bound.size(); ++i) {
@@ -355,8 +358,6 @@ void createDescriptorSets(const vk::Context& ctx, DescriptorSets& sets, const Pi
         m.set = vk::allocateDescriptorSet(ctx, sets.pool, pipelines.forwardLayout.setLayouts[1]);
         for (uint32_t t = 0; t < uint32_t(glsl::TEXTURE_SLOT_COUNT); ++t)
             m.image(t, textures[t].first, textures[t].second);
-        m.buffer(glsl::BINDING_MATERIAL_RECORD, kUniform, scene.materials.records.buffer,
-                 i * scene.materials.recordStride, sizeof(GpuMaterial));
         m.update(ctx);
         sets.material.push_back(m.set);
     }

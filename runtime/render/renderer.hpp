@@ -104,6 +104,8 @@ struct FrameStats {
     uint32_t draws = 0;                // forward-pass draw calls, after batching
     uint32_t pipelineBinds = 0;        // ...the pipelines and material sets they bind (each a
     uint32_t materialBinds = 0;        // change from the draw before)
+    uint32_t frameSetBinds = 0;  // set 0 rebound for another page of material records (a level
+                                 // of more than glsl::MAX_MATERIAL_RECORDS materials)
     uint32_t shadowViewsRendered = 0;  // static views redrawn this frame
     uint64_t trianglesDrawn = 0;       // forward pass
     float ev100 = 0.0f, exposure = 1.0f;

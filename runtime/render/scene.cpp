@@ -371,11 +371,15 @@ void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
         gpu[0].baseColor = glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
         gpu[0].params = glm::vec4(0.0f, 1.0f, 1.0f, 1.0f);
     }
-    materials.recordStride = vk::uniformRecordStride(ctx, sizeof(GpuMaterial));
-    vk::createDeviceBuffer(
-        ctx, materials.records,
-        vk::stridedBytes(std::span<const GpuMaterial>(gpu), materials.recordStride),
-        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    // A page's offset suits any device (Vulkan's largest minUniformBufferOffsetAlignment is 256).
+    static_assert(glsl::MAX_MATERIAL_RECORDS * sizeof(GpuMaterial) % 256 == 0);
+    // Pages of MAX_MATERIAL_RECORDS, each bound at its own dynamic offset with the same range:
+    // the last one padded to a whole page (of a level with more than one).
+    const size_t perPage = std::min<size_t>(gpu.size(), glsl::MAX_MATERIAL_RECORDS);
+    materials.pageBytes = perPage * sizeof(GpuMaterial);
+    gpu.resize((gpu.size() + perPage - 1) / perPage * perPage);
+    vk::createDeviceBuffer(ctx, materials.records, vk::bytesOf(std::span<const GpuMaterial>(gpu)),
+                           VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
 }
 
 void createPlaceholders(const vk::Context& ctx, SceneMaterials& materials) {

@@ -80,16 +80,18 @@ using MaterialTextures =
 /// The materials: their GPU records, their decoded textures and samplers, and what picks their
 /// forward permutation. At least one material (a default when the level has none).
 struct SceneMaterials {
-    vk::Buffer records;  // owned, GpuMaterial per material, recordStride apart (uniform reads)
-    VkDeviceSize recordStride = sizeof(GpuMaterial);
-    std::deque<vk::Image> textures;             // owned, decoded level images (never moved)
-    std::map<uint64_t, uint32_t> textureIndex;  // (image << 1 | srgb) -> textures
-    std::map<uint64_t, VkSampler> samplers;     // owned, by glTF sampler state
-    vk::Image white, flatNormal;                // owned, placeholders for missing textures
-    std::vector<MaterialTextures> bound;        // per material: views and samplers, borrowed
-    std::vector<uint8_t> classes;               // per material, after forceMaterialClass
-    std::vector<uint8_t> doubleSided;           // per material
-    std::vector<uint8_t> alphaMode;             // per material: world::AlphaMode
+    // Owned: GpuMaterial per material, in pages of glsl::MAX_MATERIAL_RECORDS (frame set 0's
+    // materialRecords[], bound a page at a time), the last page padded when there are several.
+    vk::Buffer records;
+    VkDeviceSize pageBytes = sizeof(GpuMaterial);  // a page's range: min(materials, a page)
+    std::deque<vk::Image> textures;                // owned, decoded level images (never moved)
+    std::map<uint64_t, uint32_t> textureIndex;     // (image << 1 | srgb) -> textures
+    std::map<uint64_t, VkSampler> samplers;        // owned, by glTF sampler state
+    vk::Image white, flatNormal;                   // owned, placeholders for missing textures
+    std::vector<MaterialTextures> bound;           // per material: views and samplers, borrowed
+    std::vector<uint8_t> classes;                  // per material, after forceMaterialClass
+    std::vector<uint8_t> doubleSided;              // per material
+    std::vector<uint8_t> alphaMode;                // per material: world::AlphaMode
     std::vector<glm::vec2> maskAlpha;   // per material: the base colour's alpha factor, the cutoff
     std::vector<uint8_t> textureSlots;  // per material: bit mask of TEXTURE_* filled
 };

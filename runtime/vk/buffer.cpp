@@ -105,10 +105,4 @@ void destroyBuffer(const Context& ctx, Buffer& buffer) {
     buffer.size = 0;
 }
 
-VkDeviceSize uniformRecordStride(const Context& ctx, VkDeviceSize recordBytes) {
-    const VkDeviceSize align =
-        std::max<VkDeviceSize>(ctx.properties.limits.minUniformBufferOffsetAlignment, 1);
-    return (recordBytes + align - 1) / align * align;
-}
-
 }  // namespace onelight::vk

@@ -49,19 +49,6 @@ template <class T>
     return {reinterpret_cast<const uint8_t*>(records.data()), records.size_bytes()};
 }
 
-// The distance between records of `recordBytes` read as uniform buffers at their own offsets:
-// the record rounded up to the device's minUniformBufferOffsetAlignment.
-[[nodiscard]] VkDeviceSize uniformRecordStride(const Context& ctx, VkDeviceSize recordBytes);
-
-// `records` laid out `stride` bytes apart (stride >= sizeof(T)), the gaps zero.
-template <class T>
-[[nodiscard]] std::vector<uint8_t> stridedBytes(std::span<const T> records, VkDeviceSize stride) {
-    std::vector<uint8_t> bytes(records.size() * stride, 0);
-    for (size_t i = 0; i < records.size(); ++i)
-        std::memcpy(bytes.data() + i * stride, &records[i], sizeof(T));
-    return bytes;
-}
-
 // Unmaps, destroys and frees. Safe on an empty Buffer.
 void destroyBuffer(const Context& ctx, Buffer& buffer);
 

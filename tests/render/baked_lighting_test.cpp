@@ -1195,8 +1195,10 @@ TEST(RenderBaked, CullingByTheVisibleSetChangesNoPixel) {
             double(view.eye.x), double(view.eye.z), culled.stats.surfacesDrawn,
             all.stats.surfacesDrawn, culled.stats.surfacesHidden);
         EXPECT_EQ(all.stats.surfacesHidden, 0u);
-        // The level's one material is bound once; a pipeline at most once a draw.
+        // The level's one material is bound once, its one page of records with the frame's set;
+        // a pipeline at most once a draw.
         EXPECT_EQ(culled.stats.materialBinds, 1u);
+        EXPECT_EQ(culled.stats.frameSetBinds, 0u);
         EXPECT_GE(culled.stats.pipelineBinds, 1u);
         EXPECT_LE(culled.stats.pipelineBinds, culled.stats.draws);
         if (view.hidesSome) {

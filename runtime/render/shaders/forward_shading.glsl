@@ -272,7 +272,7 @@ void main() {
         return;
     }
     if (BAKED_LIGHTING != 0 && drawHasObjectLighting()) pixelLattice = objectLattice(draw.objectLighting);
-    GpuMaterial m = drawMaterial;
+    GpuMaterial m = materialRecords[draw.material];
 
     vec4 base = m.baseColor;
     if (materialHas(m, TEXTURE_BASE_COLOR) && featureOn(FEATURE_BASE_TEXTURE))

@@ -44,6 +44,10 @@ layout(set = 0, binding = BINDING_ENV_BRDF) uniform sampler2D envBrdfTable;
 // The level's sky image (equirectangular, linear, x frame.sky.rgb), a black texel without one.
 layout(set = 0, binding = BINDING_SKY) uniform sampler2D skyImage;
 
+layout(set = 0, binding = BINDING_MATERIAL_RECORDS, std140) uniform MaterialRecords {
+    GpuMaterial materialRecords[MAX_MATERIAL_RECORDS];
+};
+
 // Set 1: the material's textures (placeholders where it has none).
 layout(set = 1, binding = TEXTURE_BASE_COLOR) uniform sampler2D baseColorTexture;
 layout(set = 1, binding = TEXTURE_METALLIC_ROUGHNESS) uniform sampler2D metallicRoughnessTexture;
@@ -51,9 +55,6 @@ layout(set = 1, binding = TEXTURE_NORMAL) uniform sampler2D normalTexture;
 layout(set = 1, binding = TEXTURE_OCCLUSION) uniform sampler2D occlusionTexture;
 layout(set = 1, binding = TEXTURE_EMISSIVE) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = TEXTURE_CAVITY) uniform sampler2D cavityTexture;
-layout(set = 1, binding = BINDING_MATERIAL_RECORD, std140) uniform MaterialRecord {
-    GpuMaterial drawMaterial;
-};
 
 // Per draw.
 layout(push_constant) uniform DrawBlock { DrawPush draw; };
