@@ -100,9 +100,8 @@ uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& optio
     const int secondary = dynamic               ? glsl::SECONDARY_OBJECT
                           : d.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP
                                                 : glsl::SECONDARY_CONSTANT;
-    return drawPipelineKey(
-        materials, options, d.material, dynamic ? uint32_t(glsl::PRIMARY_ANY) : d.primaryKind,
-        uint32_t(secondary), effectLights, d.primaryShadow, d.fadeLight != kNoIndex);
+    return drawPipelineKey(materials, options, d.material, d.primaryKind, uint32_t(secondary),
+                           effectLights, d.primaryShadow, d.fadeLight != kNoIndex);
 }
 
 }  // namespace
@@ -271,6 +270,7 @@ DrawList buildDrawList(const Scene& scene, const RendererOptions& options, const
         }
         list.entityVisible[mesh.entity] = 1;
         Draw d = drawOf(mesh, view.entityPrimary[mesh.entity]);
+        d.primaryKind = primaryKindOf(scene.level.lights, d.primaryLight);
         d.fadeLight = view.entityFadeFrom[mesh.entity];
         d.primaryWeight = view.entityPrimaryWeight[mesh.entity];
         if (d.fadeLight != kNoIndex) list.visibleLights.push_back(d.fadeLight);
@@ -311,12 +311,15 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
         if (surface.unoccluded && geometry.dynamicCasters)
             add(drawOf(surface, true), surface.material);
     }
-    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
-        if (add(drawOf(mesh, kNoIndex), mesh.material)) list.entityVisible[mesh.entity] = 1;
-        Draw fading = drawOf(mesh, kNoIndex);  // the pipeline of a primary switch's fade
-        fading.fadeLight = 0;
-        if (add(fading, mesh.material)) list.entityVisible[mesh.entity] = 1;
-    }
+    for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes)
+        for (const uint32_t kind : geometry.dynamicPrimaryKinds) {
+            // Without a light (the pipeline's type is all the key needs): nothing lit.
+            Draw d = drawOf(mesh, kNoIndex);
+            d.primaryKind = kind;
+            if (add(d, mesh.material)) list.entityVisible[mesh.entity] = 1;
+            d.fadeLight = 0;  // the pipeline of a primary switch's fade
+            if (add(d, mesh.material)) list.entityVisible[mesh.entity] = 1;
+        }
     if (shadowedLight != kNoIndex && !options.flatShading) list.visibleLights = {shadowedLight};
     batchDraws(list.draws, options.rasterFloor);
     return list;

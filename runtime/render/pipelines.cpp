@@ -68,11 +68,11 @@ std::vector<uint32_t> forwardKeys(const SceneGeometry& geometry, const SceneMate
                     effects, shadow));
             }
         for (const DrawDynamicMesh& d : geometry.dynamicMeshes)
-            for (const bool fade : {false, true})  // while its primary switch cross-fades
-                keys.push_back(
-                    drawPipelineKey(materials, options, std::min(d.material, materialCount - 1),
-                                    uint32_t(glsl::PRIMARY_ANY), uint32_t(glsl::SECONDARY_OBJECT),
-                                    effects, true, fade));
+            for (const uint32_t kind : geometry.dynamicPrimaryKinds)
+                for (const bool fade : {false, true})  // while its primary switch cross-fades
+                    keys.push_back(drawPipelineKey(
+                        materials, options, std::min(d.material, materialCount - 1), kind,
+                        uint32_t(glsl::SECONDARY_OBJECT), effects, true, fade));
         // A level with nothing to draw still gets a pipeline.
         if (geometry.surfaces.empty() && geometry.dynamicMeshes.empty())
             keys.push_back(drawPipelineKey(materials, options, 0, uint32_t(glsl::PRIMARY_ANY),

@@ -242,12 +242,6 @@ VkSampler samplerFor(const vk::Context& ctx, SceneMaterials& materials,
     return created;
 }
 
-// A static surface's PRIMARY_*: none, else its primary light's type.
-uint32_t primaryKindOf(const world::CompiledLevel& level, uint32_t primaryLight) {
-    if (primaryLight >= level.lights.size()) return uint32_t(glsl::PRIMARY_NONE);
-    return uint32_t(glsl::PRIMARY_DIRECTIONAL) + uint32_t(level.lights[primaryLight].type);
-}
-
 void createGeometry(const vk::Context& ctx, SceneGeometry& geometry,
                     const world::CompiledLevel& level) {
     // Static vertices, then dynamic ones; static indices, then dynamic ones. The static
@@ -291,7 +285,7 @@ void createGeometry(const vk::Context& ctx, SceneGeometry& geometry,
         d.indexCount = surface.indexCount;
         d.material = surface.material;
         d.primaryLight = surface.primaryLight;
-        d.primaryKind = primaryKindOf(level, surface.primaryLight);
+        d.primaryKind = primaryKindOf(level.lights, surface.primaryLight);
         d.atlas = surface.atlas;
         d.boundsMin = surface.boundsMin;
         d.boundsMax = surface.boundsMax;
@@ -323,6 +317,16 @@ void createGeometry(const vk::Context& ctx, SceneGeometry& geometry,
             geometry.dynamicMeshes.push_back(d);
         }
     }
+    // A dynamic mesh takes the primary of wherever it stands, of any type the level's primaries
+    // have, or none.
+    geometry.dynamicPrimaryKinds = {uint32_t(glsl::PRIMARY_NONE)};
+    for (uint32_t i = 0; i < level.lights.size(); ++i)
+        if (level.lights[i].role == world::LightRole::kPrimary)
+            geometry.dynamicPrimaryKinds.push_back(primaryKindOf(level.lights, i));
+    std::sort(geometry.dynamicPrimaryKinds.begin(), geometry.dynamicPrimaryKinds.end());
+    geometry.dynamicPrimaryKinds.erase(
+        std::unique(geometry.dynamicPrimaryKinds.begin(), geometry.dynamicPrimaryKinds.end()),
+        geometry.dynamicPrimaryKinds.end());
     geometry.entityBoundsMin.assign(level.entities.size(), glm::vec3(1e30f));
     geometry.entityBoundsMax.assign(level.entities.size(), glm::vec3(-1e30f));
     for (const DrawDynamicMesh& d : geometry.dynamicMeshes) {
@@ -752,6 +756,11 @@ void applySurfaceShadows(SceneGeometry& geometry, const assets::LoadedLevel& loa
 }
 
 }  // namespace
+
+uint32_t primaryKindOf(const std::vector<world::Light>& lights, uint32_t primaryLight) {
+    if (primaryLight >= lights.size()) return uint32_t(glsl::PRIMARY_NONE);
+    return uint32_t(glsl::PRIMARY_DIRECTIONAL) + uint32_t(lights[primaryLight].type);
+}
 
 void createPrimaryRecords(const vk::Context& ctx, PrimaryRecords& records,
                           const std::vector<world::Light>& lights,

@@ -69,6 +69,9 @@ struct SceneGeometry {
     std::vector<DrawSurface> surfaces;
     std::vector<DrawDynamicMesh> dynamicMeshes;
     bool dynamicCasters = false;  // some dynamic mesh casts a runtime shadow
+    // The PRIMARY_* a dynamic mesh may be drawn with (the pipelines made for it): none, and the
+    // types of the level's primary lights, sorted.
+    std::vector<uint32_t> dynamicPrimaryKinds;
     // Per entity, object space: the bounds of its dynamic meshes (min > max without any).
     std::vector<glm::vec3> entityBoundsMin, entityBoundsMax;
 };
@@ -156,6 +159,11 @@ struct PrimaryRecords {
     vk::Buffer buffer;               // owned
     std::vector<uint32_t> recordOf;  // per level light
 };
+
+/// A draw's PRIMARY_* under primary light `primaryLight` (an index into `lights`): its type's, or
+/// PRIMARY_NONE for kNoIndex.
+[[nodiscard]] uint32_t primaryKindOf(const std::vector<world::Light>& lights,
+                                     uint32_t primaryLight);
 
 /// After createShadows has given the lights their views (`shadowViews` per light). Throws
 /// std::runtime_error naming the counts when the level has more than MAX_PRIMARY_RECORDS

@@ -143,6 +143,10 @@ TEST(RenderSpecialization, DrawsWithAndWithoutPrimariesLightmapsAndGridLightChan
     EXPECT_TRUE(test::anyNamed(seen, " lightmap"));
     EXPECT_TRUE(test::anyNamed(seen, " object"));
     EXPECT_TRUE(test::anyNamed(seen, "textures=none"));
+    // A dynamic object is drawn by its primary's type, as a static surface is (the box under the
+    // point primary, and with none), not by a pipeline that evaluates every type under a mask.
+    EXPECT_TRUE(test::anyNamed(seen, " point object"));
+    EXPECT_TRUE(test::anyNamed(seen, " no-primary object"));
 }
 
 TEST(RenderSpecialization, MaterialsWithSomeTextureSlotsChangeNoPixel) {
