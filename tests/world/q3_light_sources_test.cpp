@@ -155,6 +155,43 @@ TEST(Quake3LightSources, TheBspsOwnLightsWin) {
     EXPECT_TRUE(mentions(level.lightSources, "light entities: 1 from the BSP's entities"));
 }
 
+// The lights q3map2 bakes, read as its CreateEntityLights reads them: "_light" before "light",
+// 300 where neither gives a non-zero value; a source .map's named (switched) light and a
+// "noradiosity" 1 light left out, each kind with a note; a named light in the BSP kept.
+TEST(Quake3LightSources, LightsAreTakenAndLeftOutAsQ3map2Does) {
+    const auto folder = freshFolder("q3map2_keys");
+    Quake3BspBuilder bsp = floorSquare(0);
+    writeFile(folder / "room.bsp", bsp.text());
+    writeFile(folder / "room.map",
+              std::string(kSourceMap) +
+                  "{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n\"_light\" \"100\"\n"
+                  "\"light\" \"400\"\n}\n"
+                  "{\n\"classname\" \"light\"\n\"origin\" \"0 0 96\"\n\"light\" \"0\"\n}\n"
+                  "{\n\"classname\" \"light\"\n\"origin\" \"0 0 32\"\n\"light\" \"500\"\n"
+                  "\"targetname\" \"switch1\"\n}\n"
+                  "{\n\"classname\" \"light\"\n\"origin\" \"0 0 48\"\n\"light\" \"500\"\n"
+                  "\"noradiosity\" \"1\"\n}\n");
+    const SourceLevel level =
+        importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder("keys_game")));
+    ASSERT_EQ(level.lights.size(), 5u);
+    EXPECT_NEAR(level.lights[3].intensity, 100.0 * 7500.0 / 1024.0, 1e-3);  // "_light" first
+    EXPECT_NEAR(level.lights[4].intensity, 300.0 * 7500.0 / 1024.0, 1e-3);  // 0: q3map2's 300
+    EXPECT_TRUE(mentions(level.importNotes, "1 light(s) with a targetname left out"));
+    EXPECT_TRUE(mentions(level.importNotes, "1 light(s) with \"noradiosity\" 1 left out"));
+
+    // In the BSP (q3map2's -light reads its entities), a named light is baked.
+    const auto inBsp = freshFolder("q3map2_named_bsp");
+    Quake3BspBuilder named = floorSquare(0);
+    named.entities +=
+        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 64\"\n\"targetname\" "
+        "\"switch1\"\n}\n";
+    writeFile(inBsp / "room.bsp", named.text());
+    const SourceLevel kept =
+        importLevel((inBsp / "room.bsp").string(), quake3GameIn(freshFolder("named_game")));
+    ASSERT_EQ(kept.lights.size(), 1u);
+    EXPECT_NEAR(kept.lights[0].intensity, 300.0 * 7500.0 / 1024.0, 1e-3);
+}
+
 TEST(Quake3LightSources, WithoutASourceQ3map2sLightmapsAreTheLevels) {
     const auto folder = freshFolder("recovered");
     Quake3BspBuilder bsp = floorSquare(40);

@@ -341,22 +341,35 @@ void addSpawns(SourceLevel& level, const std::vector<MapEntity>& entities,
 
 // Point lights, spots where they aim at a target (q3map2's cone), candela by
 // kQuake3CandelaPerLight times q3map2's -point / -spot scales, all baked until chooseLightRoles.
+// The lights q3map2 leaves out are left out too (its light.c, CreateEntityLights): a light with
+// "noradiosity" 1, and, from a source .map (`fromSource`), one with a targetname, which q3map2
+// takes only from the BSP (a switched light's).
 void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const std::string& where,
-               const Q3map2LightOptions& q3map2) {
+               const Q3map2LightOptions& q3map2, bool fromSource) {
     std::map<std::string, glm::vec3> targets;
     for (const MapEntity& e : entities)
         if (e.keys.count("targetname"))
             targets[e.get("targetname")] = vectorKey(e, "origin", glm::vec3(0.0f), where);
-    uint32_t linear = 0, halfLife = 0;
+    uint32_t linear = 0, halfLife = 0, switched = 0, noRadiosity = 0;
     for (const MapEntity& e : entities) {
         if (e.get("classname") != "light") continue;
+        if (e.get("noradiosity").starts_with("1")) {
+            ++noRadiosity;
+            continue;
+        }
+        if (fromSource && !e.get("targetname").empty()) {
+            ++switched;
+            continue;
+        }
         Light l;
         l.name = e.get("targetname", "light" + std::to_string(level.lights.size()));
         const glm::vec3 origin = vectorKey(e, "origin", glm::vec3(0.0f), where);
         l.position = levelPoint(origin);
+        // q3map2's order: "_light", else "light", and 300 where neither gives a non-zero value.
         bool more = false;
-        float value = firstNumberKey(e, "light", firstNumberKey(e, "_light", 300.0f, where, &more),
-                                     where, &more);
+        float value = firstNumberKey(e, "_light", 0.0f, where, &more);
+        if (value == 0.0f) value = firstNumberKey(e, "light", 0.0f, where, &more);
+        if (value == 0.0f) value = 300.0f;
         halfLife += more;
         const float own = numberKey(e, "scale", 0.0f, where);  // q3map2: the light's "scale", 0 = 1
         if (own != 0.0f) value *= own;
@@ -400,7 +413,7 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
         }
         if (!std::isfinite(l.intensity) || !std::isfinite(l.range))
             throw Error(where + ": entities line " + std::to_string(e.line) + ": light '" +
-                        clipForMessage(e.get("light", e.get("_light", "300"))) +
+                        clipForMessage(e.get("_light", e.get("light", "300"))) +
                         "' makes an intensity past a float's range; expected a value the "
                         "engine can hold (at most about 4e37)");
         l.role = LightRole::kBaked;
@@ -411,6 +424,14 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
             where + ": " + std::to_string(halfLife) +
             " light(s) whose intensity key holds several numbers (\"R G B I\", the Half-Life "
             "form): the first is the intensity, as q3map2 reads it");
+    if (switched > 0)
+        level.importNotes.push_back(
+            where + ": " + std::to_string(switched) +
+            " light(s) with a targetname left out: q3map2 bakes a named (switched) light only "
+            "from the BSP, never from the source .map");
+    if (noRadiosity > 0)
+        level.importNotes.push_back(where + ": " + std::to_string(noRadiosity) +
+                                    " light(s) with \"noradiosity\" 1 left out, as q3map2 does");
     if (linear > 0)
         level.importNotes.push_back(
             where + ": " + std::to_string(linear) +
@@ -520,7 +541,7 @@ size_t addSourceLights(SourceLevel& level, const OpenedMap& map, const Q3map2Lig
         source = findMapSource(map);
         if (!source) return 0;
         where = source->where;
-        addLights(level, parseMapSource(source->text, source->where), source->where, q3map2);
+        addLights(level, parseMapSource(source->text, source->where), source->where, q3map2, true);
     } catch (const Error& e) {
         level.lights.resize(before);
         level.importNotes.push_back(std::string(e.what()) +
@@ -887,7 +908,7 @@ SourceLevel importQuake3(const std::string& spec, const Quake3Options& options) 
     level.importedVisibility = importVisibility(bsp, map.where);
     addComputedSpawn(level, map.where);
     const size_t skyLights = level.lights.size();
-    addLights(level, entities, map.where, q3map2);
+    addLights(level, entities, map.where, q3map2, false);
     size_t entityLights = level.lights.size() - skyLights;
     std::string entityWhere = "the BSP's entities", sourceWhere;
     if (entityLights == 0 &&
