@@ -239,7 +239,8 @@ TEST(Quake3Entities, EmptyValuesAndHalfLifeIntensitiesReadAsQ3map2Does) {
 }
 
 // q3map2's units and spot cone: "light" 300 is 300 x 7500 / 32^2 cd, and a light aimed at a
-// target 256 units away with radius 64 has tan(outer) = (64 + 16) / 256.
+// target 256 units away with radius 64 has tan(outer) = (64 + 16) / 256, its light ramping down
+// over the last 32 units of that radius (tan(inner) = 48 / 256).
 TEST(Quake3Lights, PointAndSpotFollowQ3map2) {
     Quake3BspBuilder b;
     b.entities +=
@@ -256,8 +257,38 @@ TEST(Quake3Lights, PointAndSpotFollowQ3map2) {
     const Light& spot = level.lights[1];
     EXPECT_EQ(spot.type, LightType::kSpot);
     EXPECT_NEAR(std::tan(spot.outerCone), 80.0 / 256.0, 1e-6);
+    EXPECT_NEAR(std::tan(spot.innerCone), 48.0 / 256.0, 1e-6);
     EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
     EXPECT_EQ(spot.color, glm::vec3(1.0f, 0.5f, 0.0f));
+}
+
+// Spots as q3map2's CreateEntityLights makes them: radius 0 is 64; the linear flag is cleared
+// (an inverse-square spot, no range); "_sun" 1 makes a sun along the axis, of the value itself
+// in lux (no point scale), with a note.
+TEST(Quake3Lights, SpotKeysFollowQ3map2) {
+    Quake3BspBuilder b;
+    b.entities +=
+        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 256\"\n\"light\" \"600\"\n\"target\" "
+        "\"down\"\n\"radius\" \"0\"\n\"spawnflags\" \"1\"\n}\n"
+        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 512\"\n\"light\" \"80\"\n\"target\" "
+        "\"down\"\n\"_sun\" \"1\"\n}\n"
+        "{\n\"classname\" \"info_null\"\n\"targetname\" \"down\"\n\"origin\" \"0 0 0\"\n}\n";
+    const SourceLevel level = importLevel(b.write("spots", "spots"), withoutGame("spots"));
+    ASSERT_EQ(level.lights.size(), 2u);
+    const Light& spot = level.lights[0];
+    EXPECT_EQ(spot.type, LightType::kSpot);
+    EXPECT_NEAR(std::tan(spot.outerCone), 80.0 / 256.0, 1e-6);
+    EXPECT_EQ(spot.range, 0.0f);
+    EXPECT_NEAR(spot.intensity, 600.0 * 7500.0 / 1024.0, 1e-3);
+    const Light& sun = level.lights[1];
+    EXPECT_EQ(sun.type, LightType::kDirectional);
+    EXPECT_NEAR(sun.intensity, 80.0f, 1e-6f);
+    EXPECT_NEAR(sun.direction.y, -1.0f, 1e-6f);
+    bool noted = false;
+    for (const std::string& note : level.importNotes)
+        noted =
+            noted || note.find("1 spot light(s) with \"_sun\" 1 made suns") != std::string::npos;
+    EXPECT_TRUE(noted) << ::testing::PrintToString(level.importNotes);
 }
 
 // A linear light (spawnflags 1) is an inverse-square light with q3map2's reach as its range,

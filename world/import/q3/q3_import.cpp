@@ -350,7 +350,17 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
     for (const MapEntity& e : entities)
         if (e.keys.count("targetname"))
             targets[e.get("targetname")] = vectorKey(e, "origin", glm::vec3(0.0f), where);
-    uint32_t linear = 0, halfLife = 0, switched = 0, noRadiosity = 0;
+    uint32_t linear = 0, halfLife = 0, switched = 0, noRadiosity = 0, suns = 0;
+    // A light baked until chooseLightRoles, once its intensity and range are numbers.
+    auto keep = [&](const MapEntity& e, Light& l) {
+        if (!std::isfinite(l.intensity) || !std::isfinite(l.range))
+            throw Error(where + ": entities line " + std::to_string(e.line) + ": light '" +
+                        clipForMessage(e.get("_light", e.get("light", "300"))) +
+                        "' makes an intensity past a float's range; expected a value the "
+                        "engine can hold (at most about 4e37)");
+        l.role = LightRole::kBaked;
+        level.lights.push_back(l);
+    };
     for (const MapEntity& e : entities) {
         if (e.get("classname") != "light") continue;
         if (e.get("noradiosity").starts_with("1")) {
@@ -379,28 +389,43 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
         l.color = peak > 0.0f ? glm::max(color / peak, glm::vec3(0.0f)) : glm::vec3(1.0f);
         l.type = LightType::kPoint;
         const auto target = targets.find(e.get("target"));
+        bool spot = false;
         if (e.keys.count("target") && target != targets.end()) {
-            // q3map2: tan(half angle) = (radius + 16) / distance to the target (radius 64).
+            // q3map2 (light.c): the cone's radius at distance t along the axis is
+            // (radius + 16) t / (distance to the target), radius 64 where 0, and the light
+            // ramps down linearly over the last 32 units of it: an inner cone through radius -
+            // 16 at the target.
             const glm::vec3 to = target->second - origin;
             const float distance = glm::length(to);
             if (distance > 0.0f) {
-                const float radius = numberKey(e, "radius", 64.0f, where);
+                float radius = numberKey(e, "radius", 0.0f, where);
+                if (radius == 0.0f) radius = 64.0f;
                 if (!(radius >= 0.0f))
                     throw Error(where + ": entities line " + std::to_string(e.line) +
                                 ": spot light radius '" + clipForMessage(e.get("radius")) +
                                 "'; expected >= 0 units (its cone's radius at its target)");
-                l.type = LightType::kSpot;
-                scale = q3map2.spotScale;
+                spot = true;
                 const float tangent[3] = {to.x / distance, to.y / distance, to.z / distance};
                 l.direction = levelDirection(tangent);
+                if (e.get("_sun").starts_with("1")) {
+                    // q3map2 makes it a sun along the spot's axis, of the value itself (no
+                    // point scale): lux, as a sky shader's q3map_sun.
+                    l.type = LightType::kDirectional;
+                    l.intensity = std::max(0.0f, value);
+                    ++suns;
+                    keep(e, l);
+                    continue;
+                }
+                l.type = LightType::kSpot;
+                scale = q3map2.spotScale;
                 l.outerCone = std::min(1.5f, std::atan((radius + 16.0f) / distance));
-                l.innerCone = 0.8f * l.outerCone;
+                l.innerCone = std::atan(std::max(0.0f, radius - 16.0f) / distance);
             }
         }
         value = std::max(0.0f, value) * scale;
         l.intensity = float(double(value) * kQuake3CandelaPerLight);
         const int flags = int(numberKey(e, "spawnflags", 0.0f, where));
-        if (flags & 1) {
+        if ((flags & 1) && !spot) {  // q3map2 clears a spot's linear flag
             // Linear falloff (q3_import.hpp, "Linear lights"), matched at half its reach.
             const double fade = std::max(1e-3, double(numberKey(e, "fade", 1.0f, where)));
             const double reach = kQuake3LinearScale * double(value) / fade;
@@ -411,13 +436,7 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
             l.range = float(reach * kQuake3MetresPerUnit);
             ++linear;
         }
-        if (!std::isfinite(l.intensity) || !std::isfinite(l.range))
-            throw Error(where + ": entities line " + std::to_string(e.line) + ": light '" +
-                        clipForMessage(e.get("_light", e.get("light", "300"))) +
-                        "' makes an intensity past a float's range; expected a value the "
-                        "engine can hold (at most about 4e37)");
-        l.role = LightRole::kBaked;
-        level.lights.push_back(l);
+        keep(e, l);
     }
     if (halfLife > 0)
         level.importNotes.push_back(
@@ -429,6 +448,10 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
             where + ": " + std::to_string(switched) +
             " light(s) with a targetname left out: q3map2 bakes a named (switched) light only "
             "from the BSP, never from the source .map");
+    if (suns > 0)
+        level.importNotes.push_back(where + ": " + std::to_string(suns) +
+                                    " spot light(s) with \"_sun\" 1 made suns along their axes "
+                                    "(directional, the value in lux), as q3map2 does");
     if (noRadiosity > 0)
         level.importNotes.push_back(where + ": " + std::to_string(noRadiosity) +
                                     " light(s) with \"noradiosity\" 1 left out, as q3map2 does");

@@ -25,10 +25,14 @@ namespace onelight::world {
    "light" L with L 7500 c / d^2 lightmap units (of 255 at full white). One unit is taken as
    1 lux, so the light's intensity is L 7500 / 32^2 = 7.32 L cd (the default L = 300 gives
    2197 cd: 137 lux at 4 m).
-   Linear lights (spawnflags bit 1): q3map2 gives L 7500 / 8000 c - d fade lightmap units,
-   reaching zero at R = 0.9375 L / fade units. Approximated (and reported) as an inverse-square
-   light with range R (the KHR_lights_punctual window) matched to q3map2 at R / 2:
+   Linear lights (spawnflags bit 1): q3map2 gives L 7500 / 8000 - d fade lightmap units (no
+   cosine: it clears a linear light's angle attenuation), reaching zero at R = 0.9375 L / fade
+   units. Approximated (and reported) as an inverse-square light with range R (the
+   KHR_lights_punctual window, and a cosine) matched to q3map2 at R / 2:
    I = 0.46875 L x (R / 64 m)^2 / (1 - 1/16)^2 cd (q3map2 gives 0.46875 L there, for any fade).
+   Spots (a light with a target): the cone's radius at the target is "radius" (64 where 0) + 16
+   units, the light ramping down over its last 32 units (an inner cone through radius - 16);
+   the linear flag is cleared, and "_sun" 1 makes a sun along the axis of the value in lux.
    q3map2's recorded options (worldspawn _q3map2_cmdline, its -light stage;
    q3map2_command_line.hpp): its light scales multiply the lights above, its lightmap encoding
    (gamma, exposure, compensate, brightness, contrast, sRGB) is inverted where q3map2's lightmaps
