@@ -322,13 +322,16 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
         start = std::chrono::steady_clock::now();
         const BakeScene levelScene(world.device, level);
         VisibilityStats stats;
-        // A Quake 3 map's own set (q3map2 -vis) instead of rays, when asked.
-        const world::ImportedVisibility* imported =
-            options.ownVisibility ? &source.importedVisibility : nullptr;
+        // A Quake 3 map's own set (q3map2 -vis) bounds the rays, or replaces them when asked.
+        const world::ImportedVisibility& imported = source.importedVisibility;
         baked.visibility =
             bakeVisibility(levelScene, level, options.visibilitySettings, options.showProgress,
-                           &stats, options.shardIndex, options.shardCount, imported);
-        report.visibilitySource = imported && !imported->empty() ? "the source's own" : "sampled";
+                           &stats, options.shardIndex, options.shardCount, &imported,
+                           options.ownVisibility ? ImportedVisibilityUse::kReplacesTheRays
+                                                 : ImportedVisibilityUse::kBoundsTheRays);
+        report.visibilitySource = imported.empty()        ? "sampled"
+                                  : options.ownVisibility ? "the source's own"
+                                                          : "sampled within the source's own";
         report.stages.push_back({"visibility", secondsSince(start), stats.rays, stats.cells});
         report.visibilityCells = stats.cells;
         report.visibilityClusters = stats.clusters;

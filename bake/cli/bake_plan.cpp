@@ -100,7 +100,8 @@ std::vector<CommandOption> bakeOptions() {
                                     "take the map's own potentially visible set (a Quake 3 map's "
                                     "q3map2 -vis) instead of sampling one: a faster bake, a looser "
                                     "set",
-                                    "sampled with rays")),
+                                    "sampled with rays, within the map's own set where it has "
+                                    "one")),
         forwarded(
             world::flagOption("--uniform-density", "every chart at the requested density",
                               "fewer texels on charts whose light a pilot pass finds smooth")),

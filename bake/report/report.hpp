@@ -66,7 +66,9 @@ struct BakeReport {
     // fraction of the clusters a cell's set holds (0 cells: none baked).
     uint32_t visibilityCells = 0, visibilityClusters = 0, visibilityRows = 0;
     double visibilityMeanFraction = 0.0;
-    std::string visibilitySource;  // "sampled" (rays) or "the source's own" (q3map2 -vis)
+    // "sampled" (rays), "sampled within the source's own" (rays bounded by q3map2 -vis) or "the
+    // source's own" (q3map2 -vis, no ray)
+    std::string visibilitySource;
     // --error-budget (budget.budget > 0): the choices, as the package stores them and as lines.
     world::ErrorBudgetChoices budget;
     std::vector<BudgetChoiceReport> budgetChoices;

@@ -208,7 +208,8 @@ std::vector<uint32_t> clusterSurfaces(const world::CompiledLevel& level,
 world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLevel& level,
                                  const VisibilitySettings& settings, bool showProgress,
                                  VisibilityStats* stats, uint32_t part, uint32_t parts,
-                                 const world::ImportedVisibility* imported) {
+                                 const world::ImportedVisibility* imported,
+                                 ImportedVisibilityUse use) {
     parts = std::max(parts, 1u);
     world::Visibility v;
     if (level.indices.empty() || level.surfaces.empty() || level.bspLeaves.empty()) return v;
@@ -241,8 +242,9 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
 
     const float reach = scene.sceneDiameter();
     // With the source's own set: each of our clusters' clusters of it (the leaves its bounds
-    // reach), instead of rays.
+    // reach), to bound the rays or to replace them.
     if (imported && imported->empty()) imported = nullptr;
+    const bool replaced = imported && use == ImportedVisibilityUse::kReplacesTheRays;
     std::vector<std::vector<uint32_t>> importedClusters;
     if (imported)
         for (const Cluster& c : clusters)
@@ -268,12 +270,25 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
             auto marked = [&](uint32_t cluster) {
                 return (row[cluster / 32] >> (cluster % 32)) & 1u;
             };
-            if (imported) {
+            if (replaced) {
                 openCell[cell] = markFromImported(*imported, importedClusters, cellMin,
                                                   cellMin + v.cellSize, clusters, v.cellSize, mark);
                 progress.advance(1);
                 continue;
             }
+            // The clusters the source's set lets this cell see (none known: every cluster).
+            std::vector<uint32_t> allowed;
+            if (imported) {
+                allowed.assign(words, 0u);
+                if (!markFromImported(*imported, importedClusters, cellMin, cellMin + v.cellSize,
+                                      clusters, v.cellSize, [&](uint32_t cluster) {
+                                          allowed[cluster / 32] |= 1u << (cluster % 32);
+                                      }))
+                    allowed.clear();
+            }
+            auto hidden = [&](uint32_t cluster) {
+                return !allowed.empty() && !((allowed[cluster / 32] >> (cluster % 32)) & 1u);
+            };
             std::vector<glm::vec3> points;
             for (uint32_t k = 0; k < settings.pointsPerCell; ++k) {
                 Rng rng{seedFrom(cell, k, 0x5650u)};
@@ -324,7 +339,7 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
                     mark(cluster);
                     continue;
                 }
-                if (target.targets.empty()) continue;
+                if (target.targets.empty() || hidden(cluster)) continue;
                 const uint32_t shift = seedFrom(cell, cluster, 0x5652u);
                 for (uint32_t j = 0; j < settings.raysPerPair; ++j) {
                     const glm::vec3 eye = open[j % open.size()];

@@ -43,6 +43,15 @@ struct VisibilitySettings {
     uint32_t targetsPerCluster = 64;
 };
 
+/// What a source's own set (a Quake 3 map's, q3map2 -vis) does to the rays of step 3.
+enum class ImportedVisibilityUse {
+    // The rays, but segments only towards the clusters the source's set lets the cell see (a
+    // cluster it hides is left unmarked without a ray): the source's set is conservative, so
+    // this is the rays' set for a fraction of their segments.
+    kBoundsTheRays,
+    kReplacesTheRays,  // the source's set itself, no ray: looser
+};
+
 struct VisibilityStats {
     RayCounts rays;
     uint32_t cells = 0, openCells = 0, clusters = 0, rows = 0;
@@ -54,16 +63,16 @@ struct VisibilityStats {
 /// `part` of a sharded bake: only every parts-th cell from `part` is sampled (interleaved, so
 /// that solid and open cells spread evenly), and the result holds those cells' own sets (step
 /// 3, rows deduplicated; kNoIndex for every other cell) for mergeVisibilityParts. With
-/// `imported` (the source's own set, not empty: a Quake 3 map's), step 3 takes it instead of
-/// rays: a cell sees the union of the rows of the source's clusters whose leaves it reaches, and
-/// one of our clusters is marked when a source cluster its bounds reach is in it; a cell that
-/// reaches only solid leaves culls nothing. Steps 1, 2 and 4 are the same.
-[[nodiscard]] world::Visibility bakeVisibility(const BakeScene& scene,
-                                               const world::CompiledLevel& level,
-                                               const VisibilitySettings& settings,
-                                               bool showProgress, VisibilityStats* stats = nullptr,
-                                               uint32_t part = 0, uint32_t parts = 1,
-                                               const world::ImportedVisibility* imported = nullptr);
+/// `imported` (the source's own set, not empty: a Quake 3 map's), a cell's source set is the
+/// union of the rows of the source's clusters whose leaves it reaches, and one of our clusters
+/// is in it when a source cluster its bounds reach is; a cell that reaches only solid leaves
+/// has none (culls nothing). `use` says whether that set bounds step 3's segments or replaces
+/// step 3. Steps 1, 2 and 4 are the same.
+[[nodiscard]] world::Visibility bakeVisibility(
+    const BakeScene& scene, const world::CompiledLevel& level, const VisibilitySettings& settings,
+    bool showProgress, VisibilityStats* stats = nullptr, uint32_t part = 0, uint32_t parts = 1,
+    const world::ImportedVisibility* imported = nullptr,
+    ImportedVisibilityUse use = ImportedVisibilityUse::kBoundsTheRays);
 
 /// Step 4 over the cells' own sets (`raw`, wordsPerRow words per cell; `openCell` per cell):
 /// each open cell's set is the union of its own and its 26 neighbours', rows deduplicated.
