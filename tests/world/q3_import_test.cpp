@@ -238,49 +238,39 @@ TEST(Quake3Entities, EmptyValuesAndHalfLifeIntensitiesReadAsQ3map2Does) {
     EXPECT_TRUE(noted) << ::testing::PrintToString(level.importNotes);
 }
 
-// q3map2's units and spot cone: "light" 300 is 300 x 7500 / 32^2 cd, and a light aimed at a
-// target 256 units away with radius 64 has tan(outer) = (64 + 16) / 256, its light ramping down
-// over the last 32 units of that radius (tan(inner) = 48 / 256).
-TEST(Quake3Lights, PointAndSpotFollowQ3map2) {
+// q3map2's units and spot cone (CreateEntityLights, LightContributionToSample): "light" 300 is
+// 300 x 7500 / 32^2 cd; a light aimed at a target 256 units away with radius 64 has tan(outer)
+// = (64 + 16) / 256, its light ramping down over the last 32 units of that radius (tan(inner) =
+// 48 / 256); radius 0 is 64; a spot's linear flag is cleared (inverse-square, no range); and
+// "_sun" 1 makes a sun along the axis, of the value itself in lux (no point scale), with a note.
+TEST(Quake3Lights, PointsSpotsAndSpotSunsFollowQ3map2) {
     Quake3BspBuilder b;
     b.entities +=
         "{\n\"classname\" \"light\"\n\"origin\" \"0 0 128\"\n\"light\" \"300\"\n}\n"
         "{\n\"classname\" \"light\"\n\"origin\" \"0 0 256\"\n\"light\" \"600\"\n\"target\" "
         "\"spot1\"\n\"_color\" \"1 0.5 0\"\n}\n"
+        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 256\"\n\"light\" \"600\"\n\"target\" "
+        "\"spot1\"\n\"radius\" \"0\"\n\"spawnflags\" \"1\"\n}\n"
+        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 512\"\n\"light\" \"80\"\n\"target\" "
+        "\"spot1\"\n\"_sun\" \"1\"\n}\n"
         "{\n\"classname\" \"info_null\"\n\"targetname\" \"spot1\"\n\"origin\" \"0 0 0\"\n}\n";
     const SourceLevel level = importLevel(b.write("lights", "lights"), withoutGame("lights"));
-    ASSERT_EQ(level.lights.size(), 2u);
+    ASSERT_EQ(level.lights.size(), 4u);
     const Light& point = level.lights[0];
     EXPECT_EQ(point.type, LightType::kPoint);
     EXPECT_NEAR(point.intensity, 300.0 * 7500.0 / 1024.0, 1e-3);
     EXPECT_EQ(point.position, glm::vec3(0.0f, 4.0f, 0.0f));
-    const Light& spot = level.lights[1];
-    EXPECT_EQ(spot.type, LightType::kSpot);
-    EXPECT_NEAR(std::tan(spot.outerCone), 80.0 / 256.0, 1e-6);
-    EXPECT_NEAR(std::tan(spot.innerCone), 48.0 / 256.0, 1e-6);
-    EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
-    EXPECT_EQ(spot.color, glm::vec3(1.0f, 0.5f, 0.0f));
-}
-
-// Spots as q3map2's CreateEntityLights makes them: radius 0 is 64; the linear flag is cleared
-// (an inverse-square spot, no range); "_sun" 1 makes a sun along the axis, of the value itself
-// in lux (no point scale), with a note.
-TEST(Quake3Lights, SpotKeysFollowQ3map2) {
-    Quake3BspBuilder b;
-    b.entities +=
-        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 256\"\n\"light\" \"600\"\n\"target\" "
-        "\"down\"\n\"radius\" \"0\"\n\"spawnflags\" \"1\"\n}\n"
-        "{\n\"classname\" \"light\"\n\"origin\" \"0 0 512\"\n\"light\" \"80\"\n\"target\" "
-        "\"down\"\n\"_sun\" \"1\"\n}\n"
-        "{\n\"classname\" \"info_null\"\n\"targetname\" \"down\"\n\"origin\" \"0 0 0\"\n}\n";
-    const SourceLevel level = importLevel(b.write("spots", "spots"), withoutGame("spots"));
-    ASSERT_EQ(level.lights.size(), 2u);
-    const Light& spot = level.lights[0];
-    EXPECT_EQ(spot.type, LightType::kSpot);
-    EXPECT_NEAR(std::tan(spot.outerCone), 80.0 / 256.0, 1e-6);
-    EXPECT_EQ(spot.range, 0.0f);
-    EXPECT_NEAR(spot.intensity, 600.0 * 7500.0 / 1024.0, 1e-3);
-    const Light& sun = level.lights[1];
+    for (size_t i : {1u, 2u}) {  // the coloured spot, then the one of radius 0 and linear flag
+        const Light& spot = level.lights[i];
+        EXPECT_EQ(spot.type, LightType::kSpot);
+        EXPECT_NEAR(spot.intensity, 600.0 * 7500.0 / 1024.0, 1e-3);
+        EXPECT_EQ(spot.range, 0.0f);
+        EXPECT_NEAR(std::tan(spot.outerCone), 80.0 / 256.0, 1e-6);
+        EXPECT_NEAR(std::tan(spot.innerCone), 48.0 / 256.0, 1e-6);
+        EXPECT_NEAR(spot.direction.y, -1.0f, 1e-6f);
+    }
+    EXPECT_EQ(level.lights[1].color, glm::vec3(1.0f, 0.5f, 0.0f));
+    const Light& sun = level.lights[3];
     EXPECT_EQ(sun.type, LightType::kDirectional);
     EXPECT_NEAR(sun.intensity, 80.0f, 1e-6f);
     EXPECT_NEAR(sun.direction.y, -1.0f, 1e-6f);
