@@ -276,19 +276,6 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
                 progress.advance(1);
                 continue;
             }
-            // The clusters the source's set lets this cell see (none known: every cluster).
-            std::vector<uint32_t> allowed;
-            if (imported) {
-                allowed.assign(words, 0u);
-                if (!markFromImported(*imported, importedClusters, cellMin, cellMin + v.cellSize,
-                                      clusters, v.cellSize, [&](uint32_t cluster) {
-                                          allowed[cluster / 32] |= 1u << (cluster % 32);
-                                      }))
-                    allowed.clear();
-            }
-            auto hidden = [&](uint32_t cluster) {
-                return !allowed.empty() && !((allowed[cluster / 32] >> (cluster % 32)) & 1u);
-            };
             std::vector<glm::vec3> points;
             for (uint32_t k = 0; k < settings.pointsPerCell; ++k) {
                 Rng rng{seedFrom(cell, k, 0x5650u)};
@@ -331,6 +318,19 @@ world::Visibility bakeVisibility(const BakeScene& scene, const world::CompiledLe
                 progress.advance(1);
                 continue;
             }
+            // The clusters the source's set lets this cell see (none known: every cluster).
+            std::vector<uint32_t> allowed;
+            if (imported) {
+                allowed.assign(words, 0u);
+                if (!markFromImported(*imported, importedClusters, cellMin, cellMin + v.cellSize,
+                                      clusters, v.cellSize, [&](uint32_t cluster) {
+                                          allowed[cluster / 32] |= 1u << (cluster % 32);
+                                      }))
+                    allowed.clear();
+            }
+            auto hidden = [&](uint32_t cluster) {
+                return !allowed.empty() && !((allowed[cluster / 32] >> (cluster % 32)) & 1u);
+            };
             const glm::vec3 nearMin = cellMin - v.cellSize, nearMax = cellMin + 2.0f * v.cellSize;
             for (uint32_t cluster = 0; cluster < v.clusterCount; ++cluster) {
                 if (marked(cluster)) continue;
