@@ -419,7 +419,8 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
                 l.type = LightType::kSpot;
                 scale = q3map2.spotScale;
                 l.outerCone = std::min(1.5f, std::atan((radius + 16.0f) / distance));
-                l.innerCone = std::atan(std::max(0.0f, radius - 16.0f) / distance);
+                l.innerCone =
+                    std::min(l.outerCone, std::atan(std::max(0.0f, radius - 16.0f) / distance));
             }
         }
         value = std::max(0.0f, value) * scale;
