@@ -317,7 +317,10 @@ DrawList warmUpDrawList(const SceneGeometry& geometry, const SceneMaterials& mat
             Draw d = drawOf(mesh, kNoIndex);
             d.primaryKind = kind;
             if (add(d, mesh.material)) list.entityVisible[mesh.entity] = 1;
-            d.fadeLight = 0;  // the pipeline of a primary switch's fade
+            // The pipeline of a primary switch's fade, into a light of this type (a pick never
+            // leaves a light for none: the view fades only between two lights).
+            if (kind == uint32_t(glsl::PRIMARY_NONE)) continue;
+            d.fadeLight = 0;
             if (add(d, mesh.material)) list.entityVisible[mesh.entity] = 1;
         }
     if (shadowedLight != kNoIndex && !options.flatShading) list.visibleLights = {shadowedLight};

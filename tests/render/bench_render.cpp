@@ -6,9 +6,10 @@
 // probes' cost on a baked level (`onelight-bench-render
 // [PACKAGE]`, default the demo's draft package) and its frame loop with and without frames in
 // flight. `onelight-bench-render --view PACKAGE CAMERA` instead: where one view of a real level's
-// frame goes, feature by feature (benchView); `--aa PACKAGE CAMERA`: anti-aliasing by its edge
-// error and cost (benchAntiAliasing). Compare ratios from one run only
-// (docs/toolchain.md, "Timing things": timings are noisy).
+// frame goes, feature by feature (benchView); `--objects PACKAGE CAMERA`: only what a Quake 3
+// map's items and movers cost there, over more frames; `--aa PACKAGE CAMERA`: anti-aliasing by its
+// edge error and cost (benchAntiAliasing). Compare ratios from one run only (docs/toolchain.md,
+// "Timing things": timings are noisy).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -250,8 +251,11 @@ render::Camera cameraNamed(const assets::LoadedLevel& level, const std::string& 
 // Where a real level's frame goes: one view of a package (`onelight-bench-render --view PACKAGE
 // CAMERA`, e.g. a Quake 3 map's spawn0) at 1280x720 with MSAA 4x, configurations interleaved
 // frame by frame: the frame as the game draws it, and with one feature changed each, down to
-// the raster floor. Each row's difference to the full frame is that feature's cost.
-void benchView(vk::Context& ctx, const std::string& package, const std::string& cameraName) {
+// the raster floor. Each row's difference to the full frame is that feature's cost. With
+// `objectsOnly`, only the rows of the items and movers, over 25 frames: their cost is a few
+// percent, within the spread of seven frames.
+void benchView(vk::Context& ctx, const std::string& package, const std::string& cameraName,
+               bool objectsOnly) {
     const assets::LoadedLevel level = assets::loadLevel(package);
     render::FrameInputs inputs;
     inputs.camera = cameraNamed(level, package, cameraName);
@@ -328,8 +332,12 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     auto inputsOf = [&](size_t c) -> const render::FrameInputs& {
         return configs[c].hide ? hiddenInputs[c] : inputs;
     };
+    std::vector<size_t> run(configs.size());
+    for (size_t c = 0; c < configs.size(); ++c) run[c] = c;
+    if (objectsOnly) run = {0, 14, 17, 18, 19, 20};
+    const int frameCount = objectsOnly ? 25 : kFrames;
     std::vector<render::Renderer> renderers(configs.size());
-    for (size_t c = 0; c < configs.size(); ++c) {
+    for (size_t c : run) {
         render::createRenderer(renderers[c], ctx, level, configs[c].options);
         for (int i = 0; i < kWarmup; ++i) render::drawFrame(renderers[c], inputsOf(c), waited);
     }
@@ -339,8 +347,8 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
         tonemap(configs.size()), shadows(configs.size());
     std::vector<double> withReadback;
     std::vector<render::FrameStats> last(configs.size());
-    for (int i = 0; i < kFrames; ++i) {
-        for (size_t c = 0; c < configs.size(); ++c) {
+    for (int i = 0; i < frameCount; ++i) {
+        for (size_t c : run) {
             last[c] = render::drawFrame(renderers[c], inputsOf(c), waited);
             gpu[c].push_back(last[c].gpuMs);
             forward[c].push_back(last[c].gpuForwardMs);
@@ -357,34 +365,38 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     // pixels off by more than 8/255 in a channel (the goldens' threshold).
     std::vector<double> changed(configs.size());
     std::vector<render::CapturedFrame> frames(configs.size());
-    for (size_t c = 0; c < configs.size(); ++c) {
+    for (size_t c : run) {
         render::drawFrame(renderers[c], inputsOf(c), readback);
         frames[c] = render::capturedFrame(renderers[c]);
     }
-    for (size_t c = 0; c < configs.size(); ++c)
+    for (size_t c : run)
         changed[c] = 100.0 * test::shareOfPixelsOff(frames[0].rgba8, frames[c].rgba8);
     std::vector<std::string> permutations = render::rendererInfo(renderers[0]).permutations;
     const uint32_t msaa = render::rendererInfo(renderers[0]).msaaInUse;
     const render::RendererInfo info = render::rendererInfo(renderers[0]);
-    for (auto it = renderers.rbegin(); it != renderers.rend(); ++it) render::destroyRenderer(*it);
+    for (auto it = run.rbegin(); it != run.rend(); ++it) render::destroyRenderer(renderers[*it]);
     std::printf(
         "onelight-bench-render --view %s %s: 1280x720, MSAA %ux, %s, %d interleaved frames, "
         "medians; %u surfaces, %u dynamic meshes (%u more in view hidden by the visible set), "
         "%llu triangles drawn (%llu without the items and movers), %u draws binding %u "
         "pipelines and %u material sets (without the items and movers: %u draws, %u and %u)\n",
-        package.c_str(), cameraName.c_str(), msaa, ctx.properties.deviceName, kFrames,
+        package.c_str(), cameraName.c_str(), msaa, ctx.properties.deviceName, frameCount,
         last[0].surfacesDrawn, last[0].dynamicMeshesDrawn, last[0].dynamicMeshesHidden,
         static_cast<unsigned long long>(last[0].trianglesDrawn),
         static_cast<unsigned long long>(last[17].trianglesDrawn), last[0].draws,
         last[0].pipelineBinds, last[0].materialBinds, last[17].draws, last[17].pipelineBinds,
         last[17].materialBinds);
     std::printf("  %-42s %9s %9s %9s %9s %9s %11s\n", "configuration", "GPU ms", "shadows",
-                "forward", "tonemap", "/ floor", "px off %");
-    const double floor = median(gpu[12]);
-    for (size_t c = 0; c < configs.size(); ++c)
+                "forward", "tonemap", objectsOnly ? "/ without" : "/ floor", "px off %");
+    // Without the raster floor's row (objectsOnly), each row over the frame without the items
+    // and movers instead.
+    const double floor = median(gpu[objectsOnly ? 17 : 12]);
+    for (size_t c : run)
         std::printf("  %-42s %9.2f %9.2f %9.2f %9.2f %9.3f %11.3f\n", configs[c].name,
                     median(gpu[c]), median(shadows[c]), median(forward[c]), median(tonemap[c]),
                     median(gpu[c]) / floor, changed[c]);
+    std::printf("  items and movers: the full frame %.3fx the frame without them (goal <= 1.1)\n",
+                median(gpu[0]) / median(gpu[17]));
     std::printf("  full frame with its readback (wall): %.2f ms\n", median(withReadback));
     std::printf(
         "  static surfaces with a primary: %u, of which their baked masks light %u whole "
@@ -494,11 +506,12 @@ void benchAntiAliasing(vk::Context& ctx, const std::string& package,
 
 int main(int argc, char** argv) {
     try {
-        if (argc == 4 && std::string(argv[1]) == "--view") {
+        if (argc == 4 &&
+            (std::string(argv[1]) == "--view" || std::string(argv[1]) == "--objects")) {
             render::RenderDeviceFeatures features;
             vk::Context ctx;
             vk::createContext(ctx, render::renderContextOptions(features, {}));
-            benchView(ctx, argv[2], argv[3]);
+            benchView(ctx, argv[2], argv[3], std::string(argv[1]) == "--objects");
             vk::destroyContext(ctx);
             return 0;
         }
