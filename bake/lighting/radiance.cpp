@@ -182,11 +182,14 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
         if (settings.cache) {
             const uint32_t k = findCachePoint(*settings.cache, hit.position, point.geometricNormal);
             if (k != kNoCachePoint) {
-                // The diffuse part from the cache; the specular part traced on, with the
-                // probability sampleSurface would draw it (radiance.hpp).
+                // The diffuse part from the cache, weighted for the energy its specular lobe
+                // takes at this view as a traced bounce is (bsdfCos); the specular part traced
+                // on, with the probability sampleSurface would draw it (radiance.hpp).
                 const glm::vec3 e =
                     settings.cache->direct[k] + settings.cache->indirect[k] * m.occlusion;
-                radiance += throughput * point.bsdf.albedo * (e / glsl::PI);
+                const float NoV = glm::dot(point.shadingNormal, v);
+                radiance += throughput * point.bsdf.albedo * diffuseEnergyWeight(point.bsdf, NoV) *
+                            (e / glsl::PI);
                 const float p = specularProbability(point.bsdf, glm::dot(point.shadingNormal, v));
                 if (!(p > 0.0f) || rng.next() >= p) break;
                 throughput /= p;

@@ -111,7 +111,10 @@ struct FirstHit {
    to the secondary light.
    With a radiance cache (settings.cache), a hit the cache covers splits its outgoing light:
    the diffuse part is read from the cache and ends there,
-       Lo_diffuse(y) ~ albedo / pi (E_direct(y) + occlusion E_indirect(y))
+       Lo_diffuse(y) ~ albedo w(NoV) / pi (E_direct(y) + occlusion E_indirect(y))
+   (w: the diffuse's energy weight at this view, diffuseEnergyWeight of surface_point.hpp, as
+   bsdfCos weights a traced bounce's diffuse; without it a wall with a specular lobe sent back
+   its whole albedo, and a room of them read 10-17% bright)
    and the specular part is traced on with probability p = specularProbability(NoV) (weight
    1 / p, unbiased): the vertex continues as below with its albedo set to zero, so its direct
    light, emission sample and continuation are the specular lobe's alone. A Lambert surface

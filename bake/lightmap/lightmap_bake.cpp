@@ -200,8 +200,10 @@ uint64_t finalPassUnits(const LightmapSettings& settings) {
    Cached bounces (Jacobi iteration over the texels): E_0 = the texels' direct light (every
    light, the own primary included, shadowed); pass k gathers cacheSamples cosine directions
    per texel whose rays read the cache of pass k - 1 where they land (radiance.hpp), so
-     E_ind,k(x) = (pi / N) sum_i Lo_{k-1}(y_i),   Lo_{k-1}(y) = albedo / pi (E_0 + E_ind,k-1)(y)
-   holds bounces 1..k. Every pass draws a texel's directions from the same random stream, so
+     E_ind,k(x) = (pi / N) sum_i Lo_{k-1}(y_i),
+     Lo_{k-1}(y) = albedo w(y, x) / pi (E_0 + E_ind,k-1)(y)
+   holds bounces 1..k (w: the diffuse's energy weight seen from x, 1 - the specular lobe's
+   directional albedo, as a traced bounce has it). Every pass draws a texel's directions from the same random stream, so
    the passes apply one fixed operator G (E_ind,k = G (E_0 + E_ind,k-1)) and E_k - E_k-1 is
    exactly G^k E_0, the k-th bounce, free of the passes' independent noise. (With a fresh
    stream per pass the differences were mostly noise: the measured ratio below swung from

@@ -38,6 +38,13 @@ glm::vec3 bsdfCos(const Bsdf& bsdf, const glm::vec3& n, const glm::vec3& v, cons
                                     bsdf.specularColor, bsdf.gloss, env, 1.0f, d);
 }
 
+glm::vec3 diffuseEnergyWeight(const Bsdf& bsdf, float NoV) {
+    if (bsdf.materialClass == MATERIAL_LAMBERT) return glm::vec3(1.0f);
+    const glm::vec2 env = glsl::sampleEnvBrdfTable(
+        glsl::envBrdfTableCoord(std::clamp(NoV, glsl::MIN_NOV, 1.0f), bsdf.gloss));
+    return glsl::diffuseEnergyWeight(bsdf.materialClass, bsdf.specularColor, env);
+}
+
 Bsdf factorBsdf(const world::Material& material, world::DiffuseModel diffuseModel) {
     // The compiled factors (materialPoint of the glTF factors), with the terms the material's
     // class keeps: a Lambert-only material no specular, a metal no diffuse (materialPoint).

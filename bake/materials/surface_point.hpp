@@ -27,6 +27,10 @@ struct Bsdf {
 [[nodiscard]] glm::vec3 bsdfCos(const Bsdf& bsdf, const glm::vec3& n, const glm::vec3& v,
                                 const glm::vec3& l);
 
+/// The weight of `bsdf`'s diffuse layer seen at cosine NoV (diffuseEnergyWeight of
+/// shaders/lighting.glsl with the runtime's split-sum table): 1 for a Lambert-only material.
+[[nodiscard]] glm::vec3 diffuseEnergyWeight(const Bsdf& bsdf, float NoV);
+
 /// The shading factors of a material with its textures ignored, under `diffuseModel`.
 [[nodiscard]] Bsdf factorBsdf(const world::Material& material,
                               world::DiffuseModel diffuseModel = world::DiffuseModel::kLambert);
