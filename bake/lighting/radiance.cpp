@@ -181,7 +181,8 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
         }
         if (settings.cache) {
             const uint32_t k = findCachePoint(*settings.cache, hit.position, point.geometricNormal);
-            if (k != kNoCachePoint) {
+            if (k != kNoCachePoint &&
+                hit.distance >= settings.cacheNearField * settings.cache->reach[k]) {
                 // The diffuse part from the cache, weighted for the energy its specular lobe
                 // takes at this view as a traced bounce is (bsdfCos); the specular part traced
                 // on, with the probability sampleSurface would draw it (radiance.hpp).

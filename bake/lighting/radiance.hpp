@@ -23,6 +23,9 @@ struct TransportSettings {
     bool sampleLights = true;    // one light per hit by importance (light_cells.hpp), not all
     // Cached bounces: a path ends at a diffuse hit the cache covers (radiance_cache.hpp).
     const RadianceCache* cache = nullptr;
+    // A hit nearer than this many of its cache point's reach does not read the cache (its
+    // light is traced on): 0 reads it at any distance.
+    float cacheNearField = 0.0f;
 };
 
 /// Radiance (cd/m^2, RGB) a surface point sends towards `toViewer` by direct light: every

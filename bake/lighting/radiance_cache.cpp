@@ -18,6 +18,7 @@ RadianceCache makeRadianceCache(std::vector<CachePoint> points) {
     const size_t n = points.size();
     cache.direct.assign(n, glm::vec3(0.0f));
     cache.indirect.assign(n, glm::vec3(0.0f));
+    cache.reach.assign(n, 0.0f);
     if (n == 0) return cache;
     std::vector<float> sorted;
     for (const CachePoint& p : points)
@@ -36,6 +37,7 @@ RadianceCache makeRadianceCache(std::vector<CachePoint> points) {
         points[i].index = static_cast<uint32_t>(i);
         if (!(points[i].reach > 0.0f)) continue;
         points[i].reach = std::min(points[i].reach, maxReach);
+        cache.reach[i] = points[i].reach;
         bucket[i] = bucketOf(cellOfPoint(points[i].position, cache.cellSize), cache.bucketMask);
         ++cache.bucketFirst[bucket[i] + 1];
     }

@@ -22,6 +22,7 @@ struct CachePoint {
 struct RadianceCache {
     std::vector<glm::vec3> direct;    // lux from the lights, shadowed, per point
     std::vector<glm::vec3> indirect;  // lux from everything else (bounces, sky, emitters)
+    std::vector<float> reach;         // metres, per point: its (clamped) reach
     // Spatial hash over the points: cells of `cellSize` (twice the largest reach), hashed into
     // buckets of `slots` (the points in increasing index order within a bucket, side by side so
     // that a lookup reads them in sequence).

@@ -196,6 +196,9 @@ uint64_t finalPassUnits(const LightmapSettings& settings) {
                : 1;
 }
 
+// The final gather's near field, in cache points' reaches (TransportSettings::cacheNearField).
+constexpr float kFinalGatherNearField = 1.0f;
+
 /*
    Cached bounces (Jacobi iteration over the texels): E_0 = the texels' direct light (every
    light, the own primary included, shadowed); pass k gathers cacheSamples cosine directions
@@ -203,16 +206,16 @@ uint64_t finalPassUnits(const LightmapSettings& settings) {
      E_ind,k(x) = (pi / N) sum_i Lo_{k-1}(y_i),
      Lo_{k-1}(y) = albedo w(y, x) / pi (E_0 + E_ind,k-1)(y)
    holds bounces 1..k (w: the diffuse's energy weight seen from x, 1 - the specular lobe's
-   directional albedo, as a traced bounce has it). Every pass draws a texel's directions from the same random stream, so
-   the passes apply one fixed operator G (E_ind,k = G (E_0 + E_ind,k-1)) and E_k - E_k-1 is
-   exactly G^k E_0, the k-th bounce, free of the passes' independent noise. (With a fresh
-   stream per pass the differences were mostly noise: the measured ratio below swung from
-   0.13 to the 0.9 clamp, and the tail with it.) The bounces beyond the last pass K are the
-   tail of a series whose ratio r is measured over the level:
-   r = sum Y(E_K - E_K-1) / sum Y(E_K-1 - E_K-2), clamped to [0, 0.9], and
-   E_ind = E_K + (E_K - E_K-1) r / (1 - r) (exact for an enclosure of uniform albedo, where
-   r = albedo). Reusing G costs a bias of order 1 / N where a path returns to a texel it left
-   (G_xy G_yx reuses x's directions). The final gather of each texel then reads this cache.
+   directional albedo, as a traced bounce has it). Every pass draws a texel's directions from the
+   same random stream, so the passes apply one fixed operator G (E_ind,k = G (E_0 + E_ind,k-1)) and
+   E_k - E_k-1 is exactly G^k E_0, the k-th bounce, free of the passes' independent noise. (With a
+   fresh stream per pass the differences were mostly noise: the measured ratio below swung from 0.13
+   to the 0.9 clamp, and the tail with it.) The bounces beyond the last pass K are the tail of a
+   series whose ratio r is measured over the level: r = sum Y(E_K - E_K-1) / sum Y(E_K-1 - E_K-2),
+   clamped to [0, 0.9], and E_ind = E_K + (E_K - E_K-1) r / (1 - r) (exact for an enclosure of
+   uniform albedo, where r = albedo). Reusing G costs a bias of order 1 / N where a path returns to
+   a texel it left (G_xy G_yx reuses x's directions). The final gather of each texel then reads this
+   cache.
 */
 RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
                           const std::vector<TexelSample>& samples,
@@ -334,6 +337,11 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
     if (cached) {
         cache = bounceCache(scene, lights, samples, estimates, settings, progress, rays);
         finalTransport.cache = &cache;
+        // The final gather reads the cache no nearer than a cache point's reach: nearer, a
+        // texel's constant value misses how fast the light it holds changes (a wall's foot
+        // beside a sunlit patch read +29%; LightmapDenoise.DenoisedDefault...). The passes
+        // read it at any distance: they feed the tail's ratio, which near paths would skew.
+        finalTransport.cacheNearField = kFinalGatherNearField;
     }
     const uint64_t finalUnits = finalPassUnits(settings);
     bake::parallelFor(tbb::blocked_range<size_t>(0, n, 16), [&](const auto& r) {

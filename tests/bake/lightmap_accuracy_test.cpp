@@ -240,11 +240,12 @@ TEST(LightmapAccuracy, TexelsBuriedInAnOverlappingWallDoNotSeeTheSkyOutside) {
 /// relative noise (RMS over the points, from the difference of its two halves).
 struct Agreement {
     double rms = 1.0, mean = 1.0, referenceNoise = 1.0;
+    double worst = 1.0;  // the largest |relative error| of a point
 };
 Agreement lightmapAgainstReference(const Baked& b, uint32_t referenceSamples, size_t stride) {
     const EmbreeDevice device;
     const BakeScene scene(device, b.result.level);
-    double sumSq = 0.0, sum = 0.0, referenceSq = 0.0;
+    double sumSq = 0.0, sum = 0.0, referenceSq = 0.0, worst = 0.0;
     size_t count = 0;
     RayCounts rays;
     for (size_t i = 0; i < b.samples.size(); i += stride) {
@@ -269,12 +270,13 @@ Agreement lightmapAgainstReference(const Baked& b, uint32_t referenceSamples, si
                         double(want), rel);
         sumSq += rel * rel;
         sum += rel;
+        worst = std::max(worst, std::fabs(rel));
         ++count;
     }
     EXPECT_GT(count, 30u);
     if (count == 0) return {};
     return {std::sqrt(sumSq / double(count)), sum / double(count),
-            std::sqrt(referenceSq / double(count))};
+            std::sqrt(referenceSq / double(count)), worst};
 }
 
 uint64_t lightmapRays(const BakeResult& r) {
@@ -363,11 +365,13 @@ TEST(LightmapAccuracy, DielectricWallsBounceWithTheirDiffusesEnergyWeightThrough
 // The room lit through an opening in its ceiling (bake_scenes.hpp): outside the sunlit patch
 // every texel's light has bounced. Against the reference at 32768 samples per point (its own
 // noise 3.3% RMS, measured from its two halves), 118 points: the denoised default bake is
-// closer (RMS) than the undenoised one (measured 5.9% against 6.5%) and its mean bias is within
-// 2.5% (-1.4%; it was -7.3% before the cache left edge texels out and reused each texel's
-// directions across passes). Not reached yet: the goal of beating the undenoised high
-// bake (5.6%); the largest errors left are the cache's near field (a wall's foot beside the
-// sunlit patch, +29%), which no filter of the lightmap removes.
+// closer (RMS) than the undenoised one (measured 5.3% against 5.7%; high undenoised 4.8%) and
+// its mean bias is within 2.5% (-2.3%; it was -7.3% before the cache left edge texels out and
+// reused each texel's directions across passes). The final gather's near field: a wall's foot
+// beside the sunlit patch read +29% in every bake while the gather took the cache's constant
+// texel value at any distance; traced on nearer than a cache point's reach, it is +2%
+// undenoised, and no point is off by more than 18% (20% denoised, where the filter spreads
+// the wall's steep gradient). The worst point must stay under 24%.
 TEST(LightmapDenoise, DenoisedDefaultIsCloserThanUndenoisedInARoomLitThroughAnOpening) {
     const world::SourceLevel level = test::roofOpeningRoom();
     BakeOptions options = test::testOptions(6.0f, BakeQuality::kDefault);
@@ -380,14 +384,16 @@ TEST(LightmapDenoise, DenoisedDefaultIsCloserThanUndenoisedInARoomLitThroughAnOp
     const Agreement r = lightmapAgainstReference(raw, 32768, 17);
     const Agreement h = lightmapAgainstReference(high, 32768, 17);
     std::printf(
-        "room lit through an opening, RMS (mean): default denoised %.4f (%+.4f), "
-        "default %.4f (%+.4f), high %.4f (%+.4f); reference noise %.4f; estimated noise "
-        "%.4f -> %.4f\n",
-        d.rms, d.mean, r.rms, r.mean, h.rms, h.mean, d.referenceNoise,
+        "room lit through an opening, RMS (mean, worst point): default denoised %.4f (%+.4f, "
+        "%.3f), default %.4f (%+.4f, %.3f), high %.4f (%+.4f, %.3f); reference noise %.4f; "
+        "estimated noise %.4f -> %.4f\n",
+        d.rms, d.mean, d.worst, r.rms, r.mean, r.worst, h.rms, h.mean, h.worst, d.referenceNoise,
         denoised.result.report.lightmapMeanRelativeNoise,
         denoised.result.report.lightmapDenoisedRelativeNoise);
     EXPECT_LT(d.rms, r.rms);
     EXPECT_LT(std::fabs(d.mean), 0.025);
+    EXPECT_LT(r.worst, 0.24);
+    EXPECT_LT(h.worst, 0.24);
 }
 
 }  // namespace

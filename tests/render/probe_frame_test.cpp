@@ -153,14 +153,15 @@ float luminance(const std::vector<float>& rgba, size_t pixel, size_t channels) {
 constexpr uint32_t kBlock = 8;
 
 struct StripError {
-    double rms = 0.0;  // relative: sqrt(mean (L - L_ref)^2) / mean L_ref over the strip's blocks
+    double rms = 0.0;    // relative: sqrt(mean (L - L_ref)^2) / mean L_ref over the strip's blocks
+    double ratio = 0.0;  // sum L / sum L_ref over the strip's blocks
     size_t blocks = 0;
 };
 
 StripError stripError(const render::Camera& camera, const std::vector<float>& frame,
                       const std::vector<float>& reference, int strip) {
     const float x0 = -3.0f + 2.0f * float(strip) + 0.15f, x1 = x0 + 2.0f - 0.3f;
-    double squared = 0.0, sum = 0.0;
+    double squared = 0.0, sum = 0.0, sumGot = 0.0;
     StripError e;
     for (uint32_t by = 0; by + kBlock <= kHeight; by += kBlock)
         for (uint32_t bx = 0; bx + kBlock <= kWidth; bx += kBlock) {
@@ -178,10 +179,13 @@ StripError stripError(const render::Camera& camera, const std::vector<float>& fr
             if (!inside) continue;
             squared += (got - want) * (got - want);
             sum += want;
+            sumGot += got;
             ++e.blocks;
         }
-    if (e.blocks)
+    if (e.blocks) {
         e.rms = std::sqrt(squared / double(e.blocks)) / std::max(sum / double(e.blocks), 1e-9);
+        e.ratio = sumGot / std::max(sum, 1e-9);
+    }
     return e;
 }
 
@@ -229,8 +233,10 @@ TEST(RenderProbes, GlossyFloorIsCloserToThePathTracerWithTheProbe) {
         const float gloss = onelight::glsl::gloss_fromRoughness(kStripRoughness[strip]);
         std::printf(
             "[ probes ] gloss %.2f (roughness %.2f): relative RMS error %.4f with the "
-            "probe, %.4f without (%zu blocks of %ux%u pixels)\n",
-            double(gloss), double(kStripRoughness[strip]), a.rms, b.rms, a.blocks, kBlock, kBlock);
+            "probe, %.4f without; the strip's level over the reference's %.3f and %.3f (%zu "
+            "blocks of %ux%u pixels)\n",
+            double(gloss), double(kStripRoughness[strip]), a.rms, b.rms, a.ratio, b.ratio, a.blocks,
+            kBlock, kBlock);
         EXPECT_GE(a.blocks, 12u);
         EXPECT_LE(a.rms, b.rms) << "gloss " << gloss;
     }
