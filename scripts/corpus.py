@@ -13,8 +13,14 @@ what it measured), with a progress line per map on stderr. A map
 that fails is reported and the run carries on.
 
   scripts/corpus.py OUT.md [--games openarena,nexuiz] [--maps REGEX] [--limit N]
-                    [--bin build/bin] [--work DIR [--resume]] [--size WxH] [--timeout S]
-                    [--no-bake]
+                    [--bin build/bin] [--work DIR] [--rows FILE] [--resume] [--size WxH]
+                    [--timeout S] [--no-bake]
+
+Every finished map's row is appended to a rows file (default WORK/rows.jsonl), with the commit
+of the binaries that made it (BIN/COMMIT when a copy of the binaries holds one, else the
+checkout's HEAD); --resume keeps the rows already there and runs only the rest. A rows file
+kept in the repository (--rows) lets a run that takes longer than one sitting go on in the
+next, on another machine.
 
 A run shares the machine by being held (scripts/hold PID WORK/holds -- COMMAND): the held time
 is left out of its step times.
@@ -274,8 +280,8 @@ def table(game, rows, shadowed):
              f"{len(rows)} maps" + (f" ({shadowed} older copies in earlier pk3s not run)"
                                    if shadowed else ""), "",
              "| map | pk3 | result | compile s | draft bake s | peak MiB | package MiB | "
-             "frame ms | light from | lum. ratio | Δxy | q3map2 -light | notes |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "frame ms | light from | lum. ratio | Δxy | q3map2 -light | binaries | notes |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         why = r["why"].replace("|", "\\|").replace("\n", " ")
         if len(why) > 300:
@@ -286,7 +292,7 @@ def table(game, rows, shadowed):
             cell(r, "package_mib", "{:.1f}"), cell(r, "frame_ms", "{:.1f}"),
             r.get("light_from", ""),
             cell(r, "lum_ratio", "{:.2f}"), cell(r, "dxy", "{:.3f}"),
-            r.get("q3map2", "").replace("|", "\\|"), why]) + " |")
+            r.get("q3map2", "").replace("|", "\\|"), r.get("commit", "–"), why]) + " |")
     return lines + [""]
 
 
@@ -322,22 +328,30 @@ def main():
                    "CPU time over the cores; a step that hangs: four times this, wall)")
     p.add_argument("--no-bake", action="store_true", help="compile and draw unbaked only: "
                    "every map checked in minutes, without the bake's columns")
-    p.add_argument("--resume", action="store_true", help="with --work: keep the rows of maps "
-                   "that folder's earlier run finished (its rows.jsonl), run only the rest")
+    p.add_argument("--rows", default="", help="the rows file (default: WORK/rows.jsonl)")
+    p.add_argument("--resume", action="store_true", help="keep the rows of maps an earlier run "
+                   "finished (the rows file), run only the rest")
     args = p.parse_args()
     args.bake = os.path.join(args.bin, "onelight-bake")
     args.game_exe = os.path.join(args.bin, "onelight")
     for exe in (args.bake, args.game_exe):
         if not os.access(exe, os.X_OK):
             sys.exit(f"corpus: {exe}: missing; build onelight and onelight-bake first")
-    if args.resume and not args.work:
-        sys.exit("corpus: --resume needs --work DIR, the earlier run's folder")
+    if args.resume and not (args.work or args.rows):
+        sys.exit("corpus: --resume needs --rows FILE or --work DIR, the earlier run's rows")
+    commit_file = os.path.join(args.bin, "COMMIT")
+    if os.path.exists(commit_file):
+        args.commit = open(commit_file).read().strip()
+    else:
+        args.commit = subprocess.run(["git", "-C", here, "rev-parse", "--short", "HEAD"],
+                                     capture_output=True, text=True).stdout.strip() or "?"
+
     work = args.work or tempfile.mkdtemp(prefix="onelight-corpus-")
     args.holds = os.path.join(work, "holds")  # scripts/hold's record (held_seconds)
     os.makedirs(os.path.join(work, "captures"), exist_ok=True)
     # Every finished row, one JSON object a line (the mode and map identify it): --resume
     # reuses them.
-    done_path = os.path.join(work, "rows.jsonl")
+    done_path = args.rows or os.path.join(work, "rows.jsonl")
     done = {}
     if args.resume and os.path.exists(done_path):
         for line in open(done_path):
@@ -378,6 +392,7 @@ def main():
                 except Exception as e:  # a map must never stop the run
                     row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused",
                            "why": f"corpus script: {e}"}
+                row["commit"] = args.commit
                 with open(done_path, "a") as f:
                     f.write(json.dumps({"mode": mode, "map": name, "pk3": key[2], "row": row})
                             + "\n")
