@@ -7,7 +7,8 @@
 namespace onelight::world {
 
 /// How the texture stage makes normal and gloss mips (bake/textures, docs/materials.md): a plain
-/// box filter of each texture, Black Ops' variance to gloss, or WWII's average normal length.
-enum class GlossMipMethod : uint8_t { kBlit = 0, kBlackOps = 1, kWwii = 2 };
+/// box filter of each texture, Black Ops' variance to gloss, WWII's average normal length, or
+/// the slopes' second moments (CLEAN mapping).
+enum class GlossMipMethod : uint8_t { kBlit = 0, kBlackOps = 1, kWwii = 2, kClean = 3 };
 
 }  // namespace onelight::world

@@ -72,7 +72,7 @@ std::vector<KnobSetting> levelKnobs(double levelTexelsPerMetre, const std::strin
     // The material pipeline's per-level choice: a patched copy of the glTF, a bake each.
     if (patchable) {
         std::vector<std::string> others;
-        for (const char* v : {"blit", "wwii", "black_ops"})
+        for (const char* v : {"blit", "wwii", "black_ops", "clean"})
             if (v != levelGlossMips) others.push_back(v);
         for (const std::string& v : pick(others, quick)) {
             KnobSetting s = setting("gloss mips", v, {}, {});

@@ -238,6 +238,8 @@ std::string glossMipsName(world::GlossMipMethod m) {
             return "blit";
         case world::GlossMipMethod::kWwii:
             return "wwii";
+        case world::GlossMipMethod::kClean:
+            return "clean";
         case world::GlossMipMethod::kBlackOps:
             break;
     }

@@ -14,7 +14,7 @@ namespace onelight::bake {
 
 namespace {
 
-// Sums over a footprint's level-0 texels of what the three methods need (see the header).
+// Sums over a footprint's level-0 texels of what the four methods need (see the header).
 struct FootprintSums {
     glm::dvec3 normal{0.0};                                             // sum n_i
     double xx = 0.0, yy = 0.0, zz = 0.0, xy = 0.0, xz = 0.0, yz = 0.0;  // sum n_i n_i^T
@@ -22,6 +22,9 @@ struct FootprintSums {
     double areaOverCos = 0.0;                                           // sum A(g_i) / cos_i
     double variance = 0.0;                                              // sum var(g_i)
     double roughness = 0.0;  // sum roughness_fromGloss(g_i)
+    glm::dvec2 slope{0.0};   // sum s_i = n_i.xy / cos_i
+    double slope2 = 0.0;     // sum |s_i|^2
+    double alpha2 = 0.0;     // sum ggxAlpha_fromGloss(g_i)^2
     double count = 0.0;      // K
 };
 
@@ -37,6 +40,9 @@ void add(FootprintSums& s, const FootprintSums& o) {
     s.areaOverCos += o.areaOverCos;
     s.variance += o.variance;
     s.roughness += o.roughness;
+    s.slope += o.slope;
+    s.slope2 += o.slope2;
+    s.alpha2 += o.alpha2;
     s.count += o.count;
 }
 
@@ -61,6 +67,10 @@ FootprintSums texelSums(glm::vec3 normal, float gloss) {
     s.areaOverCos = (1.0 / averageNormalLength_fromGloss(g)) / cosTheta;
     s.variance = normalVariance_fromGloss(g);
     s.roughness = roughness_fromGloss(g);
+    s.slope = glm::dvec2(n.x, n.y) / cosTheta;
+    s.slope2 = glm::dot(s.slope, s.slope);
+    const double alpha = ggxAlpha_fromGloss(g);
+    s.alpha2 = alpha * alpha;
     s.count = 1.0;
     return s;
 }
@@ -81,6 +91,14 @@ Texel resolve(const FootprintSums& s, world::GlossMipMethod method, GlossInversi
         glm::dvec3 n = directionOr(s.normal, s.count);
         float roughness = float(s.roughness / s.count);
         return {glm::vec3(n), glsl::gloss_fromRoughness(roughness)};
+    }
+    if (method == world::GlossMipMethod::kClean) {
+        // Olano and Baker 2010, sec. 5 (isotropic): the slopes' mixture, see the header.
+        const glm::dvec2 mean = s.slope / s.count;
+        const double spread = std::max(s.slope2 / s.count - glm::dot(mean, mean), 0.0);
+        const double alpha2 = std::clamp(s.alpha2 / s.count + spread, 1e-30, 1.0);
+        const double g = std::clamp(std::log2(2.0 / alpha2 - 1.0) / 18.0, 0.0, 1.0);
+        return {glm::vec3(glm::normalize(glm::dvec3(mean.x, mean.y, 1.0))), float(g)};
     }
     if (method == world::GlossMipMethod::kBlackOps) {
         glm::dvec3 n = directionOr(s.normal, s.count);

@@ -8,7 +8,7 @@
 // size n' covers texels [2x, 2x + 2) of the level above (size n), except the last one, which
 // also takes the odd texel left over when n is odd (so it covers 3) and covers the whole axis
 // when n' = n = 1. So every texel of a level belongs to exactly one texel of the next, and a mip
-// texel's footprint on level 0 is a rectangle (mipFootprint). The three methods below compute
+// texel's footprint on level 0 is a rectangle (mipFootprint). The four methods below compute
 // from sums over that rectangle, in double, each level's sums being the sums of its children's:
 // nothing is lost to intermediate rounding or normalisation, and every level-0 texel weighs the
 // same (each covers the same area of the texture plane). For power-of-two sizes these are the
@@ -48,6 +48,18 @@
 //   the direction is the 1/cos-weighted mean of the n_i whatever the glosses; the glosses set
 //   the length, rough texels shortening it more. A flat footprint of gloss g gives
 //   average = n / A(g), so gloss g again.
+//
+//  Clean (CLEAN mapping, Olano and Baker 2010, "LEAN Mapping", sec. 5, its isotropic form: the
+//   slopes' first and second moments): texel i's normal is the slope s_i = n_i.xy / cos_i, and
+//   its own lobe a spread of slopes of variance alpha(g_i)^2 / 2 per axis (a Beckmann lobe of
+//   alpha has that slope variance, and GGX's core follows Beckmann's of the same alpha). The
+//   footprint's slopes have mean sbar = (1/K) sum s_i and, per axis, the variance of the
+//   mixture; averaged over the two axes, the lobe's
+//     alpha^2 = (1/K) sum alpha(g_i)^2 + (1/K) sum |s_i|^2 - |sbar|^2,
+//   normal = normalize(sbar.x, sbar.y, 1), gloss = the gloss of that alpha (Chan 2018, eq. 2,
+//   inverted). Where Black Ops' variance of sin^2 is dominated by GGX's long tail, so that the
+//   lobe it picks for a footprint of Gaussian bumps has about half their width, this matches
+//   the core's width. A flat footprint of gloss g gives alpha(g), so gloss g again.
 //
 // Robustness: level 0 of the output is the input, bit for bit. For the sums, a level-0 normal
 // that is not finite or has length < 1e-12 counts as (0, 0, 1), others are normalised; a gloss

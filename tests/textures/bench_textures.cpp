@@ -28,7 +28,8 @@ struct Method {
 };
 constexpr Method kMethods[] = {{"blit", world::GlossMipMethod::kBlit},
                                {"black_ops", world::GlossMipMethod::kBlackOps},
-                               {"wwii", world::GlossMipMethod::kWwii}};
+                               {"wwii", world::GlossMipMethod::kWwii},
+                               {"clean", world::GlossMipMethod::kClean}};
 
 double megatexels(const world::ProcessedTextures& textures) {
     double texels = 0.0;

@@ -28,9 +28,13 @@ using bake::NormalGlossChain;
 using bake::NormalGlossLevel;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr MipMethod kMethods[] = {MipMethod::kBlit, MipMethod::kBlackOps, MipMethod::kWwii};
+constexpr MipMethod kMethods[] = {MipMethod::kBlit, MipMethod::kBlackOps, MipMethod::kWwii,
+                                  MipMethod::kClean};
 const char* methodName(MipMethod m) {
-    return m == MipMethod::kBlit ? "blit" : m == MipMethod::kBlackOps ? "black ops" : "wwii";
+    return m == MipMethod::kBlit       ? "blit"
+           : m == MipMethod::kBlackOps ? "black ops"
+           : m == MipMethod::kWwii     ? "wwii"
+                                       : "clean";
 }
 
 // A small deterministic generator (splitmix64, Steele et al. 2014): uniform doubles in [0, 1).
@@ -480,10 +484,11 @@ TEST(NormalGlossMips, BumpsAtGlossZeroAndOne) {
 
 TEST(NormalGlossMips, NormalVariationOnlyRoughens) {
     // BlackOps: v' = v + var(g) >= var(g). Wwii: |sum n_i / cos_i| <= sum 1 / cos_i, so
-    // |average| <= 1 / A(g) = length(g). Either way gloss <= g, up to rounding.
+    // |average| <= 1 / A(g) = length(g). Clean: alpha^2 = alpha(g)^2 + the slopes' variance
+    // >= alpha(g)^2. Each way gloss <= g, up to rounding.
     for (float g : {0.3f, 0.8f, 0.95f}) {
         NormalGlossLevel level0 = randomLevel(24, 17, 0.3, g, g, 11);
-        for (MipMethod m : {MipMethod::kBlackOps, MipMethod::kWwii})
+        for (MipMethod m : {MipMethod::kBlackOps, MipMethod::kWwii, MipMethod::kClean})
             for (const NormalGlossLevel& level : bake::buildNormalGlossMips(level0, m))
                 for (float mipGloss : level.gloss) EXPECT_LE(mipGloss, g + 1e-6f);
     }
@@ -500,6 +505,8 @@ DirectTexel directTexel(const NormalGlossLevel& l0, bake::TexelRange xs, bake::T
                         MipMethod m) {
     glm::dvec3 sumN(0.0), sumNOverCos(0.0);
     double sumRoughness = 0.0, sumVariance = 0.0, sumAreaOverCos = 0.0, k = 0.0;
+    double sumAlpha2 = 0.0;
+    std::vector<glm::dvec2> slopes;
     for (int y = ys.begin; y < ys.end; ++y)
         for (int x = xs.begin; x < xs.end; ++x) {
             std::size_t i = std::size_t(y) * std::size_t(l0.width) + std::size_t(x);
@@ -510,8 +517,21 @@ DirectTexel directTexel(const NormalGlossLevel& l0, bake::TexelRange xs, bake::T
             sumRoughness += bake::roughness_fromGloss(g);
             sumVariance += bake::normalVariance_fromGloss(g);
             sumAreaOverCos += 1.0 / bake::averageNormalLength_fromGloss(g) / c;
+            sumAlpha2 += bake::ggxAlpha_fromGloss(g) * bake::ggxAlpha_fromGloss(g);
+            slopes.push_back(glm::dvec2(n.x, n.y) / c);
             k += 1.0;
         }
+    if (m == MipMethod::kClean) {
+        // The mixture's variance about its mean, in two passes, and the gloss of its alpha
+        // from Chan 2018, eq. 2: alpha^2 = 2 / (1 + 2^(18 g)).
+        glm::dvec2 mean(0.0);
+        for (const glm::dvec2& s : slopes) mean += s / k;
+        double spread = 0.0;
+        for (const glm::dvec2& s : slopes) spread += glm::dot(s - mean, s - mean) / k;
+        const double alpha2 = sumAlpha2 / k + spread;
+        return {glm::normalize(glm::dvec3(mean, 1.0)),
+                std::clamp(std::log2(2.0 / alpha2 - 1.0) / 18.0, 0.0, 1.0)};
+    }
     if (m == MipMethod::kBlit)
         return {glm::normalize(sumN), double(glsl::gloss_fromRoughness(float(sumRoughness / k)))};
     if (m == MipMethod::kBlackOps) {
@@ -703,17 +723,19 @@ TEST(TextureMips, BumpyGlossyFloorAgainstFullResolution) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     std::printf("relative RMS error of each mip's shading against the full-resolution mean\n");
-    std::printf("mip |  size   |     blit | black ops |     wwii | gloss: black ops |   wwii\n");
+    std::printf(
+        "mip |  size   |     blit | black ops |     wwii |    clean | gloss: black ops |   wwii | "
+        " clean\n");
     for (std::size_t k = 0; k < errors[0].size(); ++k) {
-        double glossBlackOps = 0.0, glossWwii = 0.0;
-        for (float g : chains[1][k].gloss) glossBlackOps += double(g);
-        for (float g : chains[2][k].gloss) glossWwii += double(g);
-        glossBlackOps /= double(chains[1][k].gloss.size());
-        glossWwii /= double(chains[2][k].gloss.size());
-        std::printf("%3zu | %3dx%-3d | %8.4f | %9.4f | %8.4f | %16.4f | %6.4f\n", k,
+        double gloss[4] = {0.0, 0.0, 0.0, 0.0};
+        for (std::size_t c = 1; c < 4; ++c) {
+            for (float g : chains[c][k].gloss) gloss[c] += double(g);
+            gloss[c] /= double(chains[c][k].gloss.size());
+        }
+        std::printf("%3zu | %3dx%-3d | %8.4f | %9.4f | %8.4f | %8.4f | %16.4f | %6.4f | %6.4f\n", k,
                     errors[0][k].width, errors[0][k].height, errors[0][k].relativeError,
-                    errors[1][k].relativeError, errors[2][k].relativeError, glossBlackOps,
-                    glossWwii);
+                    errors[1][k].relativeError, errors[2][k].relativeError,
+                    errors[3][k].relativeError, gloss[1], gloss[2], gloss[3]);
     }
     std::printf("(%zu view-light pairs, %.2f s)\n", sweep.size(), seconds);
 
@@ -722,6 +744,7 @@ TEST(TextureMips, BumpyGlossyFloorAgainstFullResolution) {
         double blit = errors[0][k].relativeError;
         EXPECT_LE(errors[1][k].relativeError, 0.5 * blit) << "black ops, mip " << k;
         EXPECT_LE(errors[2][k].relativeError, 0.5 * blit) << "wwii, mip " << k;
+        EXPECT_LE(errors[3][k].relativeError, 0.5 * blit) << "clean, mip " << k;
     }
 }
 

@@ -369,7 +369,7 @@ TEST(ImportErrors, BadMaterialModels) {
                      "expected \"lambert\" or \"multiscatter\""},
           std::tuple{"diffuse", nlohmann::json(1), "must be a string"},
           std::tuple{"gloss_mips", nlohmann::json("toksvig"),
-                     "\"blit\", \"black_ops\" or \"wwii\""}}) {
+                     "\"blit\", \"black_ops\", \"wwii\" or \"clean\""}}) {
         GltfBuilder gltf;
         gltf.addNode({{"name", "settings"}, {"extras", {{"onelight", {{key, value}}}}}});
         expectError(gltf.write(freshFolder("models_bad"), "models"), {"settings", key, expected});

@@ -294,8 +294,8 @@ TEST(TextureSection, RejectsAMaterialCountMismatch) {
 
 TEST(TextureSection, RejectsAnUnknownEnumeration) {
     const RawSection s = encodeTextureSection(sampleTextures());
-    expectRejected(patched<uint8_t>(s, offsetof(DiskProcessedTexturesHeader, method), 3),
-                   "header: method 3; expected 0 (blit), 1 (Black Ops) or 2 (WWII)");
+    expectRejected(patched<uint8_t>(s, offsetof(DiskProcessedTexturesHeader, method), 4),
+                   "header: method 4; expected 0 (blit), 1 (Black Ops), 2 (WWII) or 3 (CLEAN)");
     expectRejected(patched<uint8_t>(s, textureField(1, offsetof(DiskProcessedTexture, format)), 3),
                    "texture 1: format 3");
     expectRejected(

@@ -148,9 +148,11 @@ NodeExtras parseNodeExtras(const tinygltf::Value& extras, const std::string& whe
             out.glossMips = GlossMipMethod::kBlackOps;
         else if (name == "wwii")
             out.glossMips = GlossMipMethod::kWwii;
+        else if (name == "clean")
+            out.glossMips = GlossMipMethod::kClean;
         else
             throw Error(base + ".gloss_mips is '" + clipForMessage(name) +
-                        "'; expected \"blit\", \"black_ops\" or \"wwii\"");
+                        "'; expected \"blit\", \"black_ops\", \"wwii\" or \"clean\"");
     }
     if (o.Has("sky")) {
         const tinygltf::Value& sky = o.Get("sky");

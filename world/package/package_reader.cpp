@@ -308,10 +308,10 @@ private:
             fail(id, i,
                  "diffuseModel " + std::to_string(d.diffuseModel) +
                      "; expected 0 (Lambert) or 1 (multiscatter)");
-        if (d.glossMips > uint8_t(world::GlossMipMethod::kWwii))
+        if (d.glossMips > uint8_t(world::GlossMipMethod::kClean))
             fail(id, i,
                  "glossMips " + std::to_string(d.glossMips) +
-                     "; expected 0 (blit), 1 (Black Ops) or 2 (WWII)");
+                     "; expected 0 (blit), 1 (Black Ops), 2 (WWII) or 3 (CLEAN)");
         if (d.reserved != 0) fail(id, i, "reserved " + std::to_string(d.reserved) + "; expected 0");
     }
 

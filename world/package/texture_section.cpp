@@ -266,9 +266,9 @@ TextureContents decodeTextureSection(std::span<const RawSection> sections,
     if (h.texelBytes > world::kMaxDecodedImageBytes)
         throw world::Error(atHeader + "texelBytes " + std::to_string(h.texelBytes) +
                            "; expected at most " + std::to_string(world::kMaxDecodedImageBytes));
-    if (h.method > uint8_t(world::GlossMipMethod::kWwii))
+    if (h.method > uint8_t(world::GlossMipMethod::kClean))
         throw world::Error(atHeader + "method " + std::to_string(h.method) +
-                           "; expected 0 (blit), 1 (Black Ops) or 2 (WWII)");
+                           "; expected 0 (blit), 1 (Black Ops), 2 (WWII) or 3 (CLEAN)");
     checkReserved(atHeader, h.reserved);
     if (h.materialCount != level.materials.size())
         throw world::Error(atHeader + "materialCount " + std::to_string(h.materialCount) +
