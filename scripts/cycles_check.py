@@ -23,6 +23,8 @@ The scenes:
   roof_room   the room lit through a roof opening (tests/bake/bake_scenes.hpp): 4 x 3 x 2.5 m,
               Lambert walls 0.6, a 1 x 1 m opening, a block of 0.3, a 20 klx sun through the
               opening and nothing else: every pixel off the sunlit patch has bounced.
+  lamp_room   the same room closed, lit only by a 0.6 x 0.6 m ceiling panel of 2000 cd/m^2
+              (an emissive Lambert quad, one-sided): the emitters the bake samples as lights.
 """
 import argparse
 import base64
@@ -90,10 +92,17 @@ class Gltf:
         self.doc["nodes"].append(node)
         self.doc["scenes"][0]["nodes"].append(len(self.doc["nodes"]) - 1)
 
-    def material(self, name, albedo):
-        self.doc["materials"].append({"name": name, "pbrMetallicRoughness": {
+    def material(self, name, albedo, emission=0.0):
+        """A Lambert material; with `emission`, a white emitter of that many cd/m^2."""
+        m = {"name": name, "pbrMetallicRoughness": {
             "baseColorFactor": [albedo, albedo, albedo, 1.0], "metallicFactor": 0.0,
-            "roughnessFactor": 1.0}})
+            "roughnessFactor": 1.0}}
+        if emission > 0.0:
+            m["emissiveFactor"] = [1.0, 1.0, 1.0]
+            m["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength": emission}}
+            if "KHR_materials_emissive_strength" not in self.doc["extensionsUsed"]:
+                self.doc["extensionsUsed"].append("KHR_materials_emissive_strength")
+        self.doc["materials"].append(m)
         return len(self.doc["materials"]) - 1
 
     def view(self, payload, target):
@@ -153,8 +162,10 @@ class Gltf:
     def write(self, path, sky):
         self.node({"name": "settings", "extras": {"onelight": {"sky": sky}}})
         doc = dict(self.doc)
+        if not doc["extensions"]["KHR_lights_punctual"]["lights"]:
+            del doc["extensions"]
         if not doc["extensionsUsed"]:
-            del doc["extensionsUsed"], doc["extensions"]
+            del doc["extensionsUsed"]
         doc["buffers"] = [{"byteLength": len(self.data), "uri": "data:application/octet-stream;"
                            "base64," + base64.b64encode(bytes(self.data)).decode()}]
         with open(path, "w") as f:
@@ -227,6 +238,21 @@ def blender(render, *args):
         sys.exit(f"cycles_check: blender {' '.join(args)} failed:\n{result.stderr[-2000:]}")
 
 
+def lamp_room(path, aspect):
+    g = Gltf()
+    walls = g.material("walls", 0.6)
+    block = g.material("block", 0.3)
+    panel = g.material("panel", 0.0, emission=2000.0)
+    g.quads("room", box_inside(-2.0, 2.0, 0.0, 2.5, -1.5, 1.5) + [
+        [[-2.0, 2.5, -1.5], [2.0, 2.5, -1.5], [2.0, 2.5, 1.5], [-2.0, 2.5, 1.5]]], walls)
+    g.quads("block", box_outside(-0.8, 0.0, 0.0, 0.8, -0.4, 0.4), block)
+    y = 2.499
+    g.quads("panel", [[[0.2, y, -0.3], [0.8, y, -0.3], [0.8, y, 0.3], [0.2, y, 0.3]]], panel)
+    g.camera("view", [-1.8, 1.7, 1.3], [0.6, 0.6, -0.3], aspect)
+    g.write(path, 0.0)
+    return 0.0
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
@@ -235,14 +261,14 @@ def main():
     p.add_argument("--size", default="320x180")
     p.add_argument("--spp", type=int, default=1024, help="the engine reference's paths a pixel")
     p.add_argument("--cycles", type=int, default=1024, help="Cycles' samples a pixel")
-    p.add_argument("--scenes", default="sky_floor,roof_room")
+    p.add_argument("--scenes", default="sky_floor,roof_room,lamp_room")
     args = p.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
     work = args.work or tempfile.mkdtemp(prefix="onelight-cycles-")
     os.makedirs(work, exist_ok=True)
     bake = os.path.join(args.bin, "onelight-bake")
     render = os.path.join(here, "cycles_render.py")
-    scenes = {"sky_floor": sky_floor, "roof_room": roof_room}
+    scenes = {"sky_floor": sky_floor, "roof_room": roof_room, "lamp_room": lamp_room}
     rows = []
     for name in args.scenes.split(","):
         gltf = os.path.join(work, name + ".gltf")

@@ -61,8 +61,27 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
         diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
         diffuse.inputs["Color"].default_value = node.inputs["Base Color"].default_value
         diffuse.inputs["Roughness"].default_value = 0.0  # Lambert
+        surface = diffuse.outputs["BSDF"]
+        strength = node.inputs["Emission Strength"].default_value
+        colour = node.inputs["Emission"].default_value
+        if strength > 0.0 and max(colour[:3]) > 0.0:
+            # Emission from the front face only, as the engine's single-sided emitters.
+            emission = tree.nodes.new("ShaderNodeEmission")
+            emission.inputs["Color"].default_value = colour
+            emission.inputs["Strength"].default_value = strength
+            geometry = tree.nodes.new("ShaderNodeNewGeometry")
+            black = tree.nodes.new("ShaderNodeEmission")
+            black.inputs["Strength"].default_value = 0.0
+            front = tree.nodes.new("ShaderNodeMixShader")
+            tree.links.new(geometry.outputs["Backfacing"], front.inputs["Fac"])
+            tree.links.new(emission.outputs["Emission"], front.inputs[1])
+            tree.links.new(black.outputs["Emission"], front.inputs[2])
+            add = tree.nodes.new("ShaderNodeAddShader")
+            tree.links.new(diffuse.outputs["BSDF"], add.inputs[0])
+            tree.links.new(front.outputs["Shader"], add.inputs[1])
+            surface = add.outputs["Shader"]
         output = tree.nodes["Material Output"]
-        tree.links.new(diffuse.outputs["BSDF"], output.inputs["Surface"])
+        tree.links.new(surface, output.inputs["Surface"])
     world = bpy.data.worlds.new("sky")
     world.use_nodes = True
     background = world.node_tree.nodes["Background"]
