@@ -25,6 +25,9 @@ The scenes:
               opening and nothing else: every pixel off the sunlit patch has bounced.
   lamp_room   the same room closed, lit only by a 0.6 x 0.6 m ceiling panel of 2000 cd/m^2
               (an emissive Lambert quad, one-sided): the emitters the bake samples as lights.
+  spot_room   the same closed room lit by a 2000 cd spot (cone 0.3 to 0.6 rad) aimed at the
+              floor: where the models differ, the cone's edge (glTF's falloff, smooth in the
+              cosine, against Blender's blend), run by --scenes spot_room.
 """
 import argparse
 import base64
@@ -253,6 +256,21 @@ def lamp_room(path, aspect):
     return 0.0
 
 
+def spot_room(path, aspect):
+    g = Gltf()
+    walls = g.material("walls", 0.6)
+    block = g.material("block", 0.3)
+    g.quads("room", box_inside(-2.0, 2.0, 0.0, 2.5, -1.5, 1.5) + [
+        [[-2.0, 2.5, -1.5], [2.0, 2.5, -1.5], [2.0, 2.5, 1.5], [-2.0, 2.5, 1.5]]], walls)
+    g.quads("block", box_outside(-0.8, 0.0, 0.0, 0.8, -0.4, 0.4), block)
+    g.light("spot", {"type": "spot", "intensity": 2000.0, "color": [1, 1, 1],
+                     "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.6}},
+            [0.8, 2.3, 0.0], direction_quaternion([-0.2, -1.0, 0.0]))
+    g.camera("view", [-1.8, 1.7, 1.3], [0.6, 0.2, -0.3], aspect)
+    g.write(path, 0.0)
+    return 0.0
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
@@ -268,7 +286,8 @@ def main():
     os.makedirs(work, exist_ok=True)
     bake = os.path.join(args.bin, "onelight-bake")
     render = os.path.join(here, "cycles_render.py")
-    scenes = {"sky_floor": sky_floor, "roof_room": roof_room, "lamp_room": lamp_room}
+    scenes = {"sky_floor": sky_floor, "roof_room": roof_room, "lamp_room": lamp_room,
+              "spot_room": spot_room}
     rows = []
     for name in args.scenes.split(","):
         gltf = os.path.join(work, name + ".gltf")

@@ -53,6 +53,14 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
             light.angle = 2.0 * SUN_ANGULAR_RADIUS
         else:
             light.shadow_soft_size = POINT_RADIUS
+        if light.type == "SPOT":
+            # The importer's blend, 1 - inner / outer, ramps Cycles' cone over that share of
+            # 1 - cos(outer), wider than glTF's ramp from cos(outer) to cos(inner) (the spot room
+            # read 1.5x bright for it): the ramp put over glTF's span (its shape, a smoothstep
+            # against glTF's square, still differs).
+            outer = 0.5 * light.spot_size
+            inner = outer * (1.0 - light.spot_blend)
+            light.spot_blend = (math.cos(inner) - math.cos(outer)) / (1.0 - math.cos(outer))
     for material in bpy.data.materials:
         node = lambert(material)
         if node is None:
