@@ -241,14 +241,20 @@ def blender(render, *args):
         sys.exit(f"cycles_check: blender {' '.join(args)} failed:\n{result.stderr[-2000:]}")
 
 
-def lamp_room(path, aspect):
+def closed_room():
+    """The roof-opening room's walls (0.6) and block (0.3), its ceiling whole."""
     g = Gltf()
     walls = g.material("walls", 0.6)
     block = g.material("block", 0.3)
-    panel = g.material("panel", 0.0, emission=2000.0)
     g.quads("room", box_inside(-2.0, 2.0, 0.0, 2.5, -1.5, 1.5) + [
         [[-2.0, 2.5, -1.5], [2.0, 2.5, -1.5], [2.0, 2.5, 1.5], [-2.0, 2.5, 1.5]]], walls)
     g.quads("block", box_outside(-0.8, 0.0, 0.0, 0.8, -0.4, 0.4), block)
+    return g
+
+
+def lamp_room(path, aspect):
+    g = closed_room()
+    panel = g.material("panel", 0.0, emission=2000.0)
     y = 2.499
     g.quads("panel", [[[0.2, y, -0.3], [0.8, y, -0.3], [0.8, y, 0.3], [0.2, y, 0.3]]], panel)
     g.camera("view", [-1.8, 1.7, 1.3], [0.6, 0.6, -0.3], aspect)
@@ -257,12 +263,7 @@ def lamp_room(path, aspect):
 
 
 def spot_room(path, aspect):
-    g = Gltf()
-    walls = g.material("walls", 0.6)
-    block = g.material("block", 0.3)
-    g.quads("room", box_inside(-2.0, 2.0, 0.0, 2.5, -1.5, 1.5) + [
-        [[-2.0, 2.5, -1.5], [2.0, 2.5, -1.5], [2.0, 2.5, 1.5], [-2.0, 2.5, 1.5]]], walls)
-    g.quads("block", box_outside(-0.8, 0.0, 0.0, 0.8, -0.4, 0.4), block)
+    g = closed_room()
     g.light("spot", {"type": "spot", "intensity": 2000.0, "color": [1, 1, 1],
                      "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.6}},
             [0.8, 2.3, 0.0], direction_quaternion([-0.2, -1.0, 0.0]))
