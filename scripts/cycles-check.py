@@ -2,10 +2,10 @@
 """The engine's reference path tracer against an outside one, Blender's Cycles (Debian `blender`),
 on scenes where the two models agree: Lambert surfaces, punctual lights, a uniform sky.
 
-  scripts/cycles_check.py [--bin build/bin] [--work DIR] [--size WxH] [--spp N] [--cycles N]
+  scripts/cycles-check.py [--bin build/bin] [--work DIR] [--size WxH] [--spp N] [--cycles N]
 
 Each scene is written here as a glTF, rendered by `onelight-bake reference` (linear cd/m^2) and
-by Cycles through scripts/cycles_render.py, and the two EXRs are compared by the mean relative
+by Cycles through scripts/cycles-render.py, and the two EXRs are compared by the mean relative
 error of 8x8-pixel blocks' luminance and the ratio of their levels (Cycles over the engine).
 Cycles renders two seeds, so that its own noise is measured the same way (seed 1 against
 seed 0). A benchmark, not a test: minutes on 2 cores.
@@ -231,14 +231,14 @@ def roof_room(path, aspect):
 
 
 def blender(render, *args):
-    """Runs scripts/cycles_render.py in Blender; its Python errors end the run. Blender takes its
+    """Runs scripts/cycles-render.py in Blender; its Python errors end the run. Blender takes its
     Python from the first python3 on PATH: the system's first, whose NumPy it was built with
     (a Python of another install, run first, would lend its own, without NumPy)."""
     env = dict(os.environ, PATH="/usr/bin:/bin:" + os.environ.get("PATH", ""))
     result = subprocess.run(["blender", "-b", "--factory-startup", "--python-exit-code", "1",
                              "-P", render, "--", *args], env=env, capture_output=True, text=True)
     if result.returncode != 0:
-        sys.exit(f"cycles_check: blender {' '.join(args)} failed:\n{result.stderr[-2000:]}")
+        sys.exit(f"cycles-check: blender {' '.join(args)} failed:\n{result.stderr[-2000:]}")
 
 
 def closed_room():
@@ -286,7 +286,7 @@ def main():
     work = args.work or tempfile.mkdtemp(prefix="onelight-cycles-")
     os.makedirs(work, exist_ok=True)
     bake = os.path.join(args.bin, "onelight-bake")
-    render = os.path.join(here, "cycles_render.py")
+    render = os.path.join(here, "cycles-render.py")
     scenes = {"sky_floor": sky_floor, "roof_room": roof_room, "lamp_room": lamp_room,
               "spot_room": spot_room}
     rows = []
@@ -308,7 +308,7 @@ def main():
             blender(render, "compare", a, b, "8", out)
             stats.append(json.load(open(out)))
         rows.append((name, stats[0], stats[1]))
-        print(f"cycles_check: {name}: Cycles against the engine's reference: mean relative "
+        print(f"cycles-check: {name}: Cycles against the engine's reference: mean relative "
               f"block error {stats[0]['mean_relative_error']:.4f}, level {stats[0]['level_ratio']:.4f}; "
               f"Cycles' own noise {stats[1]['mean_relative_error']:.4f} ({stats[0]['blocks']} blocks)",
               file=sys.stderr, flush=True)

@@ -1,5 +1,5 @@
-"""Run inside Blender (blender -b --factory-startup -P scripts/cycles_render.py -- ...), for
-scripts/cycles_check.py, which says why and how the units map.
+"""Run inside Blender (blender -b --factory-startup -P scripts/cycles-render.py -- ...), for
+scripts/cycles-check.py, which says why and how the units map.
 
   render GLTF CAMERA OUT.exr WIDTH HEIGHT SAMPLES SKY_CD_PER_M2 SEED
       imports the glTF with its lights in glTF's own units ('COMPAT': lux and candela read as
@@ -46,7 +46,7 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
     scene = bpy.context.scene
     cameras = [o for o in scene.objects if o.type == "CAMERA" and o.name == camera]
     if not cameras:
-        sys.exit(f"cycles_render: {gltf}: no camera '{camera}'")
+        sys.exit(f"cycles-render: {gltf}: no camera '{camera}'")
     scene.camera = cameras[0]
     for light in bpy.data.lights:
         if light.type == "SUN":
@@ -135,7 +135,7 @@ def compare(a_path, b_path, block, out):
     a, a_size = luminance_blocks(a_path, block)
     b, b_size = luminance_blocks(b_path, block)
     if a_size != b_size:
-        sys.exit(f"cycles_render: {a_path} is {a_size}, {b_path} is {b_size}")
+        sys.exit(f"cycles-render: {a_path} is {a_size}, {b_path} is {b_size}")
     lit = a > 1e-3 * max(a.mean(), 1e-12)
     rel = np.abs(b[lit] - a[lit]) / a[lit]
     result = {"blocks": int(lit.sum()), "mean_relative_error": float(rel.mean()),
@@ -153,7 +153,7 @@ def main():
     elif argv and argv[0] == "compare" and len(argv) == 5:
         compare(argv[1], argv[2], int(argv[3]), argv[4])
     else:
-        sys.exit("cycles_render: usage: render GLTF CAMERA OUT WIDTH HEIGHT SAMPLES SKY SEED | "
+        sys.exit("cycles-render: usage: render GLTF CAMERA OUT WIDTH HEIGHT SAMPLES SKY SEED | "
                  "compare A.exr B.exr BLOCK OUT.json")
 
 
