@@ -191,7 +191,7 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                 const float NoV = glm::dot(point.shadingNormal, v);
                 radiance += throughput * point.bsdf.albedo * diffuseEnergyWeight(point.bsdf, NoV) *
                             (e / glsl::PI);
-                const float p = specularProbability(point.bsdf, glm::dot(point.shadingNormal, v));
+                const float p = specularProbability(point.bsdf, NoV);
                 if (!(p > 0.0f) || rng.next() >= p) break;
                 throughput /= p;
                 point.bsdf.albedo = glm::vec3(0.0f);
