@@ -34,7 +34,7 @@ BlockErrors blockErrors(const world::FloatImage& frame, const world::FloatImage&
         throw std::invalid_argument("a frame of " + std::to_string(frame.width) + "x" +
                                     std::to_string(frame.height) + " holds no 8x8 block");
     std::vector<double> mine(size_t(e.columns) * e.rows), theirs(mine.size());
-    double sumRef = 0.0;
+    double sumRef = 0.0, sumMine = 0.0;
     for (uint32_t by = 0; by < e.rows; ++by)
         for (uint32_t bx = 0; bx < e.columns; ++bx) {
             double a = 0.0, b = 0.0;
@@ -48,6 +48,7 @@ BlockErrors blockErrors(const world::FloatImage& frame, const world::FloatImage&
             mine[i] = a / double(kErrorBlock * kErrorBlock);
             theirs[i] = b / double(kErrorBlock * kErrorBlock);
             sumRef += theirs[i];
+            sumMine += mine[i];
         }
     const double floor = std::max(kErrorFloor * sumRef / double(mine.size()), 1e-6);
     double sum = 0.0;
@@ -56,6 +57,8 @@ BlockErrors blockErrors(const world::FloatImage& frame, const world::FloatImage&
         sum += e.relative.back();
     }
     e.mean = sum / double(e.relative.size());
+    // A black reference: the level against the error floor's least value, finite.
+    e.level = sumMine == sumRef ? 1.0 : sumMine / std::max(sumRef, 1e-6 * double(mine.size()));
     return e;
 }
 

@@ -19,12 +19,15 @@ struct BlockErrors {
     uint32_t columns = 0, rows = 0;  // blocks across and down (partial edge blocks dropped)
     std::vector<double> relative;    // per block, row by row
     double mean = 0.0;               // the mean of `relative`
+    double level = 1.0;  // the frame's mean luminance over the reference's (1 when both are 0)
 };
 
 // The relative error of each 8x8 block's mean luminance. Throws std::invalid_argument when the
 // sizes differ or the image is smaller than one block; non-finite pixels count as 0.
 [[nodiscard]] BlockErrors blockErrors(const world::FloatImage& frame,
                                       const world::FloatImage& reference);
+
+constexpr double kHeatFullScale = 0.5;  // the heat maps' white: a block 50% off
 
 // The block errors as an RGBA8 heat map of the frame's size: 0 black, through red and yellow,
 // to white at `fullScale` and above.

@@ -22,8 +22,6 @@ namespace onelight::lab {
 
 namespace {
 
-constexpr double kHeatFullScale = 0.5;  // the heat map's white: a block 50% off
-
 std::string fixed(double v, int digits) {
     if (!std::isfinite(v)) throw std::runtime_error("level-report: a non-finite measurement");
     char text[64];

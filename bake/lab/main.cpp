@@ -6,7 +6,7 @@
 //   onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH]
 //                             [--budget-minutes M] [--timing-runs N] [--quick] -o DIR
 //                                             speed against error per camera and knob
-//   onelight-lab frame-error FRAME.exr REFERENCE.exr
+//   onelight-lab frame-error FRAME.exr REFERENCE.exr [--heat-map OUT.png]
 //                                             mean relative 8x8-block error of a frame
 //   onelight-lab sheet -o OUT.png --ev100 E[,E...] --images A.exr,B.exr [--rect x,y,w,h]
 //                      [--columns N]
@@ -100,8 +100,12 @@ const std::vector<CommandTable>& commandTables() {
         report.minPositionals = report.maxPositionals = 1;
         t.push_back(report);
         CommandTable frameError =
-            commandTable("frame-error", "FRAME.exr REFERENCE.exr",
-                         "mean relative 8x8-block error of a frame against its reference", {});
+            commandTable("frame-error", "FRAME.exr REFERENCE.exr [--heat-map OUT.png]",
+                         "mean relative 8x8-block error of a frame against its reference",
+                         {world::textOption("--heat-map", "OUT.png",
+                                            "each block's error as a picture: black 0, red, "
+                                            "yellow, white at 50% and above",
+                                            "none")});
         frameError.positionalName = "FRAME.exr and REFERENCE.exr";
         frameError.minPositionals = frameError.maxPositionals = 2;
         t.push_back(frameError);
@@ -207,15 +211,21 @@ int sheetCommand(int argc, char** argv) {
     return sheet(o.text("-o"), ev, parseWordList(o.text("--images")), rect, columns);
 }
 
-// frame-error FRAME.exr REFERENCE.exr: the level report's error measure for two linear images
-// of one size (block_error.hpp), as "error=E blocks=N worst=W" on stdout.
+// frame-error FRAME.exr REFERENCE.exr [--heat-map OUT.png]: the level report's error measure for
+// two linear images of one size (block_error.hpp), as "error=E blocks=N worst=W level=L" on
+// stdout (L: the frame's mean luminance over the reference's), and each block's error as a
+// picture.
 int frameErrorCommand(int argc, char** argv) {
     const ParsedOptions o = parse("frame-error", argc, argv);
-    const BlockErrors e =
-        blockErrors(world::readExrFile(o.positionals[0]), world::readExrFile(o.positionals[1]));
+    const world::FloatImage frame = world::readExrFile(o.positionals[0]);
+    const BlockErrors e = blockErrors(frame, world::readExrFile(o.positionals[1]));
     double worst = 0.0;
     for (double v : e.relative) worst = std::max(worst, v);
-    std::printf("error=%.6f blocks=%zu worst=%.6f\n", e.mean, e.relative.size(), worst);
+    if (o.has("--heat-map"))
+        world::writePngFile(o.text("--heat-map"), frame.width, frame.height,
+                            heatMap(e, frame.width, frame.height, kHeatFullScale));
+    std::printf("error=%.6f blocks=%zu worst=%.6f level=%.6f\n", e.mean, e.relative.size(), worst,
+                e.level);
     return 0;
 }
 

@@ -1,4 +1,6 @@
 // level-report's arithmetic: the Pareto rule and the 8x8-block error, on hand-made inputs.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -41,6 +43,7 @@ TEST(LevelReportBlockError, MeanRelativeErrorOfBlockLuminance) {
     EXPECT_DOUBLE_EQ(e.relative[0], 0.0);
     EXPECT_NEAR(e.relative[1], 0.5, 1e-12);
     EXPECT_NEAR(e.mean, 0.25, 1e-12);
+    EXPECT_NEAR(e.level, (2.0 + 3.0) / (2.0 + 2.0), 1e-12);  // mean luminance, frame over reference
     // A black reference block is measured against the floor, not divided by zero.
     onelight::world::FloatImage dark = reference;
     for (uint32_t y = 0; y < 8; ++y)
@@ -48,6 +51,10 @@ TEST(LevelReportBlockError, MeanRelativeErrorOfBlockLuminance) {
             for (int c = 0; c < 3; ++c) dark.rgba[(y * 16 + x) * 4 + c] = 0.0f;
     const double floor = onelight::lab::kErrorFloor * 1.0;  // 5% of the mean luminance 1
     EXPECT_NEAR(onelight::lab::blockErrors(reference, dark).relative[0], 2.0 / floor, 1e-9);
+    // Both black: level 1; a lit frame over a black reference: large but finite.
+    EXPECT_DOUBLE_EQ(onelight::lab::blockErrors(flat(8, 8, 0.0f), flat(8, 8, 0.0f)).level, 1.0);
+    EXPECT_TRUE(
+        std::isfinite(onelight::lab::blockErrors(flat(8, 8, 1.0f), flat(8, 8, 0.0f)).level));
     EXPECT_THROW((void)onelight::lab::blockErrors(flat(8, 8, 1.0f), reference),
                  std::invalid_argument);
 }

@@ -256,10 +256,17 @@ vec3 primaryRadiance(GpuLight light, int type, vec3 p, vec3 n, vec3 v, vec3 geom
     float radius = frame.shadowParams.x;
     float shadow = 1.0;
     if (PRIMARY_SHADOW == 1) {
-        float baked = featureOn(FEATURE_BAKED_SHADOW) && viewDistance > radius - frame.shadowParams.y
-                          ? bakedShadow() : 1.0;
         float runtime = featureOn(FEATURE_RUNTIME_SHADOW) && viewDistance < radius
                             ? runtimeShadow(light, type, p, geometricNormal, s.l, viewDistance) : 1.0;
+        bool inBand = viewDistance > radius - frame.shadowParams.y;
+        bool staticLit = runtime > 0.0 && drawHasLightmap();
+        float baked = featureOn(FEATURE_BAKED_SHADOW) && (inBand || staticLit) ? bakedShadow() : 1.0;
+        // A static surface's mask is traced against the static casters at its texels: where it
+        // is umbra over its whole bilinear footprint, no static caster lets the light through,
+        // and a runtime lookup that does is a leak. The map's filter reaches past the foot of a
+        // single-sided wall, where the map holds nothing, and lit a line along it (dynamic
+        // casters only take light away, so the mask's umbra stands for them too).
+        if (staticLit && baked < 0.5 / 255.0) runtime = 0.0;
         shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x, frame.shadowParams.y);
     }
     return surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity, d) *

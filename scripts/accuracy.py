@@ -1,0 +1,166 @@
+#!/usr/bin/env python3
+"""The real-time frame against the engine's own path-traced reference, scene by scene: the
+table of docs/accuracy.md.
+
+  scripts/accuracy.py OUT.md [--bin build/bin] [--work DIR] [--size WxH] [--spp N]
+                      [--quality draft|default|high] [--scenes A,B,...]
+
+Each scene (scripts/scenes.py, or q3:MAP:CAMERA for an installed Quake 3 map) is baked
+(`onelight-bake --quality Q`), drawn headless from its camera (`onelight --headless --frames 9
+--capture`: the EXR is linear cd/m^2 before exposure), and path-traced twice
+(`onelight-bake reference --seed 0` and `--seed 1`). `onelight-lab frame-error` gives the mean
+relative error of 8x8-pixel blocks' luminance and the level (mean luminance over the
+reference's) of the frame against seed 0, and of seed 1 against seed 0: the reference's own
+noise, below which no frame can be measured. `onelight-lab sheet` writes WORK/NAME-sheet.png,
+the reference left and the frame right at the frame's exposure. A benchmark, not a test: the
+default scenes take about 20 minutes on 2 cores. OUT is written atomically after every scene.
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+from scenes import SCENES
+
+DEFAULT_SCENES = ("roof_room,roof_room_glossy,glossy_room,textured_room,normal_floor,"
+                  "q3:kaos:spawn0")
+
+WHAT = {
+    "roof_room": "the roof-opening room, Lambert walls, lit by a sun through the opening only",
+    "roof_room_glossy": "the same with a glossy floor (roughness 0.25) and a gold block",
+    "glossy_room": "the closed room under an emissive panel and a lamp: a near-mirror floor "
+                   "(0.1), semi-glossy walls (0.5), a copper block",
+    "textured_room": "the closed room under the panel: checker floor, striped wall, an "
+                     "alpha-tested grate",
+    "normal_floor": "a normal-mapped glossy floor (0.15) to the horizon, a low sun ahead, "
+                    "a sky",
+}
+
+
+def run(args, what):
+    result = subprocess.run(args, capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"accuracy: {what} failed (exit {result.returncode}):\n"
+                 f"{' '.join(args)}\n{result.stderr[-2000:]}")
+    return result.stdout
+
+
+def frame_error(lab, frame, reference):
+    out = run([lab, "frame-error", frame, reference], "frame-error")
+    fields = dict(re.findall(r"(\w+)=([0-9.eE+-]+)", out))
+    return float(fields["error"]), float(fields["level"]), float(fields["worst"])
+
+
+def camera_ev100(capture_json):
+    with open(capture_json) as f:
+        return json.load(f)["camera"]["ev100"]
+
+
+def write_table(path, header, rows):
+    lines = header + [
+        "| scene | frame error | frame level | reference noise | bake s | frame ms |",
+        "|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r['name']} | {r['error'] * 100:.1f}% | {r['level']:.3f} | "
+                     f"{r['noise'] * 100:.1f}% | {r['bake_s']:.1f} | {r['frame_ms']:.1f} |")
+    lines.append("")
+    lines += [f"- **{r['name']}**: {r['what']}" for r in rows]
+    lines.append("")
+    with open(path + ".tmp", "w") as f:
+        f.write("\n".join(lines))
+    os.replace(path + ".tmp", path)
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("out", help="the markdown table to write")
+    p.add_argument("--bin", default=os.path.join(here, "..", "build", "bin"))
+    p.add_argument("--work", default="", help="packages, frames and references (default: temp)")
+    p.add_argument("--size", default="320x180")
+    p.add_argument("--spp", type=int, default=1024, help="the reference's paths a pixel, per seed")
+    p.add_argument("--quality", default="default", choices=("draft", "default", "high"))
+    p.add_argument("--scenes", default=DEFAULT_SCENES)
+    args = p.parse_args()
+    if not re.fullmatch(r"\d+x\d+", args.size):
+        sys.exit(f"accuracy: --size {args.size}: expected WxH")
+    width, height = (int(v) for v in args.size.split("x"))
+    work = args.work or tempfile.mkdtemp(prefix="onelight-accuracy-")
+    os.makedirs(work, exist_ok=True)
+    bake, engine, lab = (os.path.join(args.bin, n) for n in
+                         ("onelight-bake", "onelight", "onelight-lab"))
+    for tool in (bake, engine, lab):
+        if not os.access(tool, os.X_OK):
+            sys.exit(f"accuracy: {tool}: not found; build first (./test or scripts/setup.sh)")
+    names = args.scenes.split(",")
+    for name in names:
+        if name not in SCENES and not re.fullmatch(r"q3:[\w-]+:\w+", name):
+            sys.exit(f"accuracy: --scenes: unknown scene '{name}'; expected one of "
+                     f"{', '.join(SCENES)} or q3:MAP:CAMERA")
+    with open("/proc/loadavg") as f:
+        load_start = f.read().split()[0]
+    header = [
+        "# The frame against the reference",
+        "",
+        f"`scripts/accuracy.py {os.path.relpath(args.out)} --size {args.size} --spp {args.spp} "
+        f"--quality {args.quality}` on {time.strftime('%Y-%m-%d')} (load average "
+        f"{load_start} at the start). Each scene is baked at `{args.quality}`, drawn by "
+        "`onelight --headless` (lavapipe) from its camera and path-traced twice by "
+        "`onelight-bake reference` (seeds 0 and 1). **frame error**: the mean relative error "
+        "of 8x8-pixel blocks' luminance, the frame against seed 0 (`onelight-lab "
+        "frame-error`); **frame level**: the frame's mean luminance over the reference's; "
+        "**reference noise**: seed 1 against seed 0 by the same measure, the floor under "
+        "which a frame's error cannot be told from the reference's noise. The goal "
+        "(issue 37): a frame error of at most 5% on every scene.",
+        ""]
+    rows = []
+    for name in names:
+        t0 = time.time()
+        if name.startswith("q3:"):
+            _, level, camera = name.split(":")
+            what = f"OpenArena's {level} from {camera}, baked at {args.quality}"
+        else:
+            level, camera = os.path.join(work, name + ".gltf"), "view"
+            SCENES[name](level, width / height)
+            what = WHAT.get(name, name)
+        package = os.path.join(work, name.replace(":", "-") + ".olpak")
+        report = package + ".report.json"
+        run([bake, level, "-o", package, "--quality", args.quality, "--quiet",
+             "--report", report], f"{name}: the bake")
+        with open(report) as f:
+            bake_s = json.load(f).get("seconds_total", 0.0)
+        base = os.path.join(work, name.replace(":", "-"))
+        run([engine, package, "--headless", "--size", args.size, "--camera", camera,
+             "--frames", "9", "--capture", base + "-frame"], f"{name}: the frame")
+        with open(base + "-frame.json") as f:
+            frame_ms = json.load(f)["timings_ms"].get("gpu_median", 0.0)
+        refs = []
+        for seed in (0, 1):
+            out = f"{base}-reference{seed}.exr"
+            run([bake, "reference", level, "--camera", camera, "--spp", str(args.spp),
+                 "--size", args.size, "--seed", str(seed), "-o", out],
+                f"{name}: the reference, seed {seed}")
+            refs.append(out)
+        error, level_ratio, worst = frame_error(lab, base + "-frame.exr", refs[0])
+        noise, _, _ = frame_error(lab, refs[1], refs[0])
+        run([lab, "sheet", "-o", base + "-sheet.png", "--ev100",
+             f"{camera_ev100(base + '-frame.json'):.3f}", "--images",
+             f"{refs[0]},{base}-frame.exr"], f"{name}: the sheet")
+        rows.append({"name": name, "error": error, "level": level_ratio, "noise": noise,
+                     "bake_s": bake_s, "frame_ms": frame_ms, "what": what})
+        print(f"accuracy: {name}: frame error {error:.4f} (worst block {worst:.2f}), level "
+              f"{level_ratio:.3f}, reference noise {noise:.4f}; {time.time() - t0:.0f} s",
+              file=sys.stderr, flush=True)
+        write_table(args.out, header, rows)
+    with open("/proc/loadavg") as f:
+        load_end = f.read().split()[0]
+    header[2] = header[2].replace("at the start)", f"at the start, {load_end} at the end)")
+    write_table(args.out, header, rows)
+
+
+if __name__ == "__main__":
+    main()
