@@ -27,7 +27,7 @@ import time
 from scenes import SCENES
 
 DEFAULT_SCENES = ("roof_room,roof_room_glossy,glossy_room,textured_room,normal_floor,"
-                  "q3:kaos:spawn0")
+                  "normal_floor_sky,normal_floor_sun,flat_floor,q3:kaos:spawn0")
 
 WHAT = {
     "roof_room": "the roof-opening room, Lambert walls, lit by a sun through the opening only",
@@ -38,6 +38,9 @@ WHAT = {
                      "alpha-tested grate",
     "normal_floor": "a normal-mapped glossy floor (0.15) to the horizon, a low sun ahead, "
                     "a sky",
+    "normal_floor_sky": "the normal-mapped floor under its sky alone",
+    "normal_floor_sun": "the normal-mapped floor under its sun alone",
+    "flat_floor": "the same floor without its normal map (the control)",
 }
 
 

@@ -398,24 +398,47 @@ def bump_normal(x, y, size):
     return tuple(int(round((c * 0.5 + 0.5) * 255.0)) for c in n) + (255,)
 
 
-def normal_floor(path, aspect):
-    """A normal-mapped glossy floor (dielectric 0.4, roughness 0.15, 0.25 m bumps) 400 m across,
-    to the horizon, under a 2000 cd/m^2 sky and a 50 klx sun 15 degrees up ahead: the sun's
-    glint runs from under the camera to the horizon, where the bumps are far below a pixel."""
+def glossy_floor(path, aspect, bumps=True, sun=True, sky=2000.0):
+    """A glossy floor (dielectric 0.4, roughness 0.15) 400 m across, to the horizon, under a
+    sky and a 50 klx sun 15 degrees up ahead; with `bumps`, normal-mapped with 0.25 m bumps:
+    the sun's glint runs from under the camera to the horizon, where the bumps are far below a
+    pixel."""
     g = Gltf()
-    bumps = g.texture(image(32, lambda x, y: bump_normal(x, y, 32)))
-    floor = g.material("floor", 0.4, roughness=0.15, normal_texture=bumps)
+    normals = g.texture(image(32, lambda x, y: bump_normal(x, y, 32))) if bumps else None
+    floor = g.material("floor", 0.4, roughness=0.15, normal_texture=normals)
     h = 200.0
     g.quads("floor", [[[-h, 0, -h], [-h, 0, h], [h, 0, h], [h, 0, -h]]], floor, uv_scale=4.0)
-    g.light("sun", {"type": "directional", "intensity": 50000.0, "color": [1, 1, 1]}, None,
-            direction_quaternion([0.0, -math.sin(math.radians(15)), math.cos(math.radians(15))]))
+    if sun:
+        g.light("sun", {"type": "directional", "intensity": 50000.0, "color": [1, 1, 1]}, None,
+                direction_quaternion([0.0, -math.sin(math.radians(15)),
+                                      math.cos(math.radians(15))]))
     g.camera("view", [0.0, 1.7, 0.0], [0.0, 1.0, -10.0], aspect)
-    g.write(path, 2000.0)
-    return 2000.0
+    g.write(path, sky)
+    return sky
+
+
+def normal_floor(path, aspect):
+    return glossy_floor(path, aspect)
+
+
+def normal_floor_sky(path, aspect):
+    """The normal-mapped floor under its sky alone."""
+    return glossy_floor(path, aspect, sun=False)
+
+
+def normal_floor_sun(path, aspect):
+    """The normal-mapped floor under its sun alone."""
+    return glossy_floor(path, aspect, sky=0.0)
+
+
+def flat_floor(path, aspect):
+    """The same floor without its normal map: the control."""
+    return glossy_floor(path, aspect, bumps=False)
 
 
 # The scenes by name, for the scripts' --scenes.
 SCENES = {"sky_floor": sky_floor, "roof_room": roof_room, "lamp_room": lamp_room,
           "spot_room": spot_room, "roof_room_glossy": roof_room_glossy,
           "glossy_room": glossy_room, "textured_room": textured_room,
-          "normal_floor": normal_floor}
+          "normal_floor": normal_floor, "normal_floor_sky": normal_floor_sky,
+          "normal_floor_sun": normal_floor_sun, "flat_floor": flat_floor}

@@ -78,6 +78,28 @@ vec3 normal_fromTangentSpace(vec3 texel, float scale, vec3 n, vec3 t, float tang
     return mapped * inversesqrt(len2);
 }
 
+// A mapped normal n whose mirror reflection of the view v would leave below the plane of the
+// surface's own normal ns, bent towards ns just enough that the reflection stays `lift` above
+// that plane (lift = min(0.9 ns.v, 0.01), as Blender Cycles' ensure_valid_reflection): the
+// reflection lifted to that elevation, and the normal the half vector of v and it. A normal map
+// is not a microsurface: where a bump faces away from the view, the reference ended the paths
+// its reflection sent under the surface (and weighted its diffuse by the bump's grazing
+// Fresnel), while the frame read the probe below the horizon; both now shade the bent normal.
+vec3 normal_withValidReflection(vec3 n, vec3 ns, vec3 v) {
+    float lift = min(0.9f * dot(ns, v), 0.01f);
+    vec3 r = n * (2.0f * dot(n, v)) - v;
+    float rUp = dot(r, ns);
+    if (rUp >= lift) return n;
+    vec3 across = r - ns * rUp;
+    float acrossLength2 = dot(across, across);
+    if (acrossLength2 < 1e-12f) return ns;  // the reflection straight down: no side to keep
+    vec3 lifted = across * (sqrt(max(1.0f - lift * lift, 0.0f)) * inversesqrt(acrossLength2)) +
+                  ns * lift;
+    vec3 h = v + lifted;
+    float hLength2 = dot(h, h);
+    return hLength2 > 1e-12f ? h * inversesqrt(hLength2) : ns;
+}
+
 // The GGX lobe's microsurface area per unit projected area, minus 1 (Chan 2018, "Material
 // Advances in Call of Duty: WWII", sec. 2.1: the lobe's area-weighted average normal has length
 // 1 / A). Closed form of A, the integral of D_GGX over the hemisphere, for alpha <= 1:

@@ -49,9 +49,9 @@ float secondarySpecularChange(const BakeScene& scene, const BakeLights& lights,
                               RayCounts& rays, bool& glossy) {
     const glm::vec3 geometricNormal = hit.backFace ? -hit.normal : hit.normal;
     const glm::vec3 v = -dir;
-    const MaterialSample m = sampleMaterial(scene.materials(), scene.materialIndexOf(hit.triangle),
-                                            scene.attributesAt(hit), geometricNormal, hit.backFace,
-                                            0.0f, glm::dot(geometricNormal, v));
+    const MaterialSample m =
+        sampleMaterial(scene.materials(), scene.materialIndexOf(hit.triangle),
+                       scene.attributesAt(hit), geometricNormal, hit.backFace, 0.0f, v);
     glossy = m.bsdf.materialClass != MATERIAL_LAMBERT;
     if (!glossy) return 0.0f;
     const glm::vec3 n = m.shadingNormal;

@@ -167,10 +167,9 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
         point.position = hit.position;
         point.geometricNormal = hit.backFace ? -hit.normal : hit.normal;
         const glm::vec3 v = -dir;
-        const MaterialSample m =
-            sampleMaterial(scene.materials(), scene.materialIndexOf(hit.triangle),
-                           scene.attributesAt(hit), point.geometricNormal, hit.backFace,
-                           cone.widthAt(hit.distance), glm::dot(point.geometricNormal, v));
+        const MaterialSample m = sampleMaterial(
+            scene.materials(), scene.materialIndexOf(hit.triangle), scene.attributesAt(hit),
+            point.geometricNormal, hit.backFace, cone.widthAt(hit.distance), v);
         point.shadingNormal = m.shadingNormal;
         point.bsdf = m.bsdf;
         if (m.emission != glm::vec3(0.0f)) {

@@ -57,7 +57,8 @@ Bsdf factorBsdf(const world::Material& material, world::DiffuseModel diffuseMode
 
 MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material,
                               const SurfaceAttributes& a, const glm::vec3& geometricNormal,
-                              bool backFace, float footprint, float cosine) {
+                              bool backFace, float footprint, const glm::vec3& toViewer) {
+    const float cosine = glm::dot(geometricNormal, toViewer);
     static const world::Material kDefault;
     const bool known = material < materials.materials.size();
     const world::Material& m = known ? materials.materials[material] : kDefault;
@@ -109,6 +110,11 @@ MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material
         const glm::vec3 normalTexel(texel(materials, set.normal, a, width));
         if (tl > 1e-6f)
             n = glsl::normal_fromTangentSpace(normalTexel, normalScale, n, t / tl, a.tangent.w);
+        // Bent where its reflection would leave below the surface, as forward_shading.glsl.
+        const glm::vec3 surfaceNormal = length2 > 1e-12f
+                                            ? (backFace ? -a.normal : a.normal) / std::sqrt(length2)
+                                            : geometricNormal;
+        n = glsl::normal_withValidReflection(n, surfaceNormal, toViewer);
         // The filter's spread of the normals folds into the gloss, as forward_shading.glsl does; a
         // point sample (the reference's camera rays, footprint 0) sees one normal, no mixture.
         if (m.materialClass != world::MaterialClass::kLambert && width > 0.0f)

@@ -52,13 +52,15 @@ struct MaterialSample {
 };
 
 /// Material `material` of `materials` at a point with `attributes`, seen by a ray whose
-/// footprint there is `footprint` metres wide (0: the finest mip) arriving at cosine `cosine`
-/// to the surface, from the side `geometricNormal` faces (the front face's normal, flipped
-/// towards the ray on a back face) and `backFace` tells.
+/// footprint there is `footprint` metres wide (0: the finest mip) arriving from `toViewer` (unit,
+/// towards where the ray came from), from the side `geometricNormal` faces (the front face's
+/// normal, flipped towards the ray on a back face) and `backFace` tells. A normal map's normal is
+/// bent where its reflection of `toViewer` would leave below the surface
+/// (normal_withValidReflection, shaders/material.glsl), as the forward pass bends it.
 [[nodiscard]] MaterialSample sampleMaterial(const SceneMaterials& materials, uint32_t material,
                                             const SurfaceAttributes& attributes,
                                             const glm::vec3& geometricNormal, bool backFace,
-                                            float footprint, float cosine);
+                                            float footprint, const glm::vec3& toViewer);
 
 /// The emission (cd/m^2) of `material` at a point, towards the side the ray arrived from (none
 /// from the back face of a single-sided material), its texture read for a footprint `width`

@@ -194,9 +194,12 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
         if (b < kFarBand) continue;
         for (int method : {1, 2, 3})
             EXPECT_LE(e[method].rms, 0.5 * e[0].rms) << "band " << b << ", method " << method;
-        // CLEAN's lobe, as wide as the bumps' slopes, is closer than Black Ops' variance match,
-        // whose GGX lobe is about half as wide (measured 1.35-1.42 against 1.45-1.53).
-        EXPECT_LT(e[3].rms, e[1].rms) << "band " << b;
+        // Both shade the same bent normals as the reference (normal_withValidReflection): where a
+        // bump faced away from the view, the reference ended the paths its reflection sent under
+        // the floor while the frame kept them, and Black Ops read 1.45-1.53 here (CLEAN
+        // 1.35-1.42). With the bend, 1.06-1.27 (CLEAN 1.11-1.23, the two within 4% of each other).
+        EXPECT_LT(e[1].rms, 1.35) << "band " << b;
+        EXPECT_LT(e[3].rms, 1.35) << "band " << b;
     }
 }
 

@@ -299,19 +299,20 @@ void main() {
     vec3 p = inWorldPosition;
     vec3 geometricNormal = normalize(inNormal);
     if (!gl_FrontFacing) geometricNormal = -geometricNormal;
+    vec3 toCamera = frame.cameraPosition.xyz - p;
+    float viewDistance = length(toCamera);
+    vec3 v = toCamera / max(viewDistance, 1e-6);
     vec3 n = geometricNormal;
     if (materialHas(m, TEXTURE_NORMAL)) {
         vec3 t = inTangent.xyz - geometricNormal * dot(geometricNormal, inTangent.xyz);
         float tl = length(t);
         vec3 texel = texture(normalTexture, inUv0).rgb;
         if (tl > 1e-6) n = normal_fromTangentSpace(texel, m.params.z, geometricNormal, t / tl, inTangent.w);
+        n = normal_withValidReflection(n, geometricNormal, v);
         // The filter's spread of the normals under this pixel folds into its gloss.
         if (MATERIAL_PIPELINE == 1 && MATERIAL_CLASS != MATERIAL_LAMBERT)
             gloss = gloss_withFilteredNormal(gloss, texel * 2.0 - 1.0);
     }
-    vec3 toCamera = frame.cameraPosition.xyz - p;
-    float viewDistance = length(toCamera);
-    vec3 v = toCamera / max(viewDistance, 1e-6);
 
     vec3 radiance = vec3(0.0);
 
