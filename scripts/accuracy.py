@@ -3,7 +3,7 @@
 table of docs/accuracy.md.
 
   scripts/accuracy.py OUT.md [--bin build/bin] [--work DIR] [--size WxH] [--spp N]
-                      [--quality draft|default|high] [--scenes A,B,...]
+                      [--quality draft|default|high] [--scenes A,B,...] [--json ROWS.json]
 
 Each scene (scripts/scenes.py, or q3:MAP:CAMERA for an installed Quake 3 map) is baked
 (`onelight-bake --quality Q`), drawn headless from its camera (`onelight --headless --frames 9
@@ -12,8 +12,10 @@ Each scene (scripts/scenes.py, or q3:MAP:CAMERA for an installed Quake 3 map) is
 relative error of 8x8-pixel blocks' luminance and the level (mean luminance over the
 reference's) of the frame against seed 0, and of seed 1 against seed 0: the reference's own
 noise, below which no frame can be measured. `onelight-lab sheet` writes WORK/NAME-sheet.png,
-the reference left and the frame right at the frame's exposure. A benchmark, not a test: the
-default scenes take about 20 minutes on 2 cores. OUT is written atomically after every scene.
+the reference left and the frame right at the frame's exposure, and WORK/NAME-heat.png each
+block's error. A benchmark: the default scenes take about 15 minutes on 2 cores (ctest's
+FrameAccuracy runs four cheap ones small, tests/render/frame_accuracy_test.py). OUT (and --json's
+rows) are written atomically after every scene.
 """
 import argparse
 import json
@@ -52,8 +54,9 @@ def run(args, what):
     return result.stdout
 
 
-def frame_error(lab, frame, reference):
-    out = run([lab, "frame-error", frame, reference], "frame-error")
+def frame_error(lab, frame, reference, heat_map=None):
+    out = run([lab, "frame-error", frame, reference] +
+              (["--heat-map", heat_map] if heat_map else []), "frame-error")
     fields = dict(re.findall(r"(\w+)=([0-9.eE+-]+)", out))
     return float(fields["error"]), float(fields["level"]), float(fields["worst"])
 
@@ -61,6 +64,12 @@ def frame_error(lab, frame, reference):
 def camera_ev100(capture_json):
     with open(capture_json) as f:
         return json.load(f)["camera"]["ev100"]
+
+
+def write_atomically(path, text):
+    with open(path + ".tmp", "w") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)
 
 
 def write_table(path, header, rows):
@@ -73,9 +82,7 @@ def write_table(path, header, rows):
     lines.append("")
     lines += [f"- **{r['name']}**: {r['what']}" for r in rows]
     lines.append("")
-    with open(path + ".tmp", "w") as f:
-        f.write("\n".join(lines))
-    os.replace(path + ".tmp", path)
+    write_atomically(path, "\n".join(lines))
 
 
 def main():
@@ -88,6 +95,7 @@ def main():
     p.add_argument("--spp", type=int, default=1024, help="the reference's paths a pixel, per seed")
     p.add_argument("--quality", default="default", choices=("draft", "default", "high"))
     p.add_argument("--scenes", default=DEFAULT_SCENES)
+    p.add_argument("--json", default="", help="also the rows as JSON, for tests")
     args = p.parse_args()
     if not re.fullmatch(r"\d+x\d+", args.size):
         sys.exit(f"accuracy: --size {args.size}: expected WxH")
@@ -148,17 +156,21 @@ def main():
                  "--size", args.size, "--seed", str(seed), "-o", out],
                 f"{name}: the reference, seed {seed}")
             refs.append(out)
-        error, level_ratio, worst = frame_error(lab, base + "-frame.exr", refs[0])
+        error, level_ratio, worst = frame_error(lab, base + "-frame.exr", refs[0],
+                                                base + "-heat.png")
         noise, _, _ = frame_error(lab, refs[1], refs[0])
         run([lab, "sheet", "-o", base + "-sheet.png", "--ev100",
              f"{camera_ev100(base + '-frame.json'):.3f}", "--images",
              f"{refs[0]},{base}-frame.exr"], f"{name}: the sheet")
         rows.append({"name": name, "error": error, "level": level_ratio, "noise": noise,
-                     "bake_s": bake_s, "frame_ms": frame_ms, "what": what})
+                     "worst": worst, "bake_s": bake_s, "frame_ms": frame_ms, "what": what,
+                     "sheet": base + "-sheet.png", "heat_map": base + "-heat.png"})
         print(f"accuracy: {name}: frame error {error:.4f} (worst block {worst:.2f}), level "
               f"{level_ratio:.3f}, reference noise {noise:.4f}; {time.time() - t0:.0f} s",
               file=sys.stderr, flush=True)
         write_table(args.out, header, rows)
+        if args.json:
+            write_atomically(args.json, json.dumps(rows, indent=1))
     with open("/proc/loadavg") as f:
         load_end = f.read().split()[0]
     header[2] = header[2].replace("at the start)", f"at the start, {load_end} at the end)")
