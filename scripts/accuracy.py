@@ -29,7 +29,8 @@ import time
 from scenes import SCENES
 
 DEFAULT_SCENES = ("roof_room,roof_room_glossy,glossy_room,textured_room,normal_floor,"
-                  "normal_floor_sky,normal_floor_sun,flat_floor,q3:kaos:spawn0")
+                  "normal_floor_sky,normal_floor_sun,flat_floor,shadow_edge,shadow_edge_baked,"
+                  "q3:kaos:spawn0")
 
 WHAT = {
     "roof_room": "the roof-opening room, Lambert walls, lit by a sun through the opening only",
@@ -43,7 +44,13 @@ WHAT = {
     "normal_floor_sky": "the normal-mapped floor under its sky alone",
     "normal_floor_sun": "the normal-mapped floor under its sun alone",
     "flat_floor": "the same floor without its normal map (the control)",
+    "shadow_edge": "a wall's sun shadow on a floor, its edge diagonal to the lightmap's texels, "
+                   "seen from 8 m above: the runtime shadow map",
+    "shadow_edge_baked": "the same, drawn with the baked shadow mask only (--shadow-distance 1)",
 }
+
+# Runtime options of a scene's frame.
+FRAME_OPTIONS = {"shadow_edge_baked": ["--shadow-distance", "1"]}
 
 
 def run(args, what):
@@ -146,7 +153,8 @@ def main():
             bake_s = json.load(f).get("seconds_total", 0.0)
         base = os.path.join(work, name.replace(":", "-"))
         run([engine, package, "--headless", "--size", args.size, "--camera", camera,
-             "--frames", "9", "--capture", base + "-frame"], f"{name}: the frame")
+             "--frames", "9", "--capture", base + "-frame"] + FRAME_OPTIONS.get(name, []),
+            f"{name}: the frame")
         with open(base + "-frame.json") as f:
             frame_ms = json.load(f)["timings_ms"].get("gpu_median", 0.0)
         refs = []

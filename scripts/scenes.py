@@ -436,9 +436,41 @@ def flat_floor(path, aspect):
     return glossy_floor(path, aspect, bumps=False)
 
 
+def shadow_edge(path, aspect):
+    """A sun's straight shadow edge on a floor, diagonal to the lightmap's texels: a wall 12 m
+    long, 3 m high and 0.2 m thick, turned 30 degrees about the vertical, on a 40 m floor (Lambert
+    0.5) under a 10 klx sun 45 degrees up, square to the wall, and a 300 cd/m^2 sky; the camera
+    8 m straight above the shadow's far edge (3.1 m from the wall's centre line). accuracy.py
+    draws it twice: with the runtime shadow map (shadow_edge) and with only the baked mask
+    (shadow_edge_baked, --shadow-distance 1)."""
+    g = Gltf()
+    floor = g.material("floor", 0.5)
+    wall = g.material("wall", 0.5)
+    h = 20.0
+    g.quads("floor", [[[-h, 0, -h], [-h, 0, h], [h, 0, h], [h, 0, -h]]], floor)
+    angle = math.radians(30.0)
+    along, across = [math.cos(angle), 0.0, math.sin(angle)], [-math.sin(angle), 0.0, math.cos(angle)]
+    turn = lambda p: [p[0] * along[0] + p[2] * across[0], p[1], p[0] * along[2] + p[2] * across[2]]
+    g.quads("wall", [[turn(p) for p in q] for q in box_outside(-6.0, 6.0, 0.0, 3.0, -0.1, 0.1)],
+            wall)
+    g.light("sun", {"type": "directional", "intensity": 10000.0, "color": [1, 1, 1]}, None,
+            direction_quaternion([across[0], -1.0, across[2]]))
+    edge = [3.1 * across[0], 0.0, 3.1 * across[2]]
+    # Straight down, its image's x along the wall (a target a centimetre off, so that look_at
+    # has a side).
+    g.camera("view", [edge[0], 8.0, edge[2]],
+             [edge[0] + 0.01 * across[0], 0.0, edge[2] + 0.01 * across[2]], aspect, yfov=0.6)
+    g.write(path, 300.0)
+    return 300.0
+
+
+shadow_edge_baked = shadow_edge
+
+
 # The scenes by name, for the scripts' --scenes.
 SCENES = {"sky_floor": sky_floor, "roof_room": roof_room, "lamp_room": lamp_room,
           "spot_room": spot_room, "roof_room_glossy": roof_room_glossy,
           "glossy_room": glossy_room, "textured_room": textured_room,
           "normal_floor": normal_floor, "normal_floor_sky": normal_floor_sky,
-          "normal_floor_sun": normal_floor_sun, "flat_floor": flat_floor}
+          "normal_floor_sun": normal_floor_sun, "flat_floor": flat_floor,
+          "shadow_edge": shadow_edge, "shadow_edge_baked": shadow_edge_baked}
