@@ -84,6 +84,17 @@ float D_GGX(float NxH2, float a) {
     return a2 / (PI * d * d);
 }
 
+// The specular per unit Fresnel of a spread of mirror facets, f NoL / F = D(h) NoH / (4 VoH),
+// for facet normals distributed as a Beckmann lobe of alpha `a` that do not mask each other (a
+// normal map's texels, each much narrower than the spread: shaders/material.glsl, "A
+// footprint's bumps"). Derivation: a facet of normal m reflects F D_m(m.h) / (4 m.v) times the
+// illuminance; averaged over facets of density D(m) m.n per projected area, the narrow D_m picks
+// m = h, and h.v = VoH. Its albedo at normal view is the lobe's share of h within 45 degrees of
+// n, 1 - exp(-1 / a^2) (the reflection leaves below the horizon beyond).
+float specularFacets_Beckmann(float NxH2, float LoH, float a) {
+    return D_Beckmann(NxH2, a) * sqrt(1.0f - saturate(NxH2)) / (4.0f * max(LoH, 1e-4f));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Visibility V = G / (NoL NoV)
 

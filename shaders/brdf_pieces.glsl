@@ -8,7 +8,7 @@
 #include "env_brdf_fit.glsl"
 #include "material.glsl"
 
-#define BRDF_PIECE_COUNT 28
+#define BRDF_PIECE_COUNT 32
 
 float brdfPiece(int piece, vec4 dots, vec4 params) {
     float NoV = dots.x;
@@ -52,6 +52,11 @@ float brdfPiece(int piece, vec4 dots, vec4 params) {
         case 25: return ggxExcessArea(ggxAlpha_fromGloss(gloss));
         case 26: return gloss_fromAverageNormalDistance(NxH2);
         case 27: return gloss_withFilteredNormal(gloss, vec3(NoV, NoL, LoH) * 0.57735f);
+        case 28: return specularFacets_Beckmann(NxH2, LoH, ggxAlpha_fromGloss(gloss));
+        case 29: return bumpShare(gloss, NoL);  // NoL stands for the texels' own gloss
+        case 30: return bumpSlopeRadius(gloss, NoL);
+        case 31: return footprintReflectance(MATERIAL_DIELECTRIC, DIFFUSE_LAMBERT, vec3(0.5f),
+                                             vec3(1.0f - f0), vec3(f0), gloss, NoV, 1.0f, d).x;
     }
     return 0.0f;
 }

@@ -32,4 +32,15 @@ float log1m(float x) {
     return log(1.0f - x);
 }
 
+// 2^x - 1 for x >= 0, accurate where x is tiny (expm1 is not GLSL): below 1/16, with y = x ln 2,
+// the series y (1 + y/2 + y^2/6 + y^3/24 + y^4/120) errs by < y^6/720 relative < 1e-10;
+// above, 2^x - 1 >= 0.044 has no harmful cancellation.
+float exp2m1(float x) {
+    if (x < 0.0625f) {
+        float y = x * 0.693147181f;
+        return y * (1.0f + y * (0.5f + y * (0.166666667f + y * (0.0416666667f + y * 0.00833333333f))));
+    }
+    return exp2(x) - 1.0f;
+}
+
 #endif

@@ -154,8 +154,12 @@ struct GpuMaterial {
     vec4 f0Gloss;    // rgb specular colour factor, a gloss factor
     vec4 emissive;   // rgb emission factor (cd/m^2), a alpha cutoff
     vec4 params;     // x metallic, y roughness, z normal scale, w occlusion strength
-    uvec4 textures;  // x bit mask (1 << TEXTURE_*)
+    uvec4 textures;  // x bit mask (1 << TEXTURE_*), y flags (MATERIAL_FLAG_*)
 };
+// The metallic-roughness texture's A is the normal map's texels' own roughness under each mip
+// texel (world::MaterialTextureSlots::baseRoughnessInAlpha; shaders/material.glsl, "A
+// footprint's bumps").
+const int MATERIAL_FLAG_BASE_ROUGHNESS = 1;
 
 // A dynamic object's baked lighting: the light grid sampled at its origin, or, for an object
 // longer than a grid cell, at a lattice over its bounds (runtime/render/frame_view.hpp,

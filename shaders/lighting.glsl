@@ -139,23 +139,47 @@ vec3 diffuseEnergyWeight(int materialClass, vec3 f0, vec2 env) {
 // texel's normal-mapped relief (docs/materials.md "Cavity"): it scales the primary diffuse, and
 // the primary specular as an occlusion seen along the reflection (specularOcclusion), which
 // lets glossy reflections at grazing view escape the cavities.
-vec3 surfaceReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 f0, float gloss,
-                        vec2 env, float cavity, BrdfDots d) {
-    vec3 diffuse = albedo * diffuseEnergyWeight(materialClass, f0, env) *
-                   (diffuseBrdf(diffuseModel, gloss, d) * d.NoL * cavity);
+//
+// footprintReflectance is the same for a pixel that covers many texels of a normal map
+// (shaders/material.glsl, "A footprint's bumps"): `diffuseWeight` is the diffuse's energy weight
+// (the caller's mean over the footprint's normals, for this light), and the share `bumpShare` of
+// the lobe that is the normals' spread is shaded as facets (specularFacets_Beckmann) instead of
+// the texel's lobe. surfaceReflectance is it for one texel: the weight diffuseEnergyWeight,
+// bumpShare 0.
+vec3 footprintReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 diffuseWeight,
+                          vec3 f0, float gloss, float bumpShare, float cavity, BrdfDots d) {
+    vec3 diffuse = albedo * diffuseWeight * (diffuseBrdf(diffuseModel, gloss, d) * d.NoL * cavity);
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
     vec3 specular = specularLobe(RUNTIME_NDF, RUNTIME_VIS, RUNTIME_FRESNEL, f0, gloss, d);
+    if (bumpShare > 0.0f) {
+        vec3 facets = specularF(RUNTIME_FRESNEL, f0, d.LoH) *
+                      specularFacets_Beckmann(d.NxH2, d.LoH, ggxAlpha_fromGloss(gloss));
+        specular = specular * (1.0f - bumpShare) + facets * bumpShare;
+    }
     if (cavity < 1.0f) specular = specular * specularOcclusion(d.NoV, cavity, ggxAlpha_fromGloss(gloss));
     if (materialClass == MATERIAL_METAL) return specular;
     return diffuse + specular;
 }
 
+vec3 surfaceReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 f0, float gloss,
+                        vec2 env, float cavity, BrdfDots d) {
+    return footprintReflectance(materialClass, diffuseModel, albedo,
+                                diffuseEnergyWeight(materialClass, f0, env), f0, gloss, 0.0f,
+                                cavity, d);
+}
+
 // Diffuse only, for the omni effect lights (docs/lighting.md "Effect lights": gun flashes light
-// diffusely): the diffuse term of surfaceReflectance.
+// diffusely): the diffuse term of footprintReflectance.
+vec3 footprintDiffuse(int diffuseModel, vec3 albedo, vec3 diffuseWeight, float gloss, float cavity,
+                      BrdfDots d) {
+    return albedo * diffuseWeight * (diffuseBrdf(diffuseModel, gloss, d) * d.NoL * cavity);
+}
+
+// The same for one texel: the weight diffuseEnergyWeight.
 vec3 diffuseReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 f0, float gloss,
                         vec2 env, float cavity, BrdfDots d) {
-    return albedo * diffuseEnergyWeight(materialClass, f0, env) *
-           (diffuseBrdf(diffuseModel, gloss, d) * d.NoL * cavity);
+    return footprintDiffuse(diffuseModel, albedo, diffuseEnergyWeight(materialClass, f0, env),
+                            gloss, cavity, d);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -189,14 +213,24 @@ vec3 irradianceAmbientCube(vec3 px, vec3 nx, vec3 py, vec3 ny, vec3 pz, vec3 nz,
 // is (diffuseEnergyWeight); it stays Lambert whatever the level's diffuse model, since baked
 // irradiance arrives from the whole hemisphere (Fd_Chan's view and light dependence averages
 // out to about its albedo there). Lambert-only surfaces take no probe; metals no diffuse.
-vec3 secondaryRadiance(int materialClass, vec3 albedo, vec3 f0, vec2 env, vec3 irradiance,
-                       float ao, float so, vec3 normalisedProbe) {
-    vec3 diffuse = albedo * diffuseEnergyWeight(materialClass, f0, env) * (Fd_Lambert() * ao) *
-                   irradiance;
+// footprintSecondaryRadiance takes the diffuse's weight as given: on a footprint of a normal
+// map, the caller's mean over its normals (shaders/material.glsl, "A footprint's bumps"), with
+// `env` the mean of theirs too.
+vec3 footprintSecondaryRadiance(int materialClass, vec3 albedo, vec3 diffuseWeight, vec3 f0,
+                                vec2 env, vec3 irradiance, float ao, float so,
+                                vec3 normalisedProbe) {
+    vec3 diffuse = albedo * diffuseWeight * (Fd_Lambert() * ao) * irradiance;
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
     vec3 specular = (f0 * env.x + vec3(env.y)) * normalisedProbe * irradiance * so;
     if (materialClass == MATERIAL_METAL) return specular;
     return diffuse + specular;
+}
+
+vec3 secondaryRadiance(int materialClass, vec3 albedo, vec3 f0, vec2 env, vec3 irradiance,
+                       float ao, float so, vec3 normalisedProbe) {
+    return footprintSecondaryRadiance(materialClass, albedo,
+                                      diffuseEnergyWeight(materialClass, f0, env), f0, env,
+                                      irradiance, ao, so, normalisedProbe);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -240,7 +240,7 @@ struct LevelSettings {
     uint32_t skyImage = kNoIndex;  // into images: an equirectangular HDR sky (shaders/sky.glsl)
     DiffuseModel diffuseModel = DiffuseModel::kLambert;  // extras.onelight.diffuse
     // extras.onelight.gloss_mips: by default the method of lower error (docs/materials.md)
-    GlossMipMethod glossMips = GlossMipMethod::kBlackOps;
+    GlossMipMethod glossMips = GlossMipMethod::kClean;
 };
 
 struct CompiledLevel {

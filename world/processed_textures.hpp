@@ -64,6 +64,11 @@ struct MaterialTextureSlots {
     // metallic-roughness and normal textures (the stage folds them in before filtering the
     // normals into the gloss): a reader multiplies by 1 instead of the material's factors.
     bool factorsFolded = false;
+    // A of the metallic-roughness texture is the roughness of the normal-map texels' own lobes
+    // under each mip texel (their RMS alpha), G the whole footprint's (the lobes and the spread
+    // of the normals): a reader can tell the bumps' share of the lobe (shaders/material.glsl,
+    // "A footprint's bumps"). Only on the pair the stage makes for a normal-mapped material.
+    bool baseRoughnessInAlpha = false;
 };
 
 /// The factors a reader multiplies a material's texels by (shaders/material.glsl): 1 for those the
@@ -80,7 +85,7 @@ struct TextureFactors {
 }
 
 struct ProcessedTextures {
-    GlossMipMethod method = GlossMipMethod::kBlackOps;  // how the normal and gloss mips were made
+    GlossMipMethod method = GlossMipMethod::kClean;  // how the normal and gloss mips were made
     std::vector<ProcessedTexture> textures;
     std::vector<MaterialTextureSlots> materials;  // one per level material, in order
 };

@@ -78,8 +78,8 @@ struct SourceLevel {
     bool hasExposure = false;
     float texelsPerMetre = 0.0f;  // the level's lightmap density (extras), 0 when not given
     float probeSpacing = 0.0f;    // metres between automatic probes (extras), 0 when not given
-    DiffuseModel diffuseModel = DiffuseModel::kLambert;    // extras.onelight.diffuse
-    GlossMipMethod glossMips = GlossMipMethod::kBlackOps;  // extras.onelight.gloss_mips
+    DiffuseModel diffuseModel = DiffuseModel::kLambert;  // extras.onelight.diffuse
+    GlossMipMethod glossMips = GlossMipMethod::kClean;   // extras.onelight.gloss_mips
     glm::vec3 skyRadiance{0.0f};   // cd/m^2, RGB: a uniform sky around the level (extras), or
                                    // the scale of skyImage's texels
     uint32_t skyImage = kNoIndex;  // into images: an equirectangular Radiance .hdr sky

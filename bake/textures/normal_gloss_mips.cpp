@@ -86,6 +86,13 @@ struct Texel {
     float gloss;
 };
 
+// The gloss of the footprint's texels' own lobes, their RMS alpha: the lobe without the spread of
+// the normals (CLEAN's first term, whatever the method).
+float baseGloss(const FootprintSums& s) {
+    const double alpha2 = std::clamp(s.alpha2 / s.count, 1e-30, 1.0);
+    return float(std::clamp(std::log2(2.0 / alpha2 - 1.0) / 18.0, 0.0, 1.0));
+}
+
 Texel resolve(const FootprintSums& s, world::GlossMipMethod method, GlossInversion inversion) {
     if (method == world::GlossMipMethod::kBlit) {
         glm::dvec3 n = directionOr(s.normal, s.count);
@@ -156,6 +163,7 @@ NormalGlossChain buildNormalGlossMips(const NormalGlossLevel& level0, world::Glo
         throw std::invalid_argument("buildNormalGlossMips: level 0 is not width x height texels");
 
     NormalGlossChain chain{level0};
+    chain[0].baseGloss = level0.gloss;  // a level-0 texel's lobe is its own
     std::vector<FootprintSums> sums(level0.normals.size());
     parallelFor(0, h0, [&](int y) {
         for (int x = 0; x < w0; ++x) {
@@ -170,7 +178,7 @@ NormalGlossChain buildNormalGlossMips(const NormalGlossLevel& level0, world::Glo
         const int w = mipSize(w0, level), h = mipSize(h0, level);
         std::vector<FootprintSums> next(std::size_t(w) * std::size_t(h));
         NormalGlossLevel out{w, h, std::vector<glm::vec3>(next.size()),
-                             std::vector<float>(next.size())};
+                             std::vector<float>(next.size()), std::vector<float>(next.size())};
         parallelFor(0, h, [&](int y) {
             TexelRange rows = mipChildren(ph, y);
             for (int x = 0; x < w; ++x) {
@@ -184,6 +192,7 @@ NormalGlossChain buildNormalGlossMips(const NormalGlossLevel& level0, world::Glo
                 next[i] = s;
                 out.normals[i] = t.normal;
                 out.gloss[i] = t.gloss;
+                out.baseGloss[i] = std::max(baseGloss(s), t.gloss);
             }
         });
         sums = std::move(next);

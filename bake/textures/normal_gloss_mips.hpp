@@ -61,13 +61,18 @@
 //   lobe it picks for a footprint of Gaussian bumps has about half their width, this matches
 //   the core's width. A flat footprint of gloss g gives alpha(g), so gloss g again.
 //
-// Robustness: level 0 of the output is the input, bit for bit. For the sums, a level-0 normal
-// that is not finite or has length < 1e-12 counts as (0, 0, 1), others are normalised; a gloss
-// that is not finite counts as 0 and others are clamped to [0, 1]; cos_i is floored at
-// kMinCos, so a facet at or below the horizon (not from a height field, but authored maps have
-// them) weighs as at most 100 texels. A mean normal shorter than 1e-12 per texel (opposite
-// normals cancelling) gives normal (0, 0, 1). Mip texels are always finite, unit normal and
-// gloss in [0, 1].
+// Every method also gives each mip texel its base gloss: the gloss of the footprint's texels'
+// mean alpha(g_i)^2, their own lobes without the normals' spread (at least as glossy as the
+// texel's gloss). With CLEAN, alpha^2 - base alpha^2 is exactly the slopes' variance; the
+// runtime shades that share of the lobe as facets (shaders/material.glsl, "A footprint's bumps").
+//
+// Robustness: level 0 of the output is the input, bit for bit (its base gloss its gloss). For the
+// sums, a level-0 normal that is not finite or has length < 1e-12 counts as (0, 0, 1), others are
+// normalised; a gloss that is not finite counts as 0 and others are clamped to [0, 1]; cos_i is
+// floored at kMinCos, so a facet at or below the horizon (not from a height field, but authored
+// maps have them) weighs as at most 100 texels. A mean normal shorter than 1e-12 per texel
+// (opposite normals cancelling) gives normal (0, 0, 1). Mip texels are always finite, unit normal
+// and gloss in [0, 1].
 //
 // Deterministic: each mip texel is a fixed-order function of the level above, computed in
 // parallel rows with TBB; the result is bit-identical at any thread count.
@@ -85,6 +90,10 @@ struct NormalGlossLevel {
     int width = 0, height = 0;
     std::vector<glm::vec3> normals;  // unit, tangent space, +z out of the surface
     std::vector<float> gloss;        // [0, 1]
+    // [0, 1], >= gloss: the gloss of the footprint's level-0 texels' own lobes, the gloss of
+    // their mean alpha^2 (Chan 2018, eq. 2), without the spread of their normals; at level 0
+    // the texel's gloss. Output only: buildNormalGlossMips ignores level 0's.
+    std::vector<float> baseGloss;
 };
 
 // Level 0 first, down to 1x1.

@@ -301,7 +301,7 @@ PairLevel0 pairLevel0(Stage& stage, const PairInputs& in) {
         mrImage = decodeLevelImage(stage.level, in.metallicRoughness->image, 4.0, stage.budget);
     const int w = int(normalImage.width), h = int(normalImage.height);
     const size_t n = size_t(w) * size_t(h);
-    PairLevel0 out{NormalGlossLevel{w, h, std::vector<glm::vec3>(n), std::vector<float>(n)},
+    PairLevel0 out{NormalGlossLevel{w, h, std::vector<glm::vec3>(n), std::vector<float>(n), {}},
                    std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
     parallelFor(0, h, [&](int y) {
         const double sy = in.metallicRoughness ? sourceCoordinate(y, h, int(mrImage.height)) : 0.0;
@@ -381,7 +381,7 @@ world::ProcessedTexture metallicRoughnessTexture(const PairLevel0& level0,
             t[0] = unorm8(double(level0.occlusion[i]));
             t[1] = unorm8(double(level0.roughness[i]));
             t[2] = unorm8(double(level0.metallic[i]));
-            t[3] = 255;
+            t[3] = t[1];  // a texel's own lobe is its whole lobe
         }
     });
     footprintMeans<2>(
@@ -395,7 +395,10 @@ world::ProcessedTexture metallicRoughnessTexture(const PairLevel0& level0,
             t[0] = unorm8(mean[0]);
             t[1] = unorm8(roughness_fromGloss(double(chain[size_t(level)].gloss[i])));
             t[2] = unorm8(mean[1]);
-            t[3] = 255;
+            // The texels' own lobes (MaterialTextureSlots::baseRoughnessInAlpha), never rougher
+            // than G after rounding.
+            t[3] = std::min(t[1],
+                            unorm8(roughness_fromGloss(double(chain[size_t(level)].baseGloss[i]))));
         });
     return out;
 }
@@ -479,6 +482,7 @@ world::ProcessedTextures processLevelTextures(const world::SourceLevel& level,
             slots.metallicRoughness = pair.metallicRoughness;
             slots.cavity = pair.cavity;
             slots.factorsFolded = true;
+            slots.baseRoughnessInAlpha = true;
             if (in.packedOcclusion) slots.occlusion = pair.metallicRoughness;
         } else {
             slots.metallicRoughness = plainSlot(stage, m, material.metallicRoughnessTexture, false,

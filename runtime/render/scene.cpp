@@ -359,7 +359,11 @@ void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
         const TextureSlots slots = materialSlots(loaded, i);
         for (uint32_t t = 0; t < slots.size(); ++t)
             if (slots[t] != world::kNoIndex) bits |= 1u << t;
-        g.textures = glm::uvec4(bits, 0u, 0u, 0u);
+        uint32_t flags = 0;
+        if (loaded.hasProcessedTextures &&
+            loaded.processedTextures.materials.at(i).baseRoughnessInAlpha)
+            flags |= uint32_t(glsl::MATERIAL_FLAG_BASE_ROUGHNESS);
+        g.textures = glm::uvec4(bits, flags, 0u, 0u);
         uint8_t cls = uint8_t(m.materialClass);
         if (forceMaterialClass >= 0) cls = uint8_t(forceMaterialClass);
         materials.classes.push_back(cls);

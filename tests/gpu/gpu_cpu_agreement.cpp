@@ -63,7 +63,11 @@ const char* pieceName(int piece) {
                                         "Fd_Chan",
                                         "ggxExcessArea",
                                         "gloss_fromAverageNormalDistance",
-                                        "gloss_withFilteredNormal"};
+                                        "gloss_withFilteredNormal",
+                                        "specularFacets_Beckmann",
+                                        "bumpShare",
+                                        "bumpSlopeRadius",
+                                        "footprintReflectance"};
     return piece < int(std::size(names)) ? names[piece] : "?";
 }
 

@@ -1,14 +1,16 @@
 // Normal and gloss mips in a whole frame: a glossy, bump-mapped floor to the horizon under a low
 // sun, in front of the camera so that the bumps' glints run out towards the horizon. The level is
-// baked three times, its mips made by a plain box filter (`gloss_mips: blit`, what a linear blit
-// of the textures gives), by Black Ops' variance to gloss and by WWII's average normal length,
+// baked four times, its mips made by a plain box filter (`gloss_mips: blit`, what a linear blit
+// of the textures gives), by Black Ops' variance to gloss, by WWII's average normal length and by
+// CLEAN's slope moments,
 // rendered headless, and path traced by `onelight-bake reference`, whose camera rays read the
 // full-resolution normal map and whose 512 jittered paths per pixel average it over the pixel: the
 // ground truth (docs/materials.md). The relative RMS error of 4x2-pixel blocks' luminance against
 // the reference is printed per distance band, with the reference's own noise (two seeds) beside
 // it, which must stay below a quarter of what it measures; in the far bands (many texels per
-// pixel) each method's error must be at most half the blit's. Each method is also drawn with 16x
-// anisotropic filtering, to measure that option. This measurement picks the default method.
+// pixel) each method's error must be at most half the blit's, and the default's (CLEAN's) under
+// Black Ops'. Each method is also drawn with 16x anisotropic filtering, to measure that option.
+// This measurement picks the default method.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -194,12 +196,15 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
         if (b < kFarBand) continue;
         for (int method : {1, 2, 3})
             EXPECT_LE(e[method].rms, 0.5 * e[0].rms) << "band " << b << ", method " << method;
-        // Both shade the same bent normals as the reference (normal_withValidReflection): where a
-        // bump faced away from the view, the reference ended the paths its reflection sent under
-        // the floor while the frame kept them, and Black Ops read 1.45-1.53 here (CLEAN
-        // 1.35-1.42). With the bend, 1.06-1.27 (CLEAN 1.11-1.23, the two within 7% of each other).
-        EXPECT_LT(e[1].rms, 1.35) << "band " << b;
-        EXPECT_LT(e[3].rms, 1.35) << "band " << b;
+        // CLEAN, the default, with the footprint's shading (shaders/material.glsl, "A footprint's
+        // bumps": the normals' spread as unmasked facets, the energy split over a ring of the
+        // footprint's normals at the texels' own gloss): 0.89-1.04 here, against 1.11-1.23
+        // before it and Black Ops' 1.06-1.27 then; Black Ops, whose lobe has about half the
+        // slopes' width, is not what the footprint is built on and reads 1.30-1.85 with it.
+        // (Before the frame and the reference bent the same normals, normal_withValidReflection,
+        // Black Ops read 1.45-1.53 and CLEAN 1.35-1.42.)
+        EXPECT_LT(e[3].rms, 1.15) << "band " << b;
+        EXPECT_LT(e[3].rms, e[1].rms) << "band " << b;
     }
 }
 

@@ -305,7 +305,7 @@ TEST(GlossTables, ShaderFoldOfAFilteredNormal) {
     for (int i = 0; i < 2000; ++i) {
         const float g = float(random.next());
         const double spread = 0.05 + 0.6 * random.next();  // slopes
-        NormalGlossLevel level{2, 2, {}, {}};
+        NormalGlossLevel level{2, 2, {}, {}, {}};
         for (int k = 0; k < 4; ++k) {
             const double phi = 2.0 * kPi * random.next();
             level.normals.push_back(glm::normalize(
@@ -344,15 +344,18 @@ TEST(GlossTables, ShaderFoldOfAFilteredNormal) {
 // Mip chains
 
 NormalGlossLevel constantLevel(int w, int h, glm::vec3 n, float gloss) {
-    return {w, h, std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), n),
-            std::vector<float>(std::size_t(w) * std::size_t(h), gloss)};
+    return {w,
+            h,
+            std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), n),
+            std::vector<float>(std::size_t(w) * std::size_t(h), gloss),
+            {}};
 }
 
 // Random unit normals with slopes up to `slope` on each axis, gloss in [gMin, gMax].
 NormalGlossLevel randomLevel(int w, int h, double slope, double gMin, double gMax,
                              std::uint64_t seed) {
     Random random{seed};
-    NormalGlossLevel level{w, h, {}, {}};
+    NormalGlossLevel level{w, h, {}, {}, {}};
     for (int i = 0; i < w * h; ++i) {
         double sx = slope * (2.0 * random.next() - 1.0), sy = slope * (2.0 * random.next() - 1.0);
         level.normals.push_back(glm::vec3(glm::normalize(glm::dvec3(-sx, -sy, 1.0))));
@@ -365,7 +368,7 @@ NormalGlossLevel randomLevel(int w, int h, double slope, double gMin, double gMa
 // texel centres), slope up to `slope` = a 2 pi / P along each axis, normal (-dh/dx, -dh/dy, 1)
 // normalised.
 NormalGlossLevel bumpLevel(int size, int period, double slope, float gloss) {
-    NormalGlossLevel level{size, size, {}, {}};
+    NormalGlossLevel level{size, size, {}, {}, {}};
     const double k = 2.0 * kPi / period;
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
@@ -491,6 +494,55 @@ TEST(NormalGlossMips, NormalVariationOnlyRoughens) {
         for (MipMethod m : {MipMethod::kBlackOps, MipMethod::kWwii, MipMethod::kClean})
             for (const NormalGlossLevel& level : bake::buildNormalGlossMips(level0, m))
                 for (float mipGloss : level.gloss) EXPECT_LE(mipGloss, g + 1e-6f);
+    }
+}
+
+TEST(NormalGlossMips, BaseGlossIsTheTexelsOwnLobesAndCleanAddsTheSlopesVariance) {
+    // Level 0's base is its gloss. A mip texel's base is the gloss of its footprint's mean
+    // alpha^2, whatever the method, and never rougher than the texel's gloss. With CLEAN the
+    // difference of the two alpha^2 is the slopes' variance over both axes (the share the
+    // runtime shades as facets, shaders/material.glsl), computed here straight from the
+    // footprint. Tolerances: float gloss, and alpha^2 = 2 / (1 + 2^(18 g)) has a slope of at
+    // most 12.5 alpha^2 per unit gloss, so 1e-6 in gloss is 1.3e-5 relative in alpha^2.
+    auto alpha2 = [](double g) { return 2.0 / (1.0 + std::exp2(18.0 * g)); };
+    NormalGlossLevel level0 = randomLevel(37, 23, 0.3, 0.3, 1.0, 29);
+    for (MipMethod m : kMethods) {
+        NormalGlossChain chain = bake::buildNormalGlossMips(level0, m);
+        ASSERT_EQ(chain[0].baseGloss, level0.gloss) << methodName(m);
+        for (std::size_t k = 1; k < chain.size(); ++k) {
+            const NormalGlossLevel& mip = chain[k];
+            ASSERT_EQ(mip.baseGloss.size(), mip.gloss.size());
+            for (int y = 0; y < mip.height; ++y)
+                for (int x = 0; x < mip.width; ++x) {
+                    const bake::TexelRange cols = bake::mipFootprint(37, int(k), x);
+                    const bake::TexelRange rows = bake::mipFootprint(23, int(k), y);
+                    double sumAlpha2 = 0.0, count = 0.0, s2 = 0.0;
+                    glm::dvec2 s(0.0);
+                    for (int py = rows.begin; py < rows.end; ++py)
+                        for (int px = cols.begin; px < cols.end; ++px) {
+                            const std::size_t j = std::size_t(py) * 37 + std::size_t(px);
+                            const glm::dvec3 n(level0.normals[j]);
+                            const glm::dvec2 slope = glm::dvec2(n.x, n.y) / n.z;
+                            sumAlpha2 += alpha2(double(level0.gloss[j]));
+                            s += slope;
+                            s2 += glm::dot(slope, slope);
+                            count += 1.0;
+                        }
+                    const std::size_t i = std::size_t(y) * std::size_t(mip.width) + std::size_t(x);
+                    const double base = double(mip.baseGloss[i]);
+                    ASSERT_GE(base, double(mip.gloss[i])) << methodName(m);
+                    if (m != MipMethod::kBlit) {  // the blit's gloss can be the rougher of the two
+                        ASSERT_NEAR(alpha2(base) / (sumAlpha2 / count), 1.0, 2e-5) << methodName(m);
+                    }
+                    if (m == MipMethod::kClean) {
+                        const glm::dvec2 mean = s / count;
+                        const double variance = s2 / count - glm::dot(mean, mean);
+                        ASSERT_NEAR((alpha2(double(mip.gloss[i])) - alpha2(base)) / variance, 1.0,
+                                    1e-3)
+                            << "mip " << k;
+                    }
+                }
+        }
     }
 }
 

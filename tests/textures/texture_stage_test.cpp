@@ -257,17 +257,19 @@ TEST(TextureStage, ANormalMapWithoutMetallicRoughnessGetsOneFromTheFactors) {
         EXPECT_EQ(t[0], 255);                                      // no occlusion packed
         EXPECT_NEAR(t[1], 0.3 * 255.0, 1.0) << "level " << level;  // a flat map keeps it
         EXPECT_NEAR(t[2], 0.7 * 255.0, 1.0);
-        EXPECT_EQ(t[3], 255);
+        EXPECT_EQ(t[3], t[1]);  // the texels' own roughness: a flat map's is all of it
     }
+    EXPECT_TRUE(slots.baseRoughnessInAlpha);
     const ProcessedTexture& cavity = out.textures[slots.cavity];
     EXPECT_EQ(cavity.format, TexelFormat::kR8Unorm);
     for (uint8_t c : cavity.texels) EXPECT_EQ(c, 255);  // nothing rises above a flat map
 }
 
 // Roughness (G) of the metallic-roughness mips of a bumpy map at roughness factor `factor`.
+// The metallic-roughness texel (0, 0) of each mip of an egg-crate pair: G, or A with channel 3.
 std::vector<double> deepestRoughness(
     GlossMipMethod method, double factor,
-    world::MaterialClass materialClass = world::MaterialClass::kDielectric) {
+    world::MaterialClass materialClass = world::MaterialClass::kDielectric, int channel = 1) {
     LevelBuilder b;
     world::Material& m = b.material("bumps");
     m.normalTexture = b.texture(eggCrate(32, 8, 0.3), "egg crate");
@@ -280,7 +282,7 @@ std::vector<double> deepestRoughness(
     const ProcessedTexture& mr = out.textures[out.materials[0].metallicRoughness];
     std::vector<double> g;
     for (uint32_t level = 0; level < mr.mipCount; ++level)
-        g.push_back(double(texelOf(mr, level, 0, 0)[1]) / 255.0);
+        g.push_back(double(texelOf(mr, level, 0, 0)[channel]) / 255.0);
     return g;
 }
 
@@ -289,8 +291,12 @@ TEST(TextureStage, BumpsBecomeRoughnessInTheDeeperMipsUnlessBlitted) {
     const std::vector<double> blit = deepestRoughness(GlossMipMethod::kBlit, factor);
     ASSERT_EQ(blit.size(), 6u);
     for (double g : blit) EXPECT_NEAR(g, factor, 1.5 / 255.0);
-    for (GlossMipMethod method : {GlossMipMethod::kWwii, GlossMipMethod::kBlackOps}) {
+    for (GlossMipMethod method :
+         {GlossMipMethod::kWwii, GlossMipMethod::kBlackOps, GlossMipMethod::kClean}) {
         const std::vector<double> g = deepestRoughness(method, factor);
+        // A keeps the texels' own roughness, the factor, at every mip: the bumps are G's alone.
+        for (double a : deepestRoughness(method, factor, world::MaterialClass::kDielectric, 3))
+            EXPECT_NEAR(a, factor, 1.5 / 255.0) << "method " << int(method);
         EXPECT_NEAR(g[0], factor, 1.0 / 255.0);
         // Mips 3 and on average whole periods of the bumps (slopes up to 17 degrees).
         for (size_t level = 3; level < g.size(); ++level)

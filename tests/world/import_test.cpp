@@ -232,12 +232,12 @@ TEST(Import, MaterialModelsAreTheLevels) {
     const world::LevelSettings settings = world::compileLevel(level, options).level.settings;
     EXPECT_EQ(settings.diffuseModel, world::DiffuseModel::kMultiscatter);
     EXPECT_EQ(settings.glossMips, world::GlossMipMethod::kBlackOps);
-    // Without the keys: Lambert and Black Ops.
+    // Without the keys: Lambert and CLEAN.
     GltfBuilder plain;
     plain.addNode({{"name", "tri"}, {"mesh", plain.addMesh(oneTriangle("tri"))}});
     const world::SourceLevel defaults = importGltf(plain.write(freshFolder("models_default"), "m"));
     EXPECT_EQ(defaults.diffuseModel, world::DiffuseModel::kLambert);
-    EXPECT_EQ(defaults.glossMips, world::GlossMipMethod::kBlackOps);
+    EXPECT_EQ(defaults.glossMips, world::GlossMipMethod::kClean);
 }
 
 // The level's sky: one number (grey) or [r, g, b], cd/m^2, through the compile.

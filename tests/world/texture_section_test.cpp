@@ -48,8 +48,10 @@ world::ProcessedTextures sampleTextures() {
     world::MaterialTextureSlots stone;
     stone.baseColor = 0;
     stone.normal = 1;
+    stone.metallicRoughness = 1;  // a format test: any RGBA8 UNORM texture will do
     stone.cavity = 2;
     stone.factorsFolded = true;
+    stone.baseRoughnessInAlpha = true;
     p.materials.push_back(stone);
     p.materials.push_back(world::MaterialTextureSlots{});
     return p;
@@ -131,6 +133,7 @@ void expectSame(const world::ProcessedTextures& a, const world::ProcessedTexture
         EXPECT_EQ(x.emissive, y.emissive) << m;
         EXPECT_EQ(x.cavity, y.cavity) << m;
         EXPECT_EQ(x.factorsFolded, y.factorsFolded) << m;
+        EXPECT_EQ(x.baseRoughnessInAlpha, y.baseRoughnessInAlpha) << m;
     }
 }
 
@@ -312,6 +315,13 @@ TEST(TextureSection, RejectsAnUnknownEnumeration) {
     const size_t folded = offsetof(DiskMaterialTextureSlots, factorsFolded);
     expectRejected(patched<uint8_t>(s, materialField(0, folded), 2),
                    "material 0: factorsFolded 2; expected 0 or 1");
+    const size_t base = offsetof(DiskMaterialTextureSlots, baseRoughnessInAlpha);
+    expectRejected(patched<uint8_t>(s, materialField(0, base), 2),
+                   "material 0: baseRoughnessInAlpha 2; expected 0 or 1");
+    // The flag speaks of the metallic-roughness texture: without one it is a lie.
+    expectRejected(patched<uint8_t>(s, materialField(1, base), 1),
+                   "material 1: baseRoughnessInAlpha 1 without a metallicRoughness texture; "
+                   "expected 0");
 }
 
 TEST(TextureSection, RejectsANonZeroReservedField) {
@@ -322,8 +332,8 @@ TEST(TextureSection, RejectsANonZeroReservedField) {
         patched<uint8_t>(s, textureField(2, offsetof(DiskProcessedTexture, reserved)), 9),
         "texture 2: reserved[0] 9");
     expectRejected(
-        patched<uint8_t>(s, materialField(1, offsetof(DiskMaterialTextureSlots, reserved) + 2), 1),
-        "material 1: reserved[2] 1");
+        patched<uint8_t>(s, materialField(1, offsetof(DiskMaterialTextureSlots, reserved) + 1), 1),
+        "material 1: reserved[1] 1");
 }
 
 TEST(TextureSection, RejectsBadNames) {

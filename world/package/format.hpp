@@ -517,15 +517,18 @@ struct DiskProcessedTexture {
 static_assert(sizeof(DiskProcessedTexture) == 48);
 
 struct DiskMaterialTextureSlots {
-    uint32_t baseColor;          // into the section's textures (RGBA8 sRGB) or kNoIndex
-    uint32_t metallicRoughness;  // RGBA8 UNORM (G roughness, B metallic) or kNoIndex
-    uint32_t normal;             // RGBA8 UNORM (tangent space) or kNoIndex
-    uint32_t occlusion;          // RGBA8 UNORM (R) or kNoIndex
-    uint32_t emissive;           // RGBA8 sRGB or kNoIndex
-    uint32_t cavity;             // R8 UNORM (made from the normal map) or kNoIndex
-    uint8_t factorsFolded;       // 0 or 1: the material's metallic and roughness factors and
-                                 // normal scale are already in its textures
-    uint8_t reserved[3];         // 0
+    uint32_t baseColor;            // into the section's textures (RGBA8 sRGB) or kNoIndex
+    uint32_t metallicRoughness;    // RGBA8 UNORM (G roughness, B metallic) or kNoIndex
+    uint32_t normal;               // RGBA8 UNORM (tangent space) or kNoIndex
+    uint32_t occlusion;            // RGBA8 UNORM (R) or kNoIndex
+    uint32_t emissive;             // RGBA8 sRGB or kNoIndex
+    uint32_t cavity;               // R8 UNORM (made from the normal map) or kNoIndex
+    uint8_t factorsFolded;         // 0 or 1: the material's metallic and roughness factors and
+                                   // normal scale are already in its textures
+    uint8_t baseRoughnessInAlpha;  // 0 or 1: A of its metallic-roughness texture is the
+                                   // roughness of the texels' own lobes under each mip texel
+                                   // (G also holds the spread of the normals there)
+    uint8_t reserved[2];           // 0
 };
 static_assert(sizeof(DiskMaterialTextureSlots) == 28);
 

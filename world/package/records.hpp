@@ -837,6 +837,7 @@ inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visib
     d.emissive = s.emissive;
     d.cavity = s.cavity;
     d.factorsFolded = s.factorsFolded ? 1 : 0;
+    d.baseRoughnessInAlpha = s.baseRoughnessInAlpha ? 1 : 0;
     return d;
 }
 
@@ -850,6 +851,7 @@ inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visib
     s.emissive = d.emissive;
     s.cavity = d.cavity;
     s.factorsFolded = d.factorsFolded != 0;
+    s.baseRoughnessInAlpha = d.baseRoughnessInAlpha != 0;
     return s;
 }
 

@@ -182,6 +182,13 @@ void check(const DiskMaterialTextureSlots& d, const std::vector<world::Processed
     if (d.factorsFolded > 1)
         throw world::Error(at + "factorsFolded " + std::to_string(d.factorsFolded) +
                            "; expected 0 or 1");
+    if (d.baseRoughnessInAlpha > 1)
+        throw world::Error(at + "baseRoughnessInAlpha " + std::to_string(d.baseRoughnessInAlpha) +
+                           "; expected 0 or 1");
+    if (d.baseRoughnessInAlpha == 1 && d.metallicRoughness == kNoIndex)
+        throw world::Error(at +
+                           "baseRoughnessInAlpha 1 without a metallicRoughness texture; "
+                           "expected 0");
     checkReserved(at, d.reserved);
 }
 

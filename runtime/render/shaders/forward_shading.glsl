@@ -5,6 +5,7 @@
 #include "frame_interface.glsl"
 #include "lighting.glsl"
 #include "material.glsl"
+#include "env_brdf_fit.glsl"
 
 layout(constant_id = SPEC_MATERIAL_CLASS) const int MATERIAL_CLASS = MATERIAL_FULL;
 layout(constant_id = SPEC_ALPHA_MODE) const int ALPHA_MODE = ALPHA_MODE_OPAQUE;
@@ -156,16 +157,27 @@ vec4 objectCubeFace(uint record, ObjectLattice k, uint face) {
 
 // Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
 // (bilinear), a dynamic object's ambient cube from the light grid, else the constant ambient.
+// The pixel's lightmap texel: per channel the coefficients of irradianceLinear.
+struct LightmapTexel {
+    vec4 r, g, b;
+};
+LightmapTexel lightmapTexel() {
+    vec2 uv = inUv1 * draw.lightmapScale.xy;
+    float base = float(draw.lightmapAtlas * 3u);
+    return LightmapTexel(texture(lightmap, vec3(uv, base)), texture(lightmap, vec3(uv, base + 1.0)),
+                         texture(lightmap, vec3(uv, base + 2.0)));
+}
+vec3 lightmapIrradiance(LightmapTexel t, vec3 n) {
+    return vec3(irradianceLinear(t.r, n), irradianceLinear(t.g, n), irradianceLinear(t.b, n)) *
+           frame.baked.y;
+}
+bool drawUsesLightmap() {
+    return BAKED_LIGHTING != 0 && drawHasLightmap() && featureOn(FEATURE_LIGHTMAP);
+}
+
 vec3 secondaryIrradiance(vec3 n) {
     if (BAKED_LIGHTING == 0) return vec3(frame.baked.x);
-    if (drawHasLightmap() && featureOn(FEATURE_LIGHTMAP)) {
-        vec2 uv = inUv1 * draw.lightmapScale.xy;
-        float base = float(draw.lightmapAtlas * 3u);
-        vec3 e = vec3(irradianceLinear(texture(lightmap, vec3(uv, base)), n),
-                      irradianceLinear(texture(lightmap, vec3(uv, base + 1.0)), n),
-                      irradianceLinear(texture(lightmap, vec3(uv, base + 2.0)), n));
-        return e * frame.baked.y;
-    }
+    if (drawUsesLightmap()) return lightmapIrradiance(lightmapTexel(), n);
     if (drawHasObjectLighting()) {
         // Only the three faces n looks towards weigh (irradianceAmbientCube picks them).
         vec3 cx = objectCubeFace(draw.objectLighting, pixelLattice, n.x >= 0.0 ? 0u : 1u).rgb;
@@ -174,6 +186,73 @@ vec3 secondaryIrradiance(vec3 n) {
         return irradianceAmbientCube(cx, cx, cy, cy, cz, cz, n);
     }
     return vec3(frame.baked.x);
+}
+
+// A pixel's footprint of a normal map (shaders/material.glsl, "A footprint's bumps"): the share
+// of its lobe that is the normals' spread, and the ring of its normals with their energy split
+// at the texels' own gloss. bumpShare 0: one texel, shaded as such (the rest unset).
+struct Footprint {
+    float bumpShare;
+    vec3 normals[FOOTPRINT_RING_COUNT];         // bent as the pixel's normal is
+    vec3 diffuseWeights[FOOTPRINT_RING_COUNT];  // diffuseEnergyWeight at each
+    vec2 env;                                   // the mean (scale, bias) of their lobes
+};
+
+// Below this share the footprint is one texel: the ring's normals would be the pixel's own.
+const float MIN_BUMP_SHARE = 1e-3;
+
+// The footprint of a pixel of normal n (bent; ns the surface's normal), view v, lobe `gloss`
+// and texels' own lobes `baseGloss`.
+Footprint footprintOf(vec3 n, vec3 ns, vec3 v, float gloss, float baseGloss, vec3 f0) {
+    Footprint f;
+    f.bumpShare = bumpShare(gloss, baseGloss);
+    f.env = vec2(0.0);
+    vec3 t = v - n * dot(n, v);
+    float tl = length(t);
+    if (f.bumpShare < MIN_BUMP_SHARE || tl < 1e-6) {
+        f.bumpShare = 0.0;
+        return f;
+    }
+    t /= tl;
+    vec3 b = cross(n, t);
+    float radius = bumpSlopeRadius(gloss, baseGloss);
+    for (int k = 0; k < FOOTPRINT_RING_COUNT; ++k) {
+        vec3 nk = normal_withValidReflection(footprintRingNormal(n, t, b, radius, k), ns, v);
+        // The fit, not the table: six texture fetches cost lavapipe more than its polynomial.
+        vec2 e = EnvBRDF_Fit(clamp(dot(nk, v), MIN_NOV, 1.0), baseGloss);
+        f.normals[k] = nk;
+        f.diffuseWeights[k] = diffuseEnergyWeight(MATERIAL_CLASS, f0, e);
+        f.env += e;
+    }
+    f.env *= 1.0 / float(FOOTPRINT_RING_COUNT);
+    return f;
+}
+
+// The diffuse's energy weight for light l (NoL at the pixel's normal > 0): the footprint's mean
+// of each normal's weight times its cosine, over the pixel's cosine. A texel that faces the
+// light and the view takes more of it; one that faces away from either, less.
+vec3 footprintDiffuseWeight(Footprint f, vec3 l, float NoL) {
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < FOOTPRINT_RING_COUNT; ++k)
+        sum += f.diffuseWeights[k] * max(dot(f.normals[k], l), 0.0);
+    return sum / (float(FOOTPRINT_RING_COUNT) * max(NoL, 1e-6));
+}
+
+// The same for the secondary irradiance E(n) (irradiance: at the pixel's normal): the mean of
+// each normal's weight times E there, over E at the pixel's normal.
+vec3 footprintSecondaryWeight(Footprint f, vec3 irradiance) {
+    vec3 sum = vec3(0.0), weights = vec3(0.0);
+    bool lightmapped = drawUsesLightmap();
+    LightmapTexel texel;
+    if (lightmapped) texel = lightmapTexel();
+    for (int k = 0; k < FOOTPRINT_RING_COUNT; ++k) {
+        vec3 e = lightmapped ? lightmapIrradiance(texel, f.normals[k]) : secondaryIrradiance(f.normals[k]);
+        sum += f.diffuseWeights[k] * e;
+        weights += f.diffuseWeights[k];
+    }
+    vec3 mean = weights * (1.0 / float(FOOTPRINT_RING_COUNT));
+    vec3 scale = sum * (1.0 / float(FOOTPRINT_RING_COUNT));
+    return mix(mean, scale / max(irradiance, vec3(1e-12)), greaterThan(irradiance, vec3(1e-12)));
 }
 
 // The baked visibility of the draw's primary: a static surface's shadow mask, a dynamic object's
@@ -246,10 +325,21 @@ LightSample evaluateGpuLight(GpuLight light, int type, vec3 p) {
                                  light.cones.y, p);
 }
 
+// f(v, l) NoL of a direct light from l: surfaceReflectance, or footprintReflectance where the
+// pixel covers a normal map's bumps.
+vec3 directReflectance(vec3 albedo, vec3 f0, float gloss, vec2 directEnv, Footprint footprint,
+                       float cavity, vec3 l, BrdfDots d) {
+    if (footprint.bumpShare == 0.0)
+        return surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity, d);
+    return footprintReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo,
+                                footprintDiffuseWeight(footprint, l, d.NoL), f0, gloss,
+                                footprint.bumpShare, cavity, d);
+}
+
 // The radiance primary light `light` (of type `type`) reflects at p, times its shadow.
 vec3 primaryRadiance(GpuLight light, int type, vec3 p, vec3 n, vec3 v, vec3 geometricNormal,
                      float viewDistance, vec3 albedo, vec3 f0, float gloss, vec2 directEnv,
-                     float cavity) {
+                     Footprint footprint, float cavity) {
     LightSample s = evaluateGpuLight(light, type, p);
     BrdfDots d = brdfDots(n, v, s.l);
     if (!(dot(geometricNormal, s.l) > 0.0 && d.NoL > 0.0)) return vec3(0.0);
@@ -269,7 +359,7 @@ vec3 primaryRadiance(GpuLight light, int type, vec3 p, vec3 n, vec3 v, vec3 geom
         if (staticLit && baked < 0.5 / 255.0) runtime = 0.0;
         shadow = blendShadow(runtime, baked, viewDistance, frame.shadowParams.x, frame.shadowParams.y);
     }
-    return surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity, d) *
+    return directReflectance(albedo, f0, gloss, directEnv, footprint, cavity, s.l, d) *
            s.illuminance * shadow;
 }
 
@@ -288,13 +378,17 @@ void main() {
 
     // Material parameters per texel (shaders/material.glsl), by class.
     vec2 mr = vec2(m.params.x, m.params.y);
-    if (materialHas(m, TEXTURE_METALLIC_ROUGHNESS))
-        mr = metallicRoughness_fromTexel(MATERIAL_CLASS, mr.x, mr.y,
-                                         texture(metallicRoughnessTexture, inUv0));
+    float baseRoughness = -1.0;  // the normal map's texels' own, where the texture holds it
+    if (materialHas(m, TEXTURE_METALLIC_ROUGHNESS)) {
+        vec4 mrTexel = texture(metallicRoughnessTexture, inUv0);
+        mr = metallicRoughness_fromTexel(MATERIAL_CLASS, mr.x, mr.y, mrTexel);
+        if (hasMaterialFlag(m, MATERIAL_FLAG_BASE_ROUGHNESS)) baseRoughness = m.params.y * mrTexel.a;
+    }
     MaterialPoint point = materialPoint(MATERIAL_CLASS, base.rgb, mr.x, mr.y, m.f0Gloss.x);
     vec3 albedo = point.albedo;
     vec3 f0 = point.f0;
     float gloss = point.gloss;
+    float baseGloss = baseRoughness >= 0.0 ? max(gloss_fromRoughness(baseRoughness), gloss) : gloss;
 
     vec3 p = inWorldPosition;
     vec3 geometricNormal = normalize(inNormal);
@@ -323,6 +417,12 @@ void main() {
     if (MATERIAL_CLASS != MATERIAL_LAMBERT) env = texture(envBrdfTable, envBrdfTableCoord(NoV, gloss)).rg;
     float cavity = MATERIAL_PIPELINE == 1 && materialHas(m, TEXTURE_CAVITY) ? texture(cavityTexture, inUv0).r : 1.0;
     vec2 directEnv = MATERIAL_PIPELINE == 1 ? env : vec2(0.0);  // the direct lights' energy weight
+    // Far away, a pixel covers many texels of a normal map: the bumps' share of the lobe shades
+    // as facets, and the energy split is the footprint's (shaders/material.glsl).
+    Footprint footprint;
+    footprint.bumpShare = 0.0;
+    if (MATERIAL_PIPELINE == 1 && MATERIAL_CLASS != MATERIAL_LAMBERT && materialHas(m, TEXTURE_NORMAL))
+        footprint = footprintOf(n, geometricNormal, v, gloss, baseGloss, f0);
 
     // The one primary light, times its shadow; a dynamic object's two while its switch
     // cross-fades (draw.fadeLight at 1 - draw.primaryWeight; PRIMARY_FADE pipelines only, so
@@ -331,11 +431,11 @@ void main() {
         GpuLight light = primaryLights[draw.primaryLight];
         float share = PRIMARY_FADE == 1 && draw.fadeLight != NO_INDEX ? draw.primaryWeight : 1.0;
         radiance += primaryRadiance(light, primaryType(light), p, n, v, geometricNormal, viewDistance,
-                                    albedo, f0, gloss, directEnv, cavity) * share;
+                                    albedo, f0, gloss, directEnv, footprint, cavity) * share;
         if (PRIMARY_FADE == 1 && draw.fadeLight != NO_INDEX) {
             GpuLight old = primaryLights[draw.fadeLight];
             radiance += primaryRadiance(old, int(old.info.x), p, n, v, geometricNormal, viewDistance,
-                                        albedo, f0, gloss, directEnv, cavity) * (1.0 - share);
+                                        albedo, f0, gloss, directEnv, footprint, cavity) * (1.0 - share);
         }
     }
 
@@ -343,14 +443,16 @@ void main() {
     if (EFFECT_LIGHTS == 1 && MATERIAL_CLASS != MATERIAL_METAL) {
         for (uint i = 0u; i < frame.counts.x; ++i) {
             LightSample s = evaluateGpuLight(frame.effectOmnis[i], LIGHT_POINT, p);
-            radiance += diffuseReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv,
-                                           cavity, brdfDots(n, v, s.l)) * s.illuminance;
+            BrdfDots d = brdfDots(n, v, s.l);
+            vec3 weight = footprint.bumpShare == 0.0 ? diffuseEnergyWeight(MATERIAL_CLASS, f0, directEnv)
+                                                     : footprintDiffuseWeight(footprint, s.l, d.NoL);
+            radiance += footprintDiffuse(DIFFUSE_MODEL, albedo, weight, gloss, cavity, d) * s.illuminance;
         }
     }
     if (EFFECT_LIGHTS == 1 && frame.counts.y != 0u) {
         LightSample s = evaluateGpuLight(frame.effectSpot, LIGHT_SPOT, p);
-        radiance += surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity,
-                                       brdfDots(n, v, s.l)) * s.illuminance;
+        radiance += directReflectance(albedo, f0, gloss, directEnv, footprint, cavity, s.l,
+                                      brdfDots(n, v, s.l)) * s.illuminance;
     }
 
     // Baked secondary lighting: diffuse from the lightmap or grid, specular from the probes
@@ -365,7 +467,12 @@ void main() {
         probeSample = PROBES == 1 ? probeRadiance(p, reflect(-v, n), gloss) : vec3(INV_PI);
         so = specularOcclusion(NoV, ao, ggxAlpha_fromGloss(gloss));
     }
-    radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, ao, so, probeSample);
+    if (footprint.bumpShare == 0.0)
+        radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, ao, so, probeSample);
+    else
+        radiance += footprintSecondaryRadiance(MATERIAL_CLASS, albedo,
+                                               footprintSecondaryWeight(footprint, irradiance), f0,
+                                               footprint.env, irradiance, ao, so, probeSample);
 
     // Emission in cd/m^2 like every other radiance (world/import/README.md), then the whole
     // pre-exposed.

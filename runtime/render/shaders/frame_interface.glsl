@@ -61,5 +61,7 @@ layout(push_constant) uniform DrawBlock { DrawPush draw; };
 
 // Whether the material fills texture slot `slot` (TEXTURE_*).
 bool hasTexture(GpuMaterial m, int slot) { return (m.textures.x & (1u << uint(slot))) != 0u; }
+// Whether the material has flag `flag` (MATERIAL_FLAG_*).
+bool hasMaterialFlag(GpuMaterial m, int flag) { return (m.textures.y & uint(flag)) != 0u; }
 
 #endif

@@ -1,0 +1,138 @@
+// A footprint's bumps (shaders/material.glsl, brdf.glsl, lighting.glsl, compiled as C++): the
+// bumps' share of a CLEAN lobe, the ring of the footprint's normals, the unmasked facets' lobe
+// against its closed-form albedo, and the footprint's reflectance against the texel's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "shading.hpp"
+
+using namespace onelight::glsl;
+
+namespace {
+
+double alpha2(float gloss) {
+    const double a = double(ggxAlpha_fromGloss(gloss));
+    return a * a;
+}
+
+TEST(Footprint, ShareAndRadiusSplitCleansAlphaSquared) {
+    // CLEAN: alpha^2 = alpha_b^2 + s^2. The share is s^2 / alpha^2 and the radius s.
+    for (float gloss : {0.0f, 0.2f, 0.5f, 0.8f})
+        for (float base : {gloss, gloss + 0.05f, 0.7f, 0.95f, 1.0f}) {
+            if (base < gloss) continue;
+            const double s = double(bumpSlopeRadius(gloss, base));
+            const double share = double(bumpShare(gloss, base));
+            EXPECT_NEAR(alpha2(base) + s * s, alpha2(gloss), 1e-6 * alpha2(gloss))
+                << gloss << " " << base;
+            EXPECT_NEAR(share, s * s / alpha2(gloss), 1e-6) << gloss << " " << base;
+            EXPECT_GE(share, 0.0);
+            EXPECT_LE(share, 1.0);
+        }
+    // One texel, or a base rougher than the lobe (a rounding, or a package without the base):
+    // no bumps at all.
+    EXPECT_EQ(bumpShare(0.6f, 0.6f), 0.0f);
+    EXPECT_EQ(bumpShare(0.6f, 0.3f), 0.0f);
+    EXPECT_EQ(bumpSlopeRadius(0.6f, 0.3f), 0.0f);
+}
+
+TEST(Footprint, TheRingHasTheFootprintsSecondMomentOfSlopes) {
+    // Slopes of the ring's normals about n = +z: mean 0, and a second moment of radius^2 over
+    // both axes, radius^2 / 2 per axis, whatever the frame's rotation about n.
+    const vec3 n(0.0f, 0.0f, 1.0f);
+    for (float turn : {0.0f, 0.7f, 2.0f}) {
+        const vec3 t(std::cos(turn), std::sin(turn), 0.0f),
+            b(-std::sin(turn), std::cos(turn), 0.0f);
+        for (float radius : {0.0f, 0.05f, 0.3f, 1.5f}) {
+            double sx = 0.0, sy = 0.0, sxx = 0.0, syy = 0.0;
+            for (int k = 0; k < FOOTPRINT_RING_COUNT; ++k) {
+                const vec3 m = footprintRingNormal(n, t, b, radius, k);
+                ASSERT_NEAR(double(glm::length(m)), 1.0, 1e-6);
+                const double x = double(m.x / m.z), y = double(m.y / m.z);
+                sx += x, sy += y, sxx += x * x, syy += y * y;
+            }
+            const double count = FOOTPRINT_RING_COUNT;
+            EXPECT_NEAR(sx / count, 0.0, 1e-6);
+            EXPECT_NEAR(sy / count, 0.0, 1e-6);
+            const double r2 = double(radius) * double(radius);
+            EXPECT_NEAR(sxx / count, r2 / 2.0, 1e-5 * (1.0 + r2)) << radius;
+            EXPECT_NEAR(syy / count, r2 / 2.0, 1e-5 * (1.0 + r2)) << radius;
+        }
+    }
+}
+
+// The albedo of the facets' lobe at view v, F = 1: its f NoL over the hemisphere of light
+// directions, by the midpoint rule in (cos theta, phi).
+double facetsAlbedo(vec3 v, float a, int steps) {
+    double sum = 0.0;
+    const double dMu = 1.0 / steps, dPhi = 2.0 * std::numbers::pi / steps;
+    for (int i = 0; i < steps; ++i)
+        for (int j = 0; j < steps; ++j) {
+            const double mu = (i + 0.5) * dMu, phi = (j + 0.5) * dPhi;
+            const double s = std::sqrt(1.0 - mu * mu);
+            const vec3 l(float(s * std::cos(phi)), float(s * std::sin(phi)), float(mu));
+            const BrdfDots d = brdfDots(vec3(0.0f, 0.0f, 1.0f), v, l);
+            sum += double(specularFacets_Beckmann(d.NxH2, d.LoH, a)) * dMu * dPhi;
+        }
+    return sum;
+}
+
+TEST(Footprint, FacetsReflectWhatTheirNormalsCoverAboveTheHorizon) {
+    // At normal view a facet of normal h sends the light from l = reflect(v, h) back, which is
+    // above the horizon while h is within 45 degrees of n: the albedo is the Beckmann lobe's
+    // share of normals there, 1 - exp(-tan^2(45) / a^2). Unmasked facets lose nothing else, so
+    // it approaches 1 for a narrow spread (where a masked lobe's does too) and stays far above a
+    // Smith-masked lobe's at grazing view for a wide one.
+    const vec3 normal(0.0f, 0.0f, 1.0f);
+    for (float a : {0.1f, 0.3f, 0.6f, 1.0f}) {
+        const double expected = 1.0 - std::exp(-1.0 / (double(a) * double(a)));
+        EXPECT_NEAR(facetsAlbedo(normal, a, 800), expected, 2e-3) << "alpha " << a;
+    }
+    // Oblique and grazing views: never more than the facets hold.
+    for (float theta : {0.5f, 1.2f, 1.5f}) {
+        const vec3 v(std::sin(theta), 0.0f, std::cos(theta));
+        for (float a : {0.1f, 0.4f, 1.0f}) EXPECT_LE(facetsAlbedo(v, a, 600), 1.0 + 2e-3);
+    }
+}
+
+TEST(Footprint, OneTexelIsTheTexelsReflectanceBitForBit) {
+    const vec3 n(0.0f, 0.0f, 1.0f), v = glm::normalize(vec3(0.3f, 0.1f, 0.9f));
+    const vec3 albedo(0.5f, 0.4f, 0.3f), f0(0.04f);
+    const vec2 env(0.8f, 0.05f);
+    for (const vec3 l :
+         {glm::normalize(vec3(-0.3f, 0.0f, 0.9f)), glm::normalize(vec3(0.8f, 0.2f, 0.1f))})
+        for (float gloss : {0.0f, 0.6f, 1.0f}) {
+            const BrdfDots d = brdfDots(n, v, l);
+            for (int materialClass : {MATERIAL_LAMBERT, MATERIAL_DIELECTRIC, MATERIAL_METAL}) {
+                const vec3 one = surfaceReflectance(materialClass, DIFFUSE_LAMBERT, albedo, f0,
+                                                    gloss, env, 1.0f, d);
+                const vec3 footprint = footprintReflectance(
+                    materialClass, DIFFUSE_LAMBERT, albedo,
+                    diffuseEnergyWeight(materialClass, f0, env), f0, gloss, 0.0f, 1.0f, d);
+                EXPECT_EQ(one, footprint) << materialClass << " " << gloss;
+            }
+        }
+}
+
+TEST(Footprint, AWholeFootprintOfBumpsIsFacetsPlusItsWeightedDiffuse) {
+    const vec3 n(0.0f, 0.0f, 1.0f), v = glm::normalize(vec3(0.0f, 0.9f, 0.05f));
+    const vec3 l = glm::normalize(vec3(0.0f, -0.9f, 0.3f));
+    const BrdfDots d = brdfDots(n, v, l);
+    const vec3 albedo(0.4f), weight(0.3f), f0(0.04f);
+    const float gloss = 0.2f;
+    const vec3 got = footprintReflectance(MATERIAL_DIELECTRIC, DIFFUSE_LAMBERT, albedo, weight, f0,
+                                          gloss, 1.0f, 1.0f, d);
+    const vec3 facets =
+        F_Schlick(f0, d.LoH) * specularFacets_Beckmann(d.NxH2, d.LoH, ggxAlpha_fromGloss(gloss));
+    const vec3 diffuse = albedo * weight * (Fd_Lambert() * d.NoL);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], facets[c] + diffuse[c], 1e-6f * got[c]);
+    // Half and half: the mean of the texel's lobe and the facets.
+    const vec3 half = footprintReflectance(MATERIAL_DIELECTRIC, DIFFUSE_LAMBERT, albedo, weight, f0,
+                                           gloss, 0.5f, 1.0f, d);
+    const vec3 lobe = specularLobe(NDF_GGX, VIS_SMITH_CORRELATED, FRESNEL_SCHLICK, f0, gloss, d);
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(half[c], 0.5f * (lobe[c] + facets[c]) + diffuse[c], 1e-5f * half[c]);
+}
+
+}  // namespace
