@@ -188,7 +188,7 @@ float bumpSlopeRadius(float gloss, float baseGloss) { return sqrt(bumpSlopeVaria
 // mean over it is exact for a quantity quadratic in the slopes. The energy split is far from
 // quadratic at grazing view; on the accuracy scenes' egg-crate bumps, six points give 0.7 to 1.0
 // of the mean over every texel, where the pixel's normal with the footprint's lobe gives 1.4 to
-// 5.5 (docs/materials.md).
+// 7 (scripts/footprint-scan.py).
 const int FOOTPRINT_RING_COUNT = 6;
 vec3 footprintRingNormal(vec3 n, vec3 t, vec3 b, float radius, int k) {
     float phi = float(k) * (2.0f * PI / float(FOOTPRINT_RING_COUNT));
