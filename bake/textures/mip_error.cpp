@@ -21,6 +21,16 @@ double lobe(glm::vec3 n, float gloss, const ViewLight& p, float f0) {
             .x);
 }
 
+// The runtime footprint's specular for a mip texel of gloss g and base gloss gb
+// (footprintReflectance of lighting.glsl, no diffuse); the lobe where gb is not known.
+double footprintSpecular(glm::vec3 n, float gloss, float baseGloss, const ViewLight& p, float f0) {
+    glsl::BrdfDots d = glsl::brdfDots(n, p.view, p.light);
+    return double(glsl::footprintReflectance(MATERIAL_DIELECTRIC, DIFFUSE_LAMBERT, glsl::vec3(0.0f),
+                                             glsl::vec3(0.0f), glsl::vec3(f0), gloss,
+                                             glsl::bumpShare(gloss, baseGloss), 1.0f, d)
+                      .x);
+}
+
 // Sums of level-0 shading over a footprint.
 struct Footprint {
     double shading = 0.0;
@@ -71,7 +81,8 @@ std::vector<ViewLight> incidencePlaneSweep(
 
 std::vector<std::vector<MipLevelError>> mipErrors(const NormalGlossLevel& level0,
                                                   std::span<const NormalGlossChain> chains,
-                                                  const std::vector<ViewLight>& sweep, float f0) {
+                                                  const std::vector<ViewLight>& sweep, float f0,
+                                                  MipShading shading) {
     const int w0 = level0.width, h0 = level0.height;
     if (w0 < 1 || h0 < 1 || level0.normals.size() != std::size_t(w0) * std::size_t(h0) ||
         level0.gloss.size() != level0.normals.size())
@@ -117,8 +128,12 @@ std::vector<std::vector<MipLevelError>> mipErrors(const NormalGlossLevel& level0
                 Accumulator& a = acc[c * std::size_t(levels) + std::size_t(level)];
                 for (std::size_t i = 0; i < sums.size(); ++i) {
                     double reference = sums[i].shading / sums[i].texels;
-                    accumulate(a, lobe(mip.normals[i], mip.gloss[i], pair, f0), reference,
-                               sums[i].texels);
+                    const double shaded =
+                        shading == MipShading::kFootprint && !mip.baseGloss.empty()
+                            ? footprintSpecular(mip.normals[i], mip.gloss[i], mip.baseGloss[i],
+                                                pair, f0)
+                            : lobe(mip.normals[i], mip.gloss[i], pair, f0);
+                    accumulate(a, shaded, reference, sums[i].texels);
                 }
             }
         }

@@ -58,9 +58,14 @@ struct MipLevelError {
                                                   const std::vector<ViewLight>& sweep,
                                                   float f0 = 0.04f);
 
+// How a mip texel is shaded: the runtime lobe S(n_t, g_t) above, or the runtime's footprint
+// (shaders/material.glsl, "A footprint's bumps"): the specular of footprintReflectance, whose
+// share of the lobe given by the texel's gloss and base gloss is shaded as unmasked facets.
+enum class MipShading { kLobe, kFootprint };
+
 // The same for several chains of one level 0, sharing the reference: result[c] is chain c's.
 [[nodiscard]] std::vector<std::vector<MipLevelError>> mipErrors(
     const NormalGlossLevel& level0, std::span<const NormalGlossChain> chains,
-    const std::vector<ViewLight>& sweep, float f0 = 0.04f);
+    const std::vector<ViewLight>& sweep, float f0 = 0.04f, MipShading shading = MipShading::kLobe);
 
 }  // namespace onelight::bake
