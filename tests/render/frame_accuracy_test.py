@@ -12,7 +12,7 @@ Bounds against measurements at these settings (192x108, 128 paths a pixel, draft
 2026-12-06): textured room 2.5% (its reference's own noise 1.1%), glossy room 3.7% (1.4%), the
 flat floor 0.3% (0.2%); the normal-mapped floor under its sky and sun 15.6% (3.4%; 29.5% before
 the footprint), under its sun alone 22.3% (4.4%; 54.6% before), under its sky alone 6.2% (0.4%;
-4.0% before: its energy split now brings out the probe's normalisation, docs/lighting.md; 18.5%
+4.0% before, two errors cancelling: docs/materials.md, "A footprint's bumps"; 18.5%
 before the frame and the reference bent the same normals, normal_withValidReflection). A
 failing scene names its sheet (reference | frame) and its heat map of block errors.
 """
