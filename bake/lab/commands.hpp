@@ -18,6 +18,11 @@ namespace onelight::lab {
 // `path` (default: stdout) (env_table_command.cpp).
 [[nodiscard]] int envTable(const std::string& path);
 
+// horizon-cut: the mean specular albedo of a normal-mapped floor's texels with and without the
+// floor's plane cutting their lobes, as CSV on stdout; `steps` cells of cos theta per texel
+// (horizon_cut_command.cpp).
+[[nodiscard]] int horizonCut(int steps);
+
 // sheet: EXRs side by side, `columns` to a row (0: all in one), each row through its exposure
 // (one EV100 for all rows, or one per row) and the filmic curve into the PNG `output`; with a
 // rectangle (x, y, width, height) each image's mean there (sheet_command.cpp).

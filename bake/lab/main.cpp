@@ -3,6 +3,7 @@
 //   onelight-lab brdf-report -o DIR                                 tables, CSVs and plots
 //   onelight-lab env-fit [-o FILE]                                  fits shaders/env_brdf_fit.glsl
 //   onelight-lab env-table [-o FILE]                          integrates shaders/env_brdf_table.inc
+//   onelight-lab horizon-cut [--steps N]        the floor's cut of a normal map's specular lobes
 //   onelight-lab level-report LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH]
 //                             [--budget-minutes M] [--timing-runs N] [--quick] -o DIR
 //                                             speed against error per camera and knob
@@ -77,6 +78,12 @@ const std::vector<CommandTable>& commandTables() {
         t.push_back(
             commandTable("env-table", "[-o FILE]", "integrates shaders/env_brdf_table.inc",
                          {world::textOption("-o", "FILE", "the table to write", "stdout")}));
+        t.push_back(commandTable(
+            "horizon-cut", "[--steps N]",
+            "a normal-mapped floor's mean specular albedo with and without the floor's plane "
+            "cutting its texels' lobes (CSV)",
+            {world::integerOption("--steps", "N", 16, 4096,
+                                  "quadrature cells of cos theta per texel (4 N of phi)", "600")}));
         CommandTable report = commandTable(
             "level-report",
             "LEVEL [--cameras all|NAME,...] [--spp N] [--size WxH] [--budget-minutes M] "
@@ -176,6 +183,11 @@ int envTableCommand(int argc, char** argv) {
     return envTable(parse("env-table", argc, argv).text("-o"));
 }
 
+int horizonCutCommand(int argc, char** argv) {
+    const ParsedOptions o = parse("horizon-cut", argc, argv);
+    return horizonCut(o.has("--steps") ? int(o.integer("--steps")) : 600);
+}
+
 int levelReportCommand(int argc, char** argv) {
     const ParsedOptions o = parse("level-report", argc, argv);
     LevelReportOptions r;
@@ -254,6 +266,7 @@ int main(int argc, char** argv) {
         if (command == "brdf-report") return brdfReportCommand(argc, argv);
         if (command == "env-fit") return envFitCommand(argc, argv);
         if (command == "env-table") return envTableCommand(argc, argv);
+        if (command == "horizon-cut") return horizonCutCommand(argc, argv);
         if (command == "sheet") return sheetCommand(argc, argv);
         if (command == "frame-error") return frameErrorCommand(argc, argv);
         if (command == "level-report") return levelReportCommand(argc, argv);
