@@ -155,8 +155,6 @@ vec4 objectCubeFace(uint record, ObjectLattice k, uint face) {
     return sum;
 }
 
-// Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
-// (bilinear), a dynamic object's ambient cube from the light grid, else the constant ambient.
 // The pixel's lightmap texel: per channel the coefficients of irradianceLinear.
 struct LightmapTexel {
     vec4 r, g, b;
@@ -175,6 +173,8 @@ bool drawUsesLightmap() {
     return BAKED_LIGHTING != 0 && drawHasLightmap() && featureOn(FEATURE_LIGHTMAP);
 }
 
+// Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
+// (bilinear), a dynamic object's ambient cube from the light grid, else the constant ambient.
 vec3 secondaryIrradiance(vec3 n) {
     if (BAKED_LIGHTING == 0) return vec3(frame.baked.x);
     if (drawUsesLightmap()) return lightmapIrradiance(lightmapTexel(), n);
