@@ -43,8 +43,14 @@ void beginOneTimeCommands(VkCommandBuffer cmd) {
     VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
 }
 
+VkResult waitSurvivingSuspend(const std::function<VkResult(uint64_t)>& wait, uint64_t timeoutNs) {
+    const VkResult first = wait(timeoutNs);
+    return first == VK_TIMEOUT ? wait(timeoutNs) : first;
+}
+
 void waitForFence(const Context& ctx, VkFence fence, const char* what, uint64_t timeoutNs) {
-    const VkResult waited = vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeoutNs);
+    const VkResult waited = waitSurvivingSuspend(
+        [&](uint64_t t) { return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, t); }, timeoutNs);
     if (waited == VK_TIMEOUT)
         throw std::runtime_error(std::string(what) + ": the GPU did not finish within " +
                                  std::to_string(timeoutNs / 1'000'000'000ull) + " s");
@@ -87,7 +93,8 @@ void submitOnce(const Context& ctx, const std::function<void(VkCommandBuffer)>& 
         throw;
     }
 
-    const VkResult waited = vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, timeoutNs);
+    const VkResult waited = waitSurvivingSuspend(
+        [&](uint64_t t) { return vkWaitForFences(ctx.device, 1, &fence, VK_TRUE, t); }, timeoutNs);
     if (waited == VK_SUCCESS) {
         vkDestroyFence(ctx.device, fence, nullptr);
         vkFreeCommandBuffers(ctx.device, ctx.commandPool, 1, &cmd);

@@ -24,6 +24,13 @@ namespace onelight::vk {
 // Resets `cmd` and begins recording it for one submit.
 void beginOneTimeCommands(VkCommandBuffer cmd);
 
+// Calls `wait` (a vkWaitForFences with the timeout it is given) and, when that times out, once
+// more. A wait that the process's suspension interrupts (a SIGSTOP, the machine asleep) finds its
+// wall-clock deadline passed on resume while the GPU's work only goes on then, and the second
+// wait sees it finish; a hung device times out twice.
+[[nodiscard]] VkResult waitSurvivingSuspend(const std::function<VkResult(uint64_t)>& wait,
+                                            uint64_t timeoutNs);
+
 // Waits for `fence` (throws "... timed out" on VK_TIMEOUT after timeoutNs, naming `what`).
 void waitForFence(const Context& ctx, VkFence fence, const char* what,
                   uint64_t timeoutNs = 120'000'000'000ull);
