@@ -781,8 +781,8 @@ TEST(TextureMips, BumpyGlossyFloorAgainstFullResolution) {
 
     std::printf("relative RMS error of each mip's shading against the full-resolution mean\n");
     std::printf(
-        "mip |  size   |     blit | black ops |     wwii |    clean | clean, footprint | gloss: black "
-        "ops |   wwii |  clean\n");
+        "mip |  size   |     blit | black ops |     wwii |    clean | clean, footprint | "
+        "gloss: black ops |   wwii |  clean\n");
     for (std::size_t k = 0; k < errors[0].size(); ++k) {
         double gloss[4] = {0.0, 0.0, 0.0, 0.0};
         for (std::size_t c = 1; c < 4; ++c) {
