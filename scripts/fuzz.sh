@@ -10,6 +10,8 @@
 #   scripts/fuzz.sh ... --timeout S one input running longer than S wall seconds is a finding
 #                                   (20; raise it on a loaded machine, where a starved process
 #                                   can take that long over an input that needs 0.05 s)
+#   scripts/fuzz.sh ... --jobs J    J targets side by side (1; each target is one process on
+#                                   one core, so CI gives its 2 cores 2 targets at a time)
 # Prints, per target, its executions and the result; exits non-zero on any finding (the
 # reproducer is left in build-fuzz/findings/TARGET/).
 set -euo pipefail
@@ -19,16 +21,21 @@ limit=(-max_total_time=60)
 all="fuzz_gltf fuzz_q3 fuzz_q3_text fuzz_md3 fuzz_image fuzz_zip fuzz_package fuzz_replay fuzz_command_line"
 targets=$all
 timeout=20
-usage="usage: scripts/fuzz.sh [--seconds S | --runs N] [--only TARGET,...] [--timeout S]"
+jobs=1
+usage="usage: scripts/fuzz.sh [--seconds S | --runs N] [--only TARGET,...] [--timeout S] [--jobs J]"
 while [ $# -gt 0 ]; do
   case "$1" in
     --seconds) limit=(-max_total_time="$2"); shift 2 ;;
     --runs) limit=(-runs="$2"); shift 2 ;;
     --only) targets=${2//,/ }; shift 2 ;;
     --timeout) timeout=$2; shift 2 ;;
+    --jobs) jobs=$2; shift 2 ;;
     *) echo "$usage" >&2; exit 2 ;;
   esac
 done
+case "$jobs" in
+  '' | *[!0-9]* | 0) echo "scripts/fuzz.sh: --jobs wants a count of 1 or more, not '$jobs'" >&2; exit 2 ;;
+esac
 for target in $targets; do
   case " $all " in
     *" $target "*) ;;
@@ -150,18 +157,16 @@ if [ -x "$bake" ]; then
   done
 fi
 
-status=0
-for target in $targets; do
-  findings=$build/findings/$target
+# One target's run: its summary line goes to $build/$target.result, and its exit code says
+# whether it found something.
+run_target() {
+  local target=$1 findings=$build/findings/$1 log=$build/$1.log extra=() max_len=4000000
   rm -rf "$findings" && mkdir -p "$findings" "$build/work/$target"
-  log=$build/$target.log
-  extra=()
   [ "$target" = fuzz_package ] && extra=(-use_value_profile=1)
   # Text parsers are linear: 16 KB inputs reach every path a megabyte would, far more often.
-  max_len=4000000
   [ "$target" = fuzz_q3_text ] && max_len=16384
+  local seeds started=$SECONDS result code=0
   seeds=$(ls "$corpus/$target" | wc -l)
-  started=$SECONDS
   if (cd "$findings" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
       UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
       "$build/bin/$target" "${limit[@]}" "${extra[@]}" -rss_limit_mb=4096 -timeout="$timeout" \
@@ -169,10 +174,28 @@ for target in $targets; do
     result="no finding"
   else
     result="FINDING (see $log and $findings)"
-    status=1
+    code=1
   fi
   # (a run that ends in a finding prints its statistics twice: the last count is the run's)
+  local runs
   runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
-  echo "fuzz: $target: ${runs:-?} executions in $((SECONDS - started)) s from $seeds seeds: $result"
+  echo "fuzz: $target: ${runs:-?} executions in $((SECONDS - started)) s from $seeds seeds: $result" \
+    | tee "$build/$target.result"
+  return $code
+}
+
+status=0
+running=0
+for target in $targets; do
+  if [ "$running" -ge "$jobs" ]; then
+    wait -n || status=1
+    running=$((running - 1))
+  fi
+  run_target "$target" &
+  running=$((running + 1))
+done
+while [ "$running" -gt 0 ]; do
+  wait -n || status=1
+  running=$((running - 1))
 done
 exit $status
