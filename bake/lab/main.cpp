@@ -185,7 +185,7 @@ int envTableCommand(int argc, char** argv) {
 
 int horizonCutCommand(int argc, char** argv) {
     const ParsedOptions o = parse("horizon-cut", argc, argv);
-    return horizonCut(o.has("--steps") ? int(o.integer("--steps")) : 600);
+    return horizonCut(o.has("--steps") ? int(o.integer("--steps")) : 300);
 }
 
 int levelReportCommand(int argc, char** argv) {

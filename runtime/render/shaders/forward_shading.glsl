@@ -195,7 +195,7 @@ struct Footprint {
     float bumpShare;
     vec3 normals[FOOTPRINT_RING_COUNT];         // bent as the pixel's normal is
     vec3 diffuseWeights[FOOTPRINT_RING_COUNT];  // diffuseEnergyWeight at each
-    vec2 env;                                   // the mean (scale, bias) of their lobes
+    vec2 env;  // the mean (scale, bias) of their lobes, less what the surface's plane cuts
 };
 
 // Below this share the footprint is one texel: the ring's normals would be the pixel's own.
@@ -216,13 +216,14 @@ Footprint footprintOf(vec3 n, vec3 ns, vec3 v, float gloss, float baseGloss, vec
     t /= tl;
     vec3 b = cross(n, t);
     float radius = bumpSlopeRadius(gloss, baseGloss);
+    float baseAlpha = ggxAlpha_fromGloss(baseGloss);
     for (int k = 0; k < FOOTPRINT_RING_COUNT; ++k) {
         vec3 nk = normal_withValidReflection(footprintRingNormal(n, t, b, radius, k), ns, v);
         // The fit, not the table: six texture fetches cost lavapipe more than its polynomial.
         vec2 e = EnvBRDF_Fit(clamp(dot(nk, v), MIN_NOV, 1.0), baseGloss);
         f.normals[k] = nk;
         f.diffuseWeights[k] = diffuseEnergyWeight(MATERIAL_CLASS, f0, e);
-        f.env += e;
+        f.env += e * specularShareAboveSurface(nk, ns, v, baseAlpha);
     }
     f.env *= 1.0 / float(FOOTPRINT_RING_COUNT);
     return f;
@@ -467,9 +468,17 @@ void main() {
         probeSample = PROBES == 1 ? probeRadiance(p, reflect(-v, n), gloss) : vec3(INV_PI);
         so = specularOcclusion(NoV, ao, ggxAlpha_fromGloss(gloss));
     }
-    if (footprint.bumpShare == 0.0)
-        radiance += secondaryRadiance(MATERIAL_CLASS, albedo, f0, env, irradiance, ao, so, probeSample);
-    else
+    if (footprint.bumpShare == 0.0) {
+        // A mapped normal's lobe less what the surface's plane cuts (shaders/material.glsl).
+        vec2 specularEnv = env;
+        bool mapped = materialHas(m, TEXTURE_NORMAL);
+        if (MATERIAL_PIPELINE == 1 && MATERIAL_CLASS != MATERIAL_LAMBERT && mapped)
+            specularEnv *= specularShareAboveSurface(n, geometricNormal, v,
+                                                     ggxAlpha_fromGloss(gloss));
+        radiance += footprintSecondaryRadiance(MATERIAL_CLASS, albedo,
+                                               diffuseEnergyWeight(MATERIAL_CLASS, f0, env), f0,
+                                               specularEnv, irradiance, ao, so, probeSample);
+    } else
         radiance += footprintSecondaryRadiance(MATERIAL_CLASS, albedo,
                                                footprintSecondaryWeight(footprint, irradiance), f0,
                                                footprint.env, irradiance, ao, so, probeSample);
