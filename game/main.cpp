@@ -127,11 +127,29 @@ struct RunTimes {
     std::vector<double> gpuMs, wallMs;
 };
 
+// The dynamic objects drawn, each as its entity (index and name) and world-from-object matrix
+// (column-major), so that `onelight-bake reference --poses` traces them where the frame drew
+// them (bake/reference/frame_poses.hpp).
+nlohmann::json drawnDynamicObjects(const assets::LoadedLevel& level,
+                                   const std::vector<render::DynamicTransform>& objects) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const render::DynamicTransform& o : objects) {
+        if (o.hidden || o.entity >= level.level.entities.size()) continue;
+        nlohmann::json matrix = nlohmann::json::array();
+        for (int column = 0; column < 4; ++column)
+            for (int row = 0; row < 4; ++row) matrix.push_back(o.worldFromObject[column][row]);
+        list.push_back({{"entity", o.entity},
+                        {"name", level.level.entities[o.entity].name},
+                        {"world_from_object", matrix}});
+    }
+    return list;
+}
+
 // `times`: every drawn frame's, the last one included.
 nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& level,
                        const render::Renderer& renderer, const render::Camera& camera,
-                       const render::FrameStats& stats, const char* backend,
-                       const RunTimes& times) {
+                       const render::FrameStats& stats, const char* backend, const RunTimes& times,
+                       const std::vector<render::DynamicTransform>& dynamicObjects) {
     const render::RendererInfo& info = render::rendererInfo(renderer);
     const glm::vec3 f = render::forwardOf(camera);
     nlohmann::json j;
@@ -173,6 +191,7 @@ nlohmann::json sidecar(const game::CommandLine& cl, const assets::LoadedLevel& l
                   {"dynamic_meshes_drawn", stats.dynamicMeshesDrawn},
                   {"shadow_views_rendered", stats.shadowViewsRendered},
                   {"triangles", stats.trianglesDrawn}};
+    j["dynamic_objects"] = drawnDynamicObjects(level, dynamicObjects);
     j["permutations"] = info.permutations;
     j["placeholder_ambient_lux"] = info.ambientLux;
     j["probes_in_use"] = info.probes;
@@ -271,9 +290,9 @@ int runViewer(const game::CommandLine& cl, const assets::LoadedLevel& level,
                             stats.surfacesDrawn);
             if (readback) {
                 const render::CapturedFrame& captured = render::capturedFrame(target.renderer);
-                capture::writeCaptureFiles(
-                    cl.capture, captured,
-                    sidecar(cl, level, target.renderer, camera, stats, backend, times));
+                capture::writeCaptureFiles(cl.capture, captured,
+                                           sidecar(cl, level, target.renderer, camera, stats,
+                                                   backend, times, dynamicObjects));
                 if (!cl.headless)
                     world::writePngFile(
                         cl.capture + "_window.png", target.window.swapchain.extent.width,

@@ -14,6 +14,7 @@
 
 #include "bake/cli/cli_common.hpp"
 #include "bake/cli/subcommands.hpp"
+#include "bake/reference/frame_poses.hpp"
 #include "bake/reference/path_tracer.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/error.hpp"
@@ -50,6 +51,10 @@ const world::CommandTable& referenceCommandTable() {
             world::integerOption("--threads", "N", 1, 1024, "worker threads", "every core"),
             world::integerOption("--seed", "N", 0, 4294967295.0,
                                  "the paths' seed: another seed, an independent estimate", "0"),
+            world::textOption("--poses", "FRAME.json",
+                              "trace the dynamic objects where this capture of the level drew "
+                              "them (`onelight --capture`'s JSON)",
+                              "none: the static level alone"),
             patchLevelOption()};
         t.positionalName = "level";
         t.minPositionals = t.maxPositionals = 1;
@@ -73,6 +78,7 @@ int renderFromCommandLine(const world::ParsedOptions& parsed) {
                       cameraName = parsed.text("--camera");
     const uint32_t spp = uint32_t(parsed.integer("--spp"));
     const uint32_t seed = parsed.has("--seed") ? uint32_t(parsed.integer("--seed")) : 0u;
+    const std::string posesPath = parsed.has("--poses") ? parsed.text("--poses") : std::string();
     const int threads = parsed.has("--threads") ? int(parsed.integer("--threads")) : 0;
     uint32_t width = 0, height = 0;
     if (parsed.has("--size")) std::tie(width, height) = parsed.size("--size");
@@ -103,7 +109,10 @@ int renderFromCommandLine(const world::ParsedOptions& parsed) {
                         : 1280;
         }
         const EmbreeDevice device;
-        const world::SplitLevel split = world::splitStaticDynamic(source);
+        world::SplitLevel split = world::splitStaticDynamic(source);
+        if (!posesPath.empty())
+            appendPosedDynamicMeshes(split, readFramePoses(posesPath), posesPath,
+                                     split.staticGeometry);
         const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(source));
         const BakeLights lights =
             makeLevelLights(scene, source, LightSizes{},

@@ -53,31 +53,35 @@ glm::dmat4 entityWorld(const Entity& e) {
     return m;
 }
 
-/// The matrix that carries normals: the cofactor matrix of the linear part (det * inverse
-/// transpose), signed so a mirror keeps the side; defined even when the transform is singular.
-glm::dmat3 normalMatrixOf(const glm::dmat4& m) {
-    const glm::dmat3 a(m);
-    glm::dmat3 cofactor(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]), glm::cross(a[0], a[1]));
-    return glm::determinant(a) < 0.0 ? -cofactor : cofactor;
+}  // namespace
+
+InstanceTransform instanceTransformOf(const glm::dmat4& worldFromLocal) {
+    InstanceTransform t;
+    t.worldFromLocal = worldFromLocal;
+    const glm::dmat3 a(worldFromLocal);
+    const glm::dmat3 cofactor(glm::cross(a[1], a[2]), glm::cross(a[2], a[0]),
+                              glm::cross(a[0], a[1]));
+    t.mirrored = glm::determinant(a) < 0.0;
+    t.normalMatrix = t.mirrored ? -cofactor : cofactor;
+    return t;
 }
 
-Vertex transformVertex(const Vertex& v, const glm::dmat4& m, const glm::dmat3& normalMatrix,
-                       float mirror) {
-    Vertex out = v;
-    out.position = glm::vec3(glm::dvec3(m * glm::dvec4(glm::dvec3(v.position), 1.0)));
-    const glm::dvec3 n = normalMatrix * glm::dvec3(v.normal);
+CompileVertex worldVertexOf(const Vertex& v, const InstanceTransform& transform) {
+    CompileVertex out;
+    out.position = glm::dvec3(transform.worldFromLocal * glm::dvec4(glm::dvec3(v.position), 1.0));
+    const glm::dvec3 n = transform.normalMatrix * glm::dvec3(v.normal);
     const double nLength = glm::length(n);
     out.normal =
         nLength > 0.0 && std::isfinite(nLength) ? glm::vec3(n / nLength) : glm::vec3(0, 0, 1);
-    const glm::dvec3 t = glm::dmat3(m) * glm::dvec3(v.tangent);
+    const glm::dvec3 t = glm::dmat3(transform.worldFromLocal) * glm::dvec3(v.tangent);
     const double tLength = glm::length(t);
     out.tangent = glm::vec4(
         tLength > 0.0 && std::isfinite(tLength) ? glm::vec3(t / tLength) : glm::vec3(1, 0, 0),
-        v.tangent.w * mirror);
+        transform.mirrored ? -v.tangent.w : v.tangent.w);
+    out.uv0 = v.uv0;
+    out.uv1 = v.uv1;
     return out;
 }
-
-}  // namespace
 
 SplitLevel splitStaticDynamic(const SourceLevel& level) {
     SplitLevel out;
@@ -93,23 +97,16 @@ SplitLevel splitStaticDynamic(const SourceLevel& level) {
         geometry.instanceIsProp.push_back(instance.prop ? 1 : 0);
         geometry.instanceLightingOrigin.push_back(instance.lightingOrigin);
         if (instance.dynamic) continue;
-        const glm::dmat4& m = instance.worldFromLocal;
-        const glm::dmat3 normalMatrix = normalMatrixOf(m);
-        const bool mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
+        const InstanceTransform transform = instanceTransformOf(instance.worldFromLocal);
+        const bool mirrored = transform.mirrored;
         const uint32_t base = static_cast<uint32_t>(geometry.vertices.size());
         for (const Vertex& v : instance.vertices) {
-            const Vertex w = transformVertex(v, m, normalMatrix, mirrored ? -1.0f : 1.0f);
-            CompileVertex cv;
-            cv.position = glm::dvec3(m * glm::dvec4(glm::dvec3(v.position), 1.0));
+            const CompileVertex cv = worldVertexOf(v, transform);
             if (!std::isfinite(cv.position.x) || !std::isfinite(cv.position.y) ||
                 !std::isfinite(cv.position.z))
                 throw Error(level.sourcePath + ": mesh '" + instance.meshName + "' of node '" +
                             instance.nodeName +
                             "': world position is NaN or Inf; expected finite values");
-            cv.normal = w.normal;
-            cv.tangent = w.tangent;
-            cv.uv0 = v.uv0;
-            cv.uv1 = v.uv1;
             geometry.vertices.push_back(cv);
         }
         for (size_t t = 0; t + 2 < instance.indices.size(); t += 3) {
@@ -166,15 +163,16 @@ SplitLevel splitStaticDynamic(const SourceLevel& level) {
             for (int r = 0; r < 4; ++r)
                 identity = identity && std::abs(m[c][r] - (c == r ? 1.0 : 0.0)) < 1e-6;
         if (identity) m = glm::dmat4(1.0);
-        const glm::dmat3 normalMatrix = normalMatrixOf(m);
-        const bool mirrored = glm::determinant(glm::dmat3(m)) < 0.0;
+        const InstanceTransform transform = instanceTransformOf(m);
+        const bool mirrored = transform.mirrored;
         DynamicMesh mesh;
         mesh.name = instance.nodeName + "/" + instance.meshName;
         mesh.material = instance.material;
         std::vector<Vertex> vertices;
         vertices.reserve(instance.vertices.size());
         for (const Vertex& v : instance.vertices) {
-            const Vertex w = transformVertex(v, m, normalMatrix, mirrored ? -1.0f : 1.0f);
+            const CompileVertex c = worldVertexOf(v, transform);
+            const Vertex w{glm::vec3(c.position), c.normal, c.tangent, c.uv0, c.uv1};
             if (!std::isfinite(w.position.x) || !std::isfinite(w.position.y) ||
                 !std::isfinite(w.position.z))
                 throw Error(level.sourcePath + ": mesh '" + instance.meshName + "' of node '" +

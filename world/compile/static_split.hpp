@@ -23,6 +23,20 @@ struct SplitLevel {
     uint32_t dynamicMeshesShared = 0;        // dynamic meshes drawn from an earlier one's copy
 };
 
+/// What carries an instance's vertices into world space: the cofactor matrix of the linear part
+/// carries normals (det * inverse transpose, signed so that a mirror keeps the side; defined
+/// even when the transform is singular), and a mirror flips the bitangent's sign and the winding.
+struct InstanceTransform {
+    glm::dmat4 worldFromLocal{1.0};
+    glm::dmat3 normalMatrix{1.0};
+    bool mirrored = false;  // determinant < 0: swap two corners of each triangle
+};
+[[nodiscard]] InstanceTransform instanceTransformOf(const glm::dmat4& worldFromLocal);
+
+/// `v` in world space: the position in double precision, unit normal and tangent (+z and +x
+/// where the transform collapses them).
+[[nodiscard]] CompileVertex worldVertexOf(const Vertex& v, const InstanceTransform& transform);
+
 /// Throws Error when a world transform turns a position into NaN or Inf.
 [[nodiscard]] SplitLevel splitStaticDynamic(const SourceLevel& level);
 
