@@ -14,7 +14,9 @@ one bump, and each estimate over it:
   lobe    the pixel's mean normal with the footprint's CLEAN lobe (the frame before)
   texel   the pixel's mean normal with the texels' own gloss
   two     two normals along the view, at +-s/sqrt(2)
-  ringN   N normals on a ring at the RMS slope s (the frame: six)
+  ringN   N normals on a ring at the RMS slope s (the frame without the slopes' kurtosis: six)
+  kurt    the mean normal at weight 1 - 1/k and six on a ring at s sqrt(k), k the slopes'
+          kurtosis (the frame with it: footprintCentreWeight, footprintRingRadius)
 """
 import math
 import os
@@ -88,8 +90,9 @@ def main():
     s = math.sqrt(variance)
     print(f"texels' gloss {base_gloss:.3f}, the footprint's CLEAN gloss {lobe_gloss:.3f}, "
           f"RMS slope {s:.3f}")
+    kurtosis = sum((a * a + b * b) ** 2 for a, b in slopes) / len(slopes) / variance ** 2
     print(f"{'point (x, z) m':>16} {'NoV':>6} {'texels':>7} {'lobe':>6} {'texel':>6} {'two':>6} "
-          f"{'ring4':>6} {'ring6':>6} {'ring8':>6} {'ring12':>6}")
+          f"{'ring4':>6} {'ring6':>6} {'ring8':>6} {'ring12':>6} {'kurt':>6}")
     for x, z in [(0, -4), (3, -3), (-5, -5), (-10, -10), (0, -20), (-25, -60), (0, -60),
                  (-60, -60), (0, -150), (-100, -150)]:
         v = normalize([-x, 1.7, -z])
@@ -103,12 +106,15 @@ def main():
             n = bend(normalize([up[q] + da * t[q] + db * b[q] for q in range(3)]), up, v)
             return weight(max(dot(n, v), 1e-4), gloss) * max(dot(n, sun), 0.0)
 
-        def ring(count):
-            return sum(at(s * math.cos(2 * math.pi * c / count), s * math.sin(2 * math.pi * c / count))
+        def ring(count, radius=s):
+            return sum(at(radius * math.cos(2 * math.pi * c / count),
+                          radius * math.sin(2 * math.pi * c / count))
                        for c in range(count)) / count
         nov = dot(up, v)
+        centre = 1 - 1 / kurtosis
         row = [at(0, 0, lobe_gloss), at(0, 0), 0.5 * (at(s / math.sqrt(2), 0) + at(-s / math.sqrt(2), 0)),
-               ring(4), ring(6), ring(8), ring(12)]
+               ring(4), ring(6), ring(8), ring(12),
+               centre * at(0, 0) + (1 - centre) * ring(6, s * math.sqrt(kurtosis))]
         print(f"{str((x, z)):>16} {nov:6.3f} {mean:7.4f} " + " ".join(f"{r / mean:6.2f}" for r in row))
 
 

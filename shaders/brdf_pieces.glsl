@@ -8,7 +8,7 @@
 #include "env_brdf_fit.glsl"
 #include "material.glsl"
 
-#define BRDF_PIECE_COUNT 32
+#define BRDF_PIECE_COUNT 34
 
 float brdfPiece(int piece, vec4 dots, vec4 params) {
     float NoV = dots.x;
@@ -57,6 +57,8 @@ float brdfPiece(int piece, vec4 dots, vec4 params) {
         case 30: return bumpSlopeRadius(gloss, NoL);
         case 31: return footprintReflectance(MATERIAL_DIELECTRIC, DIFFUSE_LAMBERT, vec3(0.5f),
                                              vec3(1.0f - f0), vec3(f0), gloss, NoV, 1.0f, d).x;
+        case 32: return specularFacets_Nakagami(NxH2, LoH, ggxAlpha_fromGloss(gloss), FACET_RING_SHAPE);
+        case 33: return exp(logGamma(1.0f + 9.0f * NoV));  // Gamma on [1, 10]
     }
     return 0.0f;
 }

@@ -160,6 +160,9 @@ struct GpuMaterial {
 // texel (world::MaterialTextureSlots::baseRoughnessInAlpha; shaders/material.glsl, "A
 // footprint's bumps").
 const int MATERIAL_FLAG_BASE_ROUGHNESS = 1;
+// The normal texture's A is the kurtosis k of the slopes under each mip texel, as (k - 1) / 2
+// (world::MaterialTextureSlots::slopeKurtosisInNormalAlpha).
+const int MATERIAL_FLAG_SLOPE_KURTOSIS = 2;
 
 // A dynamic object's baked lighting: the light grid sampled at its origin, or, for an object
 // longer than a grid cell, at a lattice over its bounds (runtime/render/frame_view.hpp,

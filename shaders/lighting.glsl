@@ -146,19 +146,34 @@ vec3 diffuseEnergyWeight(int materialClass, vec3 f0, vec2 env) {
 // the lobe that is the normals' spread is shaded as facets (specularFacets_Beckmann) instead of
 // the texel's lobe. surfaceReflectance is it for one texel: the weight diffuseEnergyWeight,
 // bumpShare 0.
-vec3 footprintReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 diffuseWeight,
-                          vec3 f0, float gloss, float bumpShare, float cavity, BrdfDots d) {
+// `gaussianShare` is the share of the facets' slopes that are Gaussian (Beckmann's), the rest on
+// a ring (facetSlopes_fromKurtosis): 1 where the slopes' shape is not known.
+vec3 footprintReflectanceShaped(int materialClass, int diffuseModel, vec3 albedo,
+                                vec3 diffuseWeight, vec3 f0, float gloss, float bumpShare,
+                                float gaussianShare, float cavity, BrdfDots d) {
     vec3 diffuse = albedo * diffuseWeight * (diffuseBrdf(diffuseModel, gloss, d) * d.NoL * cavity);
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
     vec3 specular = specularLobe(RUNTIME_NDF, RUNTIME_VIS, RUNTIME_FRESNEL, f0, gloss, d);
     if (bumpShare > 0.0f) {
-        vec3 facets = specularF(RUNTIME_FRESNEL, f0, d.LoH) *
-                      specularFacets_Beckmann(d.NxH2, d.LoH, ggxAlpha_fromGloss(gloss));
-        specular = specular * (1.0f - bumpShare) + facets * bumpShare;
+        float a = ggxAlpha_fromGloss(gloss);
+        float facets = specularFacets_Beckmann(d.NxH2, d.LoH, a);
+        if (gaussianShare < 1.0f)
+            facets = facets * gaussianShare +
+                     specularFacets_Nakagami(d.NxH2, d.LoH, a, FACET_RING_SHAPE) *
+                         (1.0f - gaussianShare);
+        specular = specular * (1.0f - bumpShare) +
+                   specularF(RUNTIME_FRESNEL, f0, d.LoH) * (facets * bumpShare);
     }
     if (cavity < 1.0f) specular = specular * specularOcclusion(d.NoV, cavity, ggxAlpha_fromGloss(gloss));
     if (materialClass == MATERIAL_METAL) return specular;
     return diffuse + specular;
+}
+
+// Facets of Gaussian slopes (Beckmann's).
+vec3 footprintReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 diffuseWeight,
+                          vec3 f0, float gloss, float bumpShare, float cavity, BrdfDots d) {
+    return footprintReflectanceShaped(materialClass, diffuseModel, albedo, diffuseWeight, f0,
+                                      gloss, bumpShare, 1.0f, cavity, d);
 }
 
 vec3 surfaceReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 f0, float gloss,

@@ -238,7 +238,11 @@ float gloss_withFilteredNormal(float gloss, vec3 filtered) {
 // lobe, whose Fresnel and energy split are its own (at its own view angle). The runtime shades the
 // spread's share of the lobe as such facets (specularFacets_Beckmann), and the footprint's energy
 // split as the mean of its texels' over a ring of normals about the mean, at slope s
-// (footprintRingNormal).
+// (footprintRingNormal). Where the texture stage also stored the slopes' kurtosis k (the normal
+// texture's A), the facets take its shape (facetGaussianShare_fromKurtosis),
+// and the mean puts a share of its weight on the mean normal and moves the ring out
+// (footprintCentreWeight, footprintRingRadius): an egg crate's slopes sit near their extremes
+// (k 1.25), a rough stone's are nearer Gaussian (k 2).
 
 // s^2 = alpha^2 - alpha_b^2, 0 where baseGloss is at least gloss (a single texel, or a
 // footprint of parallel normals). With alpha^2 = 2 / (1 + 2^(18 g)) (Chan 2018, eq. 2) the
@@ -259,6 +263,30 @@ float bumpShare(float gloss, float baseGloss) {
 
 // s: the RMS slope of the footprint's normals about their mean, over both axes.
 float bumpSlopeRadius(float gloss, float baseGloss) { return sqrt(bumpSlopeVariance(gloss, baseGloss)); }
+
+// The footprint's slopes of kurtosis k (1 where not known) as a share 1 - 1/k at the mean normal
+// and the rest on the ring, at radius s sqrt(k): the rule with the slopes' second and fourth
+// moments, E|s|^2 = s^2 and E|s|^4 = k s^4. At k = 1, the ring at the RMS slope alone.
+float footprintCentreWeight(float kurtosis) { return 1.0f - 1.0f / max(kurtosis, 1.0f); }
+float footprintRingRadius(float radius, float kurtosis) { return radius * sqrt(max(kurtosis, 1.0f)); }
+
+// The whole lobe's facets as a share w of Gaussian slopes (specularFacets_Beckmann) and the rest
+// on a ring (specularFacets_Nakagami at FACET_RING_SHAPE, kurtosis k_r = 17/16), of one mean
+// square: w 2 + (1 - w) k_r is the facets' kurtosis. That is the bumps' slopes (variance s2,
+// kurtosis k) plus the texels' own lobes taken as Gaussian (variance b2), independent and
+// isotropic:
+//   E|x + y|^4 = k s2^2 + 4 s2 b2 + 2 b2^2,   kurtosis = that / (s2 + b2)^2,
+// so w = (kurtosis - k_r) / (2 - k_r), in [0, 1]: slopes more peaked than a Gaussian's (k > 2)
+// are shaded as Gaussian. A kurtosis says nothing of how many slopes lie near the mean; a
+// Nakagami lobe of the whole kurtosis would have none there (an egg crate's have a third of a
+// Gaussian's), the mixture has w of a Gaussian's.
+float facetGaussianShare_fromKurtosis(float kurtosis, float s2, float b2) {
+    float total = s2 + b2;
+    if (total <= 0.0f) return 1.0f;
+    float k = (max(kurtosis, 1.0f) * s2 * s2 + 4.0f * s2 * b2 + 2.0f * b2 * b2) / (total * total);
+    const float ringKurtosis = (FACET_RING_SHAPE + 1.0f) / FACET_RING_SHAPE;
+    return saturate((k - ringKurtosis) / (2.0f - ringKurtosis));
+}
 
 // The ring of a footprint's normals: FOOTPRINT_RING_COUNT unit normals about n, each tilted to
 // slope `radius` towards cos(phi) t + sin(phi) b (t, b unit and perpendicular to n), phi =

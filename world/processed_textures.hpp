@@ -69,6 +69,10 @@ struct MaterialTextureSlots {
     // of the normals): a reader can tell the bumps' share of the lobe (shaders/material.glsl,
     // "A footprint's bumps"). Only on the pair the stage makes for a normal-mapped material.
     bool baseRoughnessInAlpha = false;
+    // A of the normal texture is the kurtosis k of the slopes under each mip texel, stored as
+    // (k - 1) / 2 (k from 1, slopes on a ring, to 3; 2 Gaussian): the shape of the bumps' facets
+    // (shaders/material.glsl, "A footprint's bumps"). Only on the pair the stage makes.
+    bool slopeKurtosisInNormalAlpha = false;
 };
 
 /// The factors a reader multiplies a material's texels by (shaders/material.glsl): 1 for those the

@@ -21,11 +21,14 @@ struct FootprintSums {
     glm::dvec3 normalOverCos{0.0};                                      // sum n_i / cos_i
     double areaOverCos = 0.0;                                           // sum A(g_i) / cos_i
     double variance = 0.0;                                              // sum var(g_i)
-    double roughness = 0.0;  // sum roughness_fromGloss(g_i)
-    glm::dvec2 slope{0.0};   // sum s_i = n_i.xy / cos_i
-    double slope2 = 0.0;     // sum |s_i|^2
-    double alpha2 = 0.0;     // sum ggxAlpha_fromGloss(g_i)^2
-    double count = 0.0;      // K
+    double roughness = 0.0;                  // sum roughness_fromGloss(g_i)
+    glm::dvec2 slope{0.0};                   // sum s_i = n_i.xy / cos_i
+    double slope2 = 0.0;                     // sum |s_i|^2
+    double alpha2 = 0.0;                     // sum ggxAlpha_fromGloss(g_i)^2
+    double sxx = 0.0, sxy = 0.0, syy = 0.0;  // sum s_i s_i^T
+    glm::dvec2 slope2Slope{0.0};             // sum |s_i|^2 s_i
+    double slope4 = 0.0;                     // sum |s_i|^4
+    double count = 0.0;                      // K
 };
 
 void add(FootprintSums& s, const FootprintSums& o) {
@@ -43,6 +46,11 @@ void add(FootprintSums& s, const FootprintSums& o) {
     s.slope += o.slope;
     s.slope2 += o.slope2;
     s.alpha2 += o.alpha2;
+    s.sxx += o.sxx;
+    s.sxy += o.sxy;
+    s.syy += o.syy;
+    s.slope2Slope += o.slope2Slope;
+    s.slope4 += o.slope4;
     s.count += o.count;
 }
 
@@ -71,6 +79,11 @@ FootprintSums texelSums(glm::vec3 normal, float gloss) {
     s.slope2 = glm::dot(s.slope, s.slope);
     const double alpha = ggxAlpha_fromGloss(g);
     s.alpha2 = alpha * alpha;
+    s.sxx = s.slope.x * s.slope.x;
+    s.sxy = s.slope.x * s.slope.y;
+    s.syy = s.slope.y * s.slope.y;
+    s.slope2Slope = s.slope2 * s.slope;
+    s.slope4 = s.slope2 * s.slope2;
     s.count = 1.0;
     return s;
 }
@@ -91,6 +104,22 @@ struct Texel {
 float baseGloss(const FootprintSums& s) {
     const double alpha2 = std::clamp(s.alpha2 / s.count, 1e-30, 1.0);
     return float(std::clamp(std::log2(2.0 / alpha2 - 1.0) / 18.0, 0.0, 1.0));
+}
+
+// The kurtosis of the footprint's slopes about their mean (see the header); 2, a Gaussian's,
+// where they do not spread (a variance under 1e-8 of the slopes' square, rounding).
+float slopeKurtosis(const FootprintSums& s) {
+    const double k = s.count;
+    const glm::dvec2 m = s.slope / k;
+    const double m2 = glm::dot(m, m);
+    const double variance = s.slope2 / k - m2;
+    if (!(variance > 1e-8 * (s.slope2 / k)) || !(variance > 1e-12)) return 2.0f;
+    const double quadratic =
+        m.x * m.x * s.sxx / k + 2.0 * m.x * m.y * s.sxy / k + m.y * m.y * s.syy / k;
+    const double fourth = s.slope4 / k - 4.0 * glm::dot(m, s.slope2Slope / k) + 4.0 * quadratic +
+                          2.0 * m2 * (s.slope2 / k) - 3.0 * m2 * m2;
+    // >= 1 in exact arithmetic (Jensen); rounding can take a ring's a hair below.
+    return float(std::max(fourth / (variance * variance), 1.0));
 }
 
 Texel resolve(const FootprintSums& s, world::GlossMipMethod method, GlossInversion inversion) {
@@ -164,6 +193,7 @@ NormalGlossChain buildNormalGlossMips(const NormalGlossLevel& level0, world::Glo
 
     NormalGlossChain chain{level0};
     chain[0].baseGloss = level0.gloss;  // a level-0 texel's lobe is its own
+    chain[0].slopeKurtosis.assign(level0.normals.size(), 2.0f);
     std::vector<FootprintSums> sums(level0.normals.size());
     parallelFor(0, h0, [&](int y) {
         for (int x = 0; x < w0; ++x) {
@@ -177,8 +207,12 @@ NormalGlossChain buildNormalGlossMips(const NormalGlossLevel& level0, world::Glo
         const int pw = mipSize(w0, level - 1), ph = mipSize(h0, level - 1);
         const int w = mipSize(w0, level), h = mipSize(h0, level);
         std::vector<FootprintSums> next(std::size_t(w) * std::size_t(h));
-        NormalGlossLevel out{w, h, std::vector<glm::vec3>(next.size()),
-                             std::vector<float>(next.size()), std::vector<float>(next.size())};
+        NormalGlossLevel out{w,
+                             h,
+                             std::vector<glm::vec3>(next.size()),
+                             std::vector<float>(next.size()),
+                             std::vector<float>(next.size()),
+                             std::vector<float>(next.size())};
         parallelFor(0, h, [&](int y) {
             TexelRange rows = mipChildren(ph, y);
             for (int x = 0; x < w; ++x) {
@@ -193,6 +227,7 @@ NormalGlossChain buildNormalGlossMips(const NormalGlossLevel& level0, world::Glo
                 out.normals[i] = t.normal;
                 out.gloss[i] = t.gloss;
                 out.baseGloss[i] = std::max(baseGloss(s), t.gloss);
+                out.slopeKurtosis[i] = slopeKurtosis(s);
             }
         });
         sums = std::move(next);

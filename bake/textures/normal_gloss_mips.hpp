@@ -65,6 +65,9 @@
 // mean alpha(g_i)^2, their own lobes without the normals' spread (at least as glossy as the
 // texel's gloss). With CLEAN, alpha^2 - base alpha^2 is exactly the slopes' variance; the
 // runtime shades that share of the lobe as facets (shaders/material.glsl, "A footprint's bumps").
+// And the slopes' kurtosis, their fourth central moment over the square of the second, from the
+// raw moments E s, E s s^T, E |s|^2 s and E |s|^4 summed as the others are:
+//   E|s - m|^4 = E|s|^4 - 4 m.E[|s|^2 s] + 4 m^T E[s s^T] m + 2 |m|^2 E|s|^2 - 3 |m|^4.
 //
 // Robustness: level 0 of the output is the input, bit for bit (its base gloss its gloss). For the
 // sums, a level-0 normal that is not finite or has length < 1e-12 counts as (0, 0, 1), others are
@@ -94,6 +97,12 @@ struct NormalGlossLevel {
     // their mean alpha^2 (Chan 2018, eq. 2), without the spread of their normals; at level 0
     // the texel's gloss. Output only: buildNormalGlossMips ignores level 0's.
     std::vector<float> baseGloss;
+    // >= 1: the kurtosis of the footprint's slopes about their mean, E|s - m|^4 / (E|s - m|^2)^2
+    // (2D, radial: 1 for slopes on a ring, 2 for Gaussian ones, more for a few steep slopes
+    // among flat ones); 2 where the footprint's slopes do not spread (level 0). The runtime
+    // shapes the bumps' facets and picks the normals it averages by it (shaders/material.glsl,
+    // "A footprint's bumps"). Output only.
+    std::vector<float> slopeKurtosis;
 };
 
 // Level 0 first, down to 1x1.

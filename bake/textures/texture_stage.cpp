@@ -301,7 +301,7 @@ PairLevel0 pairLevel0(Stage& stage, const PairInputs& in) {
         mrImage = decodeLevelImage(stage.level, in.metallicRoughness->image, 4.0, stage.budget);
     const int w = int(normalImage.width), h = int(normalImage.height);
     const size_t n = size_t(w) * size_t(h);
-    PairLevel0 out{NormalGlossLevel{w, h, std::vector<glm::vec3>(n), std::vector<float>(n), {}},
+    PairLevel0 out{NormalGlossLevel{w, h, std::vector<glm::vec3>(n), std::vector<float>(n), {}, {}},
                    std::vector<float>(n), std::vector<float>(n), std::vector<float>(n)};
     parallelFor(0, h, [&](int y) {
         const double sy = in.metallicRoughness ? sourceCoordinate(y, h, int(mrImage.height)) : 0.0;
@@ -358,7 +358,8 @@ world::ProcessedTexture normalTexture(const NormalGlossChain& chain, const world
                 const size_t i = size_t(y) * size_t(level.width) + size_t(x);
                 uint8_t* t = out.texels.data() + offsets[k] + 4 * i;
                 for (int c = 0; c < 3; ++c) t[c] = unorm8(0.5 + 0.5 * double(level.normals[i][c]));
-                t[3] = 255;
+                // The slopes' kurtosis (MaterialTextureSlots::slopeKurtosisInNormalAlpha).
+                t[3] = unorm8(0.5 * (double(level.slopeKurtosis[i]) - 1.0));
             }
         });
     }
@@ -483,6 +484,7 @@ world::ProcessedTextures processLevelTextures(const world::SourceLevel& level,
             slots.cavity = pair.cavity;
             slots.factorsFolded = true;
             slots.baseRoughnessInAlpha = true;
+            slots.slopeKurtosisInNormalAlpha = true;
             if (in.packedOcclusion) slots.occlusion = pair.metallicRoughness;
         } else {
             slots.metallicRoughness = plainSlot(stage, m, material.metallicRoughnessTexture, false,

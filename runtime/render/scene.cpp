@@ -363,6 +363,9 @@ void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
         if (loaded.hasProcessedTextures &&
             loaded.processedTextures.materials.at(i).baseRoughnessInAlpha)
             flags |= uint32_t(glsl::MATERIAL_FLAG_BASE_ROUGHNESS);
+        if (loaded.hasProcessedTextures &&
+            loaded.processedTextures.materials.at(i).slopeKurtosisInNormalAlpha)
+            flags |= uint32_t(glsl::MATERIAL_FLAG_SLOPE_KURTOSIS);
         g.textures = glm::uvec4(bits, flags, 0u, 0u);
         uint8_t cls = uint8_t(m.materialClass);
         if (forceMaterialClass >= 0) cls = uint8_t(forceMaterialClass);

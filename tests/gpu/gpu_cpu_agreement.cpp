@@ -67,7 +67,9 @@ const char* pieceName(int piece) {
                                         "specularFacets_Beckmann",
                                         "bumpShare",
                                         "bumpSlopeRadius",
-                                        "footprintReflectance"};
+                                        "footprintReflectance",
+                                        "specularFacets_Nakagami",
+                                        "exp(logGamma)"};
     return piece < int(std::size(names)) ? names[piece] : "?";
 }
 

@@ -135,4 +135,68 @@ TEST(Footprint, AWholeFootprintOfBumpsIsFacetsPlusItsWeightedDiffuse) {
         EXPECT_NEAR(half[c], 0.5f * (lobe[c] + facets[c]) + diffuse[c], 1e-5f * half[c]);
 }
 
+TEST(Footprint, LogGammaIsStirlingsToAMillionth) {
+    for (float x : {1.0f, 1.5f, 2.0f, 4.0f, 8.0f, 16.0f, 50.0f})
+        EXPECT_NEAR(logGamma(x), std::lgamma(double(x)), 2e-6 * (1.0 + std::lgamma(double(x))))
+            << x;
+}
+
+// Integral of D(h) cos theta_h over the hemisphere of h, by the midpoint rule in tan^2 theta
+// (the slopes' own measure: d(tan^2) pi P(s) / ... is exact for a density of slopes).
+double nakagamiNormalisation(float a, float m) {
+    // D cos theta dw = P(tan theta) / cos^3 theta sin theta dtheta dphi; with t = tan theta,
+    // dt = dtheta / cos^2 theta and sin / cos = t, so it is 2 pi P(t) t dt.
+    const int steps = 200000;
+    const double top = 12.0 * double(a);  // P is below 1e-20 of its peak beyond
+    double sum = 0.0;
+    for (int i = 0; i < steps; ++i) {
+        const double t = (i + 0.5) * top / steps;
+        const double c2 = 1.0 / (1.0 + t * t);
+        const double NxH2 = 1.0 - c2;
+        sum += double(D_NakagamiSlopes(float(NxH2), a, m)) * c2 * c2 * 2.0 * std::numbers::pi * t *
+               (top / steps);
+    }
+    return sum;
+}
+
+TEST(Footprint, NakagamiSlopesAreADensityAndBeckmannsAtShapeOne) {
+    for (float a : {0.05f, 0.2f, 0.5f})
+        for (float m : {1.0f, 2.0f, 8.0f, 16.0f, 50.0f})
+            EXPECT_NEAR(nakagamiNormalisation(a, m), 1.0, 1e-3) << "a " << a << " m " << m;
+    for (float a : {0.1f, 0.4f})
+        for (float NxH2 : {0.0f, 0.01f, 0.05f, 0.2f, 0.5f}) {
+            const float beckmann = D_Beckmann(NxH2, a);
+            EXPECT_NEAR(D_NakagamiSlopes(NxH2, a, 1.0f), beckmann, 1e-4f * (1.0f + beckmann));
+        }
+    // A ring: nothing at the mean normal, its density where the slope is a.
+    EXPECT_LT(D_NakagamiSlopes(1e-6f, 0.3f, 16.0f), 1e-12f);
+}
+
+TEST(Footprint, FacetShareOfGaussianSlopesFollowsTheKurtosis) {
+    const float ring = (FACET_RING_SHAPE + 1.0f) / FACET_RING_SHAPE;
+    // Bumps alone (no texel lobe): Gaussian slopes are all Gaussian, a ring none, between
+    // linear in the kurtosis; more peaked than a Gaussian, shaded as one.
+    EXPECT_FLOAT_EQ(facetGaussianShare_fromKurtosis(2.0f, 0.1f, 0.0f), 1.0f);
+    EXPECT_FLOAT_EQ(facetGaussianShare_fromKurtosis(ring, 0.1f, 0.0f), 0.0f);
+    EXPECT_FLOAT_EQ(facetGaussianShare_fromKurtosis(1.0f, 0.1f, 0.0f), 0.0f);
+    EXPECT_NEAR(facetGaussianShare_fromKurtosis(1.25f, 0.1f, 0.0f), (1.25f - ring) / (2.0f - ring),
+                1e-6f);
+    EXPECT_FLOAT_EQ(facetGaussianShare_fromKurtosis(3.0f, 0.1f, 0.0f), 1.0f);
+    // The texels' own lobes blur the ring: with as much variance as the bumps, a ring's
+    // kurtosis (1 s2^2 + 4 s2 b2 + 2 b2^2) / (2 s2)^2 = 7/4.
+    EXPECT_NEAR(facetGaussianShare_fromKurtosis(1.0f, 0.1f, 0.1f), (1.75f - ring) / (2.0f - ring),
+                1e-6f);
+    EXPECT_FLOAT_EQ(facetGaussianShare_fromKurtosis(1.0f, 0.0f, 0.0f), 1.0f);
+}
+
+TEST(Footprint, TheCentreAndRingHaveTheSlopesSecondAndFourthMoments) {
+    for (float k : {1.0f, 1.25f, 2.0f, 3.0f}) {
+        const double s = 0.3;
+        const double w = footprintCentreWeight(k), r = footprintRingRadius(float(s), k);
+        EXPECT_NEAR((1.0 - w) * r * r, s * s, 1e-6) << k;
+        EXPECT_NEAR((1.0 - w) * r * r * r * r, double(k) * s * s * s * s, 1e-6) << k;
+    }
+    EXPECT_EQ(footprintCentreWeight(1.0f), 0.0f);  // a ring alone: the footprint as before
+}
+
 }  // namespace

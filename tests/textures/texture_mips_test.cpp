@@ -12,6 +12,9 @@
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <numbers>
+#include <random>
+#include <utility>
 #include <vector>
 
 #include "bake/textures/gloss_tables.hpp"
@@ -305,7 +308,7 @@ TEST(GlossTables, ShaderFoldOfAFilteredNormal) {
     for (int i = 0; i < 2000; ++i) {
         const float g = float(random.next());
         const double spread = 0.05 + 0.6 * random.next();  // slopes
-        NormalGlossLevel level{2, 2, {}, {}, {}};
+        NormalGlossLevel level{2, 2, {}, {}, {}, {}};
         for (int k = 0; k < 4; ++k) {
             const double phi = 2.0 * kPi * random.next();
             level.normals.push_back(glm::normalize(
@@ -348,6 +351,7 @@ NormalGlossLevel constantLevel(int w, int h, glm::vec3 n, float gloss) {
             h,
             std::vector<glm::vec3>(std::size_t(w) * std::size_t(h), n),
             std::vector<float>(std::size_t(w) * std::size_t(h), gloss),
+            {},
             {}};
 }
 
@@ -355,7 +359,7 @@ NormalGlossLevel constantLevel(int w, int h, glm::vec3 n, float gloss) {
 NormalGlossLevel randomLevel(int w, int h, double slope, double gMin, double gMax,
                              std::uint64_t seed) {
     Random random{seed};
-    NormalGlossLevel level{w, h, {}, {}, {}};
+    NormalGlossLevel level{w, h, {}, {}, {}, {}};
     for (int i = 0; i < w * h; ++i) {
         double sx = slope * (2.0 * random.next() - 1.0), sy = slope * (2.0 * random.next() - 1.0);
         level.normals.push_back(glm::vec3(glm::normalize(glm::dvec3(-sx, -sy, 1.0))));
@@ -368,7 +372,7 @@ NormalGlossLevel randomLevel(int w, int h, double slope, double gMin, double gMa
 // texel centres), slope up to `slope` = a 2 pi / P along each axis, normal (-dh/dx, -dh/dy, 1)
 // normalised.
 NormalGlossLevel bumpLevel(int size, int period, double slope, float gloss) {
-    NormalGlossLevel level{size, size, {}, {}, {}};
+    NormalGlossLevel level{size, size, {}, {}, {}, {}};
     const double k = 2.0 * kPi / period;
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
@@ -599,6 +603,65 @@ DirectTexel directTexel(const NormalGlossLevel& l0, bake::TexelRange xs, bake::T
     }
     glm::dvec3 average = sumNOverCos / sumAreaOverCos;
     return {glm::normalize(average), bake::gloss_fromAverageNormalLength(glm::length(average))};
+}
+
+// Level 0 of a tileable map whose slopes are `slopes(u, v)` at texel centres (u, v in [0, 1)).
+template <typename Slopes>
+NormalGlossLevel slopeLevel(int size, Slopes slopes) {
+    NormalGlossLevel level{size, size, {}, {}, {}, {}};
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const glm::dvec2 s = slopes((x + 0.5) / size, (y + 0.5) / size);
+            level.normals.push_back(glm::vec3(glm::normalize(glm::dvec3(-s.x, -s.y, 1.0))));
+            level.gloss.push_back(0.8f);
+        }
+    return level;
+}
+
+TEST(NormalGlossMips, SlopeKurtosisOfKnownShapes) {
+    // The coarsest mip covers the whole map, so its kurtosis is the map's. Closed forms:
+    // - slopes of one length turning (a ring): 1;
+    // - an egg crate, s = 0.6 (cos u sin w, sin u cos w): E|s|^4 / (E|s|^2)^2 = (2 (3/8)^2 +
+    //   2 (1/8)^2) / (4 (1/4)^2) = 1.25;
+    // - two values only, 0 on 3/4 of the texels and a slope on the rest, about their mean:
+    //   for a Bernoulli share p = 1/4 of a vector of length L the central kurtosis is
+    //   (1 - 3 p + 3 p^2) / (p (1 - p)) = 7/3.
+    // Tolerances: the texel-centre sums of a 64 x 64 map are exact for these trigonometric
+    // polynomials up to rounding (1e-4 in float normals).
+    const double tau = 2.0 * std::numbers::pi;
+    const auto ring = [&](double u, double w) {
+        return glm::dvec2(std::cos(tau * (u + w)), std::sin(tau * (u + w))) * 0.3;
+    };
+    const auto egg = [&](double u, double w) {
+        return glm::dvec2(std::cos(tau * u) * std::sin(tau * w),
+                          std::sin(tau * u) * std::cos(tau * w)) *
+               0.6;
+    };
+    const auto steps = [&](double u, double w) {
+        return (u < 0.5 && w < 0.5) ? glm::dvec2(0.4, 0.1) : glm::dvec2(0.0);
+    };
+    const std::pair<const char*, double> expected[] = {
+        {"ring", 1.0}, {"egg crate", 1.25}, {"steps", 7.0 / 3.0}};
+    const NormalGlossLevel levels[] = {slopeLevel(64, ring), slopeLevel(64, egg),
+                                       slopeLevel(64, steps)};
+    for (int k = 0; k < 3; ++k) {
+        const NormalGlossChain chain = bake::buildNormalGlossMips(levels[k], MipMethod::kClean);
+        ASSERT_EQ(chain.back().slopeKurtosis.size(), 1u);
+        EXPECT_NEAR(chain.back().slopeKurtosis[0], expected[k].second, 1e-3) << expected[k].first;
+        // Level 0 spreads nothing: the Gaussian's 2, the shader's neutral shape.
+        EXPECT_EQ(chain[0].slopeKurtosis.front(), 2.0f);
+        for (const NormalGlossLevel& mip : chain)
+            for (float value : mip.slopeKurtosis)
+                EXPECT_TRUE(std::isfinite(value) && value >= 1.0f);
+    }
+    // Gaussian slopes: 2, within the sampling of 4096 of them (|s|^2 is exponential, so the
+    // estimate's standard error is about 0.1; three of them).
+    std::mt19937 random(7);
+    std::normal_distribution<double> normal(0.0, 0.2);
+    const NormalGlossChain gaussian = bake::buildNormalGlossMips(
+        slopeLevel(64, [&](double, double) { return glm::dvec2(normal(random), normal(random)); }),
+        MipMethod::kClean);
+    EXPECT_NEAR(gaussian.back().slopeKurtosis[0], 2.0, 0.3);
 }
 
 TEST(NormalGlossMips, OddAndNonSquareSizesMatchDirectFootprints) {

@@ -260,6 +260,11 @@ TEST(TextureStage, ANormalMapWithoutMetallicRoughnessGetsOneFromTheFactors) {
         EXPECT_EQ(t[3], t[1]);  // the texels' own roughness: a flat map's is all of it
     }
     EXPECT_TRUE(slots.baseRoughnessInAlpha);
+    EXPECT_TRUE(slots.slopeKurtosisInNormalAlpha);
+    // A flat map's slopes do not spread: the neutral kurtosis 2, stored as (2 - 1) / 2.
+    const ProcessedTexture& normal = out.textures[slots.normal];
+    for (uint32_t level = 0; level < normal.mipCount; ++level)
+        EXPECT_EQ(texelOf(normal, level, 0, 0)[3], 128) << "level " << level;
     const ProcessedTexture& cavity = out.textures[slots.cavity];
     EXPECT_EQ(cavity.format, TexelFormat::kR8Unorm);
     for (uint8_t c : cavity.texels) EXPECT_EQ(c, 255);  // nothing rises above a flat map
@@ -284,6 +289,21 @@ std::vector<double> deepestRoughness(
     for (uint32_t level = 0; level < mr.mipCount; ++level)
         g.push_back(double(texelOf(mr, level, 0, 0)[channel]) / 255.0);
     return g;
+}
+
+TEST(TextureStage, TheNormalTexturesAlphaIsTheSlopesKurtosis) {
+    // An egg crate's slopes over whole bumps: kurtosis 1.25 (normal_gloss_mips.hpp), stored as
+    // (1.25 - 1) / 2 in the normal texture's A at the mips that cover whole bumps (8-texel
+    // bumps: level 3 down); level 0 spreads nothing (2, stored as 128).
+    LevelBuilder b;
+    world::Material& m = b.material("bumps");
+    m.normalTexture = b.texture(eggCrate(32, 8, 0.3), "egg crate");
+    const ProcessedTextures out = bake::processLevelTextures(b.level, GlossMipMethod::kClean);
+    ASSERT_TRUE(out.materials[0].slopeKurtosisInNormalAlpha);
+    const ProcessedTexture& normal = out.textures[out.materials[0].normal];
+    EXPECT_EQ(texelOf(normal, 0, 0, 0)[3], 128);
+    for (uint32_t level = 3; level < normal.mipCount; ++level)
+        EXPECT_NEAR(texelOf(normal, level, 0, 0)[3], 0.125 * 255.0, 4.0) << "level " << level;
 }
 
 TEST(TextureStage, BumpsBecomeRoughnessInTheDeeperMipsUnlessBlitted) {
@@ -328,13 +348,18 @@ TEST(TextureStage, NormalsRoundTripAndTheScaleIsFolded) {
     const ProcessedTexture& flat = out.textures[out.materials[1].normal];
     EXPECT_NE(out.materials[0].normal, out.materials[1].normal);
     EXPECT_EQ(unscaled.format, TexelFormat::kRgba8Unorm);
-    for (size_t i = 0; i < normals.texels.size(); ++i)
+    for (size_t i = 0; i < normals.texels.size(); ++i) {
+        if (i % 4 == 3) {  // A: the slopes' kurtosis, the neutral 2 at level 0 (stored as 128)
+            EXPECT_EQ(unscaled.texels[i], 128) << i;
+            continue;
+        }
         EXPECT_LE(std::abs(int(unscaled.texels[i]) - int(normals.texels[i])), 1) << i;
+    }
     for (size_t i = 0; i < flat.texels.size(); i += 4) {
         EXPECT_EQ(flat.texels[i + 0], 128);
         EXPECT_EQ(flat.texels[i + 1], 128);
         EXPECT_EQ(flat.texels[i + 2], 255);
-        EXPECT_EQ(flat.texels[i + 3], 255);
+        EXPECT_EQ(flat.texels[i + 3], 128);  // slopes that do not spread: the neutral kurtosis 2
     }
     // The scaled normals' cavity is the flat one's; the unscaled map's is not.
     for (uint8_t c : out.textures[out.materials[1].cavity].texels) EXPECT_EQ(c, 255);

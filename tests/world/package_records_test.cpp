@@ -182,6 +182,8 @@ TEST(PackageRecords, EveryOptionalSectionRecordRoundTrips) {
     expectRoundTrip(range);
     DiskMaterialTextureSlots slots = patterned<DiskMaterialTextureSlots>();
     slots.factorsFolded = 1;
+    slots.baseRoughnessInAlpha = 1;
+    slots.slopeKurtosisInNormalAlpha = 1;
     std::memset(slots.reserved, 0, sizeof(slots.reserved));
     expectRoundTrip(slots);
 

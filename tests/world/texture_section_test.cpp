@@ -52,6 +52,7 @@ world::ProcessedTextures sampleTextures() {
     stone.cavity = 2;
     stone.factorsFolded = true;
     stone.baseRoughnessInAlpha = true;
+    stone.slopeKurtosisInNormalAlpha = true;
     p.materials.push_back(stone);
     p.materials.push_back(world::MaterialTextureSlots{});
     return p;
@@ -134,6 +135,7 @@ void expectSame(const world::ProcessedTextures& a, const world::ProcessedTexture
         EXPECT_EQ(x.cavity, y.cavity) << m;
         EXPECT_EQ(x.factorsFolded, y.factorsFolded) << m;
         EXPECT_EQ(x.baseRoughnessInAlpha, y.baseRoughnessInAlpha) << m;
+        EXPECT_EQ(x.slopeKurtosisInNormalAlpha, y.slopeKurtosisInNormalAlpha) << m;
     }
 }
 
@@ -322,6 +324,12 @@ TEST(TextureSection, RejectsAnUnknownEnumeration) {
     expectRejected(patched<uint8_t>(s, materialField(1, base), 1),
                    "material 1: baseRoughnessInAlpha 1 without a metallicRoughness texture; "
                    "expected 0");
+    const size_t kurtosis = offsetof(DiskMaterialTextureSlots, slopeKurtosisInNormalAlpha);
+    expectRejected(patched<uint8_t>(s, materialField(0, kurtosis), 3),
+                   "material 0: slopeKurtosisInNormalAlpha 3; expected 0 or 1");
+    // ... and this one of the normal texture.
+    expectRejected(patched<uint8_t>(s, materialField(1, kurtosis), 1),
+                   "material 1: slopeKurtosisInNormalAlpha 1 without a normal texture; expected 0");
 }
 
 TEST(TextureSection, RejectsANonZeroReservedField) {
@@ -332,8 +340,8 @@ TEST(TextureSection, RejectsANonZeroReservedField) {
         patched<uint8_t>(s, textureField(2, offsetof(DiskProcessedTexture, reserved)), 9),
         "texture 2: reserved[0] 9");
     expectRejected(
-        patched<uint8_t>(s, materialField(1, offsetof(DiskMaterialTextureSlots, reserved) + 1), 1),
-        "material 1: reserved[1] 1");
+        patched<uint8_t>(s, materialField(1, offsetof(DiskMaterialTextureSlots, reserved)), 1),
+        "material 1: reserved[0] 1");
 }
 
 TEST(TextureSection, RejectsBadNames) {

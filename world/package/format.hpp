@@ -528,7 +528,9 @@ struct DiskMaterialTextureSlots {
     uint8_t baseRoughnessInAlpha;  // 0 or 1: A of its metallic-roughness texture is the
                                    // roughness of the texels' own lobes under each mip texel
                                    // (G also holds the spread of the normals there)
-    uint8_t reserved[2];           // 0
+    uint8_t slopeKurtosisInNormalAlpha;  // 0 or 1: A of its normal texture is the kurtosis k of
+                                         // the slopes under each mip texel, as (k - 1) / 2
+    uint8_t reserved[1];                 // 0
 };
 static_assert(sizeof(DiskMaterialTextureSlots) == 28);
 

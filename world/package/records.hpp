@@ -838,6 +838,7 @@ inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visib
     d.cavity = s.cavity;
     d.factorsFolded = s.factorsFolded ? 1 : 0;
     d.baseRoughnessInAlpha = s.baseRoughnessInAlpha ? 1 : 0;
+    d.slopeKurtosisInNormalAlpha = s.slopeKurtosisInNormalAlpha ? 1 : 0;
     return d;
 }
 
@@ -852,6 +853,7 @@ inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visib
     s.cavity = d.cavity;
     s.factorsFolded = d.factorsFolded != 0;
     s.baseRoughnessInAlpha = d.baseRoughnessInAlpha != 0;
+    s.slopeKurtosisInNormalAlpha = d.slopeKurtosisInNormalAlpha != 0;
     return s;
 }
 

@@ -189,6 +189,12 @@ void check(const DiskMaterialTextureSlots& d, const std::vector<world::Processed
         throw world::Error(at +
                            "baseRoughnessInAlpha 1 without a metallicRoughness texture; "
                            "expected 0");
+    if (d.slopeKurtosisInNormalAlpha > 1)
+        throw world::Error(at + "slopeKurtosisInNormalAlpha " +
+                           std::to_string(d.slopeKurtosisInNormalAlpha) + "; expected 0 or 1");
+    if (d.slopeKurtosisInNormalAlpha == 1 && d.normal == kNoIndex)
+        throw world::Error(at +
+                           "slopeKurtosisInNormalAlpha 1 without a normal texture; expected 0");
     checkReserved(at, d.reserved);
 }
 

@@ -189,21 +189,29 @@ vec3 secondaryIrradiance(vec3 n) {
 }
 
 // A pixel's footprint of a normal map (shaders/material.glsl, "A footprint's bumps"): the share
-// of its lobe that is the normals' spread, and the ring of its normals with their energy split
-// at the texels' own gloss. bumpShare 0: one texel, shaded as such (the rest unset).
+// of its lobe that is the normals' spread, the shape of its facets, and its normals (the ring,
+// then the mean normal) with their weights and energy split at the texels' own gloss.
+// bumpShare 0: one texel, shaded as such (the rest unset).
 struct Footprint {
     float bumpShare;
-    vec3 normals[FOOTPRINT_RING_COUNT];         // bent as the pixel's normal is
+    float facetGaussianShare;                   // footprintReflectanceShaped's
+    vec3 normals[FOOTPRINT_RING_COUNT];         // the ring, bent as the pixel's normal is
     vec3 diffuseWeights[FOOTPRINT_RING_COUNT];  // diffuseEnergyWeight at each
+    float ringWeight;                           // each ring normal's weight
+    vec3 centre;                                // the pixel's (mean) normal
+    float centreWeight;                         // 1 - FOOTPRINT_RING_COUNT ringWeight
+    vec3 centreDiffuseWeight;                   // diffuseEnergyWeight there (0 at weight 0)
     vec2 env;  // the mean (scale, bias) of their lobes, less what the surface's plane cuts
 };
 
 // Below this share the footprint is one texel: the ring's normals would be the pixel's own.
 const float MIN_BUMP_SHARE = 1e-3;
 
-// The footprint of a pixel of normal n (bent; ns the surface's normal), view v, lobe `gloss`
-// and texels' own lobes `baseGloss`.
-Footprint footprintOf(vec3 n, vec3 ns, vec3 v, float gloss, float baseGloss, vec3 f0) {
+// The footprint of a pixel of normal n (bent; ns the surface's normal), view v, lobe `gloss`,
+// texels' own lobes `baseGloss` and slopes' kurtosis `kurtosis` (0: not known, a ring of
+// Beckmann facets as before the texture stage stored it).
+Footprint footprintOf(vec3 n, vec3 ns, vec3 v, float gloss, float baseGloss, float kurtosis,
+                      vec3 f0) {
     Footprint f;
     f.bumpShare = bumpShare(gloss, baseGloss);
     f.env = vec2(0.0);
@@ -215,8 +223,17 @@ Footprint footprintOf(vec3 n, vec3 ns, vec3 v, float gloss, float baseGloss, vec
     }
     t /= tl;
     vec3 b = cross(n, t);
-    float radius = bumpSlopeRadius(gloss, baseGloss);
+    float s2 = bumpSlopeVariance(gloss, baseGloss);
     float baseAlpha = ggxAlpha_fromGloss(baseGloss);
+    float known = kurtosis > 0.0 ? kurtosis : 1.0;
+    f.facetGaussianShare =
+        kurtosis > 0.0 ? facetGaussianShare_fromKurtosis(kurtosis, s2, baseAlpha * baseAlpha) : 1.0;
+    float radius = footprintRingRadius(sqrt(s2), known);
+    float centre = footprintCentreWeight(known);
+    // The ring in loops of FOOTPRINT_RING_COUNT and the mean normal beside them: lavapipe unrolls
+    // the loops and keeps the arrays in registers (seven normals in the loops put them in memory,
+    // x1.25 on a frame of such a floor).
+    f.ringWeight = (1.0 - centre) / float(FOOTPRINT_RING_COUNT);
     for (int k = 0; k < FOOTPRINT_RING_COUNT; ++k) {
         vec3 nk = normal_withValidReflection(footprintRingNormal(n, t, b, radius, k), ns, v);
         // The fit, not the table: six texture fetches cost lavapipe more than its polynomial.
@@ -225,7 +242,15 @@ Footprint footprintOf(vec3 n, vec3 ns, vec3 v, float gloss, float baseGloss, vec
         f.diffuseWeights[k] = diffuseEnergyWeight(MATERIAL_CLASS, f0, e);
         f.env += e * specularShareAboveSurface(nk, ns, v, baseAlpha);
     }
-    f.env *= 1.0 / float(FOOTPRINT_RING_COUNT);
+    f.env *= f.ringWeight;
+    f.centre = n;
+    f.centreWeight = centre;
+    f.centreDiffuseWeight = vec3(0.0);
+    if (centre > 0.0) {  // evaluated only where it has weight
+        vec2 e = EnvBRDF_Fit(clamp(dot(n, v), MIN_NOV, 1.0), baseGloss);
+        f.centreDiffuseWeight = diffuseEnergyWeight(MATERIAL_CLASS, f0, e);
+        f.env += e * (specularShareAboveSurface(n, ns, v, baseAlpha) * centre);
+    }
     return f;
 }
 
@@ -236,7 +261,8 @@ vec3 footprintDiffuseWeight(Footprint f, vec3 l, float NoL) {
     vec3 sum = vec3(0.0);
     for (int k = 0; k < FOOTPRINT_RING_COUNT; ++k)
         sum += f.diffuseWeights[k] * max(dot(f.normals[k], l), 0.0);
-    return sum / (float(FOOTPRINT_RING_COUNT) * max(NoL, 1e-6));
+    sum = sum * f.ringWeight + f.centreDiffuseWeight * (f.centreWeight * max(dot(f.centre, l), 0.0));
+    return sum / max(NoL, 1e-6);
 }
 
 // The same for the secondary irradiance E(n) (irradiance: at the pixel's normal): the mean of
@@ -251,9 +277,13 @@ vec3 footprintSecondaryWeight(Footprint f, vec3 irradiance) {
         sum += f.diffuseWeights[k] * e;
         weights += f.diffuseWeights[k];
     }
-    vec3 mean = weights * (1.0 / float(FOOTPRINT_RING_COUNT));
-    vec3 scale = sum * (1.0 / float(FOOTPRINT_RING_COUNT));
-    return mix(mean, scale / max(irradiance, vec3(1e-12)), greaterThan(irradiance, vec3(1e-12)));
+    sum *= f.ringWeight;
+    weights *= f.ringWeight;
+    if (f.centreWeight > 0.0) {  // the pixel's own irradiance, at its normal
+        sum += f.centreDiffuseWeight * (f.centreWeight * irradiance);
+        weights += f.centreDiffuseWeight * f.centreWeight;
+    }
+    return mix(weights, sum / max(irradiance, vec3(1e-12)), greaterThan(irradiance, vec3(1e-12)));
 }
 
 // The baked visibility of the draw's primary: a static surface's shadow mask, a dynamic object's
@@ -332,9 +362,9 @@ vec3 directReflectance(vec3 albedo, vec3 f0, float gloss, vec2 directEnv, Footpr
                        float cavity, vec3 l, BrdfDots d) {
     if (footprint.bumpShare == 0.0)
         return surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity, d);
-    return footprintReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo,
-                                footprintDiffuseWeight(footprint, l, d.NoL), f0, gloss,
-                                footprint.bumpShare, cavity, d);
+    return footprintReflectanceShaped(MATERIAL_CLASS, DIFFUSE_MODEL, albedo,
+                                      footprintDiffuseWeight(footprint, l, d.NoL), f0, gloss,
+                                      footprint.bumpShare, footprint.facetGaussianShare, cavity, d);
 }
 
 // The radiance primary light `light` (of type `type`) reflects at p, times its shadow.
@@ -398,10 +428,13 @@ void main() {
     float viewDistance = length(toCamera);
     vec3 v = toCamera / max(viewDistance, 1e-6);
     vec3 n = geometricNormal;
+    float slopeKurtosis = 0.0;  // the normal map's slopes under this pixel, where it holds them
     if (materialHas(m, TEXTURE_NORMAL)) {
         vec3 t = inTangent.xyz - geometricNormal * dot(geometricNormal, inTangent.xyz);
         float tl = length(t);
-        vec3 texel = texture(normalTexture, inUv0).rgb;
+        vec4 normalTexel = texture(normalTexture, inUv0);
+        vec3 texel = normalTexel.rgb;
+        if (hasMaterialFlag(m, MATERIAL_FLAG_SLOPE_KURTOSIS)) slopeKurtosis = 1.0 + 2.0 * normalTexel.a;
         if (tl > 1e-6) n = normal_fromTangentSpace(texel, m.params.z, geometricNormal, t / tl, inTangent.w);
         n = normal_withValidReflection(n, geometricNormal, v);
         // The filter's spread of the normals under this pixel folds into its gloss.
@@ -423,7 +456,7 @@ void main() {
     Footprint footprint;
     footprint.bumpShare = 0.0;
     if (MATERIAL_PIPELINE == 1 && MATERIAL_CLASS != MATERIAL_LAMBERT && materialHas(m, TEXTURE_NORMAL))
-        footprint = footprintOf(n, geometricNormal, v, gloss, baseGloss, f0);
+        footprint = footprintOf(n, geometricNormal, v, gloss, baseGloss, slopeKurtosis, f0);
 
     // The one primary light, times its shadow; a dynamic object's two while its switch
     // cross-fades (draw.fadeLight at 1 - draw.primaryWeight; PRIMARY_FADE pipelines only, so
