@@ -58,6 +58,9 @@ struct Material {
     float alphaCutoff = 0.5f;        // used when alphaMode == mask
     AlphaMode alphaMode = AlphaMode::kOpaque;
     bool doubleSided = false;
+    // false: light passes the surface in the bake, the reference and the runtime's shadow maps
+    // although it is drawn (a Quake 3 translucent surface, as q3map2 lights it: q3_import.hpp).
+    bool castsShadows = true;
     MaterialClass materialClass = MaterialClass::kFull;
     uint32_t baseColorTexture = kNoIndex;          // index into textures
     uint32_t metallicRoughnessTexture = kNoIndex;  // index into textures

@@ -25,13 +25,15 @@ enum class Coverage {
     kNone,      // no hit ever counts (alpha 0 everywhere): not given to Embree
 };
 
-/// The coverage of material `m`. A material without a base colour texture has one alpha (its
-/// factor), so MASK and BLEND are decided here once, exactly as the filter would decide every
-/// hit (alpha >= cutoff; a uniform in [0, 1) below alpha), and the filter only runs where alpha
-/// varies over the surface or BLEND's coin is needed.
+/// The coverage of material `m`. One that casts no shadow (world::Material::castsShadows) is
+/// never hit: light and view rays alike pass it. A material without a base colour texture has one
+/// alpha (its factor), so MASK and BLEND are decided here once, exactly as the filter would decide
+/// every hit (alpha >= cutoff; a uniform in [0, 1) below alpha), and the filter only runs where
+/// alpha varies over the surface or BLEND's coin is needed.
 Coverage coverageOf(const SceneMaterials& materials, uint32_t m) {
     if (m >= materials.materials.size()) return Coverage::kOpaque;
     const world::Material& material = materials.materials[m];
+    if (!material.castsShadows) return Coverage::kNone;  // drawn, but light passes it
     if (material.alphaMode == world::AlphaMode::kOpaque) return Coverage::kOpaque;
     if (materials.textureSets[m].baseColor != world::kNoIndex) return Coverage::kFiltered;
     const float alpha = material.baseColor.w;

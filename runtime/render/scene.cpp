@@ -372,6 +372,7 @@ void uploadMaterialRecords(const vk::Context& ctx, SceneMaterials& materials,
         materials.classes.push_back(cls);
         materials.doubleSided.push_back(m.doubleSided ? 1 : 0);
         materials.alphaMode.push_back(uint8_t(m.alphaMode));
+        materials.castsShadows.push_back(m.castsShadows ? 1 : 0);
         // A blended caster's shadow map holds the texels at least half opaque (the baked mask
         // transmits 1 - alpha; a depth map can only hold a texel or not).
         materials.maskAlpha.emplace_back(
@@ -724,6 +725,7 @@ void createMaterials(const vk::Context& ctx, SceneMaterials& materials,
             uint8_t(options.forceMaterialClass >= 0 ? options.forceMaterialClass : 3));
         materials.doubleSided.push_back(0);
         materials.alphaMode.push_back(uint8_t(world::AlphaMode::kOpaque));
+        materials.castsShadows.push_back(1);
         materials.maskAlpha.emplace_back(1.0f, 0.0f);
         materials.textureSlots.push_back(0);
     }

@@ -95,6 +95,7 @@ struct SceneMaterials {
     std::vector<uint8_t> classes;                  // per material, after forceMaterialClass
     std::vector<uint8_t> doubleSided;              // per material
     std::vector<uint8_t> alphaMode;                // per material: world::AlphaMode
+    std::vector<uint8_t> castsShadows;             // per material: 0 if light passes it
     std::vector<glm::vec2> maskAlpha;   // per material: the base colour's alpha factor, the cutoff
     std::vector<uint8_t> textureSlots;  // per material: bit mask of TEXTURE_* filled
 };

@@ -123,6 +123,12 @@ void pushMasked(VkCommandBuffer cmd, const ShadowDraw& draw, uint32_t material,
                        &push);
 }
 
+// Whether `material` casts a shadow at all (world::Material::castsShadows): the bake lets light
+// through the others, so the shadow maps leave them out too.
+bool casts(const ShadowDraw& draw, uint32_t material) {
+    return draw.materials->castsShadows[material] != 0;
+}
+
 // The static casters in the view's frustum: the opaque ones, then the alpha-masked ones.
 void drawStaticCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const SceneGeometry& geometry,
                        const ShadowView& view) {
@@ -132,7 +138,8 @@ void drawStaticCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const SceneG
                        &view.viewProj);
     bool anyMasked = false;
     for (const DrawSurface& surface : geometry.surfaces)
-        if (intersects(frustum, surface.boundsMin, surface.boundsMax)) {
+        if (casts(draw, surface.material) &&
+            intersects(frustum, surface.boundsMin, surface.boundsMax)) {
             if (masked(draw, surface.material))
                 anyMasked = true;
             else
@@ -141,7 +148,7 @@ void drawStaticCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const SceneG
     if (!anyMasked) return;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.masked);
     for (const DrawSurface& surface : geometry.surfaces)
-        if (masked(draw, surface.material) &&
+        if (masked(draw, surface.material) && casts(draw, surface.material) &&
             intersects(frustum, surface.boundsMin, surface.boundsMax)) {
             pushMasked(cmd, draw, surface.material, view.viewProj);
             vkCmdDrawIndexed(cmd, surface.indexCount, 1, surface.firstIndex, 0, 0);
@@ -152,7 +159,7 @@ void drawDynamicCasters(VkCommandBuffer cmd, const ShadowDraw& draw, const Scene
                         const ShadowView& view, const std::vector<glm::mat4>& entityTransforms,
                         const std::vector<uint8_t>& entityHidden) {
     for (const DrawDynamicMesh& mesh : geometry.dynamicMeshes) {
-        if (!mesh.castsShadow || entityHidden[mesh.entity]) continue;
+        if (!mesh.castsShadow || !casts(draw, mesh.material) || entityHidden[mesh.entity]) continue;
         const glm::mat4 clip = view.viewProj * entityTransforms[mesh.entity];
         if (masked(draw, mesh.material)) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.masked);

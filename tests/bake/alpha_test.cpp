@@ -511,5 +511,23 @@ TEST(AlphaTransport, AConstantAlphaIsDecidedOnceAsTheFilterWould) {
     }
 }
 
+// A material that casts no shadow (world::Material::castsShadows false: a Quake 3 translucent
+// surface) is never hit, whatever its alpha: every shadow ray passes it and a view ray finds the
+// floor below it; with the flag set again the OPAQUE sheet stops them all.
+TEST(AlphaTransport, AMaterialThatCastsNoShadowIsPassedByEveryRay) {
+    world::SourceLevel level = grateLevel(world::AlphaMode::kOpaque, 1.0f);
+    for (const bool casts : {false, true}) {
+        level.materials[1].castsShadows = casts;
+        const LevelScene s(level);
+        EXPECT_EQ(openFraction(blocked(s.scene, shadowRaysThroughTheGrate(s.scene, 1000))),
+                  casts ? 0.0 : 1.0);
+        uint64_t counter = 0;
+        const SurfaceHit hit =
+            s.scene.intersect({0.1f, 2.0f, 0.1f}, {0.0f, -1.0f, 0.0f}, 10.0f, counter);
+        ASSERT_TRUE(hit.found);
+        EXPECT_EQ(s.scene.materialIndexOf(hit.triangle), casts ? 1u : 0u);
+    }
+}
+
 }  // namespace
 }  // namespace onelight::bake

@@ -2,7 +2,7 @@
 // texture is open on a quarter of its area, under a sun, seen from below the grate on the
 // floor its shadow falls on. Near the camera (the runtime map) and beyond the runtime radius (the
 // baked shadow mask) the floor gets the same share of the sun, the grate's open fraction; the
-// runtime shadow draws the holes themselves.
+// runtime shadow draws the holes themselves; a grate that casts no shadow is left out of it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -156,6 +156,22 @@ TEST(MaskedShadowCasters, AGrateLetsTheSunThroughItsHolesAsTheBakedMaskDoes) {
     EXPECT_GT(runtime.shut, 0.5 * (1.0 - kOpenFraction));
     // The baked mask, coarser than the holes, keeps their mean.
     EXPECT_NEAR(baked.mean, runtime.mean, 0.06);
+
+    // A grate that casts no shadow (world::Material::castsShadows false, a Quake 3 translucent
+    // surface) is left out of the runtime map: with the baked mask off (it was baked with the
+    // grate casting) the floor gets the whole sun, where the casting grate's map gives a quarter.
+    const uint32_t kNoBakedShadow = uint32_t(glsl::FEATURE_BAKED_SHADOW);
+    assets::LoadedLevel passed = level;
+    for (world::Material& m : passed.level.materials)
+        if (m.name == "grate") m.castsShadows = false;
+    const Openness none =
+        opennessOf(luminanceOf(passed, 0.0f, kNoBakedShadow), noPrimary, unshadowed);
+    const Openness mapOnly =
+        opennessOf(luminanceOf(level, 0.0f, kNoBakedShadow), noPrimary, unshadowed);
+    std::printf("[ masked casters ] runtime map alone: %.3f; the grate casting no shadow: %.3f\n",
+                mapOnly.mean, none.mean);
+    EXPECT_NEAR(mapOnly.mean, kOpenFraction, 0.05);
+    EXPECT_GT(none.mean, 0.97);
 }
 
 }  // namespace

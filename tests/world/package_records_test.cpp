@@ -93,7 +93,7 @@ TEST(PackageRecords, EveryCoreRecordRoundTrips) {
     material.alphaMode = 2;
     material.doubleSided = 1;
     material.materialClass = 3;
-    material.reserved = 0;
+    material.flags = kMaterialFlagNoShadows;
     expectRoundTrip(material, materialBlobs);
 
     expectRoundTrip(patterned<DiskTexture>());

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -170,12 +171,24 @@ TEST(Quake3LightSources, LightsAreTakenAndLeftOutAsQ3map2Does) {
                   "{\n\"classname\" \"light\"\n\"origin\" \"0 0 32\"\n\"light\" \"500\"\n"
                   "\"targetname\" \"switch1\"\n}\n"
                   "{\n\"classname\" \"light\"\n\"origin\" \"0 0 48\"\n\"light\" \"500\"\n"
-                  "\"noradiosity\" \"1\"\n}\n");
+                  "\"noradiosity\" \"1\"\n}\n"
+                  // Any class named "light..." is a light to q3map2: a light_spot with no target
+                  // is a point light; lightJunior lights only the grid.
+                  "{\n\"classname\" \"light_spot\"\n\"origin\" \"0 0 80\"\n\"light\" \"150\"\n"
+                  "\"_cone\" \"30\"\n\"pitch\" \"-90\"\n}\n"
+                  "{\n\"classname\" \"Light\"\n\"origin\" \"0 0 88\"\n\"light\" \"50\"\n}\n"
+                  "{\n\"classname\" \"lightJunior\"\n\"origin\" \"0 0 72\"\n\"light\" \"500\"\n}\n"
+                  "{\n\"classname\" \"misc_lighthouse\"\n\"origin\" \"0 0 72\"\n\"light\" "
+                  "\"500\"\n}\n");
     const SourceLevel level =
         importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder("keys_game")));
-    ASSERT_EQ(level.lights.size(), 5u);
+    ASSERT_EQ(level.lights.size(), 7u);
     EXPECT_NEAR(level.lights[3].intensity, 100.0 * 7500.0 / 1024.0, 1e-3);  // "_light" first
     EXPECT_NEAR(level.lights[4].intensity, 300.0 * 7500.0 / 1024.0, 1e-3);  // 0: q3map2's 300
+    EXPECT_EQ(level.lights[5].type, LightType::kPoint);  // light_spot without a target
+    EXPECT_NEAR(level.lights[5].intensity, 150.0 * 7500.0 / 1024.0, 1e-3);
+    EXPECT_NEAR(level.lights[6].intensity, 50.0 * 7500.0 / 1024.0, 1e-3);  // the class's case
+    EXPECT_TRUE(mentions(level.importNotes, "1 lightJunior light(s) left out"));
     EXPECT_TRUE(mentions(level.importNotes, "1 light(s) with a targetname left out"));
     EXPECT_TRUE(mentions(level.importNotes, "1 light(s) with \"noradiosity\" 1 left out"));
 
@@ -323,6 +336,49 @@ TEST(Quake3LightSources, ASurfaceLightHasQ3map2sColour) {
             << "channel " << c;
     }
     EXPECT_TRUE(mentions(level.lightSources, "surface lights: 1 shader(s), 2 triangles"));
+}
+
+// q3map2 traces no translucent surface (surfaceparm trans, water and the other parms its game
+// table marks translucent) unless it is alphashadow or lightfilter: such a material casts no
+// shadow, from its script or, without one, from the contents q3map2 compiled into the BSP.
+TEST(Quake3LightSources, TranslucentSurfacesCastNoShadowAsInQ3map2) {
+    const auto game = freshFolder("trans_game");
+    const auto shader = [](const std::string& name, const std::string& parms) {
+        return "textures/test/" + name + "\n{\n" + parms +
+               " {\n  map textures/test/glow.tga\n  blendFunc add\n }\n}\n";
+    };
+    writePk3(game / "trans.pk3",
+             {{"scripts/trans.shader",
+               shader("glow", " surfaceparm trans\n") + shader("pool", " surfaceparm water\n") +
+                   shader("grate", " surfaceparm trans\n surfaceparm alphashadow\n") +
+                   shader("tinted", " surfaceparm trans\n surfaceparm lightfilter\n") +
+                   shader("plain", " surfaceparm nomarks\n")},
+              {"textures/test/glow.tga", tgaImage(1, {{200, 200, 200}})}});
+    const std::vector<std::pair<std::string, bool>> cases = {
+        {"glow", false}, {"pool", false}, {"grate", true}, {"tinted", true}, {"plain", true}};
+    for (const auto& [name, casts] : cases) {
+        const auto folder = freshFolder("trans_" + name);
+        Quake3BspBuilder bsp = floorSquare(0);
+        std::strcpy(bsp.shaders[0].name, ("textures/test/" + name).c_str());
+        writeFile(folder / "room.bsp", bsp.text());
+        const SourceLevel level = importLevel((folder / "room.bsp").string(), quake3GameIn(game));
+        ASSERT_EQ(level.materials.size(), 1u) << name;
+        EXPECT_EQ(level.materials[0].castsShadows, casts) << name;
+    }
+    // No script: the BSP's contents (CONTENTS_TRANSLUCENT, a liquid), and SURF_ALPHASHADOW.
+    const std::vector<std::tuple<int32_t, int32_t, bool>> flags = {
+        {0x20000000, 0, false}, {0x20, 0, false}, {0x20000000, 0x10000, true}, {0x1, 0, true}};
+    for (const auto& [contents, surface, casts] : flags) {
+        const auto folder = freshFolder("trans_flags");
+        Quake3BspBuilder bsp = floorSquare(0);
+        bsp.shaders[0].contentFlags = contents;
+        bsp.shaders[0].surfaceFlags = surface;
+        writeFile(folder / "room.bsp", bsp.text());
+        const SourceLevel level =
+            importLevel((folder / "room.bsp").string(), quake3GameIn(freshFolder("flags_game")));
+        ASSERT_EQ(level.materials.size(), 1u);
+        EXPECT_EQ(level.materials[0].castsShadows, casts) << contents << " " << surface;
+    }
 }
 
 // The BSP's entities: worldspawn with `worldspawnKeys`, and the source map's three lights (a

@@ -140,9 +140,11 @@ struct DiskMaterial {
     uint8_t alphaMode;                  // 0 opaque, 1 mask, 2 blend
     uint8_t doubleSided;                // 0 or 1
     uint8_t materialClass;              // 0 metal, 1 dielectric, 2 full, 3 lambert
-    uint8_t reserved;                   // 0
+    uint8_t flags;                      // kMaterialFlag* bits, the others 0
 };
 static_assert(sizeof(DiskMaterial) == 108);
+/// DiskMaterial::flags: the surface casts no shadow (world::Material::castsShadows false).
+inline constexpr uint8_t kMaterialFlagNoShadows = 1;
 
 struct DiskTexture {
     uint32_t image;      // into images or kNoIndex

@@ -359,6 +359,8 @@ private:
             fail(id, i, "alphaMode " + std::to_string(d.alphaMode) + "; expected 0..2");
         if (d.materialClass > 3)
             fail(id, i, "materialClass " + std::to_string(d.materialClass) + "; expected 0..3");
+        if ((d.flags & ~kMaterialFlagNoShadows) != 0)
+            fail(id, i, "flags " + std::to_string(d.flags) + "; expected 0 or 1 (no shadows)");
         if (d.gloss < 0.0f || d.gloss > 1.0f)
             fail(id, i, "gloss " + std::to_string(d.gloss) + "; expected [0, 1]");
     }

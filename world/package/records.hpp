@@ -163,6 +163,7 @@ namespace records {
     d.alphaMode = static_cast<uint8_t>(m.alphaMode);
     d.doubleSided = m.doubleSided ? 1 : 0;
     d.materialClass = static_cast<uint8_t>(m.materialClass);
+    d.flags = m.castsShadows ? 0 : kMaterialFlagNoShadows;
     return d;
 }
 
@@ -188,6 +189,7 @@ namespace records {
     m.alphaMode = static_cast<world::AlphaMode>(d.alphaMode);
     m.doubleSided = d.doubleSided != 0;
     m.materialClass = static_cast<world::MaterialClass>(d.materialClass);
+    m.castsShadows = (d.flags & kMaterialFlagNoShadows) == 0;
     return m;
 }
 

@@ -54,18 +54,21 @@ struct BspShader {
 static_assert(sizeof(BspShader) == 72);
 
 /// Surface flags the importer reads (surfaceflags.h).
-inline constexpr int32_t kSurfNoDraw = 0x80;  // SURF_NODRAW: never drawn (clip, triggers)
-inline constexpr int32_t kSurfSky = 0x4;      // SURF_SKY: the sky, drawn as the background
-inline constexpr int32_t kSurfHint = 0x100;   // SURF_HINT
-inline constexpr int32_t kSurfSkip = 0x200;   // SURF_SKIP
+inline constexpr int32_t kSurfNoDraw = 0x80;          // SURF_NODRAW: never drawn (clip, triggers)
+inline constexpr int32_t kSurfSky = 0x4;              // SURF_SKY: the sky, drawn as the background
+inline constexpr int32_t kSurfHint = 0x100;           // SURF_HINT
+inline constexpr int32_t kSurfSkip = 0x200;           // SURF_SKIP
+inline constexpr int32_t kSurfLightFilter = 0x8000;   // SURF_LIGHTFILTER: q3map2 filters light
+inline constexpr int32_t kSurfAlphaShadow = 0x10000;  // SURF_ALPHASHADOW: q3map2 shadows by alpha
 /// Content flags the importer reads.
-inline constexpr int32_t kContentsSolid = 0x1;           // CONTENTS_SOLID
-inline constexpr int32_t kContentsLava = 0x8;            // CONTENTS_LAVA
-inline constexpr int32_t kContentsSlime = 0x10;          // CONTENTS_SLIME
-inline constexpr int32_t kContentsWater = 0x20;          // CONTENTS_WATER
-inline constexpr int32_t kContentsFog = 0x40;            // CONTENTS_FOG: a fog volume's faces
-inline constexpr int32_t kContentsPlayerClip = 0x10000;  // CONTENTS_PLAYERCLIP: clip brushes
-inline constexpr int32_t kContentsTrigger = 0x40000000;  // CONTENTS_TRIGGER
+inline constexpr int32_t kContentsSolid = 0x1;               // CONTENTS_SOLID
+inline constexpr int32_t kContentsLava = 0x8;                // CONTENTS_LAVA
+inline constexpr int32_t kContentsSlime = 0x10;              // CONTENTS_SLIME
+inline constexpr int32_t kContentsWater = 0x20;              // CONTENTS_WATER
+inline constexpr int32_t kContentsFog = 0x40;                // CONTENTS_FOG: a fog volume's faces
+inline constexpr int32_t kContentsPlayerClip = 0x10000;      // CONTENTS_PLAYERCLIP: clip brushes
+inline constexpr int32_t kContentsTranslucent = 0x20000000;  // CONTENTS_TRANSLUCENT
+inline constexpr int32_t kContentsTrigger = 0x40000000;      // CONTENTS_TRIGGER
 
 /// A plane (qfiles.h dplane_t), in map units, Z up: dot(normal, p) == dist on it.
 struct BspBrushPlane {

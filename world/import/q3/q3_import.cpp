@@ -7,6 +7,8 @@
 #include <iterator>
 #include <map>
 #include <numbers>
+#include <set>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -84,6 +86,24 @@ bool drawn(const BspShader& shader, const ShaderScript* script) {
                              "common/hint", "common/skip", "textures/skies/", "/sky", "noshader"})
         if (name.find(skip) != std::string::npos) return false;
     return true;
+}
+
+// Whether q3map2 lets a shader's surfaces shadow: light_trace.c traces no translucent surface
+// unless it is alphashadow or lightfilter, translucent being the surfaceparms its game table
+// marks C_TRANSLUCENT. From the script; castsShadowInBsp reads the flags q3map2 compiled.
+bool castsShadowInQ3map2(const ShaderScript& script) {
+    const std::set<std::string>& parms = script.surfaceParms;
+    if (parms.count("alphashadow") || parms.count("lightfilter")) return true;
+    for (const char* parm :
+         {"trans", "water", "slime", "lava", "origin", "areaportal", "trigger", "playerclip",
+          "monsterclip", "nodrop", "clusterportal", "donotenter", "botclip"})
+        if (parms.count(parm)) return false;
+    return true;
+}
+bool castsShadowInBsp(const BspShader& shader) {
+    if (shader.surfaceFlags & (kSurfAlphaShadow | kSurfLightFilter)) return true;
+    return !(shader.contentFlags &
+             (kContentsTranslucent | kContentsWater | kContentsSlime | kContentsLava));
 }
 
 // The image path without a .tga, .png or .jpg extension.
@@ -179,7 +199,9 @@ struct MaterialTable {
     uint32_t materialOf(const BspShader& shader, int32_t index, const ShaderScript* script) {
         const auto found = byShader.find(index);
         if (found != byShader.end()) return found->second;
-        return byShader[index] = makeMaterial(shaderName(shader), script);
+        const uint32_t m = makeMaterial(shaderName(shader), script);
+        if (!script) level.materials[m].castsShadows = castsShadowInBsp(shader);
+        return byShader[index] = m;
     }
 
     // A model surface's material: its shader's script where one is named so, else the image.
@@ -214,6 +236,7 @@ struct MaterialTable {
         }
         if (script) {
             m.doubleSided = script->cullNone;
+            m.castsShadows = castsShadowInQ3map2(*script);
             if (script->surfaceLight > 0.0f) {
                 // q3map2 gives an area light value x area x 0.25 photons (a point light
                 // value x 7500): at 1 lux per lightmap unit and 1/32 m per unit that is a
@@ -350,7 +373,7 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
     for (const MapEntity& e : entities)
         if (e.keys.count("targetname"))
             targets[e.get("targetname")] = vectorKey(e, "origin", glm::vec3(0.0f), where);
-    uint32_t linear = 0, halfLife = 0, switched = 0, noRadiosity = 0, suns = 0;
+    uint32_t linear = 0, halfLife = 0, switched = 0, noRadiosity = 0, suns = 0, junior = 0;
     // A light baked until chooseLightRoles, once its intensity and range are numbers.
     auto keep = [&](const MapEntity& e, Light& l) {
         if (!std::isfinite(l.intensity) || !std::isfinite(l.range))
@@ -362,7 +385,15 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
         level.lights.push_back(l);
     };
     for (const MapEntity& e : entities) {
-        if (e.get("classname") != "light") continue;
+        // q3map2 takes every class whose name starts with "light", in any case (Nexuiz's
+        // light_spot without a target is a point light there); "lightJunior" lights only its
+        // light grid, never a surface, so the bake leaves it out with a note.
+        const std::string type = fileKey(e.get("classname"));
+        if (!type.starts_with("light")) continue;
+        if (type.starts_with("lightjunior")) {
+            ++junior;
+            continue;
+        }
         if (e.get("noradiosity").starts_with("1")) {
             ++noRadiosity;
             continue;
@@ -453,6 +484,10 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
         level.importNotes.push_back(where + ": " + std::to_string(suns) +
                                     " spot light(s) with \"_sun\" 1 made suns along their axes "
                                     "(directional, the value in lux), as q3map2 does");
+    if (junior > 0)
+        level.importNotes.push_back(where + ": " + std::to_string(junior) +
+                                    " lightJunior light(s) left out: q3map2 lights only its "
+                                    "light grid with them, never a surface");
     if (noRadiosity > 0)
         level.importNotes.push_back(where + ": " + std::to_string(noRadiosity) +
                                     " light(s) with \"noradiosity\" 1 left out, as q3map2 does");

@@ -64,6 +64,10 @@ namespace onelight::world {
    texture), its factor per channel q3map2's colour over the image's mean sRGB-decoded value:
    q3map2 lights with the mean of the image's bytes as stored (display-referred, not decoded)
    normalised to a brightest channel of 1, so the emission averages to 0.25 S times that.
+   A translucent shader (surfaceparm trans, water, slime, lava and the other parms q3map2 marks
+   translucent, or, without a script, the BSP's translucent and liquid contents) casts no shadow
+   unless it is alphashadow or lightfilter: q3map2 traces no such surface, so light passes it in
+   the bake and the runtime's shadow maps too (world::Material::castsShadows), although it is drawn.
    Surfaceparm nodraw, sky, fog, hint and skip leave a surface out. A sky shader's q3map_sun is a
    primary directional light (intensity in lux), its q3map_skylight V a uniform sky of V / pi cd/m^2
    (V lux on an open floor); without one, its q3map_surfacelight S (q3map2 makes the sky's faces
