@@ -7,7 +7,7 @@ headless, and draw the same view with the map's own q3map2 lightmaps (--view q3m
 exposure. Reports per map: OK, approximated (the import or bake warned: what it approximated or
 left out) or refused (with the reason), compile and bake seconds, the bake's peak memory, the
 package's size, the frame's GPU time, how the two frames' mean linear colours differ (luminance
-ratio, chromaticity distance in CIE xy), and what the map's recorded q3map2 -light stage did. Writes a markdown table per game and a summary to OUT
+ratio of the means and of the median 8x8 block, chromaticity distance in CIE xy), and what the map's recorded q3map2 -light stage did. Writes a markdown table per game and a summary to OUT
 (atomically: a temporary file renamed over it, after every map, so that an interrupted run keeps
 what it measured), with a progress line per map on stderr. A map
 that fails is reported and the run carries on.
@@ -149,6 +149,18 @@ def frame_radiance(capture_json):
     return json.load(open(capture_json))["radiance"]["mean_rgb"]
 
 
+def median_ratio(args, own_exr, q3_exr):
+    """The median 8x8 block's luminance in our frame over q3map2's view (onelight-lab
+    frame-error's median_level): the level of a typical surface, which the lamps' own pixels
+    (emission in ours, lightmapped texture in q3map2's) do not move; None without the lab or the
+    captures."""
+    if not args.lab or not (os.path.exists(own_exr) and os.path.exists(q3_exr)):
+        return None
+    code, out, _ = run([args.lab, "frame-error", own_exr, q3_exr], args)
+    m = re.search(r"median_level=([0-9.eE+-]+)", out) if code == 0 else None
+    return float(m.group(1)) if m else None
+
+
 def light_from(compile_output):
     """Where the map's baked light came from, from the import's light-source lines: the BSP's
     light entities, its source .map's, or q3map2's own lightmaps (then the luminance ratio is 1
@@ -237,6 +249,9 @@ def one_map(name, pk3, inner, args, work, stem):
             theirs = frame_radiance(q3 + ".json")
             if luminance(theirs) > 1e-6:
                 row["lum_ratio"] = luminance(mean) / luminance(theirs)
+                median = median_ratio(args, own + ".exr", q3 + ".exr")
+                if median is not None:
+                    row["median_ratio"] = median
             a, b = chromaticity(mean), chromaticity(theirs)
             if a and b:
                 row["dxy"] = ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
@@ -280,8 +295,9 @@ def table(game, rows, shadowed):
              f"{len(rows)} maps" + (f" ({shadowed} older copies in earlier pk3s not run)"
                                    if shadowed else ""), "",
              "| map | pk3 | result | compile s | draft bake s | peak MiB | package MiB | "
-             "frame ms | light from | lum. ratio | Δxy | q3map2 -light | binaries | notes |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "frame ms | light from | lum. ratio | median block | Δxy | q3map2 -light | binaries "
+             "| notes |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         why = r["why"].replace("|", "\\|").replace("\n", " ")
         if len(why) > 300:
@@ -291,7 +307,8 @@ def table(game, rows, shadowed):
             cell(r, "bake_s", "{:.1f}"), cell(r, "peak_mib", "{:.0f}"),
             cell(r, "package_mib", "{:.1f}"), cell(r, "frame_ms", "{:.1f}"),
             r.get("light_from", ""),
-            cell(r, "lum_ratio", "{:.2f}"), cell(r, "dxy", "{:.3f}"),
+            cell(r, "lum_ratio", "{:.2f}"), cell(r, "median_ratio", "{:.2f}"),
+            cell(r, "dxy", "{:.3f}"),
             r.get("q3map2", "").replace("|", "\\|"), r.get("commit", "–"), why]) + " |")
     return lines + [""]
 
@@ -334,6 +351,10 @@ def main():
     args = p.parse_args()
     args.bake = os.path.join(args.bin, "onelight-bake")
     args.game_exe = os.path.join(args.bin, "onelight")
+    # The lab measures the median block's ratio; a copy of the binaries may not hold it.
+    args.lab = next((exe for exe in (os.path.join(args.bin, "onelight-lab"),
+                                     os.path.join(here, "..", "build", "bin", "onelight-lab"))
+                     if os.access(exe, os.X_OK)), None)
     for exe in (args.bake, args.game_exe):
         if not os.access(exe, os.X_OK):
             sys.exit(f"corpus: {exe}: missing; build onelight and onelight-bake first")
@@ -385,6 +406,13 @@ def main():
                     if code == 0:
                         row["light_from"] = light_from(out)
                         row["q3map2"] = q3map2_options(out)
+                if "lum_ratio" in row and "median_ratio" not in row:
+                    # A row from before the column: its captures in WORK tell (a second).
+                    stem = os.path.join(work, "captures", game_key + "-" +
+                                        re.sub(r"[^A-Za-z0-9_.-]", "_", name))
+                    median = median_ratio(args, stem + "-onelight.exr", stem + "-q3map2.exr")
+                    if median is not None:
+                        row["median_ratio"] = median
             else:
                 try:
                     stem = game_key + "-" + re.sub(r"[^A-Za-z0-9_.-]", "_", name)
@@ -424,7 +452,9 @@ def write_report(args, counts, sections, started, final):
              "package's size; the GPU time of one frame from spawn 0 (headless, lavapipe, "
              f"{args.size}); the frame's mean linear luminance (before exposure) over that of "
              "the q3map2 view of the same camera (1 by construction where the light is q3map2's "
-             "own lightmaps), and the distance of their mean colours' CIE "
+             "own lightmaps), the same for the median 8x8 block (a typical surface: the lamps' "
+             "own pixels, emission in ours and lightmapped texture in q3map2's, do not move it), "
+             "and the distance of their mean colours' CIE "
              "xy chromaticities; what the map's recorded q3map2 -light stage did (bounces, dirt, "
              "scales, the lightmap encoding the q3map2 view decodes). Approximated: the import or "
              "bake warned (notes)."), ""]

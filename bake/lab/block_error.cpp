@@ -57,6 +57,15 @@ BlockErrors blockErrors(const world::FloatImage& frame, const world::FloatImage&
         sum += e.relative.back();
     }
     e.mean = sum / double(e.relative.size());
+    std::vector<double> ratios;
+    for (size_t i = 0; i < mine.size(); ++i)
+        ratios.push_back(mine[i] == theirs[i] ? 1.0 : mine[i] / std::max(theirs[i], floor));
+    const size_t half = ratios.size() / 2;
+    std::nth_element(ratios.begin(), ratios.begin() + long(half), ratios.end());
+    e.medianLevel = ratios[half];
+    if (ratios.size() % 2 == 0)  // the mean of the two middle values
+        e.medianLevel =
+            0.5 * (e.medianLevel + *std::max_element(ratios.begin(), ratios.begin() + long(half)));
     // A black reference: the level against the error floor's least value, finite.
     e.level = sumMine == sumRef ? 1.0 : sumMine / std::max(sumRef, 1e-6 * double(mine.size()));
     return e;

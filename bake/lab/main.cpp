@@ -224,9 +224,9 @@ int sheetCommand(int argc, char** argv) {
 }
 
 // frame-error FRAME.exr REFERENCE.exr [--heat-map OUT.png]: the level report's error measure for
-// two linear images of one size (block_error.hpp), as "error=E blocks=N worst=W level=L" on
-// stdout (L: the frame's mean luminance over the reference's), and each block's error as a
-// picture.
+// two linear images of one size (block_error.hpp), as "error=E blocks=N worst=W level=L
+// median_level=M" on stdout (L: the frame's mean luminance over the reference's; M: the median
+// block's), and each block's error as a picture.
 int frameErrorCommand(int argc, char** argv) {
     const ParsedOptions o = parse("frame-error", argc, argv);
     const world::FloatImage frame = world::readExrFile(o.positionals[0]);
@@ -236,8 +236,8 @@ int frameErrorCommand(int argc, char** argv) {
     if (o.has("--heat-map"))
         world::writePngFile(o.text("--heat-map"), frame.width, frame.height,
                             heatMap(e, frame.width, frame.height, kHeatFullScale));
-    std::printf("error=%.6f blocks=%zu worst=%.6f level=%.6f\n", e.mean, e.relative.size(), worst,
-                e.level);
+    std::printf("error=%.6f blocks=%zu worst=%.6f level=%.6f median_level=%.6f\n", e.mean,
+                e.relative.size(), worst, e.level, e.medianLevel);
     return 0;
 }
 

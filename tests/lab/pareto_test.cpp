@@ -59,4 +59,24 @@ TEST(LevelReportBlockError, MeanRelativeErrorOfBlockLuminance) {
                  std::invalid_argument);
 }
 
+// The median block's level: five blocks at 2x the reference and a lamp's block at 100x make a
+// mean level of 18.3 but a median of 2; an even count takes the two middle blocks' mean.
+TEST(LevelReportBlockError, TheMedianBlocksLevelIgnoresALampsPixels) {
+    const onelight::world::FloatImage reference = flat(48, 8, 1.0f);
+    onelight::world::FloatImage frame = flat(48, 8, 2.0f);
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 40; x < 48; ++x)
+            for (int c = 0; c < 3; ++c) frame.rgba[(y * 48 + x) * 4 + c] = 100.0f;
+    const onelight::lab::BlockErrors e = onelight::lab::blockErrors(frame, reference);
+    EXPECT_NEAR(e.level, (5.0 * 2.0 + 100.0) / 6.0, 1e-9);
+    EXPECT_NEAR(e.medianLevel, 2.0, 1e-12);
+    onelight::world::FloatImage halves = flat(16, 8, 3.0f);
+    for (uint32_t y = 0; y < 8; ++y)
+        for (uint32_t x = 0; x < 8; ++x)
+            for (int c = 0; c < 3; ++c) halves.rgba[(y * 16 + x) * 4 + c] = 1.0f;
+    EXPECT_NEAR(onelight::lab::blockErrors(halves, flat(16, 8, 1.0f)).medianLevel, 2.0, 1e-12);
+    EXPECT_DOUBLE_EQ(onelight::lab::blockErrors(flat(8, 8, 0.0f), flat(8, 8, 0.0f)).medianLevel,
+                     1.0);
+}
+
 }  // namespace

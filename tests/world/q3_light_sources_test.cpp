@@ -364,6 +364,11 @@ TEST(Quake3LightSources, TranslucentSurfacesCastNoShadowAsInQ3map2) {
         const SourceLevel level = importLevel((folder / "room.bsp").string(), quake3GameIn(game));
         ASSERT_EQ(level.materials.size(), 1u) << name;
         EXPECT_EQ(level.materials[0].castsShadows, casts) << name;
+        EXPECT_EQ(mentions(level.lightSources,
+                           "translucent: 1 shader(s), 2 triangles, cast no "
+                           "shadow"),
+                  !casts)
+            << name;
     }
     // No script: the BSP's contents (CONTENTS_TRANSLUCENT, a liquid), and SURF_ALPHASHADOW.
     const std::vector<std::tuple<int32_t, int32_t, bool>> flags = {

@@ -665,6 +665,19 @@ void settleLightSources(SourceLevel& level, size_t entityLights, const std::stri
     const float sky = std::max({level.skyRadiance.x, level.skyRadiance.y, level.skyRadiance.z});
     out.push_back(std::string("sky: ") + (sun ? "a sun" : "no sun") + ", " +
                   (sky > 0.0f ? "sky light " + std::to_string(sky) + " cd/m^2" : "no sky light"));
+    size_t passed = 0, passedTriangles = 0;
+    std::vector<bool> counted(level.materials.size(), false);
+    for (const MeshInstance& mesh : level.instances)
+        if (mesh.material < level.materials.size() &&
+            !level.materials[mesh.material].castsShadows) {
+            passed += counted[mesh.material] ? 0 : 1;
+            counted[mesh.material] = true;
+            passedTriangles += mesh.indices.size() / 3;
+        }
+    if (passed > 0)
+        out.push_back("translucent: " + std::to_string(passed) + " shader(s), " +
+                      std::to_string(passedTriangles) +
+                      " triangles, cast no shadow (q3map2 traces no translucent surface)");
     if (entityLights > 0) return;
     if (importedLightmapLit(level.importedLightmap)) {
         level.lightmapIsImported = true;
