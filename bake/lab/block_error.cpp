@@ -59,7 +59,7 @@ BlockErrors blockErrors(const world::FloatImage& frame, const world::FloatImage&
     e.mean = sum / double(e.relative.size());
     std::vector<double> ratios;
     for (size_t i = 0; i < mine.size(); ++i)
-        ratios.push_back(mine[i] == theirs[i] ? 1.0 : mine[i] / std::max(theirs[i], floor));
+        ratios.push_back(std::max(mine[i], floor) / std::max(theirs[i], floor));
     const size_t half = ratios.size() / 2;
     std::nth_element(ratios.begin(), ratios.begin() + long(half), ratios.end());
     e.medianLevel = ratios[half];

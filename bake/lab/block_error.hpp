@@ -20,9 +20,9 @@ struct BlockErrors {
     std::vector<double> relative;    // per block, row by row
     double mean = 0.0;               // the mean of `relative`
     double level = 1.0;  // the frame's mean luminance over the reference's (1 when both are 0)
-    // The median over blocks of a block's luminance over the reference's (its floor as in
-    // `relative`): the level of a typical surface, which a few very bright blocks (a lamp's
-    // own pixels) do not move.
+    // The median over blocks of a block's luminance over the reference's, each at least the
+    // floor of `relative` (two dark blocks are level): the level of a typical surface, which a
+    // few very bright blocks (a lamp's own pixels) do not move.
     double medianLevel = 1.0;
 };
 

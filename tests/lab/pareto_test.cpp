@@ -77,6 +77,14 @@ TEST(LevelReportBlockError, TheMedianBlocksLevelIgnoresALampsPixels) {
     EXPECT_NEAR(onelight::lab::blockErrors(halves, flat(16, 8, 1.0f)).medianLevel, 2.0, 1e-12);
     EXPECT_DOUBLE_EQ(onelight::lab::blockErrors(flat(8, 8, 0.0f), flat(8, 8, 0.0f)).medianLevel,
                      1.0);
+    // Blocks darker than the floor (5% of the mean) in both are level, whatever their ratio:
+    // three black-ish blocks and two lit ones, the same in both, have a median of 1.
+    onelight::world::FloatImage dim = flat(40, 8, 1e-4f), dimmer = flat(40, 8, 1e-5f);
+    for (onelight::world::FloatImage* f : {&dim, &dimmer})
+        for (uint32_t y = 0; y < 8; ++y)
+            for (uint32_t x = 24; x < 40; ++x)
+                for (int c = 0; c < 3; ++c) f->rgba[(y * 40 + x) * 4 + c] = 1.0f;
+    EXPECT_NEAR(onelight::lab::blockErrors(dim, dimmer).medianLevel, 1.0, 1e-12);
 }
 
 }  // namespace
