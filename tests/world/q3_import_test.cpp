@@ -410,6 +410,7 @@ TEST(Quake3Shaders, ScriptsParseWithTheirStagesAndQ3mapKeys) {
     EXPECT_EQ(s[1].sun->intensity, 120.0f);
     EXPECT_EQ(s[1].sun->elevation, 60.0f);
     EXPECT_EQ(s[1].skyLight, 80.0f);
+    EXPECT_EQ(s[1].skyLightIterations, 3);
     EXPECT_TRUE(s[1].cullNone);
     EXPECT_EQ(s[1].colorStage(), nullptr);
     EXPECT_EQ(s[2].colorStage()->alphaFunc, "ge128");

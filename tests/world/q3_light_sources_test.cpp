@@ -386,6 +386,55 @@ TEST(Quake3LightSources, TranslucentSurfacesCastNoShadowAsInQ3map2) {
     }
 }
 
+// q3map_skylight V n is q3map2's dome of suns (light.c CreateSkyLights): each of its suns
+// gives V / (number of suns) lux at normal incidence, so an open floor gets V times the mean
+// sine of their elevations. The import's uniform sky gives the floor as much (pi L), in the light
+// image's normalised mean colour; below 2 iterations q3map2 makes no sky light, nor the import.
+TEST(Quake3LightSources, ASkyLightGivesAnOpenFloorWhatQ3map2sSunsGiveIt) {
+    // The dome, sun by sun, as q3map2 steps through it.
+    const auto floorLux = [](double value, int n) {
+        const int rings = n - 1, perRing = 4 * rings;
+        const double pi = 3.14159265358979323846;
+        double sum = 1.0, elevation = 0.5 * (0.5 * pi / n);  // the zenith's sun, then the rings
+        int suns = 1;
+        for (int i = 0; i < rings; ++i, elevation += 0.5 * pi / n)
+            for (int j = 0; j < perRing; ++j, ++suns) sum += std::max(0.0, std::sin(elevation));
+        return value * sum / suns;
+    };
+    const auto game = freshFolder("skylight_game");
+    writePk3(game / "sky.pk3",
+             {{"scripts/sky.shader",
+               "textures/test/sky2\n{\n surfaceparm sky\n q3map_skylight 100 2\n"
+               " q3map_lightimage textures/test/blue.tga\n}\n"
+               "textures/test/sky8\n{\n surfaceparm sky\n q3map_skylight 180 8\n}\n"
+               "textures/test/sky1\n{\n surfaceparm sky\n q3map_skylight 180 1\n}\n"},
+              {"textures/test/blue.tga", tgaImage(1, {{128, 160, 255}})}});
+    const auto skyOf = [&](const std::string& name, SourceLevel* out = nullptr) {
+        const auto folder = freshFolder("skylight_" + name);
+        Quake3BspBuilder bsp = floorSquare(0);
+        world::q3::BspShader sky = bsp.shaders[0];
+        std::strcpy(sky.name, ("textures/test/" + name).c_str());
+        bsp.shaders.push_back(sky);
+        writeFile(folder / "room.bsp", bsp.text());
+        SourceLevel level = importLevel((folder / "room.bsp").string(), quake3GameIn(game));
+        if (out) *out = level;
+        return level.skyRadiance;
+    };
+    const double pi = 3.14159265358979323846;
+    // Two iterations: one ring of 4 suns at 22.5 degrees and the zenith's, 0.506 of the value.
+    EXPECT_NEAR(floorLux(1.0, 2), (4.0 * std::sin(pi / 8.0) + 1.0) / 5.0, 1e-12);
+    const glm::vec3 two = skyOf("sky2");
+    EXPECT_NEAR(pi * double(two.z), floorLux(100.0, 2), 1e-3);  // blue, the brightest channel
+    EXPECT_NEAR(two.x / two.z, 128.0 / 255.0, 1e-4);            // the light image's mean bytes
+    EXPECT_NEAR(two.y / two.z, 160.0 / 255.0, 1e-4);
+    const glm::vec3 eight = skyOf("sky8");  // no light image: white
+    EXPECT_NEAR(pi * double(eight.x), floorLux(180.0, 8), 1e-3);
+    EXPECT_NEAR(floorLux(1.0, 8), 0.588, 0.001);  // not the whole value
+    SourceLevel none;
+    EXPECT_EQ(skyOf("sky1", &none), glm::vec3(0.0f));
+    EXPECT_TRUE(mentions(none.importNotes, "q3map_skylight with 1 iteration(s): q3map2 makes no"));
+}
+
 // The BSP's entities: worldspawn with `worldspawnKeys`, and the source map's three lights (a
 // point light of 300, a spot of 600 aimed at an info_null, a linear light of 200).
 std::string entitiesWithLights(const std::string& worldspawnKeys) {

@@ -746,9 +746,24 @@ void chooseLightRoles(SourceLevel& level, uint32_t maximum) {
         level.lights[order[i]].role = LightRole::kPrimary;
 }
 
-// The sun (q3map_sun, a primary directional light in lux) and a uniform sky (q3map_skylight
-// V as L = V / pi, so an open floor gets V lux) of the map's sky shaders, times q3map2's -sky
-// scale (an older sky's surface light: its -area scale).
+// The share of q3map_skylight's value an open floor gets from q3map2's dome of suns (light.c,
+// CreateSkyLights): with n iterations, n - 1 rings of 4 (n - 1) suns at elevations
+// (k + 1/2) 90 / n degrees and one sun at the zenith, each of value / (4 (n - 1)^2 + 1) lux at
+// normal incidence; no sky light at all below 2 iterations.
+double skyLightFloorShare(int iterations) {
+    if (iterations < 2) return 0.0;
+    const int rings = iterations - 1, perRing = 4 * rings;
+    double sum = 1.0;  // the zenith's sun
+    for (int k = 0; k < rings; ++k)
+        sum += perRing * std::sin((double(k) + 0.5) * 0.5 * std::numbers::pi / iterations);
+    return sum / (double(perRing) * rings + 1.0);
+}
+
+// The sun (q3map_sun, a primary directional light in lux) and a uniform sky of the map's sky
+// shaders, times q3map2's -sky scale: q3map_skylight V with n iterations is a radiance of
+// skyLightFloorShare(n) V / pi, so an open floor gets what q3map2's suns give it, in the light
+// image's normalised mean colour (q3map2's shader colour); an older sky's surface light S is
+// 0.25 S cd/m^2 times its -area scale.
 void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& scripts,
                   const GameFiles& files, const Q3map2LightOptions& q3map2) {
     for (const BspShader& shader : bsp.shaders) {
@@ -770,8 +785,15 @@ void addSunAndSky(SourceLevel& level, const BspFile& bsp, const ShaderScripts& s
             level.lights.push_back(l);
         }
         if (script->skyLight > 0.0f) {
-            level.skyRadiance = glm::vec3(
-                float(double(script->skyLight) * double(q3map2.skyScale) / std::numbers::pi));
+            const double share = skyLightFloorShare(script->skyLightIterations);
+            if (share == 0.0)
+                level.importNotes.push_back(
+                    clipForMessage(script->name) + ": q3map_skylight with " +
+                    std::to_string(script->skyLightIterations) +
+                    " iteration(s): q3map2 makes no sky light below 2, nor does the import");
+            level.skyRadiance = float(double(script->skyLight) * share * double(q3map2.skyScale) /
+                                      std::numbers::pi) *
+                                normalisedColour(meanColours(files, lightImageOf(*script)).bytes);
         } else if (script->surfaceLight > 0.0f) {
             // The older way: q3map2 makes the sky's faces area lights of value S, which is a
             // sky of 0.25 S cd/m^2 (q3_import.hpp) in the light image's normalised mean colour.

@@ -161,6 +161,8 @@ struct Parser {
             } else if (key == "q3map_skylight") {
                 need(1);
                 s.skyLight = number(args[0]);
+                // q3map2 reads the iterations on the same line; a missing one is 0.
+                s.skyLightIterations = args.size() > 1 ? int(number(args[1])) : 0;
             } else if (key == "q3map_sun" || key == "q3map_sunext") {
                 need(6);
                 ShaderSun sun;

@@ -40,6 +40,7 @@ struct ShaderScript {
     float surfaceLight = 0.0f;     // q3map_surfacelight
     std::optional<ShaderSun> sun;  // q3map_sun / q3map_sunExt
     float skyLight = 0.0f;         // q3map_skylight's value
+    int skyLightIterations = 0;    // and its iterations (q3map2 makes no sky light below 2)
     bool cullNone = false;         // cull none / disable / twosided
 
     /// The stage whose texture is the surface's colour: the first with a texture that is not
