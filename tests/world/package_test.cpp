@@ -248,6 +248,24 @@ TEST(Package, UnknownEntityFlagsAreRejected) {
                    "section entities record 0: flags 64 has unknown bits");
 }
 
+// A material's flags byte (the last of the word that starts at alphaMode): bit 0, "casts no
+// shadow", reads back as castsShadows false; any other bit is refused by name.
+TEST(Package, MaterialFlagsReadBackAndUnknownBitsAreRejected) {
+    world::CompiledLevel level = sampleLevel();
+    ASSERT_FALSE(level.materials.empty());
+    level.materials[0].castsShadows = false;
+    const std::vector<uint8_t> bytes = serializePackage(level);
+    EXPECT_FALSE(parsePackage(bytes, "test.olpak").level.materials[0].castsShadows);
+    const size_t at =
+        size_t(entry(bytes, kSectionMaterials).offset) + offsetof(DiskMaterial, alphaMode);
+    uint32_t word;
+    std::memcpy(&word, &bytes[at], 4);
+    EXPECT_EQ(word >> 24, uint32_t(kMaterialFlagNoShadows));
+    expectRejected(patched(bytes, kSectionMaterials, 0, offsetof(DiskMaterial, alphaMode),
+                           (word & 0x00FFFFFFu) | (2u << 24)),
+                   "section materials record 0: flags 2; expected 0 or 1 (no shadows)");
+}
+
 TEST(Package, ASurfaceHoldsItsChartsLightmapRectangle) {
     const world::CompiledLevel& level = sampleLevel();
     const std::vector<uint8_t> bytes = serializePackage(level);
