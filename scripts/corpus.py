@@ -384,6 +384,7 @@ def main():
     mode = "no-bake" if args.no_bake else "draft"
     pattern = re.compile(args.maps) if args.maps else None
     sections, counts, started = [], {"OK": 0, "approximated": 0, "refused": 0}, time.monotonic()
+    every = []  # every row so far, for the bound's summary
     for game_key in args.games.split(","):
         if game_key not in GAMES:
             sys.exit(f"corpus: --games {game_key}: expected one of {', '.join(GAMES)}")
@@ -425,8 +426,9 @@ def main():
                     f.write(json.dumps({"mode": mode, "map": name, "pk3": key[2], "row": row})
                             + "\n")
             rows.append(row)
+            every.append(row)
             counts[row["status"]] += 1
-            write_report(args, counts, sections + table(game, rows, shadowed), started,
+            write_report(args, counts, sections + table(game, rows, shadowed), started, every,
                          final=False)  # an interrupted run keeps what it measured
             print(f"corpus: {game} {i + 1}/{len(maps)} {name}: {row['status']}"
                   f" (compile {row.get('compile_s', 0):.1f} s, bake {row.get('bake_s', 0):.1f} s)"
@@ -434,16 +436,40 @@ def main():
         if maps or not os.path.isdir(folder):
             sections += table(game, rows, shadowed) if maps else [f"## {game}", "",
                                                                    f"{folder}: not installed", ""]
-    write_report(args, counts, sections, started, final=True)
+    write_report(args, counts, sections, started, every, final=True)
 
 
-def write_report(args, counts, sections, started, final):
+# The bound on the engine's own light against q3map2's (docs/corpus.md): the median 8x8 block's
+# luminance within these times q3map2's view of the same spawn, and the mean colours' CIE xy
+# within this distance.
+BOUND_MEDIAN = (0.75, 1.45)
+BOUND_DXY = 0.02
+
+
+def bound_summary(rows):
+    """One paragraph: how many of the maps the engine's own bake lights are within the bound,
+    and which are not (q3map2's own lightmaps are 1 by construction)."""
+    own = [r for r in rows if r.get("light_from", "q3map2's lightmaps") != "q3map2's lightmaps"
+           and "median_ratio" in r and "dxy" in r]
+    if not own:
+        return []
+    lo, hi = BOUND_MEDIAN
+    outside = [r for r in own if not (lo <= r["median_ratio"] <= hi and r["dxy"] <= BOUND_DXY)]
+    text = (f"Lit by the engine's own bake: {len(own)} maps; the median block within {lo} to "
+            f"{hi} times q3map2's view and Δxy ≤ {BOUND_DXY} on {len(own) - len(outside)}")
+    if outside:
+        text += "; outside: " + ", ".join(
+            f"{r['map']} ({r['median_ratio']:.2f}, Δxy {r['dxy']:.3f})" for r in outside)
+    return [text + ".", ""]
+
+
+def write_report(args, counts, sections, started, every, final):
     total = sum(counts.values())
     head = ["# Quake 3 map corpus", "",
             f"`{' '.join(sys.argv)}`, {time.strftime('%Y-%m-%d')}, "
             f"{time.monotonic() - started:.0f} s" + ("" if final else " (still running)"), "",
             f"**{total} maps: {counts['OK']} OK, {counts['approximated']} approximated, "
-            f"{counts['refused']} refused.**", "",
+            f"{counts['refused']} refused.**", ""] + ([] if args.no_bake else bound_summary(every)) + [
             ("Columns (--no-bake): the compile's wall seconds; the largest child process's "
              "peak memory so far; the compiled package's size; the GPU time of one unbaked "
              f"frame from spawn 0 (headless, lavapipe, {args.size}). No bake, so no bake or "
