@@ -478,6 +478,37 @@ TEST(Quake3Q3map2Options, TheLightStagesScalesLightTheMapAndItsEncodingDecodesTh
     EXPECT_TRUE(mentions(level.lightSources, "gamma 1.5")) << level.lightSources.back();
 }
 
+// A "-scale S" stage after -light (q3map2's ScaleBSP, Nexuiz's aggressor records 1.25) scaled
+// the lit map's geometry and origins but not its light values: q3map2's distances were 1/S of
+// the stored ones, so a point or spot light is S^2 as intense, a spot's cone is as wide as q3map2
+// saw it, and a linear light reaches S as far. A scale before -light, or one that is not
+// uniform, changes nothing (the latter with a note).
+TEST(Quake3Q3map2Options, AMapScaledAfterItWasLitIsLitAsItWasThen) {
+    const double candela = 7500.0 / 1024.0, s = 1.25;
+    const SourceLevel level = importWithEntities(
+        "scaled", entitiesWithLights("\"_q3map2_cmdline\" \"-meta; -light -fast; -scale 1.25\"\n"));
+    ASSERT_EQ(level.lights.size(), 3u);
+    EXPECT_NEAR(level.lights[0].intensity, 300.0 * candela * s * s, 1e-2);
+    ASSERT_EQ(level.lights[1].type, LightType::kSpot);
+    EXPECT_NEAR(level.lights[1].intensity, 600.0 * candela * s * s, 1e-2);
+    // The spot's target is 256 units away as stored, 204.8 as lit; radius 64 (+ 16).
+    EXPECT_NEAR(level.lights[1].outerCone, std::atan(80.0 / (256.0 / s)), 1e-5);
+    EXPECT_NEAR(level.lights[2].range, 0.9375 * 200.0 * s / 32.0, 1e-3);
+    EXPECT_TRUE(mentions(level.lightSources, "the map scaled 1.25x after it was lit"))
+        << level.lightSources.back();
+
+    const SourceLevel before = importWithEntities(
+        "scaled_before", entitiesWithLights("\"_q3map2_cmdline\" \"-scale 2; -light -fast\"\n"));
+    ASSERT_EQ(before.lights.size(), 3u);
+    EXPECT_NEAR(before.lights[0].intensity, 300.0 * candela, 1e-2);
+    const SourceLevel skewed = importWithEntities(
+        "scaled_skewed",
+        entitiesWithLights("\"_q3map2_cmdline\" \"-light -fast; -scale 1 1 2\"\n"));
+    ASSERT_EQ(skewed.lights.size(), 3u);
+    EXPECT_NEAR(skewed.lights[0].intensity, 300.0 * candela, 1e-2);
+    EXPECT_TRUE(mentions(skewed.importNotes, "the stage '-scale 1 1 2' after -light ignored"));
+}
+
 TEST(Quake3Q3map2Options, WithoutACommandLineQ3map2sDefaultsAreAssumedAndSaid) {
     const SourceLevel level = importWithEntities("nocmdline", entitiesWithLights(""));
     ASSERT_EQ(level.lights.size(), 3u);

@@ -369,10 +369,15 @@ void addSpawns(SourceLevel& level, const std::vector<MapEntity>& entities,
 // takes only from the BSP (a switched light's).
 void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const std::string& where,
                const Q3map2LightOptions& q3map2, bool fromSource) {
+    // A map scaled by S after q3map2 lit it (Q3map2LightOptions::scaledAfterLight): its BSP's
+    // origins are scaled, a source's are as lit; either way q3map2's distances were 1/S of the
+    // stored ones, so a point or spot light is S^2 as intense and a linear one reaches S as far.
+    const float scaled = q3map2.scaledAfterLight;
+    const float placed = fromSource ? scaled : 1.0f;
     std::map<std::string, glm::vec3> targets;
     for (const MapEntity& e : entities)
         if (e.keys.count("targetname"))
-            targets[e.get("targetname")] = vectorKey(e, "origin", glm::vec3(0.0f), where);
+            targets[e.get("targetname")] = placed * vectorKey(e, "origin", glm::vec3(0.0f), where);
     uint32_t linear = 0, halfLife = 0, switched = 0, noRadiosity = 0, suns = 0, junior = 0;
     // A light baked until chooseLightRoles, once its intensity and range are numbers.
     auto keep = [&](const MapEntity& e, Light& l) {
@@ -404,7 +409,7 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
         }
         Light l;
         l.name = e.get("targetname", "light" + std::to_string(level.lights.size()));
-        const glm::vec3 origin = vectorKey(e, "origin", glm::vec3(0.0f), where);
+        const glm::vec3 origin = placed * vectorKey(e, "origin", glm::vec3(0.0f), where);
         l.position = levelPoint(origin);
         // q3map2's order: "_light", else "light", and 300 where neither gives a non-zero value.
         bool more = false;
@@ -449,18 +454,20 @@ void addLights(SourceLevel& level, const std::vector<MapEntity>& entities, const
                 }
                 l.type = LightType::kSpot;
                 scale = q3map2.spotScale;
-                l.outerCone = std::min(1.5f, std::atan((radius + 16.0f) / distance));
+                const float lit = distance / scaled;  // the distance to the target q3map2 saw
+                l.outerCone = std::min(1.5f, std::atan((radius + 16.0f) / lit));
                 l.innerCone =
-                    std::min(l.outerCone, std::atan(std::max(0.0f, radius - 16.0f) / distance));
+                    std::min(l.outerCone, std::atan(std::max(0.0f, radius - 16.0f) / lit));
             }
         }
         value = std::max(0.0f, value) * scale;
-        l.intensity = float(double(value) * kQuake3CandelaPerLight);
+        l.intensity =
+            float(double(value) * kQuake3CandelaPerLight * double(scaled) * double(scaled));
         const int flags = int(numberKey(e, "spawnflags", 0.0f, where));
         if ((flags & 1) && !spot) {  // q3map2 clears a spot's linear flag
             // Linear falloff (q3_import.hpp, "Linear lights"), matched at half its reach.
             const double fade = std::max(1e-3, double(numberKey(e, "fade", 1.0f, where)));
-            const double reach = kQuake3LinearScale * double(value) / fade;
+            const double reach = kQuake3LinearScale * double(value) / fade * double(scaled);
             const double half = 0.5 * reach * kQuake3MetresPerUnit;
             const double window = (1.0 - 1.0 / 16.0) * (1.0 - 1.0 / 16.0);
             const double atHalf = 0.5 * kQuake3LinearScale * double(value);  // lux

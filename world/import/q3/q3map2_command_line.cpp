@@ -47,15 +47,37 @@ Q3map2LightOptions readQ3map2LightOptions(const std::vector<MapEntity>& entities
     Q3map2LightOptions o;
     if (entities.empty()) return o;
     const std::string line = entities[0].get("_q3map2_cmdline");
-    std::string stage;
+    std::string stage, scaleStage;
     for (size_t at = 0; at <= line.size();) {
         const size_t end = std::min(line.find(';', at), line.size());
         const std::string part = line.substr(at, end - at);
-        for (const std::string& t : tokens(part))
-            if (t == "-light") stage = part;
+        const std::vector<std::string> t = tokens(part);
+        for (const std::string& word : t)
+            if (word == "-light") stage = part, scaleStage.clear();
+        if (!stage.empty() && !t.empty() && t[0] == "-scale") scaleStage = part;
         at = end + 1;
     }
     if (stage.empty()) return o;
+    if (!scaleStage.empty()) {
+        // ScaleBSP's arguments: [-tex] [-spawn_ref V] then one scale, or X Y Z: the trailing
+        // numbers.
+        std::vector<double> numbers;
+        const std::vector<std::string> t = tokens(scaleStage);
+        for (size_t i = t.size(); i-- > 1 && std::isfinite(numberOf(t[i]));)
+            numbers.insert(numbers.begin(), numberOf(t[i]));
+        if (t.size() >= 3 && t[t.size() - 3] == "-spawn_ref" && !numbers.empty())
+            numbers.erase(numbers.begin());  // -spawn_ref's value, not a scale
+        const bool uniform =
+            numbers.size() == 1 ||
+            (numbers.size() == 3 && numbers[0] == numbers[1] && numbers[1] == numbers[2]);
+        if (uniform && numbers[0] > 0.0 && numbers[0] < 1e6)
+            o.scaledAfterLight = float(numbers[0]);
+        else
+            o.notes.push_back(where + ": worldspawn _q3map2_cmdline: the stage '" +
+                              trimmed(scaleStage).substr(0, 48) +
+                              "' after -light ignored: expected one positive scale (the map was "
+                              "lit before it was scaled)");
+    }
     o.recorded = true;
     o.lightStage = trimmed(stage);
     const std::vector<std::string> t = tokens(stage);
@@ -182,6 +204,9 @@ std::string Q3map2LightOptions::summary() const {
         if (e.contrast != 1.0f) s += " contrast x" + number(e.contrast);
         if (e.srgb) s += " sRGB";
     }
+    if (scaledAfterLight != 1.0f)
+        s += "; the map scaled " + number(scaledAfterLight) +
+             "x after it was lit (its point and spot lights brightened to light it as then)";
     return s;
 }
 

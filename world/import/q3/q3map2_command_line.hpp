@@ -24,9 +24,13 @@ struct Q3map2LightOptions {
     // the point and spot lights, -spherical the point lights, -spot the spot lights, -area the
     // surface lights, -sky the sun and sky).
     float pointScale = 1.0f, spotScale = 1.0f, areaScale = 1.0f, skyScale = 1.0f;
-    uint32_t bounces = 0;             // -bounce N: q3map2's radiosity passes
-    float bounceScale = 1.0f;         // -bouncescale (and -scale) over its default 0.25
-    bool dirt = false;                // -dirty / -dirt: ambient occlusion darkening its lightmaps
+    uint32_t bounces = 0;      // -bounce N: q3map2's radiosity passes
+    float bounceScale = 1.0f;  // -bouncescale (and -scale) over its default 0.25
+    bool dirt = false;         // -dirty / -dirt: ambient occlusion darkening its lightmaps
+    // A "-scale S" stage after the -light stage (q3map2's ScaleBSP): the map was lit at 1/S of
+    // the size it is stored at, its geometry and entity origins scaled by S afterwards and its
+    // light values not, so a light's distances to what it lit were 1/S of the stored ones.
+    float scaledAfterLight = 1.0f;
     std::vector<std::string> notes;   // options read but unusable (a value that is not a number)
     bool compensateInferred = false;  // encoding.compensate from the pages
                                       // (compensateShownByPages), not the command line
