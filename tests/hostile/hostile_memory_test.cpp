@@ -239,6 +239,28 @@ TEST(HostileMemory, AJpegWhoseCoefficientsOverflowDecodesToDefinedTexels) {
     EXPECT_EQ(first.rgba, second.rgba);
 }
 
+// A chunk whose length claims more than the file holds (fuzz_image's 1.3 KB PNG whose IDAT
+// declared 1.5 GB, which stb allocated before reading) is refused by the chunk walk, at once.
+TEST(HostileMemory, APngChunkLongerThanItsFileIsRefusedBeforeDecoding) {
+    std::vector<uint8_t> png = kPng64;
+    size_t idat = 8;
+    while (idat + 8 <= png.size() &&
+           std::string(png.begin() + long(idat) + 4, png.begin() + long(idat) + 8) != "IDAT")
+        idat += 12 + (size_t(png[idat]) << 24 | size_t(png[idat + 1]) << 16 |
+                      size_t(png[idat + 2]) << 8 | size_t(png[idat + 3]));
+    ASSERT_LT(idat + 8, png.size());
+    for (int i = 0; i < 4; ++i) png[idat + size_t(i)] = uint8_t(0x5C000000u >> (24 - 8 * i));
+    double seconds = 0.0;
+    const std::string message = decodeError(png, &seconds);
+    EXPECT_NE(message.find("maps.pk3:textures/x.tga: a PNG chunk 'IDAT' at byte " +
+                           std::to_string(idat) + " declares 1543503872 bytes; expected at most"),
+              std::string::npos)
+        << message;
+    EXPECT_LT(seconds, 1.0);
+    // The real file still decodes.
+    EXPECT_EQ(world::decodeImage(kPng64.data(), kPng64.size(), "x.png").width, 64u);
+}
+
 TEST(HostileMemory, APngClaimingMoreThanDeflateCanHoldIsRefusedBeforeDecoding) {
     // kPng64 with its IHDR saying 16384 x 16384 (the CRC is not what stb checks first).
     std::vector<uint8_t> png = kPng64;

@@ -183,6 +183,32 @@ void checkJpegHuffmanTables(const uint8_t* bytes, size_t size, const std::string
     }
 }
 
+// A PNG's chunks, walked before stb reads them: each chunk's declared length must fit in the
+// bytes that follow it (stb grows its IDAT buffer to a length before reading it, so a 1 KB file
+// whose IDAT claims 1.5 GB allocated and zeroed that much before failing).
+void checkPngChunks(const uint8_t* bytes, size_t size, const std::string& where) {
+    if (size < 8 || bytes[0] != 0x89 || bytes[1] != 'P' || bytes[2] != 'N' || bytes[3] != 'G')
+        return;
+    size_t at = 8;
+    while (at + 8 <= size) {
+        const uint64_t length = uint64_t(bytes[at]) << 24 | uint64_t(bytes[at + 1]) << 16 |
+                                uint64_t(bytes[at + 2]) << 8 | uint64_t(bytes[at + 3]);
+        std::string type;
+        for (size_t i = 4; i < 8; ++i) {
+            const char c = char(bytes[at + i]);
+            type += (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') ? c : '?';
+        }
+        const uint64_t remaining = uint64_t(size - at - 8);  // the data and its 4-byte CRC
+        if (length + 4 > remaining)
+            throw Error(where + ": a PNG chunk '" + type + "' at byte " + std::to_string(at) +
+                        " declares " + std::to_string(length) + " bytes; expected at most " +
+                        std::to_string(remaining >= 4 ? remaining - 4 : 0) +
+                        " (what the file holds after it)");
+        if (type == "IEND") return;
+        at += 12 + size_t(length);
+    }
+}
+
 // A bound on the texels `size` encoded bytes can hold, known before decoding: an image whose
 // header claims more is refused before anything is allocated. PNG: deflate expands at most
 // 1032:1, and a 1-bit texel takes 1/8 byte; JPEG: every 8x8 block costs at least one bit
@@ -220,6 +246,7 @@ DecodedImage decodeImage(const uint8_t* bytes, size_t size, const std::string& w
     int width = 0, height = 0, channels = 0;
     // Before stb reads anything: its header parse already builds the Huffman tables.
     checkJpegHuffmanTables(bytes, size, where);
+    checkPngChunks(bytes, size, where);
     if (!stbi_info_from_memory(bytes, int(size), &width, &height, &channels))
         throw Error(where + ": not a decodable PNG, JPEG or TGA image (" + failureReason() + ")");
     checkExtent(width, height, where);
