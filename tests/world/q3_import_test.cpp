@@ -411,6 +411,15 @@ TEST(Quake3Shaders, ScriptsParseWithTheirStagesAndQ3mapKeys) {
     EXPECT_EQ(s[1].sun->elevation, 60.0f);
     EXPECT_EQ(s[1].skyLight, 80.0f);
     EXPECT_EQ(s[1].skyLightIterations, 3);
+    // An iteration count past int's range, or not a number, is 0 (found by fuzz_q3_text: the
+    // conversion was undefined).
+    for (const char* count : {"1e30", "-7", "nan", "x"}) {
+        const std::vector<ShaderScript> odd = parseShaderScript(
+            std::string("textures/s\n{\n surfaceparm sky\n q3map_skylight 80 ") + count + "\n}\n",
+            "odd.shader");
+        ASSERT_EQ(odd.size(), 1u);
+        EXPECT_EQ(odd[0].skyLightIterations, 0) << count;
+    }
     EXPECT_TRUE(s[1].cullNone);
     EXPECT_EQ(s[1].colorStage(), nullptr);
     EXPECT_EQ(s[2].colorStage()->alphaFunc, "ge128");

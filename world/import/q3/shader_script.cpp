@@ -161,8 +161,11 @@ struct Parser {
             } else if (key == "q3map_skylight") {
                 need(1);
                 s.skyLight = number(args[0]);
-                // q3map2 reads the iterations on the same line; a missing one is 0.
-                s.skyLightIterations = args.size() > 1 ? int(number(args[1])) : 0;
+                // q3map2 reads the iterations on the same line; a missing one is 0, and so is
+                // one that is not a count (a float past int's range would be undefined).
+                const float iterations = args.size() > 1 ? number(args[1]) : 0.0f;
+                s.skyLightIterations =
+                    iterations >= 0.0f && iterations <= 1e6f ? int(iterations) : 0;
             } else if (key == "q3map_sun" || key == "q3map_sunext") {
                 need(6);
                 ShaderSun sun;
