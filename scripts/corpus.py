@@ -397,6 +397,8 @@ def main():
         rows = []
         for i, (name, pk3, inner) in enumerate(maps):
             key = (mode, name, os.path.basename(pk3))
+            # Its files in WORK (two games may ship maps of one name).
+            stem = game_key + "-" + re.sub(r"[^A-Za-z0-9_.-]", "_", name)
             if key in done:
                 row = done[key]
                 if "light_from" not in row and row["status"] != "refused":
@@ -409,14 +411,12 @@ def main():
                         row["q3map2"] = q3map2_options(out)
                 if "lum_ratio" in row and "median_ratio" not in row:
                     # A row from before the column: its captures in WORK tell (a second).
-                    stem = os.path.join(work, "captures", game_key + "-" +
-                                        re.sub(r"[^A-Za-z0-9_.-]", "_", name))
-                    median = median_ratio(args, stem + "-onelight.exr", stem + "-q3map2.exr")
+                    frames = os.path.join(work, "captures", stem)
+                    median = median_ratio(args, frames + "-onelight.exr", frames + "-q3map2.exr")
                     if median is not None:
                         row["median_ratio"] = median
             else:
                 try:
-                    stem = game_key + "-" + re.sub(r"[^A-Za-z0-9_.-]", "_", name)
                     row = one_map(name, pk3, inner, args, work, stem)
                 except Exception as e:  # a map must never stop the run
                     row = {"map": name, "pk3": os.path.basename(pk3), "status": "refused",
