@@ -296,16 +296,16 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
         GridSettings gs = gridSettings(options);
         if (!bounceCache.empty()) gs.transport.cache = ps.transport.cache = &bounceCache;
         RayCounts rays;
-        // E_avg of this part's probes only (each probe's is independent of the others').
+        // The statistic of this part's probes only (each probe's is independent of the others').
         const std::vector<ProbePlacement> owned(placements.begin() + long(range.probeBegin),
                                                 placements.begin() + long(range.probeEnd));
-        const std::vector<glm::vec3> ownedAverage =
-            probeAverageIrradiance(scene, lights, gs, gridLayout, owned, rays);
-        std::vector<glm::vec3> average(placements.size(), glm::vec3(0.0f));
-        std::copy(ownedAverage.begin(), ownedAverage.end(),
-                  average.begin() + long(range.probeBegin));
+        const std::vector<IrradianceCube> ownedIrradiance =
+            probeIrradianceCubes(scene, lights, gs, gridLayout, owned, rays);
+        std::vector<IrradianceCube> irradiance(placements.size(), IrradianceCube{});
+        std::copy(ownedIrradiance.begin(), ownedIrradiance.end(),
+                  irradiance.begin() + long(range.probeBegin));
         // Each probe is seeded by its index among all the level's.
-        baked.probes = bakeProbes(scene, lights, placements, average, ps, range.probeBegin,
+        baked.probes = bakeProbes(scene, lights, placements, irradiance, ps, range.probeBegin,
                                   range.probeEnd, options.showProgress, rays);
         report.stages.push_back({"probes", secondsSince(start), rays, baked.probes.size()});
         report.probesTotal = placements.size();
@@ -360,13 +360,17 @@ BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& option
     return result;
 }
 
-std::vector<glm::vec3> probeAverageIrradiance(const BakeScene& scene, const BakeLights& lights,
-                                              const GridSettings& settings,
-                                              const world::LightGrid& layout,
-                                              const std::vector<ProbePlacement>& probes,
-                                              RayCounts& rays) {
-    std::vector<glm::vec3> average(probes.size(), glm::vec3(0.0f));
-    if (layout.cells.empty()) return average;
+std::vector<IrradianceCube> probeIrradianceCubes(const BakeScene& scene, const BakeLights& lights,
+                                                 const GridSettings& settings,
+                                                 const world::LightGrid& layout,
+                                                 const std::vector<ProbePlacement>& probes,
+                                                 RayCounts& rays) {
+    std::vector<IrradianceCube> cubes(probes.size(), IrradianceCube{});
+    if (layout.cells.empty()) return cubes;
+    // The light a probe reflects: without the punctual lights' direct light, which the texels
+    // keep apart and reflect by a lobe of their own (docs/lighting.md "Normalisation").
+    GridSettings indirect = settings;
+    indirect.punctualDirect = false;
     world::LightGrid scratch = layout;
     std::vector<uint8_t> baked(scratch.cells.size(), 0);
     for (size_t i = 0; i < probes.size(); ++i) {
@@ -374,13 +378,12 @@ std::vector<glm::vec3> probeAverageIrradiance(const BakeScene& scene, const Bake
         for (size_t k = 0; k < corners.cells.size(); ++k) {
             const uint32_t c = corners.cells[k];
             if (corners.weights[k] <= 0.0f || baked[c]) continue;
-            rays += bakeLightGrid(scene, lights, settings, c, c + 1, scratch, nullptr).rays;
+            rays += bakeLightGrid(scene, lights, indirect, c, c + 1, scratch, nullptr).rays;
             baked[c] = 1;
         }
-        average[i] =
-            ambientCubeAverage(world::sampleLightGrid(scratch, probes[i].position).ambientCube);
+        cubes[i] = world::sampleLightGrid(scratch, probes[i].position).ambientCube;
     }
-    return average;
+    return cubes;
 }
 
 void finishImportedLightmap(const world::CompiledLevel& level, world::BakedLighting& baked) {

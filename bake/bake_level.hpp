@@ -139,11 +139,13 @@ struct BakeResult {
 /// input and std::runtime_error on Embree failures.
 [[nodiscard]] BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options);
 
-/// E_avg of each probe (probe_capture.hpp): ambientCubeAverage of the light grid sampled at the
-/// capture point exactly as world::sampleLightGrid samples the finished grid. Only the corner
-/// cells the sample weighs are baked, into a scratch copy of `layout` (seeded per cell, so they
-/// equal the grid stage's cells): a shard gets the whole grid's value without the whole grid.
-[[nodiscard]] std::vector<glm::vec3> probeAverageIrradiance(
+/// The capture's side of each probe's statistic (probe_capture.hpp, shaders/probe.glsl): the light
+/// grid's ambient cube sampled at the capture point exactly as world::sampleLightGrid samples the
+/// finished grid, less every punctual light's direct light (GridSettings::punctualDirect false),
+/// as the texels' side is (world::LightmapTexel::indirectIrradiance). Only the corner cells the
+/// sample weighs are baked, into a scratch copy of `layout` (seeded per cell, so that their traced
+/// part equals the grid stage's cells'): a shard gets the whole grid's value without the grid.
+[[nodiscard]] std::vector<IrradianceCube> probeIrradianceCubes(
     const BakeScene& scene, const BakeLights& lights, const GridSettings& settings,
     const world::LightGrid& layout, const std::vector<ProbePlacement>& probes, RayCounts& rays);
 

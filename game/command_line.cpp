@@ -47,6 +47,10 @@ const world::CommandTable& commandTable() {
                               "none"),
             world::integerOption("--msaa", "N", 1, 64, "samples, the nearest supported is used",
                                  std::to_string(d.msaa)),
+            world::flagOption("--probes-per-normal",
+                              "reflections scaled by the pixel's irradiance over the probe's at "
+                              "the pixel's normal (docs/lighting.md \"Normalisation\")",
+                              "over the probe's mean"),
             world::flagOption("--fxaa",
                               "post-process anti-aliasing of the tonemapped frame (FXAA), with "
                               "--msaa 1 in place of MSAA",
@@ -134,6 +138,7 @@ CommandLine parseCommandLine(int argc, char** argv) {
     out.msaa = countOf(parsed, "--msaa", out.msaa);
     out.anisotropy = countOf(parsed, "--anisotropy", out.anisotropy);
     out.fxaa = parsed.has("--fxaa");
+    out.probesPerNormal = parsed.has("--probes-per-normal");
     out.shadowMapSize = countOf(parsed, "--shadow-map-size", out.shadowMapSize);
     out.sunCascades = countOf(parsed, "--sun-cascades", out.sunCascades);
     out.shadowDistance = realOf(parsed, "--shadow-distance", out.shadowDistance);

@@ -17,6 +17,7 @@ struct CommandLine {
     uint32_t msaa = 2;
     uint32_t anisotropy = 1;        // material textures' anisotropic filtering taps, 1 = off
     bool fxaa = false;              // --fxaa (RendererOptions::fxaa)
+    bool probesPerNormal = false;   // --probes-per-normal (RendererOptions::probesPerNormal)
     uint32_t shadowMapSize = 1024;  // --shadow-map-size: texels per side, every shadow layer
     uint32_t sunCascades = 3;       // --sun-cascades (RendererOptions::sunCascades)
     float shadowDistance = 40.0f;   // --shadow-distance: metres from the camera with runtime

@@ -61,6 +61,7 @@ void openRenderTarget(RenderTarget& t, const CommandLine& cl, const assets::Load
         options.requestedMsaa = cl.msaa;
         options.anisotropy = float(cl.anisotropy);
         options.fxaa = cl.fxaa;
+        options.probesPerNormal = cl.probesPerNormal;
         options.visibilityCulling = cl.visibilityCulling;
         options.flatShading = options.rasterFloor = cl.rasterFloor;
         options.shadowMapSize = cl.shadowMapSize;

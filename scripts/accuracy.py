@@ -28,9 +28,10 @@ import time
 
 from scenes import SCENES
 
-DEFAULT_SCENES = ("roof_room,roof_room_glossy,glossy_room,textured_room,normal_floor,"
-                  "normal_floor_sky,normal_floor_sun,flat_floor,shadow_edge,shadow_edge_baked,"
-                  "q3:kaos:spawn0")
+DEFAULT_SCENES = ("roof_room,roof_room_glossy,roof_room_glossy_per_normal,glossy_room,"
+                  "glossy_room_per_normal,sky_floor_glossy,sky_floor_glossy_per_normal,"
+                  "textured_room,normal_floor,normal_floor_sky,normal_floor_sun,flat_floor,"
+                  "shadow_edge,shadow_edge_baked,q3:kaos:spawn0")
 
 WHAT = {
     "roof_room": "the roof-opening room, Lambert walls, lit by a sun through the opening only",
@@ -47,10 +48,19 @@ WHAT = {
     "shadow_edge": "a wall's sun shadow on a floor, its edge diagonal to the lightmap's texels, "
                    "seen from 8 m above: the runtime shadow map",
     "shadow_edge_baked": "the same, drawn with the baked shadow mask only (--shadow-distance 1)",
+    "sky_floor_glossy": "a glossy floor (0.2, roughness 0.2) under a uniform sky, one probe "
+                        "1.5 m up",
+    "sky_floor_glossy_per_normal": "the same, the probes normalised per normal "
+                                   "(--probes-per-normal)",
+    "glossy_room_per_normal": "the glossy room, the probes normalised per normal",
+    "roof_room_glossy_per_normal": "the glossy roof room, the probes normalised per normal",
 }
 
 # Runtime options of a scene's frame.
-FRAME_OPTIONS = {"shadow_edge_baked": ["--shadow-distance", "1"]}
+FRAME_OPTIONS = {"shadow_edge_baked": ["--shadow-distance", "1"],
+                 "sky_floor_glossy_per_normal": ["--probes-per-normal"],
+                 "glossy_room_per_normal": ["--probes-per-normal"],
+                 "roof_room_glossy_per_normal": ["--probes-per-normal"]}
 
 
 def run(args, what):
@@ -144,7 +154,8 @@ def main():
             what = f"OpenArena's {level} from {camera}, baked at {args.quality}"
             stem = "q3-" + level
         else:
-            # Scenes that are one level drawn two ways (shadow_edge, shadow_edge_baked) share it.
+            # Scenes that are one level drawn two ways (shadow_edge, shadow_edge_baked; a scene and
+            # its _per_normal) share it.
             stem = SCENES[name].__name__
             level, camera = os.path.join(work, stem + ".gltf"), "view"
             SCENES[name](level, width / height)

@@ -240,6 +240,20 @@ def sky_floor(path, aspect):
     return 1000.0
 
 
+def sky_floor_glossy(path, aspect):
+    """A glossy floor (dielectric 0.2, roughness 0.2) 40 m across under a uniform 1000 cd/m^2
+    sky, with one authored probe 1.5 m above it: the probes' normalisation in the open (an
+    up-facing floor sees the sky, the probe's mean over normals a fifth of it below)."""
+    g = Gltf()
+    floor = g.material("floor", 0.2, roughness=0.2)
+    g.quads("floor", [[[-20, 0, -20], [-20, 0, 20], [20, 0, 20], [20, 0, -20]]], floor)
+    g.node({"name": "probe", "translation": [0.0, 1.5, 0.0],
+            "extras": {"onelight": {"probe": True}}})
+    g.camera("view", [0.0, 1.7, 4.0], [0.0, 0.0, -4.0], aspect)
+    g.write(path, 1000.0)
+    return 1000.0
+
+
 # The rooms: 4 x 3 x 2.5 m (tests/bake/bake_scenes.hpp's roof-opening room), a block of
 # 0.8 x 0.8 x 0.8 m on the floor, the camera in a corner looking across.
 ROOM = (-2.0, 2.0, 0.0, 2.5, -1.5, 1.5)
@@ -465,12 +479,19 @@ def shadow_edge(path, aspect):
 
 
 shadow_edge_baked = shadow_edge
+# Drawn with the probes normalised per normal (--probes-per-normal).
+sky_floor_glossy_per_normal = sky_floor_glossy
+glossy_room_per_normal = glossy_room
+roof_room_glossy_per_normal = roof_room_glossy
 
 
 # The scenes by name, for the scripts' --scenes.
-SCENES = {"sky_floor": sky_floor, "roof_room": roof_room, "lamp_room": lamp_room,
+SCENES = {"sky_floor": sky_floor, "sky_floor_glossy": sky_floor_glossy, "roof_room": roof_room, "lamp_room": lamp_room,
           "spot_room": spot_room, "roof_room_glossy": roof_room_glossy,
           "glossy_room": glossy_room, "textured_room": textured_room,
           "normal_floor": normal_floor, "normal_floor_sky": normal_floor_sky,
           "normal_floor_sun": normal_floor_sun, "flat_floor": flat_floor,
-          "shadow_edge": shadow_edge, "shadow_edge_baked": shadow_edge_baked}
+          "shadow_edge": shadow_edge, "shadow_edge_baked": shadow_edge_baked,
+          "sky_floor_glossy_per_normal": sky_floor_glossy_per_normal,
+          "glossy_room_per_normal": glossy_room_per_normal,
+          "roof_room_glossy_per_normal": roof_room_glossy_per_normal}

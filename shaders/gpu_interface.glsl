@@ -17,6 +17,13 @@
 const uint NO_INDEX = 0xFFFFFFFFu;  // "none" in every index field (world::kNoIndex)
 const uint MAX_EFFECT_OMNIS = 4u;   // Black Ops' budget of diffuse omni effect lights
 const float HDR_MAX = 65000.0f;     // the RGBA16F targets' cap (half's largest finite is 65504)
+// The lightmap array's layers per atlas (runtime/render/scene.cpp uploadLightmaps): 0..2 the
+// irradianceLinear coefficients of red, green and blue; 3 the baked direct light's irradiance
+// (rgb); 4 its direction (xyz, not scaled); 5 the rest's average over normals (rgb).
+const uint LIGHTMAP_LAYERS = 6u;
+const uint LIGHTMAP_LAYER_DIRECT = 3u;
+const uint LIGHTMAP_LAYER_DIRECT_LIGHT = 4u;
+const uint LIGHTMAP_LAYER_INDIRECT = 5u;
 
 // ---------------------------------------------------------------------------------------------
 // Descriptor set 0: the frame's resources.
@@ -24,7 +31,7 @@ const float HDR_MAX = 65000.0f;     // the RGBA16F targets' cap (half's largest 
 const int BINDING_FRAME = 0;          // uniform FrameUniforms
 const int BINDING_SHADOW_VIEWS = 1;   // uniform GpuShadowView[MAX_SHADOW_VIEWS]
 const int BINDING_SHADOW_MAPS = 2;    // sampler2DArrayShadow
-const int BINDING_LIGHTMAP = 3;       // sampler2DArray
+const int BINDING_LIGHTMAP = 3;       // sampler2DArray, LIGHTMAP_LAYERS per atlas
 const int BINDING_SHADOW_MASK = 4;    // sampler2DArray
 const int BINDING_PROBES = 5;         // samplerCubeArray
 const int BINDING_ENV_BRDF = 6;       // sampler2D
@@ -133,7 +140,7 @@ struct FrameUniforms {
     vec4 cameraPosition;  // xyz metres, w exposure (pre-exposure of the HDR target)
     vec4 shadowParams;    // x runtime-shadow radius, y blend band (metres), z 1 / map size
     vec4 baked;           // x placeholder ambient (lux), y lightmap decode (stored x this = lux)
-    vec4 probeParams;     // x mip count of the probes' cubes
+    vec4 probeParams;     // x mip count of the probes' cubes, y 1: normalised per normal
     uvec4 counts;         // x effect omnis in use, y effect spot on (0/1), z probe records
     mat4 skyFromClip;     // clip position to world direction: inverse(proj x view's rotation)
     vec4 sky;             // rgb the sky image's scale (cd/m^2 per unit), w 1 = drawn
@@ -185,6 +192,10 @@ struct GpuProbe {
     vec4 boxMax;        // xyz
     vec4 influenceMin;  // xyz influence box, w blend band (metres)
     vec4 influenceMax;  // xyz
+    // rgb: the capture's irradiance on surfaces facing +x -x +y -y +z -z over its mean
+    // (world::EnvironmentProbe::irradianceCube / irradianceAverage; shaders/probe.glsl,
+    // "Normalization")
+    vec4 relativeIrradiance[6];
 };
 
 // The probes' cell grid (runtime/render/probe_records.hpp): a box of dims cells of cellSize

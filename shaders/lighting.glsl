@@ -221,7 +221,8 @@ vec3 irradianceAmbientCube(vec3 px, vec3 nx, vec3 py, vec3 ny, vec3 pz, vec3 nz,
 
 // Secondary light reflected towards v: diffuse from irradiance E (lux, per channel) times the
 // material's ambient occlusion `ao`, and specular from a normalised probe sample (radiance /
-// average irradiance at its capture point) scaled back by E (probeDenormalize), times the
+// average irradiance at its capture point) scaled back by `probeIrradiance` (probeDenormalize:
+// the pixel's own value of the statistic the probe was normalised by), times the
 // environment "Fresnel" f0 * env.x + env.y of the runtime model (EnvBRDF_Fit of
 // env_brdf_fit.glsl, or the runtime's table of it) and the specular occlusion `so` (which
 // replaces ao for the specular). The diffuse is weighted for energy conservation as the primary
@@ -233,19 +234,20 @@ vec3 irradianceAmbientCube(vec3 px, vec3 nx, vec3 py, vec3 ny, vec3 pz, vec3 nz,
 // `env` the mean of theirs too.
 vec3 footprintSecondaryRadiance(int materialClass, vec3 albedo, vec3 diffuseWeight, vec3 f0,
                                 vec2 env, vec3 irradiance, float ao, float so,
-                                vec3 normalisedProbe) {
+                                vec3 normalisedProbe, vec3 probeIrradiance) {
     vec3 diffuse = albedo * diffuseWeight * (Fd_Lambert() * ao) * irradiance;
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
-    vec3 specular = (f0 * env.x + vec3(env.y)) * normalisedProbe * irradiance * so;
+    vec3 specular =
+        (f0 * env.x + vec3(env.y)) * probeDenormalize(normalisedProbe, probeIrradiance) * so;
     if (materialClass == MATERIAL_METAL) return specular;
     return diffuse + specular;
 }
 
 vec3 secondaryRadiance(int materialClass, vec3 albedo, vec3 f0, vec2 env, vec3 irradiance,
-                       float ao, float so, vec3 normalisedProbe) {
+                       float ao, float so, vec3 normalisedProbe, vec3 probeIrradiance) {
     return footprintSecondaryRadiance(materialClass, albedo,
                                       diffuseEnergyWeight(materialClass, f0, env), f0, env,
-                                      irradiance, ao, so, normalisedProbe);
+                                      irradiance, ao, so, normalisedProbe, probeIrradiance);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -114,18 +114,37 @@ float probeInfluenceWeight(vec3 p, vec3 influenceMin, vec3 influenceMax, float b
 }
 
 // ---------------------------------------------------------------------------------------------
-// Normalization (Lazarov 2011, slide "Environment map normalization"; docs/lighting.md
-// "Secondary specular"). The baker stores each probe's radiance divided, per channel, by
-// E_avg: the average over every normal direction n of the secondary irradiance E(n) that the
-// runtime reconstructs from the light grid at the capture point (for the grid's ambient cube,
-// the mean of its six faces; bake/probes/probe_capture.hpp derives it). The shader multiplies
-// what it reads by the pixel's own secondary irradiance E(n) (lightmap or light grid). At the
-// capture point, averaged over all normals, denormalize(normalize(L)) = L E_avg / E_avg = L.
-// E_avg is floored at PROBE_MIN_IRRADIANCE (lux) so that an unlit channel stays finite.
+// Normalization (Lazarov 2011, slide "Environment map normalization": divide by the diffuse
+// lighting at the capture point, multiply by the diffuse lighting reconstructed per pixel;
+// docs/lighting.md "Normalisation"), of the light a probe holds at both ends: everything but the
+// punctual lights' direct light (which the probes cannot see and the texels reflect by a lobe of
+// their own).
+// - The capture's side: the light grid's ambient cube at the capture point without that direct
+//   light, E_c(n) (bake/bake_level.hpp probeIrradianceCubes). Its mean over normals E_avg
+//   scales the stored texels (probeNormalize; RGB9E5 keeps L / E_avg near 1 / pi), and the
+//   cube is kept relative to it: E_c(n) / E_avg (GpuProbe::relativeIrradiance).
+// - The pixel's side: E_p(n), a static surface's lightmap texel less its direct light
+//   (world::LightmapTexel::indirectIrradiance), a dynamic object's light grid.
+// By default a pixel reads L / E_avg and multiplies by E_p(n) (probeDenormalize): L E_p(n) / E_avg.
+// With RendererOptions::probesPerNormal (the same statistic at both ends) it divides by
+// E_c(n) / E_avg first (probeAtNormal): L E_p(n) / E_c(n), exactly L where the pixel's light
+// equals the capture's. Neither is better everywhere (docs/lighting.md measures both): the first
+// reads a floor under an open sky 1.1-1.5x bright (the capture's mean counts the ground), the
+// second darkens reflections where a surface's irradiance differs from the capture point's for
+// light it does not reflect (a floor beside a wall, a block's side facing a lit floor).
+// E_avg is floored at PROBE_MIN_IRRADIANCE (lux) so that an unlit channel stays finite;
+// E_c(n) / E_avg at PROBE_MIN_RELATIVE_IRRADIANCE, so that a normal whose side of the capture is
+// dark (a probe over a black floor, seen from a ceiling) cannot blow a reflection up.
 const float PROBE_MIN_IRRADIANCE = 1e-4f;
+const float PROBE_MIN_RELATIVE_IRRADIANCE = 0.05f;
 
 vec3 probeNormalize(vec3 radiance, vec3 averageIrradiance) {
     return radiance / max(averageIrradiance, vec3(PROBE_MIN_IRRADIANCE));
+}
+
+// A normalised sample over the capture's irradiance at the pixel's normal relative to its mean.
+vec3 probeAtNormal(vec3 normalized, vec3 relativeIrradiance) {
+    return normalized / max(relativeIrradiance, vec3(PROBE_MIN_RELATIVE_IRRADIANCE));
 }
 
 vec3 probeDenormalize(vec3 normalized, vec3 irradiance) { return normalized * irradiance; }

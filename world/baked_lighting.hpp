@@ -20,12 +20,23 @@ enum LightmapTexelFlags : uint32_t {
 inline constexpr uint32_t kAllLightmapTexelFlags = kLightmapTexelSampled | kLightmapTexelDilated;
 
 /// One lightmap texel: directional secondary irradiance (see DiskLightmapTexel for the
-/// reconstruction E(n') = irradiance * max(0, 0.5 + n'.direction) / normalWeight).
+/// reconstruction E(n') = irradiance * max(0, 0.5 + n'.direction) / normalWeight), and the two
+/// parts the probes' specular needs apart (docs/lighting.md "Normalisation"): the baked punctual
+/// lights' direct light, as one light of its own, and the rest's average over normals.
 struct LightmapTexel {
     glm::vec3 irradiance{0.0f};  // lux at the surface normal, >= 0
     glm::vec3 direction{0.0f};   // |direction| <= 0.5
     float normalWeight = 1.0f;   // 0.5 + dot(normal, direction)
     uint32_t flags = 0;          // LightmapTexelFlags; 0 = outside every chart (all zero)
+    // The baked punctual lights' shadowed direct light (a part of `irradiance`) as one light
+    // from directLight: lux on a surface facing it, so that it gives directIrradiance
+    // max(0, n'.directLight) at a normal n'. Zero (and directLight 0) where none reaches.
+    glm::vec3 directIrradiance{0.0f};  // >= 0
+    glm::vec3 directLight{0.0f};       // unit, towards the light; 0 when directIrradiance is 0
+    // The rest (bounces, sky, emitters: irradiance - the direct light at the surface normal),
+    // the pixel's side of the probes' statistic (shaders/probe.glsl, "Normalization"): lux,
+    // >= 0, at the surface normal.
+    glm::vec3 indirectIrradiance{0.0f};
 };
 
 enum LightGridCellFlags : uint32_t {
@@ -92,10 +103,14 @@ struct ErrorBudgetChoices {
 struct EnvironmentProbe {
     glm::vec3 position{0.0f};              // metres, world: the capture point
     glm::vec3 boxMin{0.0f}, boxMax{0.0f};  // box projection when min < max on every axis
-    glm::vec3 irradianceAverage{1.0f};     // lux, RGB: E_avg (probeNormalize)
-    uint32_t faceSize = 0, mipCount = 0;   // mip 0 edge (a power of two); down to 1x1
-    uint32_t entity = kNoIndex;            // the probe entity, kNoIndex when placed
-    std::vector<uint32_t> texels;          // RGB9E5, 6 * sum_m (face_size >> m)^2
+    glm::vec3 irradianceAverage{1.0f};     // lux, RGB: E_avg (probeNormalize), the cube's mean
+    // The light the probe reflects as irradiance on surfaces facing +x -x +y -y +z -z at the
+    // capture point (the grid's ambient cube there, without the punctual lights' direct light):
+    // the capture's side of the probes' statistic (shaders/probe.glsl, "Normalization").
+    std::array<glm::vec3, 6> irradianceCube{};
+    uint32_t faceSize = 0, mipCount = 0;  // mip 0 edge (a power of two); down to 1x1
+    uint32_t entity = kNoIndex;           // the probe entity, kNoIndex when placed
+    std::vector<uint32_t> texels;         // RGB9E5, 6 * sum_m (face_size >> m)^2
 };
 
 /// What an unmerged part of a sharded bake holds (section 40): the lightmap charts (every texel

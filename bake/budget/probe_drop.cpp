@@ -74,26 +74,23 @@ float secondarySpecularChange(const BakeScene& scene, const BakeLights& lights,
             return std::pair{l, std::max(0.0f, glm::dot(r, l))};
         },
         rng, rays);
-    const glm::vec3 sphereMean = meanRadiance(
-        scene, lights, transport, origin, settings.sphereRays,
-        [&](uint32_t) {
-            return std::pair{sampleUniformSphere({rng.next(), rng.next()}), 1.0f};
-        },
-        rng, rays);
     const Frame around = frameAround(n);
     const glm::vec3 cosineMean = meanRadiance(
-        scene, lights, transport, origin, settings.sphereRays,
+        scene, lights, transport, origin, settings.hemisphereRays,
         [&](uint32_t) {
             const glm::vec3 w = around.toWorld(sampleCosineHemisphere({rng.next(), rng.next()}));
             return std::pair{w, glm::dot(w, geometricNormal) > 0.0f ? 1.0f : 0.0f};
         },
         rng, rays);
     const glm::vec3 irradiance = glsl::PI * cosineMean;
-    const glm::vec3 probe = glsl::probeNormalize(lobeRadiance, glsl::PI * sphereMean);
+    // The probe's statistic at x's normal, the capture's side and the pixel's alike (x sees what
+    // the probe does): the probe reads lobeRadiance / E(n) (probeAtNormal) times E(n).
+    const glm::vec3 probe = glsl::probeNormalize(lobeRadiance, irradiance);
     const glm::vec2 env = glsl::sampleEnvBrdfTable(glsl::envBrdfTableCoord(NoV, m.bsdf.gloss));
     const auto secondary = [&](const glm::vec3& normalisedProbe) {
         return glsl::secondaryRadiance(m.bsdf.materialClass, m.bsdf.albedo, m.bsdf.specularColor,
-                                       env, irradiance, m.occlusion, 1.0f, normalisedProbe);
+                                       env, irradiance, m.occlusion, 1.0f, normalisedProbe,
+                                       irradiance);
     };
     return glsl::luminance(secondary(probe) - secondary(glm::vec3(glsl::INV_PI)));
 }

@@ -13,11 +13,11 @@
 namespace onelight::bake {
 
 struct ProbeDropSettings {
-    uint32_t blocksAcross = 16;   // error blocks across a view (down: by its aspect)
-    uint32_t samplesPerSide = 4;  // jittered samples per block side
-    uint32_t pixelPaths = 2;      // full paths per sample for the pixel's radiance
-    uint32_t lobeRays = 16;       // paths in the specular lobe about the reflection
-    uint32_t sphereRays = 16;     // paths over the sphere (E_avg) and the hemisphere (E)
+    uint32_t blocksAcross = 16;    // error blocks across a view (down: by its aspect)
+    uint32_t samplesPerSide = 4;   // jittered samples per block side
+    uint32_t pixelPaths = 2;       // full paths per sample for the pixel's radiance
+    uint32_t lobeRays = 16;        // paths in the specular lobe about the reflection
+    uint32_t hemisphereRays = 16;  // paths over the hemisphere (E)
 };
 
 struct ProbeDropPrediction {
@@ -35,13 +35,14 @@ struct ProbeDropPrediction {
 /*
    At a sample's first hit x (normal n, view v, reflection r), secondaryRadiance of
    shaders/lighting.glsl with the probe and without:
-       dL = secondaryRadiance(.., E(n), P(r)) - secondaryRadiance(.., E(n), 1 / pi)
+       dL = secondaryRadiance(.., E(n), P(r), E(n)) - secondaryRadiance(.., E(n), 1 / pi, E(n))
    where the probe is approximated by what x itself sees (no parallax):
-       P(r)  = L_lobe(r) / E_avg,  L_lobe the GGX-lobe (gloss) average of the radiance about r
+       P(r)  = L_lobe(r) / E(n),  L_lobe the GGX-lobe (gloss) average of the radiance about r
              (split-sum: n = v = r, h drawn with density D NoH, Walter et al. 2007 eq. 35,
              weighted by NoL as the prefilter does),
-       E_avg = pi x the radiance averaged over the whole sphere (ambientCubeAverage's meaning),
-       E(n)  = pi x the cosine-weighted mean radiance about n (the lightmap's irradiance),
+       E(n)  = pi x the cosine-weighted mean radiance about n (the lightmap's irradiance, and
+             the probes' statistic at both ends: x sees what the probe does, shaders/probe.glsl
+             "Normalization"),
    each radiance a path of traceRadiance (the probes' own routine). Then per block b
        err_b = |sum_b Y(dL)| / max(sum_b Y(L_pixel), 0.05 mean(Y(L_pixel)) n_b)
    (Y luminance, L_pixel the samples' full radiance), and a view's error is the mean over its

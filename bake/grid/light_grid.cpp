@@ -78,6 +78,7 @@ world::LightGridCell bakeCell(const BakeScene& scene, const BakeLights& lights,
     const double scale = 4.0 * std::numbers::pi / count;
     for (size_t a = 0; a < 6; ++a) cube[a] *= scale;
     for (const LightTerm& t : terms) {
+        if (!settings.punctualDirect) break;
         if (lights.lights[t.light].levelIndex == cell.dominantPrimary) continue;
         const glm::vec3 direct = t.incidence.irradiance * t.visibility;
         for (size_t a = 0; a < 6; ++a)

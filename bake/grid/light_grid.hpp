@@ -20,6 +20,8 @@ struct GridSettings {
     uint32_t shadowSamples = 16;    // per light per cell
     float insideFraction = 0.5f;    // back-face hits above this fraction: inside solid (a
                                     // block's face coplanar with a wall may be met as either)
+    bool punctualDirect = true;     // false: the cells leave out every punctual light's direct
+                                    // light (the probes' statistic, probeIrradianceCubes)
     TransportSettings transport;
 };
 

@@ -138,6 +138,7 @@ std::vector<world::LightmapTexel> resampleImportedLightmap(
         out.direction = glm::vec3(0.0f);
         out.normalWeight = 0.5f;
         out.flags = world::kLightmapTexelSampled;
+        out.indirectIrradiance = out.irradiance;  // no part of it held apart
     });
     return texels;
 }

@@ -272,6 +272,27 @@ RadianceCache bounceCache(const BakeScene& scene, const BakeLights& lights,
     return cache;
 }
 
+/*
+   The two parts of a texel the probes' specular needs apart (docs/lighting.md "Normalisation"):
+   - The baked punctual lights' direct light E_d = sum_l E_l (n.w_l) V_l as one light from their
+     luminance-weighted mean direction w = normalize(sum_l Y(E_l (n.w_l) V_l) w_l), whose
+     irradiance facing it, E_d / (n.w), returns E_d at the surface normal. (n.w > 0: every term
+     has n.w_l > 0.)
+   - The rest (bounces, sky, emitters: the denoised gathering) at the surface normal, the pixel's
+     side of the probes' statistic.
+*/
+void splitForSpecular(const TexelEstimate& e, const DenoisedIndirect& d, glm::vec3 normal,
+                      world::LightmapTexel& t) {
+    const glm::vec3 direct = glm::max(glm::vec3(e.direct), glm::vec3(0.0f));
+    const double length = glm::length(e.directDirection);
+    if (direct != glm::vec3(0.0f) && length > 0.0) {
+        t.directLight = glm::vec3(e.directDirection / length);
+        const float cosine = std::max(glm::dot(normal, t.directLight), 1e-3f);
+        t.directIrradiance = direct / cosine;
+    }
+    t.indirectIrradiance = glm::max(glm::vec3(d.indirect), glm::vec3(0.0f));
+}
+
 }  // namespace
 
 uint64_t lightmapWorkUnits(size_t allSamples, size_t ownedSamples,
@@ -376,8 +397,12 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             if (glm::length(t.direction) > 0.5f) t.direction *= 0.5f / glm::length(t.direction);
             t.normalWeight = std::clamp(0.5f + glm::dot(s.normal, t.direction), 0.5f, 1.0f);
             t.flags = world::kLightmapTexelSampled;
+            splitForSpecular(e, d, s.normal, t);
             if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z) ||
-                !std::isfinite(t.direction.x + t.direction.y + t.direction.z))
+                !std::isfinite(t.direction.x + t.direction.y + t.direction.z) ||
+                !std::isfinite(t.directIrradiance.x + t.directIrradiance.y + t.directIrradiance.z +
+                               t.indirectIrradiance.x + t.indirectIrradiance.y +
+                               t.indirectIrradiance.z))
                 t = {};
             baked.texels[s.texel] = t;
             baked.shadowMask[s.texel] = e.mask;
@@ -416,6 +441,7 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                 for (uint32_t x = chart.x; x < chart.x + chart.width; ++x) {
                     if (baked.texels[index(x, y)].flags != 0) continue;
                     glm::vec3 irradiance(0.0f), direction(0.0f);
+                    glm::vec3 directIrradiance(0.0f), directLight(0.0f), indirectIrradiance(0.0f);
                     float weight = 0.0f;
                     uint32_t mask = 0, count = 0;
                     for (int dy = -1; dy <= 1; ++dy) {
@@ -431,6 +457,9 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                             irradiance += t.irradiance;
                             direction += t.direction;
                             weight += t.normalWeight;
+                            directIrradiance += t.directIrradiance;
+                            directLight += luminance(t.directIrradiance) * t.directLight;
+                            indirectIrradiance += t.indirectIrradiance;
                             mask += baked.shadowMask[k];
                             ++count;
                         }
@@ -442,6 +471,11 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                     t.direction = direction * inv;
                     t.normalWeight = std::clamp(weight * inv, 0.5f, 1.0f);
                     t.flags = world::kLightmapTexelDilated;
+                    t.indirectIrradiance = indirectIrradiance * inv;
+                    if (glm::length(directLight) > 0.0f) {
+                        t.directLight = glm::normalize(directLight);
+                        t.directIrradiance = directIrradiance * inv;
+                    }
                     fills.emplace_back(index(x, y), t);
                     fillMasks.push_back(static_cast<uint8_t>((mask + count / 2) / count));
                 }

@@ -77,13 +77,17 @@ Cubemap unpackProbeTexels(const world::EnvironmentProbe& probe) {
 }
 
 world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& placement,
-                                    glm::vec3 averageIrradiance, const PrefilterOptions& options) {
+                                    const IrradianceCube& irradiance,
+                                    const PrefilterOptions& options) {
+    const glm::vec3 averageIrradiance = ambientCubeAverage(irradiance);
     world::EnvironmentProbe probe;
     probe.position = placement.position;
     probe.boxMin = placement.boxMin;
     probe.boxMax = placement.boxMax;
     probe.entity = placement.entity;
     probe.irradianceAverage = glm::max(averageIrradiance, glm::vec3(glsl::PROBE_MIN_IRRADIANCE));
+    for (size_t f = 0; f < 6; ++f)
+        probe.irradianceCube[f] = glm::max(irradiance[f], glm::vec3(0.0f));
     for (glm::vec3& t : radiance.mips[0].texels) t = glsl::probeNormalize(t, averageIrradiance);
     const Cubemap filtered = prefilterGGX(std::move(radiance), options);
     probe.faceSize = uint32_t(filtered.mips[0].size);
@@ -94,7 +98,7 @@ world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& plac
 
 std::vector<world::EnvironmentProbe> bakeProbes(const BakeScene& scene, const BakeLights& lights,
                                                 const std::vector<ProbePlacement>& placements,
-                                                const std::vector<glm::vec3>& averageIrradiance,
+                                                const std::vector<IrradianceCube>& irradiance,
                                                 const ProbeCaptureSettings& settings, size_t begin,
                                                 size_t end, bool showProgress, RayCounts& rays) {
     std::vector<world::EnvironmentProbe> probes;
@@ -104,9 +108,8 @@ std::vector<world::EnvironmentProbe> bakeProbes(const BakeScene& scene, const Ba
     for (size_t i = begin; i < end; ++i) {
         Cubemap cube = captureProbe(scene, lights, placements[i].position, uint32_t(i), settings,
                                     &progress, rays);
-        const glm::vec3 average =
-            i < averageIrradiance.size() ? averageIrradiance[i] : glm::vec3(0.0f);
-        probes.push_back(finishProbe(std::move(cube), placements[i], average, settings.prefilter));
+        const IrradianceCube around = i < irradiance.size() ? irradiance[i] : IrradianceCube{};
+        probes.push_back(finishProbe(std::move(cube), placements[i], around, settings.prefilter));
     }
     progress.finish();
     return probes;

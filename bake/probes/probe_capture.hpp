@@ -70,20 +70,25 @@ struct ProbeCaptureSettings {
 [[nodiscard]] std::vector<uint32_t> packProbeTexels(const Cubemap& cube);
 [[nodiscard]] Cubemap unpackProbeTexels(const world::EnvironmentProbe& probe);
 
-// The stored probe: `radiance` (mip 0 as captureProbe leaves it) divided per channel by
-// `averageIrradiance` (probeNormalize, shaders/probe.glsl), prefiltered with prefilterGGX,
-// packed.
+// Irradiance on surfaces facing +x -x +y -y +z -z (an ambient cube), lux per channel.
+using IrradianceCube = std::array<glm::vec3, 6>;
+
+// The stored probe: `radiance` (mip 0 as captureProbe leaves it) divided per channel by E_avg,
+// the mean of `irradiance` (probeNormalize, shaders/probe.glsl), prefiltered with prefilterGGX,
+// packed; `irradiance` kept as the capture's side of the probes' statistic (shaders/probe.glsl,
+// "Normalization").
 [[nodiscard]] world::EnvironmentProbe finishProbe(Cubemap radiance, const ProbePlacement& placement,
-                                                  glm::vec3 averageIrradiance,
+                                                  const IrradianceCube& irradiance,
                                                   const PrefilterOptions& options);
 
 // Probes [begin, end) of `placements`, in order: captured (probe i seeds with i, so a shard
-// of the range gives the same probes as the whole), normalised by averageIrradiance[i]
-// (ambientCubeAverage of the light grid as the runtime samples it at the capture point),
-// prefiltered, packed. One progress bar, "probes", over every probe's rows.
+// of the range gives the same probes as the whole) and finished with irradiance[i] (the light
+// grid's cube without the punctual lights' direct light, as the runtime samples the grid at the
+// capture point: probeIrradianceCubes in bake_level.hpp). One progress bar, "probes", over
+// every probe's rows.
 [[nodiscard]] std::vector<world::EnvironmentProbe> bakeProbes(
     const BakeScene& scene, const BakeLights& lights, const std::vector<ProbePlacement>& placements,
-    const std::vector<glm::vec3>& averageIrradiance, const ProbeCaptureSettings& settings,
+    const std::vector<IrradianceCube>& irradiance, const ProbeCaptureSettings& settings,
     size_t begin, size_t end, bool showProgress, RayCounts& rays);
 
 }  // namespace onelight::bake

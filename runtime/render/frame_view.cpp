@@ -459,7 +459,8 @@ FrameUniforms frameUniformsOf(const Scene& scene, const RendererOptions& options
     u.shadowParams = glm::vec4(options.shadowRadius, options.shadowBand,
                                1.0f / float(options.shadowMapSize), 0.0f);
     u.baked = glm::vec4(scene.level.ambientLux, scene.baked.lightmapDecode, 0.0f, 0.0f);
-    u.probeParams = glm::vec4(float(scene.probes.mips), 0.0f, 0.0f, 0.0f);
+    u.probeParams =
+        glm::vec4(float(scene.probes.mips), options.probesPerNormal ? 1.0f : 0.0f, 0.0f, 0.0f);
     const uint32_t omnis = std::min(effects.omniCount, kMaxEffectOmnis);
     u.counts = glm::uvec4(omnis, effects.spotOn ? 1u : 0u, scene.probes.count, 0u);
     u.skyFromClip = glm::inverse(view.projection * glm::mat4(glm::mat3(viewMatrix(view.camera))));

@@ -34,7 +34,7 @@ static_assert(sizeof(FrameUniforms) == 224 + 80 * (kMaxEffectOmnis + 1));
 static_assert(sizeof(GpuShadowView) == 80);
 static_assert(sizeof(GpuMaterial) == 80);
 static_assert(sizeof(GpuObjectLighting) == 64 + 96 * glsl::MAX_OBJECT_SAMPLES);
-static_assert(sizeof(GpuProbe) == 80);
+static_assert(sizeof(GpuProbe) == 176);
 static_assert(sizeof(GpuProbeGrid) == 48);
 static_assert(sizeof(DrawPush) == 112);
 static_assert(sizeof(MaskedShadowPush) == 80);

@@ -52,6 +52,8 @@ ProbeRecords makeProbeRecords(const std::vector<world::EnvironmentProbe>& probes
         }
         g.influenceMin = glm::vec4(lo, band);
         g.influenceMax = glm::vec4(hi, 0.0f);
+        for (size_t f = 0; f < 6; ++f)
+            g.relativeIrradiance[f] = glm::vec4(p.irradianceCube[f] / p.irradianceAverage, 0.0f);
         const glm::vec3 e = hi - lo;
         volume[i] = e.x * e.y * e.z;
     }
@@ -130,6 +132,7 @@ GpuProbe placeholderProbeRecord() {
     GpuProbe g{};
     g.influenceMin = glm::vec4(glm::vec3(-1e20f), 1.0f);
     g.influenceMax = glm::vec4(glm::vec3(1e20f), 0.0f);
+    for (glm::vec4& face : g.relativeIrradiance) face = glm::vec4(1.0f);
     return g;
 }
 

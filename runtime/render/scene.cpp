@@ -412,7 +412,8 @@ float lightmapStorageScale(const world::BakedLighting& baked) {
     float largest = 0.0f;  // c0 = E / (2 w) bounds |c0| and |c.xyz| (|d| <= 0.5)
     for (const world::LightmapTexel& t : baked.texels)
         for (int c = 0; c < 3; ++c)
-            largest = std::max(largest, world::linearIrradianceCoefficients(t, c).x);
+            largest = std::max({largest, world::linearIrradianceCoefficients(t, c).x,
+                                t.directIrradiance[c], t.indirectIrradiance[c]});
     float scale = 1.0f;
     while (largest * scale > kLightmapStoredMax) scale *= 0.5f;
     return scale;
@@ -420,9 +421,11 @@ float lightmapStorageScale(const world::BakedLighting& baked) {
 
 // Lightmaps and shadow masks of a baked level: every atlas a layer range of one 2D array as large
 // as the largest atlas (a smaller atlas sits at the top-left; atlasUvScale maps its uv1). The
-// lightmap holds, per atlas and colour channel, the four linear coefficients of
-// world::linearIrradianceCoefficients in RGBA16F times a power-of-two storage scale; the shadow
-// mask its byte per texel in the red channel of RGBA8 (linear filtering is guaranteed for both).
+// lightmap holds LIGHTMAP_LAYERS per atlas in RGBA16F (shaders/gpu_interface.glsl): per colour
+// channel the four linear coefficients of world::linearIrradianceCoefficients, then the baked
+// direct light's irradiance, its direction and the rest's average over normals, every irradiance
+// times a power-of-two storage scale; the shadow mask its byte per texel in the red channel of
+// RGBA8 (linear filtering is guaranteed for both).
 void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
                      const assets::LoadedLevel& loaded) {
     const world::CompiledLevel& level = loaded.level;
@@ -436,7 +439,8 @@ void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
     const float scale = lightmapStorageScale(package);
     baked.lightmapDecode = 1.0f / scale;
     const size_t layerTexels = size_t(width) * height;
-    std::vector<uint16_t> coefficients(layerTexels * 4 * 3 * atlases, 0);
+    const size_t layers = glsl::LIGHTMAP_LAYERS;
+    std::vector<uint16_t> coefficients(layerTexels * 4 * layers * atlases, 0);
     std::vector<uint8_t> mask(layerTexels * 4 * atlases, 0);
     baked.atlasUvScale.clear();
     for (uint32_t a = 0; a < level.atlases.size(); ++a) {
@@ -448,12 +452,17 @@ void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
             for (uint32_t x = 0; x < atlas.width; ++x) {
                 const uint64_t texel = first + uint64_t(y) * atlas.width + x;
                 const size_t at = size_t(y) * width + x;
-                for (int c = 0; c < 3; ++c) {
-                    const glm::vec4 k =
-                        world::linearIrradianceCoefficients(package.texels[texel], c) * scale;
-                    uint16_t* out = &coefficients[((size_t(a) * 3 + c) * layerTexels + at) * 4];
+                const world::LightmapTexel& t = package.texels[texel];
+                const auto put = [&](size_t layer, glm::vec4 k) {
+                    uint16_t* out =
+                        &coefficients[((size_t(a) * layers + layer) * layerTexels + at) * 4];
                     for (int i = 0; i < 4; ++i) out[i] = glm::packHalf1x16(k[i]);
-                }
+                };
+                for (int c = 0; c < 3; ++c)
+                    put(size_t(c), world::linearIrradianceCoefficients(t, c) * scale);
+                put(glsl::LIGHTMAP_LAYER_DIRECT, glm::vec4(t.directIrradiance * scale, 0.0f));
+                put(glsl::LIGHTMAP_LAYER_DIRECT_LIGHT, glm::vec4(t.directLight, 0.0f));
+                put(glsl::LIGHTMAP_LAYER_INDIRECT, glm::vec4(t.indirectIrradiance * scale, 0.0f));
                 uint8_t* m = &mask[(size_t(a) * layerTexels + at) * 4];
                 m[0] = m[1] = m[2] = package.shadowMask[texel];
                 m[3] = 255;
@@ -462,7 +471,7 @@ void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
     vk::ImageDesc desc;
     desc.width = width;
     desc.height = height;
-    desc.layers = 3 * atlases;
+    desc.layers = glsl::LIGHTMAP_LAYERS * atlases;
     desc.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
     desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -571,10 +580,13 @@ void createBakedLighting(const vk::Context& ctx, BakedLightingMaps& baked,
     } else {
         const float a = ambientLux;
         vk::ImageDesc lm;
-        lm.layers = 3;
+        lm.layers = glsl::LIGHTMAP_LAYERS;
         lm.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-        createHalfImage(ctx, baked.lightmap, lm,
-                        {a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f, a, 0.0f, 0.0f, 0.0f});
+        // The ambient as every channel's c0, no direct light, and all of it indirect.
+        std::vector<float> layers(size_t(glsl::LIGHTMAP_LAYERS) * 4, 0.0f);
+        for (int c = 0; c < 3; ++c) layers[size_t(c) * 4] = a;
+        for (int c = 0; c < 3; ++c) layers[size_t(glsl::LIGHTMAP_LAYER_INDIRECT) * 4 + c] = a;
+        createHalfImage(ctx, baked.lightmap, lm, layers);
         vk::ImageDesc mask;
         mask.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
         createHalfImage(ctx, baked.shadowMask, mask, {1.0f, 1.0f, 1.0f, 1.0f});

@@ -173,6 +173,47 @@ TEST(HostilePackage, LightGridDimsThatOverflowOrAreEmptyAreRejected) {
         << tooMany;
 }
 
+// The lightmap section with texel 0 changed by `edit`.
+template <class Edit>
+std::string texelError(Edit edit) {
+    world::BakedLighting baked = triangleBake();
+    edit(baked.texels[0]);
+    const std::vector<package::RawSection> sections = package::encodeBakedSections(baked);
+    return errorMessage(
+        [&] { (void)package::decodeBakedSections(sections, triangleLevel(), "texel.olpak"); });
+}
+
+// A texel's direct part is one light: a unit direction where it has light, none where it has
+// none; both parts are finite and not negative.
+TEST(HostilePackage, ALightmapTexelsDirectAndIndirectPartsAreChecked) {
+    EXPECT_EQ(texelError([](world::LightmapTexel&) {}), "") << "the unedited bake is valid";
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) {
+                  t.directIrradiance = glm::vec3(3.0f, 2.0f, 1.0f);
+                  t.directLight = glm::vec3(0.0f, 0.6f, 0.8f);
+                  t.indirectIrradiance = glm::vec3(1.0f);
+              }),
+              "");
+    const std::string prefix = "texel.olpak: section lightmap_texels, record 0: ";
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) {
+                  t.directIrradiance = glm::vec3(1.0f);
+                  t.directLight = glm::vec3(0.0f, 0.5f, 0.0f);
+              }),
+              prefix + "directLight length 0.500000: expected 1 (a direct light)");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) { t.directLight = glm::vec3(1.0f, 0, 0); }),
+              prefix + "directLight length 1.000000: expected 0 (no direct light)");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) {
+                  t.directIrradiance = glm::vec3(1.0f);
+                  t.directLight = glm::vec3(std::nanf(""), 0.0f, 1.0f);
+              }),
+              prefix + "directLight length nan: expected 1 (a direct light)");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) { t.directIrradiance.y = -1.0f; }),
+              prefix + "directIrradiance[1] = -1.000000: not finite or negative");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) {
+                  t.indirectIrradiance.z = std::numeric_limits<float>::infinity();
+              }),
+              prefix + "indirectIrradiance[2] = inf: not finite or negative");
+}
+
 TEST(HostilePackage, SamplingAGridWhoseCellsDoNotMatchItsDimsReadsNothing) {
     world::LightGrid grid;
     grid.dims = glm::uvec3(1u << 21, 1u << 21, 1u << 22);  // wraps to 0 cells in 64 bits

@@ -35,8 +35,8 @@ int main(int argc, char** argv) {
     Cubemap cube = captureProbe(scene, lights, position, 0, settings, nullptr, rays);
     const double capture = std::chrono::duration<double>(clock::now() - start).count();
     start = clock::now();
-    const world::EnvironmentProbe probe =
-        finishProbe(std::move(cube), ProbePlacement{position}, glm::vec3(1.0f), settings.prefilter);
+    const world::EnvironmentProbe probe = finishProbe(std::move(cube), ProbePlacement{position},
+                                                      IrradianceCube{}, settings.prefilter);
     const double prefilter = std::chrono::duration<double>(clock::now() - start).count();
     const size_t bytes = sizeof(package::DiskProbe) + probe.texels.size() * sizeof(uint32_t);
     const size_t threads =

@@ -129,14 +129,15 @@ TEST(ProbeCapture, IsDeterministicAndPacksToTheSameBytes) {
     ProbeCaptureSettings settings;
     settings.faceSize = 16;
     settings.samplesPerTexel = 8;
-    const glm::vec3 average(2.0f, 3.0f, 4.0f);
+    IrradianceCube irradiance;
+    irradiance.fill(glm::vec3(2.0f, 3.0f, 4.0f));
     std::vector<uint8_t> bytes[2];
     for (auto& out : bytes) {
         RayCounts rays;
         const Cubemap cube =
             captureProbe(room.scene, room.lights, kCapturePoint, 3, settings, nullptr, rays);
         const world::EnvironmentProbe probe =
-            finishProbe(cube, ProbePlacement{kCapturePoint}, average, settings.prefilter);
+            finishProbe(cube, ProbePlacement{kCapturePoint}, irradiance, settings.prefilter);
         EXPECT_EQ(probe.texels.size(), world::probeTexelCount(16));
         EXPECT_EQ(probe.mipCount, 5u);
         out = package::encodeProbeSection({probe}).bytes;
@@ -145,13 +146,13 @@ TEST(ProbeCapture, IsDeterministicAndPacksToTheSameBytes) {
     // The whole stage gives probe 3 of a list the same bytes, and so does a shard's range.
     RayCounts rays;
     const std::vector<ProbePlacement> placements(4, ProbePlacement{kCapturePoint});
-    const std::vector<glm::vec3> averages(4, average);
+    const std::vector<IrradianceCube> cubes(4, irradiance);
     const std::vector<world::EnvironmentProbe> probes =
-        bakeProbes(room.scene, room.lights, placements, averages, settings, 0, 4, false, rays);
+        bakeProbes(room.scene, room.lights, placements, cubes, settings, 0, 4, false, rays);
     ASSERT_EQ(probes.size(), 4u);
     EXPECT_EQ(package::encodeProbeSection({probes[3]}).bytes, bytes[0]);
     const std::vector<world::EnvironmentProbe> tail =
-        bakeProbes(room.scene, room.lights, placements, averages, settings, 3, 4, false, rays);
+        bakeProbes(room.scene, room.lights, placements, cubes, settings, 3, 4, false, rays);
     ASSERT_EQ(tail.size(), 1u);
     EXPECT_EQ(package::encodeProbeSection(tail).bytes, bytes[0]);
 }
@@ -164,10 +165,14 @@ TEST(ProbeCapture, StoredMipZeroIsTheCapturedRadianceOverEAvg) {
     RayCounts rays;
     const Cubemap cube =
         captureProbe(room.scene, room.lights, kCapturePoint, 1, settings, nullptr, rays);
+    // A cube whose faces differ, of mean (0.5, 2, 8): the mean normalises, the faces are kept.
     const glm::vec3 average(0.5f, 2.0f, 8.0f);
+    const IrradianceCube irradiance = {average * 2.0f, average * 0.5f, average * 1.5f,
+                                       average * 0.0f, average,        average};
     const world::EnvironmentProbe probe =
-        finishProbe(cube, ProbePlacement{kCapturePoint}, average, settings.prefilter);
+        finishProbe(cube, ProbePlacement{kCapturePoint}, irradiance, settings.prefilter);
     EXPECT_EQ(probe.irradianceAverage, average);
+    EXPECT_EQ(probe.irradianceCube, irradiance);
     const Cubemap stored = unpackProbeTexels(probe);
     for (size_t i = 0; i < cube.mips[0].texels.size(); ++i) {
         const glm::vec3 back = glsl::probeDenormalize(stored.mips[0].texels[i], average);

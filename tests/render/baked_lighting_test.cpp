@@ -178,7 +178,7 @@ glm::vec3 lambertRadiance(const world::CompiledLevel& level, uint32_t material, 
     }
     return radiance + glsl::secondaryRadiance(MATERIAL_LAMBERT, albedo, glm::vec3(0.04f),
                                               glm::vec2(0.0f), secondary, 1.0f, 1.0f,
-                                              glm::vec3(0.0f));
+                                              glm::vec3(0.0f), secondary);
 }
 
 glm::vec3 lightmapIrradiance(const LightmapSample& s, glm::vec3 n) {
@@ -1044,6 +1044,9 @@ TEST(RenderBaked, GlossyFloorReadsTheProbeMipOfItsGlossTimesItsIrradiance) {
     coloured.boxMax = glm::vec3(20.0f, 10.0f, 20.0f);
     grey.position = glm::vec3(30.0f, 1.0f, 0.0f);
     for (world::EnvironmentProbe* probe : {&coloured, &grey}) {
+        // Captured where the light equals the floor's: the floor reads the texels times its own
+        // irradiance (shaders/probe.glsl, "Normalization").
+        probe->irradianceCube.fill(probe->irradianceAverage);
         probe->faceSize = 4;
         probe->mipCount = 3;
         for (uint32_t m = 0; m < 3; ++m)

@@ -49,6 +49,17 @@ void check(const DiskLightmapTexel& d, const std::string& at) {
                            " outside [0.5, 1]");
     if (d.flags & ~kAllLightmapTexelFlags)
         throw world::Error(at + "flags " + std::to_string(d.flags) + " has unknown bits");
+    checkFiniteNonNegative(at, "directIrradiance", d.directIrradiance);
+    checkFiniteNonNegative(at, "indirectIrradiance", d.indirectIrradiance);
+    const float light =
+        std::sqrt(d.directLight[0] * d.directLight[0] + d.directLight[1] * d.directLight[1] +
+                  d.directLight[2] * d.directLight[2]);
+    const bool direct = d.directIrradiance[0] > 0.0f || d.directIrradiance[1] > 0.0f ||
+                        d.directIrradiance[2] > 0.0f;
+    if (direct ? !(std::abs(light - 1.0f) <= 1e-3f) : light != 0.0f)
+        throw world::Error(
+            at + "directLight length " + std::to_string(light) +
+            (direct ? ": expected 1 (a direct light)" : ": expected 0 (no direct light)"));
 }
 
 /// Throws when a light grid cell is not one a bake of `level` can write; `at` names the record.

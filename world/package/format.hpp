@@ -27,8 +27,8 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 6;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
-                                         // 5: items; 6: movers
+inline constexpr uint32_t kVersion = 7;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
+                                         // 5: items; 6: movers; 7: lightmap texels' direct part
 using world::kNoIndex;                   // world/no_index.hpp
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -346,7 +346,10 @@ static_assert(sizeof(DiskFeatures) == 60);
 //   per-pixel normal n' reconstructs it as
 //       E(n') = irradiance * max(0, 0.5 + dot(n', direction)) / normalWeight
 //   which returns `irradiance` exactly at the surface normal (a rebalanced half-Lambert
-//   directional lightmap).
+//   directional lightmap). Two parts of it are kept apart for the specular (docs/lighting.md
+//   "Normalisation"): the baked punctual lights' shadowed direct light as one light of
+//   irradiance directIrradiance from directLight (directIrradiance max(0, n'.directLight) at a
+//   normal n'), and the rest at the surface normal, the pixel's side of the probes' statistic.
 // kSectionImportedLightmap (optional, only with 32..34): DiskImportedTexel[], the same texel
 //   order and count as kSectionLightmapTexels: the light the source format baked itself (a Quake
 //   3 map's q3map2 lightmaps, bake/lightmap/imported_lightmap.hpp), all of it (no primary is
@@ -368,8 +371,11 @@ struct DiskLightmapTexel {
     float direction[3];   // world; half the irradiance-weighted mean incident direction, |d| <= 0.5
     float normalWeight;   // 0.5 + dot(surface normal, direction), in [0.5, 1]; 1 for empty texels
     uint32_t flags;       // LightmapTexelFlags; 0 = outside every chart (all zero)
+    float directIrradiance[3];    // lux, RGB, facing directLight; finite, >= 0
+    float directLight[3];         // world, unit (to 1e-3) towards the light; all 0 iff no direct
+    float indirectIrradiance[3];  // lux, RGB: the rest at the surface normal; finite, >= 0
 };
-static_assert(sizeof(DiskLightmapTexel) == 32);
+static_assert(sizeof(DiskLightmapTexel) == 68);
 
 struct DiskImportedTexel {
     float irradiance[3];  // lux, RGB; finite, >= 0
@@ -413,8 +419,9 @@ static_assert(sizeof(DiskLightGridCell) == 84);
 //   6 faces (+X -X +Y -Y +Z -Z, shaders/probe.glsl) of face_size >> mip squared texels, rows
 //   from the top. Texels hold the GGX-prefiltered radiance (mip m for the gloss
 //   probeGlossOfMip(m)) divided per channel by irradianceAverage (probeNormalize); the shader
-//   multiplies by the pixel's secondary irradiance (probeDenormalize). Bytes per probe:
-//   sizeof(DiskProbe) + 4 * 6 * sum_m (face_size >> m)^2, about 72 + 32 face_size^2.
+//   scales what it reads by the pixel's irradiance over the capture's (irradianceCube), both of
+//   the light the probes hold, at the pixel's normal (probeDenormalize; shaders/probe.glsl). Bytes
+//   per probe: sizeof(DiskProbe) + 4 * 6 * sum_m (face_size >> m)^2, about 72 + 32 face_size^2.
 
 enum ProbeTexelFormat : uint32_t {
     kProbeTexelRgb9e5 = 1,  // uint32_t per texel, shared exponent
@@ -439,8 +446,12 @@ struct DiskProbe {
     uint32_t texelCount;         // 6 * sum_m (face_size >> m)^2
     uint32_t entity;             // the probe entity it came from, kNoIndex when placed
     uint32_t reserved;           // 0
+    float irradianceCube[6][3];  // lux, RGB on surfaces facing +x -x +y -y +z -z at the capture
+                                 // point, of the light the probe holds (the grid's without the
+                                 // punctual lights' direct light); finite, >= 0; its mean is
+                                 // irradianceAverage
 };
-static_assert(sizeof(DiskProbe) == 72);
+static_assert(sizeof(DiskProbe) == 144);
 
 // ---------------------------------------------------------------------------------------------
 // Visibility (id 37, optional, only with 32..34), written by `onelight-bake`

@@ -68,6 +68,12 @@ void check(const DiskProbe& d, uint64_t nextTexel, uint32_t texelCount,
     if (!(std::isfinite(e[0]) && std::isfinite(e[1]) && std::isfinite(e[2])) ||
         !(std::min({e[0], e[1], e[2]}) > 0.0f))
         throw world::Error(at + "irradianceAverage not finite or not > 0");
+    for (int f = 0; f < 6; ++f)
+        for (int c = 0; c < 3; ++c)
+            if (!std::isfinite(d.irradianceCube[f][c]) || d.irradianceCube[f][c] < 0.0f)
+                throw world::Error(
+                    at + "irradianceCube[" + std::to_string(f) + "][" + std::to_string(c) +
+                    "] = " + std::to_string(d.irradianceCube[f][c]) + ": not finite or negative");
     const bool powerOfTwo = d.faceSize != 0 && (d.faceSize & (d.faceSize - 1)) == 0;
     if (!powerOfTwo || d.faceSize > kMaxFaceSize)
         throw world::Error(at + "faceSize " + std::to_string(d.faceSize) +

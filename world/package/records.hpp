@@ -628,6 +628,9 @@ namespace records {
     put(d.direction, t.direction);
     d.normalWeight = t.normalWeight;
     d.flags = t.flags;
+    put(d.directIrradiance, t.directIrradiance);
+    put(d.directLight, t.directLight);
+    put(d.indirectIrradiance, t.indirectIrradiance);
     return d;
 }
 
@@ -638,6 +641,9 @@ namespace records {
     t.direction = vec(d.direction);
     t.normalWeight = d.normalWeight;
     t.flags = d.flags;
+    t.directIrradiance = vec(d.directIrradiance);
+    t.directLight = vec(d.directLight);
+    t.indirectIrradiance = vec(d.indirectIrradiance);
     return t;
 }
 
@@ -693,14 +699,15 @@ inline void fromDiskGridHeader(const DiskLightGridHeader& d, world::BakedLightin
     return d;
 }
 
-/// DiskImportedTexel -> lightmap texel: no direction (normalWeight 0.5, all ambient), the
-/// `flags` of the baked texel at the same place.
+/// DiskImportedTexel -> lightmap texel: no direction (normalWeight 0.5, all ambient, all of it
+/// indirect), the `flags` of the baked texel at the same place.
 [[nodiscard]] inline world::LightmapTexel fromDisk(const DiskImportedTexel& d, uint32_t flags) {
     world::LightmapTexel t;
     t.irradiance = vec(d.irradiance);
     t.direction = glm::vec3(0.0f);
     t.normalWeight = 0.5f;
     t.flags = flags;
+    t.indirectIrradiance = t.irradiance;
     return t;
 }
 
@@ -866,6 +873,7 @@ inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visib
     put(d.boxMin, p.boxMin);
     put(d.boxMax, p.boxMax);
     put(d.irradianceAverage, p.irradianceAverage);
+    for (size_t f = 0; f < 6; ++f) put(d.irradianceCube[f], p.irradianceCube[f]);
     d.faceSize = p.faceSize;
     d.mipCount = p.mipCount;
     d.firstTexel = firstTexel;
@@ -883,6 +891,7 @@ inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visib
     p.boxMin = vec(d.boxMin);
     p.boxMax = vec(d.boxMax);
     p.irradianceAverage = vec(d.irradianceAverage);
+    for (size_t f = 0; f < 6; ++f) p.irradianceCube[f] = vec(d.irradianceCube[f]);
     p.faceSize = d.faceSize;
     p.mipCount = d.mipCount;
     p.entity = d.entity == kNoIndex ? world::kNoIndex : d.entity;

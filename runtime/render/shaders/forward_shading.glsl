@@ -161,7 +161,7 @@ struct LightmapTexel {
 };
 LightmapTexel lightmapTexel() {
     vec2 uv = inUv1 * draw.lightmapScale.xy;
-    float base = float(draw.lightmapAtlas * 3u);
+    float base = float(draw.lightmapAtlas * LIGHTMAP_LAYERS);
     return LightmapTexel(texture(lightmap, vec3(uv, base)), texture(lightmap, vec3(uv, base + 1.0)),
                          texture(lightmap, vec3(uv, base + 2.0)));
 }
@@ -171,6 +171,29 @@ vec3 lightmapIrradiance(LightmapTexel t, vec3 n) {
 }
 bool drawUsesLightmap() {
     return BAKED_LIGHTING != 0 && drawHasLightmap() && featureOn(FEATURE_LIGHTMAP);
+}
+
+// The pixel's two parts of its lightmap texel that the specular needs apart (world::LightmapTexel,
+// docs/lighting.md "Normalisation"): the baked punctual lights' direct light as one light
+// (irradiance facing it, lux, and its direction; 0 where none reaches) and the rest's average
+// over normals (lux), the statistic the probes are normalised by.
+struct LightmapSpecular {
+    vec3 directIrradiance;
+    vec3 directLight;
+    vec3 indirectIrradiance;
+};
+LightmapSpecular lightmapSpecular() {
+    vec2 uv = inUv1 * draw.lightmapScale.xy;
+    float base = float(draw.lightmapAtlas * LIGHTMAP_LAYERS);
+    LightmapSpecular s;
+    s.directIrradiance =
+        texture(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT))).rgb * frame.baked.y;
+    vec3 l = texture(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT_LIGHT))).xyz;
+    float length_l = length(l);  // shorter where the bilinear filter mixes directions
+    s.directLight = length_l > 1e-4 ? l / length_l : vec3(0.0);
+    s.indirectIrradiance =
+        texture(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_INDIRECT))).rgb * frame.baked.y;
+    return s;
 }
 
 // Secondary diffuse irradiance (lux per channel) for normal n: a static surface's lightmap
@@ -296,19 +319,27 @@ float bakedShadow() {
     return 1.0;
 }
 
-// One probe's normalised radiance for the reflection ray (p, r): box-projected when the probe
-// has a box, at the mip of the gloss.
-vec3 sampleProbe(uint i, vec3 p, vec3 r, float lod) {
+// One probe's radiance for the reflection ray (p, r) over its capture's statistic (shaders/
+// probe.glsl, "Normalization"): the mean of its irradiance over normals, or with probesPerNormal
+// its irradiance at the pixel's normal n. Box-projected when the probe has a box, at the mip of
+// the gloss.
+vec3 sampleProbe(uint i, vec3 p, vec3 r, vec3 n, float lod) {
     GpuProbe g = probeRecords[i];
     vec3 dir = g.boxMin.w > 0.5 ? boxProjectedDirection(p, r, g.boxMin.xyz, g.boxMax.xyz, g.position.xyz) : r;
-    return textureLod(probes, vec4(dir, float(i)), lod).rgb;
+    vec3 sampled = textureLod(probes, vec4(dir, float(i)), lod).rgb;
+    if (frame.probeParams.y < 0.5) return sampled;  // the capture's mean: the texels as stored
+    vec3 relative = irradianceAmbientCube(g.relativeIrradiance[0].rgb, g.relativeIrradiance[1].rgb,
+                                          g.relativeIrradiance[2].rgb, g.relativeIrradiance[3].rgb,
+                                          g.relativeIrradiance[4].rgb, g.relativeIrradiance[5].rgb, n);
+    return probeAtNormal(sampled, relative);
 }
 
-// The secondary specular's normalised radiance (shaders/probe.glsl, "Influence"): the first two
+// The secondary specular's radiance over its capture's irradiance at normal n (sampleProbe; the
+// pixel multiplies by its own): the first two
 // records, in order, whose influence reaches p, weighted c1 = w1, c2 = (1 - w1) w2 and
 // normalised; outside every influence volume, the probe captured nearest to p. Inside the probe
 // grid only p's cell's lists are walked (runtime/render/probe_records.hpp), which pick the same.
-vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
+vec3 probeRadiance(vec3 p, vec3 r, vec3 n, float gloss) {
     if (BAKED_LIGHTING == 0) return vec3(INV_PI);
     float lod = probeMipOfGloss(gloss, int(frame.probeParams.x));
     uint listed = 0u, influenceCount = frame.counts.z, nearestCount = frame.counts.z;
@@ -330,7 +361,7 @@ vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
         float w = probeInfluenceWeight(p, g.influenceMin.xyz, g.influenceMax.xyz, g.influenceMin.w) *
                   (1.0 - weight);
         if (w <= 0.0) continue;
-        sum += w * sampleProbe(i, p, r, lod);
+        sum += w * sampleProbe(i, p, r, n, lod);
         weight += w;
         ++taken;
     }
@@ -345,7 +376,7 @@ vec3 probeRadiance(vec3 p, vec3 r, float gloss) {
             nearest = i;
         }
     }
-    return sampleProbe(nearest, p, r, lod);
+    return sampleProbe(nearest, p, r, n, lod);
 }
 
 // A light record of type `type` seen from p, by the shared light model (its colour holds the
@@ -489,16 +520,31 @@ void main() {
                                       brdfDots(n, v, s.l)) * s.illuminance;
     }
 
-    // Baked secondary lighting: diffuse from the lightmap or grid, specular from the probes
-    // de-normalised by the same irradiance (shaders/probe.glsl, "Normalization").
+    // Baked secondary lighting: diffuse from the lightmap or grid; specular from the probes,
+    // de-normalised by the pixel's value of the statistic they were normalised by
+    // (shaders/probe.glsl, "Normalization"), and on a static surface from the lightmap's baked
+    // direct light, by a lobe of its own: the probes hold none of it.
+    // The statistic's normal: a texel's is the surface's, a dynamic object's grid the pixel's.
     vec3 irradiance = secondaryIrradiance(n);
+    vec3 probeIrradiance = irradiance;
+    vec3 statisticNormal = n;
+    if (MATERIAL_CLASS != MATERIAL_LAMBERT && drawUsesLightmap()) {
+        LightmapSpecular baked = lightmapSpecular();
+        probeIrradiance = baked.indirectIrradiance;
+        statisticNormal = geometricNormal;
+        BrdfDots d = brdfDots(n, v, baked.directLight);
+        if (dot(geometricNormal, baked.directLight) > 0.0 && d.NoL > 0.0)
+            radiance += directReflectance(vec3(0.0), f0, gloss, directEnv, footprint, cavity,
+                                          baked.directLight, d) * baked.directIrradiance;
+    }
     float ao = 1.0;
     if (materialHas(m, TEXTURE_OCCLUSION))
         ao = occlusion_fromTexel(texture(occlusionTexture, inUv0).r, m.params.w);
     vec3 probeSample = vec3(0.0);
     float so = 1.0;
     if (MATERIAL_CLASS != MATERIAL_LAMBERT) {
-        probeSample = PROBES == 1 ? probeRadiance(p, reflect(-v, n), gloss) : vec3(INV_PI);
+        probeSample = PROBES == 1 ? probeRadiance(p, reflect(-v, n), statisticNormal, gloss)
+                                  : vec3(INV_PI);
         so = specularOcclusion(NoV, ao, ggxAlpha_fromGloss(gloss));
     }
     if (footprint.bumpShare == 0.0) {
@@ -510,11 +556,13 @@ void main() {
                                                      ggxAlpha_fromGloss(gloss));
         radiance += footprintSecondaryRadiance(MATERIAL_CLASS, albedo,
                                                diffuseEnergyWeight(MATERIAL_CLASS, f0, env), f0,
-                                               specularEnv, irradiance, ao, so, probeSample);
+                                               specularEnv, irradiance, ao, so, probeSample,
+                                               probeIrradiance);
     } else
         radiance += footprintSecondaryRadiance(MATERIAL_CLASS, albedo,
                                                footprintSecondaryWeight(footprint, irradiance), f0,
-                                               footprint.env, irradiance, ao, so, probeSample);
+                                               footprint.env, irradiance, ao, so, probeSample,
+                                               probeIrradiance);
 
     // Emission in cd/m^2 like every other radiance (world/import/README.md), then the whole
     // pre-exposed.
