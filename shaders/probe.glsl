@@ -129,9 +129,10 @@ float probeInfluenceWeight(vec3 p, vec3 influenceMin, vec3 influenceMax, float b
 // With RendererOptions::probesPerNormal (the same statistic at both ends) it divides by
 // E_c(n) / E_avg first (probeAtNormal): L E_p(n) / E_c(n), exactly L where the pixel's light
 // equals the capture's. Neither is better everywhere (docs/lighting.md measures both): the first
-// reads a floor under an open sky 1.1-1.5x bright (the capture's mean counts the ground), the
-// second darkens reflections where a surface's irradiance differs from the capture point's for
-// light it does not reflect (a floor beside a wall, a block's side facing a lit floor).
+// brightens an up-facing floor's reflections where the capture's mean counts a dark ground under
+// it, the second darkens or brightens reflections where a surface's irradiance differs from the
+// capture point's for light it does not reflect (a floor beside a wall, a block's side facing a
+// lit floor).
 // E_avg is floored at PROBE_MIN_IRRADIANCE (lux) so that an unlit channel stays finite;
 // E_c(n) / E_avg at PROBE_MIN_RELATIVE_IRRADIANCE, so that a normal whose side of the capture is
 // dark (a probe over a black floor, seen from a ceiling) cannot blow a reflection up.

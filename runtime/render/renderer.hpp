@@ -157,8 +157,8 @@ struct RendererOptions {
     bool probes = true;  // false: the package's probes ignored, a uniform environment instead
     // The probes' statistic at the capture (shaders/probe.glsl, "Normalization"): false, the
     // mean of its irradiance over normals; true, its irradiance at the pixel's normal, as the
-    // pixel's side is (the seed's same statistic at both ends: exact in the open, worse in
-    // closed rooms; docs/lighting.md "Normalisation" measures both).
+    // pixel's side is (the seed's same statistic at both ends: exact where the pixel is lit as
+    // the capture point, worse in closed rooms; docs/lighting.md "Normalisation" measures both).
     bool probesPerNormal = false;
     // Static surfaces outside the camera cell's potentially visible set are not drawn
     // (world/visibility.hpp). The frame is the same either way (a test checks it).

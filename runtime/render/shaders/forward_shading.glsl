@@ -175,8 +175,8 @@ bool drawUsesLightmap() {
 
 // The pixel's two parts of its lightmap texel that the specular needs apart (world::LightmapTexel,
 // docs/lighting.md "Normalisation"): the baked punctual lights' direct light as one light
-// (irradiance facing it, lux, and its direction; 0 where none reaches) and the rest's average
-// over normals (lux), the statistic the probes are normalised by.
+// (irradiance facing it, lux, and its direction; 0 where none reaches) and the rest at the
+// surface normal (lux), the pixel's side of the probes' statistic.
 struct LightmapSpecular {
     vec3 directIrradiance;
     vec3 directLight;
@@ -334,9 +334,9 @@ vec3 sampleProbe(uint i, vec3 p, vec3 r, vec3 n, float lod) {
     return probeAtNormal(sampled, relative);
 }
 
-// The secondary specular's radiance over its capture's irradiance at normal n (sampleProbe; the
-// pixel multiplies by its own): the first two
-// records, in order, whose influence reaches p, weighted c1 = w1, c2 = (1 - w1) w2 and
+// The secondary specular's radiance over its capture's statistic (sampleProbe; the pixel
+// multiplies by its own): the first two records, in order, whose influence reaches p, weighted
+// c1 = w1, c2 = (1 - w1) w2 and
 // normalised; outside every influence volume, the probe captured nearest to p. Inside the probe
 // grid only p's cell's lists are walked (runtime/render/probe_records.hpp), which pick the same.
 vec3 probeRadiance(vec3 p, vec3 r, vec3 n, float gloss) {
