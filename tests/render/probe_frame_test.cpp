@@ -67,6 +67,24 @@ world::MeshData insideOut(world::MeshData m) {
     return m;
 }
 
+// The camera "view": vertical field of view `yfov` (radians), pitched down by -`pitch` degrees
+// at `position`, its exposure `ev100`.
+void addView(world::GltfBuilder& g, float yfov, float pitch, glm::vec3 position, float ev100) {
+    const int camera = g.addCamera({{"name", "view"},
+                                    {"type", "perspective"},
+                                    {"perspective",
+                                     {{"yfov", yfov},
+                                      {"znear", 0.05f},
+                                      {"zfar", 100.0f},
+                                      {"aspectRatio", float(kWidth) / float(kHeight)}}}});
+    const glm::quat look = glm::angleAxis(glm::radians(pitch), glm::vec3(1.0f, 0.0f, 0.0f));
+    g.addNode({{"name", "view"},
+               {"translation", vec(position)},
+               {"rotation", {look.x, look.y, look.z, look.w}},
+               {"camera", camera},
+               {"extras", {{"onelight", {{"exposure", ev100}}}}}});
+}
+
 std::string writeRoom(const std::string& folder) {
     world::GltfBuilder g;
     const int plaster = g.addMaterial(material("plaster", {0.7f, 0.7f, 0.68f}, 0.9f));
@@ -110,19 +128,7 @@ std::string writeRoom(const std::string& folder) {
         {{"name", "probe_room"},
          {"translation", vec({0.0f, 1.5f, 0.0f})},
          {"extras", {{"onelight", {{"probe", {{"box_min", vec(lo)}, {"box_max", vec(hi)}}}}}}}});
-    const int camera = g.addCamera({{"name", "view"},
-                                    {"type", "perspective"},
-                                    {"perspective",
-                                     {{"yfov", 0.9f},
-                                      {"znear", 0.05f},
-                                      {"zfar", 100.0f},
-                                      {"aspectRatio", float(kWidth) / float(kHeight)}}}});
-    const glm::quat look = glm::angleAxis(glm::radians(-28.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-    g.addNode({{"name", "view"},
-               {"translation", vec({0.0f, 1.4f, 2.7f})},
-               {"rotation", {look.x, look.y, look.z, look.w}},
-               {"camera", camera},
-               {"extras", {{"onelight", {{"exposure", 3.0f}}}}}});
+    addView(g, 0.9f, -28.0f, {0.0f, 1.4f, 2.7f}, 3.0f);
     return g.write(folder, "probe_room");
 }
 
@@ -177,19 +183,7 @@ std::string writeSunCourtyard(const std::string& folder) {
                {"translation", vec({0.0f, 1.5f, 0.0f})},
                {"extras", {{"onelight", {{"probe", true}}}}}});
     g.addNode({{"name", "settings"}, {"extras", {{"onelight", {{"sky", 1500.0f}}}}}});
-    const int camera = g.addCamera({{"name", "view"},
-                                    {"type", "perspective"},
-                                    {"perspective",
-                                     {{"yfov", 0.8f},
-                                      {"znear", 0.05f},
-                                      {"zfar", 100.0f},
-                                      {"aspectRatio", float(kWidth) / float(kHeight)}}}});
-    const glm::quat look = glm::angleAxis(glm::radians(-14.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-    g.addNode({{"name", "view"},
-               {"translation", vec({0.0f, 1.2f, 3.8f})},
-               {"rotation", {look.x, look.y, look.z, look.w}},
-               {"camera", camera},
-               {"extras", {{"onelight", {{"exposure", 13.0f}}}}}});
+    addView(g, 0.8f, -14.0f, {0.0f, 1.2f, 3.8f}, 13.0f);
     return g.write(folder, "sun_courtyard");
 }
 
