@@ -71,6 +71,7 @@ LightmapSettings lightmapSettings(const BakeOptions& options) {
     s.bouncePasses = options.pathsOnly ? 0 : preset.bouncePasses;
     s.cacheSamples = preset.cacheSamples;
     s.denoise.enabled = !options.noDenoise;
+    s.directEdges = !options.noDirectEdges;
     return s;
 }
 

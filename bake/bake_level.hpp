@@ -56,6 +56,9 @@ struct BakeOptions {
     // The lightmaps' indirect part as estimated, without the denoiser (lightmap_denoise.hpp):
     // the baseline the denoiser is measured against.
     bool noDenoise = false;
+    // The baked direct light's shadow edges without their distance field (direct_edges.hpp): the
+    // texels' bilinear visibility only, the baseline the field is measured against.
+    bool noDirectEdges = false;
     // Lightmap density per chart from a pilot pass (chart_density.hpp): charts whose light is
     // smooth get fewer texels. Off: every chart at the requested density. onelight-bake turns
     // it on unless --uniform-density.

@@ -19,11 +19,18 @@ const uint MAX_EFFECT_OMNIS = 4u;   // Black Ops' budget of diffuse omni effect 
 const float HDR_MAX = 65000.0f;     // the RGBA16F targets' cap (half's largest finite is 65504)
 // The lightmap array's layers per atlas (runtime/render/scene.cpp uploadLightmaps): 0..2 the
 // irradianceLinear coefficients of red, green and blue; 3 the baked direct light's irradiance
-// (rgb); 4 its direction (xyz, not scaled); 5 the rest's average over normals (rgb).
+// (rgb) and visibility (a); 4 its direction (xyz, not scaled); 5 the rest's average over normals
+// (rgb).
 const uint LIGHTMAP_LAYERS = 6u;
 const uint LIGHTMAP_LAYER_DIRECT = 3u;
 const uint LIGHTMAP_LAYER_DIRECT_LIGHT = 4u;
 const uint LIGHTMAP_LAYER_INDIRECT = 5u;
+// The shadow mask's green and blue channels (unorm): the direct light's signed distance to its
+// shadow edge over [-DIRECT_EDGE_REACH, DIRECT_EDGE_REACH] texels and its penumbra's width over
+// [0, DIRECT_EDGE_MAX_WIDTH] texels (world::kDirectEdgeReach, kDirectEdgeMaxWidth); alpha the
+// edge's share (directEdgeFactor, lighting.glsl).
+const float DIRECT_EDGE_REACH = 2.0f;
+const float DIRECT_EDGE_MAX_WIDTH = 1.0f;
 
 // ---------------------------------------------------------------------------------------------
 // Descriptor set 0: the frame's resources.
@@ -106,6 +113,7 @@ const int FEATURE_RUNTIME_SHADOW = 4;    // the primary's shadow map: unshadowed
 const int FEATURE_BAKED_SHADOW = 8;      // the primary's shadow mask: unshadowed
 const int FEATURE_PRIMARY = 16;          // the primary light: none
 const int FEATURE_EMISSIVE_TEXTURE = 32; // emissive texel: 1
+const int FEATURE_DIRECT_EDGE = 64;      // the baked direct light's edge: its bilinear visibility
 const int SECONDARY_ANY = 0;       // the draw's push says (a lightmap atlas, an object record)
 const int SECONDARY_LIGHTMAP = 1;  // a static surface's lightmap atlas
 const int SECONDARY_OBJECT = 2;    // a dynamic object's grid record

@@ -19,6 +19,13 @@ enum LightmapTexelFlags : uint32_t {
 };
 inline constexpr uint32_t kAllLightmapTexelFlags = kLightmapTexelSampled | kLightmapTexelDilated;
 
+/// A texel's distance to its baked direct light's shadow edge is kept to this many texels (the
+/// bilinear filter reads the four texels around a point, each within 1.5 texels of an edge
+/// through their cell), its penumbra's width to at most kDirectEdgeMaxWidth texels (the runtime's
+/// twins: DIRECT_EDGE_REACH and DIRECT_EDGE_MAX_WIDTH, shaders/gpu_interface.glsl).
+inline constexpr float kDirectEdgeReach = 2.0f;
+inline constexpr float kDirectEdgeMaxWidth = 1.0f;
+
 /// One lightmap texel: directional secondary irradiance (see DiskLightmapTexel for the
 /// reconstruction E(n') = irradiance * max(0, 0.5 + n'.direction) / normalWeight), and the two
 /// parts the probes' specular needs apart (docs/lighting.md "Normalisation"): the baked punctual
@@ -37,6 +44,16 @@ struct LightmapTexel {
     // the pixel's side of the probes' statistic (shaders/probe.glsl, "Normalization"): lux,
     // >= 0, at the surface normal.
     glm::vec3 indirectIrradiance{0.0f};
+    // The direct light's shadow edge (bake/lightmap/direct_edges.hpp, docs/lighting.md "Baked
+    // shadow edges"): its visibility, the luminance of directIrradiance over the same lights
+    // unshadowed (1 where none reaches); near a sharp edge, the signed distance to the line where
+    // the visibility is one half (texels, + on the lit side, within +-kDirectEdgeReach), the
+    // penumbra's width across it (texels), and the share the runtime gives the edge's distance
+    // over the bilinear visibility (1 near an edge between no light and all of it, else 0).
+    float directVisibility = 1.0f;                // [0, 1]
+    float directEdgeDistance = kDirectEdgeReach;  // [-kDirectEdgeReach, kDirectEdgeReach]
+    float directEdgeWidth = 0.0f;                 // [0, kDirectEdgeMaxWidth]
+    float directEdgeSharpness = 0.0f;             // [0, 1]
 };
 
 enum LightGridCellFlags : uint32_t {

@@ -96,6 +96,10 @@ std::vector<CommandOption> bakeOptions() {
                                     "cached bounce passes")),
         forwarded(world::flagOption(
             "--no-denoise", "the lightmaps' indirect light as estimated, unfiltered", "denoised")),
+        forwarded(world::flagOption("--no-direct-edges",
+                                    "the baked direct light's shadow edges from the texels' "
+                                    "bilinear visibility, without their distance field",
+                                    "a distance field near sharp edges")),
         forwarded(world::flagOption("--own-visibility",
                                     "take the map's own potentially visible set (a Quake 3 map's "
                                     "q3map2 -vis) instead of sampling one: a faster bake, a looser "
@@ -233,6 +237,7 @@ BakePlan resolveBakePlan(const world::ParsedOptions& parsed) {
     options.allLights = parsed.has("--all-lights");
     options.pathsOnly = parsed.has("--paths-only");
     options.noDenoise = parsed.has("--no-denoise");
+    options.noDirectEdges = parsed.has("--no-direct-edges");
     plan.lightmap = lightmapSettings(options);
     plan.grid = gridSettings(options);
     plan.probes = probeSettings(options);

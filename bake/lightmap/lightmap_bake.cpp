@@ -8,6 +8,7 @@
 
 #include "bake/lighting/direct_light.hpp"
 #include "bake/lighting/sampling.hpp"
+#include "bake/lightmap/direct_edges.hpp"
 #include "bake/lightmap/lightmap_denoise.hpp"
 #include "bake/parallel_for.hpp"
 
@@ -128,6 +129,7 @@ TexelEstimate estimateTexelDirect(const BakeScene& scene, const BakeLights& ligh
         out.direct += glm::dvec3(e);
         out.directDirection += double(luminance(e)) * glm::dvec3(atCentre[t].direction);
         out.directLuminance += double(luminance(e));
+        out.directOpenLuminance += double(terms[t].importance);
     }
     return out;
 }
@@ -338,8 +340,8 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
         markDenoiseFootprint(hash, samples, ownedSamples, needed);
     else
         needed = isOwned;
-    // Direct light: of every texel when the bounces are cached (every pass reads them all,
-    // so every shard computes them all), else of the needed texels.
+    // Direct light: of every texel (the cached bounces read them all, and the shadow edges a
+    // few texels around the owned ones; a texel's is cheap beside its gathering).
     const bool cached = settings.bouncePasses > 0;
     std::vector<TexelEstimate> estimates(n);
     tbb::enumerable_thread_specific<RayCounts> rays;
@@ -347,7 +349,6 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
         RayCounts& local = rays.local();
         uint64_t units = 0;
         for (size_t i = r.begin(); i != r.end(); ++i) {
-            if (!cached && !needed[i]) continue;
             estimates[i] = estimateTexelDirect(scene, lights, level, samples[i], settings, local);
             units += cached || owned(i) ? 1 : 0;
         }
@@ -377,6 +378,15 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
         if (progress) progress->advance(units);
     });
 
+    std::vector<DirectEdge> edges(ownedSamples.size());
+    if (settings.directEdges)
+        edges = directEdges(scene, lights, level, samples, estimates, ownedSamples,
+                            settings.shadowSamples, rays.local());
+    else
+        for (size_t k = 0; k < ownedSamples.size(); ++k)
+            edges[k].distance = directVisibility(estimates[ownedSamples[k]]) >= 0.5f
+                                    ? world::kDirectEdgeReach
+                                    : -world::kDirectEdgeReach;
     std::vector<double> denoisedNoise(ownedSamples.size(), 0.0);
     bake::parallelFor(tbb::blocked_range<size_t>(0, ownedSamples.size(), 64), [&](const auto& r) {
         RayCounts& local = rays.local();
@@ -398,6 +408,10 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             t.normalWeight = std::clamp(0.5f + glm::dot(s.normal, t.direction), 0.5f, 1.0f);
             t.flags = world::kLightmapTexelSampled;
             splitForSpecular(e, d, s.normal, t);
+            t.directVisibility = directVisibility(e);
+            t.directEdgeDistance = edges[k].distance;
+            t.directEdgeWidth = edges[k].width;
+            t.directEdgeSharpness = edges[k].sharpness;
             if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z) ||
                 !std::isfinite(t.direction.x + t.direction.y + t.direction.z) ||
                 !std::isfinite(t.directIrradiance.x + t.directIrradiance.y + t.directIrradiance.z +
@@ -442,7 +456,8 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                     if (baked.texels[index(x, y)].flags != 0) continue;
                     glm::vec3 irradiance(0.0f), direction(0.0f);
                     glm::vec3 directIrradiance(0.0f), directLight(0.0f), indirectIrradiance(0.0f);
-                    float weight = 0.0f;
+                    float weight = 0.0f, visibility = 0.0f, distance = 0.0f, width = 0.0f;
+                    float sharpness = 0.0f;
                     uint32_t mask = 0, count = 0;
                     for (int dy = -1; dy <= 1; ++dy) {
                         for (int dx = -1; dx <= 1; ++dx) {
@@ -460,6 +475,10 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                             directIrradiance += t.directIrradiance;
                             directLight += luminance(t.directIrradiance) * t.directLight;
                             indirectIrradiance += t.indirectIrradiance;
+                            visibility += t.directVisibility;
+                            distance += t.directEdgeDistance;
+                            width += t.directEdgeWidth;
+                            sharpness += t.directEdgeSharpness;
                             mask += baked.shadowMask[k];
                             ++count;
                         }
@@ -472,6 +491,10 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                     t.normalWeight = std::clamp(weight * inv, 0.5f, 1.0f);
                     t.flags = world::kLightmapTexelDilated;
                     t.indirectIrradiance = indirectIrradiance * inv;
+                    t.directVisibility = visibility * inv;
+                    t.directEdgeDistance = distance * inv;
+                    t.directEdgeWidth = width * inv;
+                    t.directEdgeSharpness = sharpness * inv;
                     if (glm::length(directLight) > 0.0f) {
                         t.directLight = glm::normalize(directLight);
                         t.directIrradiance = directIrradiance * inv;

@@ -23,6 +23,7 @@ struct LightmapSettings {
     uint32_t bouncePasses = 0;
     uint32_t cacheSamples = 64;
     DenoiseSettings denoise;  // the indirect part's filter (lightmap_denoise.hpp)
+    bool directEdges = true;  // the direct light's sharp shadow edges as a distance field
     TransportSettings transport;
 };
 

@@ -423,9 +423,11 @@ float lightmapStorageScale(const world::BakedLighting& baked) {
 // as the largest atlas (a smaller atlas sits at the top-left; atlasUvScale maps its uv1). The
 // lightmap holds LIGHTMAP_LAYERS per atlas in RGBA16F (shaders/gpu_interface.glsl): per colour
 // channel the four linear coefficients of world::linearIrradianceCoefficients, then the baked
-// direct light's irradiance, its direction and the rest's average over normals, every irradiance
-// times a power-of-two storage scale; the shadow mask its byte per texel in the red channel of
-// RGBA8 (linear filtering is guaranteed for both).
+// direct light's irradiance (alpha: its visibility), its direction and the rest's average over
+// normals, every irradiance times a power-of-two storage scale; the shadow mask RGBA8: the
+// primary's mask byte, then the direct light's shadow edge (distance, width, sharpness; shaders:
+// forward_shading.glsl directEdgeFactor), each over its range (linear filtering is guaranteed
+// for both formats).
 void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
                      const assets::LoadedLevel& loaded) {
     const world::CompiledLevel& level = loaded.level;
@@ -460,12 +462,18 @@ void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
                 };
                 for (int c = 0; c < 3; ++c)
                     put(size_t(c), world::linearIrradianceCoefficients(t, c) * scale);
-                put(glsl::LIGHTMAP_LAYER_DIRECT, glm::vec4(t.directIrradiance * scale, 0.0f));
+                put(glsl::LIGHTMAP_LAYER_DIRECT,
+                    glm::vec4(t.directIrradiance * scale, t.directVisibility));
                 put(glsl::LIGHTMAP_LAYER_DIRECT_LIGHT, glm::vec4(t.directLight, 0.0f));
                 put(glsl::LIGHTMAP_LAYER_INDIRECT, glm::vec4(t.indirectIrradiance * scale, 0.0f));
                 uint8_t* m = &mask[(size_t(a) * layerTexels + at) * 4];
-                m[0] = m[1] = m[2] = package.shadowMask[texel];
-                m[3] = 255;
+                m[0] = package.shadowMask[texel];
+                const auto unorm = [](float v) {
+                    return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+                };
+                m[1] = unorm(0.5f + 0.5f * t.directEdgeDistance / glsl::DIRECT_EDGE_REACH);
+                m[2] = unorm(t.directEdgeWidth / glsl::DIRECT_EDGE_MAX_WIDTH);
+                m[3] = unorm(t.directEdgeSharpness);
             }
     }
     vk::ImageDesc desc;
@@ -586,10 +594,12 @@ void createBakedLighting(const vk::Context& ctx, BakedLightingMaps& baked,
         std::vector<float> layers(size_t(glsl::LIGHTMAP_LAYERS) * 4, 0.0f);
         for (int c = 0; c < 3; ++c) layers[size_t(c) * 4] = a;
         for (int c = 0; c < 3; ++c) layers[size_t(glsl::LIGHTMAP_LAYER_INDIRECT) * 4 + c] = a;
+        layers[size_t(glsl::LIGHTMAP_LAYER_DIRECT) * 4 + 3] = 1.0f;  // visibility
         createHalfImage(ctx, baked.lightmap, lm, layers);
         vk::ImageDesc mask;
         mask.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-        createHalfImage(ctx, baked.shadowMask, mask, {1.0f, 1.0f, 1.0f, 1.0f});
+        // Lit, and no shadow edge.
+        createHalfImage(ctx, baked.shadowMask, mask, {1.0f, 1.0f, 0.0f, 0.0f});
         baked.lightmapDecode = 1.0f;
         baked.atlasUvScale.assign(loaded.level.atlases.size(), glm::vec2(1.0f));
         baked.grid = world::LightGrid{};

@@ -214,6 +214,29 @@ TEST(HostilePackage, ALightmapTexelsDirectAndIndirectPartsAreChecked) {
               prefix + "indirectIrradiance[2] = inf: not finite or negative");
 }
 
+TEST(HostilePackage, ALightmapTexelsShadowEdgeIsChecked) {
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) {
+                  t.directVisibility = 0.25f;
+                  t.directEdgeDistance = -1.5f;
+                  t.directEdgeWidth = 0.2f;
+                  t.directEdgeSharpness = 1.0f;
+              }),
+              "");
+    const std::string prefix = "texel.olpak: section lightmap_texels, record 0: ";
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) { t.directVisibility = 1.5f; }),
+              prefix + "directVisibility 1.500000 outside [0.000000, 1.000000]");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) { t.directVisibility = std::nanf(""); }),
+              prefix + "directVisibility nan outside [0.000000, 1.000000]");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) { t.directEdgeDistance = -3.0f; }),
+              prefix + "directEdgeDistance -3.000000 outside [-2.000000, 2.000000]");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) {
+                  t.directEdgeWidth = std::numeric_limits<float>::infinity();
+              }),
+              prefix + "directEdgeWidth inf outside [0.000000, 1.000000]");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) { t.directEdgeSharpness = -0.5f; }),
+              prefix + "directEdgeSharpness -0.500000 outside [0.000000, 1.000000]");
+}
+
 TEST(HostilePackage, SamplingAGridWhoseCellsDoNotMatchItsDimsReadsNothing) {
     world::LightGrid grid;
     grid.dims = glm::uvec3(1u << 21, 1u << 21, 1u << 22);  // wraps to 0 cells in 64 bits

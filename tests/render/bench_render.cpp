@@ -266,7 +266,7 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
                               // movers)...
         bool shrink = false;  // ...or drawn shrunk to a hundredth instead
     };
-    std::vector<Config> configs(21);
+    std::vector<Config> configs(22);
     for (Config& c : configs) c.options.requestedMsaa = 4;
     configs[0].name = "full frame, as the game draws it";
     configs[1].name = "general pipelines (choices at run time)";
@@ -311,6 +311,8 @@ void benchView(vk::Context& ctx, const std::string& package, const std::string& 
     configs[20].name = "items and movers shrunk to a hundredth";
     configs[20].hide = world::kEntityItem | world::kEntityMover;
     configs[20].shrink = true;
+    configs[21].name = "no baked direct light's edges (bilinear)";
+    configs[21].options.featuresOff = uint32_t(glsl::FEATURE_DIRECT_EDGE);
     // The hidden objects where the level places them (as inputs without transforms draw them).
     std::vector<render::FrameInputs> hiddenInputs(configs.size(), inputs);
     std::vector<std::vector<render::DynamicTransform>> hidden(configs.size());

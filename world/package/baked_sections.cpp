@@ -60,6 +60,16 @@ void check(const DiskLightmapTexel& d, const std::string& at) {
         throw world::Error(
             at + "directLight length " + std::to_string(light) +
             (direct ? ": expected 1 (a direct light)" : ": expected 0 (no direct light)"));
+    const auto inRange = [&](const char* name, float v, float lo, float hi) {
+        if (!(v >= lo && v <= hi))
+            throw world::Error(at + name + " " + std::to_string(v) + " outside [" +
+                               std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    };
+    inRange("directVisibility", d.directVisibility, 0.0f, 1.0f);
+    inRange("directEdgeDistance", d.directEdgeDistance, -world::kDirectEdgeReach,
+            world::kDirectEdgeReach);
+    inRange("directEdgeWidth", d.directEdgeWidth, 0.0f, world::kDirectEdgeMaxWidth);
+    inRange("directEdgeSharpness", d.directEdgeSharpness, 0.0f, 1.0f);
 }
 
 /// Throws when a light grid cell is not one a bake of `level` can write; `at` names the record.

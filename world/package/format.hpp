@@ -27,8 +27,9 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 7;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
-                                         // 5: items; 6: movers; 7: lightmap texels' direct part
+inline constexpr uint32_t kVersion = 8;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
+                                         // 5: items; 6: movers; 7: lightmap texels' direct part;
+                                         // 8: its shadow edge
 using world::kNoIndex;                   // world/no_index.hpp
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -374,8 +375,15 @@ struct DiskLightmapTexel {
     float directIrradiance[3];    // lux, RGB, facing directLight; finite, >= 0
     float directLight[3];         // world, unit (to 1e-3) towards the light; all 0 iff no direct
     float indirectIrradiance[3];  // lux, RGB: the rest at the surface normal; finite, >= 0
+    // The direct light's shadow edge (world::LightmapTexel): its visibility in [0, 1]; the signed
+    // distance to its half-way line, texels in [-kDirectEdgeReach, kDirectEdgeReach]; the
+    // penumbra's width, texels in [0, kDirectEdgeMaxWidth]; the edge's share in [0, 1].
+    float directVisibility;
+    float directEdgeDistance;
+    float directEdgeWidth;
+    float directEdgeSharpness;
 };
-static_assert(sizeof(DiskLightmapTexel) == 68);
+static_assert(sizeof(DiskLightmapTexel) == 84);
 
 struct DiskImportedTexel {
     float irradiance[3];  // lux, RGB; finite, >= 0

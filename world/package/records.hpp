@@ -631,6 +631,10 @@ namespace records {
     put(d.directIrradiance, t.directIrradiance);
     put(d.directLight, t.directLight);
     put(d.indirectIrradiance, t.indirectIrradiance);
+    d.directVisibility = t.directVisibility;
+    d.directEdgeDistance = t.directEdgeDistance;
+    d.directEdgeWidth = t.directEdgeWidth;
+    d.directEdgeSharpness = t.directEdgeSharpness;
     return d;
 }
 
@@ -644,6 +648,10 @@ namespace records {
     t.directIrradiance = vec(d.directIrradiance);
     t.directLight = vec(d.directLight);
     t.indirectIrradiance = vec(d.indirectIrradiance);
+    t.directVisibility = d.directVisibility;
+    t.directEdgeDistance = d.directEdgeDistance;
+    t.directEdgeWidth = d.directEdgeWidth;
+    t.directEdgeSharpness = d.directEdgeSharpness;
     return t;
 }
 

@@ -165,12 +165,36 @@ LightmapTexel lightmapTexel() {
     return LightmapTexel(texture(lightmap, vec3(uv, base)), texture(lightmap, vec3(uv, base + 1.0)),
                          texture(lightmap, vec3(uv, base + 2.0)));
 }
-vec3 lightmapIrradiance(LightmapTexel t, vec3 n) {
-    return vec3(irradianceLinear(t.r, n), irradianceLinear(t.g, n), irradianceLinear(t.b, n)) *
-           frame.baked.y;
-}
 bool drawUsesLightmap() {
     return BAKED_LIGHTING != 0 && drawHasLightmap() && featureOn(FEATURE_LIGHTMAP);
+}
+
+// The baked direct light's shadow edge at this pixel (directEdgeFactor, lighting.glsl; set once
+// per pixel by bakedDirectEdge): the factor on the texels' filtered direct light, and what that
+// adds to the lightmap's diffuse (lux facing edgeLight; negative where the edge takes light).
+float edgeFactor = 1.0;
+vec3 edgeExtra = vec3(0.0);
+vec3 edgeLight = vec3(0.0);
+void bakedDirectEdge() {
+    vec2 uv = inUv1 * draw.lightmapScale.xy;
+    vec4 mask = texture(shadowMask, vec3(uv, float(draw.lightmapAtlas)));
+    float s = (mask.g * 2.0 - 1.0) * DIRECT_EDGE_REACH;  // texels, + lit
+    float pixelStep = fwidth(s);  // in uniform control flow: before the branch below
+    if (mask.a <= 0.0) return;    // no sharp edge within reach
+    float base = float(draw.lightmapAtlas * LIGHTMAP_LAYERS);
+    vec4 d = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT)), 0.0);
+    edgeFactor = directEdgeFactor(d.a, s, max(mask.b * DIRECT_EDGE_MAX_WIDTH, pixelStep), mask.a);
+    if (edgeFactor == 1.0) return;
+    vec3 l = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT_LIGHT)), 0.0).xyz;
+    float length_l = length(l);  // shorter where the bilinear filter mixes directions
+    edgeLight = length_l > 1e-4 ? l / length_l : vec3(0.0);
+    edgeExtra = d.rgb * (frame.baked.y * (edgeFactor - 1.0));
+}
+
+vec3 lightmapIrradiance(LightmapTexel t, vec3 n) {
+    vec3 e = vec3(irradianceLinear(t.r, n), irradianceLinear(t.g, n), irradianceLinear(t.b, n)) *
+             frame.baked.y;
+    return max(e + edgeExtra * max(dot(n, edgeLight), 0.0), vec3(0.0));
 }
 
 // The pixel's two parts of its lightmap texel that the specular needs apart (world::LightmapTexel,
@@ -186,8 +210,8 @@ LightmapSpecular lightmapSpecular() {
     vec2 uv = inUv1 * draw.lightmapScale.xy;
     float base = float(draw.lightmapAtlas * LIGHTMAP_LAYERS);
     LightmapSpecular s;
-    s.directIrradiance =
-        texture(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT))).rgb * frame.baked.y;
+    s.directIrradiance = texture(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT))).rgb *
+                         (frame.baked.y * edgeFactor);
     vec3 l = texture(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT_LIGHT))).xyz;
     float length_l = length(l);  // shorter where the bilinear filter mixes directions
     s.directLight = length_l > 1e-4 ? l / length_l : vec3(0.0);
@@ -431,6 +455,7 @@ void main() {
         return;
     }
     if (BAKED_LIGHTING != 0 && drawHasObjectLighting()) pixelLattice = objectLattice(draw.objectLighting);
+    if (drawUsesLightmap() && featureOn(FEATURE_DIRECT_EDGE)) bakedDirectEdge();
     GpuMaterial m = materialRecords[draw.material];
 
     vec4 base = m.baseColor;

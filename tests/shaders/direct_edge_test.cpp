@@ -1,0 +1,85 @@
+// A baked direct light's shadow edge as a distance field (shaders/lighting.glsl directEdgeFactor,
+// compiled as C++): the four texels around a point hold a straight edge's signed distance and
+// their visibility (0 or 1), their direct light the unshadowed light times it; filtered
+// bilinearly as the GPU does, the factor turns the filtered light into the unshadowed light on
+// the lit side of the line and none on the other, the line itself at one half, wherever it
+// crosses the cell. Without sharpness the factor is 1 (the bilinear visibility), and no input
+// the package may hold gives a NaN or an infinity.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "shading.hpp"
+
+using namespace onelight::glsl;
+
+namespace {
+
+struct Corner {
+    float visibility, distance, light;
+};
+
+float bilinear(const Corner c[4], float u, float v, float Corner::*field) {
+    return (1.0f - u) * (1.0f - v) * c[0].*field + u * (1.0f - v) * c[1].*field +
+           (1.0f - u) * v * c[2].*field + u * v * c[3].*field;
+}
+
+TEST(DirectEdge, TheFieldDrawsAStraightEdgeAcrossItsCellWhereTheDistanceIsZero) {
+    constexpr float kOpen = 800.0f;  // lux, the unshadowed light: the same at the four texels
+    constexpr float kWidth = 0.05f;  // texels
+    for (const float angle : {0.2f, 0.7f, 1.3f, 2.5f}) {
+        for (const float offset : {0.15f, 0.4f, 0.5f, 0.8f}) {
+            // The edge: points p of the cell [0,1]^2 with dot(p, n) = offset + dot((0.5,0.5), n)
+            // - 0.5; lit where dot(p, n) is larger.
+            const vec2 n(std::cos(angle), std::sin(angle));
+            const float c = offset - 0.5f + 0.5f * (n.x + n.y);
+            const auto signedDistance = [&](float x, float y) { return x * n.x + y * n.y - c; };
+            Corner corners[4];
+            const vec2 at[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
+            for (int k = 0; k < 4; ++k) {
+                const float s = signedDistance(at[k].x, at[k].y);
+                corners[k] = {s >= 0.0f ? 1.0f : 0.0f, s, s >= 0.0f ? kOpen : 0.0f};
+            }
+            for (int i = 0; i <= 20; ++i)
+                for (int j = 0; j <= 20; ++j) {
+                    const float u = float(i) / 20.0f, v = float(j) / 20.0f;
+                    const float visibility = bilinear(corners, u, v, &Corner::visibility);
+                    const float s = bilinear(corners, u, v, &Corner::distance);
+                    const float light = bilinear(corners, u, v, &Corner::light);
+                    const float drawn = directEdgeFactor(visibility, s, kWidth, 1.0f) * light;
+                    ASSERT_TRUE(std::isfinite(drawn));
+                    const float exact = signedDistance(u, v);
+                    if (visibility <= 0.0f) continue;  // no texel's light to draw from
+                    if (exact > 0.5f * kWidth)
+                        EXPECT_NEAR(drawn, kOpen, 1e-3f * kOpen) << u << ", " << v;
+                    else if (exact < -0.5f * kWidth)
+                        EXPECT_NEAR(drawn, 0.0f, 1e-3f * kOpen) << u << ", " << v;
+                    else
+                        EXPECT_NEAR(drawn, kOpen * (0.5f + exact / kWidth), 1e-3f * kOpen);
+                }
+        }
+    }
+}
+
+TEST(DirectEdge, WithoutSharpnessTheTexelsVisibilityStays) {
+    for (const float visibility : {1e-3f, 0.3f, 1.0f})
+        for (const float s : {-2.0f, 0.0f, 1.0f})
+            EXPECT_FLOAT_EQ(directEdgeFactor(visibility, s, 0.2f, 0.0f), 1.0f);
+}
+
+TEST(DirectEdge, NoInputGivesANaNOrAnInfinity) {
+    const float visibilities[] = {0.0f, 1e-30f, 1e-5f, 0.5f, 1.0f};
+    const float distances[] = {-2.0f, 0.0f, 2.0f};
+    const float widths[] = {0.0f, 1e-30f, 1.0f};
+    const float sharpnesses[] = {0.0f, 0.5f, 1.0f};
+    for (const float v : visibilities)
+        for (const float s : distances)
+            for (const float w : widths)
+                for (const float k : sharpnesses) {
+                    const float g = directEdgeFactor(v, s, w, k);
+                    EXPECT_TRUE(std::isfinite(g) && g >= 0.0f) << v << " " << s << " " << w;
+                }
+}
+
+}  // namespace
