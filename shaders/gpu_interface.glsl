@@ -19,8 +19,8 @@ const uint MAX_EFFECT_OMNIS = 4u;   // Black Ops' budget of diffuse omni effect 
 const float HDR_MAX = 65000.0f;     // the RGBA16F targets' cap (half's largest finite is 65504)
 // The lightmap array's layers per atlas (runtime/render/scene.cpp uploadLightmaps): 0..2 the
 // irradianceLinear coefficients of red, green and blue; 3 the baked direct light's irradiance
-// (rgb) and visibility (a); 4 its direction (xyz, not scaled); 5 the rest's average over normals
-// (rgb).
+// (rgb) and visibility (a); 4 its direction (xyz, not scaled) and its shadow edge's low level
+// (a); 5 the rest's average over normals (rgb) and the edge's high level (a).
 const uint LIGHTMAP_LAYERS = 6u;
 const uint LIGHTMAP_LAYER_DIRECT = 3u;
 const uint LIGHTMAP_LAYER_DIRECT_LIGHT = 4u;

@@ -46,13 +46,16 @@ struct LightmapTexel {
     glm::vec3 indirectIrradiance{0.0f};
     // The direct light's shadow edge (bake/lightmap/direct_edges.hpp, docs/lighting.md "Baked
     // shadow edges"): its visibility, the luminance of directIrradiance over the same lights
-    // unshadowed (1 where none reaches); near a sharp edge, the signed distance to the line where
-    // the visibility is one half (texels, + on the lit side, within +-kDirectEdgeReach), the
-    // penumbra's width across it (texels), and the share the runtime gives the edge's distance
-    // over the bilinear visibility (1 near an edge between no light and all of it, else 0).
+    // unshadowed (1 where none reaches); near a sharp edge, the signed distance to the line half
+    // way between the edge's two levels of visibility (texels, + on the lit side, within
+    // +-kDirectEdgeReach), the penumbra's width across it (texels), the two levels, and the share
+    // the runtime gives the edge over the bilinear visibility (1 near an edge it draws, else 0,
+    // with both levels the texel's visibility).
     float directVisibility = 1.0f;                // [0, 1]
     float directEdgeDistance = kDirectEdgeReach;  // [-kDirectEdgeReach, kDirectEdgeReach]
     float directEdgeWidth = 0.0f;                 // [0, kDirectEdgeMaxWidth]
+    float directEdgeLow = 1.0f;                   // [0, directEdgeHigh]
+    float directEdgeHigh = 1.0f;                  // [directEdgeLow, 1]
     float directEdgeSharpness = 0.0f;             // [0, 1]
 };
 

@@ -46,8 +46,11 @@ namespace {
 /// 1 + pass).
 constexpr uint32_t kEdgePass = 1000;
 
-/// A sharp edge's sides: no more light than this on one, and no less than 1 - this on the other.
-constexpr float kEdgeSideTolerance = 0.1f;
+/// The least change of visibility across a texel's neighbourhood that is an edge to draw.
+constexpr float kEdgeContrast = 0.25f;
+
+/// How far the field may draw a sharp texel's own centre from the visibility its rays measured.
+constexpr float kEdgeCentreTolerance = 0.1f;
 
 /// Halvings of a lattice step that place a crossing, and the half step of the visibility's
 /// gradient there, texels (step 3 below).
@@ -61,35 +64,41 @@ constexpr float kEdgeFitSpread = 0.05f;
 
 /*
    The distance field (Green 2007, "Improved alpha-tested magnification for vector textures and
-   special effects", applied to a shadow as in Unreal's distance-field shadow maps):
+   special effects", applied to a shadow as in Unreal's distance-field shadow maps), for an edge
+   between two levels of visibility: none and all of one light, or, where other lights reach
+   both sides, V_low and V_high.
    1. A texel straddles an edge when the visibility V at its centre and at its eight neighbours'
-      (same surface) lies on both sides of 1/2.
+      (same surface) spans at least kEdgeContrast: V_low and V_high are their least and greatest,
+      and the edge is where V crosses their mean, tau.
    2. Each straddling texel samples V on a lattice kEdgeLattice times finer over its footprint
       (points on its plane, between its neighbours' centres; a side towards no neighbour, or one
-      moved out of a solid, is left out), with the texel's own shadow rays per point.
+      moved out of a solid, is left out), with the texel's own shadow rays per point. Its levels
+      widen to the lattice's least and greatest.
    3. Where two neighbouring lattice points (or a point and the next texel's lattice, or that
-      texel's centre when it has none) lie on both sides of 1/2, the edge crosses between them:
+      texel's centre when it has none) lie on both sides of tau, the edge crosses between them:
       kEdgeBisections halvings of the segment (a visibility each) and the linear interpolation's
-      1/2 in the last half place it to 1 / (kEdgeLattice 2^kEdgeBisections) of a texel. (The
+      tau in the last half place it to 1 / (kEdgeLattice 2^kEdgeBisections) of a texel. (The
       lattice alone left a sharp edge anywhere within its step: a 20 cm texel's edge wandered
-      1.4 cm about its line.) The penumbra there is w = 1 / |grad V|, the gradient by central
-      differences over +-kEdgeGradientStep texels along x and y (four visibilities): no narrower
-      than 2 kEdgeGradientStep where the light goes from none to all within it. (The lattice's
-      own step over |V_b - V_a| drew a sun's 4.5 cm penumbra 8.4 cm wide.)
-   4. A texel within kDirectEdgeReach of a crossing keeps the distance to the nearest one, signed
-      by its own side, and that crossing's width. The edge is sharp (the runtime draws its
-      distance) when its texel's lattice and its eight neighbours' centres go from at most
-      kEdgeSideTolerance to at least 1 - kEdgeSideTolerance (its lattice alone, where the edge
-      cuts a corner, may not reach a side: such texels drew the bilinear's wide ramp into the
-      field's) and w is within kDirectEdgeMaxWidth; otherwise the visibility's bilinear
-      filter stays (a soft edge, or an edge of one light among others that stay: the distance
-      says where, not how much).
+      1.4 cm about its line.) The penumbra there is w = (V_high - V_low) / |grad V|, the gradient
+      by central differences over +-kEdgeGradientStep texels along x and y (four visibilities):
+      no narrower than 2 kEdgeGradientStep where the light changes within it. (The lattice's own
+      step drew a sun's 4.5 cm penumbra 8.4 cm wide.)
+   4. A texel within kDirectEdgeReach of a crossing keeps the distance to the edge's line through
+      the crossings around the nearest one (fitEdgeLine), signed by its own side of tau, their
+      width and levels. The runtime draws V = mix(V_low, V_high, clamp(0.5 + s / w)) there when
+      w is within kDirectEdgeMaxWidth and, where the texel's centre is beyond the penumbra, the
+      level drawn there is within kEdgeCentreTolerance of its visibility. Otherwise (a soft edge,
+      or a third level: beside one light's sharp edge, texels lit by part of another were drawn
+      at the levels' ends, and a real map's ceiling read 4.1% off its reference instead of 3.4%)
+      the texel keeps its bilinear visibility: V_low = V_high = V, sharpness 0.
    Distances are in texels: a chart's texels are squares on its surface (uniform density).
 */
 struct Crossing {
     glm::vec2 at{0.0f};  // texel coordinates in the atlas (texel centres at integers)
     float width = 0.0f;  // texels
-    bool sharp = false;
+    float low = 0.0f;    // the visibility on its dark side...
+    float high = 1.0f;   // ...and on its lit side
+    bool sharp = false;  // width within kDirectEdgeMaxWidth
 };
 
 struct Neighbourhood {
@@ -112,29 +121,31 @@ struct Neighbourhood {
 struct EdgeLine {
     bool fitted = false;  // enough crossings on a line; else the nearest crossing's distance
     glm::vec2 point{0.0f}, normal{0.0f};
-    float width = 0.0f;  // their mean
-    bool sharp = false;  // all of them
+    float width = 0.0f, low = 0.0f, high = 0.0f;  // their means
+    bool sharp = false;                           // all of them
 };
 
 /*
    A texel's distance to the edge is to this line, not to the nearest crossing: the crossings are
    points a fraction of a texel apart along the edge, and the distance to the nearest overstates
    the distance to the edge by up to sqrt(h^2 + (gap / 2)^2) - h (0.06 texel at h = 0.5 with
-   0.5-texel gaps): the edge drawn from such distances bulged between its crossings. The line is
-   the principal axis of the crossings around the nearest (a 2x2 covariance); where they do not
-   lie on one (a corner: the smaller axis's spread above kEdgeFitSpread) the nearest's distance
-   stays.
+   0.5-texel gaps): the edge drawn from such distances bulged between its crossings (a wander of
+   0.52 cm about a 20 cm texel's line, 0.16 cm with the line). The line is the principal axis of
+   the crossings around the nearest (a 2x2 covariance); where they do not lie on one (a corner:
+   the smaller axis's spread above kEdgeFitSpread) the nearest's distance stays.
 */
 EdgeLine fitEdgeLine(const std::vector<const Crossing*>& crossings, glm::vec2 around) {
     EdgeLine line;
     glm::vec2 mean(0.0f);
-    float widths = 0.0f;
+    float widths = 0.0f, lows = 0.0f, highs = 0.0f;
     bool sharp = true;
     uint32_t count = 0;
     for (const Crossing* c : crossings)
         if (glm::length(c->at - around) <= kEdgeFitRadius) {
             mean += c->at;
             widths += c->width;
+            lows += c->low;
+            highs += c->high;
             sharp = sharp && c->sharp;
             ++count;
         }
@@ -161,6 +172,8 @@ EdgeLine fitEdgeLine(const std::vector<const Crossing*>& crossings, glm::vec2 ar
     line.point = mean;
     line.normal = normal;
     line.width = widths / float(count);
+    line.low = lows / float(count);
+    line.high = highs / float(count);
     line.sharp = sharp;
     return line;
 }
@@ -181,6 +194,16 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
     const auto usable = [&](int64_t j) {
         return j >= 0 && samples[size_t(j)].centreInside && !estimates[size_t(j)].moved;
     };
+    // The least and greatest visibility of the texel centres around sample i (itself included).
+    const auto levelsAround = [&](size_t i) {
+        glm::vec2 levels(visibility[i]);
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                if (const int64_t j = near.at(i, dx, dy); j >= 0)
+                    levels = glm::vec2(std::min(levels.x, visibility[size_t(j)]),
+                                       std::max(levels.y, visibility[size_t(j)]));
+        return levels;
+    };
 
     // 1. The straddling texels within `reach` of a wanted one.
     std::vector<uint8_t> isWanted(n, 0);
@@ -189,15 +212,8 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
     bake::parallelFor(tbb::blocked_range<size_t>(0, n, 256), [&](const auto& r) {
         for (size_t i = r.begin(); i != r.end(); ++i) {
             if (!usable(int64_t(i))) continue;
-            float lo = visibility[i], hi = visibility[i];
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int64_t j = near.at(i, dx, dy);
-                    if (j < 0) continue;
-                    lo = std::min(lo, visibility[size_t(j)]);
-                    hi = std::max(hi, visibility[size_t(j)]);
-                }
-            if (!(lo < 0.5f && hi >= 0.5f)) continue;
+            const glm::vec2 levels = levelsAround(i);
+            if (levels.y - levels.x < kEdgeContrast) continue;
             bool nearWanted = false;
             for (int dy = -reach; dy <= reach && !nearWanted; ++dy)
                 for (int dx = -reach; dx <= reach && !nearWanted; ++dx) {
@@ -276,29 +292,21 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
                                           shadowSamples, rng, counts);
             };
             const float* own = &lattice[c * k * k];
-            float lo = 1.0f, hi = 0.0f;
+            glm::vec2 levels = levelsAround(i);
             for (uint32_t q = 0; q < k * k; ++q)
-                if (!std::isnan(own[q])) {
-                    lo = std::min(lo, own[q]);
-                    hi = std::max(hi, own[q]);
-                }
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                    if (const int64_t j = near.at(i, dx, dy); j >= 0) {
-                        lo = std::min(lo, visibility[size_t(j)]);
-                        hi = std::max(hi, visibility[size_t(j)]);
-                    }
-            const bool binary = lo <= kEdgeSideTolerance && hi >= 1.0f - kEdgeSideTolerance;
-            const glm::vec2 centre(float(samples[i].x), float(samples[i].y));
+                if (!std::isnan(own[q]))
+                    levels = glm::vec2(std::min(levels.x, own[q]), std::max(levels.y, own[q]));
+            const float tau = 0.5f * (levels.x + levels.y);
+            const glm::vec2 centre(float(s.x), float(s.y));
             const auto point = [&](uint32_t a, uint32_t b) {
                 return centre + (glm::vec2(float(a), float(b)) + 0.5f) * step - 0.5f;
             };
             const auto cross = [&](float va, glm::vec2 pa, float vb, glm::vec2 pb) {
-                if (std::isnan(va) || std::isnan(vb) || (va < 0.5f) == (vb < 0.5f)) return;
+                if (std::isnan(va) || std::isnan(vb) || (va < tau) == (vb < tau)) return;
                 for (uint32_t h = 0; h < kEdgeBisections; ++h) {
                     const glm::vec2 pm = 0.5f * (pa + pb);
                     const float vm = visibilityAt(pm);
-                    if ((vm < 0.5f) == (va < 0.5f)) {
+                    if ((vm < tau) == (va < tau)) {
                         pa = pm;
                         va = vm;
                     } else {
@@ -306,18 +314,18 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
                         vb = vm;
                     }
                 }
-                const float t = std::clamp((0.5f - va) / (vb - va), 0.0f, 1.0f);
+                const float t = std::clamp((tau - va) / (vb - va), 0.0f, 1.0f);
                 const glm::vec2 at = pa + t * (pb - pa);
                 const glm::vec2 dx(kEdgeGradientStep, 0.0f), dy(0.0f, kEdgeGradientStep);
                 const glm::vec2 gradient =
                     glm::vec2(visibilityAt(at + dx) - visibilityAt(at - dx),
                               visibilityAt(at + dy) - visibilityAt(at - dy)) /
                     (2.0f * kEdgeGradientStep);
-                const float g = glm::length(gradient);
-                const float width =
-                    g > 1.0f / world::kDirectEdgeMaxWidth ? 1.0f / g : world::kDirectEdgeMaxWidth;
+                // The distance over which V goes from one level to the other.
+                const float g = glm::length(gradient) / (levels.y - levels.x);
+                const bool sharp = g > 1.0f / world::kDirectEdgeMaxWidth;
                 crossings[c].push_back(
-                    {at, width, binary && g > 1.0f / world::kDirectEdgeMaxWidth});
+                    {at, sharp ? 1.0f / g : world::kDirectEdgeMaxWidth, levels.x, levels.y, sharp});
             };
             // The value of the lattice point (a, b) of the texel beside this one at (dx, dy):
             // its own lattice's, else its centre's visibility.
@@ -354,9 +362,10 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
         std::vector<const Crossing*> found;
         for (size_t w = r.begin(); w != r.end(); ++w) {
             const size_t i = wanted[w];
-            const bool lit = visibility[i] >= 0.5f;
+            const float v = visibility[i];
             DirectEdge e;
-            e.distance = lit ? world::kDirectEdgeReach : -world::kDirectEdgeReach;
+            e.distance = v >= 0.5f ? world::kDirectEdgeReach : -world::kDirectEdgeReach;
+            e.low = e.high = v;
             const glm::vec2 centre(float(samples[i].x), float(samples[i].y));
             found.clear();
             const Crossing* nearest = nullptr;
@@ -375,12 +384,29 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
                     }
                 }
             if (nearest && best <= world::kDirectEdgeReach + kEdgeFitRadius) {
-                const EdgeLine line = fitEdgeLine(found, nearest->at);
+                EdgeLine line = fitEdgeLine(found, nearest->at);
+                if (!line.fitted) {
+                    line.width = nearest->width;
+                    line.low = nearest->low;
+                    line.high = nearest->high;
+                    line.sharp = nearest->sharp;
+                }
+                const bool lit = v >= 0.5f * (line.low + line.high);
                 const float d =
                     line.fitted ? std::abs(glm::dot(centre - line.point, line.normal)) : best;
-                e.distance = std::min(d, world::kDirectEdgeReach) * (lit ? 1.0f : -1.0f);
-                e.width = line.fitted ? line.width : nearest->width;
-                e.sharpness = (line.fitted ? line.sharp : nearest->sharp) ? 1.0f : 0.0f;
+                const float distance = std::min(d, world::kDirectEdgeReach) * (lit ? 1.0f : -1.0f);
+                // The field must also draw the texel's own centre as its rays saw it, where it
+                // draws a level (beyond the penumbra: inside it, the ramp's shape and the rays'
+                // noise part them more).
+                const bool onRamp = std::abs(distance) < 0.5f * line.width;
+                const float drawn = distance > 0.0f ? line.high : line.low;
+                if (line.sharp && (onRamp || std::abs(drawn - v) <= kEdgeCentreTolerance)) {
+                    e.distance = distance;
+                    e.width = line.width;
+                    e.low = line.low;
+                    e.high = line.high;
+                    e.sharpness = 1.0f;
+                }
             }
             out[w] = e;
         }

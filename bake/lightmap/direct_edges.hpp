@@ -21,10 +21,14 @@ namespace onelight::bake {
 /// Visibility samples per texel edge on the finer lattice (kEdgeLattice^2 per texel).
 inline constexpr uint32_t kEdgeLattice = 4;
 
+/// A texel's edge (world::LightmapTexel's directEdge* fields): sharpness 0 and low = high = its
+/// visibility where none is drawn.
 struct DirectEdge {
     float distance = 0.0f;   // texels, signed (+ lit), within +-world::kDirectEdgeReach
     float width = 0.0f;      // texels: the penumbra across the edge, within kDirectEdgeMaxWidth
-    float sharpness = 0.0f;  // 1: an edge between no light and all of it; 0: read the visibility
+    float low = 1.0f;        // the visibility on the edge's dark side...
+    float high = 1.0f;       // ...and on its lit side
+    float sharpness = 0.0f;  // 1: the runtime draws the edge; 0: the bilinear visibility
 };
 
 /// Where in `samples` a texel is sampled (binary search: samples are in texel order).

@@ -383,10 +383,11 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
         edges = directEdges(scene, lights, level, samples, estimates, ownedSamples,
                             settings.shadowSamples, rays.local());
     else
-        for (size_t k = 0; k < ownedSamples.size(); ++k)
-            edges[k].distance = directVisibility(estimates[ownedSamples[k]]) >= 0.5f
-                                    ? world::kDirectEdgeReach
-                                    : -world::kDirectEdgeReach;
+        for (size_t k = 0; k < ownedSamples.size(); ++k) {
+            const float v = directVisibility(estimates[ownedSamples[k]]);
+            edges[k].distance = v >= 0.5f ? world::kDirectEdgeReach : -world::kDirectEdgeReach;
+            edges[k].low = edges[k].high = v;
+        }
     std::vector<double> denoisedNoise(ownedSamples.size(), 0.0);
     bake::parallelFor(tbb::blocked_range<size_t>(0, ownedSamples.size(), 64), [&](const auto& r) {
         RayCounts& local = rays.local();
@@ -411,6 +412,8 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             t.directVisibility = directVisibility(e);
             t.directEdgeDistance = edges[k].distance;
             t.directEdgeWidth = edges[k].width;
+            t.directEdgeLow = edges[k].low;
+            t.directEdgeHigh = edges[k].high;
             t.directEdgeSharpness = edges[k].sharpness;
             if (!std::isfinite(t.irradiance.x + t.irradiance.y + t.irradiance.z) ||
                 !std::isfinite(t.direction.x + t.direction.y + t.direction.z) ||
@@ -457,7 +460,7 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                     glm::vec3 irradiance(0.0f), direction(0.0f);
                     glm::vec3 directIrradiance(0.0f), directLight(0.0f), indirectIrradiance(0.0f);
                     float weight = 0.0f, visibility = 0.0f, distance = 0.0f, width = 0.0f;
-                    float sharpness = 0.0f;
+                    float low = 0.0f, high = 0.0f, sharpness = 0.0f;
                     uint32_t mask = 0, count = 0;
                     for (int dy = -1; dy <= 1; ++dy) {
                         for (int dx = -1; dx <= 1; ++dx) {
@@ -478,6 +481,8 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                             visibility += t.directVisibility;
                             distance += t.directEdgeDistance;
                             width += t.directEdgeWidth;
+                            low += t.directEdgeLow;
+                            high += t.directEdgeHigh;
                             sharpness += t.directEdgeSharpness;
                             mask += baked.shadowMask[k];
                             ++count;
@@ -494,6 +499,8 @@ void dilateLightmaps(const world::CompiledLevel& level, world::BakedLighting& ba
                     t.directVisibility = visibility * inv;
                     t.directEdgeDistance = distance * inv;
                     t.directEdgeWidth = width * inv;
+                    t.directEdgeLow = low * inv;
+                    t.directEdgeHigh = std::max(high * inv, t.directEdgeLow);
                     t.directEdgeSharpness = sharpness * inv;
                     if (glm::length(directLight) > 0.0f) {
                         t.directLight = glm::normalize(directLight);

@@ -423,8 +423,9 @@ float lightmapStorageScale(const world::BakedLighting& baked) {
 // as the largest atlas (a smaller atlas sits at the top-left; atlasUvScale maps its uv1). The
 // lightmap holds LIGHTMAP_LAYERS per atlas in RGBA16F (shaders/gpu_interface.glsl): per colour
 // channel the four linear coefficients of world::linearIrradianceCoefficients, then the baked
-// direct light's irradiance (alpha: its visibility), its direction and the rest's average over
-// normals, every irradiance times a power-of-two storage scale; the shadow mask RGBA8: the
+// direct light's irradiance (alpha: its visibility), its direction (alpha: its shadow edge's low
+// level) and the rest's average over normals (alpha: the edge's high level), every irradiance
+// times a power-of-two storage scale; the shadow mask RGBA8: the
 // primary's mask byte, then the direct light's shadow edge (distance, width, sharpness; shaders:
 // forward_shading.glsl directEdgeFactor), each over its range (linear filtering is guaranteed
 // for both formats).
@@ -464,8 +465,9 @@ void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
                     put(size_t(c), world::linearIrradianceCoefficients(t, c) * scale);
                 put(glsl::LIGHTMAP_LAYER_DIRECT,
                     glm::vec4(t.directIrradiance * scale, t.directVisibility));
-                put(glsl::LIGHTMAP_LAYER_DIRECT_LIGHT, glm::vec4(t.directLight, 0.0f));
-                put(glsl::LIGHTMAP_LAYER_INDIRECT, glm::vec4(t.indirectIrradiance * scale, 0.0f));
+                put(glsl::LIGHTMAP_LAYER_DIRECT_LIGHT, glm::vec4(t.directLight, t.directEdgeLow));
+                put(glsl::LIGHTMAP_LAYER_INDIRECT,
+                    glm::vec4(t.indirectIrradiance * scale, t.directEdgeHigh));
                 uint8_t* m = &mask[(size_t(a) * layerTexels + at) * 4];
                 m[0] = package.shadowMask[texel];
                 const auto unorm = [](float v) {

@@ -219,6 +219,8 @@ TEST(HostilePackage, ALightmapTexelsShadowEdgeIsChecked) {
                   t.directVisibility = 0.25f;
                   t.directEdgeDistance = -1.5f;
                   t.directEdgeWidth = 0.2f;
+                  t.directEdgeLow = 0.1f;
+                  t.directEdgeHigh = 0.9f;
                   t.directEdgeSharpness = 1.0f;
               }),
               "");
@@ -233,6 +235,13 @@ TEST(HostilePackage, ALightmapTexelsShadowEdgeIsChecked) {
                   t.directEdgeWidth = std::numeric_limits<float>::infinity();
               }),
               prefix + "directEdgeWidth inf outside [0.000000, 1.000000]");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) { t.directEdgeLow = -0.25f; }),
+              prefix + "directEdgeLow -0.250000 outside [0.000000, 1.000000]");
+    EXPECT_EQ(texelError([](world::LightmapTexel& t) {
+                  t.directEdgeLow = 0.8f;
+                  t.directEdgeHigh = 0.5f;
+              }),
+              prefix + "directEdgeHigh 0.500000 outside [0.800000, 1.000000]");
     EXPECT_EQ(texelError([](world::LightmapTexel& t) { t.directEdgeSharpness = -0.5f; }),
               prefix + "directEdgeSharpness -0.500000 outside [0.000000, 1.000000]");
 }

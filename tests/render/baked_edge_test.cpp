@@ -34,7 +34,9 @@ const glm::vec3 kAcross{-std::sin(kTurn), 0.0f, std::cos(kTurn)};
 // wall's centre line.
 constexpr float kEdgeOffset = kHalfThick + kWallTop;
 
-assets::LoadedLevel wallTurnedInABakedSun() {
+// With `overhead`, a second baked sun of 5 klx straight down lights both sides of the edge: the
+// edge then goes from 0.41 of the direct light to all of it.
+assets::LoadedLevel wallTurnedInABakedSun(bool overhead) {
     test::Scene s;
     s.materials = {{{0.5f, 0.5f, 0.5f, 1.0f}, 0.0f, 1.0f}};
     test::addFloor(s, 0.0f, 0.0f, 8.0f, 0.0f, 0);
@@ -49,10 +51,16 @@ assets::LoadedLevel wallTurnedInABakedSun() {
     sun.direction = glm::normalize(kAcross - glm::vec3(0.0f, 1.0f, 0.0f));
     sun.role = "baked";
     s.lights.push_back(sun);
-    const std::string gltf = test::outputDir() + "/baked_edge.gltf";
+    if (overhead) {
+        sun.intensity = 5000.0f;
+        sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+        s.lights.push_back(sun);
+    }
+    const std::string name = overhead ? "baked_edge_overhead" : "baked_edge";
+    const std::string gltf = test::outputDir() + "/" + name + ".gltf";
     test::writeGltf(s, gltf);
     return test::bakeAndLoad(
-        gltf, test::outputDir() + "/baked_edge.olpak",
+        gltf, test::outputDir() + "/" + name + ".olpak",
         "--texels-per-metre " + std::to_string(kTexelsPerMetre) + " --uniform-density");
 }
 
@@ -136,16 +144,17 @@ EdgeMeasure measureEdge(const assets::LoadedLevel& level, uint32_t featuresOff) 
 // fitted through them): kept under 0.5 and 0.4 cm, a fortieth and a fiftieth of a texel. The
 // bilinear visibility stair-steps by about a quarter texel either way: its wander is 2.7 cm, and
 // it must stay at least five times the field's.
-TEST(BakedEdge, ASunsEdgeAcrossTheTexelsIsAStraightLineWhereTheGeometryPutsIt) {
-    const assets::LoadedLevel level = wallTurnedInABakedSun();
+void expectStraightEdge(bool overhead) {
+    const assets::LoadedLevel level = wallTurnedInABakedSun(overhead);
     const EdgeMeasure field = measureEdge(level, 0);
     const EdgeMeasure bilinear = measureEdge(level, uint32_t(glsl::FEATURE_DIRECT_EDGE));
     std::printf(
-        "[ baked edge ] distance field: offset %+.2f cm, wander %.2f cm, 10-90%% width %.2f cm "
-        "(%d columns)\n[ baked edge ] bilinear:       offset %+.2f cm, wander %.2f cm, 10-90%% "
-        "width %.2f cm (%d columns)\n",
-        100.0 * field.offset, 100.0 * field.wander, 100.0 * field.width, field.columns,
-        100.0 * bilinear.offset, 100.0 * bilinear.wander, 100.0 * bilinear.width, bilinear.columns);
+        "[ baked edge ] %s\n  distance field: offset %+.2f cm, wander %.2f cm, 10-90%% width "
+        "%.2f cm (%d columns)\n  bilinear:       offset %+.2f cm, wander %.2f cm, 10-90%% width "
+        "%.2f cm (%d columns)\n",
+        overhead ? "with a second sun over both sides" : "one sun", 100.0 * field.offset,
+        100.0 * field.wander, 100.0 * field.width, field.columns, 100.0 * bilinear.offset,
+        100.0 * bilinear.wander, 100.0 * bilinear.width, bilinear.columns);
     ASSERT_GT(field.columns, 200);
     ASSERT_GT(bilinear.columns, 200);
     EXPECT_LT(std::abs(field.offset), 0.005);
@@ -153,6 +162,14 @@ TEST(BakedEdge, ASunsEdgeAcrossTheTexelsIsAStraightLineWhereTheGeometryPutsIt) {
     EXPECT_GT(field.width, 0.025);  // the penumbra, not a hard step
     EXPECT_LT(field.width, 0.055);
     EXPECT_GT(bilinear.wander, 5.0 * field.wander);
+}
+
+TEST(BakedEdge, ASunsEdgeAcrossTheTexelsIsAStraightLineWhereTheGeometryPutsIt) {
+    expectStraightEdge(false);
+}
+
+TEST(BakedEdge, AnEdgeOfOneLightAmongOthersIsDrawnToo) {
+    expectStraightEdge(true);
 }
 
 TEST(BakedEdge, TheShadersRangesAreThePackagesOwn) {

@@ -1,12 +1,14 @@
 // A baked direct light's shadow edge as a distance field (shaders/lighting.glsl directEdgeFactor,
 // compiled as C++): the four texels around a point hold a straight edge's signed distance and
-// their visibility (0 or 1), their direct light the unshadowed light times it; filtered
-// bilinearly as the GPU does, the factor turns the filtered light into the unshadowed light on
-// the lit side of the line and none on the other, the line itself at one half, wherever it
+// their visibility (the edge's low or high level: none and all of one light, or with a second
+// light over both sides), their direct light the unshadowed light times it; filtered bilinearly
+// as the GPU does, the factor turns the filtered light into the light of the lit side on one
+// side of the line and of the dark side on the other, the line itself half way, wherever it
 // crosses the cell. Without sharpness the factor is 1 (the bilinear visibility), and no input
 // the package may hold gives a NaN or an infinity.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -25,7 +27,7 @@ float bilinear(const Corner c[4], float u, float v, float Corner::*field) {
            (1.0f - u) * v * c[2].*field + u * v * c[3].*field;
 }
 
-TEST(DirectEdge, TheFieldDrawsAStraightEdgeAcrossItsCellWhereTheDistanceIsZero) {
+void expectStraightEdge(float low, float high) {
     constexpr float kOpen = 800.0f;  // lux, the unshadowed light: the same at the four texels
     constexpr float kWidth = 0.05f;  // texels
     for (const float angle : {0.2f, 0.7f, 1.3f, 2.5f}) {
@@ -39,7 +41,8 @@ TEST(DirectEdge, TheFieldDrawsAStraightEdgeAcrossItsCellWhereTheDistanceIsZero) 
             const vec2 at[4] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
             for (int k = 0; k < 4; ++k) {
                 const float s = signedDistance(at[k].x, at[k].y);
-                corners[k] = {s >= 0.0f ? 1.0f : 0.0f, s, s >= 0.0f ? kOpen : 0.0f};
+                const float v = s >= 0.0f ? high : low;
+                corners[k] = {v, s, kOpen * v};
             }
             for (int i = 0; i <= 20; ++i)
                 for (int j = 0; j <= 20; ++j) {
@@ -47,25 +50,31 @@ TEST(DirectEdge, TheFieldDrawsAStraightEdgeAcrossItsCellWhereTheDistanceIsZero) 
                     const float visibility = bilinear(corners, u, v, &Corner::visibility);
                     const float s = bilinear(corners, u, v, &Corner::distance);
                     const float light = bilinear(corners, u, v, &Corner::light);
-                    const float drawn = directEdgeFactor(visibility, s, kWidth, 1.0f) * light;
+                    const float drawn =
+                        directEdgeFactor(visibility, s, kWidth, low, high, 1.0f) * light;
                     ASSERT_TRUE(std::isfinite(drawn));
                     const float exact = signedDistance(u, v);
                     if (visibility <= 0.0f) continue;  // no texel's light to draw from
-                    if (exact > 0.5f * kWidth)
-                        EXPECT_NEAR(drawn, kOpen, 1e-3f * kOpen) << u << ", " << v;
-                    else if (exact < -0.5f * kWidth)
-                        EXPECT_NEAR(drawn, 0.0f, 1e-3f * kOpen) << u << ", " << v;
-                    else
-                        EXPECT_NEAR(drawn, kOpen * (0.5f + exact / kWidth), 1e-3f * kOpen);
+                    const float ramp = std::clamp(0.5f + exact / kWidth, 0.0f, 1.0f);
+                    EXPECT_NEAR(drawn, kOpen * (low + (high - low) * ramp), 1e-3f * kOpen)
+                        << u << ", " << v;
                 }
         }
     }
 }
 
+TEST(DirectEdge, TheFieldDrawsAStraightEdgeAcrossItsCellWhereTheDistanceIsZero) {
+    expectStraightEdge(0.0f, 1.0f);
+}
+
+TEST(DirectEdge, AnEdgeBetweenTwoLevelsKeepsBoth) {
+    expectStraightEdge(0.3f, 0.9f);
+}
+
 TEST(DirectEdge, WithoutSharpnessTheTexelsVisibilityStays) {
     for (const float visibility : {1e-3f, 0.3f, 1.0f})
         for (const float s : {-2.0f, 0.0f, 1.0f})
-            EXPECT_FLOAT_EQ(directEdgeFactor(visibility, s, 0.2f, 0.0f), 1.0f);
+            EXPECT_FLOAT_EQ(directEdgeFactor(visibility, s, 0.2f, 0.0f, 1.0f, 0.0f), 1.0f);
 }
 
 TEST(DirectEdge, NoInputGivesANaNOrAnInfinity) {
@@ -77,7 +86,7 @@ TEST(DirectEdge, NoInputGivesANaNOrAnInfinity) {
         for (const float s : distances)
             for (const float w : widths)
                 for (const float k : sharpnesses) {
-                    const float g = directEdgeFactor(v, s, w, k);
+                    const float g = directEdgeFactor(v, s, w, 0.0f, v, k);
                     EXPECT_TRUE(std::isfinite(g) && g >= 0.0f) << v << " " << s << " " << w;
                 }
 }

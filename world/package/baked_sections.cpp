@@ -69,6 +69,8 @@ void check(const DiskLightmapTexel& d, const std::string& at) {
     inRange("directEdgeDistance", d.directEdgeDistance, -world::kDirectEdgeReach,
             world::kDirectEdgeReach);
     inRange("directEdgeWidth", d.directEdgeWidth, 0.0f, world::kDirectEdgeMaxWidth);
+    inRange("directEdgeLow", d.directEdgeLow, 0.0f, 1.0f);
+    inRange("directEdgeHigh", d.directEdgeHigh, d.directEdgeLow, 1.0f);
     inRange("directEdgeSharpness", d.directEdgeSharpness, 0.0f, 1.0f);
 }
 

@@ -377,13 +377,16 @@ struct DiskLightmapTexel {
     float indirectIrradiance[3];  // lux, RGB: the rest at the surface normal; finite, >= 0
     // The direct light's shadow edge (world::LightmapTexel): its visibility in [0, 1]; the signed
     // distance to its half-way line, texels in [-kDirectEdgeReach, kDirectEdgeReach]; the
-    // penumbra's width, texels in [0, kDirectEdgeMaxWidth]; the edge's share in [0, 1].
+    // penumbra's width, texels in [0, kDirectEdgeMaxWidth]; its two levels; the edge's share in
+    // [0, 1].
     float directVisibility;
     float directEdgeDistance;
     float directEdgeWidth;
+    float directEdgeLow;   // [0, directEdgeHigh]: the edge's dark side's visibility
+    float directEdgeHigh;  // [directEdgeLow, 1]: its lit side's
     float directEdgeSharpness;
 };
-static_assert(sizeof(DiskLightmapTexel) == 84);
+static_assert(sizeof(DiskLightmapTexel) == 92);
 
 struct DiskImportedTexel {
     float irradiance[3];  // lux, RGB; finite, >= 0

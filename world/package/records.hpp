@@ -634,6 +634,8 @@ namespace records {
     d.directVisibility = t.directVisibility;
     d.directEdgeDistance = t.directEdgeDistance;
     d.directEdgeWidth = t.directEdgeWidth;
+    d.directEdgeLow = t.directEdgeLow;
+    d.directEdgeHigh = t.directEdgeHigh;
     d.directEdgeSharpness = t.directEdgeSharpness;
     return d;
 }
@@ -651,6 +653,8 @@ namespace records {
     t.directVisibility = d.directVisibility;
     t.directEdgeDistance = d.directEdgeDistance;
     t.directEdgeWidth = d.directEdgeWidth;
+    t.directEdgeLow = d.directEdgeLow;
+    t.directEdgeHigh = d.directEdgeHigh;
     t.directEdgeSharpness = d.directEdgeSharpness;
     return t;
 }

@@ -183,11 +183,13 @@ void bakedDirectEdge() {
     if (mask.a <= 0.0) return;    // no sharp edge within reach
     float base = float(draw.lightmapAtlas * LIGHTMAP_LAYERS);
     vec4 d = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT)), 0.0);
-    edgeFactor = directEdgeFactor(d.a, s, max(mask.b * DIRECT_EDGE_MAX_WIDTH, pixelStep), mask.a);
+    vec4 l = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT_LIGHT)), 0.0);
+    float high = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_INDIRECT)), 0.0).a;
+    edgeFactor = directEdgeFactor(d.a, s, max(mask.b * DIRECT_EDGE_MAX_WIDTH, pixelStep), l.a,
+                                  high, mask.a);
     if (edgeFactor == 1.0) return;
-    vec3 l = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT_LIGHT)), 0.0).xyz;
-    float length_l = length(l);  // shorter where the bilinear filter mixes directions
-    edgeLight = length_l > 1e-4 ? l / length_l : vec3(0.0);
+    float length_l = length(l.xyz);  // shorter where the bilinear filter mixes directions
+    edgeLight = length_l > 1e-4 ? l.xyz / length_l : vec3(0.0);
     edgeExtra = d.rgb * (frame.baked.y * (edgeFactor - 1.0));
 }
 
