@@ -17,6 +17,7 @@
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
+#include "world/baked_lighting.hpp"
 #include "world/dynamic_primary.hpp"
 #include "world/images/image_decode.hpp"
 #include "world/images/image_files.hpp"
@@ -105,7 +106,17 @@ struct LightmapSample {
     glm::vec4 coefficients[3];  // irradianceLinear per channel, lux
     float mask = 1.0f;          // [0, 1]
     float maskSpread = 0.0f;    // largest minus smallest of the four texels' masks
+    // The baked direct light and its shadow edge, filtered as the GPU reads them (the edge's
+    // distance, width and sharpness at the shadow mask's 8 bits).
+    glm::vec3 direct{0.0f}, directLight{0.0f};
+    float visibility = 0.0f, edgeDistance = 0.0f, edgeWidth = 0.0f, low = 0.0f, high = 0.0f;
+    float sharpness = 0.0f;
 };
+
+// A texel's byte in the shadow mask's unorm channels (runtime/render/scene.cpp), read back.
+float unorm8(float v) {
+    return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f) / 255.0f;
+}
 
 LightmapSample sampleLightmap(const assets::LoadedLevel& loaded, glm::vec3 p, glm::vec3 n) {
     const world::CompiledLevel& level = loaded.level;
@@ -129,6 +140,7 @@ LightmapSample sampleLightmap(const assets::LoadedLevel& loaded, glm::vec3 p, gl
             const uint64_t first = world::atlasTexelOffset(level, surface.atlas);
             const glm::vec2 t = uv * glm::vec2(atlas.width, atlas.height) - 0.5f;
             const glm::vec2 f = glm::floor(t), frac = t - f;
+            out = LightmapSample{};
             for (auto& k : out.coefficients) k = glm::vec4(0.0f);
             out.mask = 0.0f;
             float lowest = 1.0f, highest = 0.0f;
@@ -141,6 +153,21 @@ LightmapSample sampleLightmap(const assets::LoadedLevel& loaded, glm::vec3 p, gl
                     for (int ch = 0; ch < 3; ++ch)
                         out.coefficients[ch] +=
                             w * world::linearIrradianceCoefficients(loaded.baked.texels[texel], ch);
+                    const world::LightmapTexel& k = loaded.baked.texels[texel];
+                    out.direct += w * k.directIrradiance;
+                    out.directLight += w * k.directLight;
+                    out.visibility += w * k.directVisibility;
+                    out.low += w * k.directEdgeLow;
+                    out.high += w * k.directEdgeHigh;
+                    out.edgeDistance +=
+                        w *
+                        (unorm8(0.5f + 0.5f * k.directEdgeDistance / world::kDirectEdgeReach) *
+                             2.0f -
+                         1.0f) *
+                        world::kDirectEdgeReach;
+                    out.edgeWidth += w * unorm8(k.directEdgeWidth / world::kDirectEdgeMaxWidth) *
+                                     world::kDirectEdgeMaxWidth;
+                    out.sharpness += w * unorm8(k.directEdgeSharpness);
                     const float m = float(loaded.baked.shadowMask[texel]) / 255.0f;
                     out.mask += w * m;
                     lowest = std::min(lowest, m);
@@ -181,10 +208,21 @@ glm::vec3 lambertRadiance(const world::CompiledLevel& level, uint32_t material, 
                                               glm::vec3(0.0f), secondary);
 }
 
-glm::vec3 lightmapIrradiance(const LightmapSample& s, glm::vec3 n) {
-    return glm::vec3(glsl::irradianceLinear(s.coefficients[0], n),
-                     glsl::irradianceLinear(s.coefficients[1], n),
-                     glsl::irradianceLinear(s.coefficients[2], n));
+// The lightmap's irradiance at normal n, with the baked direct light's shadow edge drawn as the
+// runtime draws it (directEdgeFactor; `pixelStep`: the edge distance's change over a pixel).
+glm::vec3 lightmapIrradiance(const LightmapSample& s, glm::vec3 n, float pixelStep = 0.0f) {
+    glm::vec3 e(glsl::irradianceLinear(s.coefficients[0], n),
+                glsl::irradianceLinear(s.coefficients[1], n),
+                glsl::irradianceLinear(s.coefficients[2], n));
+    if (s.sharpness > 0.0f) {
+        const float g =
+            glsl::directEdgeFactor(s.visibility, s.edgeDistance, std::max(s.edgeWidth, pixelStep),
+                                   s.low, s.high, s.sharpness);
+        const float length = glm::length(s.directLight);
+        const glm::vec3 l = length > 1e-4f ? s.directLight / length : glm::vec3(0.0f);
+        e = glm::max(e + s.direct * ((g - 1.0f) * std::max(glm::dot(n, l), 0.0f)), glm::vec3(0.0f));
+    }
+    return e;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -296,7 +334,9 @@ namespace {
 // Tolerance: 1% relative (floor 1e-3 of the peak) for the RGBA16F lightmap coefficients and HDR
 // target (both round at 2^-11), plus, where the four mask texels differ (penumbrae), 1/256 of
 // their spread times the unshadowed primary: samplers weigh bilinear taps with 8 fractional bits
-// (lavapipe's subTexelPrecisionBits, as most GPUs), and a hard shadow edge steps by up to 1.
+// (lavapipe's subTexelPrecisionBits, as most GPUs), and a hard shadow edge steps by up to 1; and
+// where the baked light's shadow edge is drawn from its distance field, the change of that edge
+// over half to twice the pixel's step of the distance (the GPU's fwidth is per 2x2 quad).
 TEST(RenderBaked, FloorPixelsMatchPackageEvaluation) {
     const assets::LoadedLevel level = bake("baked_floor");
     const render::Camera camera = testCamera();
@@ -316,13 +356,31 @@ TEST(RenderBaked, FloorPixelsMatchPackageEvaluation) {
             const LightmapSample s = sampleLightmap(level, p, kUp);
             ASSERT_TRUE(s.found) << "no floor triangle at " << p.x << " " << p.z;
             const world::Surface& surface = level.level.surfaces[s.surface];
+            // fwidth of the edge's distance, from the next pixels' floor points; the GPU's own
+            // differences (per 2x2 quad) may be half or twice it: that range bounds the edge.
+            const auto distanceAt = [&](uint32_t px, uint32_t py) {
+                const LightmapSample o = sampleLightmap(level, floorPointOf(camera, {px, py}), kUp);
+                return o.found ? o.edgeDistance : s.edgeDistance;
+            };
+            const float step = s.sharpness > 0.0f
+                                   ? std::fabs(distanceAt(x + 1, y) - s.edgeDistance) +
+                                         std::fabs(distanceAt(x, y + 1) - s.edgeDistance)
+                                   : 0.0f;
+            const glm::vec3 secondary = lightmapIrradiance(s, kUp, step);
             cpu[y * kWidth + x] =
                 lambertRadiance(level.level, surface.material, surface.primaryLight, s.mask,
-                                lightmapIrradiance(s, kUp), p, kUp, camera.position);
+                                secondary, p, kUp, camera.position);
+            const glm::vec3 edgeSpread =
+                glm::max(glm::abs(lightmapIrradiance(s, kUp, 0.5f * step) - secondary),
+                         glm::abs(lightmapIrradiance(s, kUp, 2.0f * step) - secondary));
             const glm::vec3 unshadowed =
                 lambertRadiance(level.level, surface.material, surface.primaryLight, 1.0f,
                                 glm::vec3(0.0f), p, kUp, camera.position);
-            penumbra[y * kWidth + x] = s.maskSpread / 256.0f * glm::max(unshadowed.x, unshadowed.y);
+            const glm::vec3 edge = lambertRadiance(level.level, surface.material, world::kNoIndex,
+                                                   0.0f, edgeSpread, p, kUp, camera.position);
+            penumbra[y * kWidth + x] =
+                s.maskSpread / 256.0f * glm::max(unshadowed.x, unshadowed.y) +
+                std::max({edge.x, edge.y, edge.z});
             for (int c = 0; c < 3; ++c) peak = std::max(peak, double(cpu[y * kWidth + x][c]));
         }
     ASSERT_GT(peak, 0.0);
