@@ -107,6 +107,10 @@ const int SPEC_PRIMARY_SHADOW = 12;
 // 1: its draws may cross-fade a dynamic object's primary switch (draw.fadeLight, when not
 // NO_INDEX, lit at 1 - draw.primaryWeight); 0: compiled out (no draw of it fades).
 const int SPEC_PRIMARY_FADE = 13;
+// 1: its draws' lightmaps may draw a baked direct light's shadow edge (DrawSurface::directEdges);
+// 0: compiled out (llvmpipe runs both sides of a branch, so the edge's fetches would cost every
+// lightmapped pixel).
+const int SPEC_DIRECT_EDGES = 14;
 const int FEATURE_BASE_TEXTURE = 1;      // base colour texel: 1
 const int FEATURE_LIGHTMAP = 2;          // a static surface's lightmap: the constant ambient
 const int FEATURE_RUNTIME_SHADOW = 4;    // the primary's shadow map: unshadowed

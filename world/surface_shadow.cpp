@@ -36,4 +36,30 @@ std::vector<SurfaceShadow> surfaceShadows(const CompiledLevel& level, const Bake
     return out;
 }
 
+std::vector<uint8_t> surfaceDirectEdges(const CompiledLevel& level, const BakedLighting& baked) {
+    std::vector<uint8_t> out(level.surfaces.size(), 0);
+    std::vector<uint64_t> atlasOffset(level.atlases.size(), 0);
+    uint64_t total = 0;
+    for (size_t a = 0; a < level.atlases.size(); ++a) {
+        atlasOffset[a] = total;
+        total += uint64_t(level.atlases[a].width) * level.atlases[a].height;
+    }
+    if (baked.texels.size() != total) return out;
+    for (size_t i = 0; i < level.surfaces.size(); ++i) {
+        const Surface& s = level.surfaces[i];
+        if (s.atlas >= level.atlases.size()) continue;
+        const Atlas& atlas = level.atlases[s.atlas];
+        if (uint64_t(s.lightmapX) + s.lightmapWidth > atlas.width ||
+            uint64_t(s.lightmapY) + s.lightmapHeight > atlas.height)
+            continue;
+        for (uint32_t y = s.lightmapY; y < s.lightmapY + s.lightmapHeight && !out[i]; ++y) {
+            const LightmapTexel* row =
+                &baked.texels[atlasOffset[s.atlas] + uint64_t(y) * atlas.width];
+            for (uint32_t x = s.lightmapX; x < s.lightmapX + s.lightmapWidth && !out[i]; ++x)
+                out[i] = row[x].directEdgeSharpness > 0.0f ? 1 : 0;
+        }
+    }
+    return out;
+}
+
 }  // namespace onelight::world

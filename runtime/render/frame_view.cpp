@@ -45,6 +45,7 @@ Draw drawOf(const DrawSurface& surface, bool dynamicShadow) {
     d.primaryKind = surface.primaryKind;
     d.atlas = surface.atlas;
     d.primaryShadow = !surface.unoccluded || dynamicShadow;
+    d.directEdges = surface.directEdges;
     return d;
 }
 Draw drawOf(const DrawDynamicMesh& mesh, uint32_t primary) {
@@ -101,7 +102,7 @@ uint32_t drawKeyOf(const SceneMaterials& materials, const RendererOptions& optio
                           : d.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP
                                                 : glsl::SECONDARY_CONSTANT;
     return drawPipelineKey(materials, options, d.material, d.primaryKind, uint32_t(secondary),
-                           effectLights, d.primaryShadow, d.fadeLight != kNoIndex);
+                           effectLights, d.primaryShadow, d.fadeLight != kNoIndex, d.directEdges);
 }
 
 }  // namespace

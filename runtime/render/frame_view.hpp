@@ -31,6 +31,7 @@ struct Draw {
     uint32_t fadeLight = kNoIndex;  // a dynamic object's old primary while it cross-fades
     float primaryWeight = 1.0f;     // primaryLight's share (fadeLight's is 1 - this)
     bool primaryShadow = true;      // false: an unoccluded surface no dynamic shadow reaches
+    bool directEdges = false;       // its lightmap draws a baked shadow edge (DrawSurface's)
     float distance2 = 0.0f;         // squared metres from the camera: dynamic draws front to back
 };
 

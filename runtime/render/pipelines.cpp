@@ -45,8 +45,10 @@ std::string permutationName(const PermutationKey& k) {
     }
     static const char* const kPrimary[5] = {" no-primary", "", " directional", " point", " spot"};
     name += kPrimary[std::min(k.primary, 4u)];
+    const bool edges = k.directEdges && k.secondary == uint32_t(glsl::SECONDARY_LIGHTMAP);
     return name + (k.primaryShadow ? "" : " unoccluded") + kSecondary[k.secondary & 3u] +
-           (k.effectLights ? "" : " no-effects") + (k.primaryFade ? " fade" : "");
+           (edges ? " edges" : "") + (k.effectLights ? "" : " no-effects") +
+           (k.primaryFade ? " fade" : "");
 }
 
 // The pipeline keys the level's draws use: each static surface's and each dynamic mesh's, for
@@ -65,7 +67,7 @@ std::vector<uint32_t> forwardKeys(const SceneGeometry& geometry, const SceneMate
                     materials, options, std::min(s.material, materialCount - 1), s.primaryKind,
                     uint32_t(s.atlas != kNoIndex ? glsl::SECONDARY_LIGHTMAP
                                                  : glsl::SECONDARY_CONSTANT),
-                    effects, shadow));
+                    effects, shadow, false, s.directEdges));
             }
         for (const DrawDynamicMesh& d : geometry.dynamicMeshes)
             for (const uint32_t kind : geometry.dynamicPrimaryKinds)
@@ -198,7 +200,8 @@ void createForwardPipelines(const vk::Context& ctx, Pipelines& p, const SceneGeo
               {glsl::SPEC_EFFECT_LIGHTS, k.effectLights ? 1 : 0},
               {glsl::SPEC_FEATURES_OFF, int(options.featuresOff)},
               {glsl::SPEC_PRIMARY_SHADOW, k.primaryShadow ? 1 : 0},
-              {glsl::SPEC_PRIMARY_FADE, k.primaryFade ? 1 : 0}}}};
+              {glsl::SPEC_PRIMARY_FADE, k.primaryFade ? 1 : 0},
+              {glsl::SPEC_DIRECT_EDGES, k.directEdges ? 1 : 0}}}};
         p.forward[key] = vk::createGraphicsPipeline(ctx, p.forwardLayout, forward);
         p.permutations.push_back(permutationName(k));
     }
@@ -269,7 +272,7 @@ void createSkyPipeline(const vk::Context& ctx, Pipelines& p, const ForwardChoice
 
 uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions& options,
                          uint32_t material, uint32_t primary, uint32_t secondary, bool effectLights,
-                         bool primaryShadow, bool primaryFade) {
+                         bool primaryShadow, bool primaryFade, bool directEdges) {
     if (options.flatShading) return 0u;
     PermutationKey k;
     k.materialClass = materials.classes[material];
@@ -283,6 +286,7 @@ uint32_t drawPipelineKey(const SceneMaterials& materials, const RendererOptions&
         k.effectLights = effectLights;
         k.primaryShadow = primaryShadow;
         k.primaryFade = primaryFade;
+        k.directEdges = directEdges;
     }
     return permutationKey(k);
 }

@@ -33,16 +33,19 @@ struct PermutationKey {
     bool alphaBlend = false;   // glTF BLEND: blended over what is behind, drawn last, back to front
     bool primaryShadow = true;  // false: its draws' primary is unoccluded (DrawSurface::unoccluded)
     bool primaryFade = true;    // its draws may cross-fade a primary switch (SPEC_PRIMARY_FADE)
+    bool directEdges = true;    // its draws' lightmaps may draw a baked shadow edge
 };
 
 /// The key packed into a pipeline's map key: class bits 0-1, double-sided 2, alpha mask 3,
 /// texture slots 4-9, primary 10-12, secondary 13-14, effect lights 15, alpha blend 16 (so that
-/// blended draws sort after every opaque one), no primary shadow 17, no primary fade 18.
+/// blended draws sort after every opaque one), no primary shadow 17, no primary fade 18, direct
+/// edges 19.
 [[nodiscard]] inline uint32_t permutationKey(const PermutationKey& k) {
     return k.materialClass | (k.doubleSided ? 4u : 0u) | (k.alphaMask ? 8u : 0u) |
            (k.textures & 63u) << 4 | (k.primary & 7u) << 10 | (k.secondary & 3u) << 13 |
            (k.effectLights ? 1u << 15 : 0u) | (k.alphaBlend ? 1u << 16 : 0u) |
-           (k.primaryShadow ? 0u : 1u << 17) | (k.primaryFade ? 0u : 1u << 18);
+           (k.primaryShadow ? 0u : 1u << 17) | (k.primaryFade ? 0u : 1u << 18) |
+           (k.directEdges ? 1u << 19 : 0u);
 }
 [[nodiscard]] inline PermutationKey unpackPermutationKey(uint32_t key) {
     return {key & 3u,
@@ -54,7 +57,8 @@ struct PermutationKey {
             (key & (1u << 15)) != 0,
             (key & (1u << 16)) != 0,
             (key & (1u << 17)) == 0,
-            (key & (1u << 18)) == 0};
+            (key & (1u << 18)) == 0,
+            (key & (1u << 19)) != 0};
 }
 [[nodiscard]] inline bool keyDoubleSided(uint32_t key) {
     return (key & 4u) != 0;
@@ -71,12 +75,14 @@ struct PermutationKey {
 /// SECONDARY_CONSTANT; a dynamic mesh: PRIMARY_ANY (the game picks it per frame) and
 /// SECONDARY_OBJECT;
 /// `effectLights` whether the frame has any; `primaryShadow` false for a static surface drawn
-/// without its primary's shadow (DrawSurface::unoccluded). Without options.specializeDraws every
-/// draw of a material shares the general pipeline.
+/// without its primary's shadow (DrawSurface::unoccluded); `directEdges` true for a static
+/// surface whose lightmap draws a baked shadow edge (DrawSurface::directEdges). Without
+/// options.specializeDraws every draw of a material shares the general pipeline.
 [[nodiscard]] uint32_t drawPipelineKey(const SceneMaterials& materials,
                                        const RendererOptions& options, uint32_t material,
                                        uint32_t primary, uint32_t secondary, bool effectLights,
-                                       bool primaryShadow = true, bool primaryFade = false);
+                                       bool primaryShadow = true, bool primaryFade = false,
+                                       bool directEdges = false);
 
 /// What the forward permutations are specialized for, besides the materials.
 struct ForwardChoices {

@@ -788,6 +788,13 @@ void applySurfaceShadows(SceneGeometry& geometry, const assets::LoadedLevel& loa
     }
 }
 
+// The surfaces whose lightmap draws a baked direct light's shadow edge.
+void applyDirectEdges(SceneGeometry& geometry, const assets::LoadedLevel& loaded) {
+    const std::vector<uint8_t> edges = world::surfaceDirectEdges(loaded.level, loaded.baked);
+    for (size_t i = 0; i < geometry.surfaces.size() && i < edges.size(); ++i)
+        geometry.surfaces[i].directEdges = edges[i] != 0;
+}
+
 }  // namespace
 
 uint32_t primaryKindOf(const std::vector<world::Light>& lights, uint32_t primaryLight) {
@@ -829,6 +836,7 @@ void createScene(const vk::Context& ctx, Scene& scene, const assets::LoadedLevel
     createBakedLighting(ctx, scene.baked, loaded, scene.level.ambientLux);
     if (scene.baked.present && options.skipUniformShadows && !options.flatShading)
         applySurfaceShadows(scene.geometry, loaded);
+    if (scene.baked.present) applyDirectEdges(scene.geometry, loaded);
     const world::Visibility& visibility = scene.baked.visibility;
     if (!visibility.empty() && visibility.surfaceCluster.size() == scene.geometry.surfaces.size()) {
         scene.baked.clusterMin.assign(visibility.clusterCount, glm::vec3(FLT_MAX));

@@ -50,6 +50,9 @@ struct DrawSurface {
     // without its primary's shadow lookups while no dynamic caster's shadow may reach it. (A
     // surface the mask shadows whole is drawn without its primary: primaryKind PRIMARY_NONE.)
     bool unoccluded = false;
+    // Some texel of its lightmap draws its baked direct light's shadow edge (world/
+    // surface_shadow.hpp surfaceDirectEdges): the others are drawn without the edge's fetches.
+    bool directEdges = false;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};
 };
 

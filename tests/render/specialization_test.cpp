@@ -141,6 +141,8 @@ TEST(RenderSpecialization, DrawsWithAndWithoutPrimariesLightmapsAndGridLightChan
     EXPECT_TRUE(test::anyNamed(seen, " point"));
     EXPECT_TRUE(test::anyNamed(seen, " spot"));
     EXPECT_TRUE(test::anyNamed(seen, " lightmap"));
+    EXPECT_TRUE(test::anyNamed(seen, " lightmap edges"));  // a baked shadow edge's surfaces...
+    EXPECT_TRUE(test::anyNamed(seen, " lightmap no-effects"));  // ...and the others
     EXPECT_TRUE(test::anyNamed(seen, " object"));
     EXPECT_TRUE(test::anyNamed(seen, "textures=none"));
     // A dynamic object is drawn by its primary's type, as a static surface is (the box under the

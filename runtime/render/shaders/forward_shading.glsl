@@ -34,6 +34,7 @@ layout(constant_id = SPEC_EFFECT_LIGHTS) const int EFFECT_LIGHTS = 1;
 layout(constant_id = SPEC_FEATURES_OFF) const int FEATURES_OFF = 0;  // benchmarks only
 layout(constant_id = SPEC_PRIMARY_SHADOW) const int PRIMARY_SHADOW = 1;
 layout(constant_id = SPEC_PRIMARY_FADE) const int PRIMARY_FADE = 1;
+layout(constant_id = SPEC_DIRECT_EDGES) const int DIRECT_EDGES = 1;
 bool featureOn(int feature) { return (FEATURES_OFF & feature) == 0; }
 
 // Whether material m fills texture slot `slot` and the pipeline's materials may.
@@ -457,7 +458,7 @@ void main() {
         return;
     }
     if (BAKED_LIGHTING != 0 && drawHasObjectLighting()) pixelLattice = objectLattice(draw.objectLighting);
-    if (drawUsesLightmap() && featureOn(FEATURE_DIRECT_EDGE)) bakedDirectEdge();
+    if (DIRECT_EDGES == 1 && drawUsesLightmap() && featureOn(FEATURE_DIRECT_EDGE)) bakedDirectEdge();
     GpuMaterial m = materialRecords[draw.material];
 
     vec4 base = m.baseColor;
