@@ -92,6 +92,15 @@ constexpr float kEdgeFitSpread = 0.05f;
       at the levels' ends, and a real map's ceiling read 4.1% off its reference instead of 3.4%)
       the texel keeps its bilinear visibility: V_low = V_high = V, sharpness 0.
    Distances are in texels: a chart's texels are squares on its surface (uniform density).
+
+   Texels under a solid (a floor's under a wall standing on it) trace their light from a point
+   moved out of it (lightmap_bake.cpp moveOutOfGeometry), often the wall's other side: where that
+   light differs from a neighbour's by the contrast, the bilinear filter carried it past the
+   wall's foot (a sunlit wall's shadow side read 25 times its shadow along the foot, a sawtooth
+   at the texels' pitch). For the field such a texel's visibility is the one at its own place on
+   the plane (inside the solid: none), and the lattices sample points under solids like any
+   other: the edge then falls at the solid's face, and the field draws the foot as dark as the
+   shadow beside it. The texel keeps its own light and visibility.
 */
 struct Crossing {
     glm::vec2 at{0.0f};  // texel coordinates in the atlas (texel centres at integers)
@@ -191,9 +200,30 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
     const int reach = static_cast<int>(world::kDirectEdgeReach) + 1;  // texels searched
     std::vector<float> visibility(n);
     for (size_t i = 0; i < n; ++i) visibility[i] = directVisibility(estimates[i]);
-    const auto usable = [&](int64_t j) {
-        return j >= 0 && samples[size_t(j)].centreInside && !estimates[size_t(j)].moved;
-    };
+    const auto usable = [&](int64_t j) { return j >= 0 && samples[size_t(j)].centreInside; };
+    // 0. Texels moved out of a solid whose light differs from a neighbour's: their field's
+    // visibility is their own place's.
+    tbb::enumerable_thread_specific<RayCounts> localRays;
+    const std::vector<float> stored = visibility;
+    bake::parallelFor(tbb::blocked_range<size_t>(0, n, 64), [&](const auto& r) {
+        RayCounts& counts = localRays.local();
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            if (!estimates[i].moved || !samples[i].centreInside) continue;
+            bool differs = false;
+            for (int dy = -1; dy <= 1 && !differs; ++dy)
+                for (int dx = -1; dx <= 1 && !differs; ++dx) {
+                    const int64_t j = near.at(i, dx, dy);
+                    differs = j >= 0 && !estimates[size_t(j)].moved &&
+                              std::abs(stored[size_t(j)] - stored[i]) >= kEdgeContrast;
+                }
+            if (!differs) continue;
+            const TexelSample& s = samples[i];
+            Rng rng{seedFrom(s.atlas, s.x, s.y, kEdgePass + 2)};
+            visibility[i] = directVisibilityAt(
+                scene, lights, level.surfaces[s.surface].primaryLight,
+                s.centre + s.normal * scene.rayOffset(), s.normal, shadowSamples, rng, counts);
+        }
+    });
     // The least and greatest visibility of the texel centres around sample i (itself included).
     const auto levelsAround = [&](size_t i) {
         glm::vec2 levels(visibility[i]);
@@ -237,7 +267,6 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
     std::vector<float> lattice(straddling.size() * k * k, std::numeric_limits<float>::quiet_NaN());
     // Each straddling texel's plane: metres per texel along x and y (none: no lattice).
     std::vector<std::pair<glm::vec3, glm::vec3>> frames(straddling.size());
-    tbb::enumerable_thread_specific<RayCounts> localRays;
     bake::parallelFor(tbb::blocked_range<size_t>(0, straddling.size(), 4), [&](const auto& r) {
         RayCounts& counts = localRays.local();
         for (size_t c = r.begin(); c != r.end(); ++c) {
