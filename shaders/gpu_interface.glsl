@@ -19,18 +19,20 @@ const uint MAX_EFFECT_OMNIS = 4u;   // Black Ops' budget of diffuse omni effect 
 const float HDR_MAX = 65000.0f;     // the RGBA16F targets' cap (half's largest finite is 65504)
 // The lightmap array's layers per atlas (runtime/render/scene.cpp uploadLightmaps): 0..2 the
 // irradianceLinear coefficients of red, green and blue; 3 the baked direct light's irradiance
-// (rgb) and visibility (a); 4 its direction (xyz, not scaled) and its shadow edge's low level
-// (a); 5 the rest's average over normals (rgb) and the edge's high level (a).
+// (rgb) and visibility (a); 4 its direction (xyz, not scaled); 5 the rest's average over normals
+// (rgb).
 const uint LIGHTMAP_LAYERS = 6u;
 const uint LIGHTMAP_LAYER_DIRECT = 3u;
 const uint LIGHTMAP_LAYER_DIRECT_LIGHT = 4u;
 const uint LIGHTMAP_LAYER_INDIRECT = 5u;
-// The shadow mask's green and blue channels (unorm): the direct light's signed distance to its
-// shadow edge over [-DIRECT_EDGE_REACH, DIRECT_EDGE_REACH] texels and its penumbra's width over
-// [0, DIRECT_EDGE_MAX_WIDTH] texels (world::kDirectEdgeReach, kDirectEdgeMaxWidth); alpha the
-// edge's share (directEdgeFactor, lighting.glsl).
-const float DIRECT_EDGE_REACH = 2.0f;
-const float DIRECT_EDGE_MAX_WIDTH = 1.0f;
+// The shadow mask's green, blue and alpha channels (unorm; runtime/render/scene.cpp): the direct
+// light's signed distance to its shadow edge in penumbra widths (the width at least
+// DIRECT_EDGE_MIN_WIDTH texels, the distance within +-DIRECT_EDGE_RAMPS of them), and the edge's
+// low and high levels of visibility (both the texel's visibility where no edge is drawn):
+// directEdgeFactor, lighting.glsl. One fetch that a draw makes anyway, and a pixel near an edge
+// fetches the direct layer for the rest.
+const float DIRECT_EDGE_RAMPS = 16.0f;
+const float DIRECT_EDGE_MIN_WIDTH = 0.125f;
 
 // ---------------------------------------------------------------------------------------------
 // Descriptor set 0: the frame's resources.

@@ -208,16 +208,14 @@ float irradianceLinear(vec4 c, vec3 n) {
 
 // A baked direct light's shadow edge as a distance field (docs/lighting.md "Baked shadow edges";
 // Green 2007, "Improved Alpha-Tested Magnification for Vector Textures and Special Effects"):
-// from the texels' visibility V and signed distance s to the edge (texels, + lit), the edge's
-// levels of visibility either side (`low`, `high`), all filtered as the texels' direct light is,
-// the penumbra's `width` (texels: at least a pixel's step of s) and the edge's share
-// `sharpness`, the factor g on the filtered direct light that draws the edge where s is 0:
-// g = v / V, v = mix(low, high, clamp(0.5 + s / width)) mixed with V by the sharpness. The
-// direct light over V keeps the texels' colour and unshadowed level. 1 where V is 0.
-float directEdgeFactor(float visibility, float edgeDistance, float width, float low, float high,
-                       float sharpness) {
-    float v = mix(low, high, clamp(0.5f + edgeDistance / max(width, 1e-4f), 0.0f, 1.0f));
-    v = mix(visibility, v, sharpness);
+// from the texels' visibility V, their signed distance to the edge in penumbra widths `ramps`
+// (+ lit) and the edge's levels of visibility either side (`low`, `high`; both V where no edge
+// is drawn), all filtered as the texels' direct light is, and a pixel's step of `ramps`, the
+// factor g on the filtered direct light that draws the edge where `ramps` is 0, one penumbra
+// (or one pixel, if wider) across: g = v / V, v = mix(low, high, clamp(0.5 + ramps / max(1,
+// step))). The direct light over V keeps the texels' colour and unshadowed level. 1 where V is 0.
+float directEdgeFactor(float visibility, float ramps, float rampsPerPixel, float low, float high) {
+    float v = mix(low, high, clamp(0.5f + ramps / max(rampsPerPixel, 1.0f), 0.0f, 1.0f));
     return visibility > 1e-4f ? v / visibility : 1.0f;
 }
 

@@ -423,14 +423,15 @@ float lightmapStorageScale(const world::BakedLighting& baked) {
 // as the largest atlas (a smaller atlas sits at the top-left; atlasUvScale maps its uv1). The
 // lightmap holds LIGHTMAP_LAYERS per atlas in RGBA16F (shaders/gpu_interface.glsl): per colour
 // channel the four linear coefficients of world::linearIrradianceCoefficients, then the baked
-// direct light's irradiance (alpha: its visibility), its direction (alpha: its shadow edge's low
-// level) and the rest's average over normals (alpha: the edge's high level), every irradiance
-// times a power-of-two storage scale; the shadow mask RGBA8: the
-// primary's mask byte, then the direct light's shadow edge (distance, width, sharpness; shaders:
-// forward_shading.glsl directEdgeFactor), each over its range (linear filtering is guaranteed
-// for both formats).
+// direct light's irradiance (alpha: its visibility), its direction and the rest's average over
+// normals, every irradiance times a power-of-two storage scale; the shadow mask RGBA8: the
+// primary's mask byte, then the direct light's shadow edge (directEdgeMask) (linear filtering is
+// guaranteed for both formats).
 void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
                      const assets::LoadedLevel& loaded) {
+    const auto unorm = [](float v) {
+        return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    };
     const world::CompiledLevel& level = loaded.level;
     const world::BakedLighting& package = loaded.baked;
     uint32_t width = 1, height = 1;
@@ -465,17 +466,14 @@ void uploadLightmaps(const vk::Context& ctx, BakedLightingMaps& baked,
                     put(size_t(c), world::linearIrradianceCoefficients(t, c) * scale);
                 put(glsl::LIGHTMAP_LAYER_DIRECT,
                     glm::vec4(t.directIrradiance * scale, t.directVisibility));
-                put(glsl::LIGHTMAP_LAYER_DIRECT_LIGHT, glm::vec4(t.directLight, t.directEdgeLow));
-                put(glsl::LIGHTMAP_LAYER_INDIRECT,
-                    glm::vec4(t.indirectIrradiance * scale, t.directEdgeHigh));
+                put(glsl::LIGHTMAP_LAYER_DIRECT_LIGHT, glm::vec4(t.directLight, 0.0f));
+                put(glsl::LIGHTMAP_LAYER_INDIRECT, glm::vec4(t.indirectIrradiance * scale, 0.0f));
                 uint8_t* m = &mask[(size_t(a) * layerTexels + at) * 4];
                 m[0] = package.shadowMask[texel];
-                const auto unorm = [](float v) {
-                    return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
-                };
-                m[1] = unorm(0.5f + 0.5f * t.directEdgeDistance / glsl::DIRECT_EDGE_REACH);
-                m[2] = unorm(t.directEdgeWidth / glsl::DIRECT_EDGE_MAX_WIDTH);
-                m[3] = unorm(t.directEdgeSharpness);
+                const DirectEdgeMask e = directEdgeMask(t);
+                m[1] = unorm(e.ramps);
+                m[2] = unorm(e.low);
+                m[3] = unorm(e.high);
             }
     }
     vk::ImageDesc desc;
@@ -600,8 +598,8 @@ void createBakedLighting(const vk::Context& ctx, BakedLightingMaps& baked,
         createHalfImage(ctx, baked.lightmap, lm, layers);
         vk::ImageDesc mask;
         mask.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-        // Lit, and no shadow edge.
-        createHalfImage(ctx, baked.shadowMask, mask, {1.0f, 1.0f, 0.0f, 0.0f});
+        // Lit, and no shadow edge (its two levels one).
+        createHalfImage(ctx, baked.shadowMask, mask, {1.0f, 1.0f, 1.0f, 1.0f});
         baked.lightmapDecode = 1.0f;
         baked.atlasUvScale.assign(loaded.level.atlases.size(), glm::vec2(1.0f));
         baked.grid = world::LightGrid{};
@@ -796,6 +794,18 @@ void applyDirectEdges(SceneGeometry& geometry, const assets::LoadedLevel& loaded
 }
 
 }  // namespace
+
+DirectEdgeMask directEdgeMask(const world::LightmapTexel& t) {
+    const float width = std::max(t.directEdgeWidth, glsl::DIRECT_EDGE_MIN_WIDTH);
+    const float ramps =
+        std::clamp(t.directEdgeDistance / width, -glsl::DIRECT_EDGE_RAMPS, glsl::DIRECT_EDGE_RAMPS);
+    const float k = std::clamp(t.directEdgeSharpness, 0.0f, 1.0f);
+    DirectEdgeMask m;
+    m.ramps = 0.5f + 0.5f * ramps / glsl::DIRECT_EDGE_RAMPS;
+    m.low = t.directVisibility + k * (t.directEdgeLow - t.directVisibility);
+    m.high = t.directVisibility + k * (t.directEdgeHigh - t.directVisibility);
+    return m;
+}
 
 uint32_t primaryKindOf(const std::vector<world::Light>& lights, uint32_t primaryLight) {
     if (primaryLight >= lights.size()) return uint32_t(glsl::PRIMARY_NONE);

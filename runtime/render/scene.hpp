@@ -164,6 +164,15 @@ struct PrimaryRecords {
     std::vector<uint32_t> recordOf;  // per level light
 };
 
+/// A lightmap texel's baked shadow edge as the shadow mask's green, blue and alpha hold it, each
+/// in [0, 1] before the unorm rounding (gpu_interface.glsl DIRECT_EDGE_RAMPS): the signed
+/// distance in penumbra widths, and the edge's low and high levels (both the texel's visibility
+/// where its sharpness is 0).
+struct DirectEdgeMask {
+    float ramps = 0.5f, low = 1.0f, high = 1.0f;
+};
+[[nodiscard]] DirectEdgeMask directEdgeMask(const world::LightmapTexel& t);
+
 /// A draw's PRIMARY_* under primary light `primaryLight` (an index into `lights`): its type's, or
 /// PRIMARY_NONE for kNoIndex.
 [[nodiscard]] uint32_t primaryKindOf(const std::vector<world::Light>& lights,

@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "render/gpu_types.hpp"
+#include "render/scene.hpp"
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "world/baked_lighting.hpp"
@@ -139,9 +140,10 @@ EdgeMeasure measureEdge(const assets::LoadedLevel& level, uint32_t featuresOff) 
 
 // Texels of 20 cm, pixels of 1 cm. The sun's penumbra at the edge (the wall's top 4.2 m away,
 // 0.27 degrees in radius) is about 4 cm from 10% to 90% across the edge; the field draws the
-// width it measured there (3.6 cm). Its line lies 0.16 cm from the geometry's and wanders 0.16 cm
-// about it (bake/lightmap/direct_edges.cpp: crossings placed to 1/32 texel, 0.6 cm, and a line
-// fitted through them): kept under 0.5 and 0.4 cm, a fortieth and a fiftieth of a texel. The
+// width it measured there (3.6 cm). Its line lies 0.15 cm from the geometry's and wanders 0.25 cm
+// about it (bake/lightmap/direct_edges.cpp: crossings placed to 1/32 texel, 0.6 cm, a line
+// fitted through them, and the mask's 8 bits over 32 penumbra widths, 0.5 cm steps here): kept
+// under 0.5 and 0.4 cm, a fortieth and a fiftieth of a texel. The
 // bilinear visibility stair-steps by about a quarter texel either way: its wander is 2.7 cm, and
 // it must stay at least five times the field's.
 void expectStraightEdge(bool overhead) {
@@ -237,9 +239,26 @@ TEST(BakedEdge, TheSunDoesNotLeakUnderTheWallIntoItsShadow) {
     EXPECT_LT(field, 0.35 * bilinear);
 }
 
-TEST(BakedEdge, TheShadersRangesAreThePackagesOwn) {
-    EXPECT_EQ(glsl::DIRECT_EDGE_REACH, world::kDirectEdgeReach);
-    EXPECT_EQ(glsl::DIRECT_EDGE_MAX_WIDTH, world::kDirectEdgeMaxWidth);
+// The shadow mask holds every distance the baker writes: its reach over the narrowest penumbra
+// the baker measures (two of its gradient's steps of 1/16 texel) is within the mask's range.
+TEST(BakedEdge, TheMaskHoldsEveryDistanceTheBakerWrites) {
+    EXPECT_LE(world::kDirectEdgeReach / glsl::DIRECT_EDGE_MIN_WIDTH, glsl::DIRECT_EDGE_RAMPS);
+    world::LightmapTexel t;
+    t.directEdgeDistance = -world::kDirectEdgeReach;
+    t.directEdgeWidth = 0.0f;
+    t.directVisibility = 0.2f;
+    t.directEdgeLow = 0.1f;
+    t.directEdgeHigh = 0.9f;
+    t.directEdgeSharpness = 0.0f;
+    const render::DirectEdgeMask flat = render::directEdgeMask(t);
+    EXPECT_FLOAT_EQ(flat.low, 0.2f);  // no edge drawn: one level, the texel's
+    EXPECT_FLOAT_EQ(flat.high, 0.2f);
+    t.directEdgeSharpness = 1.0f;
+    const render::DirectEdgeMask edge = render::directEdgeMask(t);
+    EXPECT_FLOAT_EQ(edge.low, 0.1f);
+    EXPECT_FLOAT_EQ(edge.high, 0.9f);
+    EXPECT_GE(edge.ramps, 0.0f);
+    EXPECT_LT(edge.ramps, 0.5f);
 }
 
 }  // namespace

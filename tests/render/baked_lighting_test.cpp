@@ -14,6 +14,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "env_brdf_table.hpp"
+#include "render/scene.hpp"
 #include "shading.hpp"
 #include "test_scene.hpp"
 #include "vk/context.hpp"
@@ -107,10 +108,9 @@ struct LightmapSample {
     float mask = 1.0f;          // [0, 1]
     float maskSpread = 0.0f;    // largest minus smallest of the four texels' masks
     // The baked direct light and its shadow edge, filtered as the GPU reads them (the edge's
-    // distance, width and sharpness at the shadow mask's 8 bits).
+    // distance in penumbra widths and its levels at the shadow mask's 8 bits).
     glm::vec3 direct{0.0f}, directLight{0.0f};
-    float visibility = 0.0f, edgeDistance = 0.0f, edgeWidth = 0.0f, low = 0.0f, high = 0.0f;
-    float sharpness = 0.0f;
+    float visibility = 0.0f, ramps = 0.0f, low = 0.0f, high = 0.0f;
 };
 
 // A texel's byte in the shadow mask's unorm channels (runtime/render/scene.cpp), read back.
@@ -157,17 +157,10 @@ LightmapSample sampleLightmap(const assets::LoadedLevel& loaded, glm::vec3 p, gl
                     out.direct += w * k.directIrradiance;
                     out.directLight += w * k.directLight;
                     out.visibility += w * k.directVisibility;
-                    out.low += w * k.directEdgeLow;
-                    out.high += w * k.directEdgeHigh;
-                    out.edgeDistance +=
-                        w *
-                        (unorm8(0.5f + 0.5f * k.directEdgeDistance / world::kDirectEdgeReach) *
-                             2.0f -
-                         1.0f) *
-                        world::kDirectEdgeReach;
-                    out.edgeWidth += w * unorm8(k.directEdgeWidth / world::kDirectEdgeMaxWidth) *
-                                     world::kDirectEdgeMaxWidth;
-                    out.sharpness += w * unorm8(k.directEdgeSharpness);
+                    const render::DirectEdgeMask e = render::directEdgeMask(k);
+                    out.ramps += w * (unorm8(e.ramps) * 2.0f - 1.0f) * glsl::DIRECT_EDGE_RAMPS;
+                    out.low += w * unorm8(e.low);
+                    out.high += w * unorm8(e.high);
                     const float m = float(loaded.baked.shadowMask[texel]) / 255.0f;
                     out.mask += w * m;
                     lowest = std::min(lowest, m);
@@ -209,15 +202,14 @@ glm::vec3 lambertRadiance(const world::CompiledLevel& level, uint32_t material, 
 }
 
 // The lightmap's irradiance at normal n, with the baked direct light's shadow edge drawn as the
-// runtime draws it (directEdgeFactor; `pixelStep`: the edge distance's change over a pixel).
+// runtime draws it (directEdgeFactor; `pixelStep`: the edge distance's change over a pixel, in
+// penumbra widths).
 glm::vec3 lightmapIrradiance(const LightmapSample& s, glm::vec3 n, float pixelStep = 0.0f) {
     glm::vec3 e(glsl::irradianceLinear(s.coefficients[0], n),
                 glsl::irradianceLinear(s.coefficients[1], n),
                 glsl::irradianceLinear(s.coefficients[2], n));
-    if (s.sharpness > 0.0f) {
-        const float g =
-            glsl::directEdgeFactor(s.visibility, s.edgeDistance, std::max(s.edgeWidth, pixelStep),
-                                   s.low, s.high, s.sharpness);
+    if (s.high > s.low) {
+        const float g = glsl::directEdgeFactor(s.visibility, s.ramps, pixelStep, s.low, s.high);
         const float length = glm::length(s.directLight);
         const glm::vec3 l = length > 1e-4f ? s.directLight / length : glm::vec3(0.0f);
         e = glm::max(e + s.direct * ((g - 1.0f) * std::max(glm::dot(n, l), 0.0f)), glm::vec3(0.0f));
@@ -360,12 +352,11 @@ TEST(RenderBaked, FloorPixelsMatchPackageEvaluation) {
             // differences (per 2x2 quad) may be half or twice it: that range bounds the edge.
             const auto distanceAt = [&](uint32_t px, uint32_t py) {
                 const LightmapSample o = sampleLightmap(level, floorPointOf(camera, {px, py}), kUp);
-                return o.found ? o.edgeDistance : s.edgeDistance;
+                return o.found ? o.ramps : s.ramps;
             };
-            const float step = s.sharpness > 0.0f
-                                   ? std::fabs(distanceAt(x + 1, y) - s.edgeDistance) +
-                                         std::fabs(distanceAt(x, y + 1) - s.edgeDistance)
-                                   : 0.0f;
+            const float step = s.high > s.low ? std::fabs(distanceAt(x + 1, y) - s.ramps) +
+                                                    std::fabs(distanceAt(x, y + 1) - s.ramps)
+                                              : 0.0f;
             const glm::vec3 secondary = lightmapIrradiance(s, kUp, step);
             cpu[y * kWidth + x] =
                 lambertRadiance(level.level, surface.material, surface.primaryLight, s.mask,

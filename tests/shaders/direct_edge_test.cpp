@@ -4,7 +4,7 @@
 // light over both sides), their direct light the unshadowed light times it; filtered bilinearly
 // as the GPU does, the factor turns the filtered light into the light of the lit side on one
 // side of the line and of the dark side on the other, the line itself half way, wherever it
-// crosses the cell. Without sharpness the factor is 1 (the bilinear visibility), and no input
+// crosses the cell. Without an edge the factor is 1 (the bilinear visibility), and no input
 // the package may hold gives a NaN or an infinity.
 #include <gtest/gtest.h>
 
@@ -51,7 +51,7 @@ void expectStraightEdge(float low, float high) {
                     const float s = bilinear(corners, u, v, &Corner::distance);
                     const float light = bilinear(corners, u, v, &Corner::light);
                     const float drawn =
-                        directEdgeFactor(visibility, s, kWidth, low, high, 1.0f) * light;
+                        directEdgeFactor(visibility, s / kWidth, 0.0f, low, high) * light;
                     ASSERT_TRUE(std::isfinite(drawn));
                     const float exact = signedDistance(u, v);
                     if (visibility <= 0.0f) continue;  // no texel's light to draw from
@@ -71,24 +71,29 @@ TEST(DirectEdge, AnEdgeBetweenTwoLevelsKeepsBoth) {
     expectStraightEdge(0.3f, 0.9f);
 }
 
-TEST(DirectEdge, WithoutSharpnessTheTexelsVisibilityStays) {
+TEST(DirectEdge, WithoutAnEdgeTheTexelsVisibilityStays) {
+    // No edge drawn: both levels the texel's visibility.
     for (const float visibility : {1e-3f, 0.3f, 1.0f})
-        for (const float s : {-2.0f, 0.0f, 1.0f})
-            EXPECT_FLOAT_EQ(directEdgeFactor(visibility, s, 0.2f, 0.0f, 1.0f, 0.0f), 1.0f);
+        for (const float s : {-16.0f, 0.0f, 1.0f})
+            EXPECT_FLOAT_EQ(directEdgeFactor(visibility, s, 0.5f, visibility, visibility), 1.0f);
+}
+
+TEST(DirectEdge, APixelWiderThanThePenumbraWidensTheRamp) {
+    // Half way through a ramp of one penumbra, a quarter through one of two (pixels).
+    EXPECT_FLOAT_EQ(directEdgeFactor(1.0f, 0.25f, 0.0f, 0.0f, 1.0f), 0.75f);
+    EXPECT_FLOAT_EQ(directEdgeFactor(1.0f, 0.25f, 2.0f, 0.0f, 1.0f), 0.625f);
 }
 
 TEST(DirectEdge, NoInputGivesANaNOrAnInfinity) {
     const float visibilities[] = {0.0f, 1e-30f, 1e-5f, 0.5f, 1.0f};
-    const float distances[] = {-2.0f, 0.0f, 2.0f};
-    const float widths[] = {0.0f, 1e-30f, 1.0f};
-    const float sharpnesses[] = {0.0f, 0.5f, 1.0f};
+    const float distances[] = {-16.0f, 0.0f, 16.0f};
+    const float steps[] = {0.0f, 1e-30f, 1.0f, 1e30f};
     for (const float v : visibilities)
         for (const float s : distances)
-            for (const float w : widths)
-                for (const float k : sharpnesses) {
-                    const float g = directEdgeFactor(v, s, w, 0.0f, v, k);
-                    EXPECT_TRUE(std::isfinite(g) && g >= 0.0f) << v << " " << s << " " << w;
-                }
+            for (const float p : steps) {
+                const float g = directEdgeFactor(v, s, p, 0.0f, v);
+                EXPECT_TRUE(std::isfinite(g) && g >= 0.0f) << v << " " << s << " " << p;
+            }
 }
 
 }  // namespace

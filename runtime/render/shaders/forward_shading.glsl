@@ -179,16 +179,14 @@ vec3 edgeLight = vec3(0.0);
 void bakedDirectEdge() {
     vec2 uv = inUv1 * draw.lightmapScale.xy;
     vec4 mask = texture(shadowMask, vec3(uv, float(draw.lightmapAtlas)));
-    float s = (mask.g * 2.0 - 1.0) * DIRECT_EDGE_REACH;  // texels, + lit
-    float pixelStep = fwidth(s);  // in uniform control flow: before the branch below
-    if (mask.a <= 0.0) return;    // no sharp edge within reach
+    float ramps = (mask.g * 2.0 - 1.0) * DIRECT_EDGE_RAMPS;  // penumbra widths, + lit
+    float rampsPerPixel = fwidth(ramps);  // in uniform control flow: before the branch below
+    if (mask.a <= mask.b) return;         // no edge drawn here: one level
     float base = float(draw.lightmapAtlas * LIGHTMAP_LAYERS);
     vec4 d = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT)), 0.0);
-    vec4 l = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT_LIGHT)), 0.0);
-    float high = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_INDIRECT)), 0.0).a;
-    edgeFactor = directEdgeFactor(d.a, s, max(mask.b * DIRECT_EDGE_MAX_WIDTH, pixelStep), l.a,
-                                  high, mask.a);
+    edgeFactor = directEdgeFactor(d.a, ramps, rampsPerPixel, mask.b, mask.a);
     if (edgeFactor == 1.0) return;
+    vec4 l = textureLod(lightmap, vec3(uv, base + float(LIGHTMAP_LAYER_DIRECT_LIGHT)), 0.0);
     float length_l = length(l.xyz);  // shorter where the bilinear filter mixes directions
     edgeLight = length_l > 1e-4 ? l.xyz / length_l : vec3(0.0);
     edgeExtra = d.rgb * (frame.baked.y * (edgeFactor - 1.0));
