@@ -2,28 +2,36 @@
 #include "world/surface_shadow.hpp"
 
 namespace onelight::world {
+namespace {
+
+uint64_t totalTexels(const CompiledLevel& level) {
+    uint64_t total = 0;
+    for (const Atlas& a : level.atlases) total += uint64_t(a.width) * a.height;
+    return total;
+}
+
+/// The surface's lightmap rectangle is a non-empty one inside its atlas.
+bool rectangleInAtlas(const CompiledLevel& level, const Surface& s) {
+    if (s.atlas >= level.atlases.size() || s.lightmapWidth == 0 || s.lightmapHeight == 0)
+        return false;
+    const Atlas& atlas = level.atlases[s.atlas];
+    return uint64_t(s.lightmapX) + s.lightmapWidth <= atlas.width &&
+           uint64_t(s.lightmapY) + s.lightmapHeight <= atlas.height;
+}
+
+}  // namespace
 
 std::vector<SurfaceShadow> surfaceShadows(const CompiledLevel& level, const BakedLighting& baked) {
     std::vector<SurfaceShadow> out(level.surfaces.size(), SurfaceShadow::kMixed);
-    std::vector<uint64_t> atlasOffset(level.atlases.size(), 0);
-    uint64_t total = 0;
-    for (size_t a = 0; a < level.atlases.size(); ++a) {
-        atlasOffset[a] = total;
-        total += uint64_t(level.atlases[a].width) * level.atlases[a].height;
-    }
-    if (baked.shadowMask.size() != total) return out;
+    if (baked.shadowMask.size() != totalTexels(level)) return out;
     for (size_t i = 0; i < level.surfaces.size(); ++i) {
         const Surface& s = level.surfaces[i];
-        if (s.primaryLight == kNoIndex || s.atlas >= level.atlases.size()) continue;
+        if (s.primaryLight == kNoIndex || !rectangleInAtlas(level, s)) continue;
         const Atlas& atlas = level.atlases[s.atlas];
-        if (s.lightmapWidth == 0 || s.lightmapHeight == 0 ||
-            uint64_t(s.lightmapX) + s.lightmapWidth > atlas.width ||
-            uint64_t(s.lightmapY) + s.lightmapHeight > atlas.height)
-            continue;
+        const uint64_t first = atlasTexelOffset(level, s.atlas);
         bool anyLit = false, anyShadowed = false, anyBetween = false;
         for (uint32_t y = s.lightmapY; y < s.lightmapY + s.lightmapHeight && !anyBetween; ++y) {
-            const uint8_t* row =
-                &baked.shadowMask[atlasOffset[s.atlas] + uint64_t(y) * atlas.width];
+            const uint8_t* row = &baked.shadowMask[first + uint64_t(y) * atlas.width];
             for (uint32_t x = s.lightmapX; x < s.lightmapX + s.lightmapWidth; ++x) {
                 anyLit |= row[x] == 255;
                 anyShadowed |= row[x] == 0;
@@ -38,26 +46,15 @@ std::vector<SurfaceShadow> surfaceShadows(const CompiledLevel& level, const Bake
 
 std::vector<uint8_t> surfaceDirectEdges(const CompiledLevel& level, const BakedLighting& baked) {
     std::vector<uint8_t> out(level.surfaces.size(), 0);
-    std::vector<uint64_t> atlasOffset(level.atlases.size(), 0);
-    uint64_t total = 0;
-    for (size_t a = 0; a < level.atlases.size(); ++a) {
-        atlasOffset[a] = total;
-        total += uint64_t(level.atlases[a].width) * level.atlases[a].height;
-    }
-    if (baked.texels.size() != total) return out;
+    if (baked.texels.size() != totalTexels(level)) return out;
     for (size_t i = 0; i < level.surfaces.size(); ++i) {
         const Surface& s = level.surfaces[i];
-        if (s.atlas >= level.atlases.size()) continue;
-        const Atlas& atlas = level.atlases[s.atlas];
-        if (uint64_t(s.lightmapX) + s.lightmapWidth > atlas.width ||
-            uint64_t(s.lightmapY) + s.lightmapHeight > atlas.height)
-            continue;
-        for (uint32_t y = s.lightmapY; y < s.lightmapY + s.lightmapHeight && !out[i]; ++y) {
-            const LightmapTexel* row =
-                &baked.texels[atlasOffset[s.atlas] + uint64_t(y) * atlas.width];
+        if (!rectangleInAtlas(level, s)) continue;
+        const uint32_t width = level.atlases[s.atlas].width;
+        const uint64_t first = atlasTexelOffset(level, s.atlas);
+        for (uint32_t y = s.lightmapY; y < s.lightmapY + s.lightmapHeight && !out[i]; ++y)
             for (uint32_t x = s.lightmapX; x < s.lightmapX + s.lightmapWidth && !out[i]; ++x)
-                out[i] = row[x].directEdgeSharpness > 0.0f ? 1 : 0;
-        }
+                out[i] = baked.texels[first + uint64_t(y) * width + x].directEdgeSharpness > 0.0f;
     }
     return out;
 }

@@ -72,20 +72,34 @@ struct EdgeMeasure {
     int columns = 0;
 };
 
-// Each image column crosses the edge once; z rows are towards +z (the image's top towards -z),
-// x columns towards +x. Distances are across the edge (along kAcross).
-EdgeMeasure measureEdge(const assets::LoadedLevel& level, uint32_t featuresOff) {
-    const glm::vec3 centre = kEdgeOffset * kAcross;
+// The floor seen from `above` metres straight over `centre` (image rows along +z, columns along
+// +x), and the floor's size of a pixel there.
+struct TopView {
+    test::RenderedFrame frame;
+    float pixel = 0.0f;  // metres
+};
+TopView topView(const assets::LoadedLevel& level, glm::vec3 centre, float above,
+                uint32_t featuresOff) {
     render::RendererOptions options;
     options.width = kWidth;
     options.height = kHeight;
     options.featuresOff = featuresOff;
     render::FrameInputs inputs;
-    inputs.camera = render::cameraFromYawPitch({centre.x, kHeightAbove, centre.z}, 0.0f, -90.0f);
+    inputs.camera = render::cameraFromYawPitch({centre.x, above, centre.z}, 0.0f, -90.0f);
     inputs.camera.yfov = kYfov;
-    const test::RenderedFrame r = test::renderOnce(level, options, inputs);
-    EXPECT_EQ(r.validationErrors, 0u);
-    const float pixel = 2.0f * kHeightAbove * std::tan(0.5f * kYfov) / float(kHeight);
+    TopView v{test::renderOnce(level, options, inputs),
+              2.0f * above * std::tan(0.5f * kYfov) / float(kHeight)};
+    EXPECT_EQ(v.frame.validationErrors, 0u);
+    return v;
+}
+
+// Each image column crosses the edge once; z rows are towards +z (the image's top towards -z),
+// x columns towards +x. Distances are across the edge (along kAcross).
+EdgeMeasure measureEdge(const assets::LoadedLevel& level, uint32_t featuresOff) {
+    const glm::vec3 centre = kEdgeOffset * kAcross;
+    const TopView view = topView(level, centre, kHeightAbove, featuresOff);
+    const test::RenderedFrame& r = view.frame;
+    const float pixel = view.pixel;
     std::vector<double> offsets, widths;
     for (uint32_t col = 8; col + 8 < kWidth; ++col) {
         const float x = centre.x + (float(col) + 0.5f - 0.5f * float(kWidth)) * pixel;
@@ -183,18 +197,10 @@ TEST(BakedEdge, AnEdgeOfOneLightAmongOthersIsDrawnToo) {
 // the sunlit side, which the field does not draw (docs/lighting.md, "Baked shadow edges").
 double footOverShadow(const assets::LoadedLevel& level, uint32_t featuresOff) {
     const glm::vec3 centre = (kHalfThick + 0.4f) * kAcross;
-    constexpr float kAbove = 6.0f;
-    render::RendererOptions options;
-    options.width = kWidth;
-    options.height = kHeight;
-    options.featuresOff = featuresOff;
-    render::FrameInputs inputs;
-    inputs.camera = render::cameraFromYawPitch({centre.x, kAbove, centre.z}, 0.0f, -90.0f);
-    inputs.camera.yfov = kYfov;
-    const test::RenderedFrame r = test::renderOnce(level, options, inputs);
-    EXPECT_EQ(r.validationErrors, 0u);
-    // The luminance of the pixel over floor point p (rows along z, columns along x).
-    const float pixel = 2.0f * kAbove * std::tan(0.5f * kYfov) / float(kHeight);
+    const TopView view = topView(level, centre, kHeightAbove, featuresOff);
+    const test::RenderedFrame& r = view.frame;
+    const float pixel = view.pixel;
+    // The luminance of the pixel over floor point p.
     const auto luminanceAt = [&](glm::vec3 p) {
         const int col = int(std::floor((p.x - centre.x) / pixel + 0.5f * float(kWidth)));
         const int row = int(std::floor((p.z - centre.z) / pixel + 0.5f * float(kHeight)));

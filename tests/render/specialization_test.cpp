@@ -141,7 +141,7 @@ TEST(RenderSpecialization, DrawsWithAndWithoutPrimariesLightmapsAndGridLightChan
     EXPECT_TRUE(test::anyNamed(seen, " point"));
     EXPECT_TRUE(test::anyNamed(seen, " spot"));
     EXPECT_TRUE(test::anyNamed(seen, " lightmap"));
-    EXPECT_TRUE(test::anyNamed(seen, " lightmap edges"));  // a baked shadow edge's surfaces...
+    EXPECT_TRUE(test::anyNamed(seen, " lightmap edges"));       // a baked shadow edge's surfaces...
     EXPECT_TRUE(test::anyNamed(seen, " lightmap no-effects"));  // ...and the others
     EXPECT_TRUE(test::anyNamed(seen, " object"));
     EXPECT_TRUE(test::anyNamed(seen, "textures=none"));
