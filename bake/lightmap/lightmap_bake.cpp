@@ -354,6 +354,13 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
         }
         if (progress) progress->advance(units);
     });
+    // A moved texel's indirect part is its neighbours', denoised (lightmap_denoise.hpp).
+    const std::vector<uint32_t> movedReads =
+        movedTexelReads(level, samples, estimates, ownedSamples);
+    if (settings.denoise.enabled)
+        markDenoiseFootprint(hash, samples, movedReads, needed);
+    else
+        for (const uint32_t j : movedReads) needed[j] = 1;
     RadianceCache cache;
     TransportSettings finalTransport = settings.transport;
     if (cached) {
@@ -388,6 +395,13 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             edges[k].distance = v >= 0.5f ? world::kDirectEdgeReach : -world::kDirectEdgeReach;
             edges[k].low = edges[k].high = v;
         }
+    std::vector<DenoisedIndirect> movedReadsDenoised(movedReads.size());
+    bake::parallelFor(tbb::blocked_range<size_t>(0, movedReads.size(), 64), [&](const auto& r) {
+        RayCounts& local = rays.local();
+        for (size_t k = r.begin(); k != r.end(); ++k)
+            movedReadsDenoised[k] = denoiseTexel(scene, hash, samples, estimates, movedReads[k],
+                                                 settings.denoise, local);
+    });
     std::vector<double> denoisedNoise(ownedSamples.size(), 0.0);
     bake::parallelFor(tbb::blocked_range<size_t>(0, ownedSamples.size(), 64), [&](const auto& r) {
         RayCounts& local = rays.local();
@@ -396,7 +410,9 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             const TexelSample& s = samples[i];
             const TexelEstimate& e = estimates[i];
             const DenoisedIndirect d =
-                denoiseTexel(scene, hash, samples, estimates, i, settings.denoise, local);
+                e.moved ? movedTexelIndirect(level, samples, estimates, i, movedReads,
+                                             movedReadsDenoised)
+                        : denoiseTexel(scene, hash, samples, estimates, i, settings.denoise, local);
             denoisedNoise[k] = d.noise;
             world::LightmapTexel t;
             const double luminanceSum = e.directLuminance + d.indirectLuminance;

@@ -248,4 +248,94 @@ DenoisedIndirect denoiseTexel(const BakeScene& scene, const TexelHash& hash,
     return out;
 }
 
+namespace {
+
+/// Calls f(j) for each sampled, unmoved texel j among moved texel i's eight neighbours in its
+/// chart: the texels the bilinear filter blends with it.
+template <typename F>
+void forEachMovedNeighbour(const world::CompiledLevel& level,
+                           const std::vector<TexelSample>& samples,
+                           const std::vector<TexelEstimate>& estimates, size_t i, F&& f) {
+    const TexelSample& p = samples[i];
+    const uint32_t chart = level.surfaces[p.surface].chart;
+    const world::Atlas& atlas = level.atlases[p.atlas];
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int x = int(p.x) + dx, y = int(p.y) + dy;
+            if ((dx == 0 && dy == 0) || x < 0 || y < 0 || x >= int(atlas.width) ||
+                y >= int(atlas.height))
+                continue;
+            const uint64_t texel = p.texel + uint64_t(int64_t(dy) * int64_t(atlas.width) + dx);
+            const auto at =
+                std::lower_bound(samples.begin(), samples.end(), texel,
+                                 [](const TexelSample& s, uint64_t t) { return s.texel < t; });
+            if (at == samples.end() || at->texel != texel) continue;
+            const size_t j = size_t(at - samples.begin());
+            if (!estimates[j].moved && level.surfaces[at->surface].chart == chart) f(uint32_t(j));
+        }
+}
+
+}  // namespace
+
+std::vector<uint32_t> movedTexelReads(const world::CompiledLevel& level,
+                                      const std::vector<TexelSample>& samples,
+                                      const std::vector<TexelEstimate>& estimates,
+                                      const std::vector<uint32_t>& owned) {
+    std::vector<uint32_t> reads;
+    for (const uint32_t i : owned)
+        if (estimates[i].moved)
+            forEachMovedNeighbour(level, samples, estimates, i,
+                                  [&](uint32_t j) { reads.push_back(j); });
+    std::sort(reads.begin(), reads.end());
+    reads.erase(std::unique(reads.begin(), reads.end()), reads.end());
+    return reads;
+}
+
+DenoisedIndirect movedTexelIndirect(const world::CompiledLevel& level,
+                                    const std::vector<TexelSample>& samples,
+                                    const std::vector<TexelEstimate>& estimates, size_t i,
+                                    const std::vector<uint32_t>& reads,
+                                    const std::vector<DenoisedIndirect>& denoised) {
+    const TexelEstimate& e = estimates[i];
+    DenoisedIndirect out{e.indirect, e.indirectDirection, e.indirectLuminance, e.noise, 0};
+    if (!e.moved) return out;
+    struct Neighbour {
+        const DenoisedIndirect* value;
+        double weight;  // T_q (lux, luminance), then 1 / T_q^2
+    };
+    std::vector<Neighbour> neighbours;
+    double brightest = 0.0;
+    forEachMovedNeighbour(level, samples, estimates, i, [&](uint32_t j) {
+        const auto at = std::lower_bound(reads.begin(), reads.end(), j);
+        if (at == reads.end() || *at != j) return;  // not among the reads: cannot happen
+        const DenoisedIndirect& d = denoised[size_t(at - reads.begin())];
+        const TexelEstimate& q = estimates[j];
+        const double whole =
+            q.directLuminance + double(luminance(q.ownDirect)) + d.indirectLuminance;
+        neighbours.push_back({&d, whole});
+        brightest = std::max(brightest, whole);
+    });
+    if (neighbours.empty()) return out;
+    // T_q floored relative to the brightest neighbour's, so that a black one counts as the
+    // darkest possible rather than dividing by zero.
+    const double floor = std::max(1e-6 * brightest, 1e-30);
+    double weightSum = 0.0;
+    for (Neighbour& q : neighbours) {
+        const double t = std::max(q.weight, floor);
+        q.weight = 1.0 / (t * t);
+        weightSum += q.weight;
+    }
+    out = DenoisedIndirect{};
+    double variance = 0.0;
+    for (const Neighbour& q : neighbours) {
+        const double k = q.weight / weightSum;
+        out.indirect += k * q.value->indirect;
+        out.indirectDirection += k * q.value->indirectDirection;
+        out.indirectLuminance += k * q.value->indirectLuminance;
+        variance += k * k * q.value->noise * q.value->noise;
+    }
+    out.noise = std::sqrt(variance);
+    return out;
+}
+
 }  // namespace onelight::bake
