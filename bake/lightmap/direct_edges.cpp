@@ -90,7 +90,10 @@ constexpr float kEdgeFitSpread = 0.05f;
       level drawn there is within kEdgeCentreTolerance of its visibility. Otherwise (a soft edge,
       or a third level: beside one light's sharp edge, texels lit by part of another were drawn
       at the levels' ends, and a real map's ceiling read 4.1% off its reference instead of 3.4%)
-      the texel keeps its bilinear visibility: V_low = V_high = V, sharpness 0.
+      the texel keeps its bilinear visibility: V_low = V_high = V, sharpness 0, and still the
+      distance and width of a sharp edge's line (the field filtered between it and a drawn
+      neighbour then crosses zero on the line, not between them). A texel near a crossing but
+      beyond the line's reach is signed by its side of the nearest crossing's tau.
    Distances are in texels: a chart's texels are squares on its surface (uniform density).
 
    Texels under a solid (a floor's under a wall standing on it) trace their light from a point
@@ -412,6 +415,14 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
                         }
                     }
                 }
+            // A texel the field does not draw still enters its neighbours' filtered distance: it
+            // is signed by its side of the nearest edge's levels' mean, not of 0.5. (Beside an
+            // edge from 0.17 to 0.54, texels at 0.45-0.49 were signed dark, and where the filter
+            // crossed zero between them and the edge's lit texels the runtime drew a second,
+            // false edge: blotches with sharp outlines on a real map's wall.)
+            if (nearest)
+                e.distance = v >= 0.5f * (nearest->low + nearest->high) ? world::kDirectEdgeReach
+                                                                         : -world::kDirectEdgeReach;
             if (nearest && best <= world::kDirectEdgeReach + kEdgeFitRadius) {
                 EdgeLine line = fitEdgeLine(found, nearest->at);
                 if (!line.fitted) {
@@ -429,9 +440,11 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
                 // noise part them more).
                 const bool onRamp = std::abs(distance) < 0.5f * line.width;
                 const float drawn = distance > 0.0f ? line.high : line.low;
-                if (line.sharp && (onRamp || std::abs(drawn - v) <= kEdgeCentreTolerance)) {
+                if (line.sharp) {  // its distance on the field's own scale, drawn or not
                     e.distance = distance;
                     e.width = line.width;
+                }
+                if (line.sharp && (onRamp || std::abs(drawn - v) <= kEdgeCentreTolerance)) {
                     e.low = line.low;
                     e.high = line.high;
                     e.sharpness = 1.0f;
