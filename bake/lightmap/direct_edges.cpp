@@ -422,7 +422,7 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
             // false edge: blotches with sharp outlines on a real map's wall.)
             if (nearest)
                 e.distance = v >= 0.5f * (nearest->low + nearest->high) ? world::kDirectEdgeReach
-                                                                         : -world::kDirectEdgeReach;
+                                                                        : -world::kDirectEdgeReach;
             if (nearest && best <= world::kDirectEdgeReach + kEdgeFitRadius) {
                 EdgeLine line = fitEdgeLine(found, nearest->at);
                 if (!line.fitted) {
