@@ -7,6 +7,7 @@
 // by centimetres.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -35,29 +36,46 @@ const glm::vec3 kAcross{-std::sin(kTurn), 0.0f, std::cos(kTurn)};
 // wall's centre line.
 constexpr float kEdgeOffset = kHalfThick + kWallTop;
 
-// With `overhead`, a second baked sun of 5 klx straight down lights both sides of the edge: the
-// edge then goes from 0.41 of the direct light to all of it.
-assets::LoadedLevel wallTurnedInABakedSun(bool overhead) {
+// The second light over the wall's scene (every light baked, no surface's primary).
+enum class SecondSun {
+    kNone,
+    // 5 klx straight down, over both sides of the edge: it goes from 0.41 of the direct light to
+    // all of it.
+    kOverhead,
+    // 8.64 klx straight down but under a roof over the shadow's side, which the first sun passes
+    // under: the edge goes from none of the direct light to 0.45 of it, every texel's visibility
+    // below one half.
+    kRoofed,
+};
+
+assets::LoadedLevel wallTurnedInABakedSun(SecondSun second) {
     test::Scene s;
     s.materials = {{{0.5f, 0.5f, 0.5f, 1.0f}, 0.0f, 1.0f}};
     test::addFloor(s, 0.0f, 0.0f, 8.0f, 0.0f, 0);
     test::addBox(s, {-5.0f, 0.0f, -kHalfThick}, {5.0f, kWallTop, kHalfThick}, 0);
-    for (glm::vec3& p : s.meshes.back().positions)
-        p = p.x * kAlong + p.y * glm::vec3(0, 1, 0) + p.z * kAcross;
-    for (glm::vec3& n : s.meshes.back().normals)
-        n = n.x * kAlong + n.y * glm::vec3(0, 1, 0) + n.z * kAcross;
+    if (second == SecondSun::kRoofed) test::addBox(s, {-5.0f, 8.0f, 0.0f}, {5.0f, 8.3f, 12.0f}, 0);
+    for (test::SceneMesh& mesh : s.meshes) {
+        if (&mesh == &s.meshes.front()) continue;  // the floor
+        for (glm::vec3& p : mesh.positions)
+            p = p.x * kAlong + p.y * glm::vec3(0, 1, 0) + p.z * kAcross;
+        for (glm::vec3& n : mesh.normals)
+            n = n.x * kAlong + n.y * glm::vec3(0, 1, 0) + n.z * kAcross;
+    }
     test::SceneLight sun;
     sun.type = 0;
     sun.intensity = 10000.0f;
     sun.direction = glm::normalize(kAcross - glm::vec3(0.0f, 1.0f, 0.0f));
     sun.role = "baked";
     s.lights.push_back(sun);
-    if (overhead) {
-        sun.intensity = 5000.0f;
+    if (second != SecondSun::kNone) {
+        // Roofed: 10 klx at 45 degrees gives the floor 7071 lux, and 7071 / (7071 + 8642) = 0.45.
+        sun.intensity = second == SecondSun::kOverhead ? 5000.0f : 8642.0f;
         sun.direction = glm::vec3(0.0f, -1.0f, 0.0f);
         s.lights.push_back(sun);
     }
-    const std::string name = overhead ? "baked_edge_overhead" : "baked_edge";
+    const std::string name = second == SecondSun::kNone       ? "baked_edge"
+                             : second == SecondSun::kOverhead ? "baked_edge_overhead"
+                                                              : "baked_edge_roofed";
     const std::string gltf = test::outputDir() + "/" + name + ".gltf";
     test::writeGltf(s, gltf);
     return test::bakeAndLoad(
@@ -161,7 +179,8 @@ EdgeMeasure measureEdge(const assets::LoadedLevel& level, uint32_t featuresOff) 
 // bilinear visibility stair-steps by about a quarter texel either way: its wander is 2.7 cm, and
 // it must stay at least five times the field's.
 void expectStraightEdge(bool overhead) {
-    const assets::LoadedLevel level = wallTurnedInABakedSun(overhead);
+    const assets::LoadedLevel level =
+        wallTurnedInABakedSun(overhead ? SecondSun::kOverhead : SecondSun::kNone);
     const EdgeMeasure field = measureEdge(level, 0);
     const EdgeMeasure bilinear = measureEdge(level, uint32_t(glsl::FEATURE_DIRECT_EDGE));
     std::printf(
@@ -186,6 +205,48 @@ TEST(BakedEdge, ASunsEdgeAcrossTheTexelsIsAStraightLineWhereTheGeometryPutsIt) {
 
 TEST(BakedEdge, AnEdgeOfOneLightAmongOthersIsDrawnToo) {
     expectStraightEdge(true);
+}
+
+// Every texel's visibility below one half (the edge from none of the direct light to 0.45 of it,
+// a second sun roofed over): the texels beyond the field's reach were signed by V >= 0.5, dark,
+// next to the field's lit texels, and the filtered distance crossed zero between them, a second
+// edge drawn 2-3 texels into the lit side at the levels' mean (half the light there). The lit side
+// from 30 cm to 1.3 m past the edge (1.5 to 6.5 texels), the columns' mean at each distance, must
+// be flat: within 5% of its median (its light is the first sun's, even, and the bounce light's,
+// which changes by a few percent over the metre).
+TEST(BakedEdge, TexelsBelowHalfOnTheLitSideDrawNoSecondEdge) {
+    const assets::LoadedLevel level = wallTurnedInABakedSun(SecondSun::kRoofed);
+    const glm::vec3 centre = (kEdgeOffset + 0.8f) * kAcross;
+    const TopView view = topView(level, centre, kHeightAbove, 0);
+    const auto luminanceAt = [&](glm::vec3 p) {
+        const int col = int(std::floor((p.x - centre.x) / view.pixel + 0.5f * float(kWidth)));
+        const int row = int(std::floor((p.z - centre.z) / view.pixel + 0.5f * float(kHeight)));
+        if (col < 0 || row < 0 || col >= int(kWidth) || row >= int(kHeight)) return -1.0f;
+        const float* px = &view.frame.frame.linearRgba[(size_t(row) * kWidth + size_t(col)) * 4];
+        return 0.2126f * px[0] + 0.7152f * px[1] + 0.0722f * px[2];
+    };
+    std::vector<double> profile;
+    for (float past = 0.3f; past <= 1.3f; past += 0.01f) {
+        double sum = 0.0;
+        int count = 0;
+        for (float along = -1.0f; along <= 1.0f; along += 0.01f) {
+            const float l = luminanceAt(along * kAlong + (kEdgeOffset + past) * kAcross);
+            if (l < 0.0f) continue;
+            sum += double(l);
+            ++count;
+        }
+        ASSERT_GT(count, 50);
+        profile.push_back(sum / count);
+    }
+    std::vector<double> sorted = profile;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted[sorted.size() / 2];
+    std::printf(
+        "[ baked edge ] the lit side of an edge from 0 to 0.45, 30 cm to 1.3 m past it: from "
+        "%.3f to %.3f of its median\n",
+        sorted.front() / median, sorted.back() / median);
+    EXPECT_GT(sorted.front(), 0.95 * median);
+    EXPECT_LT(sorted.back(), 1.05 * median);
 }
 
 // The wall's foot: the floor texels under the wall were moved out of the solid and traced their
@@ -247,7 +308,7 @@ FootRatio footOverBeyond(const assets::LoadedLevel& level, float side, uint32_t 
 // texels now share with the shadow costs the foot's first centimetres (their whole light 0.8-0.9
 // of the reference's): kept above 0.75 of the floor beyond.
 TEST(BakedEdge, TheSunDoesNotLeakUnderTheWallIntoItsShadow) {
-    const assets::LoadedLevel level = wallTurnedInABakedSun(false);
+    const assets::LoadedLevel level = wallTurnedInABakedSun(SecondSun::kNone);
     const FootRatio shadow = footOverBeyond(level, 1.0f, 0);
     const FootRatio bilinear = footOverBeyond(level, 1.0f, uint32_t(glsl::FEATURE_DIRECT_EDGE));
     const FootRatio lit = footOverBeyond(level, -1.0f, 0);
