@@ -51,6 +51,8 @@ constexpr float kEdgeContrast = 0.25f;
 
 /// How far the field may draw a sharp texel's own centre from the visibility its rays measured.
 constexpr float kEdgeCentreTolerance = 0.1f;
+/// An edge is drawn only where one of its levels is within this of none or all of the light.
+constexpr float kEdgeEndLevel = 0.1f;
 
 /// Halvings of a lattice step that place a crossing, and the half step of the visibility's
 /// gradient there, texels (step 3 below).
@@ -86,10 +88,13 @@ constexpr float kEdgeFitSpread = 0.05f;
    4. A texel within kDirectEdgeReach of a crossing keeps the distance to the edge's line through
       the crossings around the nearest one (fitEdgeLine), signed by its own side of tau, their
       width and levels. The runtime draws V = mix(V_low, V_high, clamp(0.5 + s / w)) there when
-      w is within kDirectEdgeMaxWidth and, where the texel's centre is beyond the penumbra, the
-      level drawn there is within kEdgeCentreTolerance of its visibility. Otherwise (a soft edge,
-      or a third level: beside one light's sharp edge, texels lit by part of another were drawn
-      at the levels' ends, and a real map's ceiling read 4.1% off its reference instead of 3.4%)
+      w is within kDirectEdgeMaxWidth, one level is within kEdgeEndLevel of none or all of the
+      light, and, where the texel's centre is beyond the penumbra, the level drawn there is
+      within kEdgeCentreTolerance of its visibility. Otherwise (a soft edge; a third level:
+      beside one light's sharp edge, texels lit by part of another were drawn at the levels'
+      ends, and a real map's ceiling read 4.1% off its reference instead of 3.4%; or neither
+      level at an end: several lamps partly seen on both sides, whose mix changes within the
+      texels, and the field drew an edge across a real map's wall that the reference has not)
       the texel keeps its bilinear visibility: V_low = V_high = V, sharpness 0, and still the
       distance and width of a sharp edge's line (the field filtered between it and a drawn
       neighbour then crosses zero on the line, not between them). A texel near a crossing but
@@ -444,7 +449,9 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
                     e.distance = distance;
                     e.width = line.width;
                 }
-                if (line.sharp && (onRamp || std::abs(drawn - v) <= kEdgeCentreTolerance)) {
+                const bool oneEnd = line.low <= kEdgeEndLevel || line.high >= 1.0f - kEdgeEndLevel;
+                if (line.sharp && oneEnd &&
+                    (onRamp || std::abs(drawn - v) <= kEdgeCentreTolerance)) {
                     e.low = line.low;
                     e.high = line.high;
                     e.sharpness = 1.0f;
