@@ -132,6 +132,21 @@ struct Neighbourhood {
         const int64_t j = sampleOfTexel(samples, texel);
         return j >= 0 && samples[size_t(j)].surface == s.surface ? j : -1;
     }
+
+    /// The same in the same chart, whichever of its surfaces: the texels the runtime filters
+    /// together.
+    int64_t atInChart(size_t i, int dx, int dy) const {
+        const TexelSample& s = samples[i];
+        const world::Atlas& atlas = level.atlases[s.atlas];
+        const int64_t x = int64_t(s.x) + dx, y = int64_t(s.y) + dy;
+        if (x < 0 || y < 0 || x >= int64_t(atlas.width) || y >= int64_t(atlas.height)) return -1;
+        const uint64_t texel = s.texel + uint64_t(int64_t(dy) * int64_t(atlas.width) + dx);
+        const int64_t j = sampleOfTexel(samples, texel);
+        return j >= 0 && level.surfaces[samples[size_t(j)].surface].chart ==
+                             level.surfaces[s.surface].chart
+                   ? j
+                   : -1;
+    }
 };
 
 /// The edge's line near a crossing: through the crossings within kEdgeFitRadius of it.
@@ -255,7 +270,7 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
             bool nearWanted = false;
             for (int dy = -reach; dy <= reach && !nearWanted; ++dy)
                 for (int dx = -reach; dx <= reach && !nearWanted; ++dx) {
-                    const int64_t j = near.at(i, dx, dy);
+                    const int64_t j = near.atInChart(i, dx, dy);
                     nearWanted = j >= 0 && isWanted[size_t(j)];
                 }
             straddles[i] = nearWanted ? 1 : 0;
@@ -409,7 +424,10 @@ std::vector<DirectEdge> directEdges(const BakeScene& scene, const BakeLights& li
             float best = std::numeric_limits<float>::infinity();
             for (int dy = -reach; dy <= reach; ++dy)
                 for (int dx = -reach; dx <= reach; ++dx) {
-                    const int64_t j = near.at(i, dx, dy);
+                    // The chart's crossings, whichever surface found them: the runtime filters
+                    // the chart's texels together, so a texel of the next surface must be signed
+                    // by the same edge.
+                    const int64_t j = near.atInChart(i, dx, dy);
                     if (j < 0 || rank[size_t(j)] < 0) continue;
                     for (const Crossing& x : crossings[size_t(rank[size_t(j)])]) {
                         found.push_back(&x);
