@@ -5,9 +5,7 @@ namespace onelight::world {
 namespace {
 
 uint64_t totalTexels(const CompiledLevel& level) {
-    uint64_t total = 0;
-    for (const Atlas& a : level.atlases) total += uint64_t(a.width) * a.height;
-    return total;
+    return atlasTexelOffset(level, uint32_t(level.atlases.size()));
 }
 
 /// The surface's lightmap rectangle is a non-empty one inside its atlas.

@@ -12,12 +12,6 @@
 
 namespace onelight::bake {
 
-int64_t sampleOfTexel(const std::vector<TexelSample>& samples, uint64_t texel) {
-    const auto it = std::lower_bound(samples.begin(), samples.end(), texel,
-                                     [](const TexelSample& s, uint64_t t) { return s.texel < t; });
-    return it != samples.end() && it->texel == texel ? int64_t(it - samples.begin()) : -1;
-}
-
 float directVisibilityAt(const BakeScene& scene, const BakeLights& lights, uint32_t ownPrimary,
                          const glm::vec3& origin, const glm::vec3& n, uint32_t shadowSamples,
                          Rng& rng, RayCounts& rays) {
@@ -122,25 +116,16 @@ struct Neighbourhood {
     const std::vector<TexelSample>& samples;
     const world::CompiledLevel& level;
 
-    /// The sample of the texel (dx, dy) from sample i in its atlas, any surface's; -1 when none.
-    int64_t anyAt(size_t i, int dx, int dy) const {
-        const TexelSample& s = samples[i];
-        const world::Atlas& atlas = level.atlases[s.atlas];
-        const int64_t x = int64_t(s.x) + dx, y = int64_t(s.y) + dy;
-        if (x < 0 || y < 0 || x >= int64_t(atlas.width) || y >= int64_t(atlas.height)) return -1;
-        return sampleOfTexel(samples, s.texel + uint64_t(int64_t(dy) * int64_t(atlas.width) + dx));
-    }
-
-    /// The same on the same surface; -1 when none.
+    /// The sample of the texel (dx, dy) from sample i on the same surface; -1 when none.
     int64_t at(size_t i, int dx, int dy) const {
-        const int64_t j = anyAt(i, dx, dy);
+        const int64_t j = sampleAtOffset(level, samples, i, dx, dy);
         return j >= 0 && samples[size_t(j)].surface == samples[i].surface ? j : -1;
     }
 
     /// The same in the same chart, whichever of its surfaces: the texels the runtime filters
     /// together.
     int64_t atInChart(size_t i, int dx, int dy) const {
-        const int64_t j = anyAt(i, dx, dy);
+        const int64_t j = sampleAtOffset(level, samples, i, dx, dy);
         return j >= 0 && level.surfaces[samples[size_t(j)].surface].chart ==
                              level.surfaces[samples[i].surface].chart
                    ? j

@@ -31,9 +31,6 @@ struct DirectEdge {
     float sharpness = 0.0f;  // 1: the runtime draws the edge; 0: the bilinear visibility
 };
 
-/// Where in `samples` a texel is sampled (binary search: samples are in texel order).
-[[nodiscard]] int64_t sampleOfTexel(const std::vector<TexelSample>& samples, uint64_t texel);
-
 /// The baked lights' visibility (all but the surface's own primary), luminance-weighted, from
 /// `origin` on a surface of normal `n`: what directVisibility(estimate) is at a texel centre.
 /// 1 where none reaches.

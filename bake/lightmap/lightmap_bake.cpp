@@ -409,10 +409,14 @@ LightmapStats bakeLightmapTexels(const BakeScene& scene, const BakeLights& light
             const size_t i = ownedSamples[k];
             const TexelSample& s = samples[i];
             const TexelEstimate& e = estimates[i];
+            // A moved texel's neighbour was denoised already, above.
+            const auto read = std::lower_bound(movedReads.begin(), movedReads.end(), uint32_t(i));
             const DenoisedIndirect d =
                 e.moved ? movedTexelIndirect(level, samples, estimates, i, movedReads,
                                              movedReadsDenoised)
-                        : denoiseTexel(scene, hash, samples, estimates, i, settings.denoise, local);
+                : read != movedReads.end() && *read == i
+                    ? movedReadsDenoised[size_t(read - movedReads.begin())]
+                    : denoiseTexel(scene, hash, samples, estimates, i, settings.denoise, local);
             denoisedNoise[k] = d.noise;
             world::LightmapTexel t;
             const double luminanceSum = e.directLuminance + d.indirectLuminance;

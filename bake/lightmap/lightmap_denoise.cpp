@@ -256,22 +256,13 @@ template <typename F>
 void forEachMovedNeighbour(const world::CompiledLevel& level,
                            const std::vector<TexelSample>& samples,
                            const std::vector<TexelEstimate>& estimates, size_t i, F&& f) {
-    const TexelSample& p = samples[i];
-    const uint32_t chart = level.surfaces[p.surface].chart;
-    const world::Atlas& atlas = level.atlases[p.atlas];
+    const uint32_t chart = level.surfaces[samples[i].surface].chart;
     for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-            const int x = int(p.x) + dx, y = int(p.y) + dy;
-            if ((dx == 0 && dy == 0) || x < 0 || y < 0 || x >= int(atlas.width) ||
-                y >= int(atlas.height))
-                continue;
-            const uint64_t texel = p.texel + uint64_t(int64_t(dy) * int64_t(atlas.width) + dx);
-            const auto at =
-                std::lower_bound(samples.begin(), samples.end(), texel,
-                                 [](const TexelSample& s, uint64_t t) { return s.texel < t; });
-            if (at == samples.end() || at->texel != texel) continue;
-            const size_t j = size_t(at - samples.begin());
-            if (!estimates[j].moved && level.surfaces[at->surface].chart == chart) f(uint32_t(j));
+            const int64_t j = dx == 0 && dy == 0 ? -1 : sampleAtOffset(level, samples, i, dx, dy);
+            if (j >= 0 && !estimates[size_t(j)].moved &&
+                level.surfaces[samples[size_t(j)].surface].chart == chart)
+                f(uint32_t(j));
         }
 }
 

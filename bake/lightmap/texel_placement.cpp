@@ -87,6 +87,21 @@ struct Candidate {
 
 }  // namespace
 
+int64_t sampleOfTexel(const std::vector<TexelSample>& samples, uint64_t texel) {
+    const auto it = std::lower_bound(samples.begin(), samples.end(), texel,
+                                     [](const TexelSample& s, uint64_t t) { return s.texel < t; });
+    return it != samples.end() && it->texel == texel ? int64_t(it - samples.begin()) : -1;
+}
+
+int64_t sampleAtOffset(const world::CompiledLevel& level, const std::vector<TexelSample>& samples,
+                       size_t i, int dx, int dy) {
+    const TexelSample& s = samples[i];
+    const world::Atlas& atlas = level.atlases[s.atlas];
+    const int64_t x = int64_t(s.x) + dx, y = int64_t(s.y) + dy;
+    if (x < 0 || y < 0 || x >= int64_t(atlas.width) || y >= int64_t(atlas.height)) return -1;
+    return sampleOfTexel(samples, s.texel + uint64_t(int64_t(dy) * int64_t(atlas.width) + dx));
+}
+
 uint64_t totalTexels(const world::CompiledLevel& level) {
     return world::atlasTexelOffset(level, static_cast<uint32_t>(level.atlases.size()));
 }

@@ -33,6 +33,15 @@ struct TexelSample {
 /// Samples in increasing texel order, one per touched texel.
 [[nodiscard]] std::vector<TexelSample> placeTexels(const world::CompiledLevel& level);
 
+/// Where in `samples` (placeTexels' order) a texel is sampled; -1 when it is not.
+[[nodiscard]] int64_t sampleOfTexel(const std::vector<TexelSample>& samples, uint64_t texel);
+
+/// The sample of the texel (dx, dy) from sample i in its atlas, whichever surface's; -1 when
+/// that texel lies outside the atlas or is not sampled.
+[[nodiscard]] int64_t sampleAtOffset(const world::CompiledLevel& level,
+                                     const std::vector<TexelSample>& samples, size_t i, int dx,
+                                     int dy);
+
 /// Total texel count over every atlas.
 [[nodiscard]] uint64_t totalTexels(const world::CompiledLevel& level);
 
