@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The engine's reference path tracer against an outside one, Blender's Cycles (Debian `blender`),
-on scenes where the two models agree: Lambert surfaces, punctual lights, a uniform sky.
+on scenes where the two models agree: Lambert surfaces, punctual lights, a uniform sky, and
+the engine's glossy layer (below: where Cycles' differs, and by how much).
 
   scripts/cycles-check.py [--bin build/bin] [--work DIR] [--size WxH] [--spp N] [--cycles N]
 
@@ -17,6 +18,21 @@ with watts for lumens, and a world of strength L is a sky of L cd/m^2. The light
 engine's sizes (a 5 cm sphere, a sun 0.27 degrees in radius). A Lambert material is given
 Cycles' Diffuse BSDF at roughness 0 (its Principled BSDF's diffuse is not Lambert).
 
+How the materials map. A glossy material (roughness under 1, or metallic) is the engine's model
+(shaders/lighting.glsl, surfaceReflectance): a Lambert layer of albedo base (1 - metallic),
+weighted by the engine's 1 - (f0 A + B) at the view's NoV (its split-sum table, read by a node
+from Layer Weight's Facing), beside a GGX layer of alpha roughness^2 and f0 mix(0.04, base,
+metallic): Cycles' Principled BSDF at distribution GGX (single scattering), its base black (its
+diffuse off) or, for a metal, its base as f0. Cycles' GGX layer is not quite the engine's:
+  - its Fresnel is a dielectric's (the index whose f0 it is), normalised to f0 at normal
+    incidence, where the engine's is Schlick's: more at mid angles (at v.h 0.7, 0.051 against
+    0.042 for f0 0.04), less towards grazing;
+  - its Smith masking is separable, G1(v) G1(l), where the engine's is height-correlated:
+    less, most at grazing and on rough lobes.
+On sky_floor_glossy both are computed in closed form (cycles-render.py closed-form: the layer's
+albedo by quadrature, for each model), so that each tracer is checked against its own model and
+the models' difference is measured apart from the tracers'.
+
 The scenes:
   sky_floor   a 40 x 40 m floor (albedo 0.5) under a uniform sky of 1000 cd/m^2 and a 100 cd
               point light 2 m up: everything in closed form (rho / pi (pi L + I / d^2 cos)).
@@ -25,6 +41,12 @@ The scenes:
               opening and nothing else: every pixel off the sunlit patch has bounced.
   lamp_room   the same room closed, lit only by a 0.6 x 0.6 m ceiling panel of 2000 cd/m^2
               (an emissive Lambert quad, one-sided): the emitters the bake samples as lights.
+  sky_floor_glossy  a glossy floor (0.2, roughness 0.2) under a uniform 1000 cd/m^2 sky alone:
+              in closed form for each model (above).
+  roof_room_glossy  the roof room with a glossy floor (0.6, roughness 0.25) and a gold block
+              (metal, 0.3).
+  glossy_room the closed room under the panel and a 150 cd lamp: a near-mirror floor (0.3,
+              roughness 0.1), semi-glossy walls (0.6, 0.5), a copper block (metal, 0.45).
   spot_room   the same closed room lit by a 2000 cd spot (cone 0.3 to 0.6 rad) aimed at the
               floor: where the models differ, the cone's edge (glTF's falloff, smooth in the
               cosine, against Blender's blend), run by --scenes spot_room.
@@ -37,6 +59,10 @@ import sys
 import tempfile
 
 from scenes import SCENES
+
+# Scenes cycles-render.py's closed-form computes: what each tracer should give, with its own
+# GGX layer, where the two layers differ.
+CLOSED_FORMS = {"sky_floor_glossy"}
 
 
 def blender(render, *args):
@@ -58,14 +84,14 @@ def main():
     p.add_argument("--size", default="320x180")
     p.add_argument("--spp", type=int, default=1024, help="the engine reference's paths a pixel")
     p.add_argument("--cycles", type=int, default=1024, help="Cycles' samples a pixel")
-    p.add_argument("--scenes", default="sky_floor,roof_room,lamp_room")
+    p.add_argument("--scenes", default="sky_floor,roof_room,lamp_room,sky_floor_glossy,roof_room_glossy,glossy_room")
     args = p.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
     work = args.work or tempfile.mkdtemp(prefix="onelight-cycles-")
     os.makedirs(work, exist_ok=True)
     bake = os.path.join(args.bin, "onelight-bake")
     render = os.path.join(here, "cycles-render.py")
-    rows = []
+    rows, closed_rows = [], []
     for name in args.scenes.split(","):
         gltf = os.path.join(work, name + ".gltf")
         sky = SCENES[name](gltf, width / height)
@@ -84,6 +110,22 @@ def main():
             blender(render, "compare", a, b, "8", out)
             stats.append(json.load(open(out)))
         rows.append((name, stats[0], stats[1]))
+        if name in CLOSED_FORMS:
+            engine_model = os.path.join(work, name + "-closed-engine.exr")
+            cycles_model = os.path.join(work, name + "-closed-cycles.exr")
+            blender(render, "closed-form", gltf, "view", str(width), str(height), str(sky),
+                    engine_model, cycles_model)
+            closed = []
+            for a, b in ((engine_model, ours), (cycles_model, cycles[0]),
+                         (engine_model, cycles_model)):
+                out = os.path.join(work, name + "-compare.json")
+                blender(render, "compare", a, b, "8", out)
+                closed.append(json.load(open(out)))
+            closed_rows.append((name, closed))
+            print(f"cycles-check: {name}: the engine's reference against its model's closed form "
+                  f"{closed[0]['mean_relative_error']:.4f}, Cycles against its own "
+                  f"{closed[1]['mean_relative_error']:.4f}, the two closed forms "
+                  f"{closed[2]['mean_relative_error']:.4f}", file=sys.stderr, flush=True)
         print(f"cycles-check: {name}: Cycles against the engine's reference: mean relative "
               f"block error {stats[0]['mean_relative_error']:.4f}, level {stats[0]['level_ratio']:.4f}; "
               f"Cycles' own noise {stats[1]['mean_relative_error']:.4f} ({stats[0]['blocks']} blocks)",
@@ -94,6 +136,14 @@ def main():
     for name, a, n in rows:
         print(f"| {name} | {a['mean_relative_error']:.4f} | {a['level_ratio']:.4f} | "
               f"{n['mean_relative_error']:.4f} |")
+    if closed_rows:
+        print()
+        print("| scene | the engine's reference against its model in closed form | Cycles against "
+              "its model in closed form | Cycles' model against the engine's (level) |")
+        print("|---|---|---|---|")
+        for name, (e, c, m) in closed_rows:
+            print(f"| {name} | {e['mean_relative_error']:.4f} | {c['mean_relative_error']:.4f} | "
+                  f"{m['mean_relative_error']:.4f} ({m['level_ratio']:.4f}) |")
 
 
 if __name__ == "__main__":

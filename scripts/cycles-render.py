@@ -7,12 +7,17 @@ scripts/cycles-check.py, which says why and how the units map.
       material (roughness 1, metallic 0, no texture: the engine's MATERIAL_LAMBERT) a plain
       Diffuse BSDF, the lights the engine's sizes, a uniform world of SKY, and renders the
       camera's view with Cycles: no clamping, no denoising, a box pixel filter, 64 bounces.
+  closed-form GLTF CAMERA WIDTH HEIGHT SKY ENGINE.exr CYCLES.exr
+      a glossy floor under a uniform sky alone in closed form, for the engine's GGX layer and for
+      Cycles' (closed_form): what each tracer should give where the two layers differ.
   compare A.exr B.exr BLOCK OUT.json
       the mean relative error of B against A over BLOCK x BLOCK pixel blocks' luminance, and
       the ratio of their mean levels, as JSON.
 """
 import json
 import math
+import os
+import re
 import sys
 
 import bpy
@@ -29,15 +34,127 @@ POINT_RADIUS = 0.05  # metres: bake/lighting/lights.hpp, LightSizes::pointRadius
 SUN_ANGULAR_RADIUS = 0.00465  # radians: LightSizes::sunAngularRadius
 
 
-def lambert(material):
+ENV_BRDF_TABLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "shaders",
+                              "env_brdf_table.inc")
+ENV_BRDF_TABLE_SIZE = 32  # shaders/lighting.glsl
+MIN_NOV = 1e-4  # shaders/brdf.glsl
+DIELECTRIC_F0 = 0.04  # glTF 2.0, Appendix B (world/compiled_level.hpp's default)
+WEIGHT_TABLE_SIZE = 1024  # the diffuse weight's lookup, texels over sqrt(NoV) in [0, 1]
+
+
+def principled(material):
+    """The importer's Principled BSDF of an untextured material (the scenes' materials), or None."""
     node = material.node_tree.nodes.get("Principled BSDF") if material.node_tree else None
     if node is None:
         return None
     if node.inputs["Base Color"].is_linked or node.inputs["Roughness"].is_linked:
         return None
-    if node.inputs["Roughness"].default_value < 1.0 or node.inputs["Metallic"].default_value > 0:
-        return None
     return node
+
+
+def is_lambert(node):
+    """Metallic 0 and roughness 1: the engine's MATERIAL_LAMBERT, no specular layer."""
+    return node.inputs["Roughness"].default_value >= 1.0 and node.inputs["Metallic"].default_value <= 0
+
+
+def gloss_from_roughness(roughness):
+    """shaders/material.glsl, gloss_fromRoughness."""
+    r4 = max(roughness ** 4, 1e-12)
+    return min(max(math.log2(max(2.0 / r4 - 1.0, 1.0)) / 18.0, 0.0), 1.0)
+
+
+def env_brdf(sqrt_nov, gloss):
+    """The split-sum table's (scale, bias) at sqrt(NoV) and gloss: shaders/env_brdf_table.hpp's
+    bilinear, clamp-to-edge lookup of the numbers the runtime uploads."""
+    text = open(ENV_BRDF_TABLE).read()
+    values = [float(v) for v in re.findall(r"([-+0-9.eE]+)f", text)]
+    n = ENV_BRDF_TABLE_SIZE
+    table = np.array(values, dtype=np.float64).reshape(n, n, 2)  # [gloss row][sqrt(NoV)][2]
+    fx = np.clip(sqrt_nov * (n - 1), 0.0, n - 1)
+    fy = min(max(gloss * (n - 1), 0.0), n - 1)
+    x0 = np.minimum(fx.astype(int), n - 2)
+    y0 = min(int(fy), n - 2)
+    tx, ty = (fx - x0)[:, None], fy - y0
+    top = table[y0, x0] * (1 - tx) + table[y0, x0 + 1] * tx
+    bottom = table[y0 + 1, x0] * (1 - tx) + table[y0 + 1, x0 + 1] * tx
+    return top * (1 - ty) + bottom * ty
+
+
+def diffuse_weight_image(name, f0, gloss):
+    """The engine's diffuse weight, 1 - (f0 A + B) of the split-sum table at the view's NoV
+    (diffuseEnergyWeight, shaders/lighting.glsl), per channel, as a one-row float image over
+    sqrt(NoV): texel i at sqrt(NoV) = (i + 0.5) / size, read with linear interpolation."""
+    s = (np.arange(WEIGHT_TABLE_SIZE) + 0.5) / WEIGHT_TABLE_SIZE
+    nov = np.maximum(s * s, MIN_NOV)
+    ab = env_brdf(np.sqrt(nov), gloss)
+    weight = np.clip(1.0 - (np.outer(ab[:, 0], f0) + ab[:, 1:2]), 0.0, 1.0)
+    image = bpy.data.images.new(name, WEIGHT_TABLE_SIZE, 1, float_buffer=True)
+    image.colorspace_settings.name = "Non-Color"
+    rgba = np.ones((WEIGHT_TABLE_SIZE, 4))
+    rgba[:, :3] = weight
+    image.pixels[:] = rgba.ravel().tolist()
+    return image
+
+
+def layered(material, node):
+    """The engine's model of a metallic-roughness material (shaders/lighting.glsl,
+    surfaceReflectance): a Lambert layer of albedo base (1 - metallic), weighted by
+    1 - (f0 A + B) of the view's NoV, under a single-scattering GGX layer of alpha roughness^2
+    and f0 mix(0.04, base, metallic). The GGX layer is Cycles' Principled BSDF with a black base
+    (its diffuse off) or, for a metal, the base as its f0; where it differs from the engine's
+    (its Fresnel normalised from a dielectric's rather than Schlick's, its Smith masking
+    separable rather than height-correlated) is said in cycles-check.py."""
+    tree = material.node_tree
+    base = np.array(node.inputs["Base Color"].default_value[:3], dtype=np.float64)
+    metallic = node.inputs["Metallic"].default_value
+    roughness = node.inputs["Roughness"].default_value
+    f0 = DIELECTRIC_F0 * (1.0 - metallic) + base * metallic
+    albedo = base * (1.0 - metallic)
+    specular = tree.nodes.new("ShaderNodeBsdfPrincipled")
+    specular.distribution = "GGX"
+    specular.inputs["Roughness"].default_value = roughness
+    specular.inputs["Metallic"].default_value = 1.0 if metallic >= 1.0 else 0.0
+    if metallic >= 1.0:
+        specular.inputs["Base Color"].default_value = list(base) + [1.0]
+    else:
+        specular.inputs["Base Color"].default_value = (0.0, 0.0, 0.0, 1.0)
+        specular.inputs["Specular"].default_value = DIELECTRIC_F0 / 0.08  # f0 = 0.08 specular
+    specular.inputs["Specular Tint"].default_value = 0.0
+    specular.inputs["Sheen"].default_value = 0.0
+    specular.inputs["Clearcoat"].default_value = 0.0
+    if metallic >= 1.0:
+        return specular.outputs["BSDF"]
+    # sqrt(NoV) from Layer Weight's Facing, 1 - |N.I| at blend 0.5, into the weight's image.
+    facing = tree.nodes.new("ShaderNodeLayerWeight")
+    facing.inputs["Blend"].default_value = 0.5
+    nov = tree.nodes.new("ShaderNodeMath")
+    nov.operation = "SUBTRACT"
+    nov.inputs[0].default_value = 1.0
+    tree.links.new(facing.outputs["Facing"], nov.inputs[1])
+    root = tree.nodes.new("ShaderNodeMath")
+    root.operation = "SQRT"
+    tree.links.new(nov.outputs["Value"], root.inputs[0])
+    coordinate = tree.nodes.new("ShaderNodeCombineXYZ")
+    coordinate.inputs["Y"].default_value = 0.5
+    tree.links.new(root.outputs["Value"], coordinate.inputs["X"])
+    lookup = tree.nodes.new("ShaderNodeTexImage")
+    lookup.image = diffuse_weight_image(material.name + "-weight", f0,
+                                        gloss_from_roughness(roughness))
+    lookup.interpolation = "Linear"
+    lookup.extension = "EXTEND"
+    tree.links.new(coordinate.outputs["Vector"], lookup.inputs["Vector"])
+    colour = tree.nodes.new("ShaderNodeMixRGB")
+    colour.blend_type = "MULTIPLY"
+    colour.inputs["Fac"].default_value = 1.0
+    colour.inputs["Color1"].default_value = list(albedo) + [1.0]
+    tree.links.new(lookup.outputs["Color"], colour.inputs["Color2"])
+    diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Roughness"].default_value = 0.0  # Lambert
+    tree.links.new(colour.outputs["Color"], diffuse.inputs["Color"])
+    add = tree.nodes.new("ShaderNodeAddShader")
+    tree.links.new(diffuse.outputs["BSDF"], add.inputs[0])
+    tree.links.new(specular.outputs["BSDF"], add.inputs[1])
+    return add.outputs["Shader"]
 
 
 def render(gltf, camera, out, width, height, samples, sky, seed):
@@ -62,14 +179,17 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
             inner = outer * (1.0 - light.spot_blend)
             light.spot_blend = (math.cos(inner) - math.cos(outer)) / (1.0 - math.cos(outer))
     for material in bpy.data.materials:
-        node = lambert(material)
+        node = principled(material)
         if node is None:
             continue
         tree = material.node_tree
-        diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
-        diffuse.inputs["Color"].default_value = node.inputs["Base Color"].default_value
-        diffuse.inputs["Roughness"].default_value = 0.0  # Lambert
-        surface = diffuse.outputs["BSDF"]
+        if is_lambert(node):
+            diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
+            diffuse.inputs["Color"].default_value = node.inputs["Base Color"].default_value
+            diffuse.inputs["Roughness"].default_value = 0.0  # Lambert
+            surface = diffuse.outputs["BSDF"]
+        else:
+            surface = layered(material, node)
         strength = node.inputs["Emission Strength"].default_value
         colour = node.inputs["Emission"].default_value
         if strength > 0.0 and max(colour[:3]) > 0.0:
@@ -85,7 +205,7 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
             tree.links.new(emission.outputs["Emission"], front.inputs[1])
             tree.links.new(black.outputs["Emission"], front.inputs[2])
             add = tree.nodes.new("ShaderNodeAddShader")
-            tree.links.new(diffuse.outputs["BSDF"], add.inputs[0])
+            tree.links.new(surface, add.inputs[0])
             tree.links.new(front.outputs["Shader"], add.inputs[1])
             surface = add.outputs["Shader"]
         output = tree.nodes["Material Output"]
@@ -121,6 +241,108 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
     bpy.ops.render.render(write_still=True)
 
 
+def fresnel_dielectric(c, eta):
+    """Unpolarised Fresnel reflectance of a dielectric of relative index eta at cosine c."""
+    g = np.sqrt(np.maximum(eta * eta - 1.0 + c * c, 0.0))
+    a = (g - c) / (g + c)
+    b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0)
+    return 0.5 * a * a * (1.0 + b * b)
+
+
+def ggx_albedo(nov, alpha, f0, cycles, steps=256):
+    """The directional albedo of a GGX layer at each cosine in `nov`, by a midpoint quadrature
+    over the half vector sampled by D (steps^2 points): the engine's (Schlick's Fresnel,
+    height-correlated Smith; shaders/brdf.glsl) or, with `cycles`, Cycles 3.4 Principled's
+    (the Fresnel of a dielectric of f0's index, normalised to f0 at normal incidence:
+    interpolate_fresnel_color; separable Smith: bsdf_microfacet_ggx_eval_reflect)."""
+    u = (np.arange(steps) + 0.5) / steps
+    u1, u2 = np.meshgrid(u, u)
+    a2 = alpha * alpha
+    cos_h = np.sqrt((1.0 - u1) / (1.0 + (a2 - 1.0) * u1)).ravel()
+    sin_h = np.sqrt(1.0 - cos_h * cos_h)
+    phi = 2.0 * np.pi * u2.ravel()
+    eta = (1.0 + math.sqrt(f0)) / (1.0 - math.sqrt(f0))
+    albedo = []
+    for c in nov:
+        s = math.sqrt(max(1.0 - c * c, 0.0))
+        voh = sin_h * np.cos(phi) * s + cos_h * c  # v = (s, 0, c)
+        nol = 2.0 * voh * cos_h - c
+        ok = (nol > 0.0) & (voh > 0.0)
+        nol = np.where(ok, nol, 1.0)
+        lam = lambda x: np.sqrt(a2 + (1.0 - a2) * x * x)
+        if cycles:
+            fresnel = f0 + (1.0 - f0) * (fresnel_dielectric(voh, eta) - f0) / (1.0 - f0)
+            g = (2.0 * c / (c + lam(c))) * (2.0 * nol / (nol + lam(nol)))
+            weight = g * voh / (c * cos_h)  # f cos / pdf, pdf = D cos_h / (4 voh)
+        else:
+            fresnel = f0 + (1.0 - f0) * (1.0 - voh) ** 5
+            vis = 0.5 / (nol * lam(c) + c * lam(nol))
+            weight = vis * nol * 4.0 * voh / cos_h
+        albedo.append(float(np.where(ok, weight * fresnel, 0.0).mean()))
+    return np.array(albedo)
+
+
+def closed_form(gltf, camera, width, height, sky, out_engine, out_cycles):
+    """A glossy floor under a uniform sky alone (sky_floor_glossy), in closed form for the
+    engine's model and for Cycles': a pixel that sees the floor at cosine NoV is
+    sky (albedo w(NoV) + E(NoV)), w the engine's diffuse weight and E the GGX layer's albedo
+    (ggx_albedo), and sky elsewhere. Written as two EXRs of the camera's view."""
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    bpy.ops.import_scene.gltf(filepath=gltf, convert_lighting_mode="COMPAT")
+    scene = bpy.context.scene
+    scene.render.resolution_x, scene.render.resolution_y = width, height
+    cam = next(o for o in scene.objects if o.type == "CAMERA" and o.name == camera)
+    floors = [o for o in scene.objects if o.type == "MESH"]
+    if len(floors) != 1:
+        sys.exit(f"cycles-render: {gltf}: closed-form wants one floor, found {len(floors)} meshes")
+    floor = floors[0]
+    node = principled(floor.active_material)
+    corners = [floor.matrix_world @ v.co for v in floor.data.vertices]
+    if node is None or max(abs(c.z) for c in corners) > 1e-6:
+        sys.exit(f"cycles-render: {gltf}: closed-form wants one untextured floor at height 0")
+    x0, x1 = min(c.x for c in corners), max(c.x for c in corners)
+    y0, y1 = min(c.y for c in corners), max(c.y for c in corners)
+    base = np.array(node.inputs["Base Color"].default_value[:3])
+    roughness = node.inputs["Roughness"].default_value
+    gloss = gloss_from_roughness(roughness)
+    # Rays through a 4 x 4 grid in each pixel (the box filter both tracers use), from the
+    # camera's frame (camera space: -z ahead).
+    n = 4
+    frame = cam.data.view_frame(scene=scene)  # top right, bottom right, bottom left, top left
+    top_right, bottom_left = np.array(frame[0]), np.array(frame[2])
+    u = (np.arange(width * n) + 0.5) / (width * n)
+    v = (np.arange(height * n) + 0.5) / (height * n)  # from the top
+    local = np.zeros((height * n, width * n, 3))
+    local[..., 0] = bottom_left[0] + u[None, :] * (top_right[0] - bottom_left[0])
+    local[..., 1] = top_right[1] - v[:, None] * (top_right[1] - bottom_left[1])
+    local[..., 2] = top_right[2]
+    rotation = np.array(cam.matrix_world.to_3x3())
+    d = local @ rotation.T
+    d /= np.linalg.norm(d, axis=2, keepdims=True)
+    eye = np.array(cam.matrix_world.translation)
+    t = np.where(d[..., 2] < 0.0, -eye[2] / np.minimum(d[..., 2], -1e-12), -1.0)
+    hit = eye[None, None, :] + t[..., None] * d
+    on_floor = (t > 0.0) & (hit[..., 0] >= x0) & (hit[..., 0] <= x1) & (hit[..., 1] >= y0) & \
+        (hit[..., 1] <= y1)
+    nov = np.clip(-d[..., 2], MIN_NOV, 1.0)
+    grid = np.linspace(MIN_NOV, 1.0, 257)
+    ab = env_brdf(np.sqrt(nov.ravel()), gloss).reshape(nov.shape + (2,))
+    weight = np.clip(1.0 - (DIELECTRIC_F0 * ab[..., 0] + ab[..., 1]), 0.0, 1.0)
+    for out, cycles in ((out_engine, False), (out_cycles, True)):
+        specular = np.interp(nov, grid, ggx_albedo(grid, roughness ** 2, DIELECTRIC_F0, cycles))
+        radiance = sky * (base[None, None, :] * weight[..., None] + specular[..., None])
+        radiance = np.where(on_floor[..., None], radiance, sky)
+        radiance = radiance.reshape(height, n, width, n, 3).mean(axis=(1, 3))
+        image = bpy.data.images.new(os.path.basename(out), width, height, float_buffer=True)
+        rgba = np.ones((height, width, 4))
+        rgba[..., :3] = radiance
+        image.pixels[:] = rgba[::-1].ravel().tolist()  # Blender's rows from the bottom
+        settings = scene.render.image_settings
+        settings.file_format = "OPEN_EXR"
+        settings.color_depth = "32"
+        image.save_render(out, scene=scene)
+
+
 def luminance_blocks(path, block):
     image = bpy.data.images.load(path)
     width, height = image.size
@@ -150,10 +372,14 @@ def main():
     if argv and argv[0] == "render" and len(argv) == 9:
         render(argv[1], argv[2], argv[3], int(argv[4]), int(argv[5]), int(argv[6]),
                float(argv[7]), int(argv[8]))
+    elif argv and argv[0] == "closed-form" and len(argv) == 8:
+        closed_form(argv[1], argv[2], int(argv[3]), int(argv[4]), float(argv[5]), argv[6],
+                    argv[7])
     elif argv and argv[0] == "compare" and len(argv) == 5:
         compare(argv[1], argv[2], int(argv[3]), argv[4])
     else:
         sys.exit("cycles-render: usage: render GLTF CAMERA OUT WIDTH HEIGHT SAMPLES SKY SEED | "
+                 "closed-form GLTF CAMERA WIDTH HEIGHT SKY ENGINE.exr CYCLES.exr | "
                  "compare A.exr B.exr BLOCK OUT.json")
 
 
