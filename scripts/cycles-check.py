@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The engine's reference path tracer against an outside one, Blender's Cycles (Debian `blender`),
-on scenes where the two models agree: Lambert surfaces, punctual lights, a uniform sky, and
-the engine's glossy layer (below: where Cycles' differs, and by how much).
+on scenes where the two models agree: Lambert surfaces (textured, alpha-tested), punctual
+lights, a uniform sky, and the engine's glossy layer (below: where Cycles' differs, and by how
+much).
 
   scripts/cycles-check.py [--bin build/bin] [--work DIR] [--size WxH] [--spp N] [--cycles N]
 
@@ -18,7 +19,9 @@ with watts for lumens, and a world of strength L is a sky of L cd/m^2. The light
 engine's sizes (a 5 cm sphere, a sun 0.27 degrees in radius). A Lambert material is given
 Cycles' Diffuse BSDF at roughness 0 (its Principled BSDF's diffuse is not Lambert).
 
-How the materials map. A glossy material (roughness under 1, or metallic) is the engine's model
+How the materials map. A Lambert material's base colour texture and its alpha test (MASK) are
+wired to a Diffuse BSDF and a Transparent BSDF where the alpha is under the cutoff. An untextured
+glossy material (roughness under 1, or metallic) is the engine's model
 (shaders/lighting.glsl, surfaceReflectance): a Lambert layer of albedo base (1 - metallic),
 weighted by the engine's 1 - (f0 A + B) at the view's NoV (its split-sum table, read by a node
 from Layer Weight's Facing), beside a GGX layer of alpha roughness^2 and f0 mix(0.04, base,
@@ -47,6 +50,10 @@ The scenes:
               (metal, 0.3).
   glossy_room the closed room under the panel and a 150 cd lamp: a near-mirror floor (0.3,
               roughness 0.1), semi-glossy walls (0.6, 0.5), a copper block (metal, 0.45).
+  textured_room  the closed room under the panel, textured: a checker floor, a striped wall and
+              an alpha-tested grate (Lambert, sRGB base colour textures, trilinear, repeating):
+              Cycles reads a texture at the ray's hit with linear filtering and no mips, the
+              engine at its ray cone's level of detail.
   spot_room   the same closed room lit by a 2000 cd spot (cone 0.3 to 0.6 rad) aimed at the
               floor: where the models differ, the cone's edge (glTF's falloff, smooth in the
               cosine, against Blender's blend), run by --scenes spot_room.
@@ -84,7 +91,8 @@ def main():
     p.add_argument("--size", default="320x180")
     p.add_argument("--spp", type=int, default=1024, help="the engine reference's paths a pixel")
     p.add_argument("--cycles", type=int, default=1024, help="Cycles' samples a pixel")
-    p.add_argument("--scenes", default="sky_floor,roof_room,lamp_room,sky_floor_glossy,roof_room_glossy,glossy_room")
+    p.add_argument("--scenes", default="sky_floor,roof_room,lamp_room,sky_floor_glossy,"
+                   "roof_room_glossy,glossy_room,textured_room")
     args = p.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
     work = args.work or tempfile.mkdtemp(prefix="onelight-cycles-")

@@ -4,8 +4,9 @@ scripts/cycles-check.py, which says why and how the units map.
   render GLTF CAMERA OUT.exr WIDTH HEIGHT SAMPLES SKY_CD_PER_M2 SEED
       imports the glTF with its lights in glTF's own units ('COMPAT': lux and candela read as
       W/m^2 and W/sr, so that Cycles' radiance is the engine's cd/m^2), gives every Lambert
-      material (roughness 1, metallic 0, no texture: the engine's MATERIAL_LAMBERT) a plain
-      Diffuse BSDF, the lights the engine's sizes, a uniform world of SKY, and renders the
+      material (roughness 1, metallic 0: the engine's MATERIAL_LAMBERT) a Diffuse BSDF of its
+      base colour or texture, cut out by its alpha under a MASK cutoff, every untextured glossy
+      one the engine's layers (layered), the lights the engine's sizes, a uniform world of SKY, and renders the
       camera's view with Cycles: no clamping, no denoising, a box pixel filter, 64 bounces.
   closed-form GLTF CAMERA WIDTH HEIGHT SKY ENGINE.exr CYCLES.exr
       a glossy floor under a uniform sky alone in closed form, for the engine's GGX layer and for
@@ -43,13 +44,39 @@ WEIGHT_TABLE_SIZE = 1024  # the diffuse weight's lookup, texels over sqrt(NoV) i
 
 
 def principled(material):
-    """The importer's Principled BSDF of an untextured material (the scenes' materials), or None."""
+    """The importer's Principled BSDF of a material without a metallic-roughness texture (the
+    scenes' materials), or None."""
     node = material.node_tree.nodes.get("Principled BSDF") if material.node_tree else None
-    if node is None:
-        return None
-    if node.inputs["Base Color"].is_linked or node.inputs["Roughness"].is_linked:
+    if node is None or node.inputs["Roughness"].is_linked or node.inputs["Metallic"].is_linked:
         return None
     return node
+
+
+def linked_or_value(tree, socket, target):
+    """Gives `target` what feeds `socket`: its link's source, else its value."""
+    if socket.is_linked:
+        tree.links.new(socket.links[0].from_socket, target)
+    else:
+        target.default_value = socket.default_value
+
+
+def alpha_tested(material, node, surface):
+    """`surface` cut out where the base colour's alpha is under the material's cutoff (glTF's
+    MASK, which the importer marks blend mode CLIP): the engine's alpha test, a Transparent BSDF
+    there. The importer links the alpha to Principled's Alpha, which Cycles would blend."""
+    if not node.inputs["Alpha"].is_linked or material.blend_method != "CLIP":
+        return surface
+    tree = material.node_tree
+    kept = tree.nodes.new("ShaderNodeMath")
+    kept.operation = "GREATER_THAN"
+    tree.links.new(node.inputs["Alpha"].links[0].from_socket, kept.inputs[0])
+    kept.inputs[1].default_value = material.alpha_threshold
+    transparent = tree.nodes.new("ShaderNodeBsdfTransparent")
+    mix = tree.nodes.new("ShaderNodeMixShader")
+    tree.links.new(kept.outputs["Value"], mix.inputs["Fac"])
+    tree.links.new(transparent.outputs["BSDF"], mix.inputs[1])
+    tree.links.new(surface, mix.inputs[2])
+    return mix.outputs["Shader"]
 
 
 def is_lambert(node):
@@ -184,10 +211,13 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
             continue
         tree = material.node_tree
         if is_lambert(node):
+            # The base colour texture (sRGB, times its factor, as the importer wired it) or value.
             diffuse = tree.nodes.new("ShaderNodeBsdfDiffuse")
-            diffuse.inputs["Color"].default_value = node.inputs["Base Color"].default_value
+            linked_or_value(tree, node.inputs["Base Color"], diffuse.inputs["Color"])
             diffuse.inputs["Roughness"].default_value = 0.0  # Lambert
-            surface = diffuse.outputs["BSDF"]
+            surface = alpha_tested(material, node, diffuse.outputs["BSDF"])
+        elif node.inputs["Base Color"].is_linked:
+            continue  # a textured glossy material: not modelled here
         else:
             surface = layered(material, node)
         strength = node.inputs["Emission Strength"].default_value
