@@ -64,7 +64,7 @@ glm::vec4 bilinear(const BakeTexture& t, uint32_t level, glm::vec2 uv, bool near
 
 }  // namespace
 
-BakeTexture makeBakeTexture(const world::DecodedImage& image, bool srgb,
+BakeTexture makeBakeTexture(const world::DecodedImage& image, bool srgb, bool overCoverage,
                             const world::Sampler& sampler) {
     BakeTexture t;
     t.width = std::max(image.width, 1u);
@@ -89,7 +89,16 @@ BakeTexture makeBakeTexture(const world::DecodedImage& image, bool srgb,
         t.texels[i] = srgb ? glm::vec4(decode[p[0]], decode[p[1]], decode[p[2]], alpha)
                            : glm::vec4(float(p[0]), float(p[1]), float(p[2]), float(p[3])) / 255.0f;
     }
-    // Each mip texel: the mean of the 2x2 (or 2x1, 1x2) texels above it.
+    // Each mip texel: the mean of the 2x2 (or 2x1, 1x2) texels above it; with `overCoverage` the
+    // colour averaged over the coverage, sum(c a) / sum(a), where some but not all of them cover.
+    const auto mean = [overCoverage](glm::vec4 a, glm::vec4 b, glm::vec4 c, glm::vec4 d) {
+        const glm::vec4 plain = 0.25f * (a + b + c + d);
+        if (!overCoverage || plain.w >= 1.0f || plain.w <= 0.0f) return plain;
+        const glm::vec3 covered =
+            (glm::vec3(a) * a.w + glm::vec3(b) * b.w + glm::vec3(c) * c.w + glm::vec3(d) * d.w) /
+            (a.w + b.w + c.w + d.w);
+        return glm::vec4(covered, plain.w);
+    };
     for (uint32_t m = 1; m < levels; ++m) {
         const uint32_t pw = std::max(t.width >> (m - 1), 1u),
                        ph = std::max(t.height >> (m - 1), 1u);
@@ -100,9 +109,8 @@ BakeTexture makeBakeTexture(const world::DecodedImage& image, bool srgb,
             for (uint32_t x = 0; x < w; ++x) {
                 const uint32_t x0 = std::min(2 * x, pw - 1), x1 = std::min(2 * x + 1, pw - 1);
                 const uint32_t y0 = std::min(2 * y, ph - 1), y1 = std::min(2 * y + 1, ph - 1);
-                dst[size_t(y) * w + x] =
-                    0.25f * (src[size_t(y0) * pw + x0] + src[size_t(y0) * pw + x1] +
-                             src[size_t(y1) * pw + x0] + src[size_t(y1) * pw + x1]);
+                dst[size_t(y) * w + x] = mean(src[size_t(y0) * pw + x0], src[size_t(y0) * pw + x1],
+                                              src[size_t(y1) * pw + x0], src[size_t(y1) * pw + x1]);
             }
     }
     return t;

@@ -1,8 +1,9 @@
 // The level's material textures for the baker, sampled at ray hits as the runtime's GPU samples
 // them: decoded once (world/images), sRGB-decoded where the runtime's image is an _SRGB format
-// (base colour and emissive), a 2x2 box-filtered mip chain in linear values (what the runtime's
-// linear blit makes), the glTF sampler's wrap modes, and bilinear filtering between the two mips
-// around a level of detail that comes from the ray's footprint (bake/materials/ray_cone.hpp).
+// (base colour and emissive), a 2x2 box-filtered mip chain in linear values (a MASK or BLEND base
+// colour's averaged over its alpha's coverage, as the texture stage's mips), the glTF sampler's
+// wrap modes, and bilinear filtering between the two mips around a level of detail that comes from
+// the ray's footprint (bake/materials/ray_cone.hpp).
 //
 // Layout: each mip is a row-major array of float RGBA texels (16 bytes, one cache line holds a
 // 2x2 bilinear footprint's row pair in most cases), the mips of a texture contiguous in one
@@ -30,9 +31,11 @@ struct BakeTexture {
     bool magNearest = false;                // glTF magFilter NEAREST
 };
 
-/// The texture of `image` as sampled through `sampler`, sRGB-decoded when `srgb`.
+/// The texture of `image` as sampled through `sampler`, sRGB-decoded when `srgb`; its mips' colour
+/// averaged over the alpha's coverage when `overCoverage` (a MASK or BLEND material's base
+/// colour: the texture stage's plainTexture, bake/textures/texture_stage.cpp).
 [[nodiscard]] BakeTexture makeBakeTexture(const world::DecodedImage& image, bool srgb,
-                                          const world::Sampler& sampler);
+                                          bool overCoverage, const world::Sampler& sampler);
 
 /// A texture the texture stage made (bake/textures), its mips as stored: what the runtime uploads,
 /// in float (sRGB-decoded for kRgba8Srgb; an R8 texel reads (r, 0, 0, 1) as on the GPU). Empty

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "world/error.hpp"
@@ -19,8 +20,9 @@ SceneMaterials factorMaterials(std::vector<world::Material> materials,
 
 SceneMaterials loadSceneMaterials(const world::SourceLevel& level) {
     SceneMaterials out = factorMaterials(level.materials, level.diffuseModel);
-    std::map<uint32_t, world::DecodedImage> decoded;     // by image index
-    std::map<std::pair<uint32_t, bool>, uint32_t> made;  // (texture, sRGB) -> textures
+    std::map<uint32_t, world::DecodedImage> decoded;  // by image index
+    // (texture, sRGB, averaged over its coverage) -> textures
+    std::map<std::tuple<uint32_t, bool, bool>, uint32_t> made;
     // Each decoded image becomes float RGBA texels with their mips (16 * 4 / 3 bytes a texel),
     // once per colour space it is read in; charged before it is decoded.
     world::ImageMemoryBudget budget{16.0 * 4.0 / 3.0 + 4.0};
@@ -37,21 +39,23 @@ SceneMaterials loadSceneMaterials(const world::SourceLevel& level) {
                                      &budget);
         return decoded.emplace(index, std::move(pixels)).first->second;
     };
-    auto texture = [&](uint32_t index, bool srgb) -> uint32_t {
+    auto texture = [&](uint32_t index, bool srgb, bool overCoverage = false) -> uint32_t {
         if (index == world::kNoIndex || index >= level.textures.size()) return world::kNoIndex;
         const world::Texture& t = level.textures[index];
         if (t.image == world::kNoIndex || t.image >= level.images.size()) return world::kNoIndex;
-        auto found = made.find({index, srgb});
+        const auto key = std::make_tuple(index, srgb, overCoverage);
+        auto found = made.find(key);
         if (found != made.end()) return found->second;
-        out.textures.push_back(makeBakeTexture(image(t.image), srgb, t.sampler));
+        out.textures.push_back(makeBakeTexture(image(t.image), srgb, overCoverage, t.sampler));
         const uint32_t slot = uint32_t(out.textures.size() - 1);
-        made[{index, srgb}] = slot;
+        made[key] = slot;
         return slot;
     };
     for (size_t m = 0; m < out.materials.size(); ++m) {
         const world::Material& material = out.materials[m];
         MaterialTextureSet& set = out.textureSets[m];
-        set.baseColor = texture(material.baseColorTexture, true);
+        set.baseColor = texture(material.baseColorTexture, true,
+                                material.alphaMode != world::AlphaMode::kOpaque);
         set.metallicRoughness = texture(material.metallicRoughnessTexture, false);
         set.normal = texture(material.normalTexture, false);
         set.occlusion = texture(material.occlusionTexture, false);

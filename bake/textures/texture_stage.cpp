@@ -121,8 +121,13 @@ void footprintMeans(int width, int height, const Load& load, const Emit& emit) {
 }
 
 // A plain texture: mip 0 the image, further mips footprint means, in linear light for an sRGB
-// texture's colour, in byte values for a linear texture's and for alpha.
-world::ProcessedTexture plainTexture(const world::DecodedImage& image, bool srgb,
+// texture's colour, in byte values for a linear texture's and for alpha. A base colour whose
+// alpha is its coverage (`overCoverage`: a MASK or BLEND material's; an OPAQUE material ignores
+// its alpha, which a Quake 3 texture may use for something else) is averaged over what covers the
+// footprint, sum(c a) / sum(a), as premultiplied alpha filters, and plainly only where nothing or
+// everything covers it. A plain mean would darken a cut-out grate's bars with its holes' (black)
+// colour wherever a mip reaches over both, and tint whatever an alpha-blended edge fades out.
+world::ProcessedTexture plainTexture(const world::DecodedImage& image, bool srgb, bool overCoverage,
                                      const world::Sampler& sampler, std::string name) {
     const world::TexelFormat format =
         srgb ? world::TexelFormat::kRgba8Srgb : world::TexelFormat::kRgba8Unorm;
@@ -134,18 +139,42 @@ world::ProcessedTexture plainTexture(const world::DecodedImage& image, bool srgb
     for (int b = 0; b < 256; ++b)
         colour[size_t(b)] = srgb ? double(glsl::srgbDecode(float(b) / 255.0f)) : double(b);
     const uint8_t* rgba = image.rgba.data();
-    footprintMeans<4>(
+    const auto store = [&](int level, size_t i, const double* rgb, double alpha) {
+        uint8_t* t = out.texels.data() + offsets[size_t(level)] + 4 * i;
+        for (int c = 0; c < 3; ++c)
+            t[c] = srgb ? unorm8(double(glsl::srgbEncode(float(rgb[c])))) : nearestByte(rgb[c]);
+        t[3] = nearestByte(alpha);
+    };
+    if (!overCoverage) {
+        footprintMeans<4>(
+            int(image.width), int(image.height),
+            [&](size_t i, double* v) {
+                for (int c = 0; c < 3; ++c) v[c] = colour[rgba[4 * i + size_t(c)]];
+                v[3] = double(rgba[4 * i + 3]);
+            },
+            [&](int level, size_t i, const double* mean) { store(level, i, mean, mean[3]); });
+        return out;
+    }
+    // Per texel: the colour times the alpha byte, the alpha byte, the colour.
+    footprintMeans<7>(
         int(image.width), int(image.height),
         [&](size_t i, double* v) {
-            for (int c = 0; c < 3; ++c) v[c] = colour[rgba[4 * i + size_t(c)]];
-            v[3] = double(rgba[4 * i + 3]);
+            const double a = double(rgba[4 * i + 3]);
+            for (int c = 0; c < 3; ++c) {
+                v[4 + c] = colour[rgba[4 * i + size_t(c)]];
+                v[c] = v[4 + c] * a;
+            }
+            v[3] = a;
         },
         [&](int level, size_t i, const double* mean) {
-            uint8_t* t = out.texels.data() + offsets[size_t(level)] + 4 * i;
-            for (int c = 0; c < 3; ++c)
-                t[c] =
-                    srgb ? unorm8(double(glsl::srgbEncode(float(mean[c])))) : nearestByte(mean[c]);
-            t[3] = nearestByte(mean[3]);
+            // Wholly opaque (every alpha 255) or wholly clear: the plain mean, exactly as before.
+            const double a = mean[3];
+            if (a >= 255.0 || a <= 0.0) {
+                store(level, i, mean + 4, a);
+                return;
+            }
+            const double rgb[3] = {mean[0] / a, mean[1] / a, mean[2] / a};
+            store(level, i, rgb, a);
         });
     return out;
 }
@@ -229,7 +258,8 @@ struct Stage {
     world::GlossMipMethod method;
     world::ImageMemoryBudget budget;
     world::ProcessedTextures out;
-    std::map<std::pair<uint32_t, bool>, uint32_t> plainMade;  // (texture, sRGB) -> out texture
+    // (texture, sRGB, averaged over its coverage) -> out texture
+    std::map<std::tuple<uint32_t, bool, bool>, uint32_t> plainMade;
     // (normal texture, scale, metallic-roughness texture, roughness, metallic, packed occlusion,
     // Lambert) -> the pair's first texture (normal; metallic-roughness follows)
     std::map<std::tuple<uint32_t, float, uint32_t, float, float, bool, bool>, uint32_t> pairMade;
@@ -265,18 +295,20 @@ const world::Texture* slotTexture(const world::SourceLevel& level, uint32_t mate
     return &texture;
 }
 
-uint32_t plainSlot(Stage& stage, uint32_t material, uint32_t index, bool srgb, const char* slot,
-                   const char* use) {
+// `overCoverage`: the slot is a base colour whose alpha is coverage (plainTexture).
+uint32_t plainSlot(Stage& stage, uint32_t material, uint32_t index, bool srgb, bool overCoverage,
+                   const char* slot, const char* use) {
     const world::Texture* texture = slotTexture(stage.level, material, index, slot);
     if (!texture) return world::kNoIndex;
-    const auto found = stage.plainMade.find({index, srgb});
+    const auto key = std::make_tuple(index, srgb, overCoverage);
+    const auto found = stage.plainMade.find(key);
     if (found != stage.plainMade.end()) return found->second;
     const uint64_t usedBefore = stage.budget.usedBytes;
     world::ProcessedTexture made = plainTexture(
         decodeLevelImage(stage.level, texture->image, kPlainTextureBytesPerTexel, stage.budget),
-        srgb, texture->sampler, imageLabel(stage.level, texture->image) + " " + use);
+        srgb, overCoverage, texture->sampler, imageLabel(stage.level, texture->image) + " " + use);
     keepOnly(stage.budget, usedBefore, made.texels.size());
-    return stage.plainMade[{index, srgb}] = add(stage, std::move(made));
+    return stage.plainMade[key] = add(stage, std::move(made));
 }
 
 // Level 0 of a normal and metallic-roughness pair on the normal map's grid: the normals and
@@ -459,8 +491,9 @@ world::ProcessedTextures processLevelTextures(const world::SourceLevel& level,
     for (uint32_t m = 0; m < uint32_t(level.materials.size()); ++m) {
         const world::Material& material = level.materials[m];
         world::MaterialTextureSlots& slots = stage.out.materials[m];
-        slots.baseColor =
-            plainSlot(stage, m, material.baseColorTexture, true, "baseColorTexture", "base colour");
+        slots.baseColor = plainSlot(stage, m, material.baseColorTexture, true,
+                                    material.alphaMode != world::AlphaMode::kOpaque,
+                                    "baseColorTexture", "base colour");
         const world::Texture* normal =
             slotTexture(level, m, material.normalTexture, "normalTexture");
         if (normal) {
@@ -487,14 +520,15 @@ world::ProcessedTextures processLevelTextures(const world::SourceLevel& level,
             slots.slopeKurtosisInNormalAlpha = true;
             if (in.packedOcclusion) slots.occlusion = pair.metallicRoughness;
         } else {
-            slots.metallicRoughness = plainSlot(stage, m, material.metallicRoughnessTexture, false,
-                                                "metallicRoughnessTexture", "metallic-roughness");
+            slots.metallicRoughness =
+                plainSlot(stage, m, material.metallicRoughnessTexture, false, false,
+                          "metallicRoughnessTexture", "metallic-roughness");
         }
         if (slots.occlusion == world::kNoIndex)
-            slots.occlusion = plainSlot(stage, m, material.occlusionTexture, false,
+            slots.occlusion = plainSlot(stage, m, material.occlusionTexture, false, false,
                                         "occlusionTexture", "occlusion");
-        slots.emissive =
-            plainSlot(stage, m, material.emissiveTexture, true, "emissiveTexture", "emissive");
+        slots.emissive = plainSlot(stage, m, material.emissiveTexture, true, false,
+                                   "emissiveTexture", "emissive");
     }
     return std::move(stage.out);
 }

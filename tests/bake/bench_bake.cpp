@@ -618,7 +618,8 @@ void materials(const BenchOptions& o) {
         if (m.baseColorTexture != world::kNoIndex) {
             const world::Texture& t = textured.textures[m.baseColorTexture];
             const glm::vec4 mean =
-                makeBakeTexture(world::readImageFile(textured.images[t.image].uri), true, t.sampler)
+                makeBakeTexture(world::readImageFile(textured.images[t.image].uri), true, false,
+                                t.sampler)
                     .texels.back();
             m.baseColor *= glm::vec4(glm::vec3(mean), 1.0f);
             m.albedo *= glm::vec3(mean);

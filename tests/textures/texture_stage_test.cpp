@@ -215,6 +215,57 @@ TEST(TextureStage, SrgbIsAveragedInLinearLight) {
     EXPECT_EQ(srgb[3], 255);
 }
 
+// A cut-out grate (bars of one colour, fully opaque; holes transparent black) on a MASK material:
+// every mip's colour is the bars', its alpha their coverage. A plain mean darkened the bars towards
+// the holes' black wherever a mip reached over both (to 44% of their linear colour at the coarsest
+// mips here), and with them the light a grate reflects: the reference's box behind the textured
+// room's grate read 14% under Cycles', which reads its texture without mips. Colour under no
+// coverage keeps the plain mean (black here). An OPAQUE material's texture, whose alpha glTF
+// ignores (and a Quake 3 texture may use for something else), and a linear texture keep plain
+// means.
+TEST(TextureStage, ACutOutColoursMipsAreTheColourOfWhatCoversThem) {
+    LevelBuilder b;
+    Rgba8 grate = uniformImage(64, 64, 0, 0, 0, 0);
+    int bars = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x)
+            if (x % 32 < 8 || y % 32 < 8) {
+                uint8_t* t = grate.at(x, y);
+                t[0] = 150, t[1] = 150, t[2] = 160, t[3] = 255;
+                ++bars;
+            }
+    const uint32_t t = b.texture(grate, "grate");
+    world::Material& cutOut = b.material("grate");
+    cutOut.baseColorTexture = t;
+    cutOut.occlusionTexture = t;
+    cutOut.alphaMode = world::AlphaMode::kMask;
+    b.material("opaque").baseColorTexture = t;
+    const ProcessedTextures out = bake::processLevelTextures(b.level, GlossMipMethod::kWwii);
+    const ProcessedTexture& colour = out.textures[out.materials[0].baseColor];
+    const ProcessedTexture& linear = out.textures[out.materials[0].occlusion];
+    const ProcessedTexture& opaque = out.textures[out.materials[1].baseColor];
+    for (uint32_t level = 1; level < colour.mipCount; ++level) {
+        const int size = bake::mipSize(64, int(level));
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const uint8_t* s = texelOf(colour, level, x, y);
+                if (s[3] == 0) {
+                    EXPECT_EQ(s[0], 0) << "level " << level;  // a footprint of holes only
+                    continue;
+                }
+                EXPECT_EQ(s[0], 150) << "level " << level << " texel " << x << "," << y;
+                EXPECT_EQ(s[1], 150);
+                EXPECT_EQ(s[2], 160);
+            }
+    }
+    const uint8_t* top = texelOf(colour, colour.mipCount - 1, 0, 0);
+    EXPECT_EQ(top[3], std::lround(255.0 * bars / (64.0 * 64.0)));  // 112: 43.75% covered
+    // The linear copy of the same image averages its bytes plainly: 150 x 0.4375 = 65.6; the
+    // opaque material's colour its linear light: 0.305 x 0.4375 = 0.133, sRGB 102.
+    EXPECT_EQ(texelOf(linear, linear.mipCount - 1, 0, 0)[0], 66);
+    EXPECT_EQ(texelOf(opaque, opaque.mipCount - 1, 0, 0)[0], 102);
+}
+
 TEST(TextureStage, ATextureIsMadeOncePerColourSpace) {
     LevelBuilder b;
     const uint32_t t = b.texture(randomImage(4, 4, 1), "shared");
