@@ -54,6 +54,13 @@ The scenes:
               an alpha-tested grate (Lambert, sRGB base colour textures, trilinear, repeating):
               Cycles reads a texture at the ray's hit with linear filtering and no mips, the
               engine at its ray cone's level of detail.
+  range_room  the same closed room lit by a 300 cd lamp of range 3 m (KHR_lights_punctual's
+              range window, which Blender's importer drops and cycles-render.py puts back as a
+              Light Falloff node), run by --scenes range_room.
+  q3:MAP:CAMERA  an installed Quake 3 map from one of its cameras (spawn0, ...): the engine
+              traces the map as it imports it, Cycles the glTF `onelight-bake export` writes of
+              it (static triangles, textures, lights, sky; items and movers left out, as the
+              engine's static reference leaves them out), e.g. --scenes q3:kaos:spawn0.
   spot_room   the same closed room lit by a 2000 cd spot (cone 0.3 to 0.6 rad) aimed at the
               floor: where the models differ, the cone's edge (glTF's falloff, smooth in the
               cosine, against Blender's blend), run by --scenes spot_room.
@@ -83,6 +90,25 @@ def blender(render, *args):
         sys.exit(f"cycles-check: blender {' '.join(args)} failed:\n{result.stderr[-2000:]}")
 
 
+def exported_level(bake, name, work):
+    """q3:MAP:CAMERA: the installed map MAP, which the engine traces as it imports it, and Cycles
+    as `onelight-bake export` writes it back (its static triangles, textures, lights with their
+    ranges, sky). Returns the level, the camera, the glTF and the sky as R,G,B."""
+    _, level, camera = name.split(":")
+    gltf = os.path.join(work, level + ".gltf")
+    subprocess.run([bake, "export", level, "-o", gltf], check=True, stdout=subprocess.DEVNULL)
+    with open(gltf) as f:
+        nodes = json.load(f)["nodes"]
+    sky = [0.0, 0.0, 0.0]
+    for node in nodes:
+        value = node.get("extras", {}).get("onelight", {}).get("sky")
+        if isinstance(value, list):
+            sky = value
+        elif isinstance(value, (int, float)):
+            sky = [value] * 3
+    return level, camera, gltf, ",".join(f"{v:.9g}" for v in sky)
+
+
 def main():
     here = os.path.dirname(os.path.abspath(__file__))
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
@@ -101,20 +127,24 @@ def main():
     render = os.path.join(here, "cycles-render.py")
     rows, closed_rows = [], []
     for name in args.scenes.split(","):
-        gltf = os.path.join(work, name + ".gltf")
-        sky = SCENES[name](gltf, width / height)
-        ours = os.path.join(work, name + "-onelight.exr")
-        subprocess.run([bake, "reference", gltf, "--camera", "view", "--spp", str(args.spp),
+        ours = os.path.join(work, name.replace(":", "-") + "-onelight.exr")
+        if name.startswith("q3:"):
+            level, camera, gltf, sky = exported_level(bake, name, work)
+        else:
+            level, camera = os.path.join(work, name + ".gltf"), "view"
+            gltf = level
+            sky = SCENES[name](gltf, width / height)
+        subprocess.run([bake, "reference", level, "--camera", camera, "--spp", str(args.spp),
                         "--size", args.size, "-o", ours], check=True, stdout=subprocess.DEVNULL)
         cycles = []
         for seed in (0, 1):
-            out = os.path.join(work, f"{name}-cycles{seed}.exr")
-            blender(render, "render", gltf, "view", out, str(width), str(height),
-                    str(args.cycles), str(sky), str(seed))
+            out = os.path.join(work, f"{name.replace(':', '-')}-cycles{seed}.exr")
+            blender(render, "render", gltf, camera, out, str(width), str(height),
+                    str(args.cycles), sky if isinstance(sky, str) else str(sky), str(seed))
             cycles.append(out)
         stats = []
         for a, b in ((ours, cycles[0]), (cycles[0], cycles[1])):
-            out = os.path.join(work, name + "-compare.json")
+            out = os.path.join(work, name.replace(":", "-") + "-compare.json")
             blender(render, "compare", a, b, "8", out)
             stats.append(json.load(open(out)))
         rows.append((name, stats[0], stats[1]))

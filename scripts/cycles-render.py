@@ -2,12 +2,15 @@
 scripts/cycles-check.py, which says why and how the units map.
 
   render GLTF CAMERA OUT.exr WIDTH HEIGHT SAMPLES SKY_CD_PER_M2 SEED
+      (SKY: one radiance, or R,G,B)
       imports the glTF with its lights in glTF's own units ('COMPAT': lux and candela read as
       W/m^2 and W/sr, so that Cycles' radiance is the engine's cd/m^2), gives every Lambert
       material (roughness 1, metallic 0: the engine's MATERIAL_LAMBERT) a Diffuse BSDF of its
       base colour or texture, cut out by its alpha under a MASK cutoff, every untextured glossy
-      one the engine's layers (layered), the lights the engine's sizes, a uniform world of SKY, and renders the
-      camera's view with Cycles: no clamping, no denoising, a box pixel filter, 64 bounces.
+      one the engine's layers (layered), the lights the engine's sizes and ranges (range_window),
+      a uniform world of SKY, materials with extras.onelight.casts_shadows false no shadow
+      (onelight-bake export's Quake 3 translucent surfaces), and renders the camera's view
+      with Cycles: no clamping, no denoising, a box pixel filter, 64 bounces.
   closed-form GLTF CAMERA WIDTH HEIGHT SKY ENGINE.exr CYCLES.exr
       a glossy floor under a uniform sky alone in closed form, for the engine's GGX layer and for
       Cycles' (closed_form): what each tracer should give where the two layers differ.
@@ -53,9 +56,14 @@ def principled(material):
 
 
 def linked_or_value(tree, socket, target):
-    """Gives `target` what feeds `socket`: its link's source, else its value."""
+    """Gives `target` what feeds `socket`: its link's source, else its value. Blender 3.4's
+    importer links an emissive texture times its factor from the Mix node's float result, which
+    is not the one its colour mode computes: the node's enabled output is taken."""
     if socket.is_linked:
-        tree.links.new(socket.links[0].from_socket, target)
+        source = socket.links[0].from_socket
+        if not source.enabled:
+            source = next(o for o in socket.links[0].from_node.outputs if o.enabled)
+        tree.links.new(source, target)
     else:
         target.default_value = socket.default_value
 
@@ -63,17 +71,27 @@ def linked_or_value(tree, socket, target):
 def alpha_tested(material, node, surface):
     """`surface` cut out where the base colour's alpha is under the material's cutoff (glTF's
     MASK, which the importer marks blend mode CLIP): the engine's alpha test, a Transparent BSDF
-    there. The importer links the alpha to Principled's Alpha, which Cycles would blend."""
-    if not node.inputs["Alpha"].is_linked or material.blend_method != "CLIP":
-        return surface
+    there; or, for BLEND, mixed with a Transparent BSDF by its alpha. The importer links the
+    alpha to Principled's Alpha, which Cycles would blend."""
+    alpha = node.inputs["Alpha"]
     tree = material.node_tree
-    kept = tree.nodes.new("ShaderNodeMath")
-    kept.operation = "GREATER_THAN"
-    tree.links.new(node.inputs["Alpha"].links[0].from_socket, kept.inputs[0])
-    kept.inputs[1].default_value = material.alpha_threshold
+    if material.blend_method == "BLEND" and (alpha.is_linked or alpha.default_value < 1.0):
+        # glTF's BLEND: the engine's reference passes a path through with probability 1 - alpha
+        # (bake/embree/bake_scene.cpp, alphaFilter), a mix of Transparent and the surface here.
+        kept = None
+    elif alpha.is_linked and material.blend_method == "CLIP":
+        kept = tree.nodes.new("ShaderNodeMath")
+        kept.operation = "GREATER_THAN"
+        tree.links.new(alpha.links[0].from_socket, kept.inputs[0])
+        kept.inputs[1].default_value = material.alpha_threshold
+    else:
+        return surface
     transparent = tree.nodes.new("ShaderNodeBsdfTransparent")
     mix = tree.nodes.new("ShaderNodeMixShader")
-    tree.links.new(kept.outputs["Value"], mix.inputs["Fac"])
+    if kept is not None:
+        tree.links.new(kept.outputs["Value"], mix.inputs["Fac"])
+    else:
+        linked_or_value(tree, alpha, mix.inputs["Fac"])
     tree.links.new(transparent.outputs["BSDF"], mix.inputs[1])
     tree.links.new(surface, mix.inputs[2])
     return mix.outputs["Shader"]
@@ -184,6 +202,35 @@ def layered(material, node):
     return add.outputs["Shader"]
 
 
+def range_window(light, reach):
+    """KHR_lights_punctual's range as the engine applies it (shaders/lighting.glsl,
+    rangeWindow: saturate(1 - (d / range)^4)^2), which Blender's importer drops: the light's
+    emission times the window of the distance d, which Cycles' Light Falloff node gives as its
+    Linear output at strength 1 (the ray's length)."""
+    light.use_nodes = True
+    tree = light.node_tree
+    emission = next(n for n in tree.nodes if n.type == "EMISSION")
+    falloff = tree.nodes.new("ShaderNodeLightFalloff")
+    falloff.inputs["Strength"].default_value = 1.0
+    falloff.inputs["Smooth"].default_value = 0.0
+
+    def math_node(operation, a, b, clamp=False):
+        node = tree.nodes.new("ShaderNodeMath")
+        node.operation = operation
+        node.use_clamp = clamp
+        for socket, value in ((node.inputs[0], a), (node.inputs[1], b)):
+            if isinstance(value, float):
+                socket.default_value = value
+            else:
+                tree.links.new(value, socket)
+        return node.outputs[0]
+
+    ratio = math_node("DIVIDE", falloff.outputs["Linear"], float(reach))
+    fourth = math_node("POWER", ratio, 4.0)
+    window = math_node("POWER", math_node("SUBTRACT", 1.0, fourth, clamp=True), 2.0)
+    tree.links.new(window, emission.inputs["Strength"])
+
+
 def render(gltf, camera, out, width, height, samples, sky, seed):
     bpy.ops.wm.read_factory_settings(use_empty=True)
     bpy.ops.import_scene.gltf(filepath=gltf, convert_lighting_mode="COMPAT")
@@ -205,6 +252,17 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
             outer = 0.5 * light.spot_size
             inner = outer * (1.0 - light.spot_blend)
             light.spot_blend = (math.cos(inner) - math.cos(outer)) / (1.0 - math.cos(outer))
+    with open(gltf) as f:
+        document = json.load(f)
+    for source in document.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", []):
+        if source.get("range", 0.0) > 0.0 and source.get("name") in bpy.data.lights:
+            range_window(bpy.data.lights[source["name"]], source["range"])
+    shadowless = {m.get("name") for m in document.get("materials", [])
+                  if m.get("extras", {}).get("onelight", {}).get("casts_shadows") is False}
+    for o in scene.objects:
+        if o.type == "MESH" and any(s.material and s.material.name in shadowless
+                                    for s in o.material_slots):
+            o.visible_shadow = False  # a Quake 3 translucent surface: light passes it
     for material in bpy.data.materials:
         node = principled(material)
         if node is None:
@@ -221,11 +279,12 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
         else:
             surface = layered(material, node)
         strength = node.inputs["Emission Strength"].default_value
-        colour = node.inputs["Emission"].default_value
-        if strength > 0.0 and max(colour[:3]) > 0.0:
-            # Emission from the front face only, as the engine's single-sided emitters.
+        colour = node.inputs["Emission"]
+        if strength > 0.0 and (colour.is_linked or max(colour.default_value[:3]) > 0.0):
+            # Emission from the front face only, as the engine's single-sided emitters; its
+            # colour the importer's (an emissive texture times its factor) or value.
             emission = tree.nodes.new("ShaderNodeEmission")
-            emission.inputs["Color"].default_value = colour
+            linked_or_value(tree, colour, emission.inputs["Color"])
             emission.inputs["Strength"].default_value = strength
             geometry = tree.nodes.new("ShaderNodeNewGeometry")
             black = tree.nodes.new("ShaderNodeEmission")
@@ -243,8 +302,8 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
     world = bpy.data.worlds.new("sky")
     world.use_nodes = True
     background = world.node_tree.nodes["Background"]
-    background.inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
-    background.inputs["Strength"].default_value = sky
+    background.inputs["Color"].default_value = (sky[0], sky[1], sky[2], 1.0)
+    background.inputs["Strength"].default_value = 1.0
     scene.world = world
     scene.render.engine = "CYCLES"
     cycles = scene.cycles
@@ -400,8 +459,9 @@ def compare(a_path, b_path, block, out):
 def main():
     argv = sys.argv[sys.argv.index("--") + 1:]
     if argv and argv[0] == "render" and len(argv) == 9:
+        sky = [float(x) for x in argv[7].split(",")]
         render(argv[1], argv[2], argv[3], int(argv[4]), int(argv[5]), int(argv[6]),
-               float(argv[7]), int(argv[8]))
+               sky * 3 if len(sky) == 1 else sky, int(argv[8]))
     elif argv and argv[0] == "closed-form" and len(argv) == 8:
         closed_form(argv[1], argv[2], int(argv[3]), int(argv[4]), float(argv[5]), argv[6],
                     argv[7])

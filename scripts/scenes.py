@@ -329,6 +329,18 @@ def spot_room(path, aspect):
     return 0.0
 
 
+def range_room(path, aspect):
+    """The closed room lit by a 300 cd lamp whose range, 3 m, ends its light inside the room
+    (KHR_lights_punctual's range window, which the engine applies and Blender's importer
+    drops): the far walls lit by bounces only."""
+    g = closed_room()
+    g.light("lamp", {"type": "point", "intensity": 300.0, "color": [1, 1, 1], "range": 3.0},
+            [1.2, 1.8, 0.5])
+    g.camera("view", CORNER, [0.6, 0.6, -0.3], aspect)
+    g.write(path, 0.0)
+    return 0.0
+
+
 def image(size, colour):
     """A size x size RGBA PNG, colour(x, y) -> (r, g, b, a) in 0..255 for each pixel."""
     return png(size, size, [[colour(x, y) for x in range(size)] for y in range(size)])
@@ -487,7 +499,7 @@ roof_room_glossy_per_normal = roof_room_glossy
 
 # The scenes by name, for the scripts' --scenes.
 SCENES = {"sky_floor": sky_floor, "sky_floor_glossy": sky_floor_glossy, "roof_room": roof_room, "lamp_room": lamp_room,
-          "spot_room": spot_room, "roof_room_glossy": roof_room_glossy,
+          "spot_room": spot_room, "range_room": range_room, "roof_room_glossy": roof_room_glossy,
           "glossy_room": glossy_room, "textured_room": textured_room,
           "normal_floor": normal_floor, "normal_floor_sky": normal_floor_sky,
           "normal_floor_sun": normal_floor_sun, "flat_floor": flat_floor,

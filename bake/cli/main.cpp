@@ -20,6 +20,7 @@ constexpr Subcommand kSubcommands[] = {
     {"compile", &onelight::bake::runCompileCommand, &onelight::bake::compileUsage},
     {"reference", &onelight::bake::runReferenceCommand, &onelight::bake::referenceUsage},
     {"merge", &onelight::bake::runMergeCommand, &onelight::bake::mergeUsage},
+    {"export", &onelight::bake::runExportCommand, &onelight::bake::exportUsage},
     {"slurm-task", &onelight::bake::runSlurmTaskCommand, &onelight::bake::slurmTaskUsage},
 };
 

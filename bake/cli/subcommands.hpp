@@ -11,6 +11,7 @@ namespace onelight::bake {
 [[nodiscard]] int runBakeCommand(const std::vector<std::string>& arguments);       // LEVEL -o ...
 [[nodiscard]] int runReferenceCommand(const std::vector<std::string>& arguments);  // reference ...
 [[nodiscard]] int runMergeCommand(const std::vector<std::string>& arguments);      // merge ...
+[[nodiscard]] int runExportCommand(const std::vector<std::string>& arguments);     // export ...
 // LEVEL -o OUT --slurm N ...: the bake of `plan` (its slurm part set) as a Slurm job array of
 // shards and a merge job; the command line's plan made by runBakeCommand.
 struct BakePlan;
@@ -23,6 +24,7 @@ struct BakePlan;
 [[nodiscard]] std::string compileUsage();
 [[nodiscard]] std::string referenceUsage();
 [[nodiscard]] std::string mergeUsage();
+[[nodiscard]] std::string exportUsage();
 [[nodiscard]] std::string slurmTaskUsage();
 
 }  // namespace onelight::bake

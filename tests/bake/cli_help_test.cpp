@@ -49,7 +49,7 @@ TEST(BakeCommandLine, HelpExitsZeroAndListsEveryOptionWithItsDefault) {
 }
 
 TEST(BakeCommandLine, EverySubcommandTakesHelp) {
-    for (const std::string command : {"compile", "reference", "merge", "level.gltf"}) {
+    for (const std::string command : {"compile", "reference", "merge", "export", "level.gltf"}) {
         const onelight::test::CommandResult r =
             onelight::test::runCommand(kBake + " " + command + " --help");
         EXPECT_EQ(r.exitCode, 0) << command << ": " << r.output;
@@ -90,6 +90,9 @@ TEST(BakeCommandLine, BadValuesAreRefusedNamingTheOption) {
              {"compile no_such.gltf --atlas-size 100.5",
               "--atlas-size '100.5': expected an integer"},
              {"merge -o out.olpak", "no part given"},
+             {"export no_such.gltf", "-o PATH is required"},
+             {"export no_such.gltf -o out.olpak",
+              "-o 'out.olpak': expected a path ending in .gltf"},
              {"slurm-task --work /nonexistent --shard 1 --merge",
               "expected one of --shard I and --merge"},
              {"slurm-task --work /nonexistent --shard -1", "--shard '-1': expected an integer"}}) {

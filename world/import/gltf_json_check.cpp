@@ -243,18 +243,21 @@ private:
             static const char* const kKeys[] = {
                 "role",     "dynamic",          "spawn",         "probe", "mover",   "grid",
                 "exposure", "texels_per_metre", "probe_spacing", "sky",   "diffuse", "gloss_mips",
-                "prop"};
+                "prop",     "casts_shadows"};
             for (const auto& [key, value] : e["onelight"].items()) {
                 bool known = false;
                 for (const char* k : kKeys) known |= key == k;
                 if (!known)
                     fail(at + ".extras.onelight." + clipForMessage(key),
                          "is not a setting; expected role, dynamic, spawn, probe, mover, grid, "
-                         "exposure, texels_per_metre, probe_spacing, sky, diffuse, gloss_mips or "
-                         "prop");
+                         "exposure, texels_per_metre, probe_spacing, sky, diffuse, gloss_mips, "
+                         "prop or casts_shadows");
                 if (value.is_null())
                     fail(at + ".extras.onelight." + key,
                          "is null; expected a value (leave the setting out for its default)");
+                if (key == "casts_shadows" && !value.is_boolean())
+                    fail(at + ".extras.onelight.casts_shadows",
+                         "is " + typeName(value) + "; expected true or false");
             }
         }
     }

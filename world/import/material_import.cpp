@@ -80,6 +80,13 @@ Material convertMaterial(const tinygltf::Material& source,
     m.emissiveTexture = useTexture(source.emissiveTexture.index);
     m.normalScale = finiteOr(source.normalTexture.scale, 1.0f);
     m.occlusionStrength = clamp01(finiteOr(source.occlusionTexture.strength, 1.0f));
+    // extras.onelight.casts_shadows false: drawn, but light passes it (a Quake 3 translucent
+    // surface written back by onelight-bake export; compiled_level.hpp, Material::castsShadows).
+    if (source.extras.IsObject() && source.extras.Has("onelight")) {
+        const tinygltf::Value& o = source.extras.Get("onelight");
+        if (o.IsObject() && o.Has("casts_shadows") && o.Get("casts_shadows").IsBool())
+            m.castsShadows = o.Get("casts_shadows").Get<bool>();
+    }
     deriveEngineParameters(m);
     return m;
 }
