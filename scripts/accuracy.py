@@ -8,7 +8,9 @@ table of docs/accuracy.md.
 Each scene (scripts/scenes.py, or q3:MAP:CAMERA for an installed Quake 3 map) is baked
 (`onelight-bake --quality Q`), drawn headless from its camera (`onelight --headless --frames 9
 --capture`: the EXR is linear cd/m^2 before exposure), and path-traced twice
-(`onelight-bake reference --seed 0` and `--seed 1`). `onelight-lab frame-error` gives the mean
+(`onelight-bake reference --seed 0` and `--seed 1`; a Quake 3 map's with `--poses` of the
+frame's capture, its items and movers where the frame drew them, the items seen by camera rays
+alone as the frame draws them). `onelight-lab frame-error` gives the mean
 relative error of 8x8-pixel blocks' luminance and the level (mean luminance over the
 reference's) of the frame against seed 0, and of seed 1 against seed 0: the reference's own
 noise, below which no frame can be measured. `onelight-lab sheet` writes WORK/NAME-sheet.png,
@@ -147,7 +149,10 @@ def main():
         f"--quality {args.quality}` on {time.strftime('%Y-%m-%d')} (load average "
         f"{load_start} at the start). Each scene is baked at `{args.quality}`, drawn by "
         "`onelight --headless` (lavapipe) from its camera and path-traced twice by "
-        "`onelight-bake reference` (seeds 0 and 1). **frame error**: the mean relative error "
+        "`onelight-bake reference` (seeds 0 and 1; a Quake 3 map's with `--poses` of the "
+        "frame's capture: its items and movers where the frame drew them, the items seen by "
+        "camera rays alone, as the frame draws them without shadows). **frame error**: the "
+        "mean relative error "
         "of 8x8-pixel blocks' luminance, the frame against seed 0 (`onelight-lab "
         "frame-error`); **frame level**: the frame's mean luminance over the reference's; "
         "**reference noise**: seed 1 against seed 0 by the same measure, the floor under "
@@ -184,13 +189,16 @@ def main():
             f"{name}: the frame")
         with open(base + "-frame.json") as f:
             frame_ms = json.load(f)["timings_ms"].get("gpu_median", 0.0)
-        # The references, once per level and camera.
+        # The references, once per level and camera; a map's with the frame's dynamic objects
+        # where it drew them (--poses: its items seen by camera rays alone, as the frame draws
+        # them without shadows).
         refs = references.get((stem, camera), [])
         spp = args.spp * REFERENCE_PATHS_SCALE.get(stem, 1)
+        poses = ["--poses", base + "-frame.json"] if name.startswith("q3:") else []
         for seed in () if refs else (0, 1):
             out = os.path.join(work, f"{stem}-{camera}-reference{seed}.exr")
             run([bake, "reference", level, "--camera", camera, "--spp", str(spp),
-                 "--size", args.size, "--seed", str(seed), "-o", out],
+                 "--size", args.size, "--seed", str(seed), "-o", out] + poses,
                 f"{name}: the reference, seed {seed}")
             refs.append(out)
         references[(stem, camera)] = refs

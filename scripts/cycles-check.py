@@ -55,15 +55,16 @@ The scenes:
               Cycles reads a texture at the ray's hit with linear filtering and no mips, the
               engine at its ray cone's level of detail.
   range_room  the same closed room lit by a 300 cd lamp of range 3 m (KHR_lights_punctual's
-              range window, which Blender's importer drops and cycles-render.py puts back as a
-              Light Falloff node), run by --scenes range_room.
+              range window, which Blender's importer drops and cycles-render.py puts back with a
+              Light Falloff node, light_shape).
   q3:MAP:CAMERA  an installed Quake 3 map from one of its cameras (spawn0, ...): the engine
               traces the map as it imports it, Cycles the glTF `onelight-bake export` writes of
               it (static triangles, textures, lights, sky; items and movers left out, as the
               engine's static reference leaves them out), e.g. --scenes q3:kaos:spawn0.
   spot_room   the same closed room lit by a 2000 cd spot (cone 0.3 to 0.6 rad) aimed at the
-              floor: where the models differ, the cone's edge (glTF's falloff, smooth in the
-              cosine, against Blender's blend), run by --scenes spot_room.
+              floor: glTF's cone, which cycles-render.py draws itself (light_shape), where
+              Blender's own spot ramps by a smoothstep over a wider blend and keeps a cosine
+              inside the cone.
 """
 import argparse
 import json
@@ -118,7 +119,7 @@ def main():
     p.add_argument("--spp", type=int, default=1024, help="the engine reference's paths a pixel")
     p.add_argument("--cycles", type=int, default=1024, help="Cycles' samples a pixel")
     p.add_argument("--scenes", default="sky_floor,roof_room,lamp_room,sky_floor_glossy,"
-                   "roof_room_glossy,glossy_room,textured_room")
+                   "roof_room_glossy,glossy_room,textured_room,spot_room,range_room")
     args = p.parse_args()
     width, height = (int(v) for v in args.size.split("x"))
     work = args.work or tempfile.mkdtemp(prefix="onelight-cycles-")

@@ -7,7 +7,7 @@ scripts/cycles-check.py, which says why and how the units map.
       W/m^2 and W/sr, so that Cycles' radiance is the engine's cd/m^2), gives every Lambert
       material (roughness 1, metallic 0: the engine's MATERIAL_LAMBERT) a Diffuse BSDF of its
       base colour or texture, cut out by its alpha under a MASK cutoff, every untextured glossy
-      one the engine's layers (layered), the lights the engine's sizes and ranges (range_window),
+      one the engine's layers (layered), the lights the engine's sizes, ranges and spot cones (light_shape),
       a uniform world of SKY, materials with extras.onelight.casts_shadows false no shadow
       (onelight-bake export's Quake 3 translucent surfaces), and renders the camera's view
       with Cycles: no clamping, no denoising, a box pixel filter, 64 bounces.
@@ -202,17 +202,23 @@ def layered(material, node):
     return add.outputs["Shader"]
 
 
-def range_window(light, reach):
-    """KHR_lights_punctual's range as the engine applies it (shaders/lighting.glsl,
-    rangeWindow: saturate(1 - (d / range)^4)^2), which Blender's importer drops: the light's
-    emission times the window of the distance d, which Cycles' Light Falloff node gives as its
-    Linear output at strength 1 (the ray's length)."""
+def light_shape(light, reach, cone):
+    """What the engine does to a punctual light's emission and Blender's importer does not
+    (shaders/lighting.glsl), as the light's node tree:
+      - KHR_lights_punctual's range (reach > 0), rangeWindow: saturate(1 - (d / range)^4)^2 of
+        the distance d, which the importer drops; Cycles' Light Falloff node gives d as its
+        Linear output at strength 1 (the ray's length);
+      - a spot's cone (cone = (inner, outer) radians), spotCone: saturate((cos a - cos outer) /
+        (cos inner - cos outer))^2 of the angle a off its axis, where Blender's spot ramps by a
+        smoothstep over its blend and keeps a further cos a inside the cone (the spot room read
+        1.23x bright for them): the light made a point light (Blender gives both the same
+        intensity for one power), masked by the cone computed from Texture Coordinate's Normal,
+        the direction from the light in its own space, whose axis is -Z."""
+    if cone is not None:
+        light.type = "POINT"
     light.use_nodes = True
     tree = light.node_tree
     emission = next(n for n in tree.nodes if n.type == "EMISSION")
-    falloff = tree.nodes.new("ShaderNodeLightFalloff")
-    falloff.inputs["Strength"].default_value = 1.0
-    falloff.inputs["Smooth"].default_value = 0.0
 
     def math_node(operation, a, b, clamp=False):
         node = tree.nodes.new("ShaderNodeMath")
@@ -225,10 +231,32 @@ def range_window(light, reach):
                 tree.links.new(value, socket)
         return node.outputs[0]
 
-    ratio = math_node("DIVIDE", falloff.outputs["Linear"], float(reach))
-    fourth = math_node("POWER", ratio, 4.0)
-    window = math_node("POWER", math_node("SUBTRACT", 1.0, fourth, clamp=True), 2.0)
-    tree.links.new(window, emission.inputs["Strength"])
+    strength = 1.0
+    if reach > 0.0:
+        falloff = tree.nodes.new("ShaderNodeLightFalloff")
+        falloff.inputs["Strength"].default_value = 1.0
+        falloff.inputs["Smooth"].default_value = 0.0
+        fourth = math_node("POWER", math_node("DIVIDE", falloff.outputs["Linear"], float(reach)),
+                           4.0)
+        strength = math_node("POWER", math_node("SUBTRACT", 1.0, fourth, clamp=True), 2.0)
+    if cone is not None:
+        inner, outer = cone
+        coordinate = tree.nodes.new("ShaderNodeTexCoord")
+        unit = tree.nodes.new("ShaderNodeVectorMath")
+        unit.operation = "NORMALIZE"
+        tree.links.new(coordinate.outputs["Normal"], unit.inputs[0])
+        axis = tree.nodes.new("ShaderNodeVectorMath")
+        axis.operation = "DOT_PRODUCT"
+        tree.links.new(unit.outputs["Vector"], axis.inputs[0])
+        axis.inputs[1].default_value = (0.0, 0.0, -1.0)
+        cos_outer = math.cos(outer)
+        scale = 1.0 / max(0.001, math.cos(inner) - cos_outer)
+        t = math_node("MULTIPLY", math_node("SUBTRACT", axis.outputs["Value"], cos_outer), scale,
+                      clamp=True)
+        mask = math_node("MULTIPLY", t, t)
+        strength = mask if isinstance(strength, float) else math_node("MULTIPLY", strength, mask)
+    if not isinstance(strength, float):
+        tree.links.new(strength, emission.inputs["Strength"])
 
 
 def render(gltf, camera, out, width, height, samples, sky, seed):
@@ -244,19 +272,18 @@ def render(gltf, camera, out, width, height, samples, sky, seed):
             light.angle = 2.0 * SUN_ANGULAR_RADIUS
         else:
             light.shadow_soft_size = POINT_RADIUS
-        if light.type == "SPOT":
-            # The importer's blend, 1 - inner / outer, ramps Cycles' cone over that share of
-            # 1 - cos(outer), wider than glTF's ramp from cos(outer) to cos(inner) (the spot room
-            # read 1.5x bright for it): the ramp put over glTF's span (its shape, a smoothstep
-            # against glTF's square, still differs).
-            outer = 0.5 * light.spot_size
-            inner = outer * (1.0 - light.spot_blend)
-            light.spot_blend = (math.cos(inner) - math.cos(outer)) / (1.0 - math.cos(outer))
     with open(gltf) as f:
         document = json.load(f)
     for source in document.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", []):
-        if source.get("range", 0.0) > 0.0 and source.get("name") in bpy.data.lights:
-            range_window(bpy.data.lights[source["name"]], source["range"])
+        light = bpy.data.lights.get(source.get("name", ""))
+        if light is None or source.get("type") == "directional":
+            continue
+        spot = source.get("spot") if source.get("type") == "spot" else None
+        cone = None
+        if spot is not None:
+            cone = (spot.get("innerConeAngle", 0.0), spot.get("outerConeAngle", math.pi / 4))
+        if source.get("range", 0.0) > 0.0 or cone is not None:
+            light_shape(light, source.get("range", 0.0), cone)
     shadowless = {m.get("name") for m in document.get("materials", [])
                   if m.get("extras", {}).get("onelight", {}).get("casts_shadows") is False}
     for o in scene.objects:

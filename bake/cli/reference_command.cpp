@@ -55,6 +55,10 @@ const world::CommandTable& referenceCommandTable() {
                               "trace the dynamic objects where this capture of the level drew "
                               "them (`onelight --capture`'s JSON)",
                               "none: the static level alone"),
+            world::flagOption("--item-shadows",
+                              "with --poses, the items occlude light as solid objects do",
+                              "seen by camera rays alone, as the frame draws them: no shadow, "
+                              "and no light of the level's blocked"),
             patchLevelOption()};
         t.positionalName = "level";
         t.minPositionals = t.maxPositionals = 1;
@@ -79,6 +83,7 @@ int renderFromCommandLine(const world::ParsedOptions& parsed) {
     const uint32_t spp = uint32_t(parsed.integer("--spp"));
     const uint32_t seed = parsed.has("--seed") ? uint32_t(parsed.integer("--seed")) : 0u;
     const std::string posesPath = parsed.has("--poses") ? parsed.text("--poses") : std::string();
+    const bool itemShadows = parsed.has("--item-shadows");
     const int threads = parsed.has("--threads") ? int(parsed.integer("--threads")) : 0;
     uint32_t width = 0, height = 0;
     if (parsed.has("--size")) std::tie(width, height) = parsed.size("--size");
@@ -110,17 +115,24 @@ int renderFromCommandLine(const world::ParsedOptions& parsed) {
         }
         const EmbreeDevice device;
         world::SplitLevel split = world::splitStaticDynamic(source);
+        // The frame's items (drawn without shadows, occluding no baked light) seen by camera rays
+        // alone, unless --item-shadows; its other dynamic objects as solid as the level.
+        world::StaticGeometry items;
         if (!posesPath.empty())
             appendPosedDynamicMeshes(split, readFramePoses(posesPath), posesPath,
-                                     split.staticGeometry);
-        const BakeScene scene(device, split.staticGeometry, loadSceneMaterials(source));
+                                     split.staticGeometry, itemShadows ? nullptr : &items);
+        const SceneMaterials materials = loadSceneMaterials(source);
+        const BakeScene scene(device, split.staticGeometry, materials);
+        std::unique_ptr<const BakeScene> seenOnly;
+        if (!items.triangles.empty())
+            seenOnly = std::make_unique<const BakeScene>(device, items, materials);
         const BakeLights lights =
             makeLevelLights(scene, source, LightSizes{},
                             sky >= 0.0f ? std::optional(glm::vec3(sky)) : std::nullopt);
         RayCounts rays;
         Progress progress("reference", height, true);
-        const ReferenceImage image =
-            renderReference(scene, lights, *camera, width, height, spp, {}, &progress, rays, seed);
+        const ReferenceImage image = renderReference(scene, lights, *camera, width, height, spp, {},
+                                                     &progress, rays, seed, seenOnly.get());
         progress.finish();
         world::writeRgbExrFile(output, image.width, image.height, image.rgb);
         std::printf("reference %s: %ux%u, %u spp, %llu rays, %.2f Mrays/s\n", output.c_str(), width,

@@ -147,12 +147,21 @@ float skyEscapePdf(const BakeLights& lights, const glm::vec3& direction) {
 glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                         const TransportSettings& settings, glm::vec3 origin, glm::vec3 dir,
                         RayCone cone, Rng& rng, RayCounts& rays, FirstHit* firstHit,
-                        float originPdf) {
+                        float originPdf, const BakeScene* seenOnly) {
     glm::vec3 radiance(0.0f);
     glm::vec3 throughput(1.0f);
     float directionPdf = originPdf;  // density `dir` was drawn with, 0: no emission sampling
     for (uint32_t depth = 0; depth < settings.maxDepth; ++depth) {
-        const SurfaceHit hit = scene.intersect(origin, dir, scene.sceneDiameter(), rays.bounce);
+        SurfaceHit hit = scene.intersect(origin, dir, scene.sceneDiameter(), rays.bounce);
+        const BakeScene* shading = &scene;  // whose triangle `hit` is
+        if (depth == 0 && seenOnly) {
+            const SurfaceHit seen = seenOnly->intersect(
+                origin, dir, hit.found ? hit.distance : scene.sceneDiameter(), rays.bounce);
+            if (seen.found && (!hit.found || seen.distance < hit.distance)) {
+                hit = seen;
+                shading = seenOnly;
+            }
+        }
         if (depth == 0 && firstHit) *firstHit = {hit.found, hit.backFace, hit.distance};
         if (!hit.found) {
             const float weight = directionPdf > 0.0f && !lights.skyImage.empty()
@@ -161,21 +170,26 @@ glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
             radiance += throughput * skyAlong(lights, dir) * weight;
             break;
         }
-        const world::Material& material = scene.materialOf(hit.triangle);
+        const world::Material& material = shading->materialOf(hit.triangle);
         if (hit.backFace && !material.doubleSided) break;
         ShadingPoint point;
         point.position = hit.position;
         point.geometricNormal = hit.backFace ? -hit.normal : hit.normal;
         const glm::vec3 v = -dir;
-        const MaterialSample m = sampleMaterial(
-            scene.materials(), scene.materialIndexOf(hit.triangle), scene.attributesAt(hit),
-            point.geometricNormal, hit.backFace, cone.widthAt(hit.distance), v);
+        const MaterialSample m =
+            sampleMaterial(shading->materials(), shading->materialIndexOf(hit.triangle),
+                           shading->attributesAt(hit), point.geometricNormal, hit.backFace,
+                           cone.widthAt(hit.distance), v);
         point.shadingNormal = m.shadingNormal;
         point.bsdf = m.bsdf;
         if (m.emission != glm::vec3(0.0f)) {
-            const float emitter = emitterHitPdf(lights, origin, hit.triangle, hit.distance,
-                                                std::fabs(glm::dot(dir, hit.normal)));
-            const float weight = directionPdf > 0.0f ? powerHeuristic(directionPdf, emitter) : 1.0f;
+            // A seen-only triangle is no emitter the lights sample: its emission counts whole.
+            const float weight =
+                directionPdf > 0.0f && shading == &scene
+                    ? powerHeuristic(directionPdf,
+                                     emitterHitPdf(lights, origin, hit.triangle, hit.distance,
+                                                   std::fabs(glm::dot(dir, hit.normal))))
+                    : 1.0f;
             radiance += throughput * m.emission * weight;
         }
         if (settings.cache) {

@@ -132,10 +132,15 @@ struct FirstHit {
    p_f^2 / (p_f^2 + p_e^2)). The first segment's has weight 1 unless the caller calls
    sampleEmission at `origin` too, once per direction, and passes the density `originPdf` it
    drew `dir` with.
+   With `seenOnly`, a scene the first segment alone meets (the frame's items, which it draws
+   without shadows and which occlude no baked light): where that segment hits one of its
+   triangles before the scene's, the hit is shaded with its material, and its light, emission
+   and continuation come from `scene`, where nothing else sees it.
 */
 [[nodiscard]] glm::vec3 traceRadiance(const BakeScene& scene, const BakeLights& lights,
                                       const TransportSettings& settings, glm::vec3 origin,
                                       glm::vec3 dir, RayCone cone, Rng& rng, RayCounts& rays,
-                                      FirstHit* firstHit = nullptr, float originPdf = 0.0f);
+                                      FirstHit* firstHit = nullptr, float originPdf = 0.0f,
+                                      const BakeScene* seenOnly = nullptr);
 
 }  // namespace onelight::bake

@@ -113,6 +113,25 @@ BakeTexture makeBakeTexture(const world::DecodedImage& image, bool srgb, bool ov
                                               src[size_t(y1) * pw + x0], src[size_t(y1) * pw + x1]);
             }
     }
+    // A cut-out's wholly clear texels take their parent's colour, the coarsest first: the colour
+    // of what covers nearby, as the texture stage's mips (fillClearTexels in
+    // bake/textures/texture_stage.cpp), so that no filter blends the holes' colour into an edge.
+    if (overCoverage)
+        for (uint32_t m = levels - 1; m-- > 0;) {
+            const uint32_t w = std::max(t.width >> m, 1u), h = std::max(t.height >> m, 1u);
+            const uint32_t pw = std::max(t.width >> (m + 1), 1u);
+            const uint32_t ph = std::max(t.height >> (m + 1), 1u);
+            glm::vec4* here = t.texels.data() + t.mipOffset[m];
+            const glm::vec4* parent = t.texels.data() + t.mipOffset[m + 1];
+            for (uint32_t y = 0; y < h; ++y)
+                for (uint32_t x = 0; x < w; ++x) {
+                    glm::vec4& texel = here[size_t(y) * w + x];
+                    if (texel.w > 0.0f) continue;
+                    const glm::vec4& p =
+                        parent[size_t(std::min(y / 2, ph - 1)) * pw + std::min(x / 2, pw - 1)];
+                    texel = glm::vec4(glm::vec3(p), texel.w);
+                }
+        }
     return t;
 }
 

@@ -48,7 +48,8 @@ std::vector<FramePose> readFramePoses(const std::string& path) {
 }
 
 void appendPosedDynamicMeshes(const world::SplitLevel& split, const std::vector<FramePose>& poses,
-                              const std::string& path, world::StaticGeometry& geometry) {
+                              const std::string& path, world::StaticGeometry& geometry,
+                              world::StaticGeometry* items) {
     for (size_t i = 0; i < poses.size(); ++i) {
         const FramePose& pose = poses[i];
         const std::string where = path + ": dynamic_objects[" + std::to_string(i) + "]";
@@ -64,11 +65,13 @@ void appendPosedDynamicMeshes(const world::SplitLevel& split, const std::vector<
                                world::clipForMessage(pose.name) + "': a capture of another level?");
         const world::InstanceTransform transform =
             world::instanceTransformOf(glm::dmat4(pose.worldFromObject));
+        world::StaticGeometry& into =
+            items && (entity.flags & world::kEntityItem) ? *items : geometry;
         for (uint32_t k = 0; k < entity.dynamicMeshCount; ++k) {
             const world::DynamicMesh& mesh = split.dynamicMeshes.at(entity.firstDynamicMesh + k);
-            const uint32_t base = uint32_t(geometry.vertices.size());
+            const uint32_t base = uint32_t(into.vertices.size());
             for (uint32_t v = 0; v < mesh.vertexCount; ++v)
-                geometry.vertices.push_back(world::worldVertexOf(
+                into.vertices.push_back(world::worldVertexOf(
                     split.dynamicVertices.at(mesh.firstVertex + v), transform));
             for (uint32_t t = 0; t + 2 < mesh.indexCount; t += 3) {
                 world::StaticTriangle triangle;
@@ -83,7 +86,7 @@ void appendPosedDynamicMeshes(const world::SplitLevel& split, const std::vector<
                     triangle.v[c] = base + index;
                 }
                 triangle.material = mesh.material;
-                geometry.triangles.push_back(triangle);
+                into.triangles.push_back(triangle);
             }
         }
     }

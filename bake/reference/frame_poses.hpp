@@ -24,10 +24,13 @@ struct FramePose {
 /// "dynamic_objects" list of {entity, name, world_from_object: 16 finite numbers}.
 [[nodiscard]] std::vector<FramePose> readFramePoses(const std::string& path);
 
-/// Appends each posed entity's dynamic meshes to `geometry`, in world space. Throws world::Error
-/// naming `path` when a pose's entity is not in `split` or its name differs (the capture is of
-/// another level).
+/// Appends each posed entity's dynamic meshes to `geometry`, in world space; with `items`, an
+/// item's (world::kEntityItem: drawn by the frame without shadows, as Quake 3 draws them) go
+/// there instead, for a scene that camera rays alone see (traceRadiance's `seenOnly`). Throws
+/// world::Error naming `path` when a pose's entity is not in `split` or its name differs (the
+/// capture is of another level).
 void appendPosedDynamicMeshes(const world::SplitLevel& split, const std::vector<FramePose>& poses,
-                              const std::string& path, world::StaticGeometry& geometry);
+                              const std::string& path, world::StaticGeometry& geometry,
+                              world::StaticGeometry* items = nullptr);
 
 }  // namespace onelight::bake

@@ -32,7 +32,7 @@ CameraRay cameraRay(const world::Camera& camera, float aspect, float sx, float s
 ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
                                const world::Camera& camera, uint32_t width, uint32_t height,
                                uint32_t spp, const TransportSettings& transport, Progress* progress,
-                               RayCounts& rays, uint32_t seed) {
+                               RayCounts& rays, uint32_t seed, const BakeScene* seenOnly) {
     ReferenceImage image;
     image.width = width;
     image.height = height;
@@ -53,8 +53,9 @@ ReferenceImage renderReference(const BakeScene& scene, const BakeLights& lights,
                     const float sx = (float(x) + rng.next()) / float(width) * 2.0f - 1.0f;
                     const float sy = 1.0f - (float(y) + rng.next()) / float(height) * 2.0f;
                     const CameraRay ray = cameraRay(camera, aspect, sx, sy);
-                    sum += glm::dvec3(traceRadiance(scene, lights, transport, ray.origin, ray.dir,
-                                                    pixelCone, rng, local));
+                    sum +=
+                        glm::dvec3(traceRadiance(scene, lights, transport, ray.origin, ray.dir,
+                                                 pixelCone, rng, local, nullptr, 0.0f, seenOnly));
                 }
                 const glm::vec3 l = glm::vec3(sum / double(std::max(1u, spp)));
                 float* out = &image.rgb[(size_t(y) * width + x) * 3];

@@ -32,7 +32,8 @@ struct CameraRay {
 
 /// Renders `camera`'s view with `spp` jittered paths per pixel; pixel (x, y) seeds its own
 /// stream from (x, y, seed), so the image does not depend on threads, and two seeds give two
-/// independent estimates (their difference measures the reference's own noise).
+/// independent estimates (their difference measures the reference's own noise). `seenOnly`:
+/// triangles the camera rays see and nothing else does (traceRadiance).
 /*
    L(pixel) = (1 / A) int_pixel L(camera, w(s)) ds,  s uniform in the pixel (pdf 1 / A):
                       +---------------------------------------------+
@@ -43,7 +44,8 @@ struct CameraRay {
                                              const world::Camera& camera, uint32_t width,
                                              uint32_t height, uint32_t spp,
                                              const TransportSettings& transport, Progress* progress,
-                                             RayCounts& rays, uint32_t seed = 0);
+                                             RayCounts& rays, uint32_t seed = 0,
+                                             const BakeScene* seenOnly = nullptr);
 
 /// Irradiance (lux, RGB) at a surface point with every light at full strength: the reference
 /// the lightmaps are checked against. An estimator independent of the lightmap's: uniform

@@ -120,13 +120,40 @@ void footprintMeans(int width, int height, const Load& load, const Emit& emit) {
     }
 }
 
+// The colour of every wholly clear texel (alpha byte 0) of a cut-out's RGBA8 mips, from mip 0 up:
+// its parent's at the next level, the coarsest first, so that it is the colour of what covers the
+// nearest footprint that anything covers (a push of the coverage-weighted means; a texture that
+// nothing covers keeps its own). A filter reaching from a covered texel into a clear one then
+// blends the covered colour with itself, not with whatever the holes held (black, often): no dark
+// fringe along a cut-out's edges. Alpha is untouched, so is every texel anything covers (a
+// texture that nothing covers takes its coarsest mean, and stays invisible).
+void fillClearTexels(uint8_t* texels, const std::vector<size_t>& offsets, uint32_t width,
+                     uint32_t height) {
+    const int levels = int(offsets.size()) - 1;  // offsets: one per level, then the end
+    for (int level = levels - 2; level >= 0; --level) {
+        const int w = mipSize(int(width), level), h = mipSize(int(height), level);
+        const int pw = mipSize(int(width), level + 1), ph = mipSize(int(height), level + 1);
+        uint8_t* here = texels + offsets[size_t(level)];
+        const uint8_t* parent = texels + offsets[size_t(level) + 1];
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                uint8_t* t = here + 4 * (size_t(y) * size_t(w) + size_t(x));
+                if (t[3] != 0) continue;
+                const uint8_t* p = parent + 4 * (size_t(std::min(y / 2, ph - 1)) * size_t(pw) +
+                                                 size_t(std::min(x / 2, pw - 1)));
+                std::copy(p, p + 3, t);
+            }
+    }
+}
+
 // A plain texture: mip 0 the image, further mips footprint means, in linear light for an sRGB
 // texture's colour, in byte values for a linear texture's and for alpha. A base colour whose
 // alpha is its coverage (`overCoverage`: a MASK or BLEND material's; an OPAQUE material ignores
 // its alpha, which a Quake 3 texture may use for something else) is averaged over what covers the
 // footprint, sum(c a) / sum(a), as premultiplied alpha filters, and plainly only where nothing or
 // everything covers it. A plain mean would darken a cut-out grate's bars with its holes' (black)
-// colour wherever a mip reaches over both, and tint whatever an alpha-blended edge fades out.
+// colour wherever a mip reaches over both, and tint whatever an alpha-blended edge fades out; and
+// its clear texels take the colour of what covers nearby (fillClearTexels).
 world::ProcessedTexture plainTexture(const world::DecodedImage& image, bool srgb, bool overCoverage,
                                      const world::Sampler& sampler, std::string name) {
     const world::TexelFormat format =
@@ -176,6 +203,7 @@ world::ProcessedTexture plainTexture(const world::DecodedImage& image, bool srgb
             const double rgb[3] = {mean[0] / a, mean[1] / a, mean[2] / a};
             store(level, i, rgb, a);
         });
+    fillClearTexels(out.texels.data(), offsets, image.width, image.height);
     return out;
 }
 

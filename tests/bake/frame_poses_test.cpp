@@ -1,13 +1,18 @@
 // The reference's --poses (bake/reference/frame_poses.hpp): a frame capture's dynamic objects
 // are read with every field checked, and each posed entity's meshes land in world space where
-// the frame drew them, normals and tangents turned with them.
+// the frame drew them, normals and tangents turned with them; the reference draws the items as
+// the frame does, without shadows.
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "bake/materials/scene_materials.hpp"
 #include "bake/reference/frame_poses.hpp"
+#include "bake/reference/path_tracer.hpp"
+#include "tests/bake/bake_scenes.hpp"
+#include "world/compile/static_split.hpp"
 #include "world/error.hpp"
 
 namespace onelight::bake {
@@ -164,6 +169,81 @@ TEST(FramePoses, AnEntitysMeshesLandWhereTheFrameDrewThem) {
     // ... and the winding turns with it, so that the front by winding is the normal's side.
     ASSERT_EQ(mirrored.triangles.size(), 1u);
     EXPECT_EQ(mirrored.triangles[0].v, (std::array<uint32_t, 3>{0, 2, 1}));
+}
+
+// The frame draws items without shadows (runtime/render/scene.cpp, as Quake 3 does), and the
+// reference with --poses draws them so (the default; --item-shadows traces them solid): a 1 m
+// triangle 1 m over a floor under a sun at 45 degrees, seen from 3 m above. Camera rays see it
+// (albedo 0.8 in the sun: 0.8 / pi x 1000 cos 45 = 180 cd/m^2), the floor where its shadow
+// would fall keeps the open floor's radiance (0.5 / pi x 707 = 112.5) as if it were not there,
+// and the solid triangle's shadow takes the sun off that floor (the sky is black: no light).
+TEST(FramePoses, ItemsAreSeenByCameraRaysAloneUnlessTheyCastShadows) {
+    world::SourceLevel level;
+    const uint32_t floor = test::addLambertMaterial(level, 0.5f);
+    const uint32_t itemMaterial = test::addLambertMaterial(level, 0.8f);
+    test::addQuad(level, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}, floor, "floor");
+    level.lights.push_back(test::sunLight({1.0f, -1.0f, 0.0f}, 1000.0f));
+    world::Camera camera;
+    camera.name = "down";
+    camera.position = {0.0f, 3.0f, 0.0f};
+    camera.rotation = glm::angleAxis(-0.5f * 3.14159265f, glm::vec3(1.0f, 0.0f, 0.0f));
+    camera.yfov = 1.2f;
+    world::SplitLevel split = world::splitStaticDynamic(level);
+    const world::SplitLevel item = oneItem();
+    split.dynamicVertices = item.dynamicVertices;
+    split.dynamicIndices = item.dynamicIndices;
+    split.dynamicMeshes = item.dynamicMeshes;
+    split.dynamicMeshes[0].material = itemMaterial;
+    split.entities = item.entities;
+    // Object +z (its normal) up, 1 m over the floor: world x in [0, 1], z in [-1, 0].
+    FramePose pose;
+    pose.name = "item";
+    pose.worldFromObject = glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0),
+                                     glm::vec4(0, 1, 0, 0), glm::vec4(0, 1, 0, 1));
+
+    const EmbreeDevice device;
+    const SceneMaterials materials = loadSceneMaterials(level);
+    const BakeScene open(device, split.staticGeometry, materials);
+    const BakeLights lights = makeLevelLights(open, level, {}, std::nullopt);
+    world::StaticGeometry solidGeometry = split.staticGeometry, seenGeometry = split.staticGeometry,
+                          items;
+    appendPosedDynamicMeshes(split, {pose}, "f.json", solidGeometry);
+    appendPosedDynamicMeshes(split, {pose}, "f.json", seenGeometry, &items);
+    EXPECT_EQ(seenGeometry.triangles.size(), split.staticGeometry.triangles.size());
+    ASSERT_EQ(items.triangles.size(), 1u);
+    const BakeScene solid(device, solidGeometry, materials);
+    const BakeScene seen(device, items, materials);
+
+    const uint32_t size = 64, spp = 16;
+    RayCounts rays;
+    const ReferenceImage withoutIt =
+        renderReference(open, lights, camera, size, size, spp, {}, nullptr, rays);
+    const ReferenceImage shadowless =
+        renderReference(open, lights, camera, size, size, spp, {}, nullptr, rays, 0, &seen);
+    const ReferenceImage shadowing =
+        renderReference(solid, lights, camera, size, size, spp, {}, nullptr, rays);
+    // The pixel that sees floor point (x, 0, z), or the item at height 1 over it: the camera
+    // looks down -y, its up is world -z, and a point h below it lies h tan(fov / 2) off centre
+    // at the image's edge.
+    const auto at = [&](const ReferenceImage& image, float x, float z, float h) {
+        const float extent = h * std::tan(0.5f * camera.yfov);
+        const uint32_t px = uint32_t((x / extent + 1.0f) * 0.5f * float(size));
+        const uint32_t py = uint32_t((1.0f + z / extent) * 0.5f * float(size));
+        return image.rgb[(size_t(py) * size + px) * 3 + 1];
+    };
+    const float kOpenFloor = 0.5f / 3.14159265f * 1000.0f * std::sqrt(0.5f);
+    const float kItem = 0.8f / 3.14159265f * 1000.0f * std::sqrt(0.5f);
+    // The triangle's corners are (0, 1, 0), (1, 1, 0), (0, 1, -1); under the sun travelling along
+    // (1, -1, 0) its shadow is it moved 1 m along +x and down: (1.7, 0, -0.15) is in it,
+    // (1.7, 0, -0.6) is past its hypotenuse; and the camera sees both past the triangle.
+    EXPECT_NEAR(at(withoutIt, 1.7f, -0.15f, 3.0f), kOpenFloor, 0.02f * kOpenFloor);
+    EXPECT_NEAR(at(shadowless, 1.7f, -0.15f, 3.0f), kOpenFloor, 0.02f * kOpenFloor);
+    EXPECT_LT(at(shadowing, 1.7f, -0.15f, 3.0f), 0.02f * kOpenFloor);
+    EXPECT_NEAR(at(shadowing, 1.7f, -0.6f, 3.0f), kOpenFloor, 0.02f * kOpenFloor);
+    // Both see the item itself.
+    EXPECT_NEAR(at(shadowless, 0.2f, -0.2f, 2.0f), kItem, 0.02f * kItem);
+    EXPECT_NEAR(at(shadowing, 0.2f, -0.2f, 2.0f), kItem, 0.02f * kItem);
+    EXPECT_NEAR(at(withoutIt, 0.2f, -0.2f, 2.0f), kOpenFloor, 0.02f * kOpenFloor);
 }
 
 }  // namespace

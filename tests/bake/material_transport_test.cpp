@@ -363,6 +363,12 @@ TEST(MaterialTransport, ACutOutGratesBarsKeepTheirColourAtEveryLevelOfDetail) {
         EXPECT_NEAR(t.z, blue, 1e-4f) << "level " << level;
     }
     EXPECT_NEAR(sampleTexture(texture, glm::vec2(0.5f), 6.0f).w, 0.4375f, 1e-4f);  // coverage
+    // Across a bar's edge at mip 0 (texels 7 and 8 of the first row of holes, half way): the
+    // bar's colour, at half coverage, where the holes' black made a dark fringe of 0.5 bar.
+    const glm::vec4 edge = sampleTexture(texture, glm::vec2(8.0f / 64.0f, 20.5f / 64.0f), 0.0f);
+    EXPECT_NEAR(edge.w, 0.5f, 1e-4f);
+    EXPECT_NEAR(edge.x, bar, 1e-4f);
+    EXPECT_NEAR(edge.z, blue, 1e-4f);
 }
 
 // The directional albedo of the engine's GGX layer at cosine NoV (GGX D, height-correlated Smith,
