@@ -16,6 +16,7 @@
 #include "bake/cli/subcommands.hpp"
 #include "bake/reference/frame_poses.hpp"
 #include "bake/reference/path_tracer.hpp"
+#include "bake/reference/seen_only.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/error.hpp"
 #include "world/file_read.hpp"
@@ -115,17 +116,20 @@ int renderFromCommandLine(const world::ParsedOptions& parsed) {
         }
         const EmbreeDevice device;
         world::SplitLevel split = world::splitStaticDynamic(source);
-        // The frame's items (drawn without shadows, occluding no baked light) seen by camera rays
-        // alone, unless --item-shadows; its other dynamic objects as solid as the level.
-        world::StaticGeometry items;
+        // Seen by camera rays alone (seen_only.hpp): the level's surfaces that light passes, and
+        // the frame's items (drawn without shadows, occluding no baked light) unless
+        // --item-shadows; its other dynamic objects as solid as the level.
+        world::StaticGeometry seen;
+        appendShadowlessSurfaces(split.staticGeometry, source.materials, seen);
         if (!posesPath.empty())
             appendPosedDynamicMeshes(split, readFramePoses(posesPath), posesPath,
-                                     split.staticGeometry, itemShadows ? nullptr : &items);
+                                     split.staticGeometry, itemShadows ? nullptr : &seen);
         const SceneMaterials materials = loadSceneMaterials(source);
         const BakeScene scene(device, split.staticGeometry, materials);
         std::unique_ptr<const BakeScene> seenOnly;
-        if (!items.triangles.empty())
-            seenOnly = std::make_unique<const BakeScene>(device, items, materials);
+        if (!seen.triangles.empty())
+            seenOnly =
+                std::make_unique<const BakeScene>(device, seen, seenOnlyMaterials(materials));
         const BakeLights lights =
             makeLevelLights(scene, source, LightSizes{},
                             sky >= 0.0f ? std::optional(glm::vec3(sky)) : std::nullopt);

@@ -11,6 +11,7 @@
 #include "bake/materials/scene_materials.hpp"
 #include "bake/reference/frame_poses.hpp"
 #include "bake/reference/path_tracer.hpp"
+#include "bake/reference/seen_only.hpp"
 #include "tests/bake/bake_scenes.hpp"
 #include "world/compile/static_split.hpp"
 #include "world/error.hpp"
@@ -244,6 +245,50 @@ TEST(FramePoses, ItemsAreSeenByCameraRaysAloneUnlessTheyCastShadows) {
     EXPECT_NEAR(at(shadowless, 0.2f, -0.2f, 2.0f), kItem, 0.02f * kItem);
     EXPECT_NEAR(at(shadowing, 0.2f, -0.2f, 2.0f), kItem, 0.02f * kItem);
     EXPECT_NEAR(at(withoutIt, 0.2f, -0.2f, 2.0f), kOpenFloor, 0.02f * kOpenFloor);
+}
+
+// A surface that light passes (a Quake 3 translucent one, castsShadows false) is drawn by the
+// frame, so camera rays see it (seen_only.hpp); the bake's scene never hits it. The same triangle
+// as above, now a static surface of such a material: seen at its lit radiance, with no shadow.
+TEST(FramePoses, ASurfaceLightPassesIsSeenByCameraRaysAlone) {
+    world::SourceLevel level;
+    const uint32_t floor = test::addLambertMaterial(level, 0.5f);
+    const uint32_t glass = test::addLambertMaterial(level, 0.8f);
+    level.materials[glass].castsShadows = false;
+    test::addQuad(level, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}, floor, "floor");
+    test::addQuad(level, {0, 1, 0}, {1, 1, 0}, {1, 1, -1}, {0, 1, -1}, glass, "glass");
+    level.lights.push_back(test::sunLight({1.0f, -1.0f, 0.0f}, 1000.0f));
+    world::Camera camera;
+    camera.position = {0.0f, 3.0f, 0.0f};
+    camera.rotation = glm::angleAxis(-0.5f * 3.14159265f, glm::vec3(1.0f, 0.0f, 0.0f));
+    camera.yfov = 1.2f;
+    const world::SplitLevel split = world::splitStaticDynamic(level);
+    world::StaticGeometry seenGeometry;
+    appendShadowlessSurfaces(split.staticGeometry, level.materials, seenGeometry);
+    ASSERT_EQ(seenGeometry.triangles.size(), 2u);
+
+    const EmbreeDevice device;
+    const SceneMaterials materials = loadSceneMaterials(level);
+    const BakeScene scene(device, split.staticGeometry, materials);
+    const BakeScene seen(device, seenGeometry, seenOnlyMaterials(materials));
+    const BakeLights lights = makeLevelLights(scene, level, {}, std::nullopt);
+    const uint32_t size = 64;
+    RayCounts rays;
+    const ReferenceImage without =
+        renderReference(scene, lights, camera, size, size, 16, {}, nullptr, rays);
+    const ReferenceImage with =
+        renderReference(scene, lights, camera, size, size, 16, {}, nullptr, rays, 0, &seen);
+    const auto at = [&](const ReferenceImage& image, float x, float z, float h) {
+        const float extent = h * std::tan(0.5f * camera.yfov);
+        const uint32_t px = uint32_t((x / extent + 1.0f) * 0.5f * float(size));
+        const uint32_t py = uint32_t((1.0f + z / extent) * 0.5f * float(size));
+        return image.rgb[(size_t(py) * size + px) * 3 + 1];
+    };
+    const float kOpenFloor = 0.5f / 3.14159265f * 1000.0f * std::sqrt(0.5f);
+    const float kGlass = 0.8f / 3.14159265f * 1000.0f * std::sqrt(0.5f);
+    EXPECT_NEAR(at(with, 0.5f, -0.5f, 2.0f), kGlass, 0.02f * kGlass);
+    EXPECT_NEAR(at(without, 0.5f, -0.5f, 2.0f), kOpenFloor, 0.02f * kOpenFloor);
+    EXPECT_NEAR(at(with, 1.7f, -0.5f, 3.0f), kOpenFloor, 0.02f * kOpenFloor);  // light passed it
 }
 
 }  // namespace
