@@ -172,16 +172,14 @@ TEST(FramePoses, AnEntitysMeshesLandWhereTheFrameDrewThem) {
     EXPECT_EQ(mirrored.triangles[0].v, (std::array<uint32_t, 3>{0, 2, 1}));
 }
 
-// The frame draws items without shadows (runtime/render/scene.cpp, as Quake 3 does), and the
-// reference with --poses draws them so (the default; --item-shadows traces them solid): a 1 m
-// triangle 1 m over a floor under a sun at 45 degrees, seen from 3 m above. Camera rays see it
-// (albedo 0.8 in the sun: 0.8 / pi x 1000 cos 45 = 180 cd/m^2), the floor where its shadow
-// would fall keeps the open floor's radiance (0.5 / pi x 707 = 112.5) as if it were not there,
-// and the solid triangle's shadow takes the sun off that floor (the sky is black: no light).
-TEST(FramePoses, ItemsAreSeenByCameraRaysAloneUnlessTheyCastShadows) {
+// The scenes of the two tests below: a 6 x 6 m floor (albedo 0.5) under a 1000 lux sun at 45
+// degrees, travelling along (1, -1, 0), seen from 3 m straight above (fov 1.2), 64 x 64 pixels.
+constexpr uint32_t kPixels = 64;
+const float kOpenFloor = 0.5f / 3.14159265f * 1000.0f * std::sqrt(0.5f);  // its lit radiance
+
+world::SourceLevel sunlitFloor() {
     world::SourceLevel level;
     const uint32_t floor = test::addLambertMaterial(level, 0.5f);
-    const uint32_t itemMaterial = test::addLambertMaterial(level, 0.8f);
     test::addQuad(level, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}, floor, "floor");
     level.lights.push_back(test::sunLight({1.0f, -1.0f, 0.0f}, 1000.0f));
     world::Camera camera;
@@ -189,6 +187,30 @@ TEST(FramePoses, ItemsAreSeenByCameraRaysAloneUnlessTheyCastShadows) {
     camera.position = {0.0f, 3.0f, 0.0f};
     camera.rotation = glm::angleAxis(-0.5f * 3.14159265f, glm::vec3(1.0f, 0.0f, 0.0f));
     camera.yfov = 1.2f;
+    level.cameras.push_back(camera);
+    return level;
+}
+
+// The green channel of the pixel that sees floor point (x, 0, z), or a surface h metres
+// under the camera over it: the camera looks down -y, its up is world -z, and a point h below it
+// lies h tan(fov / 2) off centre at the image's edge.
+float floorPixel(const ReferenceImage& image, float x, float z, float h) {
+    const float extent = h * std::tan(0.5f * 1.2f);
+    const uint32_t px = uint32_t((x / extent + 1.0f) * 0.5f * float(kPixels));
+    const uint32_t py = uint32_t((1.0f + z / extent) * 0.5f * float(kPixels));
+    return image.rgb[(size_t(py) * kPixels + px) * 3 + 1];
+}
+
+// The frame draws items without shadows (runtime/render/scene.cpp, as Quake 3 does), and the
+// reference with --poses draws them so (the default; --item-shadows traces them solid): a 1 m
+// triangle 1 m over a floor under a sun at 45 degrees, seen from 3 m above. Camera rays see it
+// (albedo 0.8 in the sun: 0.8 / pi x 1000 cos 45 = 180 cd/m^2), the floor where its shadow
+// would fall keeps the open floor's radiance (0.5 / pi x 707 = 112.5) as if it were not there,
+// and the solid triangle's shadow takes the sun off that floor (the sky is black: no light).
+TEST(FramePoses, ItemsAreSeenByCameraRaysAloneUnlessTheyCastShadows) {
+    world::SourceLevel level = sunlitFloor();
+    const uint32_t itemMaterial = test::addLambertMaterial(level, 0.8f);
+    const world::Camera& camera = level.cameras[0];
     world::SplitLevel split = world::splitStaticDynamic(level);
     const world::SplitLevel item = oneItem();
     split.dynamicVertices = item.dynamicVertices;
@@ -215,24 +237,14 @@ TEST(FramePoses, ItemsAreSeenByCameraRaysAloneUnlessTheyCastShadows) {
     const BakeScene solid(device, solidGeometry, materials);
     const BakeScene seen(device, items, materials);
 
-    const uint32_t size = 64, spp = 16;
     RayCounts rays;
-    const ReferenceImage withoutIt =
-        renderReference(open, lights, camera, size, size, spp, {}, nullptr, rays);
-    const ReferenceImage shadowless =
-        renderReference(open, lights, camera, size, size, spp, {}, nullptr, rays, 0, &seen);
-    const ReferenceImage shadowing =
-        renderReference(solid, lights, camera, size, size, spp, {}, nullptr, rays);
-    // The pixel that sees floor point (x, 0, z), or the item at height 1 over it: the camera
-    // looks down -y, its up is world -z, and a point h below it lies h tan(fov / 2) off centre
-    // at the image's edge.
-    const auto at = [&](const ReferenceImage& image, float x, float z, float h) {
-        const float extent = h * std::tan(0.5f * camera.yfov);
-        const uint32_t px = uint32_t((x / extent + 1.0f) * 0.5f * float(size));
-        const uint32_t py = uint32_t((1.0f + z / extent) * 0.5f * float(size));
-        return image.rgb[(size_t(py) * size + px) * 3 + 1];
+    const auto render = [&](const BakeScene& scene, const BakeScene* seenOnly) {
+        return renderReference(scene, lights, camera, kPixels, kPixels, 16, {}, nullptr, rays, 0,
+                               seenOnly);
     };
-    const float kOpenFloor = 0.5f / 3.14159265f * 1000.0f * std::sqrt(0.5f);
+    const ReferenceImage withoutIt = render(open, nullptr), shadowless = render(open, &seen),
+                         shadowing = render(solid, nullptr);
+    const auto at = floorPixel;
     const float kItem = 0.8f / 3.14159265f * 1000.0f * std::sqrt(0.5f);
     // The triangle's corners are (0, 1, 0), (1, 1, 0), (0, 1, -1); under the sun travelling along
     // (1, -1, 0) its shadow is it moved 1 m along +x and down: (1.7, 0, -0.15) is in it,
@@ -251,17 +263,10 @@ TEST(FramePoses, ItemsAreSeenByCameraRaysAloneUnlessTheyCastShadows) {
 // frame, so camera rays see it (seen_only.hpp); the bake's scene never hits it. The same triangle
 // as above, now a static surface of such a material: seen at its lit radiance, with no shadow.
 TEST(FramePoses, ASurfaceLightPassesIsSeenByCameraRaysAlone) {
-    world::SourceLevel level;
-    const uint32_t floor = test::addLambertMaterial(level, 0.5f);
+    world::SourceLevel level = sunlitFloor();
     const uint32_t glass = test::addLambertMaterial(level, 0.8f);
     level.materials[glass].castsShadows = false;
-    test::addQuad(level, {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3}, floor, "floor");
     test::addQuad(level, {0, 1, 0}, {1, 1, 0}, {1, 1, -1}, {0, 1, -1}, glass, "glass");
-    level.lights.push_back(test::sunLight({1.0f, -1.0f, 0.0f}, 1000.0f));
-    world::Camera camera;
-    camera.position = {0.0f, 3.0f, 0.0f};
-    camera.rotation = glm::angleAxis(-0.5f * 3.14159265f, glm::vec3(1.0f, 0.0f, 0.0f));
-    camera.yfov = 1.2f;
     const world::SplitLevel split = world::splitStaticDynamic(level);
     world::StaticGeometry seenGeometry;
     appendShadowlessSurfaces(split.staticGeometry, level.materials, seenGeometry);
@@ -272,19 +277,12 @@ TEST(FramePoses, ASurfaceLightPassesIsSeenByCameraRaysAlone) {
     const BakeScene scene(device, split.staticGeometry, materials);
     const BakeScene seen(device, seenGeometry, seenOnlyMaterials(materials));
     const BakeLights lights = makeLevelLights(scene, level, {}, std::nullopt);
-    const uint32_t size = 64;
     RayCounts rays;
     const ReferenceImage without =
-        renderReference(scene, lights, camera, size, size, 16, {}, nullptr, rays);
-    const ReferenceImage with =
-        renderReference(scene, lights, camera, size, size, 16, {}, nullptr, rays, 0, &seen);
-    const auto at = [&](const ReferenceImage& image, float x, float z, float h) {
-        const float extent = h * std::tan(0.5f * camera.yfov);
-        const uint32_t px = uint32_t((x / extent + 1.0f) * 0.5f * float(size));
-        const uint32_t py = uint32_t((1.0f + z / extent) * 0.5f * float(size));
-        return image.rgb[(size_t(py) * size + px) * 3 + 1];
-    };
-    const float kOpenFloor = 0.5f / 3.14159265f * 1000.0f * std::sqrt(0.5f);
+        renderReference(scene, lights, level.cameras[0], kPixels, kPixels, 16, {}, nullptr, rays);
+    const ReferenceImage with = renderReference(scene, lights, level.cameras[0], kPixels, kPixels,
+                                                16, {}, nullptr, rays, 0, &seen);
+    const auto at = floorPixel;
     const float kGlass = 0.8f / 3.14159265f * 1000.0f * std::sqrt(0.5f);
     EXPECT_NEAR(at(with, 0.5f, -0.5f, 2.0f), kGlass, 0.02f * kGlass);
     EXPECT_NEAR(at(without, 0.5f, -0.5f, 2.0f), kOpenFloor, 0.02f * kOpenFloor);
