@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -11,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "world/error.hpp"
+#include "world/file_read.hpp"
 #include "world/file_write.hpp"
 #include "world/gltf/gltf_builder.hpp"
 #include "world/images/image_decode.hpp"
@@ -29,21 +28,12 @@ json quat(glm::quat q) {
     return json::array({q.x, q.y, q.z, q.w});  // glTF's order
 }
 
-std::vector<uint8_t> readBytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {};
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-bool endsWith(const std::string& s, const std::string& tail) {
-    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-// The image's bytes: embedded, or its uri under the source's folder; empty when unreadable.
+// The image's bytes: embedded, or its uri under the source's folder (world::Error when that is
+// not a readable regular file).
 std::vector<uint8_t> imageBytes(const Image& image, const std::filesystem::path& sourceFolder) {
     if (!image.encodedBytes.empty()) return image.encodedBytes;
     if (image.uri.empty()) return {};
-    return readBytes(sourceFolder / image.uri);
+    return readRegularFile((sourceFolder / image.uri).string(), "an image");
 }
 
 // Each image the level uses, written under NAME_images/ as a PNG (the sky as .hdr); the uri the
@@ -58,24 +48,28 @@ std::vector<std::string> writeImages(const SourceLevel& level,
     for (size_t i = 0; i < level.images.size(); ++i) {
         const Image& image = level.images[i];
         const std::string where = image.name.empty() ? image.uri : image.name;
-        const std::vector<uint8_t> bytes = imageBytes(image, sourceFolder);
+        // Read and decode: a source image that fails drops its textures (counted); writing
+        // the copy is outside, so that a failed write fails the export.
+        const bool hdr = i == level.skyImage || image.uri.ends_with(".hdr");
+        HdrImage sky;
+        DecodedImage decoded;
         try {
-            if (bytes.empty()) throw Error(where + ": unreadable");
-            if (i == level.skyImage || endsWith(image.uri, ".hdr")) {
-                const HdrImage hdr = decodeHdrImage(bytes.data(), bytes.size(), where);
-                uris[i] = subfolder + "/" + std::to_string(i) + ".hdr";
-                writeHdrFile((folder / uris[i]).string(), hdr.width, hdr.height, hdr.rgb);
-            } else {
-                const DecodedImage decoded = decodeImage(bytes.data(), bytes.size(), where);
-                uris[i] = subfolder + "/" + std::to_string(i) + ".png";
-                writePngFile((folder / uris[i]).string(), decoded.width, decoded.height,
-                             decoded.rgba);
-            }
-            ++stats.images;
+            const std::vector<uint8_t> bytes = imageBytes(image, sourceFolder);
+            if (bytes.empty()) throw Error(where + ": no bytes");
+            if (hdr)
+                sky = decodeHdrImage(bytes.data(), bytes.size(), where);
+            else
+                decoded = decodeImage(bytes.data(), bytes.size(), where);
         } catch (const Error&) {
-            uris[i].clear();
             ++stats.imagesMissing;
+            continue;
         }
+        uris[i] = subfolder + "/" + std::to_string(i) + (hdr ? ".hdr" : ".png");
+        if (hdr)
+            writeHdrFile((folder / uris[i]).string(), sky.width, sky.height, sky.rgb);
+        else
+            writePngFile((folder / uris[i]).string(), decoded.width, decoded.height, decoded.rgba);
+        ++stats.images;
     }
     return uris;
 }
