@@ -110,9 +110,13 @@ BakeReport startReport(const world::SourceLevel& source, const BakeOptions& opti
     return report;
 }
 
-world::ProcessedTextures bakeTextures(const world::SourceLevel& source, BakeReport& report) {
+world::ProcessedTextures bakeTextures(const world::SourceLevel& source, const BakeOptions& options,
+                                      BakeReport& report) {
     const auto start = std::chrono::steady_clock::now();
-    world::ProcessedTextures textures = processLevelTextures(source, source.glossMips);
+    TextureStageOptions stageOptions;
+    stageOptions.facetTables = !options.noFacetTables;
+    world::ProcessedTextures textures =
+        processLevelTextures(source, source.glossMips, stageOptions);
     const TextureStageReport stage = textureStageReport(textures);
     report.stages.push_back({"textures", secondsSince(start), {}, stage.textures.size()});
     report.textureBytes = stage.totalBytes;
@@ -352,7 +356,7 @@ world::BakedLighting bakeLighting(const world::SourceLevel& source, const BakeWo
 BakeResult bakeLevel(const world::SourceLevel& source, const BakeOptions& options) {
     BakeResult result;
     result.report = startReport(source, options);
-    result.textures = bakeTextures(source, result.report);
+    result.textures = bakeTextures(source, options, result.report);
     const BakeWorld world(source, result.textures, options, result.report);
     CompiledForBake compiled = compileForBake(source, world, options, result.report);
     result.baked = bakeLighting(source, world, compiled, options, result.report);

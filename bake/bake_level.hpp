@@ -59,6 +59,9 @@ struct BakeOptions {
     // The baked direct light's shadow edges without their distance field (direct_edges.hpp): the
     // texels' bilinear visibility only, the baseline the field is measured against.
     bool noDirectEdges = false;
+    // Normal maps without their facet tables (facet_table.hpp): the footprint's facets from its
+    // moments alone, the baseline the tables are measured against.
+    bool noFacetTables = false;
     // Lightmap density per chart from a pilot pass (chart_density.hpp): charts whose light is
     // smooth get fewer texels. Off: every chart at the requested density. onelight-bake turns
     // it on unless --uniform-density.
@@ -88,9 +91,10 @@ struct BakeOptions {
 [[nodiscard]] ProbeCaptureSettings probeSettings(const BakeOptions& options);
 
 /// Stage 0, the texture stage: every mip the runtime uploads and the bake samples (whole in
-/// every part of a sharded bake: it is deterministic). Adds its stage to `report`.
+/// every part of a sharded bake: it is deterministic), with `options`' facet tables or not. Adds
+/// its stage to `report`.
 [[nodiscard]] world::ProcessedTextures bakeTextures(const world::SourceLevel& source,
-                                                    BakeReport& report);
+                                                    const BakeOptions& options, BakeReport& report);
 
 /// Stage 1: the Embree scene of the source's static world, shaded with the texture stage's
 /// mips, and everything the bake lights with. Built once per bake (once per part) and traced

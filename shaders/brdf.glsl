@@ -130,6 +130,13 @@ float specularFacets_Nakagami(float NxH2, float LoH, float a, float m) {
     return D_NakagamiSlopes(NxH2, a, m) * sqrt(1.0f - saturate(NxH2)) / (4.0f * max(LoH, 1e-4f));
 }
 
+// specularFacets_Beckmann for facets of a tabulated distribution: `D` the table's normal
+// distribution at h (bake/textures/facet_table.hpp: D(m) m.n integrates to 1 over the
+// hemisphere about the surface's normal n), NoH = h.n.
+float specularFacets_Table(float D, float NoH, float LoH) {
+    return D * max(NoH, 0.0f) / (4.0f * max(LoH, 1e-4f));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Visibility V = G / (NoL NoV)
 

@@ -77,7 +77,8 @@ const int TEXTURE_NORMAL = 2;
 const int TEXTURE_OCCLUSION = 3;
 const int TEXTURE_EMISSIVE = 4;
 const int TEXTURE_CAVITY = 5;  // R8, made from the normal map by the texture stage
-const int TEXTURE_SLOT_COUNT = 6;
+const int TEXTURE_FACETS = 6;  // R16F, the normal map's facet table (texture stage)
+const int TEXTURE_SLOT_COUNT = 7;
 
 // The tonemap pass's set 0.
 const int BINDING_TONEMAP_HDR = 0;  // sampler2D, the resolved pre-exposed frame
@@ -124,7 +125,7 @@ const int SECONDARY_ANY = 0;       // the draw's push says (a lightmap atlas, an
 const int SECONDARY_LIGHTMAP = 1;  // a static surface's lightmap atlas
 const int SECONDARY_OBJECT = 2;    // a dynamic object's grid record
 const int SECONDARY_CONSTANT = 3;  // neither: the constant ambient
-const int ALL_TEXTURES = 63;       // (1 << TEXTURE_SLOT_COUNT) - 1
+const int ALL_TEXTURES = 127;      // (1 << TEXTURE_SLOT_COUNT) - 1
 const int PRIMARY_NONE = 0;         // no draw has one
 const int PRIMARY_ANY = 1;          // the draw's push says which, of any type
 const int PRIMARY_DIRECTIONAL = 2;  // 2 + LIGHT_* (lighting.glsl): each draw's is of that type

@@ -147,10 +147,13 @@ vec3 diffuseEnergyWeight(int materialClass, vec3 f0, vec2 env) {
 // the texel's lobe. surfaceReflectance is it for one texel: the weight diffuseEnergyWeight,
 // bumpShare 0.
 // `gaussianShare` is the share of the facets' slopes that are Gaussian (Beckmann's), the rest on
-// a ring (facetSlopes_fromKurtosis): 1 where the slopes' shape is not known.
+// a ring (facetSlopes_fromKurtosis): 1 where the slopes' shape is not known. Where the footprint
+// holds a whole tile of the normal map, `tableShare` of the facets are the tile's own instead,
+// `tableFacets` (specularFacets_Table of its facet table at h; 0 and 0 where there is none).
 vec3 footprintReflectanceShaped(int materialClass, int diffuseModel, vec3 albedo,
                                 vec3 diffuseWeight, vec3 f0, float gloss, float bumpShare,
-                                float gaussianShare, float cavity, BrdfDots d) {
+                                float gaussianShare, float tableShare, float tableFacets,
+                                float cavity, BrdfDots d) {
     vec3 diffuse = albedo * diffuseWeight * (diffuseBrdf(diffuseModel, gloss, d) * d.NoL * cavity);
     if (materialClass == MATERIAL_LAMBERT) return diffuse;
     vec3 specular = specularLobe(RUNTIME_NDF, RUNTIME_VIS, RUNTIME_FRESNEL, f0, gloss, d);
@@ -161,6 +164,7 @@ vec3 footprintReflectanceShaped(int materialClass, int diffuseModel, vec3 albedo
             facets = facets * gaussianShare +
                      specularFacets_Nakagami(d.NxH2, d.LoH, a, FACET_RING_SHAPE) *
                          (1.0f - gaussianShare);
+        if (tableShare > 0.0f) facets = facets * (1.0f - tableShare) + tableFacets * tableShare;
         specular = specular * (1.0f - bumpShare) +
                    specularF(RUNTIME_FRESNEL, f0, d.LoH) * (facets * bumpShare);
     }
@@ -173,7 +177,7 @@ vec3 footprintReflectanceShaped(int materialClass, int diffuseModel, vec3 albedo
 vec3 footprintReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 diffuseWeight,
                           vec3 f0, float gloss, float bumpShare, float cavity, BrdfDots d) {
     return footprintReflectanceShaped(materialClass, diffuseModel, albedo, diffuseWeight, f0,
-                                      gloss, bumpShare, 1.0f, cavity, d);
+                                      gloss, bumpShare, 1.0f, 0.0f, 0.0f, cavity, d);
 }
 
 vec3 surfaceReflectance(int materialClass, int diffuseModel, vec3 albedo, vec3 f0, float gloss,

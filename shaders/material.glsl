@@ -288,6 +288,39 @@ float facetGaussianShare_fromKurtosis(float kurtosis, float s2, float b2) {
     return saturate((k - ringKurtosis) / (2.0f - ringKurtosis));
 }
 
+// The whole tile's facets (the normal map's facet table, bake/textures/facet_table.hpp) give the
+// facets' shape; the footprint gives their moments. A footprint's slopes are taken as the tile's,
+// moved to the footprint's mean slope and scaled to its lobe: a slope q of the footprint is the
+// tile's q' = (q - mean) k + tileMean, k = tileAlpha / alpha (the whole lobes' alphas, CLEAN's
+// alpha^2 being the mean square of the slopes and the texels' lobes), so that
+//   P(q) = k^2 P_tile(q'),   D(h) = P(q) / h.z^4 = k^2 D_tile(m') (m'.z / h.z)^4,
+// m' the unit normal of slope q'. Where the footprint holds the whole tile, mean = tileMean and
+// k = 1: the table itself. Where it holds a part, its moments are the part's (as the mixture of
+// facetGaussianShare_fromKurtosis keeps them) and its shape the tile's, whose slopes fill the
+// middle of their range as the tile's do and as no ring does: an egg crate's glint far away is
+// a filled fan, not a ring with a dark middle.
+// A footprint whose bumps' variance s2 nears the whole tile's, tileS2, is taken as the whole tile
+// (facetTableWhole 1: the tile's mean slope and k = 1), the filter's estimate of its mean slope
+// and lobe set aside: the texture filter takes a pixel's moments from mip texels of half a tile
+// and more, whose means swing with the tile's phase under the pixel, where the true footprint's
+// hold still; a table shifted by them drew a far glint as streaks (a moire of the pixels and the
+// tiles). 0 up to half the tile's variance, 1 from 0.9 of it to 1.2, and 0 again from 1.6 (a
+// footprint much rougher than the whole tile is a rough part of it, not all of it).
+float facetTableWhole(float s2, float tileS2) {
+    if (!(tileS2 > 0.0f)) return 0.0f;
+    float r = s2 / tileS2;
+    return saturate((r - 0.2f) / 0.7f) * saturate((1.6f - r) / 0.4f);
+}
+
+// `h` in the table's frame (x, y along the map's axes, z the surface's normal, z > 0): the
+// table's point c' = m'.xy in xy, and the factor z to multiply its density by.
+vec3 facetTableLookup(vec3 h, vec2 mean, vec2 tileMean, float k) {
+    vec2 q = (vec2(h.x, h.y) / h.z - mean) * k + tileMean;
+    float mz = inversesqrt(1.0f + dot(q, q));
+    float ratio = mz / h.z;
+    return vec3(q * mz, k * k * (ratio * ratio) * (ratio * ratio));
+}
+
 // The ring of a footprint's normals: FOOTPRINT_RING_COUNT unit normals about n, each tilted to
 // slope `radius` towards cos(phi) t + sin(phi) b (t, b unit and perpendicular to n), phi =
 // 2 pi k / count. At the RMS slope, the ring has the footprint's second moment of slopes, so a

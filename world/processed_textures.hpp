@@ -17,10 +17,18 @@ enum class TexelFormat : uint8_t {
     kRgba8Srgb = 0,   // VK_FORMAT_R8G8B8A8_SRGB: base colour, emissive
     kRgba8Unorm = 1,  // VK_FORMAT_R8G8B8A8_UNORM: normal, metallic-roughness, occlusion
     kR8Unorm = 2,     // VK_FORMAT_R8_UNORM: cavity
+    kR16Float = 3,    // VK_FORMAT_R16_SFLOAT: a normal map's facet table
 };
 
 [[nodiscard]] inline uint32_t bytesPerTexel(TexelFormat format) {
-    return format == TexelFormat::kR8Unorm ? 1u : 4u;
+    switch (format) {
+        case TexelFormat::kR8Unorm:
+            return 1u;
+        case TexelFormat::kR16Float:
+            return 2u;
+        default:
+            return 4u;
+    }
 }
 
 /// Mips of a texture of `width` x `height`: down to 1x1, mip k is max(1, width >> k) by
@@ -60,6 +68,10 @@ struct MaterialTextureSlots {
     uint32_t occlusion = kNoIndex;          // kRgba8Unorm: R
     uint32_t emissive = kNoIndex;           // kRgba8Srgb
     uint32_t cavity = kNoIndex;             // kR8Unorm, made from the normal map
+    // kR16Float: the normal map's facet table, the distribution of the whole tile's facet normals
+    // (bake/textures/facet_table.hpp), made with the normal and metallic-roughness pair of a
+    // material with a specular lobe.
+    uint32_t facets = kNoIndex;
     // The material's metallic and roughness factors and its normal scale are already in its
     // metallic-roughness and normal textures (the stage folds them in before filtering the
     // normals into the gloss): a reader multiplies by 1 instead of the material's factors.

@@ -100,6 +100,10 @@ std::vector<CommandOption> bakeOptions() {
                                     "the baked direct light's shadow edges from the texels' "
                                     "bilinear visibility, without their distance field",
                                     "a distance field near sharp edges")),
+        forwarded(world::flagOption("--no-facet-tables",
+                                    "normal maps without their facet tables: a far footprint's "
+                                    "facets from its slopes' moments alone",
+                                    "each specular normal map's whole-tile facet table")),
         forwarded(world::flagOption("--own-visibility",
                                     "take the map's own potentially visible set (a Quake 3 map's "
                                     "q3map2 -vis) instead of sampling one: a faster bake, a looser "
@@ -238,6 +242,7 @@ BakePlan resolveBakePlan(const world::ParsedOptions& parsed) {
     options.pathsOnly = parsed.has("--paths-only");
     options.noDenoise = parsed.has("--no-denoise");
     options.noDirectEdges = parsed.has("--no-direct-edges");
+    options.noFacetTables = parsed.has("--no-facet-tables");
     plan.lightmap = lightmapSettings(options);
     plan.grid = gridSettings(options);
     plan.probes = probeSettings(options);

@@ -150,7 +150,7 @@ void compileIntoWorkFolder(const world::SourceLevel& source, const BakePlan& pla
     options.shardIndex = 0;
     options.shardCount = 1;
     BakeReport report = startReport(source, options);
-    const world::ProcessedTextures textures = bakeTextures(source, report);
+    const world::ProcessedTextures textures = bakeTextures(source, options, report);
     CompiledForBake compiled;
     {
         const BakeWorld bakeWorld(source, textures, options, report);

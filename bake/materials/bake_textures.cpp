@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <glm/gtc/packing.hpp>
 
 namespace onelight::bake {
 namespace {
@@ -165,6 +166,10 @@ BakeTexture makeBakeTexture(const world::ProcessedTexture& processed) {
                 break;
             case world::TexelFormat::kR8Unorm:  // as the GPU reads R8: (r, 0, 0, 1)
                 t.texels[i] = glm::vec4(float(p[0]) / 255.0f, 0.0f, 0.0f, 1.0f);
+                break;
+            case world::TexelFormat::kR16Float:  // as the GPU reads R16F: (r, 0, 0, 1)
+                t.texels[i] = glm::vec4(glm::unpackHalf1x16(uint16_t(p[0] | (p[1] << 8))), 0.0f,
+                                        0.0f, 1.0f);
                 break;
         }
     }

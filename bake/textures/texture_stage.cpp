@@ -5,10 +5,12 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <tuple>
 #include <utility>
 
 #include "bake/parallel_for.hpp"
+#include "bake/textures/facet_table.hpp"
 #include "bake/textures/gloss_tables.hpp"
 #include "bake/textures/normal_gloss_mips.hpp"
 #include "shading.hpp"
@@ -466,7 +468,7 @@ world::ProcessedTexture metallicRoughnessTexture(const PairLevel0& level0,
 
 struct PairSlots {
     uint32_t normal = world::kNoIndex, metallicRoughness = world::kNoIndex,
-             cavity = world::kNoIndex;
+             cavity = world::kNoIndex, facets = world::kNoIndex;
 };
 
 PairSlots pairSlots(Stage& stage, uint32_t material, uint32_t normalIndex, const PairInputs& in,
@@ -478,8 +480,9 @@ PairSlots pairSlots(Stage& stage, uint32_t material, uint32_t normalIndex, const
     const auto cavityKey = std::make_pair(normalIndex, in.normalScale);
     const auto madeCavity = stage.cavityMade.find(cavityKey);
     const auto madePair = stage.pairMade.find(pairKey);
-    if (madePair != stage.pairMade.end())  // then its cavity was made with it
-        return {madePair->second, madePair->second + 1, madeCavity->second};
+    if (madePair != stage.pairMade.end())  // then its cavity was made with it, and its facets
+        return {madePair->second, madePair->second + 1, madeCavity->second,
+                lambert || !stage.options.facetTables ? world::kNoIndex : madePair->second + 2};
 
     const std::string label = materialLabel(stage.level, material);
     const uint64_t usedBefore = stage.budget.usedBytes;
@@ -497,12 +500,22 @@ PairSlots pairSlots(Stage& stage, uint32_t material, uint32_t normalIndex, const
     const NormalGlossChain chain = buildNormalGlossMips(
         level0.normalGloss, lambert ? world::GlossMipMethod::kBlit : stage.method);
     level0.normalGloss = {};  // the chain holds level 0; the planes are still needed
+    // A specular lobe's facets over the whole tile (Lambert has no lobe to shape).
+    std::optional<world::ProcessedTexture> facets;
+    if (!lambert && stage.options.facetTables)
+        facets = facetTableTexture(facetTable(chain[0], in.normal->sampler.wrapS == 10497,
+                                              in.normal->sampler.wrapT == 10497),
+                                   label + " facets");
     world::ProcessedTexture normal = normalTexture(chain, in.normal->sampler, label + " normal");
     world::ProcessedTexture mr =
         metallicRoughnessTexture(level0, chain, in.normal->sampler, label + " metallic-roughness");
     kept += normal.texels.size() + mr.texels.size();
     slots.normal = stage.pairMade[pairKey] = add(stage, std::move(normal));
     slots.metallicRoughness = add(stage, std::move(mr));
+    if (facets) {
+        kept += facets->texels.size();
+        slots.facets = add(stage, std::move(*facets));
+    }
     keepOnly(stage.budget, usedBefore, kept);
     return slots;
 }
@@ -543,6 +556,7 @@ world::ProcessedTextures processLevelTextures(const world::SourceLevel& level,
             slots.normal = pair.normal;
             slots.metallicRoughness = pair.metallicRoughness;
             slots.cavity = pair.cavity;
+            slots.facets = pair.facets;
             slots.factorsFolded = true;
             slots.baseRoughnessInAlpha = true;
             slots.slopeKurtosisInNormalAlpha = true;
@@ -579,6 +593,8 @@ const char* texelFormatName(world::TexelFormat format) {
             return "RGBA8";
         case world::TexelFormat::kR8Unorm:
             return "R8";
+        case world::TexelFormat::kR16Float:
+            return "R16F";
     }
     return "unknown";
 }

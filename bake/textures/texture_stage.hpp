@@ -35,8 +35,11 @@
 //    normal texture's sampler (REPEAT repeats; CLAMP_TO_EDGE clamps; MIRRORED_REPEAT clamps too:
 //    a mirrored field's height solve is the clamped one's, and its horizons differ only within
 //    the scan radius of the border), cavityMipChain, cavityToUnorm8: a kR8Unorm texture.
+//  - facets: a material with a specular lobe (not Lambert-only) also gets the facet table of
+//    its level 0 (facet_table.hpp: the whole tile's facet normals, the map read through its
+//    sampler's wrap), a kR16Float texture, unless options.facetTables is off.
 // Materials that agree on every input of these (normal texture and scale, metallic-roughness
-// texture, factors, packed occlusion, Lambert or not) share the three textures; the cavity is
+// texture, factors, packed occlusion, Lambert or not) share the three textures and the table; the cavity is
 // shared by every material with the same normal texture and scale.
 //
 // Skipped: a texture whose image is the level's sky image (SourceLevel::skyImage, an HDR, not a
@@ -47,7 +50,8 @@
 // before it is decoded, at its peak working set per texel (kPlainTextureBytesPerTexel,
 // kNormalMapBytesPerTexel, a metallic-roughness image at 4), and once a texture is made only
 // what it keeps (its mip chain's bytes) stays charged: textures are made one after another, so
-// the budget holds the output so far plus one working set.
+// the budget holds the output so far plus one working set. A facet table's bins (4.7 MiB at
+// most, whatever the map's size: facet_table.hpp) are not charged.
 //
 // Deterministic: every texel is a fixed-order function of the level's data, computed in
 // parallel rows with TBB (here and in normal_gloss_mips and cavity_map): the same level gives the
@@ -86,6 +90,8 @@ struct TextureStageOptions {
     HorizonScan cavityScan;         // cavityFromHeight's horizon scan
     float cavityDepthScale = 1.0f;  // heightFromNormals' depth scale
     uint64_t memoryLimitBytes = world::kMaxDecodedImageBytes;
+    // A facet table per specular normal map (facet_table.hpp); off for the baseline.
+    bool facetTables = true;
 };
 
 /// Every material texture of `level` processed, the normal and gloss mips by `method` (the level

@@ -31,15 +31,15 @@ const char* const kClassNames[4] = {"metal", "dielectric", "full", "lambert"};
 // A permutation's name: its class, then what it adds or leaves out ("lambert+double-sided
 // textures=base,emissive no-primary lightmap").
 std::string permutationName(const PermutationKey& k) {
-    static const char* const kSlots[6] = {"base",      "metal-rough", "normal",
-                                          "occlusion", "emissive",    "cavity"};
+    static const char* const kSlots[7] = {"base",     "metal-rough", "normal", "occlusion",
+                                          "emissive", "cavity",      "facets"};
     static const char* const kSecondary[4] = {"", " lightmap", " object", " constant"};
     std::string name = std::string(kClassNames[k.materialClass]) +
                        (k.doubleSided ? "+double-sided" : "") + (k.alphaMask ? "+alpha-mask" : "") +
                        (k.alphaBlend ? "+alpha-blend" : "");
     if (k.textures != uint32_t(glsl::ALL_TEXTURES)) {
         std::string slots;
-        for (int t = 0; t < 6; ++t)
+        for (int t = 0; t < glsl::TEXTURE_SLOT_COUNT; ++t)
             if (k.textures & (1u << t)) slots += std::string(slots.empty() ? "" : ",") + kSlots[t];
         name += " textures=" + (slots.empty() ? std::string("none") : slots);
     }

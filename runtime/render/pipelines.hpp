@@ -37,28 +37,30 @@ struct PermutationKey {
 };
 
 /// The key packed into a pipeline's map key: class bits 0-1, double-sided 2, alpha mask 3,
-/// texture slots 4-9, primary 10-12, secondary 13-14, effect lights 15, alpha blend 16 (so that
-/// blended draws sort after every opaque one), no primary shadow 17, no primary fade 18, direct
-/// edges 19.
+/// texture slots 4-10, primary 11-13, secondary 14-15, effect lights 16, alpha blend 17 (so that
+/// blended draws sort after every opaque one), no primary shadow 18, no primary fade 19, direct
+/// edges 20.
+inline constexpr uint32_t kKeyTextureBits = uint32_t(glsl::ALL_TEXTURES);
+static_assert(kKeyTextureBits == 127u, "texture slots fill key bits 4-10");
 [[nodiscard]] inline uint32_t permutationKey(const PermutationKey& k) {
     return k.materialClass | (k.doubleSided ? 4u : 0u) | (k.alphaMask ? 8u : 0u) |
-           (k.textures & 63u) << 4 | (k.primary & 7u) << 10 | (k.secondary & 3u) << 13 |
-           (k.effectLights ? 1u << 15 : 0u) | (k.alphaBlend ? 1u << 16 : 0u) |
-           (k.primaryShadow ? 0u : 1u << 17) | (k.primaryFade ? 0u : 1u << 18) |
-           (k.directEdges ? 1u << 19 : 0u);
+           (k.textures & kKeyTextureBits) << 4 | (k.primary & 7u) << 11 |
+           (k.secondary & 3u) << 14 | (k.effectLights ? 1u << 16 : 0u) |
+           (k.alphaBlend ? 1u << 17 : 0u) | (k.primaryShadow ? 0u : 1u << 18) |
+           (k.primaryFade ? 0u : 1u << 19) | (k.directEdges ? 1u << 20 : 0u);
 }
 [[nodiscard]] inline PermutationKey unpackPermutationKey(uint32_t key) {
     return {key & 3u,
             (key & 4u) != 0,
             (key & 8u) != 0,
-            (key >> 4) & 63u,
-            (key >> 10) & 7u,
-            (key >> 13) & 3u,
-            (key & (1u << 15)) != 0,
+            (key >> 4) & kKeyTextureBits,
+            (key >> 11) & 7u,
+            (key >> 14) & 3u,
             (key & (1u << 16)) != 0,
-            (key & (1u << 17)) == 0,
+            (key & (1u << 17)) != 0,
             (key & (1u << 18)) == 0,
-            (key & (1u << 19)) != 0};
+            (key & (1u << 19)) == 0,
+            (key & (1u << 20)) != 0};
 }
 [[nodiscard]] inline bool keyDoubleSided(uint32_t key) {
     return (key & 4u) != 0;
@@ -67,7 +69,7 @@ struct PermutationKey {
     return (key & 8u) != 0;
 }
 [[nodiscard]] inline bool keyAlphaBlend(uint32_t key) {
-    return (key & (1u << 16)) != 0;
+    return (key & (1u << 17)) != 0;
 }
 
 /// The pipeline key of a draw of `material` (0 with flat shading). A static surface: `primary`

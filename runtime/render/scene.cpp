@@ -50,6 +50,7 @@ TextureSlots processedSlotsOf(const world::MaterialTextureSlots& m) {
     slots[glsl::TEXTURE_OCCLUSION] = m.occlusion;
     slots[glsl::TEXTURE_EMISSIVE] = m.emissive;
     slots[glsl::TEXTURE_CAVITY] = m.cavity;
+    slots[glsl::TEXTURE_FACETS] = m.facets;
     return slots;
 }
 
@@ -201,6 +202,8 @@ VkFormat formatOf(world::TexelFormat format) {
             return VK_FORMAT_R8G8B8A8_UNORM;
         case world::TexelFormat::kR8Unorm:
             return VK_FORMAT_R8_UNORM;
+        case world::TexelFormat::kR16Float:
+            return VK_FORMAT_R16_SFLOAT;
     }
     return VK_FORMAT_R8G8B8A8_UNORM;
 }

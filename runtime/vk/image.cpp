@@ -23,6 +23,8 @@ uint32_t bytesPerTexel(VkFormat format) {
     switch (format) {
         case VK_FORMAT_R8_UNORM:
             return 1;
+        case VK_FORMAT_R16_SFLOAT:
+            return 2;
         case VK_FORMAT_R8G8B8A8_UNORM:
         case VK_FORMAT_R8G8B8A8_SRGB:
         case VK_FORMAT_B8G8R8A8_UNORM:

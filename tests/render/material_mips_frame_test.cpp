@@ -198,13 +198,12 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
             EXPECT_LE(e[method].rms, 0.5 * e[0].rms) << "band " << b << ", method " << method;
         // CLEAN, the default, with the footprint's shading (shaders/material.glsl, "A footprint's
         // bumps": the normals' spread as unmasked facets, the energy split over a ring of the
-        // footprint's normals at the texels' own gloss): 0.89-1.04 here, against 1.11-1.23
-        // before it and Black Ops' 1.06-1.27 then; Black Ops, whose lobe has about half the
-        // slopes' width, is not what the footprint is built on and reads 1.30-1.85 with it.
-        // (Before the frame and the reference bent the same normals, normal_withValidReflection,
-        // Black Ops read 1.45-1.53 and CLEAN 1.35-1.42.)
-        EXPECT_LT(e[3].rms, 1.15) << "band " << b;
-        EXPECT_LT(e[3].rms, e[1].rms) << "band " << b;
+        // footprint's normals at the texels' own gloss) and the facets' shape from the whole
+        // tile's facet table (bake/textures/facet_table.hpp): 0.43-0.67 here (2026-12-07),
+        // against 0.89-1.04 with the moments' mixture of Gaussian and ring facets before the
+        // table, 1.11-1.23 before the footprint. Black Ops and WWII read the same table where a
+        // footprint holds whole bumps, so they now come out within 0.02 of CLEAN in these bands.
+        EXPECT_LT(e[3].rms, 0.75) << "band " << b;
     }
 }
 

@@ -152,7 +152,8 @@ TEST(RenderSpecialization, DrawsWithAndWithoutPrimariesLightmapsAndGridLightChan
 }
 
 TEST(RenderSpecialization, MaterialsWithSomeTextureSlotsChangeNoPixel) {
-    // A bump-mapped glossy floor (normal map and the cavity map made from it) under a low sun.
+    // A bump-mapped glossy floor (normal map, and the cavity map and facet table made from it)
+    // under a low sun.
     const std::string gltf = writeBumpyGlossyFloor(outputDir() + "/specialized_bumps", "black_ops",
                                                    float(kWidth) / float(kHeight));
     const assets::LoadedLevel level =
@@ -162,7 +163,8 @@ TEST(RenderSpecialization, MaterialsWithSomeTextureSlotsChangeNoPixel) {
     std::vector<std::string> permutations;
     expectSameFrame(level, inputs, permutations);
     // The floor's slots: no base colour texture, so its fetch is compiled out.
-    EXPECT_TRUE(test::anyNamed(permutations, "textures=metal-rough,normal,cavity directional"));
+    EXPECT_TRUE(
+        test::anyNamed(permutations, "textures=metal-rough,normal,cavity,facets directional"));
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 
 #include <glm/glm.hpp>
 
+#include "bake/textures/facet_table.hpp"
 #include "bake/textures/normal_gloss_mips.hpp"
 #include "bake/textures/texture_stage.hpp"
 #include "shading.hpp"
@@ -359,6 +360,49 @@ TEST(TextureStage, TheNormalTexturesAlphaIsTheSlopesKurtosis) {
         EXPECT_NEAR(texelOf(normal, level, 0, 0)[3], 0.125 * 255.0, 4.0) << "level " << level;
 }
 
+TEST(TextureStage, ASpecularNormalMapGetsItsFacetTable) {
+    // The whole tile's facets (bake/textures/facet_table.hpp), made with the pair: one R16 float
+    // table per pair, shared by the materials that share it; a Lambert material has no lobe to
+    // shape and gets none. Its mip 0 is facetTable of the map read through its sampler.
+    LevelBuilder b;
+    const uint32_t bumps = b.texture(eggCrate(32, 8, 0.3), "egg crate");
+    for (const char* name : {"glossy", "glossy too"}) {
+        world::Material& m = b.material(name);
+        m.normalTexture = bumps;
+        m.roughness = 0.2f;
+        m.materialClass = world::MaterialClass::kDielectric;
+    }
+    world::Material& lambert = b.material("matte");
+    lambert.normalTexture = bumps;
+    lambert.materialClass = world::MaterialClass::kLambert;
+    const ProcessedTextures out = bake::processLevelTextures(b.level, GlossMipMethod::kClean);
+    expectWellFormed(out);
+    const uint32_t facets = out.materials[0].facets;
+    ASSERT_NE(facets, kNoIndex);
+    EXPECT_EQ(out.materials[1].facets, facets);
+    EXPECT_EQ(out.materials[2].facets, kNoIndex);
+    const ProcessedTexture& table = out.textures[facets];
+    EXPECT_EQ(table.format, TexelFormat::kR16Float);
+    EXPECT_EQ(table.width, uint32_t(bake::kFacetTableSize));
+    EXPECT_EQ(table.sampler.wrapS, kClampToEdge);
+    EXPECT_NE(table.name.find("facets"), std::string::npos) << table.name;
+    // The table of the stage's own level 0 (the map's normals, the roughness factor's gloss).
+    bake::NormalGlossLevel level0;
+    level0.width = level0.height = 32;
+    const ProcessedTexture& normal = out.textures[out.materials[0].normal];
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const uint8_t* t = texelOf(normal, 0, x, y);
+            level0.normals.push_back(glsl::normal_fromTangentSpace(
+                glm::vec3(t[0], t[1], t[2]) / 255.0f, 1.0f, glm::vec3(0.0f, 0.0f, 1.0f),
+                glm::vec3(1.0f, 0.0f, 0.0f), 1.0f));
+            level0.gloss.push_back(glsl::gloss_fromRoughness(0.2f));
+        }
+    const bake::FacetTable expected = bake::facetTable(level0, true, true);
+    const ProcessedTexture made = bake::facetTableTexture(expected, table.name);
+    EXPECT_EQ(made.texels, table.texels);
+}
+
 TEST(TextureStage, BumpsBecomeRoughnessInTheDeeperMipsUnlessBlitted) {
     const double factor = 0.2;
     const std::vector<double> blit = deepestRoughness(GlossMipMethod::kBlit, factor);
@@ -422,7 +466,7 @@ TEST(TextureStage, NormalsRoundTripAndTheScaleIsFolded) {
     EXPECT_EQ(out.materials[2].cavity, out.materials[0].cavity);
     EXPECT_NE(out.materials[3].metallicRoughness, out.materials[0].metallicRoughness);
     EXPECT_EQ(out.materials[3].cavity, out.materials[0].cavity);
-    EXPECT_EQ(out.textures.size(), 2u + 3u * 2u);  // two cavities, three pairs
+    EXPECT_EQ(out.textures.size(), 2u + 3u * 3u);  // two cavities, three pairs and their facets
 }
 
 TEST(TextureStage, AMetallicRoughnessOfAnotherSizeIsResampledBilinearly) {
@@ -471,7 +515,7 @@ TEST(TextureStage, PackedOcclusionAndAResampledMetallicRoughness) {
             EXPECT_NEAR(t[1], 0.5 * 200.0, 1.0);
             EXPECT_EQ(t[2], 50);
         }
-    EXPECT_EQ(out.textures.size(), 3u);  // cavity, normal, metallic-roughness
+    EXPECT_EQ(out.textures.size(), 4u);  // cavity, normal, metallic-roughness, facets
 }
 
 TEST(TextureStage, TinyAndOddSizes) {
@@ -575,16 +619,17 @@ TEST(TextureStage, ErrorsNameTheLevelAndTheImage) {
 
 TEST(TextureStage, TheBudgetHoldsWhatTexturesKeepPlusOneWorkingSet) {
     // Two 64x64 normal maps: each needs 64^2 * kNormalMapBytesPerTexel = 0.92 MB while it is
-    // made and keeps 49149 bytes (normal, metallic-roughness, cavity) after.
+    // made and keeps 92839 bytes (normal, metallic-roughness, cavity: 49149; its facet table,
+    // 128x128 R16 float with its mips: 43690) after.
     LevelBuilder b;
     b.material("a").normalTexture = b.texture(eggCrate(64, 16, 0.2), "a");
     b.material("b").normalTexture = b.texture(eggCrate(64, 8, 0.2), "b");
     bake::TextureStageOptions options;
     options.cavityScan.radius = 4.0f;
-    options.memoryLimitBytes = uint64_t(64 * 64 * bake::kNormalMapBytesPerTexel) + 49149 + 100;
+    options.memoryLimitBytes = uint64_t(64 * 64 * bake::kNormalMapBytesPerTexel) + 92839 + 100;
     const ProcessedTextures out =
         bake::processLevelTextures(b.level, GlossMipMethod::kWwii, options);
-    EXPECT_EQ(bake::textureStageReport(out).totalBytes, 2u * 49149u);
+    EXPECT_EQ(bake::textureStageReport(out).totalBytes, 2u * 92839u);
     options.memoryLimitBytes -= 200;
     expectErrorNaming(b.level, {"image 1 'b'"}, options);
 }

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -133,6 +134,7 @@ void expectSame(const world::ProcessedTextures& a, const world::ProcessedTexture
         EXPECT_EQ(x.occlusion, y.occlusion) << m;
         EXPECT_EQ(x.emissive, y.emissive) << m;
         EXPECT_EQ(x.cavity, y.cavity) << m;
+        EXPECT_EQ(x.facets, y.facets) << m;
         EXPECT_EQ(x.factorsFolded, y.factorsFolded) << m;
         EXPECT_EQ(x.baseRoughnessInAlpha, y.baseRoughnessInAlpha) << m;
         EXPECT_EQ(x.slopeKurtosisInNormalAlpha, y.slopeKurtosisInNormalAlpha) << m;
@@ -145,13 +147,13 @@ TEST(TextureSection, RoundTripIsByteExact) {
     EXPECT_EQ(section.id, kSectionProcessedTextures);
     EXPECT_EQ(section.elementSize, 1u);
     EXPECT_EQ(section.count, section.bytes.size());
-    // Records 24 + 3 x 48 + 2 x 28 = 224, names 41 (to 265, padded to 272), then the chains
+    // Records 24 + 3 x 48 + 2 x 32 = 232, names 41 (to 273, padded to 280), then the chains
     // padded to 8: 44 -> 48, 340 -> 344, 18 -> 24.
-    EXPECT_EQ(section.bytes.size(), 272u + 48 + 344 + 24);
+    EXPECT_EQ(section.bytes.size(), 280u + 48 + 344 + 24);
     EXPECT_EQ(read<uint64_t>(section, textureField(0, offsetof(DiskProcessedTexture, firstByte))),
-              272u);
+              280u);
     EXPECT_EQ(read<uint64_t>(section, textureField(2, offsetof(DiskProcessedTexture, firstByte))),
-              272u + 48 + 344);
+              280u + 48 + 344);
 
     const TextureContents read =
         decodeTextureSection(std::span(&section, 1), levelWithMaterials(2), "test.olpak");
@@ -268,11 +270,11 @@ TEST(TextureSection, RejectsTexelsOutsideTheirPlace) {
         read<uint64_t>(s, offsetof(DiskProcessedTexturesHeader, texelBytes));
     cut =
         patched<uint64_t>(cut, offsetof(DiskProcessedTexturesHeader, texelBytes), texelBytes - 24);
-    expectRejected(cut, "texture 2: texels [664, +18) run past the end of the section (664 bytes)");
+    expectRejected(cut, "texture 2: texels [672, +18) run past the end of the section (672 bytes)");
     expectRejected(patched<uint64_t>(s, textureField(0, firstByte), 200),
                    "texture 0: firstByte 200 overlaps the section's records and names");
-    expectRejected(patched<uint64_t>(s, textureField(1, firstByte), 328),
-                   "texture 1: firstByte 328; expected 320");
+    expectRejected(patched<uint64_t>(s, textureField(1, firstByte), 336),
+                   "texture 1: firstByte 336; expected 328");
     expectRejected(patched<uint64_t>(s, textureField(2, firstByte), ~uint64_t(0)),
                    "texture 2: firstByte 18446744073709551615");
 }
@@ -286,8 +288,8 @@ TEST(TextureSection, RejectsHiddenOrNonZeroBytes) {
     expectRejected(longer, "header: texelBytes 424; expected 416");
     // ... and the header disagreeing.
     expectRejected(resized(s, -8), "header: texelBytes 416; expected 424");
-    expectRejected(patched<uint8_t>(s, 272 + 44, 1), "texture 0: the padding after its texels");
-    expectRejected(patched<uint8_t>(s, 270, 1), "header: the padding after the names");
+    expectRejected(patched<uint8_t>(s, 280 + 44, 1), "texture 0: the padding after its texels");
+    expectRejected(patched<uint8_t>(s, 276, 1), "header: the padding after the names");
 }
 
 TEST(TextureSection, RejectsAMaterialCountMismatch) {
@@ -301,8 +303,9 @@ TEST(TextureSection, RejectsAnUnknownEnumeration) {
     const RawSection s = encodeTextureSection(sampleTextures());
     expectRejected(patched<uint8_t>(s, offsetof(DiskProcessedTexturesHeader, method), 4),
                    "header: method 4; expected 0 (blit), 1 (Black Ops), 2 (WWII) or 3 (CLEAN)");
-    expectRejected(patched<uint8_t>(s, textureField(1, offsetof(DiskProcessedTexture, format)), 3),
-                   "texture 1: format 3");
+    expectRejected(patched<uint8_t>(s, textureField(1, offsetof(DiskProcessedTexture, format)), 4),
+                   "texture 1: format 4; expected 0 (RGBA8 sRGB), 1 (RGBA8 UNORM), 2 (R8 UNORM) or "
+                   "3 (R16 float)");
     expectRejected(
         patched<uint16_t>(s, textureField(0, offsetof(DiskProcessedTexture, magFilter)), 9730),
         "texture 0: magFilter 9730");
@@ -330,6 +333,58 @@ TEST(TextureSection, RejectsAnUnknownEnumeration) {
     // ... and this one of the normal texture.
     expectRejected(patched<uint8_t>(s, materialField(1, kurtosis), 1),
                    "material 1: slopeKurtosisInNormalAlpha 1 without a normal texture; expected 0");
+}
+
+/// A material whose facet table (R16 float, 4x4: 21 texels of 2 bytes) holds `texel` at texel 5
+/// of its chain, beside an RGBA8 normal texture.
+world::ProcessedTextures facetTextures(uint16_t texel) {
+    world::ProcessedTextures p;
+    p.method = world::GlossMipMethod::kClean;
+    p.textures.push_back(texture("bumps normal", TexelFormat::kRgba8Unorm, 2, 2, 1));
+    world::ProcessedTexture facets = texture("bumps facets", TexelFormat::kR16Float, 4, 4, 0);
+    for (size_t i = 0; i < facets.texels.size(); i += 2) {
+        const uint16_t half = i == 10 ? texel : uint16_t(0x3c00u + i);  // 1.0 and up
+        std::memcpy(facets.texels.data() + i, &half, 2);
+    }
+    p.textures.push_back(facets);
+    world::MaterialTextureSlots bumps;
+    bumps.normal = 0;
+    bumps.facets = 1;
+    p.materials.push_back(bumps);
+    return p;
+}
+
+TEST(TextureSection, AFacetTableRoundTripsAndItsTexelsAreChecked) {
+    const world::ProcessedTextures in = facetTextures(0x3555u);  // 1/3
+    const RawSection s = encodeTextureSection(in);
+    const TextureContents out = decodeTextureSection(std::span(&s, 1), levelWithMaterials(1), "t");
+    expectSame(in, out.textures);
+    EXPECT_EQ(out.textures.materials[0].facets, 1u);
+    // A density that is not finite or is negative would reach the pixels that read it.
+    for (const auto& [bits, what] : {std::pair<uint16_t, const char*>{0x7c00u, "not finite"},
+                                     {0x7e00u, "not finite"},
+                                     {0xbc00u, "negative"}}) {
+        const RawSection bad = encodeTextureSection(facetTextures(bits));
+        expectRejected(bad, std::string("texture 1: texel 5 of its chain is ") + what,
+                       levelWithMaterials(1));
+    }
+    // Negative zero is zero.
+    const RawSection zero = encodeTextureSection(facetTextures(0x8000u));
+    EXPECT_NO_THROW((void)decodeTextureSection(std::span(&zero, 1), levelWithMaterials(1), "t"));
+    // The slot takes an R16 float table, and the normal slot no table.
+    const size_t facets = kHeader + 2 * sizeof(DiskProcessedTexture) +
+                          offsetof(DiskMaterialTextureSlots, facets);
+    expectRejected(patched<uint32_t>(s, facets, 0),
+                   "material 0: facets is texture 0 'bumps normal' of format RGBA8 UNORM; "
+                   "expected R16 float",
+                   levelWithMaterials(1));
+    const size_t normal = kHeader + 2 * sizeof(DiskProcessedTexture) +
+                          offsetof(DiskMaterialTextureSlots, normal);
+    expectRejected(patched<uint32_t>(s, normal, 1),
+                   "material 0: normal is texture 1 'bumps facets' of format R16 float",
+                   levelWithMaterials(1));
+    expectRejected(patched<uint32_t>(s, facets, 2), "material 0: facets 2; expected a texture index < 2",
+                   levelWithMaterials(1));
 }
 
 TEST(TextureSection, RejectsANonZeroReservedField) {
@@ -364,8 +419,8 @@ TEST(TextureSection, RejectsCountsBeyondTheSection) {
     const RawSection s = encodeTextureSection(sampleTextures());
     expectRejected(
         patched<uint32_t>(s, offsetof(DiskProcessedTexturesHeader, textureCount), 0xFFFFFFFFu),
-        "header: textureCount 4294967295, materialCount 2, nameBytes 41 need 206158430288 bytes; "
-        "the section has 688");
+        "header: textureCount 4294967295, materialCount 2, nameBytes 41 need 206158430296 bytes; "
+        "the section has 696");
     expectRejected(
         patched<uint32_t>(s, offsetof(DiskProcessedTexturesHeader, materialCount), 0xFFFFFFFFu),
         "materialCount 4294967295");
@@ -379,7 +434,7 @@ TEST(TextureSection, RejectsATruncatedHeader) {
     expectRejected(resized(s, int64_t(s.bytes.size()) - 10),
                    "10 bytes; expected element size 1, count == bytes, and a header of 24 bytes");
     s.count += 1;
-    expectRejected(s, "count 689, 688 bytes");
+    expectRejected(s, "count 697, 696 bytes");
     s = encodeTextureSection(sampleTextures());
     s.elementSize = 4;
     expectRejected(s, "element size 4");

@@ -27,9 +27,9 @@ static_assert(std::endian::native == std::endian::little,
               "as they are; add byte swaps to port");
 
 inline constexpr uint32_t kMagic = 0x4B504C4Fu;  // "OLPK" as the first four bytes
-inline constexpr uint32_t kVersion = 8;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
+inline constexpr uint32_t kVersion = 9;  // 2: DiskLevel holds the sky; 3: its image; 4: models;
                                          // 5: items; 6: movers; 7: lightmap texels' direct part;
-                                         // 8: its shadow edge
+                                         // 8: its shadow edge; 9: a normal map's facet table
 using world::kNoIndex;                   // world/no_index.hpp
 inline constexpr uint32_t kMaxSections = 64;
 inline constexpr uint32_t kSectionAlignment = 8;
@@ -525,7 +525,8 @@ static_assert(sizeof(DiskProcessedTexturesHeader) == 24);
 struct DiskProcessedTexture {
     uint32_t nameOffset;  // bytes into the section's names, == the previous names' lengths
     uint32_t nameLength;  // bytes, <= kMaxProcessedTextureNameBytes; what it was made from
-    uint8_t format;       // world::TexelFormat: 0 RGBA8 sRGB, 1 RGBA8 UNORM, 2 R8 UNORM
+    uint8_t format;       // world::TexelFormat: 0 RGBA8 sRGB, 1 RGBA8 UNORM, 2 R8 UNORM,
+                          // 3 R16 float (every texel finite and >= 0)
     uint8_t reserved[3];  // 0
     uint32_t width;       // texels of mip 0, 1..world::kMaxImageExtent (16384)
     uint32_t height;      // texels of mip 0, 1..world::kMaxImageExtent
@@ -547,6 +548,8 @@ struct DiskMaterialTextureSlots {
     uint32_t occlusion;            // RGBA8 UNORM (R) or kNoIndex
     uint32_t emissive;             // RGBA8 sRGB or kNoIndex
     uint32_t cavity;               // R8 UNORM (made from the normal map) or kNoIndex
+    uint32_t facets;               // R16 float, the normal map's facet table
+                                   // (bake/textures/facet_table.hpp), or kNoIndex
     uint8_t factorsFolded;         // 0 or 1: the material's metallic and roughness factors and
                                    // normal scale are already in its textures
     uint8_t baseRoughnessInAlpha;  // 0 or 1: A of its metallic-roughness texture is the
@@ -556,7 +559,7 @@ struct DiskMaterialTextureSlots {
                                          // the slopes under each mip texel, as (k - 1) / 2
     uint8_t reserved[1];                 // 0
 };
-static_assert(sizeof(DiskMaterialTextureSlots) == 28);
+static_assert(sizeof(DiskMaterialTextureSlots) == 32);
 
 // ---------------------------------------------------------------------------------------------
 // Error budget (id 39, optional, only with 32..34), written by `onelight-bake --error-budget E`

@@ -857,6 +857,7 @@ inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visib
     d.occlusion = s.occlusion;
     d.emissive = s.emissive;
     d.cavity = s.cavity;
+    d.facets = s.facets;
     d.factorsFolded = s.factorsFolded ? 1 : 0;
     d.baseRoughnessInAlpha = s.baseRoughnessInAlpha ? 1 : 0;
     d.slopeKurtosisInNormalAlpha = s.slopeKurtosisInNormalAlpha ? 1 : 0;
@@ -872,6 +873,7 @@ inline void fromDiskVisibilityHeader(const DiskVisibilityHeader& d, world::Visib
     s.occlusion = d.occlusion;
     s.emissive = d.emissive;
     s.cavity = d.cavity;
+    s.facets = d.facets;
     s.factorsFolded = d.factorsFolded != 0;
     s.baseRoughnessInAlpha = d.baseRoughnessInAlpha != 0;
     s.slopeKurtosisInNormalAlpha = d.slopeKurtosisInNormalAlpha != 0;

@@ -42,6 +42,8 @@ const char* formatName(TexelFormat format) {
             return "RGBA8 UNORM";
         case TexelFormat::kR8Unorm:
             return "R8 UNORM";
+        case TexelFormat::kR16Float:
+            return "R16 float";
     }
     return "unknown";
 }
@@ -105,9 +107,10 @@ void check(const DiskProcessedTexture& d, uint64_t nextName, uint32_t nameBytes,
         throw world::Error(at + "name [" + std::to_string(d.nameOffset) + ", +" +
                            std::to_string(d.nameLength) + ") is outside the section's " +
                            std::to_string(nameBytes) + " name bytes");
-    if (d.format > uint8_t(TexelFormat::kR8Unorm))
+    if (d.format > uint8_t(TexelFormat::kR16Float))
         throw world::Error(at + "format " + std::to_string(d.format) +
-                           "; expected 0 (RGBA8 sRGB), 1 (RGBA8 UNORM) or 2 (R8 UNORM)");
+                           "; expected 0 (RGBA8 sRGB), 1 (RGBA8 UNORM), 2 (R8 UNORM) or 3 (R16 "
+                           "float)");
     checkReserved(at, d.reserved);
     const std::string extents = "; expected 1.." + std::to_string(world::kMaxImageExtent);
     if (d.width == 0 || d.width > world::kMaxImageExtent)
@@ -147,6 +150,20 @@ void check(const DiskProcessedTexture& d, uint64_t nextName, uint32_t nameBytes,
                            std::to_string(sectionBytes) + " bytes)");
 }
 
+/// Throws unless every texel of an R16 float chain is finite and >= 0 (a facet table's
+/// densities): an infinity or a NaN would reach the pixels that read it.
+void checkHalfTexels(const world::ProcessedTexture& t, const std::string& at) {
+    for (size_t i = 0; i + 1 < t.texels.size(); i += 2) {
+        const uint16_t half = uint16_t(t.texels[i] | (t.texels[i + 1] << 8));
+        const bool negative = (half & 0x8000u) != 0 && (half & 0x7fffu) != 0;
+        if ((half & 0x7c00u) == 0x7c00u || negative)
+            throw world::Error(at + "texel " + std::to_string(i / 2) + " of its chain is " +
+                               (negative ? "negative" : "not finite") +
+                               " (R16 float bits " + std::to_string(half) +
+                               "); expected a finite value >= 0");
+    }
+}
+
 /// The format each of a material's slots needs, in DiskMaterialTextureSlots' order.
 struct SlotRule {
     const char* name;
@@ -160,6 +177,7 @@ constexpr SlotRule kSlotRules[] = {
     {"occlusion", &DiskMaterialTextureSlots::occlusion, TexelFormat::kRgba8Unorm},
     {"emissive", &DiskMaterialTextureSlots::emissive, TexelFormat::kRgba8Srgb},
     {"cavity", &DiskMaterialTextureSlots::cavity, TexelFormat::kR8Unorm},
+    {"facets", &DiskMaterialTextureSlots::facets, TexelFormat::kR16Float},
 };
 
 /// Throws unless every slot of `d` (at `at`) is none or a texture of `textures` in the format
@@ -305,6 +323,8 @@ TextureContents decodeTextureSection(std::span<const RawSection> sections,
         if (!allZero(bytes, end, padded < size ? padded : size))
             throw world::Error(atTexture + "the padding after its texels is not zero");
         out.textures[i] = fromDisk(d, names, bytes);
+        if (out.textures[i].format == TexelFormat::kR16Float)
+            checkHalfTexels(out.textures[i], atTexture);
         nextName += d.nameLength;
         nextByte = padded;
     }

@@ -250,6 +250,14 @@ struct Footprint {
     float centreWeight;                         // 1 - FOOTPRINT_RING_COUNT ringWeight
     vec3 centreDiffuseWeight;                   // diffuseEnergyWeight there (0 at weight 0)
     vec2 env;  // the mean (scale, bias) of their lobes, less what the surface's plane cuts
+    // Whether the facets are read from the normal map's facet table (1) or the mixture (0); the
+    // tangent frame the table is in (t, b along the map's x and y, n the surface's normal); the
+    // footprint's mean slope and the tile's in that frame, and the table's scale
+    // (facetTableLookup, shaders/material.glsl).
+    float tableShare;
+    vec3 tableT, tableB, tableN;
+    vec2 tableMean, tileMean;
+    float tableScale;
 };
 
 // Below this share the footprint is one texel: the ring's normals would be the pixel's own.
@@ -263,6 +271,7 @@ Footprint footprintOf(vec3 n, vec3 ns, vec3 v, float gloss, float baseGloss, flo
     Footprint f;
     f.bumpShare = bumpShare(gloss, baseGloss);
     f.env = vec2(0.0);
+    f.tableShare = 0.0;
     vec3 t = v - n * dot(n, v);
     float tl = length(t);
     if (f.bumpShare < MIN_BUMP_SHARE || tl < 1e-6) {
@@ -418,9 +427,20 @@ vec3 directReflectance(vec3 albedo, vec3 f0, float gloss, vec2 directEnv, Footpr
                        float cavity, vec3 l, BrdfDots d) {
     if (footprint.bumpShare == 0.0)
         return surfaceReflectance(MATERIAL_CLASS, DIFFUSE_MODEL, albedo, f0, gloss, directEnv, cavity, d);
+    float tableFacets = 0.0;
+    if (footprint.tableShare > 0.0) {
+        vec3 h = normalize(l + normalize(frame.cameraPosition.xyz - inWorldPosition));
+        vec3 ht = vec3(dot(h, footprint.tableT), dot(h, footprint.tableB), dot(h, footprint.tableN));
+        if (ht.z > 1e-4) {
+            vec3 c = facetTableLookup(ht, footprint.tableMean, footprint.tileMean, footprint.tableScale);
+            float D = textureLod(facetTexture, c.xy * 0.5 + 0.5, 0.0).r * c.z;
+            tableFacets = specularFacets_Table(D, ht.z, d.LoH);
+        }
+    }
     return footprintReflectanceShaped(MATERIAL_CLASS, DIFFUSE_MODEL, albedo,
                                       footprintDiffuseWeight(footprint, l, d.NoL), f0, gloss,
-                                      footprint.bumpShare, footprint.facetGaussianShare, cavity, d);
+                                      footprint.bumpShare, footprint.facetGaussianShare,
+                                      footprint.tableShare, tableFacets, cavity, d);
 }
 
 // The radiance primary light `light` (of type `type`) reflects at p, times its shadow.
@@ -486,9 +506,14 @@ void main() {
     vec3 v = toCamera / max(viewDistance, 1e-6);
     vec3 n = geometricNormal;
     float slopeKurtosis = 0.0;  // the normal map's slopes under this pixel, where it holds them
+    vec3 mapT = vec3(0.0), mapB = vec3(0.0);  // the normal map's tangent frame (0: none)
     if (materialHas(m, TEXTURE_NORMAL)) {
         vec3 t = inTangent.xyz - geometricNormal * dot(geometricNormal, inTangent.xyz);
         float tl = length(t);
+        if (tl > 1e-6) {
+            mapT = t / tl;
+            mapB = cross(geometricNormal, mapT) * inTangent.w;
+        }
         vec4 normalTexel = texture(normalTexture, inUv0);
         vec3 texel = normalTexel.rgb;
         if (hasMaterialFlag(m, MATERIAL_FLAG_SLOPE_KURTOSIS)) slopeKurtosis = 1.0 + 2.0 * normalTexel.a;
@@ -514,6 +539,28 @@ void main() {
     footprint.bumpShare = 0.0;
     if (MATERIAL_PIPELINE == 1 && MATERIAL_CLASS != MATERIAL_LAMBERT && materialHas(m, TEXTURE_NORMAL))
         footprint = footprintOf(n, geometricNormal, v, gloss, baseGloss, slopeKurtosis, f0);
+    // The footprint's facets take the shape of the whole tile's, the normal map's facet table,
+    // at the footprint's mean slope and lobe (facetTableLookup, shaders/material.glsl): the tile's
+    // lobe and mean normal are its coarsest mip's.
+    if (MATERIAL_PIPELINE == 1 && footprint.bumpShare > 0.0 && materialHas(m, TEXTURE_FACETS) &&
+        mapT != vec3(0.0)) {
+        vec4 tileTexel = textureLod(metallicRoughnessTexture, inUv0, 16.0);
+        vec2 tileMr = metallicRoughness_fromTexel(MATERIAL_CLASS, m.params.x, m.params.y, tileTexel);
+        float tileGloss = materialPoint(MATERIAL_CLASS, base.rgb, tileMr.x, tileMr.y, m.f0Gloss.x).gloss;
+        vec3 tileNormal = normal_fromTangentSpace(textureLod(normalTexture, inUv0, 16.0).rgb, m.params.z,
+                                                  vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), 1.0);
+        vec3 mean = vec3(dot(n, mapT), dot(n, mapB), dot(n, geometricNormal));
+        float tileBaseGloss = max(gloss_fromRoughness(m.params.y * tileTexel.a), tileGloss);
+        float whole = facetTableWhole(bumpSlopeVariance(gloss, baseGloss),
+                                      bumpSlopeVariance(tileGloss, tileBaseGloss));
+        footprint.tableShare = 1.0;
+        footprint.tableT = mapT;
+        footprint.tableB = mapB;
+        footprint.tableN = geometricNormal;
+        footprint.tileMean = tileNormal.xy / max(tileNormal.z, 0.01);
+        footprint.tableMean = mix(mean.xy / max(mean.z, 0.01), footprint.tileMean, whole);
+        footprint.tableScale = mix(ggxAlpha_fromGloss(tileGloss) / ggxAlpha_fromGloss(gloss), 1.0, whole);
+    }
 
     // The one primary light, times its shadow; a dynamic object's two while its switch
     // cross-fades (draw.fadeLight at 1 - draw.primaryWeight; PRIMARY_FADE pipelines only, so

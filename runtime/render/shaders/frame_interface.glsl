@@ -55,6 +55,7 @@ layout(set = 1, binding = TEXTURE_NORMAL) uniform sampler2D normalTexture;
 layout(set = 1, binding = TEXTURE_OCCLUSION) uniform sampler2D occlusionTexture;
 layout(set = 1, binding = TEXTURE_EMISSIVE) uniform sampler2D emissiveTexture;
 layout(set = 1, binding = TEXTURE_CAVITY) uniform sampler2D cavityTexture;
+layout(set = 1, binding = TEXTURE_FACETS) uniform sampler2D facetTexture;
 
 // Per draw.
 layout(push_constant) uniform DrawBlock { DrawPush draw; };
