@@ -57,7 +57,8 @@ const world::CommandTable& commandTable() {
                               "off"),
             world::integerOption("--anisotropy", "N", 1, 16,
                                  "material textures' anisotropic filtering taps (1: off), "
-                                 "clamped to the device's",
+                                 "clamped to the device's (slow on lavapipe: minutes a frame on a "
+                                 "floor to the horizon)",
                                  std::to_string(d.anisotropy)),
             world::integerOption("--shadow-map-size", "N", 64, 8192,
                                  "texels per side of every shadow map layer",
