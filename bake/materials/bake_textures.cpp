@@ -168,8 +168,8 @@ BakeTexture makeBakeTexture(const world::ProcessedTexture& processed) {
                 t.texels[i] = glm::vec4(float(p[0]) / 255.0f, 0.0f, 0.0f, 1.0f);
                 break;
             case world::TexelFormat::kR16Float:  // as the GPU reads R16F: (r, 0, 0, 1)
-                t.texels[i] = glm::vec4(glm::unpackHalf1x16(uint16_t(p[0] | (p[1] << 8))), 0.0f,
-                                        0.0f, 1.0f);
+                t.texels[i] =
+                    glm::vec4(glm::unpackHalf1x16(uint16_t(p[0] | (p[1] << 8))), 0.0f, 0.0f, 1.0f);
                 break;
         }
     }

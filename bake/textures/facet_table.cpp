@@ -104,7 +104,8 @@ std::vector<SlopeLobe> mapLobes(const NormalGlossLevel& level0, bool repeatS, bo
     std::vector<SlopeLobe> lobes;
     if (int64_t(w) * h * k * k <= int64_t(kFacetBins) * kFacetBins) {
         for (int y = 0; y < h; ++y)
-            visitRow(level0, repeatS, repeatT, k, y, [&](const SlopeLobe& l) { lobes.push_back(l); });
+            visitRow(level0, repeatS, repeatT, k, y,
+                     [&](const SlopeLobe& l) { lobes.push_back(l); });
         return lobes;
     }
     double range = 1e-3;

@@ -12,9 +12,10 @@
 //
 // Definition. The map is read as the runtime reads level 0: bilinear between texel centres (wrapped
 // as its sampler wraps), the normal normalised. At K points i spread evenly over it (4x4 per
-// texel up to 512^2 texels, 2x2 up to 2048^2, then 1), the normal n_i has slope q_i = n_i.xy / n_i.z (tangent space, z floored at kMinCos) and
-// its own GGX lobe alpha_i^2, the texels' alpha(g)^2 interpolated alike. The tile's facets have
-// the slope density (per unit area of the texture plane)
+// texel up to 512^2 texels, 2x2 up to 2048^2, then 1), the normal n_i has slope q_i = n_i.xy /
+// n_i.z (tangent space, z floored at kMinCos) and its own GGX lobe alpha_i^2, the texels'
+// alpha(g)^2 interpolated alike. The tile's facets have the slope density (per unit area of the
+// texture plane)
 //   P(q) = (1/K) sum_i P_GGX(q - q_i; alpha_i),   P_GGX(q; a) = a^2 / (pi (a^2 + |q|^2)^2)
 // (the texels' lobes added in slope space, as LEAN and CLEAN add them), and the normal
 // distribution D(m) = P(m.xy / m.z) / m.z^4, so that the integral of D(m) m.z over the
@@ -47,8 +48,8 @@
 
 namespace onelight::bake {
 
-inline constexpr int kFacetTableSize = 128;   // points per axis of the projected disc
-inline constexpr int kFacetBins = 96;         // slope bins per axis, for maps of more texels
+inline constexpr int kFacetTableSize = 128;  // points per axis of the projected disc
+inline constexpr int kFacetBins = 96;        // slope bins per axis, for maps of more texels
 inline constexpr float kFacetTableRim = 0.995f;
 
 // D at the table's points, row y = 0 first (c.y = -1 + 1/N), kFacetTableSize^2 values.

@@ -39,8 +39,8 @@
 //    its level 0 (facet_table.hpp: the whole tile's facet normals, the map read through its
 //    sampler's wrap), a kR16Float texture, unless options.facetTables is off.
 // Materials that agree on every input of these (normal texture and scale, metallic-roughness
-// texture, factors, packed occlusion, Lambert or not) share the three textures and the table; the cavity is
-// shared by every material with the same normal texture and scale.
+// texture, factors, packed occlusion, Lambert or not) share the three textures and the table; the
+// cavity is shared by every material with the same normal texture and scale.
 //
 // Skipped: a texture whose image is the level's sky image (SourceLevel::skyImage, an HDR, not a
 // material texture) and a glTF texture without an image; the slot reads nothing (a normal map:

@@ -44,10 +44,10 @@ inline constexpr uint32_t kKeyTextureBits = uint32_t(glsl::ALL_TEXTURES);
 static_assert(kKeyTextureBits == 127u, "texture slots fill key bits 4-10");
 [[nodiscard]] inline uint32_t permutationKey(const PermutationKey& k) {
     return k.materialClass | (k.doubleSided ? 4u : 0u) | (k.alphaMask ? 8u : 0u) |
-           (k.textures & kKeyTextureBits) << 4 | (k.primary & 7u) << 11 |
-           (k.secondary & 3u) << 14 | (k.effectLights ? 1u << 16 : 0u) |
-           (k.alphaBlend ? 1u << 17 : 0u) | (k.primaryShadow ? 0u : 1u << 18) |
-           (k.primaryFade ? 0u : 1u << 19) | (k.directEdges ? 1u << 20 : 0u);
+           (k.textures & kKeyTextureBits) << 4 | (k.primary & 7u) << 11 | (k.secondary & 3u) << 14 |
+           (k.effectLights ? 1u << 16 : 0u) | (k.alphaBlend ? 1u << 17 : 0u) |
+           (k.primaryShadow ? 0u : 1u << 18) | (k.primaryFade ? 0u : 1u << 19) |
+           (k.directEdges ? 1u << 20 : 0u);
 }
 [[nodiscard]] inline PermutationKey unpackPermutationKey(uint32_t key) {
     return {key & 3u,

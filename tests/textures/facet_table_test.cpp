@@ -37,8 +37,8 @@ bake::NormalGlossLevel eggCrateLevel(int size, double slope, float gloss) {
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x) {
             const double u = k * (x + 0.5), v = k * (y + 0.5);
-            const glm::dvec3 n(-slope * std::cos(u) * std::sin(v), -slope * std::sin(u) * std::cos(v),
-                               1.0);
+            const glm::dvec3 n(-slope * std::cos(u) * std::sin(v),
+                               -slope * std::sin(u) * std::cos(v), 1.0);
             level.normals[size_t(y) * size_t(size) + size_t(x)] = glm::vec3(glm::normalize(n));
         }
     return level;
@@ -54,7 +54,8 @@ double totalMass(const bake::FacetTable& table) {
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const double cx = (x + 0.5) * cell - 1.0, cy = (y + 0.5) * cell - 1.0;
-            if (cx * cx + cy * cy < 1.0) sum += double(table.density[size_t(y) * n + x]) * cell * cell;
+            if (cx * cx + cy * cy < 1.0)
+                sum += double(table.density[size_t(y) * n + x]) * cell * cell;
         }
     return sum;
 }
@@ -93,9 +94,9 @@ TEST(FacetTable, AnEggCratesSlopesAreTwoArcsineDistributions) {
     const bake::FacetTable table =
         bake::facetTable(eggCrateLevel(128, s, glsl::gloss_fromRoughness(0.05f)), true, true);
     auto f = [&](double p) { return 1.0 / (kPi * std::sqrt(s * s / 4.0 - p * p)); };
-    for (const glm::dvec2 slope : {glm::dvec2(0.0, 0.0), glm::dvec2(0.0, 0.13),
-                                   glm::dvec2(0.1, 0.05), glm::dvec2(-0.12, 0.08),
-                                   glm::dvec2(0.15, -0.02)}) {
+    for (const glm::dvec2 slope :
+         {glm::dvec2(0.0, 0.0), glm::dvec2(0.0, 0.13), glm::dvec2(0.1, 0.05),
+          glm::dvec2(-0.12, 0.08), glm::dvec2(0.15, -0.02)}) {
         const double p = (slope.x + slope.y) / 2.0, q = (slope.y - slope.x) / 2.0;
         // The normals' slopes are -dh: the distribution is symmetric, so P(-s) = P(s).
         const glm::vec3 m = unitWithSlope(slope.x, slope.y);
@@ -121,7 +122,8 @@ TEST(FacetTable, TheLookupMovesAndScalesTheTileWithoutLosingFacets) {
     const bake::FacetTable table =
         bake::facetTable(eggCrateLevel(32, 0.6, glsl::gloss_fromRoughness(0.3f)), true, true);
     const glm::vec3 h = glm::normalize(glm::vec3(0.2f, -0.1f, 1.0f));
-    const glm::vec3 same = glsl::facetTableLookup(h, glm::vec2(0.05f, 0.0f), glm::vec2(0.05f, 0.0f), 1.0f);
+    const glm::vec3 same =
+        glsl::facetTableLookup(h, glm::vec2(0.05f, 0.0f), glm::vec2(0.05f, 0.0f), 1.0f);
     EXPECT_NEAR(same.x, h.x, 1e-6f);
     EXPECT_NEAR(same.y, h.y, 1e-6f);
     EXPECT_NEAR(same.z, 1.0f, 1e-5f);
@@ -137,7 +139,8 @@ TEST(FacetTable, TheLookupMovesAndScalesTheTileWithoutLosingFacets) {
                 const glm::vec3 hm(float(cx), float(cy), float(std::sqrt(1.0 - r2)));
                 const glm::vec3 c =
                     glsl::facetTableLookup(hm, glm::vec2(0.1f, -0.05f), glm::vec2(0.0f), k);
-                const glm::vec3 mc(c.x, c.y, std::sqrt(std::max(0.0f, 1.0f - c.x * c.x - c.y * c.y)));
+                const glm::vec3 mc(c.x, c.y,
+                                   std::sqrt(std::max(0.0f, 1.0f - c.x * c.x - c.y * c.y)));
                 mass += double(bake::facetTableDensity(table, mc)) * double(c.z) * cell * cell;
             }
         EXPECT_NEAR(mass, 1.0, 0.015) << "k " << k;
@@ -149,12 +152,12 @@ TEST(FacetTable, BadNormalsAndGlossesGiveAFiniteTable) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
     level.normals[0] = glm::vec3(nan, 0.0f, 1.0f);
-    level.normals[1] = glm::vec3(0.0f);                   // no direction
-    level.normals[2] = glm::vec3(1.0f, 0.0f, 0.0f);       // on the horizon
-    level.normals[3] = glm::vec3(0.0f, 0.6f, -0.8f);      // below it
+    level.normals[1] = glm::vec3(0.0f);               // no direction
+    level.normals[2] = glm::vec3(1.0f, 0.0f, 0.0f);   // on the horizon
+    level.normals[3] = glm::vec3(0.0f, 0.6f, -0.8f);  // below it
     level.normals[4] = glm::vec3(inf, inf, inf);
     level.gloss[5] = nan;
-    level.gloss[6] = 1.0f;                                // a mirror
+    level.gloss[6] = 1.0f;  // a mirror
     level.gloss[7] = -3.0f;
     const bake::FacetTable table = bake::facetTable(level, false, true);
     for (float d : table.density) {
@@ -169,7 +172,8 @@ TEST(FacetTable, BadNormalsAndGlossesGiveAFiniteTable) {
     EXPECT_EQ(texture.format, world::TexelFormat::kR16Float);
     EXPECT_EQ(texture.mipCount, world::fullMipCount(texture.width, texture.height));
     for (size_t i = 0; i + 1 < texture.texels.size(); i += 2) {
-        const float v = glm::unpackHalf1x16(uint16_t(texture.texels[i] | (texture.texels[i + 1] << 8)));
+        const float v =
+            glm::unpackHalf1x16(uint16_t(texture.texels[i] | (texture.texels[i + 1] << 8)));
         ASSERT_TRUE(std::isfinite(v));
         ASSERT_GE(v, 0.0f);
     }
@@ -181,7 +185,8 @@ TEST(FacetTable, TheTexturesMipZeroIsTheTableInHalfFloats) {
     const world::ProcessedTexture texture = bake::facetTableTexture(table, "egg crate facets");
     ASSERT_EQ(texture.width, uint32_t(bake::kFacetTableSize));
     for (size_t i = 0; i < table.density.size(); ++i) {
-        const float v = glm::unpackHalf1x16(uint16_t(texture.texels[2 * i] | (texture.texels[2 * i + 1] << 8)));
+        const float v =
+            glm::unpackHalf1x16(uint16_t(texture.texels[2 * i] | (texture.texels[2 * i + 1] << 8)));
         ASSERT_NEAR(v, table.density[i], 1e-3f * table.density[i] + 1e-6f) << i;  // half: 11 bits
     }
 }

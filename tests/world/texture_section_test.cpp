@@ -372,19 +372,19 @@ TEST(TextureSection, AFacetTableRoundTripsAndItsTexelsAreChecked) {
     const RawSection zero = encodeTextureSection(facetTextures(0x8000u));
     EXPECT_NO_THROW((void)decodeTextureSection(std::span(&zero, 1), levelWithMaterials(1), "t"));
     // The slot takes an R16 float table, and the normal slot no table.
-    const size_t facets = kHeader + 2 * sizeof(DiskProcessedTexture) +
-                          offsetof(DiskMaterialTextureSlots, facets);
+    const size_t facets =
+        kHeader + 2 * sizeof(DiskProcessedTexture) + offsetof(DiskMaterialTextureSlots, facets);
     expectRejected(patched<uint32_t>(s, facets, 0),
                    "material 0: facets is texture 0 'bumps normal' of format RGBA8 UNORM; "
                    "expected R16 float",
                    levelWithMaterials(1));
-    const size_t normal = kHeader + 2 * sizeof(DiskProcessedTexture) +
-                          offsetof(DiskMaterialTextureSlots, normal);
+    const size_t normal =
+        kHeader + 2 * sizeof(DiskProcessedTexture) + offsetof(DiskMaterialTextureSlots, normal);
     expectRejected(patched<uint32_t>(s, normal, 1),
                    "material 0: normal is texture 1 'bumps facets' of format R16 float",
                    levelWithMaterials(1));
-    expectRejected(patched<uint32_t>(s, facets, 2), "material 0: facets 2; expected a texture index < 2",
-                   levelWithMaterials(1));
+    expectRejected(patched<uint32_t>(s, facets, 2),
+                   "material 0: facets 2; expected a texture index < 2", levelWithMaterials(1));
 }
 
 TEST(TextureSection, RejectsANonZeroReservedField) {

@@ -158,9 +158,8 @@ void checkHalfTexels(const world::ProcessedTexture& t, const std::string& at) {
         const bool negative = (half & 0x8000u) != 0 && (half & 0x7fffu) != 0;
         if ((half & 0x7c00u) == 0x7c00u || negative)
             throw world::Error(at + "texel " + std::to_string(i / 2) + " of its chain is " +
-                               (negative ? "negative" : "not finite") +
-                               " (R16 float bits " + std::to_string(half) +
-                               "); expected a finite value >= 0");
+                               (negative ? "negative" : "not finite") + " (R16 float bits " +
+                               std::to_string(half) + "); expected a finite value >= 0");
     }
 }
 

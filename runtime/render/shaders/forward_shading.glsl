@@ -430,9 +430,11 @@ vec3 directReflectance(vec3 albedo, vec3 f0, float gloss, vec2 directEnv, Footpr
     float tableFacets = 0.0;
     if (footprint.tableShare > 0.0) {
         vec3 h = normalize(l + normalize(frame.cameraPosition.xyz - inWorldPosition));
-        vec3 ht = vec3(dot(h, footprint.tableT), dot(h, footprint.tableB), dot(h, footprint.tableN));
+        vec3 ht = vec3(dot(h, footprint.tableT), dot(h, footprint.tableB),
+                       dot(h, footprint.tableN));
         if (ht.z > 1e-4) {
-            vec3 c = facetTableLookup(ht, footprint.tableMean, footprint.tileMean, footprint.tableScale);
+            vec3 c = facetTableLookup(ht, footprint.tableMean, footprint.tileMean,
+                                      footprint.tableScale);
             float D = textureLod(facetTexture, c.xy * 0.5 + 0.5, 0.0).r * c.z;
             tableFacets = specularFacets_Table(D, ht.z, d.LoH);
         }
@@ -545,10 +547,13 @@ void main() {
     if (MATERIAL_PIPELINE == 1 && footprint.bumpShare > 0.0 && materialHas(m, TEXTURE_FACETS) &&
         mapT != vec3(0.0)) {
         vec4 tileTexel = textureLod(metallicRoughnessTexture, inUv0, 16.0);
-        vec2 tileMr = metallicRoughness_fromTexel(MATERIAL_CLASS, m.params.x, m.params.y, tileTexel);
-        float tileGloss = materialPoint(MATERIAL_CLASS, base.rgb, tileMr.x, tileMr.y, m.f0Gloss.x).gloss;
-        vec3 tileNormal = normal_fromTangentSpace(textureLod(normalTexture, inUv0, 16.0).rgb, m.params.z,
-                                                  vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), 1.0);
+        vec2 tileMr =
+            metallicRoughness_fromTexel(MATERIAL_CLASS, m.params.x, m.params.y, tileTexel);
+        float tileGloss =
+            materialPoint(MATERIAL_CLASS, base.rgb, tileMr.x, tileMr.y, m.f0Gloss.x).gloss;
+        vec3 tileNormal =
+            normal_fromTangentSpace(textureLod(normalTexture, inUv0, 16.0).rgb, m.params.z,
+                                    vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), 1.0);
         vec3 mean = vec3(dot(n, mapT), dot(n, mapB), dot(n, geometricNormal));
         float tileBaseGloss = max(gloss_fromRoughness(m.params.y * tileTexel.a), tileGloss);
         float whole = facetTableWhole(bumpSlopeVariance(gloss, baseGloss),
@@ -559,7 +564,8 @@ void main() {
         footprint.tableN = geometricNormal;
         footprint.tileMean = tileNormal.xy / max(tileNormal.z, 0.01);
         footprint.tableMean = mix(mean.xy / max(mean.z, 0.01), footprint.tileMean, whole);
-        footprint.tableScale = mix(ggxAlpha_fromGloss(tileGloss) / ggxAlpha_fromGloss(gloss), 1.0, whole);
+        footprint.tableScale =
+            mix(ggxAlpha_fromGloss(tileGloss) / ggxAlpha_fromGloss(gloss), 1.0, whole);
     }
 
     // The one primary light, times its shadow; a dynamic object's two while its switch
