@@ -31,8 +31,10 @@
 // keeps its whole weight (a widening by the cell at the point read instead grows without bound
 // towards the rim, where the cells span ever more slope, and gave a table 1.5 times its mass).
 // The K points are first gathered into kFacetBins^2 bins of slope where there are more of them
-// (each bin its points' mean slope and mean alpha^2; 16 blocks of rows, each with bins of its
-// own, summed in order: the same sums at any thread count, a working set of 4.7 MiB), and each
+// (each bin its points' mean slope and mean alpha^2; the bins span the texels' slopes but their
+// steepest 0.5%, as one texel at the horizon would widen them all; 16 blocks of rows, each with
+// bins of its own, summed in order: the same sums at any thread count, a working set of 4.7 MiB),
+// and each
 // bin's lobe widened to at least 1.5 bins (alpha^2 + (1.5 bin)^2), so that the bins' lobes sum
 // to a smooth density: the work is then bins x table points.
 //
