@@ -1,9 +1,12 @@
 #include "world/package/texture_section.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <vector>
+
+#include <glm/gtc/packing.hpp>
 
 #include "world/error.hpp"
 #include "world/file_read.hpp"
@@ -155,11 +158,12 @@ void check(const DiskProcessedTexture& d, uint64_t nextName, uint32_t nameBytes,
 void checkHalfTexels(const world::ProcessedTexture& t, const std::string& at) {
     for (size_t i = 0; i + 1 < t.texels.size(); i += 2) {
         const uint16_t half = uint16_t(t.texels[i] | (t.texels[i + 1] << 8));
-        const bool negative = (half & 0x8000u) != 0 && (half & 0x7fffu) != 0;
-        if ((half & 0x7c00u) == 0x7c00u || negative)
+        const float value = glm::unpackHalf1x16(half);
+        if (!std::isfinite(value) || value < 0.0f)
             throw world::Error(at + "texel " + std::to_string(i / 2) + " of its chain is " +
-                               (negative ? "negative" : "not finite") + " (R16 float bits " +
-                               std::to_string(half) + "); expected a finite value >= 0");
+                               (std::isfinite(value) ? "negative" : "not finite") +
+                               " (R16 float bits " + std::to_string(half) +
+                               "); expected a finite value >= 0");
     }
 }
 
