@@ -322,6 +322,44 @@ vec3 facetTableLookup(vec3 h, vec2 mean, vec2 tileMean, float k) {
     return vec3(q * mz, k * k * (ratio * ratio) * (ratio * ratio));
 }
 
+// A pixel's footprint split into parts, each read from its own mip texels of a normal map where
+// the facet table gives the parts' facets (docs/materials.md, "The footprint's parts"). One lobe
+// of a footprint's mean and variance fills the middle of its slopes, where a low sun's glint
+// looks: on an egg crate its core comes out 1.5 to 2.5 times the reference's, the flanks half,
+// for footprints of 1/8 to 1/2 of a bump. Lobes of the parts follow the slopes' own spread. The
+// parts tile the footprint's parallelogram (du, dv: the texture coordinates' derivatives
+// across and down the screen; texels: the map's size): FOOTPRINT_PARTS along its long axis
+// where it is at least twice as long as it is wide, else two by two. `lod`: the map's level of
+// detail of a part, log2 of its longer side in texels. `split` false: the footprint is within a
+// texel, and its own lobe is right.
+const int FOOTPRINT_PARTS = 4;
+struct FootprintParts {
+    bool split;
+    vec2 offsets[FOOTPRINT_PARTS];  // each part's centre from the footprint's, in du's units
+    float lod;
+};
+
+FootprintParts footprintParts(vec2 du, vec2 dv, vec2 texels) {
+    FootprintParts parts;
+    parts.split = false;
+    parts.lod = 0.0f;
+    float lu = length(du * texels), lv = length(dv * texels);
+    for (int i = 0; i < FOOTPRINT_PARTS; ++i) parts.offsets[i] = vec2(0.0f);
+    if (!(max(lu, lv) > 1.0f)) return parts;
+    vec2 major = lu >= lv ? du : dv, minor = lu >= lv ? dv : du;
+    float majorLength = max(lu, lv), minorLength = min(lu, lv);
+    int columns = majorLength >= 2.0f * minorLength ? FOOTPRINT_PARTS : 2;
+    int rows = FOOTPRINT_PARTS / columns;
+    for (int i = 0; i < FOOTPRINT_PARTS; ++i) {
+        float c = float(i % columns), r = float(i / columns);
+        parts.offsets[i] = major * ((c + 0.5f) / float(columns) - 0.5f) +
+                           minor * ((r + 0.5f) / float(rows) - 0.5f);
+    }
+    parts.split = true;
+    parts.lod = log2(max(majorLength / float(columns), minorLength / float(rows)));
+    return parts;
+}
+
 // The ring of a footprint's normals: FOOTPRINT_RING_COUNT unit normals about n, each tilted to
 // slope `radius` towards cos(phi) t + sin(phi) b (t, b unit and perpendicular to n), phi =
 // 2 pi k / count. At the RMS slope, the ring has the footprint's second moment of slopes, so a

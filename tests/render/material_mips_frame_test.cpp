@@ -9,8 +9,10 @@
 // the reference is printed per distance band, with the reference's own noise (two seeds) beside
 // it, which must stay below a quarter of what it measures; in the far bands (many texels per
 // pixel) each method's error must be at most half the blit's, and the default's (CLEAN's) under
-// Black Ops'. Each method is also drawn with 16x anisotropic filtering, to measure that option.
-// This measurement picks the default method.
+// Black Ops'. With ONELIGHT_MIPS_ANISOTROPY=1 each method is also drawn with 16x anisotropic
+// filtering, to measure that option: printed, not bounded, and left out of ctest because
+// lavapipe's anisotropic filtering takes 15-40 s a frame of this floor. This measurement picks
+// the default method.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -130,14 +132,16 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
         reference[i] = 0.5f * (reference0[i] + reference1[i]);
 
     // Each mip method with isotropic filtering (1 tap: the mip chosen by the footprint's long
-    // axis) and with 16x anisotropic filtering (the runtime's default).
+    // axis, the runtime's default) and, when asked, with 16x anisotropic filtering.
     struct Config {
         int method;
         float anisotropy;
         std::vector<float> frame;
     };
-    std::vector<Config> configs = {{0, 1.0f, {}},  {1, 1.0f, {}},  {2, 1.0f, {}},  {3, 1.0f, {}},
-                                   {0, 16.0f, {}}, {1, 16.0f, {}}, {2, 16.0f, {}}, {3, 16.0f, {}}};
+    std::vector<Config> configs = {{0, 1.0f, {}}, {1, 1.0f, {}}, {2, 1.0f, {}}, {3, 1.0f, {}}};
+    const char* anisotropic = std::getenv("ONELIGHT_MIPS_ANISOTROPY");
+    if (anisotropic && std::string(anisotropic) == "1")
+        for (int m = 0; m < 4; ++m) configs.push_back({m, 16.0f, {}});
     render::Camera camera;
     for (int m = 0; m < 4; ++m) {
         const assets::LoadedLevel level =
@@ -157,12 +161,11 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
             c.frame = rendered.frame.linearRgba;
         }
     }
-    // reference | blit (the mips before the material pipeline) | black ops (the default) | wwii |
-    // clean, isotropic | black ops, 16x anisotropic
-    test::writeReferenceComparison(folder + "/comparison.png", kWidth, kHeight, reference,
-                                   {&configs[0].frame, &configs[1].frame, &configs[2].frame,
-                                    &configs[3].frame, &configs[5].frame},
-                                   0.4f);
+    // reference | blit (the mips before the material pipeline) | black ops | wwii | clean (the
+    // default), isotropic
+    test::writeReferenceComparison(
+        folder + "/comparison.png", kWidth, kHeight, reference,
+        {&configs[0].frame, &configs[1].frame, &configs[2].frame, &configs[3].frame}, 0.4f);
 
     // The reference's noise as a frame with 4 channels, to go through bandError.
     std::vector<float> halfDifference(size_t(kWidth) * kHeight * 4, 0.0f);
@@ -181,11 +184,10 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
         for (size_t c = 0; c < configs.size(); ++c)
             e[c] = bandError(camera, configs[c].frame, reference, kBands[b]);
         const BandError noise = bandError(camera, halfDifference, reference, kBands[b]);
-        std::printf(
-            "[ mips ] %3.0f..%3.0f m: %.3f | %.3f %.3f %.3f %.3f | %.3f %.3f %.3f %.3f (%zu "
-            "blocks)\n",
-            double(kBands[b].near), double(kBands[b].far), noise.rms, e[0].rms, e[1].rms, e[2].rms,
-            e[3].rms, e[4].rms, e[5].rms, e[6].rms, e[7].rms, e[0].blocks);
+        std::printf("[ mips ] %3.0f..%3.0f m: %.3f | %.3f %.3f %.3f %.3f |", double(kBands[b].near),
+                    double(kBands[b].far), noise.rms, e[0].rms, e[1].rms, e[2].rms, e[3].rms);
+        for (size_t c = 4; c < configs.size(); ++c) std::printf(" %.3f", e[c].rms);
+        std::printf(" (%zu blocks)\n", e[0].blocks);
         ASSERT_GE(e[0].blocks, 8u) << "band " << b;
         // The reference's noise must be well below the errors it measures.
         EXPECT_LE(noise.rms, 0.25 * e[1].rms) << "band " << b;
@@ -193,6 +195,12 @@ TEST(RenderMaterialMips, FarBandsOfABumpyGlossyFloorComeCloserToThePathTracer) {
         // halves the blit's error at least (the default, isotropic filtering). The 16x
         // anisotropic rows are printed, not bounded: they measure what the option costs today
         // (renderer.hpp, RendererOptions::anisotropy).
+        // 8 to 16 m, footprints of a quarter to a half of a bump: the facet table read per part
+        // of the footprint (footprintParts, shaders/material.glsl) takes CLEAN to 0.90 here
+        // (2026-12-08), from 1.05 with one lobe of the whole footprint's moments.
+        if (b == 1) {
+            EXPECT_LT(e[3].rms, 0.95) << "band " << b;
+        }
         if (b < kFarBand) continue;
         for (int method : {1, 2, 3})
             EXPECT_LE(e[method].rms, 0.5 * e[0].rms) << "band " << b << ", method " << method;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "shading.hpp"
@@ -197,6 +198,71 @@ TEST(Footprint, TheCentreAndRingHaveTheSlopesSecondAndFourthMoments) {
         EXPECT_NEAR((1.0 - w) * r * r * r * r, double(k) * s * s * s * s, 1e-6) << k;
     }
     EXPECT_EQ(footprintCentreWeight(1.0f), 0.0f);  // a ring alone: the footprint as before
+}
+
+// Whether point p (in the texture's coordinates, about the footprint's centre) lies in part i's
+// own parallelogram: its centre plus du, dv each scaled by the part's share of that axis.
+bool inPart(const FootprintParts& parts, int i, vec2 p, vec2 du, vec2 dv, float shareU,
+            float shareV) {
+    const vec2 q = p - parts.offsets[i];
+    // Coordinates of q along du, dv (the footprint's axes are independent, det != 0).
+    const float det = du.x * dv.y - du.y * dv.x;
+    const float a = (q.x * dv.y - q.y * dv.x) / det, b = (du.x * q.y - du.y * q.x) / det;
+    return std::abs(a) <= 0.5f * shareU + 1e-5f && std::abs(b) <= 0.5f * shareV + 1e-5f;
+}
+
+TEST(Footprint, PartsTileTheFootprintOnceEach) {
+    // A square footprint of 8 texels splits two by two; one of 16 by 3 texels (its long axis
+    // across the screen or down it) splits into four along the long axis. Every point of the
+    // footprint lies in exactly one part, the parts' centres average to the footprint's, and a
+    // part's level of detail is log2 of its longer side in texels.
+    const vec2 texels(64.0f, 32.0f);
+    struct Case {
+        vec2 du, dv;
+        float shareU, shareV, lod;
+    };
+    const float turn = 0.6f;
+    const vec2 along(std::cos(turn), std::sin(turn)), across(-std::sin(turn), std::cos(turn));
+    const Case cases[] = {
+        {vec2(8.0f / 64.0f, 0.0f), vec2(0.0f, 8.0f / 32.0f), 0.5f, 0.5f, 2.0f},
+        {along * 16.0f / texels, across * 3.0f / texels, 0.25f, 1.0f, 2.0f},
+        {across * 3.0f / texels, along * 16.0f / texels, 1.0f, 0.25f, 2.0f},
+        {along * 12.0f / texels, across * 5.0f / texels, 0.25f, 1.0f, std::log2(5.0f)},
+    };
+    for (const Case& c : cases) {
+        const vec2 du = c.du * texels, dv = c.dv * texels;  // in texels, to test in
+        const FootprintParts parts = footprintParts(c.du, c.dv, texels);
+        ASSERT_TRUE(parts.split);
+        EXPECT_NEAR(double(parts.lod), double(c.lod), 1e-5);
+        FootprintParts inTexels = parts;
+        vec2 sum(0.0f);
+        for (int i = 0; i < FOOTPRINT_PARTS; ++i) {
+            inTexels.offsets[i] = parts.offsets[i] * texels;
+            sum += inTexels.offsets[i];
+        }
+        EXPECT_NEAR(double(glm::length(sum)), 0.0, 1e-4);
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                // The centres of a 16 x 16 grid: none on a border between halves or quarters.
+                const vec2 p = du * ((float(x) + 0.5f) / 16.0f - 0.5f) +
+                               dv * ((float(y) + 0.5f) / 16.0f - 0.5f);
+                int in = 0;
+                for (int i = 0; i < FOOTPRINT_PARTS; ++i)
+                    in += inPart(inTexels, i, p, du, dv, c.shareU, c.shareV) ? 1 : 0;
+                EXPECT_EQ(in, 1) << x << " " << y;
+            }
+    }
+}
+
+TEST(Footprint, AFootprintWithinATexelIsNotSplit) {
+    const vec2 texels(256.0f, 256.0f);
+    EXPECT_FALSE(
+        footprintParts(vec2(0.9f, 0.0f) / texels, vec2(0.0f, 0.5f) / texels, texels).split);
+    EXPECT_FALSE(footprintParts(vec2(0.0f), vec2(0.0f), texels).split);
+    // A NaN derivative (a degenerate triangle's) does not split either.
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    EXPECT_FALSE(footprintParts(vec2(nan, 0.0f), vec2(0.0f, 0.01f), texels).split);
+    EXPECT_TRUE(footprintParts(vec2(1.5f, 0.0f) / texels, vec2(0.0f), texels).split);
 }
 
 }  // namespace

@@ -252,12 +252,14 @@ struct Footprint {
     vec2 env;  // the mean (scale, bias) of their lobes, less what the surface's plane cuts
     // Whether the facets are read from the normal map's facet table (1) or the mixture (0); the
     // tangent frame the table is in (t, b along the map's x and y, n the surface's normal); the
-    // footprint's mean slope and the tile's in that frame, and the table's scale
-    // (facetTableLookup, shaders/material.glsl).
+    // tile's mean slope in that frame; and per part of the footprint (footprintParts) its
+    // mean slope and the table's scale (facetTableLookup, shaders/material.glsl).
     float tableShare;
     vec3 tableT, tableB, tableN;
-    vec2 tableMean, tileMean;
-    float tableScale;
+    vec2 tileMean;
+    vec2 tableMeans[FOOTPRINT_PARTS + 1];  // per part (footprintParts), then the footprint's own
+    float tableScales[FOOTPRINT_PARTS + 1];
+    float partWeight;  // each part's weight; the footprint's own lobe has the rest
 };
 
 // Below this share the footprint is one texel: the ring's normals would be the pixel's own.
@@ -433,9 +435,20 @@ vec3 directReflectance(vec3 albedo, vec3 f0, float gloss, vec2 directEnv, Footpr
         vec3 ht = vec3(dot(h, footprint.tableT), dot(h, footprint.tableB),
                        dot(h, footprint.tableN));
         if (ht.z > 1e-4) {
-            vec3 c = facetTableLookup(ht, footprint.tableMean, footprint.tileMean,
-                                      footprint.tableScale);
+            // The facets' density: the footprint's own lobe's, blended with its parts'
+            // (footprintParts) where it has them.
+            vec3 c = facetTableLookup(ht, footprint.tableMeans[FOOTPRINT_PARTS], footprint.tileMean,
+                                      footprint.tableScales[FOOTPRINT_PARTS]);
             float D = textureLod(facetTexture, c.xy * 0.5 + 0.5, 0.0).r * c.z;
+            if (footprint.partWeight > 0.0) {
+                float parts = 0.0;
+                for (int i = 0; i < FOOTPRINT_PARTS; ++i) {
+                    c = facetTableLookup(ht, footprint.tableMeans[i], footprint.tileMean,
+                                         footprint.tableScales[i]);
+                    parts += textureLod(facetTexture, c.xy * 0.5 + 0.5, 0.0).r * c.z;
+                }
+                D += (parts - float(FOOTPRINT_PARTS) * D) * footprint.partWeight;
+            }
             tableFacets = specularFacets_Table(D, ht.z, d.LoH);
         }
     }
@@ -480,6 +493,8 @@ void main() {
     if (BAKED_LIGHTING != 0 && drawHasObjectLighting()) pixelLattice = objectLattice(draw.objectLighting);
     if (DIRECT_EDGES == 1 && drawUsesLightmap() && featureOn(FEATURE_DIRECT_EDGE)) bakedDirectEdge();
     GpuMaterial m = materialRecords[draw.material];
+    // The texture coordinates' derivatives, taken before any branch or discard.
+    vec2 uvDx = dFdx(inUv0), uvDy = dFdy(inUv0);
 
     vec4 base = m.baseColor;
     if (materialHas(m, TEXTURE_BASE_COLOR) && featureOn(FEATURE_BASE_TEXTURE))
@@ -556,16 +571,46 @@ void main() {
                                     vec3(0.0, 0.0, 1.0), vec3(1.0, 0.0, 0.0), 1.0);
         vec3 mean = vec3(dot(n, mapT), dot(n, mapB), dot(n, geometricNormal));
         float tileBaseGloss = max(gloss_fromRoughness(m.params.y * tileTexel.a), tileGloss);
-        float whole = facetTableWhole(bumpSlopeVariance(gloss, baseGloss),
-                                      bumpSlopeVariance(tileGloss, tileBaseGloss));
+        float tileS2 = bumpSlopeVariance(tileGloss, tileBaseGloss);
+        float whole = facetTableWhole(bumpSlopeVariance(gloss, baseGloss), tileS2);
         footprint.tableShare = 1.0;
         footprint.tableT = mapT;
         footprint.tableB = mapB;
         footprint.tableN = geometricNormal;
         footprint.tileMean = tileNormal.xy / max(tileNormal.z, 0.01);
-        footprint.tableMean = mix(mean.xy / max(mean.z, 0.01), footprint.tileMean, whole);
-        footprint.tableScale =
-            mix(ggxAlpha_fromGloss(tileGloss) / ggxAlpha_fromGloss(gloss), 1.0, whole);
+        // Its parts (footprintParts), until the tile is taken whole, blended with its own lobe
+        // as `whole` grows so that no edge shows where the parts stop.
+        FootprintParts parts = footprintParts(uvDx, uvDy, vec2(textureSize(normalTexture, 0)));
+        bool split = parts.split && whole < 1.0;
+        float mrLodBias = log2(float(textureSize(metallicRoughnessTexture, 0).x) /
+                               float(textureSize(normalTexture, 0).x));
+        float tileAlpha = ggxAlpha_fromGloss(tileGloss);
+        footprint.tableMeans[FOOTPRINT_PARTS] =
+            mix(mean.xy / max(mean.z, 0.01), footprint.tileMean, whole);
+        footprint.tableScales[FOOTPRINT_PARTS] =
+            mix(tileAlpha / ggxAlpha_fromGloss(gloss), 1.0, whole);
+        footprint.partWeight = split ? (1.0 - whole) / float(FOOTPRINT_PARTS) : 0.0;
+        for (int i = 0; i < FOOTPRINT_PARTS; ++i) {
+            footprint.tableMeans[i] = vec2(0.0);
+            footprint.tableScales[i] = 1.0;
+            if (split) {  // the part's own mip texels
+                vec2 uv = inUv0 + parts.offsets[i];
+                vec3 texel = textureLod(normalTexture, uv, parts.lod).rgb;
+                vec2 mr = metallicRoughness_fromTexel(
+                    MATERIAL_CLASS, m.params.x, m.params.y,
+                    textureLod(metallicRoughnessTexture, uv, parts.lod + mrLodBias));
+                float partGloss = gloss_withFilteredNormal(
+                    materialPoint(MATERIAL_CLASS, base.rgb, mr.x, mr.y, m.f0Gloss.x).gloss,
+                    texel * 2.0 - 1.0);
+                vec3 pn = normal_fromTangentSpace(texel, m.params.z, vec3(0.0, 0.0, 1.0),
+                                                  vec3(1.0, 0.0, 0.0), 1.0);
+                float partWhole = facetTableWhole(bumpSlopeVariance(partGloss, baseGloss), tileS2);
+                footprint.tableMeans[i] =
+                    mix(pn.xy / max(pn.z, 0.01), footprint.tileMean, partWhole);
+                footprint.tableScales[i] =
+                    mix(tileAlpha / ggxAlpha_fromGloss(partGloss), 1.0, partWhole);
+            }
+        }
     }
 
     // The one primary light, times its shadow; a dynamic object's two while its switch
