@@ -345,7 +345,8 @@ FootprintParts footprintParts(vec2 du, vec2 dv, vec2 texels) {
     parts.lod = 0.0f;
     float lu = length(du * texels), lv = length(dv * texels);
     for (int i = 0; i < FOOTPRINT_PARTS; ++i) parts.offsets[i] = vec2(0.0f);
-    if (!(max(lu, lv) > 1.0f)) return parts;
+    // Within a texel, or a derivative not finite (a degenerate triangle's): not split.
+    if (!(max(lu, lv) > 1.0f) || !(max(lu, lv) < 1e9f)) return parts;
     vec2 major = lu >= lv ? du : dv, minor = lu >= lv ? dv : du;
     float majorLength = max(lu, lv), minorLength = min(lu, lv);
     int columns = majorLength >= 2.0f * minorLength ? FOOTPRINT_PARTS : 2;

@@ -259,9 +259,11 @@ TEST(Footprint, AFootprintWithinATexelIsNotSplit) {
     EXPECT_FALSE(
         footprintParts(vec2(0.9f, 0.0f) / texels, vec2(0.0f, 0.5f) / texels, texels).split);
     EXPECT_FALSE(footprintParts(vec2(0.0f), vec2(0.0f), texels).split);
-    // A NaN derivative (a degenerate triangle's) does not split either.
+    // A NaN or infinite derivative (a degenerate triangle's) does not split either.
     const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
     EXPECT_FALSE(footprintParts(vec2(nan, 0.0f), vec2(0.0f, 0.01f), texels).split);
+    EXPECT_FALSE(footprintParts(vec2(inf, 0.0f), vec2(0.0f, 0.01f), texels).split);
     EXPECT_TRUE(footprintParts(vec2(1.5f, 0.0f) / texels, vec2(0.0f), texels).split);
 }
 
