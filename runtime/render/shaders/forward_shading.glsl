@@ -259,7 +259,8 @@ struct Footprint {
     vec2 tileMean;
     vec2 tableMeans[FOOTPRINT_PARTS + 1];  // per part (footprintParts), then the footprint's own
     float tableScales[FOOTPRINT_PARTS + 1];
-    float partWeight;  // each part's weight; the footprint's own lobe has the rest
+    float partWeight;  // each part's weight (0: no parts, their entries unset); the footprint's
+                       // own lobe has the rest
 };
 
 // Below this share the footprint is one texel: the ring's normals would be the pixel's own.
@@ -590,26 +591,21 @@ void main() {
         footprint.tableScales[FOOTPRINT_PARTS] =
             mix(tileAlpha / ggxAlpha_fromGloss(gloss), 1.0, whole);
         footprint.partWeight = split ? (1.0 - whole) / float(FOOTPRINT_PARTS) : 0.0;
-        for (int i = 0; i < FOOTPRINT_PARTS; ++i) {
-            footprint.tableMeans[i] = vec2(0.0);
-            footprint.tableScales[i] = 1.0;
-            if (split) {  // the part's own mip texels
-                vec2 uv = inUv0 + parts.offsets[i];
-                vec3 texel = textureLod(normalTexture, uv, parts.lod).rgb;
-                vec2 mr = metallicRoughness_fromTexel(
-                    MATERIAL_CLASS, m.params.x, m.params.y,
-                    textureLod(metallicRoughnessTexture, uv, parts.lod + mrLodBias));
-                float partGloss = gloss_withFilteredNormal(
-                    materialPoint(MATERIAL_CLASS, base.rgb, mr.x, mr.y, m.f0Gloss.x).gloss,
-                    texel * 2.0 - 1.0);
-                vec3 pn = normal_fromTangentSpace(texel, m.params.z, vec3(0.0, 0.0, 1.0),
-                                                  vec3(1.0, 0.0, 0.0), 1.0);
-                float partWhole = facetTableWhole(bumpSlopeVariance(partGloss, baseGloss), tileS2);
-                footprint.tableMeans[i] =
-                    mix(pn.xy / max(pn.z, 0.01), footprint.tileMean, partWhole);
-                footprint.tableScales[i] =
-                    mix(tileAlpha / ggxAlpha_fromGloss(partGloss), 1.0, partWhole);
-            }
+        for (int i = 0; split && i < FOOTPRINT_PARTS; ++i) {  // each part's own mip texels
+            vec2 uv = inUv0 + parts.offsets[i];
+            vec3 texel = textureLod(normalTexture, uv, parts.lod).rgb;
+            vec2 mr = metallicRoughness_fromTexel(
+                MATERIAL_CLASS, m.params.x, m.params.y,
+                textureLod(metallicRoughnessTexture, uv, parts.lod + mrLodBias));
+            float partGloss = gloss_withFilteredNormal(
+                materialPoint(MATERIAL_CLASS, base.rgb, mr.x, mr.y, m.f0Gloss.x).gloss,
+                texel * 2.0 - 1.0);
+            vec3 pn = normal_fromTangentSpace(texel, m.params.z, vec3(0.0, 0.0, 1.0),
+                                              vec3(1.0, 0.0, 0.0), 1.0);
+            float partWhole = facetTableWhole(bumpSlopeVariance(partGloss, baseGloss), tileS2);
+            footprint.tableMeans[i] = mix(pn.xy / max(pn.z, 0.01), footprint.tileMean, partWhole);
+            footprint.tableScales[i] =
+                mix(tileAlpha / ggxAlpha_fromGloss(partGloss), 1.0, partWhole);
         }
     }
 
