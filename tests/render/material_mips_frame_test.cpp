@@ -11,7 +11,7 @@
 // pixel) each method's error must be at most half the blit's, and the default's (CLEAN's) under
 // Black Ops'. With ONELIGHT_MIPS_ANISOTROPY=1 each method is also drawn with 16x anisotropic
 // filtering, to measure that option: printed, not bounded, and left out of ctest because
-// lavapipe's anisotropic filtering takes 15-40 s a frame of this floor. This measurement picks
+// lavapipe's anisotropic filtering takes 14-20 s a frame of this floor. This measurement picks
 // the default method.
 #include <gtest/gtest.h>
 
